@@ -1,0 +1,1 @@
+//! Shapes, bounding boxes, the BVH and robust secondary rays. (Being written.)

@@ -1,0 +1,1 @@
+//! Image files, plots and figure helpers. (Being written.)

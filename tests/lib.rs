@@ -1,0 +1,1 @@
+//! Cross-chapter tests live in `tests/tests/`.
