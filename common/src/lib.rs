@@ -7,10 +7,15 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod cli;
+pub mod film;
 pub mod geometry;
 pub mod image;
+pub mod metrics;
 pub mod output;
 pub mod ray;
+pub mod render;
+pub mod sampler;
 
 pub use glam::{DVec3, UVec2, Vec2, Vec3};
 pub use ray::Ray;

@@ -1,0 +1,300 @@
+//! The chapter's figures: what recursion adds, what one ray per pixel misses, Fresnel's
+//! curves, how the ray tree grows, and error against time.
+
+use crate::optics::fresnel_dielectric;
+use crate::pixel::{CentreSampler, GridSampler};
+use crate::scenes::Builtin;
+use crate::{PixelPattern, render, render_with};
+use anyhow::Context;
+use common::cli::prepare_output_dir;
+use common::image::Image;
+use common::metrics::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use common::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, crop, line_plot, scatter_plot,
+};
+use common::render::RenderSettings;
+use glam::Vec2;
+use std::path::Path;
+
+/// Image sizes and budgets: the book's, or small ones for tests and CI.
+struct Quality {
+    width: u32,
+    height: u32,
+    /// Supersampling grid side of the reference images.
+    reference_grid: u64,
+    /// Sample counts of the error-against-time runs.
+    budgets: &'static [u64],
+}
+
+impl Quality {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Quality {
+                width: 96,
+                height: 72,
+                reference_grid: 12,
+                budgets: &[1, 4, 16],
+            }
+        } else {
+            Quality {
+                width: 480,
+                height: 360,
+                reference_grid: 24,
+                budgets: &[1, 4, 16, 64, 256],
+            }
+        }
+    }
+
+    fn settings(&self, spp: u64) -> RenderSettings {
+        RenderSettings {
+            progress: true,
+            ..RenderSettings::new(self.width, self.height, spp)
+        }
+    }
+}
+
+/// Writes every figure of the chapter into `out`.
+pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
+    prepare_output_dir(out)?;
+    let quality = Quality::new(quick);
+    recursion_depth(out, &quality).context("the recursion-depth figure")?;
+    aliasing(out, &quality).context("the aliasing figure")?;
+    pixel_samples(out).context("the pixel-sample plot")?;
+    fresnel_curves(out).context("the Fresnel plot")?;
+    ray_tree(out, quick).context("the ray-tree plot")?;
+    convergence(out, &quality).context("the error-against-time figures")?;
+    eprintln!("ch01 figures written to {}", out.display());
+    Ok(())
+}
+
+fn centre_render(builtin: Builtin, max_depth: u32, settings: &RenderSettings) -> Image {
+    let scene = builtin.build(max_depth);
+    render_with(&scene, settings, &CentreSampler::new(0)).image
+}
+
+/// The same scene at recursion depths 1, 2, 5 and 10: each level adds one more generation of
+/// reflected and refracted rays.
+fn recursion_depth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let settings = quality.settings(1);
+    let cells: Vec<(String, Image)> = [1u32, 2, 5, 10]
+        .into_iter()
+        .map(|depth| {
+            // Recursion depth d allows d surface interactions: d + 1 segments in Mitsuba's count.
+            let image = centre_render(Builtin::Spheres, depth + 1, &settings);
+            (format!("recursion depth {depth}"), image)
+        })
+        .collect();
+    comparison_grid(&out.join("depth.png"), &cells, 2, 1)?;
+    Ok(())
+}
+
+/// One ray through each pixel centre against supersampling, enlarged around edges.
+fn aliasing(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
+    let centre = render(&scene, &quality.settings(1), PixelPattern::Centre, 0)
+        .expect("centre sampling always renders");
+    let grid_spp = 16;
+    let grid =
+        render(&scene, &quality.settings(grid_spp), PixelPattern::Grid, 0).expect("16 is a square");
+    let reference_spp = quality.reference_grid * quality.reference_grid;
+    let reference = render(
+        &scene,
+        &quality.settings(reference_spp),
+        PixelPattern::Grid,
+        0,
+    )
+    .expect("a square");
+    // A window on the horizon, the checkerboard and the sphere silhouettes.
+    let (w, h) = (quality.width / 4, quality.height / 4);
+    let (x, y) = (quality.width * 5 / 8, quality.height * 3 / 8);
+    let zoom = |image: &Image| crop(image, x, y, w, h);
+    let scale = (480 / w).max(1);
+    let cells = vec![
+        (
+            "1 ray per pixel, at its centre".to_string(),
+            zoom(&centre.image),
+        ),
+        (
+            format!("{grid_spp} rays per pixel, regular grid"),
+            zoom(&grid.image),
+        ),
+        (
+            format!("reference, {reference_spp} rays per pixel"),
+            zoom(&reference.image),
+        ),
+    ];
+    comparison_grid(&out.join("aliasing.png"), &cells, 3, scale)?;
+    comparison_grid(
+        &out.join("render.png"),
+        &[("one ray per pixel".to_string(), centre.image)],
+        1,
+        1,
+    )?;
+    Ok(())
+}
+
+/// Where the rays of a 4 x 4 patch of pixels go: the centres, and a 4 x 4 grid per pixel.
+fn pixel_samples(out: &Path) -> anyhow::Result<()> {
+    use common::sampler::Sampler;
+    let positions = |sampler: &mut dyn FnMut(glam::UVec2, u64) -> Vec2, spp: u64| {
+        let mut points = Vec::new();
+        for y in 0..4 {
+            for x in 0..4 {
+                for i in 0..spp {
+                    let pixel = glam::UVec2::new(x, y);
+                    points.push(pixel.as_vec2() + sampler(pixel, i));
+                }
+            }
+        }
+        points
+    };
+    let mut centre = CentreSampler::new(0);
+    let mut grid = GridSampler::new(4, 0);
+    let sets = vec![
+        (
+            "pixel centres (1 per pixel)".to_string(),
+            positions(
+                &mut |p, i| {
+                    centre.start_pixel_sample(p, i);
+                    centre.get_pixel_2d()
+                },
+                1,
+            ),
+        ),
+        (
+            "regular 4 x 4 grid per pixel".to_string(),
+            positions(
+                &mut |p, i| {
+                    grid.start_pixel_sample(p, i);
+                    grid.get_pixel_2d()
+                },
+                16,
+            ),
+        ),
+    ];
+    scatter_plot(
+        &out.join("pixel_samples.png"),
+        "Sample positions in a 4 x 4 pixel patch",
+        &sets,
+        [Vec2::ZERO, Vec2::splat(4.0)],
+    )?;
+    Ok(())
+}
+
+/// Fresnel reflectance against the angle of incidence, entering and leaving denser media.
+fn fresnel_curves(out: &Path) -> anyhow::Result<()> {
+    let curve = |eta_i: f32, eta_t: f32| -> Vec<(f64, f64)> {
+        (0..=900)
+            .map(|i| {
+                let degrees = i as f32 * 0.1;
+                let f = fresnel_dielectric(degrees.to_radians().cos(), eta_i / eta_t);
+                (f64::from(degrees), f64::from(f))
+            })
+            .collect()
+    };
+    let series = vec![
+        Series::new("air to water (1.33)", curve(1.0, 1.33), SeriesStyle::Line),
+        Series::new("air to glass (1.5)", curve(1.0, 1.5), SeriesStyle::Line),
+        Series::new("air to diamond (2.42)", curve(1.0, 2.42), SeriesStyle::Line),
+        Series::new(
+            "glass to air: total reflection past 41.8°",
+            curve(1.5, 1.0),
+            SeriesStyle::Line,
+        ),
+        Series::new(
+            "index 1: no interface",
+            curve(1.0, 1.0),
+            SeriesStyle::Dashed,
+        ),
+    ];
+    let axes = Axes::linear("angle of incidence (degrees)", "reflectance F");
+    line_plot(
+        &out.join("fresnel.png"),
+        "Fresnel reflectance of a smooth dielectric",
+        &axes,
+        &series,
+    )?;
+    Ok(())
+}
+
+/// Rays per pixel against the depth limit: with glass every hit spawns two rays.
+fn ray_tree(out: &Path, quick: bool) -> anyhow::Result<()> {
+    let (width, height) = if quick { (32, 24) } else { (128, 96) };
+    let settings = RenderSettings::new(width, height, 1);
+    let mut series = Vec::new();
+    for builtin in Builtin::ALL {
+        let points = (1..=12)
+            .map(|max_depth| {
+                let scene = builtin.build(max_depth);
+                let stats = render_with(&scene, &settings, &CentreSampler::new(0)).stats;
+                (
+                    f64::from(max_depth),
+                    stats.rays as f64 / (width * height) as f64,
+                )
+            })
+            .collect();
+        series.push(Series::new(
+            builtin.name(),
+            points,
+            SeriesStyle::LineAndPoints,
+        ));
+    }
+    let axes = Axes {
+        log_y: true,
+        ..Axes::linear(
+            "max_depth (segments, counting the camera ray)",
+            "rays per pixel",
+        )
+    };
+    line_plot(
+        &out.join("ray_tree.png"),
+        "Size of the ray tree",
+        &axes,
+        &series,
+    )?;
+    Ok(())
+}
+
+/// Error against time: more rays at the pixel centre buy nothing; a grid converges.
+fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
+    let (width, height) = (quality.width / 2, quality.height / 2);
+    let settings = |spp| RenderSettings::new(width, height, spp);
+    let reference_spp = quality.reference_grid * quality.reference_grid * 4;
+    let reference = render(&scene, &settings(reference_spp), PixelPattern::Grid, 0)
+        .expect("a square")
+        .image;
+    let techniques = vec![
+        Technique {
+            name: "pixel centre".to_string(),
+            render: Box::new(|spp| {
+                render(&scene, &settings(spp), PixelPattern::Centre, 0)
+                    .expect("centre")
+                    .image
+            }),
+        },
+        Technique {
+            name: "regular grid".to_string(),
+            render: Box::new(|spp| {
+                render(&scene, &settings(spp), PixelPattern::Grid, 0)
+                    .expect("square budgets")
+                    .image
+            }),
+        },
+    ];
+    let records = run_convergence(&techniques, quality.budgets, &reference);
+    write_convergence_csv(&out.join("convergence.csv"), &records)?;
+    plot_error_vs_time(
+        &out.join("convergence.png"),
+        "Error against time (spheres)",
+        &records,
+    )?;
+    plot_error_vs_spp(
+        &out.join("convergence_spp.png"),
+        "Error against samples per pixel (spheres)",
+        &records,
+    )?;
+    Ok(())
+}

@@ -1,0 +1,121 @@
+//! Whitted's recursive ray tracer.
+//!
+//! A camera ray finds the nearest surface. A matte surface is lit by every point light it can
+//! see, asked through a shadow ray; a mirror sends one reflected ray; glass sends a reflected
+//! and a refracted ray, weighted by the Fresnel equations. Reflected and refracted rays are
+//! traced the same way, recursively, until the depth limit. Every ray is deterministic, so one
+//! ray per pixel gives the final image, with every edge jagged and every shadow hard.
+
+use crate::material::Material;
+use crate::optics::{fresnel_dielectric, reflect, refract};
+use crate::scene::Scene;
+use common::Ray;
+use common::geometry::SurfaceHit;
+use common::render::SampleCounters;
+use glam::Vec3;
+use std::f32::consts::FRAC_1_PI;
+
+// ANCHOR: trace
+/// The radiance arriving along `ray`, which is segment number `depth` of its path (the camera
+/// ray is segment 1).
+pub fn trace(scene: &Scene, ray: &Ray, depth: u32, counters: &mut SampleCounters) -> Vec3 {
+    counters.rays += 1;
+    let Some(hit) = scene.geometry.intersect(ray) else {
+        return scene.background;
+    };
+    if depth >= scene.max_depth {
+        // No segment left to carry light here: surfaces do not glow by themselves.
+        return Vec3::ZERO;
+    }
+    match scene.materials[hit.shape as usize] {
+        Material::Diffuse { albedo, two_sided } => {
+            direct_light(scene, ray, &hit, albedo, two_sided, counters)
+        }
+        Material::Mirror { reflectance } => {
+            if !hit.front_face(ray.dir) {
+                return Vec3::ZERO; // mirrors reflect on their front side only, as in Mitsuba
+            }
+            let reflected = hit.spawn_ray(reflect(ray.dir, hit.n), ray.time);
+            reflectance * trace(scene, &reflected, depth + 1, counters)
+        }
+        Material::Dielectric { int_ior, ext_ior } => {
+            dielectric(scene, ray, &hit, int_ior, ext_ior, depth, counters)
+        }
+    }
+}
+// ANCHOR_END: trace
+
+// ANCHOR: direct_light
+/// Light reflected by a matte surface from every point light it sees: `albedo / pi` times
+/// the irradiance `I cos(theta) / r^2`, where a shadow ray finds nothing in the way.
+fn direct_light(
+    scene: &Scene,
+    ray: &Ray,
+    hit: &SurfaceHit,
+    albedo: Vec3,
+    two_sided: bool,
+    counters: &mut SampleCounters,
+) -> Vec3 {
+    let normal = if hit.front_face(ray.dir) {
+        hit.shading_n
+    } else if two_sided {
+        -hit.shading_n
+    } else {
+        return Vec3::ZERO; // the back of a one-sided surface is black
+    };
+    let mut radiance = Vec3::ZERO;
+    for light in &scene.lights {
+        let to_light = light.position - hit.p;
+        let distance_squared = to_light.length_squared();
+        let cos_theta = normal.dot(to_light) / distance_squared.sqrt();
+        if !(cos_theta > 0.0) {
+            continue; // behind the surface (or the light sits on it)
+        }
+        counters.rays += 1;
+        if scene
+            .geometry
+            .occluded(&hit.spawn_ray_to(light.position, ray.time))
+        {
+            continue; // in shadow: hard-edged, since the light is a point
+        }
+        radiance += albedo * FRAC_1_PI * light.intensity * cos_theta / distance_squared;
+    }
+    radiance
+}
+// ANCHOR_END: direct_light
+
+// ANCHOR: dielectric
+/// Glass: a Fresnel-weighted sum of the reflected and the refracted ray. Radiance crossing
+/// into a denser medium is squeezed into a narrower cone, so it is scaled by `(eta_i/eta_t)^2`.
+fn dielectric(
+    scene: &Scene,
+    ray: &Ray,
+    hit: &SurfaceHit,
+    int_ior: f32,
+    ext_ior: f32,
+    depth: u32,
+    counters: &mut SampleCounters,
+) -> Vec3 {
+    // Orient the normal against the ray; coming from inside, the indices swap.
+    let (normal, eta) = if hit.front_face(ray.dir) {
+        (hit.n, ext_ior / int_ior)
+    } else {
+        (-hit.n, int_ior / ext_ior)
+    };
+    let cos_i = -ray.dir.dot(normal);
+    let reflectance = fresnel_dielectric(cos_i, eta);
+    let mut radiance = Vec3::ZERO;
+    if reflectance > 0.0 {
+        let reflected = hit.spawn_ray(reflect(ray.dir, normal), ray.time);
+        radiance += reflectance * trace(scene, &reflected, depth + 1, counters);
+    }
+    if reflectance < 1.0 {
+        if let Some(dir) = refract(ray.dir, normal, eta) {
+            let refracted = hit.spawn_ray(dir, ray.time);
+            radiance +=
+                (1.0 - reflectance) * eta * eta * trace(scene, &refracted, depth + 1, counters);
+        }
+    }
+    radiance
+}
+// ANCHOR_END: dielectric

@@ -1,0 +1,260 @@
+//! Command-line pieces every chapter binary shares: the `render` and `figures` options, their
+//! checks, and how errors are reported.
+//!
+//! Bad input must never panic or leave half a file behind: every option is checked before any
+//! work starts, and the output path is tried for writing before a long render, not after it.
+
+use crate::film::PixelSum;
+use crate::output::{self, OutputError};
+use crate::render::{Budget, RenderOutput, RenderSettings};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// The largest image side we accept.
+pub const MAX_IMAGE_SIDE: u32 = 1 << 16;
+
+/// Memory the film and the image may take together.
+pub const MAX_IMAGE_BYTES: u64 = 4 << 30;
+
+/// Options of every chapter's `render` subcommand.
+#[derive(clap::Args, Clone, Debug)]
+pub struct RenderArgs {
+    /// Samples per pixel [default: the chapter's choice].
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=1_000_000_000), conflicts_with = "time")]
+    pub spp: Option<u64>,
+    /// Render for this many seconds instead of a fixed sample count (progressive passes).
+    #[arg(long, value_name = "SECONDS", value_parser = parse_seconds)]
+    pub time: Option<f64>,
+    /// Image width in pixels [default: the scene's].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
+    pub width: Option<u32>,
+    /// Image height in pixels [default: the scene's].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
+    pub height: Option<u32>,
+    /// Seed of every random number of the render.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Worker threads [default: one per core]. The image does not depend on it.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+    /// Output image: .png (sRGB, 8-bit), .exr or .pfm (linear float).
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
+    /// Also write the render's statistics (time, samples, rays) as JSON.
+    #[arg(long, value_name = "FILE.json")]
+    pub stats: Option<PathBuf>,
+}
+
+/// Options of every chapter's `figures` subcommand.
+#[derive(clap::Args, Clone, Debug)]
+pub struct FiguresArgs {
+    /// Directory the images, plots and CSV files are written to (created if missing).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Small, fast figures (for tests and CI) instead of the book's full-size ones.
+    #[arg(long)]
+    pub quick: bool,
+}
+
+/// Why a command cannot run.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// The image would not fit in memory.
+    #[error(
+        "a {width}x{height} image needs {needed_mib} MiB for its film and image; the limit is {} MiB",
+        MAX_IMAGE_BYTES >> 20
+    )]
+    ImageTooLarge {
+        /// Requested width.
+        width: u32,
+        /// Requested height.
+        height: u32,
+        /// Memory it would need.
+        needed_mib: u64,
+    },
+    /// An output could not be written.
+    #[error(transparent)]
+    Output(#[from] OutputError),
+    /// Any other check that failed, with its explanation.
+    #[error("{0}")]
+    Invalid(String),
+}
+
+fn parse_seconds(text: &str) -> Result<f64, String> {
+    let seconds: f64 = text
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number of seconds"))?;
+    if seconds.is_finite() && seconds > 0.0 && seconds <= 1e7 {
+        Ok(seconds)
+    } else {
+        Err(format!(
+            "the time budget must be a positive number of seconds, at most 1e7; got {text}"
+        ))
+    }
+}
+
+impl RenderArgs {
+    /// The render settings, filling what the command line left open with the scene's or
+    /// chapter's defaults, and refusing images that cannot fit in memory.
+    pub fn settings(
+        &self,
+        default_size: (u32, u32),
+        default_spp: u64,
+    ) -> Result<RenderSettings, CliError> {
+        let width = self.width.unwrap_or(default_size.0);
+        let height = self.height.unwrap_or(default_size.1);
+        check_image_size(width, height)?;
+        let budget = match (self.spp, self.time) {
+            (_, Some(seconds)) => Budget::Seconds(seconds),
+            (Some(spp), None) => Budget::Samples(spp),
+            (None, None) => Budget::Samples(default_spp),
+        };
+        Ok(RenderSettings {
+            width,
+            height,
+            budget,
+            threads: self.threads.map(|t| t as usize),
+            progress: true,
+        })
+    }
+
+    /// Checks, before rendering, that the image and the statistics can be written where asked.
+    pub fn check_outputs(&self) -> Result<(), CliError> {
+        output::check_image_path(&self.out)?;
+        check_writable(&self.out)?;
+        if let Some(stats) = &self.stats {
+            if stats
+                .extension()
+                .and_then(|e| e.to_str())
+                .map(str::to_ascii_lowercase)
+                .as_deref()
+                != Some("json")
+            {
+                return Err(CliError::Invalid(format!(
+                    "--stats {}: the statistics file must end in .json",
+                    stats.display()
+                )));
+            }
+            check_writable(stats)?;
+        }
+        Ok(())
+    }
+
+    /// Writes the image, and the statistics if asked for, each file whole or not at all.
+    /// `extra` adds chapter-specific fields to the statistics object.
+    pub fn write_outputs(
+        &self,
+        rendered: &RenderOutput,
+        extra: serde_json::Value,
+    ) -> Result<(), CliError> {
+        output::write_image(&self.out, &rendered.image)?;
+        if let Some(path) = &self.stats {
+            let mut json = serde_json::to_value(&rendered.stats).expect("statistics serialise");
+            if let (Some(map), serde_json::Value::Object(more)) = (json.as_object_mut(), extra) {
+                map.extend(more);
+            }
+            let text = serde_json::to_string_pretty(&json).expect("statistics serialise") + "\n";
+            output::write_text(path, &text)?;
+        }
+        Ok(())
+    }
+}
+
+/// Refuses image sizes whose film would not fit in [`MAX_IMAGE_BYTES`].
+pub fn check_image_size(width: u32, height: u32) -> Result<(), CliError> {
+    let pixels = u64::from(width) * u64::from(height);
+    let bytes_per_pixel =
+        (std::mem::size_of::<PixelSum>() + 2 * std::mem::size_of::<glam::Vec3>()) as u64;
+    let needed = pixels * bytes_per_pixel;
+    if width == 0 || height == 0 {
+        return Err(CliError::Invalid(format!(
+            "an image of {width}x{height} pixels has no pixels"
+        )));
+    }
+    if needed > MAX_IMAGE_BYTES {
+        return Err(CliError::ImageTooLarge {
+            width,
+            height,
+            needed_mib: needed.div_ceil(1 << 20),
+        });
+    }
+    Ok(())
+}
+
+/// Creates the directory of `path` if needed and proves that a file can be created there,
+/// so that a render fails in its first millisecond rather than after an hour.
+pub fn check_writable(path: &Path) -> Result<(), CliError> {
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| {
+        CliError::Invalid(format!(
+            "cannot create the directory {} for {}: {e}",
+            dir.display(),
+            path.display()
+        ))
+    })?;
+    if path.is_dir() {
+        return Err(CliError::Invalid(format!(
+            "{} is a directory, not a file name",
+            path.display()
+        )));
+    }
+    tempfile::NamedTempFile::new_in(dir)
+        .map_err(|e| CliError::Invalid(format!("cannot write to {}: {e}", dir.display())))?;
+    Ok(())
+}
+
+/// Creates the output directory of `figures`, with a clear error if it cannot.
+pub fn prepare_output_dir(dir: &Path) -> Result<(), CliError> {
+    std::fs::create_dir_all(dir).map_err(|e| {
+        CliError::Invalid(format!(
+            "cannot create the output directory {}: {e}",
+            dir.display()
+        ))
+    })?;
+    tempfile::NamedTempFile::new_in(dir)
+        .map_err(|e| CliError::Invalid(format!("cannot write to {}: {e}", dir.display())))?;
+    Ok(())
+}
+
+/// Prints an error and the chain of its causes, the way every chapter binary reports
+/// failure, and gives the exit code to return from `main`.
+pub fn report_error(error: &(dyn std::error::Error + 'static)) -> ExitCode {
+    eprintln!("error: {error}");
+    let mut source = error.source();
+    while let Some(cause) = source {
+        eprintln!("  caused by: {cause}");
+        source = cause.source();
+    }
+    ExitCode::FAILURE
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn huge_images_are_refused_with_the_memory_they_need() {
+        let err = check_image_size(60_000, 60_000).unwrap_err().to_string();
+        assert!(err.contains("60000x60000") && err.contains("MiB"), "{err}");
+        assert!(check_image_size(1920, 1080).is_ok());
+        assert!(check_image_size(0, 5).is_err());
+    }
+
+    #[test]
+    fn time_budgets_must_be_positive_and_finite() {
+        for bad in ["0", "-1", "nan", "inf", "abc", "1e300"] {
+            assert!(parse_seconds(bad).is_err(), "{bad}");
+        }
+        assert_eq!(parse_seconds("2.5"), Ok(2.5));
+    }
+
+    #[test]
+    fn an_existing_directory_is_not_an_output_file() {
+        let dir = tempfile::tempdir().unwrap();
+        assert!(check_writable(dir.path()).is_err());
+        assert!(check_writable(&dir.path().join("new/sub/img.png")).is_ok());
+    }
+}

@@ -1,0 +1,266 @@
+//! The render loop: tiles in parallel, passes until the budget is spent.
+//!
+//! A chapter supplies one function, "the radiance arriving through this film position", and
+//! the loop does the rest: it splits the image into tiles, renders them on a rayon pool, starts
+//! each sample's [`Sampler`] stream, adds the result to the [`Film`] and counts rays.
+//!
+//! The work is done in passes of growing sample counts. Each pass is merged into the film
+//! tile by tile in a fixed order, so the image depends only on the seed and the pass schedule,
+//! never on the number of threads. A `--time` budget simply keeps adding passes until the time
+//! is up.
+
+mod budget;
+mod progress;
+mod stats;
+
+pub use budget::Budget;
+pub use stats::RenderStats;
+
+use crate::film::{Film, FilmTile, Filter, PixelRect};
+use crate::image::Image;
+use crate::sampler::Sampler;
+use glam::{UVec2, Vec2, Vec3};
+use std::time::Instant;
+
+/// What a render needs besides the scene.
+#[derive(Clone, Debug)]
+pub struct RenderSettings {
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// How many samples per pixel, or how long.
+    pub budget: Budget,
+    /// Worker threads; `None` lets rayon choose (one per core).
+    pub threads: Option<usize>,
+    /// Show a progress bar on a terminal.
+    pub progress: bool,
+}
+
+impl RenderSettings {
+    /// `width x height` pixels at `spp` samples per pixel, quietly, on every core.
+    pub fn new(width: u32, height: u32, spp: u64) -> Self {
+        Self {
+            width,
+            height,
+            budget: Budget::Samples(spp),
+            threads: None,
+            progress: false,
+        }
+    }
+}
+
+/// Counters a radiance function updates while it traces one sample.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct SampleCounters {
+    /// Rays cast: camera rays, secondary rays and shadow rays.
+    pub rays: u64,
+}
+
+/// A finished render.
+#[derive(Clone, Debug)]
+pub struct RenderOutput {
+    /// The averaged image.
+    pub image: Image,
+    /// What it cost.
+    pub stats: RenderStats,
+}
+
+/// Pixels per tile side: large enough to amortise the bookkeeping, small enough that two
+/// cores share even a thumbnail fairly.
+const TILE_SIZE: u32 = 16;
+
+/// Renders an image.
+///
+/// `radiance(p_film, sampler, counters)` returns the radiance arriving through the continuous
+/// film position `p_film` (in pixels, `y` down). The sampler has already handed out the
+/// pixel dimension used for `p_film`; the function draws its own dimensions after it, in the
+/// fixed order time, lens, then per bounce.
+// ANCHOR: render_loop
+pub fn render<S, F>(
+    settings: &RenderSettings,
+    sampler: &S,
+    filter: &dyn Filter,
+    radiance: F,
+) -> RenderOutput
+where
+    S: Sampler,
+    F: Fn(Vec2, &mut S, &mut SampleCounters) -> Vec3 + Sync,
+{
+    let start = Instant::now();
+    let mut film = Film::new(settings.width, settings.height);
+    let tiles = tiles(settings.width, settings.height);
+    let progress = progress::Progress::new(settings, tiles.len());
+    let mut totals = stats::Totals::default();
+
+    let mut run = || {
+        let mut done_spp = 0u64;
+        while let Some(pass) = settings.budget.next_pass(done_spp, start.elapsed()) {
+            let samples = done_spp..done_spp + pass;
+            let rendered: Vec<(FilmTile, stats::Totals)> = {
+                use rayon::prelude::*;
+                tiles
+                    .par_iter()
+                    .map(|&rect| {
+                        let out =
+                            render_tile(&film, rect, samples.clone(), sampler, filter, &radiance);
+                        progress.tile_done();
+                        out
+                    })
+                    .collect()
+            };
+            // Merge in tile order: floating-point sums then come out the same on any schedule.
+            for (tile, tile_totals) in &rendered {
+                film.merge(tile);
+                totals.add(tile_totals);
+            }
+            done_spp += pass;
+            progress.pass_done(done_spp);
+        }
+        done_spp
+    };
+    let spp = match settings.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .expect("a thread pool of the requested size")
+            .install(run),
+        None => run(),
+    };
+    progress.finish();
+    let seconds = start.elapsed().as_secs_f64();
+    RenderOutput {
+        image: film.image(),
+        stats: RenderStats::new(settings, spp, seconds, &totals),
+    }
+}
+// ANCHOR_END: render_loop
+
+/// Renders samples `samples` of every pixel of `rect` into a fresh tile.
+fn render_tile<S, F>(
+    film: &Film,
+    rect: PixelRect,
+    samples: std::ops::Range<u64>,
+    sampler: &S,
+    filter: &dyn Filter,
+    radiance: &F,
+) -> (FilmTile, stats::Totals)
+where
+    S: Sampler,
+    F: Fn(Vec2, &mut S, &mut SampleCounters) -> Vec3 + Sync,
+{
+    let mut tile = film.tile(rect, filter);
+    let mut sampler = sampler.clone();
+    let mut totals = stats::Totals::default();
+    for pixel in rect.pixels() {
+        for index in samples.clone() {
+            sampler.start_pixel_sample(pixel, index);
+            let p_film = pixel.as_vec2() + sampler.get_pixel_2d();
+            let mut counters = SampleCounters::default();
+            let l = radiance(p_film, &mut sampler, &mut counters);
+            totals.rays += counters.rays;
+            totals.samples += 1;
+            if l.is_finite() {
+                tile.add_sample(p_film, l, filter);
+            } else {
+                // A NaN or infinity is a bug upstream. It is counted and reported, never
+                // averaged into the image where it would blacken or whiten a whole pixel.
+                totals.nonfinite_samples += 1;
+            }
+        }
+    }
+    (tile, totals)
+}
+
+/// The image cut into tiles, row by row.
+fn tiles(width: u32, height: u32) -> Vec<PixelRect> {
+    let mut out = Vec::new();
+    for y in (0..height).step_by(TILE_SIZE as usize) {
+        for x in (0..width).step_by(TILE_SIZE as usize) {
+            out.push(PixelRect {
+                min: UVec2::new(x, y),
+                max: UVec2::new((x + TILE_SIZE).min(width), (y + TILE_SIZE).min(height)),
+            });
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::film::PixelBoxFilter;
+    use crate::sampler::IndependentSampler;
+
+    /// A "scene" whose radiance is a noisy function of the film position.
+    fn noisy(p: Vec2, s: &mut IndependentSampler, c: &mut SampleCounters) -> Vec3 {
+        c.rays += 1;
+        Vec3::new(p.x.sin(), s.get_1d(), (p.y * 0.1).cos() * s.get_1d())
+    }
+
+    #[test]
+    fn images_are_identical_with_any_thread_count() {
+        let render_with = |threads| {
+            let settings = RenderSettings {
+                threads: Some(threads),
+                ..RenderSettings::new(37, 21, 5)
+            };
+            render(
+                &settings,
+                &IndependentSampler::new(3),
+                &PixelBoxFilter,
+                noisy,
+            )
+        };
+        let one = render_with(1);
+        for threads in [2, 3, 8] {
+            let many = render_with(threads);
+            assert_eq!(one.image, many.image, "{threads} threads");
+        }
+        assert_eq!(one.stats.rays, 37 * 21 * 5);
+        assert_eq!(one.stats.spp, 5);
+    }
+
+    #[test]
+    fn non_finite_samples_are_counted_and_kept_out_of_the_image() {
+        let settings = RenderSettings::new(4, 4, 2);
+        let out = render(
+            &settings,
+            &IndependentSampler::new(1),
+            &PixelBoxFilter,
+            |p, _: &mut IndependentSampler, _: &mut SampleCounters| {
+                if p.x < 1.0 { Vec3::NAN } else { Vec3::ONE }
+            },
+        );
+        assert_eq!(out.stats.nonfinite_samples, 4 * 2);
+        assert!(out.image.pixels.iter().all(|p| p.is_finite()));
+        assert_eq!(out.image.get(2, 2), Vec3::ONE);
+    }
+
+    #[test]
+    fn a_time_budget_renders_at_least_one_pass() {
+        let settings = RenderSettings {
+            budget: Budget::Seconds(1e-9),
+            ..RenderSettings::new(3, 3, 1)
+        };
+        let out = render(
+            &settings,
+            &IndependentSampler::new(1),
+            &PixelBoxFilter,
+            noisy,
+        );
+        assert!(out.stats.spp >= 1);
+    }
+
+    #[test]
+    fn tiles_cover_the_image_once() {
+        let tiles = tiles(40, 17);
+        let mut covered = vec![0u32; 40 * 17];
+        for t in &tiles {
+            for p in t.pixels() {
+                covered[(p.y * 40 + p.x) as usize] += 1;
+            }
+        }
+        assert!(covered.iter().all(|&c| c == 1));
+    }
+}

@@ -1,0 +1,66 @@
+//! A progress bar for renders, shown only on a terminal.
+
+use super::{Budget, RenderSettings};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::io::IsTerminal;
+
+/// Counts finished tiles; draws nothing when disabled or when stderr is not a terminal
+/// (tests, CI logs, pipes).
+pub(super) struct Progress {
+    bar: Option<ProgressBar>,
+    tiles_per_pass: u64,
+}
+
+impl Progress {
+    pub(super) fn new(settings: &RenderSettings, tiles_per_pass: usize) -> Self {
+        let tiles_per_pass = tiles_per_pass as u64;
+        let bar = (settings.progress && std::io::stderr().is_terminal()).then(|| {
+            let (len, unit) = match settings.budget {
+                Budget::Samples(spp) => (spp, "spp"),
+                Budget::Seconds(_) => (0, "spp so far"),
+            };
+            let bar = ProgressBar::with_draw_target(
+                Some(len * tiles_per_pass),
+                ProgressDrawTarget::stderr(),
+            );
+            let template = format!(
+                "{{spinner}} [{{elapsed_precise}}] {{wide_bar}} {{msg}} {unit} (eta {{eta}})"
+            );
+            bar.set_style(
+                ProgressStyle::with_template(&template)
+                    .unwrap_or_else(|_| ProgressStyle::default_bar()),
+            );
+            if len == 0 {
+                bar.set_length(tiles_per_pass);
+            }
+            bar
+        });
+        Self {
+            bar,
+            tiles_per_pass,
+        }
+    }
+
+    pub(super) fn tile_done(&self) {
+        if let Some(bar) = &self.bar {
+            bar.inc(1);
+        }
+    }
+
+    /// A pass has finished; `spp` samples per pixel are now done. A samples budget advances
+    /// the bar per tile of each pass; a time budget grows the bar as passes are added.
+    pub(super) fn pass_done(&self, spp: u64) {
+        if let Some(bar) = &self.bar {
+            bar.set_message(spp.to_string());
+            if bar.length().is_some_and(|len| bar.position() >= len) {
+                bar.inc_length(self.tiles_per_pass);
+            }
+        }
+    }
+
+    pub(super) fn finish(&self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
+        }
+    }
+}

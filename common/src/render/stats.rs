@@ -1,0 +1,70 @@
+//! What a render cost, as written by `render --stats FILE.json`.
+
+use super::RenderSettings;
+use serde::Serialize;
+
+/// Sums gathered per tile and added up in tile order.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Totals {
+    pub rays: u64,
+    pub samples: u64,
+    pub nonfinite_samples: u64,
+}
+
+impl Totals {
+    pub(super) fn add(&mut self, other: &Totals) {
+        self.rays += other.rays;
+        self.samples += other.samples;
+        self.nonfinite_samples += other.nonfinite_samples;
+    }
+}
+
+/// The cost of a render, serialised as the `--stats` JSON file.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RenderStats {
+    /// Wall-clock seconds of the whole render.
+    pub seconds: f64,
+    /// Samples per pixel rendered.
+    pub spp: u64,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Rays cast: camera, secondary and shadow rays.
+    pub rays: u64,
+    /// Pixel samples taken, `width * height * spp`.
+    pub samples: u64,
+    /// Pixel samples per second of wall-clock time.
+    pub samples_per_second: f64,
+    /// Rays per second of wall-clock time.
+    pub rays_per_second: f64,
+    /// Samples whose radiance was NaN or infinite and was left out of the image; any
+    /// value but 0 is a bug.
+    pub nonfinite_samples: u64,
+    /// Worker threads used.
+    pub threads: usize,
+}
+
+impl RenderStats {
+    pub(super) fn new(settings: &RenderSettings, spp: u64, seconds: f64, totals: &Totals) -> Self {
+        let per_second = |n: u64| {
+            if seconds > 0.0 {
+                n as f64 / seconds
+            } else {
+                0.0
+            }
+        };
+        Self {
+            seconds,
+            spp,
+            width: settings.width,
+            height: settings.height,
+            rays: totals.rays,
+            samples: totals.samples,
+            samples_per_second: per_second(totals.samples),
+            rays_per_second: per_second(totals.rays),
+            nonfinite_samples: totals.nonfinite_samples,
+            threads: settings.threads.unwrap_or_else(rayon::current_num_threads),
+        }
+    }
+}
