@@ -1,0 +1,145 @@
+//! Judging techniques at equal *time*: render at growing budgets, time each render, measure
+//! its error.
+//!
+//! A technique that halves the error at equal sample count but takes four times as long per
+//! sample is worse, not better: with the same time, plain sampling could have taken four times
+//! the samples and halved its error too. So every chapter records, for each technique and
+//! budget, both the wall-clock time and the error, and plots error against time.
+
+use std::time::Instant;
+
+use serde::{Deserialize, Serialize};
+
+use super::{relmse, rmse};
+use crate::image::Image;
+
+/// One render of one technique at one budget: how long it took and how wrong it was.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ConvergenceRecord {
+    /// Which technique rendered it.
+    pub technique: String,
+    /// Samples per pixel asked for.
+    pub spp: u64,
+    /// Wall-clock seconds the render took.
+    pub seconds: f64,
+    /// Root-mean-square error against the reference.
+    pub rmse: f64,
+    /// Relative mean squared error against the reference.
+    pub relmse: f64,
+}
+
+/// A named way of rendering the scene, as a function from samples per pixel to an image.
+///
+/// The closure may borrow the scene (hence the lifetime `'a`) and must be `Sync` so that it can
+/// render in parallel inside.
+pub struct Technique<'a> {
+    /// Name in tables and legends, e.g. `"stratified"`.
+    pub name: String,
+    /// Renders the scene with the given samples per pixel.
+    pub render: Box<dyn Fn(u64) -> Image + Sync + 'a>,
+}
+
+impl<'a> Technique<'a> {
+    /// A technique from its name and its render function.
+    pub fn new(name: impl Into<String>, render: impl Fn(u64) -> Image + Sync + 'a) -> Self {
+        Self {
+            name: name.into(),
+            render: Box::new(render),
+        }
+    }
+}
+
+/// Renders every technique at every budget (samples per pixel), timing each render, and records
+/// its errors against `reference`: one record per technique and budget, technique by technique,
+/// budgets in the order given.
+///
+/// Times are wall-clock ([`Instant`]), since wall-clock time is what a user waits for; they
+/// include everything the render function does, so setup it repeats on every call counts
+/// against it. On a busy machine times are noisy: compare techniques measured in the same run.
+///
+/// # Panics
+///
+/// If a technique returns an image of a different size than the reference (see [`rmse`]).
+pub fn run_convergence(
+    techniques: &[Technique],
+    budgets: &[u64],
+    reference: &Image,
+) -> Vec<ConvergenceRecord> {
+    let mut records = Vec::with_capacity(techniques.len() * budgets.len());
+    for technique in techniques {
+        for &spp in budgets {
+            let start = Instant::now();
+            let image = (technique.render)(spp);
+            let seconds = start.elapsed().as_secs_f64();
+            records.push(ConvergenceRecord {
+                technique: technique.name.clone(),
+                spp,
+                seconds,
+                rmse: rmse(&image, reference),
+                relmse: relmse(&image, reference),
+            });
+        }
+    }
+    records
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use glam::Vec3;
+
+    /// A fake technique whose image is the reference shifted by `scale / sqrt(spp)` in every
+    /// channel: its RMSE is exactly that shift.
+    fn offset_technique<'a>(name: &str, reference: &'a Image, scale: f32) -> Technique<'a> {
+        Technique::new(name, move |spp| {
+            let offset = scale / (spp as f32).sqrt();
+            Image {
+                pixels: reference.pixels.iter().map(|p| *p + offset).collect(),
+                ..reference.clone()
+            }
+        })
+    }
+
+    #[test]
+    fn records_every_technique_at_every_budget() {
+        let reference = Image::filled(4, 3, Vec3::new(0.5, 1.0, 2.0));
+        let techniques = [
+            offset_technique("plain", &reference, 1.0),
+            offset_technique("better", &reference, 0.25),
+        ];
+        let budgets = [1, 4, 16];
+        let records = run_convergence(&techniques, &budgets, &reference);
+
+        assert_eq!(records.len(), 6);
+        for (record, (name, spp)) in records.iter().zip([
+            ("plain", 1),
+            ("plain", 4),
+            ("plain", 16),
+            ("better", 1),
+            ("better", 4),
+            ("better", 16),
+        ]) {
+            assert_eq!((record.technique.as_str(), record.spp), (name, spp));
+            let scale = if name == "plain" { 1.0 } else { 0.25 };
+            let offset = scale / (spp as f64).sqrt();
+            assert_relative_eq!(record.rmse, offset, max_relative = 1e-5);
+            assert!(record.relmse > 0.0);
+            assert!(record.seconds >= 0.0 && record.seconds < 10.0);
+        }
+        // RMSE halves whenever the budget quadruples.
+        assert_relative_eq!(records[0].rmse / records[1].rmse, 2.0, max_relative = 1e-5);
+    }
+
+    #[test]
+    fn the_time_of_a_slow_technique_is_measured() {
+        let reference = Image::new(1, 1);
+        let slow = Technique::new("slow", |_| {
+            std::thread::sleep(std::time::Duration::from_millis(30));
+            Image::new(1, 1)
+        });
+        let records = run_convergence(&[slow], &[1], &reference);
+        assert!(records[0].seconds >= 0.03, "{}", records[0].seconds);
+        assert_eq!(records[0].rmse, 0.0);
+    }
+}

@@ -1,0 +1,16 @@
+//! Error metrics, and the runner that measures error against time.
+//!
+//! A chapter claims "technique B beats technique A". This module is how it backs the claim:
+//! render both against a converged reference at several budgets ([`run_convergence`]), measure
+//! how far each render is from the reference ([`rmse`], [`relmse`]), save the table
+//! ([`write_convergence_csv`]) and plot error against time ([`plot_error_vs_time`]).
+
+mod convergence;
+mod csv;
+mod error_metrics;
+mod plots;
+
+pub use convergence::{ConvergenceRecord, Technique, run_convergence};
+pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
+pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
+pub use plots::{plot_error_vs_spp, plot_error_vs_time};
