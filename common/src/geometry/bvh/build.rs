@@ -1,0 +1,195 @@
+//! Building the BVH top-down with the binned surface-area heuristic (SAH).
+//!
+//! The cost of a tree, for random rays, is roughly the sum over its nodes of
+//! *probability that a ray entering the parent enters the node* × *cost of the node*, and that
+//! probability is the ratio of the boxes' surface areas. So to split `n` primitives in two we
+//! compare, for each candidate split, `area(A) · count(A) + area(B) · count(B)`, and keep the
+//! cheapest. Trying every split is slow; *binning* sorts the primitives' centres into a few
+//! equal slices along the longest axis and only tries the boundaries between slices (Wald 2007;
+//! pbrt-v4, section 7.3.2).
+
+use glam::Vec3;
+
+use super::{Bvh, MAX_PRIMITIVES_PER_LEAF, Node, NodeKind};
+use crate::geometry::aabb::Aabb;
+
+/// How many slices the centroid range is cut into; 12 is pbrt-v4's choice.
+const BIN_COUNT: usize = 12;
+
+/// The cost of visiting a node, relative to testing one primitive.
+const TRAVERSAL_COST: f32 = 0.5;
+
+/// Beyond this depth, nodes are split at the median instead of by the SAH.
+///
+/// The SAH may peel off one primitive at a time (think of spheres at positions 1, 2, 4, 8, …),
+/// making the tree as deep as it has primitives. Median splits halve the count, so at most
+/// 32 more levels follow for any `u32` number of primitives.
+const MAX_SAH_DEPTH: usize = 32;
+
+/// No tree is deeper than this; the traversal's fixed-size stack relies on it.
+pub(super) const MAX_DEPTH: usize = MAX_SAH_DEPTH + 32;
+
+/// A primitive while the tree is being built.
+#[derive(Clone, Copy, Debug)]
+struct BuildPrimitive {
+    index: u32,
+    bounds: Aabb,
+    centroid: Vec3,
+}
+
+/// How to divide a node's primitives: after reordering, the first `mid` go to the first child.
+struct Split {
+    mid: usize,
+    axis: usize,
+}
+
+impl Bvh {
+    /// Builds the tree over one box per primitive; primitive `i` is `primitive_bounds[i]`.
+    ///
+    /// Any input works: no boxes, one box, flat or zero-size boxes, boxes whose centres all
+    /// coincide. Empty (or NaN) boxes can never be hit and are left out of the tree.
+    pub fn build(primitive_bounds: &[Aabb]) -> Bvh {
+        let mut primitives: Vec<BuildPrimitive> = primitive_bounds
+            .iter()
+            .enumerate()
+            .filter(|(_, bounds)| !bounds.is_empty())
+            .map(|(index, &bounds)| BuildPrimitive {
+                index: u32::try_from(index).expect("at most u32::MAX primitives"),
+                bounds,
+                centroid: bounds.centroid(),
+            })
+            .collect();
+        let mut bvh = Bvh {
+            nodes: Vec::with_capacity(2 * primitives.len()),
+            primitive_indices: Vec::with_capacity(primitives.len()),
+            depth: 0,
+        };
+        if !primitives.is_empty() {
+            bvh.add_subtree(&mut primitives, 1);
+        }
+        debug_assert!(bvh.depth <= MAX_DEPTH);
+        bvh
+    }
+
+    /// Appends the subtree over `primitives` (in depth-first order) and returns its root's index.
+    fn add_subtree(&mut self, primitives: &mut [BuildPrimitive], depth: usize) -> usize {
+        self.depth = self.depth.max(depth);
+        let bounds = primitives
+            .iter()
+            .fold(Aabb::empty(), |b, p| b.union(p.bounds));
+        let index = self.nodes.len();
+        match choose_split(primitives, &bounds, depth) {
+            None => {
+                let first = self.primitive_indices.len() as u32;
+                self.primitive_indices
+                    .extend(primitives.iter().map(|p| p.index));
+                self.nodes.push(Node {
+                    bounds,
+                    kind: NodeKind::Leaf {
+                        first,
+                        count: primitives.len() as u32,
+                    },
+                });
+            }
+            Some(Split { mid, axis }) => {
+                // Reserve the slot; the second child's index is known only after the first
+                // child's subtree has been laid out.
+                self.nodes.push(Node {
+                    bounds,
+                    kind: NodeKind::Leaf { first: 0, count: 0 },
+                });
+                let (first_half, second_half) = primitives.split_at_mut(mid);
+                self.add_subtree(first_half, depth + 1);
+                let second_child = self.add_subtree(second_half, depth + 1) as u32;
+                self.nodes[index].kind = NodeKind::Interior {
+                    second_child,
+                    split_axis: axis as u8,
+                };
+            }
+        }
+        index
+    }
+}
+
+/// Decides whether to split `primitives` (whose union is `bounds`), reordering them if so.
+fn choose_split(primitives: &mut [BuildPrimitive], bounds: &Aabb, depth: usize) -> Option<Split> {
+    let count = primitives.len();
+    if count == 1 {
+        return None;
+    }
+    let centroid_bounds = Aabb::from_point_set(primitives.iter().map(|p| p.centroid));
+    let axis = centroid_bounds.largest_axis();
+    let (low, high) = (centroid_bounds.min[axis], centroid_bounds.max[axis]);
+    let extent = high - low;
+    let centroids_spread = extent > 0.0; // false if they coincide (or are NaN)
+    if !centroids_spread || depth >= MAX_SAH_DEPTH {
+        // All centres coincide (nothing to tell the primitives apart by position), or the tree
+        // is already deep: keep leaves small by halving.
+        return (count > MAX_PRIMITIVES_PER_LEAF).then(|| median_split(primitives, axis));
+    }
+
+    let bin_of = |p: &BuildPrimitive| {
+        let relative = (p.centroid[axis] - low) / extent;
+        // `as` saturates (and maps NaN to 0), so this is always a valid bin.
+        ((relative * BIN_COUNT as f32) as usize).min(BIN_COUNT - 1)
+    };
+    let mut bin_bounds = [Aabb::empty(); BIN_COUNT];
+    let mut bin_counts = [0usize; BIN_COUNT];
+    for p in primitives.iter() {
+        let bin = bin_of(p);
+        bin_bounds[bin] = bin_bounds[bin].union(p.bounds);
+        bin_counts[bin] += 1;
+    }
+
+    // cost[i]: SAH cost (up to the common factor 1 / area(bounds)) of splitting after bin i.
+    let mut cost = [0.0f32; BIN_COUNT - 1];
+    let (mut below, mut below_count) = (Aabb::empty(), 0);
+    for i in 0..BIN_COUNT - 1 {
+        below = below.union(bin_bounds[i]);
+        below_count += bin_counts[i];
+        cost[i] = below_count as f32 * below.surface_area();
+    }
+    let (mut above, mut above_count) = (Aabb::empty(), 0);
+    for i in (1..BIN_COUNT).rev() {
+        above = above.union(bin_bounds[i]);
+        above_count += bin_counts[i];
+        cost[i - 1] += above_count as f32 * above.surface_area();
+    }
+    let best_boundary = (0..BIN_COUNT - 1)
+        .min_by(|&a, &b| cost[a].total_cmp(&cost[b]))
+        .expect("there are BIN_COUNT - 1 boundaries");
+
+    let area = bounds.surface_area();
+    let leaf_cost = count as f32 * area;
+    let split_cost = TRAVERSAL_COST * area + cost[best_boundary];
+    let split_pays_off = split_cost < leaf_cost;
+    if count <= MAX_PRIMITIVES_PER_LEAF && !split_pays_off {
+        return None;
+    }
+    let mid = partition(primitives, |p| bin_of(p) <= best_boundary);
+    if mid == 0 || mid == count {
+        // Cannot happen for finite centroids (the first and last bins are both occupied), but
+        // a split must never leave a child empty.
+        return Some(median_split(primitives, axis));
+    }
+    Some(Split { mid, axis })
+}
+
+/// Splits at the median centroid along `axis`: both halves non-empty, whatever the centroids.
+fn median_split(primitives: &mut [BuildPrimitive], axis: usize) -> Split {
+    let mid = primitives.len() / 2;
+    primitives.select_nth_unstable_by(mid, |a, b| a.centroid[axis].total_cmp(&b.centroid[axis]));
+    Split { mid, axis }
+}
+
+/// Moves the items for which `goes_first` holds to the front; returns how many there are.
+fn partition<T>(items: &mut [T], goes_first: impl Fn(&T) -> bool) -> usize {
+    let mut first_count = 0;
+    for i in 0..items.len() {
+        if goes_first(&items[i]) {
+            items.swap(i, first_count);
+            first_count += 1;
+        }
+    }
+    first_count
+}

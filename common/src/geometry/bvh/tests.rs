@@ -1,0 +1,188 @@
+//! The shape of the tree: every primitive in exactly one small leaf, every box containing what
+//! is below it, bounded depth whatever the input.
+
+use glam::Vec3;
+use rand::{RngExt, SeedableRng};
+use rand_pcg::Pcg32;
+
+use super::build::MAX_DEPTH;
+use super::*;
+use crate::Ray;
+
+/// Checks the invariants of the subtree at `index`; returns the primitives below it.
+fn check_subtree(bvh: &Bvh, boxes: &[Aabb], index: usize, depth: usize) -> Vec<u32> {
+    assert!(depth <= bvh.depth());
+    let node = bvh.nodes[index];
+    match node.kind {
+        NodeKind::Leaf { first, count } => {
+            assert!((1..=MAX_PRIMITIVES_PER_LEAF as u32).contains(&count));
+            let primitives = &bvh.primitive_indices[first as usize..(first + count) as usize];
+            for &p in primitives {
+                assert!(node.bounds.contains_box(&boxes[p as usize]));
+            }
+            primitives.to_vec()
+        }
+        NodeKind::Interior { second_child, .. } => {
+            for child in [index + 1, second_child as usize] {
+                assert!(child > index, "children come after their parent");
+                assert!(node.bounds.contains_box(&bvh.nodes[child].bounds));
+            }
+            let mut below = check_subtree(bvh, boxes, index + 1, depth + 1);
+            below.extend(check_subtree(bvh, boxes, second_child as usize, depth + 1));
+            below
+        }
+    }
+}
+
+/// Builds a BVH and checks that it is a well-formed tree holding every non-empty box once.
+fn build_and_check(boxes: &[Aabb]) -> Bvh {
+    let bvh = Bvh::build(boxes);
+    assert!(bvh.depth() <= MAX_DEPTH);
+    let mut held = if bvh.node_count() == 0 {
+        Vec::new()
+    } else {
+        check_subtree(&bvh, boxes, 0, 1)
+    };
+    held.sort_unstable();
+    let expected: Vec<u32> = (0..boxes.len() as u32)
+        .filter(|&i| !boxes[i as usize].is_empty())
+        .collect();
+    assert_eq!(held, expected);
+    bvh
+}
+
+fn cube_at(center: Vec3, half_size: f32) -> Aabb {
+    Aabb::from_points(center - half_size, center + half_size)
+}
+
+#[test]
+fn no_boxes_and_one_box() {
+    let empty = build_and_check(&[]);
+    assert_eq!((empty.node_count(), empty.depth()), (0, 0));
+    assert!(empty.bounds().is_empty());
+    let ray = Ray::new(Vec3::ZERO, Vec3::X);
+    assert_eq!(empty.intersect(&ray, |_, _| Some(1.0)), None);
+    assert!(!empty.any_hit(&ray, |_| true));
+
+    let one = build_and_check(&[cube_at(Vec3::X * 3.0, 1.0)]);
+    assert_eq!((one.node_count(), one.depth()), (1, 1));
+    let hit = one.intersect(&ray, |i, _| (i == 0).then_some(2.0));
+    assert_eq!(
+        hit,
+        Some(BvhHit {
+            primitive: 0,
+            t: 2.0
+        })
+    );
+}
+
+#[test]
+fn random_boxes_make_a_shallow_tree() {
+    let mut rng = Pcg32::seed_from_u64(1);
+    let boxes: Vec<Aabb> = (0..1000)
+        .map(|_| {
+            let c = Vec3::new(rng.random(), rng.random(), rng.random()) * 100.0;
+            cube_at(c, rng.random_range(0.1..2.0))
+        })
+        .collect();
+    let bvh = build_and_check(&boxes);
+    assert!(bvh.depth() < 30, "depth {}", bvh.depth());
+    assert!(bvh.node_count() < 2 * boxes.len());
+}
+
+#[test]
+fn degenerate_inputs_do_not_break_the_build() {
+    let p = Vec3::new(1.0, 2.0, 3.0);
+    let point = Aabb::from_points(p, p);
+    let flat = Aabb::from_points(p, p + Vec3::new(1.0, 0.0, 1.0));
+    build_and_check(&vec![point; 100]);
+    build_and_check(&vec![flat; 100]);
+    // Zero-size boxes along a line: the surface area of every node is zero.
+    let on_a_line: Vec<Aabb> = (0..100).map(|k| cube_at(Vec3::X * k as f32, 0.0)).collect();
+    build_and_check(&on_a_line);
+    // Empty and NaN boxes are left out.
+    let nan = Aabb {
+        min: Vec3::NAN,
+        max: Vec3::ONE,
+    };
+    let bvh = build_and_check(&[point, Aabb::empty(), nan, flat]);
+    assert_eq!(bvh.primitive_indices.len(), 2);
+}
+
+#[test]
+fn exponentially_spaced_boxes_cannot_make_the_tree_too_deep() {
+    // The SAH splits off one box at a time here; the depth limit must kick in.
+    let boxes: Vec<Aabb> = (0..120)
+        .map(|k| cube_at(Vec3::X * 1.3f32.powi(k), 0.5))
+        .collect();
+    let bvh = build_and_check(&boxes);
+    assert!(bvh.depth() <= MAX_DEPTH);
+}
+
+#[test]
+fn intersect_keeps_the_nearest_and_ignores_answers_beyond_t_max() {
+    let boxes: Vec<Aabb> = (0..50).map(|k| cube_at(Vec3::X * k as f32, 0.4)).collect();
+    let bvh = Bvh::build(&boxes);
+    let ray = Ray::new(Vec3::new(-1.0, 0.0, 0.0), Vec3::X);
+    // Primitive k is "hit" at its distance from the origin, except that 10 lies about being
+    // beyond t_max and 3 answers NaN.
+    let hit = bvh.intersect(&ray, |k, t_max| match k {
+        10 => Some(t_max),
+        3 => Some(f32::NAN),
+        _ => Some(k as f32 + 0.6),
+    });
+    assert_eq!(
+        hit,
+        Some(BvhHit {
+            primitive: 0,
+            t: 0.6
+        })
+    );
+    let hit = bvh.intersect(&ray, |k, _| (k >= 20).then_some(k as f32 + 0.6));
+    assert_eq!(
+        hit,
+        Some(BvhHit {
+            primitive: 20,
+            t: 20.6
+        })
+    );
+}
+
+#[test]
+fn near_children_first_culls_most_of_the_tree() {
+    let boxes: Vec<Aabb> = (0..256).map(|k| cube_at(Vec3::X * k as f32, 0.4)).collect();
+    let bvh = Bvh::build(&boxes);
+    for (origin, dir) in [(-1.0, Vec3::X), (300.0, -Vec3::X)] {
+        let ray = Ray::new(Vec3::new(origin, 0.0, 0.0), dir);
+        let mut tested = 0;
+        let hit = bvh.intersect(&ray, |k, _| {
+            tested += 1;
+            Some((k as f32 - origin).abs() - 0.4)
+        });
+        let expected = if dir.x > 0.0 { 0 } else { 255 };
+        assert_eq!(hit.unwrap().primitive, expected);
+        assert!(
+            tested <= 2 * MAX_PRIMITIVES_PER_LEAF,
+            "tested {tested} primitives"
+        );
+    }
+}
+
+#[test]
+fn any_hit_stops_at_the_first_hit() {
+    let boxes: Vec<Aabb> = (0..100).map(|k| cube_at(Vec3::X * k as f32, 0.4)).collect();
+    let bvh = Bvh::build(&boxes);
+    let ray = Ray::new(Vec3::new(-1.0, 0.0, 0.0), Vec3::X);
+    let mut tested = 0;
+    assert!(bvh.any_hit(&ray, |_| {
+        tested += 1;
+        true
+    }));
+    assert_eq!(tested, 1);
+    assert!(!bvh.any_hit(&ray, |_| false));
+    let short = Ray { t_max: 0.5, ..ray };
+    assert!(
+        !bvh.any_hit(&short, |_| true),
+        "boxes beyond t_max are not visited"
+    );
+}

@@ -1,0 +1,227 @@
+//! The disc: a flat circle, the shape of spot-light apertures and lens-like area lights.
+
+use std::f32::consts::{PI, TAU};
+
+use glam::{Vec2, Vec3};
+
+use super::plane::SpannedPlane;
+use crate::Ray;
+use crate::geometry::aabb::Aabb;
+use crate::geometry::float::gamma;
+use crate::geometry::hit::SurfaceHit;
+
+/// The disc of `radius` around `center` in the plane perpendicular to `normal`.
+///
+/// Its normal is the given one (normalised) and its surface parameters are
+/// `uv = (r / radius, φ / 2π)`, with `φ` measured around the normal from
+/// [`tangent`](Self::tangent) towards [`bitangent`](Self::bitangent).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Disc {
+    center: Vec3,
+    normal: Vec3,
+    radius: f32,
+    tangent: Vec3,
+    bitangent: Vec3,
+    plane: SpannedPlane,
+}
+
+impl Disc {
+    /// The disc of `radius` around `center`, facing `normal` (which need not be unit length).
+    ///
+    /// A zero normal or a non-positive radius gives a disc that is never hit.
+    pub fn new(center: Vec3, normal: Vec3, radius: f32) -> Self {
+        let normal = normal.normalize_or_zero();
+        let (tangent, bitangent) = if normal == Vec3::ZERO {
+            (Vec3::ZERO, Vec3::ZERO)
+        } else {
+            let tangent = normal.any_orthonormal_vector();
+            (tangent, normal.cross(tangent))
+        };
+        Self {
+            center,
+            normal,
+            radius,
+            tangent,
+            bitangent,
+            // The disc lies exactly in the plane spanned by its tangents; the stored unit normal
+            // is a rounded version of their cross product.
+            plane: SpannedPlane::new(center, tangent, bitangent),
+        }
+    }
+
+    /// The centre.
+    pub fn center(&self) -> Vec3 {
+        self.center
+    }
+
+    /// The unit normal.
+    pub fn normal(&self) -> Vec3 {
+        self.normal
+    }
+
+    /// The radius.
+    pub fn radius(&self) -> f32 {
+        self.radius
+    }
+
+    /// The in-plane direction where `φ = 0`.
+    pub fn tangent(&self) -> Vec3 {
+        self.tangent
+    }
+
+    /// The in-plane direction where `φ = π/2`: `normal × tangent`.
+    pub fn bitangent(&self) -> Vec3 {
+        self.bitangent
+    }
+
+    /// The point `center + a tangent + b bitangent` of the disc's plane.
+    pub fn point_at(&self, a: f32, b: f32) -> Vec3 {
+        self.center + a * self.tangent + b * self.bitangent
+    }
+
+    /// A box certainly containing the disc.
+    ///
+    /// Along axis `i` the disc reaches `radius · √(tangent_i² + bitangent_i²)` from its centre
+    /// (so a floor disc is a flat box); that is grown a little for its own rounding.
+    pub fn bounds(&self) -> Aabb {
+        let t = self.tangent;
+        let b = self.bitangent;
+        let reach = self.radius.abs() * (t * t + b * b).sqrt() * (1.0 + gamma(5));
+        Aabb::from_points(self.center - reach, self.center + reach).rounded_outward()
+    }
+
+    /// The area `π r²`.
+    pub fn area(&self) -> f32 {
+        PI * self.radius * self.radius
+    }
+
+    /// The hit with `0 < t < ray.t_max`, seen from either side.
+    ///
+    /// Like [`Quad::intersect`](super::Quad::intersect): a robust plane crossing, then in-plane
+    /// coordinates `(a, b)` along the tangents, then `p = center + a tangent + b bitangent` with
+    /// the error bound `γ(3) (|center| + |a tangent| + |b bitangent|)`.
+    pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        let has_area = self.radius > 0.0 && self.normal != Vec3::ZERO; // false for a NaN radius
+        if !has_area {
+            return None;
+        }
+        let t = self.plane.crossing(ray)?;
+        let from_center = ray.at(t) - self.center;
+        let a = from_center.dot(self.tangent);
+        let b = from_center.dot(self.bitangent);
+        let r = a.hypot(b);
+        if r > self.radius {
+            return None;
+        }
+        let p = self.point_at(a, b);
+        let p_error =
+            gamma(3) * (self.center.abs() + (a * self.tangent).abs() + (b * self.bitangent).abs());
+        let phi = b.atan2(a);
+        let phi = if phi < 0.0 { phi + TAU } else { phi };
+        Some(SurfaceHit {
+            t,
+            p,
+            p_error,
+            n: self.normal,
+            shading_n: self.normal,
+            uv: Vec2::new(r / self.radius, phi / TAU),
+            shape: 0,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use approx::assert_relative_eq;
+
+    use super::*;
+
+    fn floor_disc() -> Disc {
+        Disc::new(Vec3::new(1.0, 0.5, -1.0), Vec3::Y * 3.0, 2.0)
+    }
+
+    #[test]
+    fn hit_has_known_t_p_n_and_uv() {
+        let disc = floor_disc();
+        let target = disc.point_at(0.0, 1.0);
+        let ray = Ray::new(target + Vec3::Y * 4.0, -Vec3::Y);
+        let hit = disc.intersect(&ray).unwrap();
+        assert_relative_eq!(hit.t, 4.0, max_relative = 1e-6);
+        assert_relative_eq!(hit.p, target, epsilon = 1e-6);
+        assert_eq!(hit.n, Vec3::Y);
+        assert_relative_eq!(hit.uv, Vec2::new(0.5, 0.25), epsilon = 1e-6);
+        assert!(hit.front_face(ray.dir));
+    }
+
+    #[test]
+    fn the_tangent_frame_is_right_handed_and_orthonormal() {
+        let disc = Disc::new(Vec3::ZERO, Vec3::new(0.3, -0.4, 0.8), 1.0);
+        let (t, b, n) = (disc.tangent(), disc.bitangent(), disc.normal());
+        assert_relative_eq!(t.cross(b), n, epsilon = 1e-6);
+        assert_relative_eq!(t.dot(n), 0.0, epsilon = 1e-6);
+        assert!(t.is_normalized() && b.is_normalized() && n.is_normalized());
+    }
+
+    #[test]
+    fn misses_outside_the_rim_and_behind() {
+        let disc = floor_disc();
+        let outside = disc.point_at(1.5, 1.5) + Vec3::Y;
+        assert!(disc.intersect(&Ray::new(outside, -Vec3::Y)).is_none());
+        let above = disc.center() + Vec3::Y;
+        assert!(disc.intersect(&Ray::new(above, Vec3::Y)).is_none());
+    }
+
+    #[test]
+    fn grazing_rays_hit_inside_and_miss_outside() {
+        let disc = Disc::new(Vec3::ZERO, Vec3::Y, 1.0);
+        let dir = Vec3::new(1.0, -1e-4, 0.0);
+        let inside = Ray::new(Vec3::new(-2.0, 1.5e-4, 0.0), dir);
+        let hit = disc
+            .intersect(&inside)
+            .expect("nearly parallel ray inside hits");
+        assert_relative_eq!(hit.p.x, -0.5, epsilon = 1e-3);
+        let outside = Ray::new(Vec3::new(-2.0, 3.5e-4, 0.0), dir);
+        assert!(disc.intersect(&outside).is_none());
+    }
+
+    #[test]
+    fn t_max_is_respected() {
+        let disc = floor_disc();
+        let ray = Ray::new(disc.center() + 2.0 * Vec3::Y, -Vec3::Y);
+        assert!(disc.intersect(&Ray { t_max: 2.0, ..ray }).is_none());
+        assert!(
+            disc.intersect(&Ray {
+                t_max: 2.001,
+                ..ray
+            })
+            .is_some()
+        );
+    }
+
+    #[test]
+    fn degenerate_discs_are_never_hit() {
+        let ray = Ray::new(Vec3::Y, -Vec3::Y);
+        assert!(
+            Disc::new(Vec3::ZERO, Vec3::ZERO, 1.0)
+                .intersect(&ray)
+                .is_none()
+        );
+        assert!(
+            Disc::new(Vec3::ZERO, Vec3::Y, 0.0)
+                .intersect(&ray)
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn bounds_are_flat_for_a_floor_disc_and_area_is_pi_r_squared() {
+        let disc = floor_disc();
+        let b = disc.bounds();
+        assert!(b.diagonal().y < 1e-6);
+        assert_relative_eq!(b.diagonal().x, 4.0, max_relative = 1e-5);
+        for phi in [0.0f32, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0] {
+            assert!(b.contains(disc.point_at(2.0 * phi.cos(), 2.0 * phi.sin())));
+        }
+        assert_relative_eq!(disc.area(), 4.0 * PI);
+    }
+}

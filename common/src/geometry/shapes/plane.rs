@@ -1,0 +1,76 @@
+//! The robust ray–plane step shared by quads and discs.
+
+use glam::Vec3;
+
+use crate::Ray;
+use crate::geometry::interval::{self, Interval, IntervalVec3};
+
+/// The plane through `anchor` spanned by the exact vectors `e1` and `e2`.
+///
+/// Its normal `e1 × e2` is kept as intervals computed once, so the plane the intersection test
+/// uses is *exactly* the plane of the points `anchor + u e1 + v e2` that the hit records report,
+/// not a rounded neighbour of it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SpannedPlane {
+    anchor: Vec3,
+    normal: IntervalVec3,
+}
+
+impl SpannedPlane {
+    /// The plane through `anchor` containing the directions `e1` and `e2`.
+    pub fn new(anchor: Vec3, e1: Vec3, e2: Vec3) -> Self {
+        Self {
+            anchor,
+            normal: interval::cross(interval::exact_vec(e1), interval::exact_vec(e2)),
+        }
+    }
+
+    /// The ray parameter where the ray crosses the plane, if it certainly does so at some
+    /// `0 < t < ray.t_max`.
+    ///
+    /// `t = dot(anchor - o, N) / dot(d, N)`, evaluated in interval arithmetic: a crossing whose
+    /// interval reaches 0 or below is rejected, and so is one whose denominator might be zero
+    /// (a ray parallel to the plane). The returned `t` is the midpoint of the interval.
+    pub fn crossing(&self, ray: &Ray) -> Option<f32> {
+        let towards_anchor = interval::difference(self.anchor, ray.origin);
+        let numerator: Interval = interval::dot(towards_anchor, self.normal);
+        let denominator = interval::dot(interval::exact_vec(ray.dir), self.normal);
+        let t = numerator / denominator;
+        let certainly_ahead = t.lo > 0.0;
+        if !certainly_ahead {
+            return None;
+        }
+        let t = t.midpoint();
+        (t < ray.t_max).then_some(t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crossing_in_front_behind_and_parallel() {
+        let floor = SpannedPlane::new(Vec3::ZERO, Vec3::Z, Vec3::X);
+        let down = Ray::new(Vec3::new(0.3, 2.0, 0.1), -Vec3::Y);
+        let t = floor.crossing(&down).unwrap();
+        assert!((t - 2.0).abs() < 1e-6, "{t}");
+        let up = Ray::new(Vec3::new(0.3, 2.0, 0.1), Vec3::Y);
+        assert_eq!(floor.crossing(&up), None);
+        let parallel = Ray::new(Vec3::new(0.3, 2.0, 0.1), Vec3::X);
+        assert_eq!(floor.crossing(&parallel), None);
+        assert_eq!(floor.crossing(&Ray { t_max: 2.0, ..down }), None);
+    }
+
+    #[test]
+    fn a_ray_starting_on_the_plane_does_not_cross_it() {
+        // Binary fractions, so that `on_plane` is exactly on the plane.
+        let anchor = Vec3::new(0.5, 0.25, 0.125);
+        let e1 = Vec3::new(1.0, 0.5, 0.0);
+        let tilted = SpannedPlane::new(anchor, e1, Vec3::new(0.0, 0.75, 1.0));
+        let on_plane = anchor + 0.5 * e1;
+        for dir in [Vec3::X, Vec3::Y, Vec3::Z, -Vec3::ONE] {
+            assert_eq!(tilted.crossing(&Ray::new(on_plane, dir)), None);
+        }
+    }
+}

@@ -1,0 +1,243 @@
+//! The sphere, intersected with interval arithmetic as in pbrt-v4.
+
+use std::f32::consts::{PI, TAU};
+
+use glam::{Vec2, Vec3};
+
+use crate::Ray;
+use crate::geometry::aabb::Aabb;
+use crate::geometry::float::gamma;
+use crate::geometry::hit::SurfaceHit;
+use crate::geometry::interval::{self, Interval};
+
+/// A sphere; its normal points outwards.
+///
+/// Its surface parameters are `uv = (φ / 2π, θ / π)`, with `θ` measured from the `+z` pole and
+/// `φ` around `z`, counter-clockwise from `+x`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    /// The centre.
+    pub center: Vec3,
+    /// The radius; a sphere whose radius is not positive is never hit.
+    pub radius: f32,
+}
+
+impl Sphere {
+    /// The sphere of `radius` around `center`.
+    pub fn new(center: Vec3, radius: f32) -> Self {
+        Self { center, radius }
+    }
+
+    /// A box certainly containing the sphere.
+    pub fn bounds(&self) -> Aabb {
+        let r = Vec3::splat(self.radius.abs());
+        Aabb::from_points(self.center - r, self.center + r).rounded_outward()
+    }
+
+    /// The surface area `4π r²`.
+    pub fn area(&self) -> f32 {
+        4.0 * PI * self.radius * self.radius
+    }
+
+    /// The nearest hit with `0 < t < ray.t_max`; from inside, that is the far wall.
+    ///
+    /// The quadratic `|o + t d - c|² = r²` is solved in three careful steps:
+    ///
+    /// 1. Everything is relative to the centre, so a sphere 10⁵ away from the origin is solved
+    ///    with the same small numbers as one at the origin.
+    /// 2. The discriminant is computed as `4a (r + |v|)(r - |v|)`, where `v` is the vector from
+    ///    the centre to the point of the ray's line closest to it. The textbook `b² - 4ac`
+    ///    subtracts two nearly equal large numbers for a ray from far away, and loses every
+    ///    digit; this form only subtracts `r - |v|`, which is small exactly when the ray grazes.
+    /// 3. The roots are `q / a` and `c / q` with `q = -(b ± √disc) / 2`, the sign chosen so that
+    ///    `b` and `√disc` are never subtracted from each other.
+    ///
+    /// All of it in interval arithmetic, so every root comes with a range certain to contain
+    /// the exact root: a root counts only if its whole range is above 0.
+    pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        let has_area = self.radius > 0.0; // false for a NaN radius too
+        if !has_area {
+            return None;
+        }
+        let o = interval::difference(ray.origin, self.center);
+        let d = interval::exact_vec(ray.dir);
+        let r = Interval::exact(self.radius);
+        let two = Interval::exact(2.0);
+
+        let a = interval::length_squared(d);
+        let b = two * interval::dot(d, o);
+        let c = interval::length_squared(o) - r.squared();
+        let along = b / (two * a);
+        let v = [0, 1, 2].map(|i| o[i] - along * d[i]);
+        let v_length = interval::length_squared(v).sqrt();
+        let discriminant = Interval::exact(4.0) * a * (r + v_length) * (r - v_length);
+        if discriminant.lo < 0.0 {
+            return None;
+        }
+        let root = discriminant.sqrt();
+        let minus_half = Interval::exact(-0.5);
+        let q = if b.midpoint() < 0.0 {
+            minus_half * (b - root)
+        } else {
+            minus_half * (b + root)
+        };
+        let (mut t0, mut t1) = (q / a, c / q);
+        if t0.lo > t1.lo {
+            std::mem::swap(&mut t0, &mut t1);
+        }
+        // The nearer root if it is certainly in front of the origin, else the farther one.
+        let t = if t0.lo > 0.0 {
+            t0
+        } else if t1.lo > 0.0 {
+            t1
+        } else {
+            return None;
+        };
+        let t = t.midpoint();
+        let within_reach = t < ray.t_max; // false for NaN too
+        if !within_reach {
+            return None;
+        }
+        self.surface_hit(ray, t)
+    }
+
+    /// The hit record at ray parameter `t`.
+    ///
+    /// The point `o + t d` is off the sphere by the error of `t`, so it is projected back onto
+    /// the sphere (`p · r / |p|`); that projection is within `γ(5) |p|` of the exact surface.
+    /// Adding the centre back costs one more rounding of at most `γ(2) |center + p|`.
+    fn surface_hit(&self, ray: &Ray, t: f32) -> Option<SurfaceHit> {
+        let unprojected = (ray.origin - self.center) + t * ray.dir;
+        let length = unprojected.length();
+        if length == 0.0 || length.is_nan() {
+            return None;
+        }
+        let local = unprojected * (self.radius / length);
+        let p = self.center + local;
+        let p_error = gamma(5) * local.abs() + gamma(2) * p.abs();
+        let n = local.normalize();
+
+        let phi = local.y.atan2(local.x);
+        let phi = if phi < 0.0 { phi + TAU } else { phi };
+        let theta = (local.z / self.radius).clamp(-1.0, 1.0).acos();
+        Some(SurfaceHit {
+            t,
+            p,
+            p_error,
+            n,
+            shading_n: n,
+            uv: Vec2::new(phi / TAU, theta / PI),
+            shape: 0,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use approx::assert_relative_eq;
+
+    use super::*;
+
+    fn unit_sphere_at(center: Vec3) -> Sphere {
+        Sphere::new(center, 1.0)
+    }
+
+    #[test]
+    fn head_on_hit_has_known_t_p_n_and_uv() {
+        let sphere = unit_sphere_at(Vec3::new(1.0, 2.0, 3.0));
+        let ray = Ray::new(Vec3::new(1.0, 2.0, 10.0), -Vec3::Z);
+        let hit = sphere.intersect(&ray).unwrap();
+        assert_relative_eq!(hit.t, 6.0, max_relative = 1e-6);
+        assert_relative_eq!(hit.p, Vec3::new(1.0, 2.0, 4.0), epsilon = 1e-6);
+        assert_relative_eq!(hit.n, Vec3::Z, epsilon = 1e-6);
+        assert_eq!(hit.shading_n, hit.n);
+        assert_relative_eq!(hit.uv.y, 0.0, epsilon = 1e-3); // the +z pole
+        assert!(hit.front_face(ray.dir));
+        // From -x towards +x we meet the point at φ = π, θ = π/2.
+        let side = Ray::new(Vec3::new(-5.0, 2.0, 3.0), Vec3::X);
+        let hit = sphere.intersect(&side).unwrap();
+        assert_relative_eq!(hit.t, 5.0, max_relative = 1e-6);
+        assert_relative_eq!(hit.n, -Vec3::X, epsilon = 1e-6);
+        assert_relative_eq!(hit.uv, Vec2::new(0.5, 0.5), epsilon = 1e-6);
+    }
+
+    #[test]
+    fn misses_beside_and_behind() {
+        let sphere = unit_sphere_at(Vec3::ZERO);
+        assert!(
+            sphere
+                .intersect(&Ray::new(Vec3::new(0.0, 1.5, -5.0), Vec3::Z))
+                .is_none()
+        );
+        assert!(
+            sphere
+                .intersect(&Ray::new(Vec3::new(0.0, 0.0, 5.0), Vec3::Z))
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn grazing_rays_hit_just_inside_and_miss_just_outside() {
+        let sphere = unit_sphere_at(Vec3::ZERO);
+        let inside = Ray::new(Vec3::new(0.0, 0.999, -5.0), Vec3::Z);
+        let hit = sphere.intersect(&inside).unwrap();
+        let half_chord = (1.0f32 - 0.999 * 0.999).sqrt();
+        assert_relative_eq!(hit.t, 5.0 - half_chord, max_relative = 1e-4);
+        assert!(
+            sphere
+                .intersect(&Ray::new(Vec3::new(0.0, 1.001, -5.0), Vec3::Z))
+                .is_none()
+        );
+        // Exactly tangent: either answer is fine, but it must not be NaN.
+        if let Some(hit) = sphere.intersect(&Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z)) {
+            assert!(hit.t.is_finite() && hit.p.is_finite() && hit.n.is_finite());
+        }
+    }
+
+    #[test]
+    fn grazing_rays_from_far_away_at_large_scale_still_hit() {
+        // The textbook discriminant b² - 4ac cancels catastrophically here.
+        let sphere = Sphere::new(Vec3::splat(1e5), 1e5);
+        let ray = Ray::new(Vec3::new(1e5, 1e5 + 0.99e5, -1e7), Vec3::Z);
+        let hit = sphere
+            .intersect(&ray)
+            .expect("grazing ray from afar should hit");
+        assert_relative_eq!(hit.p.distance(sphere.center), 1e5, max_relative = 1e-5);
+    }
+
+    #[test]
+    fn from_inside_the_far_wall_is_hit_with_an_outward_normal() {
+        let sphere = unit_sphere_at(Vec3::new(3.0, 0.0, 0.0));
+        let ray = Ray::new(Vec3::new(3.2, 0.0, 0.0), Vec3::Y);
+        let hit = sphere.intersect(&ray).unwrap();
+        let expected_t = (1.0f32 - 0.2 * 0.2).sqrt();
+        assert_relative_eq!(hit.t, expected_t, max_relative = 1e-5);
+        assert!(hit.n.dot(Vec3::Y) > 0.9, "normal points outwards");
+        assert!(!hit.front_face(ray.dir));
+    }
+
+    #[test]
+    fn t_max_is_respected() {
+        let sphere = unit_sphere_at(Vec3::ZERO);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+        assert!(sphere.intersect(&Ray { t_max: 3.9, ..ray }).is_none());
+        assert!(sphere.intersect(&Ray { t_max: 4.1, ..ray }).is_some());
+    }
+
+    #[test]
+    fn non_positive_radius_is_never_hit() {
+        let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+        for radius in [0.0, -1.0, f32::NAN] {
+            assert!(Sphere::new(Vec3::ZERO, radius).intersect(&ray).is_none());
+        }
+    }
+
+    #[test]
+    fn bounds_and_area() {
+        let sphere = Sphere::new(Vec3::new(1.0, 2.0, 3.0), 2.0);
+        let b = sphere.bounds();
+        assert!(b.contains(Vec3::new(-1.0, 0.0, 1.0)) && b.contains(Vec3::new(3.0, 4.0, 5.0)));
+        assert_relative_eq!(b.diagonal(), Vec3::splat(4.0), max_relative = 1e-6);
+        assert_relative_eq!(sphere.area(), 16.0 * PI);
+    }
+}

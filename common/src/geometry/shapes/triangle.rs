@@ -1,0 +1,315 @@
+//! The triangle, with the watertight ray–triangle test of Woop, Benthin and Wald (2013).
+
+use glam::{Vec2, Vec3};
+
+use crate::Ray;
+use crate::geometry::aabb::Aabb;
+use crate::geometry::float::gamma;
+use crate::geometry::hit::SurfaceHit;
+
+/// A triangle, optionally with a normal at each vertex for smooth shading.
+///
+/// Its geometric normal is `normalize((p1 - p0) × (p2 - p0))`: counter-clockwise vertices seen
+/// from the front. Its surface parameters are the barycentric coordinates `uv = (b1, b2)` of
+/// the hit point `b0 p0 + b1 p1 + b2 p2`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Triangle {
+    /// The three vertices.
+    pub p: [Vec3; 3],
+    /// Unit normals at the vertices, interpolated into the shading normal.
+    pub normals: Option<[Vec3; 3]>,
+}
+
+/// Where a ray crosses a triangle: its ray parameter and barycentric coordinates.
+struct Crossing {
+    t: f32,
+    b: [f32; 3],
+}
+
+impl Triangle {
+    /// The flat triangle `p0 p1 p2`.
+    pub fn new(p0: Vec3, p1: Vec3, p2: Vec3) -> Self {
+        Self {
+            p: [p0, p1, p2],
+            normals: None,
+        }
+    }
+
+    /// A triangle whose shading normal interpolates the vertex normals `n`.
+    pub fn with_normals(p: [Vec3; 3], n: [Vec3; 3]) -> Self {
+        Self {
+            p,
+            normals: Some(n),
+        }
+    }
+
+    /// The box of the three vertices (exact: nothing is computed).
+    pub fn bounds(&self) -> Aabb {
+        Aabb::from_point_set(self.p)
+    }
+
+    /// The area `|(p1 - p0) × (p2 - p0)| / 2`.
+    pub fn area(&self) -> f32 {
+        0.5 * self.unnormalized_normal().length()
+    }
+
+    fn unnormalized_normal(&self) -> Vec3 {
+        let [p0, p1, p2] = self.p;
+        (p1 - p0).cross(p2 - p0)
+    }
+
+    /// The hit with `0 < t < ray.t_max`, seen from either side; degenerate triangles (zero area,
+    /// or non-finite vertices) are never hit.
+    pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        let normal = self.unnormalized_normal();
+        let has_area = normal.length_squared() > 0.0; // false for NaN vertices too
+        if !has_area {
+            return None;
+        }
+        let Crossing { t, b } = self.crossing(ray)?;
+        let [p0, p1, p2] = self.p;
+        // The point from the barycentrics, not from t: then its error does not depend on how
+        // far the ray travelled. Bound from pbrt-v4, section 6.8.6.
+        let p = b[0] * p0 + b[1] * p1 + b[2] * p2;
+        let p_error = gamma(7) * ((b[0] * p0).abs() + (b[1] * p1).abs() + (b[2] * p2).abs());
+        let n = normal.normalize();
+        let shading_n = match self.normals {
+            Some([n0, n1, n2]) => (b[0] * n0 + b[1] * n1 + b[2] * n2)
+                .try_normalize()
+                .unwrap_or(n),
+            None => n,
+        };
+        Some(SurfaceHit {
+            t,
+            p,
+            p_error,
+            n,
+            shading_n,
+            uv: Vec2::new(b[1], b[2]),
+            shape: 0,
+        })
+    }
+
+    /// The watertight test, following pbrt-v4 (section 6.5.3).
+    ///
+    /// The vertices are moved into a coordinate system where the ray starts at the origin and
+    /// runs along `+z`: translate by `-o`, permute the axes so that the largest component of
+    /// the direction becomes z, then shear x and y so that the direction becomes `(0, 0, 1)`.
+    /// The ray then hits the triangle if the 2D point `(0, 0)` is inside the projected triangle,
+    /// which the signs of the three edge functions `e_i` decide.
+    ///
+    /// *Watertight* means a ray through an edge shared by two triangles hits at least one of
+    /// them. Both triangles compute that edge's function from the same two transformed vertices,
+    /// and here each edge function is a difference of two products evaluated in `f64`, where the
+    /// products of `f32`s are exact: so its sign is exact, and the two triangles see exactly
+    /// opposite values and cannot both reject the ray.
+    fn crossing(&self, ray: &Ray) -> Option<Crossing> {
+        let kz = ray.dir.abs().max_position();
+        let kx = (kz + 1) % 3;
+        let ky = (kx + 1) % 3;
+        let permute = |v: Vec3| Vec3::new(v[kx], v[ky], v[kz]);
+        let d = permute(ray.dir);
+        if d.z == 0.0 {
+            return None; // a zero direction
+        }
+        let shear_x = -d.x / d.z;
+        let shear_y = -d.y / d.z;
+        let scale_z = 1.0 / d.z;
+        let to_ray_space = |p: Vec3| {
+            let v = permute(p - ray.origin);
+            Vec3::new(v.x + shear_x * v.z, v.y + shear_y * v.z, v.z * scale_z)
+        };
+        let [p0, p1, p2] = self.p.map(to_ray_space);
+
+        let e = [
+            edge_function(p1, p2),
+            edge_function(p2, p0),
+            edge_function(p0, p1),
+        ];
+        let any_negative = e.iter().any(|&e| e < 0.0);
+        let any_positive = e.iter().any(|&e| e > 0.0);
+        if any_negative && any_positive {
+            return None;
+        }
+        let det = e[0] + e[1] + e[2];
+        if det == 0.0 {
+            return None;
+        }
+
+        // t = (Σ e_i z_i) / det, but compared before dividing to avoid the division on misses.
+        let t_scaled = e[0] * p0.z + e[1] * p1.z + e[2] * p2.z;
+        let t_max_scaled = ray.t_max * det;
+        let out_of_range = if det < 0.0 {
+            t_scaled >= 0.0 || t_scaled < t_max_scaled
+        } else {
+            t_scaled <= 0.0 || t_scaled > t_max_scaled
+        };
+        if out_of_range {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        let b = e.map(|e| e * inv_det);
+        let t = t_scaled * inv_det;
+
+        // Accept t only if it is positive beyond its rounding error (pbrt-v4, section 6.8.7).
+        let max_abs = |a: f32, b: f32, c: f32| a.abs().max(b.abs()).max(c.abs());
+        let max_z = max_abs(p0.z, p1.z, p2.z);
+        let max_x = max_abs(p0.x, p1.x, p2.x);
+        let max_y = max_abs(p0.y, p1.y, p2.y);
+        let delta_z = gamma(3) * max_z;
+        let delta_x = gamma(5) * (max_x + max_z);
+        let delta_y = gamma(5) * (max_y + max_z);
+        let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        let max_e = max_abs(e[0], e[1], e[2]);
+        let delta_t =
+            3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
+        let certainly_in_range = delta_t < t && t < ray.t_max; // false for NaN too
+        if !certainly_in_range {
+            return None;
+        }
+        Some(Crossing { t, b })
+    }
+}
+
+/// `a.x b.y - a.y b.x`: twice the signed area of the 2D triangle `(0, 0), a, b`.
+///
+/// Computed in `f64`, where the two products are exact, so the result has the exact sign.
+fn edge_function(a: Vec3, b: Vec3) -> f32 {
+    (f64::from(a.x) * f64::from(b.y) - f64::from(a.y) * f64::from(b.x)) as f32
+}
+
+#[cfg(test)]
+mod tests {
+    use approx::assert_relative_eq;
+
+    use super::*;
+
+    fn right_triangle() -> Triangle {
+        // In the plane z = 1, normal +z (x × y).
+        Triangle::new(
+            Vec3::new(0.0, 0.0, 1.0),
+            Vec3::new(1.0, 0.0, 1.0),
+            Vec3::new(0.0, 1.0, 1.0),
+        )
+    }
+
+    #[test]
+    fn hit_has_known_t_p_n_and_barycentrics() {
+        let ray = Ray::new(Vec3::new(0.25, 0.5, 5.0), -Vec3::Z);
+        let hit = right_triangle().intersect(&ray).unwrap();
+        assert_relative_eq!(hit.t, 4.0, max_relative = 1e-6);
+        assert_relative_eq!(hit.p, Vec3::new(0.25, 0.5, 1.0), epsilon = 1e-6);
+        assert_eq!(hit.n, Vec3::Z);
+        assert_eq!(hit.shading_n, hit.n);
+        assert_relative_eq!(hit.uv, Vec2::new(0.25, 0.5), epsilon = 1e-6);
+        assert!(hit.front_face(ray.dir));
+        assert!(hit.p_error.cmpgt(Vec3::ZERO).all());
+    }
+
+    #[test]
+    fn hit_from_behind_keeps_the_normal_and_is_not_front_facing() {
+        let ray = Ray::new(Vec3::new(0.25, 0.25, -5.0), Vec3::Z);
+        let hit = right_triangle().intersect(&ray).unwrap();
+        assert_eq!(hit.n, Vec3::Z);
+        assert!(!hit.front_face(ray.dir));
+    }
+
+    #[test]
+    fn misses_outside_the_edges_and_behind_the_origin() {
+        let triangle = right_triangle();
+        let beyond_hypotenuse = Ray::new(Vec3::new(0.6, 0.6, 5.0), -Vec3::Z);
+        assert!(triangle.intersect(&beyond_hypotenuse).is_none());
+        let behind = Ray::new(Vec3::new(0.25, 0.25, 0.0), -Vec3::Z);
+        assert!(triangle.intersect(&behind).is_none());
+    }
+
+    #[test]
+    fn rays_in_the_triangles_plane_never_hit() {
+        let triangle = right_triangle();
+        for dir in [
+            Vec3::X,
+            Vec3::Y,
+            Vec3::new(1.0, 1.0, 0.0),
+            Vec3::new(-1.0, 0.5, 0.0),
+        ] {
+            let ray = Ray::new(Vec3::new(-1.0, 0.2, 1.0), dir);
+            assert!(triangle.intersect(&ray).is_none(), "dir {dir}");
+        }
+    }
+
+    #[test]
+    fn grazing_rays_hit_inside_and_miss_outside() {
+        let triangle = right_triangle();
+        let dir = Vec3::new(1.0, 0.0, -1e-3);
+        let inside = Ray::new(Vec3::new(-1.0, 0.1, 1.0 + 1.1e-3), dir);
+        let hit = triangle
+            .intersect(&inside)
+            .expect("nearly parallel ray inside hits");
+        assert_relative_eq!(hit.p.x, 0.1, epsilon = 1e-3);
+        let outside = Ray::new(Vec3::new(-1.0, 0.1, 1.0 + 2.0e-3), dir);
+        assert!(triangle.intersect(&outside).is_none());
+    }
+
+    #[test]
+    fn t_max_is_respected() {
+        let ray = Ray::new(Vec3::new(0.25, 0.25, 5.0), -Vec3::Z);
+        let triangle = right_triangle();
+        assert!(triangle.intersect(&Ray { t_max: 4.0, ..ray }).is_none());
+        assert!(
+            triangle
+                .intersect(&Ray {
+                    t_max: 4.001,
+                    ..ray
+                })
+                .is_some()
+        );
+    }
+
+    #[test]
+    fn degenerate_triangles_never_hit_and_never_produce_nan() {
+        let p = Vec3::new(0.3, 0.2, 0.1);
+        let degenerate = [
+            Triangle::new(p, p, p),
+            Triangle::new(p, p + Vec3::X, p + 2.0 * Vec3::X),
+            Triangle::new(p, p + Vec3::Y, p),
+            Triangle::new(p, Vec3::NAN, p + Vec3::Y),
+        ];
+        for triangle in degenerate {
+            let area = triangle.area();
+            assert!(area == 0.0 || area.is_nan(), "{triangle:?}");
+            for dir in [-Vec3::Z, Vec3::X, Vec3::new(0.3, -0.2, 0.9), Vec3::ZERO] {
+                for origin in [p - dir, Vec3::new(0.3, 0.2, 2.0), p] {
+                    assert_eq!(triangle.intersect(&Ray::new(origin, dir)), None);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn shading_normal_interpolates_vertex_normals() {
+        let [p0, p1, p2] = right_triangle().p;
+        let tilted = Vec3::new(1.0, 0.0, 1.0).normalize();
+        let triangle = Triangle::with_normals([p0, p1, p2], [Vec3::Z, tilted, Vec3::Z]);
+        let at_p1 = Ray::new(Vec3::new(0.999, 0.0005, 2.0), -Vec3::Z);
+        let hit = triangle.intersect(&at_p1).unwrap();
+        assert_eq!(hit.n, Vec3::Z);
+        assert_relative_eq!(hit.shading_n, tilted, epsilon = 1e-3);
+        assert_relative_eq!(hit.shading_n.length(), 1.0, epsilon = 1e-6);
+        // Opposite vertex normals cancel; the shading normal falls back to the geometric one.
+        let cancelling = Triangle::with_normals([p0, p1, p2], [Vec3::Z, -Vec3::Z, Vec3::Z]);
+        let midway = Ray::new(Vec3::new(0.5, 0.0, 2.0), -Vec3::Z);
+        let hit = cancelling.intersect(&midway).unwrap();
+        assert!(hit.shading_n.is_finite() && hit.shading_n.is_normalized());
+    }
+
+    #[test]
+    fn bounds_and_area() {
+        let triangle = right_triangle();
+        assert_eq!(triangle.area(), 0.5);
+        let b = triangle.bounds();
+        assert_eq!(
+            (b.min, b.max),
+            (Vec3::new(0.0, 0.0, 1.0), Vec3::new(1.0, 1.0, 1.0))
+        );
+    }
+}
