@@ -12,7 +12,7 @@ use common::metrics::{
     Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
 };
 use common::output::figures::{
-    Axes, Series, SeriesStyle, comparison_grid, crop, line_plot, scatter_plot,
+    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
 };
 use common::render::RenderSettings;
 use glam::Vec2;
@@ -41,8 +41,8 @@ impl Quality {
             Quality {
                 width: 480,
                 height: 360,
-                reference_grid: 24,
-                budgets: &[1, 4, 16, 64, 256],
+                reference_grid: 16,
+                budgets: &[1, 4, 16, 64],
             }
         }
     }
@@ -83,7 +83,14 @@ fn recursion_depth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         .map(|depth| {
             // Recursion depth d allows d surface interactions: d + 1 segments in Mitsuba's count.
             let image = centre_render(Builtin::Spheres, depth + 1, &settings);
-            (format!("recursion depth {depth}"), image)
+            let bounces = if depth == 1 { "bounce" } else { "bounces" };
+            (
+                format!(
+                    "recursion depth {depth}: {depth} {bounces}, max_depth {}",
+                    depth + 1
+                ),
+                image,
+            )
         })
         .collect();
     comparison_grid(&out.join("depth.png"), &cells, 2, 1)?;
@@ -93,46 +100,76 @@ fn recursion_depth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 /// One ray through each pixel centre against supersampling, enlarged around edges.
 fn aliasing(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
-    let centre = render(&scene, &quality.settings(1), PixelPattern::Centre, 0)
+    let full = render(&scene, &quality.settings(1), PixelPattern::Centre, 0)
         .expect("centre sampling always renders");
-    let grid_spp = 16;
-    let grid =
-        render(&scene, &quality.settings(grid_spp), PixelPattern::Grid, 0).expect("16 is a square");
-    let reference_spp = quality.reference_grid * quality.reference_grid;
-    let reference = render(
-        &scene,
-        &quality.settings(reference_spp),
-        PixelPattern::Grid,
-        0,
-    )
-    .expect("a square");
-    // A window on the horizon, the checkerboard and the sphere silhouettes.
-    let (w, h) = (quality.width / 4, quality.height / 4);
-    let (x, y) = (quality.width * 5 / 8, quality.height * 3 / 8);
-    let zoom = |image: &Image| crop(image, x, y, w, h);
-    let scale = (480 / w).max(1);
-    let cells = vec![
-        (
-            "1 ray per pixel, at its centre".to_string(),
-            zoom(&centre.image),
-        ),
-        (
-            format!("{grid_spp} rays per pixel, regular grid"),
-            zoom(&grid.image),
-        ),
-        (
-            format!("reference, {reference_spp} rays per pixel"),
-            zoom(&reference.image),
-        ),
-    ];
-    comparison_grid(&out.join("aliasing.png"), &cells, 3, scale)?;
     comparison_grid(
         &out.join("render.png"),
-        &[("one ray per pixel".to_string(), centre.image)],
+        &[("one ray per pixel".to_string(), full.image)],
         1,
         1,
     )?;
+    // A window on the glass sphere's silhouette, the checkerboard seen through it and the
+    // shadow edges, rendered alone so that a dense reference stays cheap.
+    let window = Window {
+        x: quality.width * 5 / 8,
+        y: quality.height * 3 / 8,
+        width: quality.width / 4,
+        height: quality.height / 4,
+    };
+    let reference_spp = quality.reference_grid * quality.reference_grid;
+    let cells: Vec<(String, Image)> = [
+        (1, "1 ray per pixel, at its centre"),
+        (16, "16 rays per pixel, regular grid"),
+        (reference_spp, "reference"),
+    ]
+    .into_iter()
+    .map(|(spp, label)| {
+        let grid = GridSampler::for_spp(spp, 0).expect("square sample counts");
+        let label = if spp == reference_spp {
+            format!("{label}, {spp} rays per pixel")
+        } else {
+            label.to_string()
+        };
+        (label, render_window(&scene, quality, window, &grid, spp))
+    })
+    .collect();
+    let scale = (480 / window.width).max(1);
+    comparison_grid(&out.join("aliasing.png"), &cells, 3, scale)?;
     Ok(())
+}
+
+/// A rectangle of the image, in pixels.
+#[derive(Clone, Copy)]
+struct Window {
+    x: u32,
+    y: u32,
+    width: u32,
+    height: u32,
+}
+
+/// Renders only `window` of the full-size image, with `spp` samples per pixel.
+fn render_window(
+    scene: &crate::scene::Scene,
+    quality: &Quality,
+    window: Window,
+    sampler: &GridSampler,
+    spp: u64,
+) -> Image {
+    let camera = scene.camera.with_size(quality.width, quality.height);
+    let offset = Vec2::new(window.x as f32, window.y as f32);
+    let settings = RenderSettings {
+        progress: true,
+        ..RenderSettings::new(window.width, window.height, spp)
+    };
+    common::render::render(
+        &settings,
+        sampler,
+        &common::film::PixelBoxFilter,
+        |p_film, _s: &mut GridSampler, counters| {
+            crate::tracer::trace(scene, &camera.generate_ray(p_film + offset), 1, counters)
+        },
+    )
+    .image
 }
 
 /// Where the rays of a 4 x 4 patch of pixels go: the centres, and a 4 x 4 grid per pixel.
@@ -260,9 +297,11 @@ fn ray_tree(out: &Path, quick: bool) -> anyhow::Result<()> {
 /// Error against time: more rays at the pixel centre buy nothing; a grid converges.
 fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
-    let (width, height) = (quality.width / 2, quality.height / 2);
+    let (width, height) = (quality.width / 3, quality.height / 3);
     let settings = |spp| RenderSettings::new(width, height, spp);
-    let reference_spp = quality.reference_grid * quality.reference_grid * 4;
+    // Four times as many grid cells per side as the densest technique: its own error is
+    // far below the differences being measured.
+    let reference_spp = 16 * quality.budgets.last().copied().unwrap_or(1);
     let reference = render(&scene, &settings(reference_spp), PixelPattern::Grid, 0)
         .expect("a square")
         .image;

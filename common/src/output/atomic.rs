@@ -38,11 +38,13 @@ pub fn write_atomic(
     // (say from /tmp to the home directory) would not be atomic, or not possible at all.
     // Its name starts with the target's, so a leftover after a power cut is easy to recognise.
     let prefix = format!(".{}.", file_name(path));
-    let mut temporary = tempfile::Builder::new()
-        .prefix(&prefix)
-        .suffix(".tmp")
-        .tempfile_in(&directory)
-        .map_err(write_error)?;
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    // Temporary files are private (0600) by default; the finished file should be readable
+    // like any other the user creates, so ask for 0666 and let the umask trim it.
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    let mut temporary = builder.tempfile_in(&directory).map_err(write_error)?;
 
     let mut buffered = BufWriter::new(temporary.as_file_mut());
     write(&mut buffered).map_err(write_error)?;
