@@ -68,8 +68,9 @@ fn direct_light(
         let to_light = light.position - hit.p;
         let distance_squared = to_light.length_squared();
         let cos_theta = normal.dot(to_light) / distance_squared.sqrt();
-        if !(cos_theta > 0.0) {
-            continue; // behind the surface (or the light sits on it)
+        // `<= 0` would let a NaN through (a light exactly on the surface); this does not.
+        if cos_theta.is_nan() || cos_theta <= 0.0 {
+            continue; // behind the surface, or the light sits on it
         }
         counters.rays += 1;
         if scene
@@ -109,12 +110,11 @@ fn dielectric(
         let reflected = hit.spawn_ray(reflect(ray.dir, normal), ray.time);
         radiance += reflectance * trace(scene, &reflected, depth + 1, counters);
     }
-    if reflectance < 1.0 {
-        if let Some(dir) = refract(ray.dir, normal, eta) {
-            let refracted = hit.spawn_ray(dir, ray.time);
-            radiance +=
-                (1.0 - reflectance) * eta * eta * trace(scene, &refracted, depth + 1, counters);
-        }
+    if reflectance < 1.0
+        && let Some(dir) = refract(ray.dir, normal, eta)
+    {
+        let refracted = hit.spawn_ray(dir, ray.time);
+        radiance += (1.0 - reflectance) * eta * eta * trace(scene, &refracted, depth + 1, counters);
     }
     radiance
 }
