@@ -41,7 +41,10 @@ impl Image {
     }
 
     fn index(&self, x: u32, y: u32) -> usize {
-        assert!(x < self.width && y < self.height, "pixel ({x}, {y}) outside the image");
+        assert!(
+            x < self.width && y < self.height,
+            "pixel ({x}, {y}) outside the image"
+        );
         y as usize * self.width as usize + x as usize
     }
 }
