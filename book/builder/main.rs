@@ -1,1 +1,123 @@
-fn main() {}
+//! The workbook's builder: figures and site, and the tools around the exercises.
+//!
+//! - `cargo run --release -p book [-- --quick]` regenerates every chapter's figures, then builds
+//!   the site into `book/site/`.
+//! - `cargo run -p book -- exercises` lists the exercises with their checks and hints.
+//! - `cargo run -p book -- student --out DIR` writes the student edition into `DIR`.
+//! - `cargo run -p book -- check-exercises` proves every exercise fails as a stub and passes as
+//!   solved (CI runs it).
+
+mod check_exercises;
+mod exercise_list;
+mod exercise_preprocessor;
+mod figures;
+mod katex_offline;
+mod mdbook_log;
+mod offline_check;
+mod site;
+mod solution_markers;
+mod student_edition;
+mod workspace;
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::Result;
+use clap::{Parser, Subcommand};
+
+/// Builds the workbook's figures and site, and manages its exercises.
+#[derive(Parser)]
+#[command(args_conflicts_with_subcommands = true)]
+struct Cli {
+    /// Make small, fast figures (as CI does) instead of full-quality ones.
+    #[arg(long)]
+    quick: bool,
+
+    #[command(subcommand)]
+    task: Option<Task>,
+}
+
+#[derive(Subcommand)]
+enum Task {
+    /// Write the student edition: the workspace with every exercise's solution cut out.
+    Student {
+        /// Where to write it; must be empty or missing.
+        #[arg(long)]
+        out: PathBuf,
+        /// Delete what `--out` holds first.
+        #[arg(long)]
+        force: bool,
+    },
+    /// List the exercises in order, with the command that checks each and its hint.
+    Exercises,
+    /// Check that every exercise fails on the student edition and passes on the workspace.
+    CheckExercises,
+}
+
+fn main() -> Result<()> {
+    let cli = Cli::parse();
+    let root = workspace::root();
+    match cli.task {
+        None => build_book(&root, cli.quick),
+        Some(Task::Student { out, force }) => {
+            let exercises = exercise_list::load(&root)?;
+            let files = student_edition::write(&root, &exercises, &out, force)?;
+            println!(
+                "Wrote the student edition to {}: {files} files, {} exercise(s) stubbed.",
+                out.display(),
+                exercises.len()
+            );
+            Ok(())
+        }
+        Some(Task::Exercises) => {
+            print_exercises(&exercise_list::load(&root)?);
+            Ok(())
+        }
+        Some(Task::CheckExercises) => check_exercises::run(&root, &exercise_list::load(&root)?),
+    }
+}
+
+/// Figures first, then the site that shows them.
+fn build_book(root: &Path, quick: bool) -> Result<()> {
+    let started = Instant::now();
+    let book_dir = root.join("book");
+    mdbook_log::install();
+
+    figures::regenerate_all(&book_dir.join("src").join("figures"), quick)?;
+
+    println!("Building the site with mdBook and KaTeX ...");
+    let front_page = site::build(&book_dir)?;
+    println!(
+        "Site ready in {:.1} s: open {}",
+        started.elapsed().as_secs_f64(),
+        front_page.display()
+    );
+    Ok(())
+}
+
+fn print_exercises(exercises: &[exercise_list::Exercise]) {
+    if exercises.is_empty() {
+        println!(
+            "No exercises are listed in {} yet.",
+            exercise_list::LIST_PATH
+        );
+        return;
+    }
+    println!("Exercises, in the order of the book:\n");
+    for (number, exercise) in exercises.iter().enumerate() {
+        println!(
+            "{:>2}. {}  ({}, {}, anchor `{}`)",
+            number + 1,
+            exercise.name,
+            exercise.chapter,
+            exercise.file.display(),
+            exercise.anchor
+        );
+        println!("    check: {}", exercise.check);
+        for (index, line) in exercise.hint.trim().lines().enumerate() {
+            let label = if index == 0 { "hint: " } else { "      " };
+            println!("    {label}{line}");
+        }
+        println!();
+    }
+}

@@ -1,0 +1,204 @@
+//! The ordered list of exercises, `book/exercises.toml`, and the checks that keep it honest.
+//!
+//! The list is the single place that says which anchors are exercises, in which order students
+//! meet them, and which one command proves an exercise solved. Every tool in this package reads
+//! it through [`load`], which refuses a list with a broken entry: a wrong path or anchor would
+//! otherwise surface much later, as a solution leaking into the student edition or a check that
+//! can never pass.
+
+use std::collections::HashMap;
+use std::path::{Component, Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+use serde::Deserialize;
+
+use crate::solution_markers;
+
+/// Where the list lives, relative to the workspace root.
+pub const LIST_PATH: &str = "book/exercises.toml";
+
+/// One exercise, as written in the list.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Exercise {
+    /// Unique name, chapter first: `ch01-reflect`.
+    pub name: String,
+    /// The package the exercise belongs to: `ch01-whitted`.
+    pub chapter: String,
+    /// The source file holding it, relative to the workspace root.
+    pub file: PathBuf,
+    /// The mdBook anchor around it in that file.
+    pub anchor: String,
+    /// The one shell command, run from the workspace root, that passes once it is solved.
+    pub check: String,
+    /// A nudge for the stuck. Its first line doubles as the message of the student's `todo!`.
+    pub hint: String,
+}
+
+impl Exercise {
+    /// The message of the `todo!` that replaces the solution in the student edition.
+    pub fn todo_message(&self) -> String {
+        match self
+            .hint
+            .lines()
+            .map(str::trim)
+            .find(|line| !line.is_empty())
+        {
+            Some(hint) => format!("{}: {hint}", self.name),
+            None => self.name.clone(),
+        }
+    }
+}
+
+/// The file's shape: a sequence of `[[exercise]]` tables, possibly none.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ExerciseFile {
+    #[serde(default, rename = "exercise")]
+    exercises: Vec<Exercise>,
+}
+
+/// Reads and validates the workspace's exercise list, in order.
+pub fn load(workspace: &Path) -> Result<Vec<Exercise>> {
+    let path = workspace.join(LIST_PATH);
+    let text =
+        std::fs::read_to_string(&path).with_context(|| format!("cannot read {LIST_PATH}"))?;
+    let exercises = parse(&text)?;
+    let problems = validate(workspace, &exercises);
+    if !problems.is_empty() {
+        bail!(
+            "{LIST_PATH} has {} problem(s):\n  {}",
+            problems.len(),
+            problems.join("\n  ")
+        );
+    }
+    Ok(exercises)
+}
+
+/// Parses the list without looking at any source file.
+pub fn parse(text: &str) -> Result<Vec<Exercise>> {
+    let file: ExerciseFile =
+        toml::from_str(text).with_context(|| format!("{LIST_PATH} is not valid"))?;
+    Ok(file.exercises)
+}
+
+/// Every problem with the list, each naming its entry; empty if there are none.
+pub fn validate(workspace: &Path, exercises: &[Exercise]) -> Vec<String> {
+    let mut problems = Vec::new();
+    let mut first_entry_named: HashMap<&str, usize> = HashMap::new();
+
+    for (index, exercise) in exercises.iter().enumerate() {
+        let entry = index + 1;
+        let label = format!("exercise #{entry} `{}`", exercise.name);
+        let mut complain = |problem: String| problems.push(format!("{label}: {problem}"));
+
+        for (field, value) in [
+            ("name", &exercise.name),
+            ("chapter", &exercise.chapter),
+            ("anchor", &exercise.anchor),
+            ("check", &exercise.check),
+        ] {
+            if value.trim().is_empty() {
+                complain(format!("`{field}` is empty"));
+            }
+        }
+        if let Some(first) = first_entry_named.insert(&exercise.name, entry) {
+            complain(format!("the name is already used by exercise #{first}"));
+        }
+
+        if !is_inside_workspace(&exercise.file) {
+            complain(format!(
+                "`file` must be a relative path inside the workspace, not `{}`",
+                exercise.file.display()
+            ));
+            continue;
+        }
+        let source = match std::fs::read_to_string(workspace.join(&exercise.file)) {
+            Ok(source) => source,
+            Err(error) => {
+                complain(format!(
+                    "cannot read `{}`: {error}",
+                    exercise.file.display()
+                ));
+                continue;
+            }
+        };
+        let lines: Vec<&str> = source.lines().collect();
+        if let Err(error) = solution_markers::locate(&lines, &exercise.anchor) {
+            complain(format!("in `{}`, {error}", exercise.file.display()));
+        }
+    }
+    problems
+}
+
+/// Whether `path` is relative and never climbs out with `..`.
+fn is_inside_workspace(path: &Path) -> bool {
+    path.components().all(|c| matches!(c, Component::Normal(_)))
+        && path.components().next().is_some()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SOURCE: &str = "// ANCHOR: reflect\nfn reflect() {\n    // BEGIN SOLUTION\n    ()\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n";
+
+    fn entry(name: &str, file: &str, anchor: &str) -> String {
+        format!(
+            "[[exercise]]\nname = \"{name}\"\nchapter = \"ch01-whitted\"\nfile = \"{file}\"\nanchor = \"{anchor}\"\ncheck = \"cargo test -p ch01-whitted\"\nhint = \"\"\"\nMirror it.\nThen normalise.\"\"\"\n"
+        )
+    }
+
+    fn workspace_with_source() -> tempfile::TempDir {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::create_dir_all(dir.path().join("src")).unwrap();
+        std::fs::write(dir.path().join("src/optics.rs"), SOURCE).unwrap();
+        dir
+    }
+
+    #[test]
+    fn an_empty_list_is_fine() {
+        assert!(parse("# nothing yet\n").unwrap().is_empty());
+    }
+
+    #[test]
+    fn unknown_fields_are_rejected() {
+        let text = format!("{}typo = 1\n", entry("a", "src/optics.rs", "reflect"));
+        assert!(parse(&text).is_err());
+    }
+
+    #[test]
+    fn a_good_entry_validates() {
+        let dir = workspace_with_source();
+        let exercises = parse(&entry("ch01-reflect", "src/optics.rs", "reflect")).unwrap();
+        assert_eq!(validate(dir.path(), &exercises), Vec::<String>::new());
+        assert_eq!(exercises[0].todo_message(), "ch01-reflect: Mirror it.");
+    }
+
+    #[test]
+    fn problems_name_their_entry() {
+        let dir = workspace_with_source();
+        let text = [
+            entry("ch01-reflect", "src/optics.rs", "reflect"),
+            entry("ch01-reflect", "src/optics.rs", "refract"),
+            entry("ch01-missing", "src/nowhere.rs", "reflect"),
+            entry("ch01-escape", "../optics.rs", "reflect"),
+        ]
+        .concat();
+        let problems = validate(dir.path(), &parse(&text).unwrap());
+        assert_eq!(problems.len(), 4, "{problems:#?}");
+        assert!(
+            problems[0]
+                .starts_with("exercise #2 `ch01-reflect`: the name is already used by exercise #1")
+        );
+        assert!(problems[1].starts_with(
+            "exercise #2 `ch01-reflect`: in `src/optics.rs`, there is no `ANCHOR: refract`"
+        ));
+        assert!(
+            problems[2].starts_with("exercise #3 `ch01-missing`: cannot read `src/nowhere.rs`")
+        );
+        assert!(
+            problems[3].starts_with("exercise #4 `ch01-escape`: `file` must be a relative path")
+        );
+    }
+}

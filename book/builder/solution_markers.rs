@@ -1,0 +1,544 @@
+//! The one transformation behind every exercise: cut a solution out of its source file.
+//!
+//! Chapter sources carry their exercises' solutions, so the solutions are compiled and tested
+//! like any other code. An exercise is an mdBook anchor (the `ANCHOR: name` and
+//! `ANCHOR_END: name` comments that `{{#include file:name}}` understands) holding exactly one
+//! *solution region*: the lines between a line that reads `// BEGIN SOLUTION` and a line that
+//! reads `// END SOLUTION`, nothing else on either line but indentation.
+//!
+//! Cutting the solution out replaces the region, both marker lines included, by one `todo!(..)`
+//! line at the indentation of the `BEGIN` marker. The book's exercise stubs and the student
+//! edition both go through [`splice_todos`], so a reader sees on the page the lines a student
+//! finds in their copy of the code; only the student's `todo!` also names the exercise and its
+//! first hint.
+
+use std::fmt;
+use std::ops::Range;
+
+/// The line that opens a solution region (compared after trimming whitespace).
+pub const BEGIN_SOLUTION: &str = "// BEGIN SOLUTION";
+/// The line that closes a solution region (compared after trimming whitespace).
+pub const END_SOLUTION: &str = "// END SOLUTION";
+
+/// One of the two marker lines around a solution region.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Marker {
+    /// `// BEGIN SOLUTION`
+    Begin,
+    /// `// END SOLUTION`
+    End,
+}
+
+impl Marker {
+    /// Which marker `line` is, if it is one.
+    pub fn of_line(line: &str) -> Option<Marker> {
+        match line.trim() {
+            BEGIN_SOLUTION => Some(Marker::Begin),
+            END_SOLUTION => Some(Marker::End),
+            _ => None,
+        }
+    }
+}
+
+impl fmt::Display for Marker {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Marker::Begin => BEGIN_SOLUTION,
+            Marker::End => END_SOLUTION,
+        })
+    }
+}
+
+/// Why an exercise's markers could not be understood. Line numbers count from 1.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum MarkerError {
+    /// No line names the anchor.
+    #[error("there is no `ANCHOR: {anchor}` line")]
+    AnchorNotFound {
+        /// The anchor looked for.
+        anchor: String,
+    },
+    /// The anchor opens but never closes.
+    #[error("`ANCHOR: {anchor}` on line {line} has no `ANCHOR_END: {anchor}` after it")]
+    AnchorNotClosed {
+        /// The anchor looked for.
+        anchor: String,
+        /// Where it opens.
+        line: usize,
+    },
+    /// The anchor holds no solution region at all.
+    #[error("anchor `{anchor}` holds no `{BEGIN_SOLUTION}` line")]
+    NoSolution {
+        /// The anchor looked in.
+        anchor: String,
+    },
+    /// A second region: an exercise has exactly one.
+    #[error(
+        "anchor `{anchor}` holds a second solution region (line {line}); an exercise has exactly one"
+    )]
+    SecondSolution {
+        /// The anchor looked in.
+        anchor: String,
+        /// Where the second region begins.
+        line: usize,
+    },
+    /// A `BEGIN` inside an open region: regions do not nest.
+    #[error("`{BEGIN_SOLUTION}` on line {line} is inside the region opened on line {opened}")]
+    NestedSolution {
+        /// The inner `BEGIN`.
+        line: usize,
+        /// The `BEGIN` of the region it sits in.
+        opened: usize,
+    },
+    /// A `BEGIN` whose `END` is missing before the anchor ends.
+    #[error("`{BEGIN_SOLUTION}` on line {line} has no `{END_SOLUTION}` before the anchor ends")]
+    UnclosedSolution {
+        /// The lonely `BEGIN`.
+        line: usize,
+    },
+    /// An `END` with no `BEGIN` before it.
+    #[error("`{END_SOLUTION}` on line {line} has no `{BEGIN_SOLUTION}` before it")]
+    UnopenedSolution {
+        /// The lonely `END`.
+        line: usize,
+    },
+    /// Two listed exercises claim the same solution region.
+    #[error(
+        "the solution region on line {line} belongs to two listed exercises, `{first}` and `{second}`"
+    )]
+    SharedSolution {
+        /// Where the region begins.
+        line: usize,
+        /// The anchor of one exercise.
+        first: String,
+        /// The anchor of the other.
+        second: String,
+    },
+    /// A marker outside every exercise anchor named for this file.
+    #[error("`{marker}` on line {line} is not inside the anchor of any listed exercise")]
+    StrayMarker {
+        /// Which marker.
+        marker: Marker,
+        /// Where it is.
+        line: usize,
+    },
+}
+
+/// Where one exercise sits in a source file, as 0-based line indices.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExerciseSpan {
+    /// The lines strictly between `ANCHOR: name` and `ANCHOR_END: name`.
+    pub body: Range<usize>,
+    /// The solution region, both marker lines included.
+    pub solution: Range<usize>,
+}
+
+/// The name after `marker` on `line`, read the way mdBook reads anchor names.
+fn anchor_name<'a>(line: &'a str, marker: &str) -> Option<&'a str> {
+    let after = &line[line.find(marker)? + marker.len()..];
+    let name = after.trim_start();
+    let end = name
+        .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == '-'))
+        .unwrap_or(name.len());
+    (end > 0).then(|| &name[..end])
+}
+
+/// Whether `line` opens or closes an anchor, whatever its name (mdBook hides such lines in
+/// includes).
+fn is_anchor_line(line: &str) -> bool {
+    anchor_name(line, "ANCHOR:").is_some() || anchor_name(line, "ANCHOR_END:").is_some()
+}
+
+/// Finds the exercise `anchor` in `lines` and checks it holds exactly one solution region.
+pub fn locate(lines: &[&str], anchor: &str) -> Result<ExerciseSpan, MarkerError> {
+    let opens = |line: &&str| anchor_name(line, "ANCHOR:") == Some(anchor);
+    let closes = |line: &&str| anchor_name(line, "ANCHOR_END:") == Some(anchor);
+
+    let start = lines
+        .iter()
+        .position(opens)
+        .ok_or_else(|| MarkerError::AnchorNotFound {
+            anchor: anchor.to_owned(),
+        })?;
+    let end = start
+        + 1
+        + lines[start + 1..].iter().position(closes).ok_or_else(|| {
+            MarkerError::AnchorNotClosed {
+                anchor: anchor.to_owned(),
+                line: start + 1,
+            }
+        })?;
+
+    let body = start + 1..end;
+    let mut open: Option<usize> = None;
+    let mut solution: Option<Range<usize>> = None;
+    for index in body.clone() {
+        match (Marker::of_line(lines[index]), open) {
+            (Some(Marker::Begin), Some(opened)) => {
+                return Err(MarkerError::NestedSolution {
+                    line: index + 1,
+                    opened: opened + 1,
+                });
+            }
+            (Some(Marker::Begin), None) if solution.is_some() => {
+                return Err(MarkerError::SecondSolution {
+                    anchor: anchor.to_owned(),
+                    line: index + 1,
+                });
+            }
+            (Some(Marker::Begin), None) => open = Some(index),
+            (Some(Marker::End), Some(opened)) => {
+                solution = Some(opened..index + 1);
+                open = None;
+            }
+            (Some(Marker::End), None) => {
+                return Err(MarkerError::UnopenedSolution { line: index + 1 });
+            }
+            (None, _) => {}
+        }
+    }
+    if let Some(opened) = open {
+        return Err(MarkerError::UnclosedSolution { line: opened + 1 });
+    }
+    let solution = solution.ok_or_else(|| MarkerError::NoSolution {
+        anchor: anchor.to_owned(),
+    })?;
+    Ok(ExerciseSpan { body, solution })
+}
+
+/// The `todo!` call that stands in for a solution, with an optional message for whoever runs
+/// into it. The message is escaped so it stays one valid string literal and format string.
+pub fn todo_call(message: Option<&str>) -> String {
+    match message {
+        None => "todo!()".to_owned(),
+        Some(message) => {
+            let format_safe = message.replace('{', "{{").replace('}', "}}");
+            format!("todo!({format_safe:?})")
+        }
+    }
+}
+
+/// `lines` with each solution region replaced by its `todo!` line, indented like the region's
+/// `BEGIN` marker. The regions must not overlap; they may come in any order.
+pub fn splice_todos(lines: &[&str], regions: &[(Range<usize>, String)]) -> Vec<String> {
+    let mut regions: Vec<&(Range<usize>, String)> = regions.iter().collect();
+    regions.sort_by_key(|(range, _)| range.start);
+
+    let mut out = Vec::with_capacity(lines.len());
+    let mut next = 0;
+    for (range, todo) in regions {
+        out.extend(lines[next..range.start].iter().map(|l| (*l).to_owned()));
+        let begin = lines[range.start];
+        let indent = &begin[..begin.len() - begin.trim_start().len()];
+        out.push(format!("{indent}{todo}"));
+        next = range.end;
+    }
+    out.extend(lines[next..].iter().map(|l| (*l).to_owned()));
+    out
+}
+
+/// What the book shows for an exercise: the anchor's lines (without any anchor comments,
+/// as mdBook's `{{#include}}` would show them) with the solution replaced by `todo!()`.
+pub fn book_stub(source: &str, anchor: &str) -> Result<String, MarkerError> {
+    let lines: Vec<&str> = source.lines().collect();
+    let span = locate(&lines, anchor)?;
+    let body = &lines[span.body.clone()];
+    let offset = span.body.start;
+    let solution = span.solution.start - offset..span.solution.end - offset;
+    let stub = splice_todos(body, &[(solution, todo_call(None))]);
+    let shown: Vec<&str> = stub
+        .iter()
+        .map(String::as_str)
+        .filter(|line| !is_anchor_line(line))
+        .collect();
+    Ok(shown.join("\n"))
+}
+
+/// One exercise to cut out of a file: its anchor and the message of its `todo!`.
+#[derive(Debug, Clone)]
+pub struct Cut<'a> {
+    /// The exercise's anchor name.
+    pub anchor: &'a str,
+    /// The message its `todo!` carries.
+    pub message: String,
+}
+
+/// The student edition of a whole source file: every listed exercise's solution replaced by its
+/// `todo!` line, everything else untouched. A marker outside those exercises is an error, so
+/// that no solution leaks into the student edition unnoticed.
+pub fn student_source(source: &str, cuts: &[Cut<'_>]) -> Result<String, Vec<MarkerError>> {
+    let lines: Vec<&str> = source.lines().collect();
+    let mut errors = Vec::new();
+    let mut regions: Vec<(Range<usize>, String)> = Vec::new();
+    let mut owners: Vec<&str> = Vec::new();
+    for cut in cuts {
+        let span = match locate(&lines, cut.anchor) {
+            Ok(span) => span,
+            Err(error) => {
+                errors.push(error);
+                continue;
+            }
+        };
+        let claimed = regions
+            .iter()
+            .position(|(range, _)| overlap(range, &span.solution));
+        if let Some(other) = claimed {
+            errors.push(MarkerError::SharedSolution {
+                line: span.solution.start + 1,
+                first: owners[other].to_owned(),
+                second: cut.anchor.to_owned(),
+            });
+            continue;
+        }
+        regions.push((span.solution, todo_call(Some(&cut.message))));
+        owners.push(cut.anchor);
+    }
+    for (index, marker) in marker_lines(source) {
+        let expected = regions
+            .iter()
+            .any(|(range, _)| index == range.start || index + 1 == range.end);
+        if !expected {
+            errors.push(MarkerError::StrayMarker {
+                marker,
+                line: index + 1,
+            });
+        }
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+
+    let mut out = splice_todos(&lines, &regions).join("\n");
+    if source.ends_with('\n') {
+        out.push('\n');
+    }
+    Ok(out)
+}
+
+fn overlap(a: &Range<usize>, b: &Range<usize>) -> bool {
+    a.start < b.end && b.start < a.end
+}
+
+/// Every marker line in `source`, with its 0-based line index.
+pub fn marker_lines(source: &str) -> impl Iterator<Item = (usize, Marker)> + '_ {
+    source
+        .lines()
+        .enumerate()
+        .filter_map(|(index, line)| Marker::of_line(line).map(|marker| (index, marker)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    // Test sources are built from escaped one-line strings on purpose: a marker on a line of
+    // its own here would be a stray marker in the workspace's own sources.
+    const REFLECT: &str = "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    wi - 2.0 * wi.dot(n) * n\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n";
+
+    fn lines(source: &str) -> Vec<&str> {
+        source.lines().collect()
+    }
+
+    #[test]
+    fn locates_anchor_body_and_solution() {
+        let span = locate(&lines(REFLECT), "reflect").unwrap();
+        assert_eq!(span.body, 3..9);
+        assert_eq!(span.solution, 5..8);
+    }
+
+    #[test]
+    fn book_stub_shows_anchor_with_todo() {
+        let stub = book_stub(REFLECT, "reflect").unwrap();
+        assert_eq!(
+            stub,
+            "/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    todo!()\n}"
+        );
+    }
+
+    #[test]
+    fn book_stub_hides_other_anchor_lines() {
+        let source = "// ANCHOR: outer\nfn f() {\n    // ANCHOR: inner\n    // BEGIN SOLUTION\n    1\n    // END SOLUTION\n    // ANCHOR_END: inner\n}\n// ANCHOR_END: outer\n";
+        assert_eq!(
+            book_stub(source, "outer").unwrap(),
+            "fn f() {\n    todo!()\n}"
+        );
+    }
+
+    #[test]
+    fn todo_keeps_nested_indentation() {
+        let source = "// ANCHOR: shade\nfn shade(hit: bool) -> f32 {\n    if hit {\n        let k = 0.5;\n        // BEGIN SOLUTION\n        k * 2.0\n        // END SOLUTION\n    } else {\n        0.0\n    }\n}\n// ANCHOR_END: shade\n";
+        let stub = book_stub(source, "shade").unwrap();
+        assert!(stub.contains("\n        let k = 0.5;\n        todo!()\n    } else {"));
+    }
+
+    #[test]
+    fn student_source_replaces_only_the_region_and_keeps_the_rest() {
+        let cut = Cut {
+            anchor: "reflect",
+            message: "ch01-reflect: mirror `wi` about `n`".to_owned(),
+        };
+        let student = student_source(REFLECT, &[cut]).unwrap();
+        assert_eq!(
+            student,
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    todo!(\"ch01-reflect: mirror `wi` about `n`\")\n}\n// ANCHOR_END: reflect\n"
+        );
+    }
+
+    #[test]
+    fn student_source_handles_two_exercises_in_one_file() {
+        let source = "// ANCHOR: a\nfn a() -> u8 {\n    // BEGIN SOLUTION\n    1\n    // END SOLUTION\n}\n// ANCHOR_END: a\n// ANCHOR: b\nfn b() -> u8 {\n  // BEGIN SOLUTION\n  2\n  // END SOLUTION\n}\n// ANCHOR_END: b";
+        let cuts = [
+            Cut {
+                anchor: "b",
+                message: "b".to_owned(),
+            },
+            Cut {
+                anchor: "a",
+                message: "a".to_owned(),
+            },
+        ];
+        let student = student_source(source, &cuts).unwrap();
+        assert!(student.contains("fn a() -> u8 {\n    todo!(\"a\")\n}"));
+        assert!(student.contains("fn b() -> u8 {\n  todo!(\"b\")\n}"));
+        assert!(!student.ends_with('\n'));
+    }
+
+    #[test]
+    fn student_source_reports_markers_outside_listed_exercises() {
+        let source = format!("{REFLECT}fn other() {{\n    // BEGIN SOLUTION\n}}\n");
+        let cut = Cut {
+            anchor: "reflect",
+            message: String::new(),
+        };
+        let errors = student_source(&source, &[cut]).unwrap_err();
+        assert_eq!(
+            errors,
+            vec![MarkerError::StrayMarker {
+                marker: Marker::Begin,
+                line: 12
+            }]
+        );
+    }
+
+    #[test]
+    fn unlisted_file_with_markers_is_all_strays() {
+        let errors = student_source(REFLECT, &[]).unwrap_err();
+        assert_eq!(errors.len(), 2);
+    }
+
+    #[test]
+    fn two_exercises_cannot_share_a_solution() {
+        let source = "// ANCHOR: outer\n// ANCHOR: inner\n// BEGIN SOLUTION\n// END SOLUTION\n// ANCHOR_END: inner\n// ANCHOR_END: outer\n";
+        let cut = |anchor| Cut {
+            anchor,
+            message: String::new(),
+        };
+        let errors = student_source(source, &[cut("outer"), cut("inner")]).unwrap_err();
+        assert_eq!(
+            errors,
+            vec![MarkerError::SharedSolution {
+                line: 3,
+                first: "outer".to_owned(),
+                second: "inner".to_owned()
+            }]
+        );
+    }
+
+    #[test]
+    fn todo_message_is_a_valid_literal_and_format_string() {
+        assert_eq!(todo_call(None), "todo!()");
+        assert_eq!(
+            todo_call(Some("say \"hi\" to {x}")),
+            r#"todo!("say \"hi\" to {{x}}")"#
+        );
+    }
+
+    #[test]
+    fn missing_anchor_is_an_error() {
+        assert_eq!(
+            book_stub(REFLECT, "refract"),
+            Err(MarkerError::AnchorNotFound {
+                anchor: "refract".to_owned()
+            })
+        );
+    }
+
+    #[test]
+    fn anchor_name_must_match_exactly() {
+        let source = "// ANCHOR: reflect_all\n// BEGIN SOLUTION\n// END SOLUTION\n// ANCHOR_END: reflect_all\n";
+        assert!(matches!(
+            book_stub(source, "reflect"),
+            Err(MarkerError::AnchorNotFound { .. })
+        ));
+    }
+
+    #[test]
+    fn unclosed_anchor_is_an_error() {
+        let source = "// ANCHOR: a\n// BEGIN SOLUTION\n// END SOLUTION\n";
+        assert_eq!(
+            book_stub(source, "a"),
+            Err(MarkerError::AnchorNotClosed {
+                anchor: "a".to_owned(),
+                line: 1
+            })
+        );
+    }
+
+    #[test]
+    fn anchor_without_solution_is_an_error() {
+        let source = "// ANCHOR: a\nfn a() {}\n// ANCHOR_END: a\n";
+        assert!(matches!(
+            book_stub(source, "a"),
+            Err(MarkerError::NoSolution { .. })
+        ));
+    }
+
+    #[test]
+    fn unmatched_begin_is_an_error() {
+        let source = "// ANCHOR: a\n  // BEGIN SOLUTION\n  1\n// ANCHOR_END: a\n// END SOLUTION\n";
+        assert_eq!(
+            book_stub(source, "a"),
+            Err(MarkerError::UnclosedSolution { line: 2 })
+        );
+    }
+
+    #[test]
+    fn unmatched_end_is_an_error() {
+        let source = "// ANCHOR: a\n  1\n  // END SOLUTION\n// ANCHOR_END: a\n";
+        assert_eq!(
+            book_stub(source, "a"),
+            Err(MarkerError::UnopenedSolution { line: 3 })
+        );
+    }
+
+    #[test]
+    fn nested_regions_are_an_error() {
+        let source = "// ANCHOR: a\n// BEGIN SOLUTION\n// BEGIN SOLUTION\n// END SOLUTION\n// END SOLUTION\n// ANCHOR_END: a\n";
+        assert_eq!(
+            book_stub(source, "a"),
+            Err(MarkerError::NestedSolution { line: 3, opened: 2 })
+        );
+    }
+
+    #[test]
+    fn second_region_is_an_error() {
+        let source = "// ANCHOR: a\n// BEGIN SOLUTION\n// END SOLUTION\n// BEGIN SOLUTION\n// END SOLUTION\n// ANCHOR_END: a\n";
+        assert_eq!(
+            book_stub(source, "a"),
+            Err(MarkerError::SecondSolution {
+                anchor: "a".to_owned(),
+                line: 4
+            })
+        );
+    }
+
+    #[test]
+    fn markers_must_stand_alone_on_their_line() {
+        assert_eq!(
+            Marker::of_line("    // BEGIN SOLUTION  "),
+            Some(Marker::Begin)
+        );
+        assert_eq!(Marker::of_line("x; // BEGIN SOLUTION"), None);
+        assert_eq!(Marker::of_line("/// // END SOLUTION"), None);
+    }
+}

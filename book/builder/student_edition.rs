@@ -1,0 +1,230 @@
+//! The student edition: the workspace with every exercise's solution cut out.
+//!
+//! It is a plain copy of the source tree in which each listed exercise's solution region has
+//! become a `todo!("<name>: <hint>")` line. Everything is worked out in memory first, so a
+//! broken exercise or a stray marker stops the run before a single file is written.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+
+use crate::exercise_list::{Exercise, LIST_PATH};
+use crate::solution_markers::{self, Cut};
+use crate::workspace;
+
+/// One file of the student edition.
+pub enum EditionFile {
+    /// Copied as it is (permissions included, so scripts stay executable).
+    Copy(PathBuf),
+    /// A Rust source with its solutions cut out.
+    Rewritten(PathBuf, String),
+}
+
+impl EditionFile {
+    /// Where the file goes, relative to the edition's root.
+    pub fn path(&self) -> &Path {
+        match self {
+            EditionFile::Copy(path) | EditionFile::Rewritten(path, _) => path,
+        }
+    }
+}
+
+/// Works out every file of the student edition without writing anything.
+///
+/// Fails, listing every problem at once, if a listed exercise's file is not among the sources
+/// or any `.rs` file has a solution marker outside the listed exercises.
+pub fn plan(
+    root: &Path,
+    exercises: &[Exercise],
+    leave_out: &[PathBuf],
+) -> Result<Vec<EditionFile>> {
+    let mut cuts_by_file: BTreeMap<&Path, Vec<Cut<'_>>> = BTreeMap::new();
+    for exercise in exercises {
+        cuts_by_file.entry(&exercise.file).or_default().push(Cut {
+            anchor: &exercise.anchor,
+            message: exercise.todo_message(),
+        });
+    }
+
+    let sources = workspace::source_files(root)?;
+    let mut problems = Vec::new();
+    for file in cuts_by_file.keys() {
+        if !sources.iter().any(|source| source == file) {
+            problems.push(format!(
+                "{}: holds an exercise but is not a source file (ignored by git?)",
+                file.display()
+            ));
+        }
+    }
+
+    let mut edition = Vec::with_capacity(sources.len());
+    for file in sources {
+        if leave_out.iter().any(|dir| file.starts_with(dir)) {
+            continue;
+        }
+        if file.extension().is_none_or(|ext| ext != "rs") {
+            edition.push(EditionFile::Copy(file));
+            continue;
+        }
+        let source = std::fs::read_to_string(root.join(&file))
+            .with_context(|| format!("cannot read {}", file.display()))?;
+        let cuts = cuts_by_file
+            .get(file.as_path())
+            .map_or(&[][..], Vec::as_slice);
+        match solution_markers::student_source(&source, cuts) {
+            // Nothing to cut and no stray marker: the file is copied byte for byte.
+            Ok(_) if cuts.is_empty() => edition.push(EditionFile::Copy(file)),
+            Ok(student) => edition.push(EditionFile::Rewritten(file, student)),
+            Err(errors) => problems.extend(
+                errors
+                    .into_iter()
+                    .map(|error| format!("{}: {error}", file.display())),
+            ),
+        }
+    }
+
+    if !problems.is_empty() {
+        bail!(
+            "cannot make the student edition, {} problem(s):\n  {}\n\
+             (every solution region must belong to an exercise listed in {LIST_PATH})",
+            problems.len(),
+            problems.join("\n  ")
+        );
+    }
+    Ok(edition)
+}
+
+/// Writes the student edition into `out`.
+///
+/// `out` must be empty or missing; with `force`, whatever it holds is deleted first (but never
+/// when `out` is the workspace or contains it). If `out` lies inside the workspace, it is left
+/// out of the copy, so an earlier edition is never copied into the next.
+pub fn write(root: &Path, exercises: &[Exercise], out: &Path, force: bool) -> Result<usize> {
+    let out = absolute(out)?;
+    let root = absolute(root)?;
+    if root.starts_with(&out) {
+        bail!(
+            "{} is the workspace or contains it; choose another directory",
+            out.display()
+        );
+    }
+    let leave_out: Vec<PathBuf> = out
+        .strip_prefix(&root)
+        .map(Path::to_path_buf)
+        .into_iter()
+        .collect();
+    let edition = plan(&root, exercises, &leave_out)?;
+
+    prepare_empty_dir(&out, force)?;
+    for file in &edition {
+        let destination = out.join(file.path());
+        if let Some(parent) = destination.parent() {
+            std::fs::create_dir_all(parent)
+                .with_context(|| format!("cannot create {}", parent.display()))?;
+        }
+        match file {
+            EditionFile::Copy(path) => std::fs::copy(root.join(path), &destination).map(drop),
+            EditionFile::Rewritten(_, text) => std::fs::write(&destination, text),
+        }
+        .with_context(|| format!("cannot write {}", destination.display()))?;
+    }
+    Ok(edition.len())
+}
+
+fn prepare_empty_dir(out: &Path, force: bool) -> Result<()> {
+    let holds_something = match std::fs::read_dir(out) {
+        Ok(mut entries) => entries.next().is_some(),
+        Err(error) if error.kind() == std::io::ErrorKind::NotFound => false,
+        Err(error) => {
+            return Err(error).with_context(|| format!("cannot look into {}", out.display()));
+        }
+    };
+    if holds_something {
+        if !force {
+            bail!(
+                "{} is not empty; pass --force to replace what it holds",
+                out.display()
+            );
+        }
+        std::fs::remove_dir_all(out).with_context(|| format!("cannot empty {}", out.display()))?;
+    }
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))
+}
+
+fn absolute(path: &Path) -> Result<PathBuf> {
+    std::path::absolute(path).with_context(|| format!("cannot resolve {}", path.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exercise_list;
+
+    const OPTICS: &str = "// ANCHOR: reflect\npub fn reflect(x: f32) -> f32 {\n    // BEGIN SOLUTION\n    -x\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n";
+    const LIST: &str = "[[exercise]]\nname = \"ch01-reflect\"\nchapter = \"ch01-whitted\"\nfile = \"src/optics.rs\"\nanchor = \"reflect\"\ncheck = \"true\"\nhint = \"Flip the sign.\"\n";
+
+    fn workspace(files: &[(&str, &str)]) -> tempfile::TempDir {
+        let dir = tempfile::tempdir().unwrap();
+        for (path, text) in files {
+            let path = dir.path().join(path);
+            std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+            std::fs::write(path, text).unwrap();
+        }
+        dir
+    }
+
+    #[test]
+    fn writes_stubs_and_copies_the_rest() {
+        let ws = workspace(&[("src/optics.rs", OPTICS), ("README.md", "hi\n")]);
+        let exercises = exercise_list::parse(LIST).unwrap();
+        let out = tempfile::tempdir().unwrap();
+        let written = write(ws.path(), &exercises, out.path(), false).unwrap();
+        assert_eq!(written, 2);
+        let stubbed = std::fs::read_to_string(out.path().join("src/optics.rs")).unwrap();
+        assert!(stubbed.contains("{\n    todo!(\"ch01-reflect: Flip the sign.\")\n}"));
+        assert_eq!(
+            std::fs::read_to_string(out.path().join("README.md")).unwrap(),
+            "hi\n"
+        );
+    }
+
+    #[test]
+    fn refuses_a_non_empty_directory_without_force() {
+        let ws = workspace(&[("src/optics.rs", OPTICS)]);
+        let exercises = exercise_list::parse(LIST).unwrap();
+        let out = workspace(&[("old.txt", "")]);
+        let error = write(ws.path(), &exercises, out.path(), false).unwrap_err();
+        assert!(error.to_string().contains("not empty"), "{error}");
+        write(ws.path(), &exercises, out.path(), true).unwrap();
+        assert!(!out.path().join("old.txt").exists());
+    }
+
+    #[test]
+    fn refuses_to_replace_the_workspace() {
+        let ws = workspace(&[("src/optics.rs", OPTICS)]);
+        let error = write(ws.path(), &[], ws.path(), true).unwrap_err();
+        assert!(error.to_string().contains("contains it"), "{error}");
+        assert!(ws.path().join("src/optics.rs").exists());
+    }
+
+    #[test]
+    fn reports_markers_in_unlisted_files() {
+        let ws = workspace(&[("src/optics.rs", OPTICS)]);
+        let error = plan(ws.path(), &[], &[]).err().unwrap();
+        let message = error.to_string();
+        assert!(message.contains("2 problem(s)"), "{message}");
+        assert!(
+            message.contains("src/optics.rs: `// BEGIN SOLUTION` on line 3"),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn leaves_out_an_edition_inside_the_workspace() {
+        let ws = workspace(&[("src/lib.rs", ""), ("student/src/lib.rs", "")]);
+        let edition = plan(ws.path(), &[], &[PathBuf::from("student")]).unwrap();
+        let paths: Vec<&Path> = edition.iter().map(EditionFile::path).collect();
+        assert_eq!(paths, [Path::new("src/lib.rs")]);
+    }
+}

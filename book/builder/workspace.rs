@@ -1,0 +1,118 @@
+//! Where the workspace is, and which of its files are source.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use anyhow::{Context, Result, bail};
+
+/// The workspace root: the directory above this package.
+///
+/// The builder is always run from a checkout (`cargo run -p book`), so the path cargo compiled
+/// it from is the right one, whatever the current directory.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("the book package sits inside the workspace")
+        .to_path_buf()
+}
+
+/// The directory cargo builds into: `$CARGO_TARGET_DIR` if set, else `target/` in the workspace.
+pub fn target_dir(root: &Path) -> PathBuf {
+    match std::env::var_os("CARGO_TARGET_DIR") {
+        Some(dir) => root.join(dir),
+        None => root.join("target"),
+    }
+}
+
+/// Generated or private paths that are never source, for trees outside git.
+const NOT_SOURCE: &[&str] = &["target", ".git", "out", "book/site", "book/src/figures"];
+
+/// The workspace's source files, relative to `root`, sorted.
+///
+/// In a git checkout these are the files git tracks plus new files it would track (not yet added
+/// but not ignored either), so a chapter file written a minute ago is included. Outside git, the
+/// tree is walked, leaving out the generated directories in [`NOT_SOURCE`].
+pub fn source_files(root: &Path) -> Result<Vec<PathBuf>> {
+    let mut files = if root.join(".git").exists() {
+        git_files(root)?
+    } else {
+        let mut files = Vec::new();
+        walk(root, Path::new(""), &mut files)?;
+        files
+    };
+    files.sort();
+    files.dedup();
+    Ok(files)
+}
+
+fn git_files(root: &Path) -> Result<Vec<PathBuf>> {
+    let output = Command::new("git")
+        .args([
+            "ls-files",
+            "-z",
+            "--cached",
+            "--others",
+            "--exclude-standard",
+        ])
+        .current_dir(root)
+        .output()
+        .context("cannot run `git ls-files` (is git installed?)")?;
+    if !output.status.success() {
+        bail!(
+            "`git ls-files` failed: {}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+    }
+    let listing = String::from_utf8(output.stdout).context("git listed a non-UTF-8 path")?;
+    Ok(listing
+        .split('\0')
+        .filter(|path| !path.is_empty())
+        .map(PathBuf::from)
+        // A file deleted but not yet committed is still listed as tracked.
+        .filter(|path| root.join(path).is_file())
+        .collect())
+}
+
+fn walk(root: &Path, relative: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
+    let dir = root.join(relative);
+    for entry in
+        std::fs::read_dir(&dir).with_context(|| format!("cannot list {}", dir.display()))?
+    {
+        let entry = entry?;
+        let path = relative.join(entry.file_name());
+        if NOT_SOURCE.iter().any(|skip| path == Path::new(skip)) {
+            continue;
+        }
+        if entry.file_type()?.is_dir() {
+            walk(root, &path, files)?;
+        } else {
+            files.push(path);
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn walking_skips_generated_directories() {
+        let dir = tempfile::tempdir().unwrap();
+        for file in [
+            "Cargo.toml",
+            "src/lib.rs",
+            "target/debug/x",
+            "book/site/index.html",
+        ] {
+            let path = dir.path().join(file);
+            std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+            std::fs::write(path, "").unwrap();
+        }
+        let files = source_files(dir.path()).unwrap();
+        assert_eq!(
+            files,
+            [PathBuf::from("Cargo.toml"), PathBuf::from("src/lib.rs")]
+        );
+    }
+}
