@@ -1,0 +1,182 @@
+//! The unit disc in polar coordinates: the lecture's wrong first try and its correction.
+//!
+//! The lecture writes a disc sample as `Polar2Cartesian(R v, 2π u)`: the angle from the first
+//! number `ξ1`, the radius from the second `ξ2`. Taking `v = ξ2` looks natural and is wrong;
+//! taking `v = √ξ2` is right. Both are kept so the difference can be seen, plotted and caught
+//! by the chi-square test. The concentric map in [`super::concentric`] is a third, better way.
+
+use std::f32::consts::{FRAC_1_PI, TAU};
+
+use glam::Vec2;
+
+/// The lecture's `Polar2Cartesian(r, φ)`: the point at distance `r` from the origin in the
+/// direction `φ`, measured from the +x axis towards +y.
+pub fn polar_to_cartesian(r: f32, phi: f32) -> Vec2 {
+    let (sin, cos) = phi.sin_cos();
+    Vec2::new(r * cos, r * sin)
+}
+
+/// The angle `φ` of `p` from the +x axis, in `[0, 2π)`: the inverse of the angle part of
+/// [`polar_to_cartesian`]. `atan2` answers in `(-π, π]`; negative angles are moved up a turn.
+///
+/// Just below the +x axis, `-tiny + 2π` rounds to `2π` in `f32`, so an inverse built on this
+/// can answer `u = 1` there, the seam where `u = 0` and `u = 1` meet.
+pub fn azimuth(p: Vec2) -> f32 {
+    let phi = p.y.atan2(p.x);
+    if phi < 0.0 { phi + TAU } else { phi }
+}
+
+// ANCHOR: disk_naive
+/// The obvious first try, and *not* uniform: radius `r = ξ2`, angle `φ = 2π ξ1`.
+///
+/// Every ring `[r, r + dr]` gets the same share `dr` of the samples, because `r` is uniform.
+/// But a ring's area `2π r dr` grows with its radius, so the same number of samples is spread
+/// over less area near the centre: the density per unit area is
+/// `p(x) = p_r(r) p_φ(φ) / r = 1 / (2π r)`, the `1 / r` coming from the polar area element
+/// `r dr dφ`. Samples cluster at the centre, where the density is even infinite.
+///
+/// As a warp *of that density* it is perfectly correct; [`disk_naive_pdf`] is its density.
+pub fn sample_disk_naive(u: Vec2) -> Vec2 {
+    polar_to_cartesian(u.y, TAU * u.x)
+}
+// ANCHOR_END: disk_naive
+
+/// The true density of [`sample_disk_naive`] per unit area: `1 / (2π r)` at distance `r` from
+/// the centre (infinite at the centre itself), and 0 outside the unit disc. It integrates to
+/// 1: `∫∫ 1 / (2π r) r dr dφ = 1`.
+pub fn disk_naive_pdf(p: Vec2) -> f32 {
+    let r = p.length();
+    if r > 1.0 { 0.0 } else { 1.0 / (TAU * r) }
+}
+
+/// The `u` that [`sample_disk_naive`] maps to `p`: `(φ / 2π, r)`.
+pub fn invert_disk_naive(p: Vec2) -> Vec2 {
+    Vec2::new(azimuth(p) / TAU, p.length())
+}
+
+// ANCHOR: disk_polar
+/// A uniform point of the unit disc: the lecture's `Polar2Cartesian(√ξ2, 2π ξ1)`.
+///
+/// Why the square root: for a uniform point the chance of landing within distance `r` of the
+/// centre is the share of the area there, `P(R ≤ r) = π r² / π = r²`. That is the radius's
+/// cumulative distribution `F(r) = r²`, and inverting it turns a uniform number into a radius
+/// with exactly this distribution: set `ξ2 = F(r) = r²` and solve, `r = √ξ2`. The angle needs
+/// no such care, as a uniform disc looks the same in every direction: `φ = 2π ξ1`.
+///
+/// Check: `r` has density `F'(r) = 2r` and `φ` density `1 / 2π`, so `(r, φ)` has `r / π` per
+/// unit of `dr dφ`; the area element is `r dr dφ`, so the density per unit area is `1 / π`, the
+/// same everywhere.
+pub fn sample_uniform_disk_polar(u: Vec2) -> Vec2 {
+    // BEGIN SOLUTION
+    let r = u.y.sqrt();
+    let phi = TAU * u.x;
+    polar_to_cartesian(r, phi)
+    // END SOLUTION
+}
+// ANCHOR_END: disk_polar
+
+/// The density of a uniform point of the unit disc per unit area, `1 / π` (inside the disc),
+/// for [`sample_uniform_disk_polar`] and [`super::sample_uniform_disk_concentric`].
+pub fn uniform_disk_pdf() -> f32 {
+    FRAC_1_PI
+}
+
+/// The `u` that [`sample_uniform_disk_polar`] maps to `p`: `(φ / 2π, r²)`, undoing the square
+/// root with a square.
+pub fn invert_uniform_disk_polar(p: Vec2) -> Vec2 {
+    Vec2::new(azimuth(p) / TAU, p.length_squared())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chi2::{chi2_test, significance_level};
+    use crate::warps::Warp;
+    use crate::warps::test_support::{
+        edge_points, integrate_over_rectangle, interior_grid, midpoint_grid,
+    };
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn exercise_disk_polar_stays_in_the_disc() {
+        for u in edge_points().into_iter().chain(interior_grid(30)) {
+            let p = sample_uniform_disk_polar(u);
+            assert!(p.is_finite() && p.length() <= 1.0 + 1e-6, "u = {u}: {p}");
+        }
+    }
+
+    #[test]
+    fn exercise_disk_polar_follows_the_lectures_parametrisation() {
+        // ξ1 is the angle: a quarter turn points up the y axis. ξ2 is the squared radius.
+        let p = sample_uniform_disk_polar(Vec2::new(0.25, 0.64));
+        assert_relative_eq!(p, Vec2::new(0.0, 0.8), epsilon = 1e-6);
+    }
+
+    #[test]
+    fn exercise_disk_polar_is_uniform() {
+        let result = chi2_test(&Warp::DiskPolar, 200_000, 2, (16, 16));
+        assert!(
+            result.p_value > significance_level(1, 0.01),
+            "the polar disc fails the chi-square test: {result:?}"
+        );
+    }
+
+    #[test]
+    fn exercise_disk_polar_puts_a_quarter_of_the_samples_within_half_the_radius() {
+        // A quarter of the area lies within r = 1/2; the naive map would put half there.
+        let n = 100;
+        let inner = midpoint_grid(n)
+            .into_iter()
+            .filter(|&u| sample_uniform_disk_polar(u).length() < 0.5)
+            .count();
+        assert_relative_eq!(inner as f64 / (n * n) as f64, 0.25, epsilon = 0.005);
+    }
+
+    #[test]
+    fn the_naive_disc_is_a_correct_warp_of_its_own_density() {
+        // Its true density integrates to 1 over the disc. The 1/r singularity is integrable;
+        // the midpoint rule never evaluates the centre itself.
+        let integral =
+            integrate_over_rectangle(disk_naive_pdf, Vec2::splat(-1.0), Vec2::splat(1.0), 2000);
+        assert_relative_eq!(integral, 1.0, epsilon = 2e-3);
+        // Half of its samples fall within half the radius: that is the clustering.
+        let n = 100;
+        let inner = midpoint_grid(n)
+            .into_iter()
+            .filter(|&u| sample_disk_naive(u).length() < 0.5)
+            .count();
+        assert_relative_eq!(inner as f64 / (n * n) as f64, 0.5, epsilon = 0.005);
+    }
+
+    #[test]
+    fn inverses_round_trip() {
+        for u in interior_grid(20) {
+            assert_relative_eq!(
+                invert_uniform_disk_polar(sample_uniform_disk_polar(u)),
+                u,
+                epsilon = 1e-5
+            );
+            assert_relative_eq!(invert_disk_naive(sample_disk_naive(u)), u, epsilon = 1e-5);
+        }
+        for p in [
+            Vec2::new(0.3, -0.4),
+            Vec2::new(-0.9, 0.1),
+            Vec2::new(0.0, 0.7),
+        ] {
+            assert_relative_eq!(
+                sample_uniform_disk_polar(invert_uniform_disk_polar(p)),
+                p,
+                epsilon = 1e-6
+            );
+            assert_relative_eq!(sample_disk_naive(invert_disk_naive(p)), p, epsilon = 1e-6);
+        }
+    }
+
+    #[test]
+    fn naive_edge_values_stay_in_the_disc() {
+        for u in edge_points() {
+            let p = sample_disk_naive(u);
+            assert!(p.is_finite() && p.length() <= 1.0 + 1e-6, "u = {u}: {p}");
+        }
+    }
+}

@@ -1,0 +1,101 @@
+//! The triangle, by the lecture's method: sample the square, fold it in half.
+//!
+//! A triangle is half a parallelogram: `p0 + b1 (p1 - p0) + b2 (p2 - p0)` covers the
+//! parallelogram for `(b1, b2)` in the unit square, and the triangle for the half where
+//! `b1 + b2 ≤ 1`. Rejecting the other half would waste half the samples. Folding does not:
+//! the point reflection `(b1, b2) → (1 - b1, 1 - b2)` through the square's centre maps the
+//! upper half exactly onto the lower half and preserves area (its Jacobian has determinant 1).
+//! So each point of the lower triangle receives the samples of two equal patches, itself and
+//! its mirror image, and the density stays uniform: twice that of the square, `1 / area`
+//! after the affine map.
+//!
+//! The fold is two-to-one, so unlike the other warps it has no inverse. (pbrt-v4 samples
+//! triangles with a different, one-to-one map for that reason; the fold is simpler to see.)
+
+use glam::Vec2;
+
+use super::VectorSpace;
+
+// ANCHOR: triangle_fold
+/// Uniform barycentric coordinates `(b1, b2)` of a triangle, with `b1, b2 ≥ 0` and
+/// `b1 + b2 ≤ 1`; the third is `b0 = 1 - b1 - b2`.
+///
+/// Take `u` itself when it already lies in the lower triangle `u.x + u.y ≤ 1`; otherwise fold
+/// it back by the point reflection `(1 - u.x, 1 - u.y)`, which lands in the lower triangle
+/// because `(1 - u.x) + (1 - u.y) = 2 - (u.x + u.y) < 1`. The reflection preserves area, so
+/// both halves of the square arrive with the same, uniform density.
+pub fn sample_triangle_barycentric(u: Vec2) -> Vec2 {
+    // BEGIN SOLUTION
+    if u.x + u.y > 1.0 {
+        Vec2::new(1.0 - u.x, 1.0 - u.y)
+    } else {
+        u
+    }
+    // END SOLUTION
+}
+// ANCHOR_END: triangle_fold
+
+/// A uniform point of the triangle `p0 p1 p2` (in the plane or in space):
+/// `p0 + b1 (p1 - p0) + b2 (p2 - p0)` with `(b1, b2)` from [`sample_triangle_barycentric`].
+/// Its density is [`triangle_pdf`].
+pub fn sample_triangle<V: VectorSpace>(u: Vec2, p0: V, p1: V, p2: V) -> V {
+    let b = sample_triangle_barycentric(u);
+    p0 + (p1 - p0) * b.x + (p2 - p0) * b.y
+}
+
+/// The density of [`sample_triangle`] per unit area: `1 / area` inside, where
+/// `area = |(p1 - p0) × (p2 - p0)| / 2`.
+pub fn triangle_pdf(area: f32) -> f32 {
+    1.0 / area
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chi2::{chi2_test, significance_level};
+    use crate::warps::Warp;
+    use crate::warps::test_support::{ONE_MINUS_EPSILON, edge_points, interior_grid};
+    use glam::Vec3;
+
+    fn inside_unit_triangle(b: Vec2) -> bool {
+        b.x >= 0.0 && b.y >= 0.0 && b.x + b.y <= 1.0 + 1e-6
+    }
+
+    #[test]
+    fn exercise_triangle_fold_stays_inside_the_triangle() {
+        let mut grid = interior_grid(40);
+        grid.extend(edge_points());
+        grid.push(Vec2::new(ONE_MINUS_EPSILON, 1e-7));
+        for u in grid {
+            let b = sample_triangle_barycentric(u);
+            assert!(b.is_finite() && inside_unit_triangle(b), "u = {u}: {b}");
+        }
+    }
+
+    #[test]
+    fn exercise_triangle_fold_keeps_the_lower_half_as_it_is() {
+        // The fold moves only what lies outside the triangle.
+        for u in interior_grid(20).into_iter().filter(|u| u.x + u.y < 1.0) {
+            assert_eq!(sample_triangle_barycentric(u), u);
+        }
+    }
+
+    #[test]
+    fn exercise_triangle_fold_is_uniform() {
+        let result = chi2_test(&Warp::Triangle, 200_000, 1, (16, 16));
+        assert!(
+            result.p_value > significance_level(1, 0.01),
+            "the triangle fails the chi-square test: {result:?}"
+        );
+    }
+
+    #[test]
+    fn sample_triangle_hits_its_corners() {
+        let (p0, p1, p2) = (Vec3::ZERO, Vec3::X, Vec3::Z);
+        assert_eq!(sample_triangle(Vec2::ZERO, p0, p1, p2), p0);
+        assert_eq!(sample_triangle(Vec2::new(1.0, 0.0), p0, p1, p2), p1);
+        assert_eq!(sample_triangle(Vec2::new(0.0, 1.0), p0, p1, p2), p2);
+        // Area 1/2: density 2.
+        assert_eq!(triangle_pdf(0.5 * (p1 - p0).cross(p2 - p0).length()), 2.0);
+    }
+}
