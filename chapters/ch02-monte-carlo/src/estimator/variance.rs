@@ -1,0 +1,157 @@
+//! Measuring an estimator's noise: the variance of its estimates over independent runs.
+//!
+//! Theory says the variance of a Monte Carlo estimate is `σ² / n`. To *see* it, run the
+//! estimator many times with independent random numbers and compute the sample variance of
+//! the results. Halving the noise should cost four times the samples, and a good importance
+//! density should lower `σ²` itself.
+
+use common::sampler::mix;
+use rand::SeedableRng;
+use rand_pcg::Pcg32;
+
+// ANCHOR: sample_variance
+/// The mean and the unbiased sample variance `Σ (x - mean)² / (n - 1)` of `values`, in one
+/// pass by Welford's method.
+///
+/// Dividing by `n - 1` rather than `n` makes the variance unbiased: the deviations are taken
+/// from the sample's own mean, which sits closer to the values than the true mean does, so
+/// they come out too small on average by exactly the factor `(n - 1) / n`.
+///
+/// Why not the textbook shortcut `(Σ x² - n mean²) / (n - 1)`? It subtracts two huge,
+/// nearly equal numbers: for values around `10⁹` with a spread of 10, both terms are about
+/// `10¹⁸` and their difference is below the rounding error of either, so the result is
+/// garbage (even negative). Welford's method updates the mean and the sum of squared
+/// deviations `M₂` one value at a time,
+///
+/// ```text
+/// δ = x - mean,   mean += δ / k,   M₂ += δ (x - mean),
+/// ```
+///
+/// and only ever adds small, positive quantities.
+///
+/// One value has no spread to measure: its variance is returned as 0 (strictly it is
+/// undefined, `0 / 0`). With no values at all both results are `NaN`.
+pub fn sample_mean_and_variance(values: &[f64]) -> (f64, f64) {
+    // BEGIN SOLUTION
+    if values.is_empty() {
+        return (f64::NAN, f64::NAN);
+    }
+    let mut mean = 0.0;
+    let mut sum_of_squared_deviations = 0.0;
+    for (index, &value) in values.iter().enumerate() {
+        let deviation = value - mean;
+        mean += deviation / (index + 1) as f64;
+        // The old deviation times the new one: exactly the growth of M₂.
+        sum_of_squared_deviations += deviation * (value - mean);
+    }
+    let variance = if values.len() < 2 {
+        0.0
+    } else {
+        sum_of_squared_deviations / (values.len() - 1) as f64
+    };
+    (mean, variance)
+    // END SOLUTION
+}
+// ANCHOR_END: sample_variance
+
+/// The random number generator of repetition number `repetition` of an experiment with
+/// `seed`: a PCG32 whose state and stream are both derived from the two numbers.
+///
+/// Mixing the numbers first makes repetitions 0, 1, 2, ... statistically independent, as if
+/// each had a seed of its own, and the whole experiment reproducible from one `seed`.
+pub fn repetition_rng(seed: u64, repetition: u64) -> Pcg32 {
+    Pcg32::seed_from_u64(mix(seed ^ mix(repetition)))
+}
+
+/// Runs `estimator` once per repetition, each time with its own generator from
+/// [`repetition_rng`], and returns the `repetitions` estimates.
+pub fn repeated_estimates(
+    repetitions: usize,
+    seed: u64,
+    mut estimator: impl FnMut(&mut Pcg32) -> f64,
+) -> Vec<f64> {
+    (0..repetitions as u64)
+        .map(|repetition| estimator(&mut repetition_rng(seed, repetition)))
+        .collect()
+}
+
+/// The empirical variance of `estimator`'s estimate: the sample variance of
+/// [`repeated_estimates`] over `repetitions` independent runs.
+///
+/// For an estimator with `n` samples it should come out near `σ² / n`. Its own relative
+/// error is about `√(2 / repetitions)`: a few hundred repetitions measure it to 10 %.
+pub fn estimator_variance(
+    repetitions: usize,
+    seed: u64,
+    estimator: impl FnMut(&mut Pcg32) -> f64,
+) -> f64 {
+    sample_mean_and_variance(&repeated_estimates(repetitions, seed, estimator)).1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use rand::Rng;
+
+    #[test]
+    fn exercise_sample_variance_known_values() {
+        // Mean 5; squared deviations 9, 1, 1, 1, 0, 0, 4, 16 sum to 32; 32 / 7.
+        let (mean, variance) = sample_mean_and_variance(&[2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0]);
+        assert_relative_eq!(mean, 5.0, max_relative = 1e-15);
+        assert_relative_eq!(variance, 32.0 / 7.0, max_relative = 1e-15);
+        // Two values: (a - b)² / 2.
+        let (mean, variance) = sample_mean_and_variance(&[1.0, 4.0]);
+        assert_relative_eq!(mean, 2.5);
+        assert_relative_eq!(variance, 4.5);
+    }
+
+    #[test]
+    fn exercise_sample_variance_is_stable_far_from_zero() {
+        // 10⁹ + {4, 7, 13, 16}: mean 10⁹ + 10, deviations ±3, ±6, variance 90 / 3 = 30.
+        let values = [4.0, 7.0, 13.0, 16.0].map(|x| 1e9 + x);
+        let (mean, variance) = sample_mean_and_variance(&values);
+        assert_relative_eq!(mean, 1e9 + 10.0, max_relative = 1e-15);
+        assert_relative_eq!(variance, 30.0, max_relative = 1e-9);
+        // The shortcut formula fails on the same values: the reason for Welford's method.
+        let n = values.len() as f64;
+        let sum: f64 = values.iter().sum();
+        let sum_of_squares: f64 = values.iter().map(|x| x * x).sum();
+        let shortcut = (sum_of_squares - sum * sum / n) / (n - 1.0);
+        assert!((shortcut - 30.0).abs() > 10.0, "shortcut gave {shortcut}");
+    }
+
+    #[test]
+    fn exercise_sample_variance_of_one_value_is_zero() {
+        assert_eq!(sample_mean_and_variance(&[7.5]), (7.5, 0.0));
+        let (mean, variance) = sample_mean_and_variance(&[3.0; 10]);
+        assert_eq!((mean, variance), (3.0, 0.0));
+    }
+
+    #[test]
+    fn exercise_sample_variance_of_nothing_is_nan() {
+        let (mean, variance) = sample_mean_and_variance(&[]);
+        assert!(mean.is_nan() && variance.is_nan());
+    }
+
+    #[test]
+    fn repetitions_are_reproducible_and_distinct() {
+        let draw = |rng: &mut Pcg32| f64::from(rng.next_u32());
+        let first = repeated_estimates(50, 1, draw);
+        assert_eq!(first, repeated_estimates(50, 1, draw));
+        assert_ne!(first, repeated_estimates(50, 2, draw));
+        let mut sorted = first.clone();
+        sorted.sort_by(f64::total_cmp);
+        sorted.dedup();
+        assert_eq!(sorted.len(), 50, "every repetition has its own numbers");
+    }
+
+    #[test]
+    fn the_variance_of_a_uniform_number_is_one_twelfth() {
+        let variance = estimator_variance(20_000, 5, |rng| {
+            f64::from(common::sampler::unit_f32(rng.next_u32()))
+        });
+        // Relative error of a variance from 20 000 values: about sqrt(2 / 20 000) = 1 %.
+        assert_relative_eq!(variance, 1.0 / 12.0, max_relative = 0.05);
+    }
+}
