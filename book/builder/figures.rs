@@ -16,7 +16,10 @@ pub type WriteFigures = fn(out_dir: &Path, quick: bool) -> Result<()>;
 
 /// The chapters with figures, in book order: a chapter id (its figure directory) and its writer.
 /// A new chapter registers its figures by adding one line here.
-pub const CHAPTERS: &[(&str, WriteFigures)] = &[("ch01", ch01_whitted::figures::write_all)];
+pub const CHAPTERS: &[(&str, WriteFigures)] = &[
+    ("ch01", ch01_whitted::figures::write_all),
+    ("ch02", ch02_monte_carlo::figures::write_all),
+];
 
 /// Regenerates every chapter's figures under `figures_dir`, starting each chapter from an empty
 /// directory so that no figure the code no longer makes lingers on a page.

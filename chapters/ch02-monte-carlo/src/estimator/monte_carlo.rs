@@ -22,6 +22,7 @@
 //! `I` and the variance is zero. Uniform sampling is the special case `p = 1 / |D|`, where the
 //! estimator becomes `|D|` times the average of `f`.
 
+// ANCHOR: estimate
 /// The general (importance-sampling) estimator `(1/n) Σ f(x_i) / p(x_i)`, with each `x_i` a
 /// fresh point from `sample` and `pdf` its density.
 ///
@@ -46,6 +47,7 @@ pub fn estimate<X: Copy>(
     }
     sum / n as f64
 }
+// ANCHOR_END: estimate
 
 /// The uniform estimator `(|D| / n) Σ f(x_i)`, with `x_i` uniform points of a domain of
 /// measure `|D|` = `domain_measure` (its length, area or solid angle).

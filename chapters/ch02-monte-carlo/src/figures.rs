@@ -1,0 +1,333 @@
+//! The chapter's figures: warps side by side, histograms against densities, RANDU's planes,
+//! generator speed and evenness, the chi-square table, and error against n and against time.
+
+use crate::chi2::{Chi2Result, chi2_test, significance_level};
+use crate::estimator::{
+    Strategy, convergence, peaked_quartic, save_convergence, sky_irradiance, x_squared,
+};
+use crate::rng::{
+    Generator, consecutive_triples, fraction_on_randu_planes, numbers_per_second,
+    randu_plane_index, serial_chi2_3d, uniformity_chi2,
+};
+use crate::warps::{Domain, Warp, WarpPoint};
+use anyhow::Context;
+use common::cli::prepare_output_dir;
+use common::output::figures::{histogram_vs_pdf, scatter_plot};
+use common::output::write_text;
+use common::sampler::unit_f32;
+use glam::{Vec2, Vec3};
+use rand::{Rng, SeedableRng};
+use rand_pcg::Pcg32;
+use std::f32::consts::TAU;
+use std::path::Path;
+
+/// Sample counts of the figures: the book's, or small ones for tests and CI.
+struct Quality {
+    scatter_points: usize,
+    histogram_points: usize,
+    chi2_samples: usize,
+    repetitions: usize,
+    generator_numbers: u64,
+}
+
+impl Quality {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Quality {
+                scatter_points: 1_000,
+                histogram_points: 50_000,
+                chi2_samples: 100_000,
+                repetitions: 20,
+                generator_numbers: 1_000_000,
+            }
+        } else {
+            Quality {
+                scatter_points: 3_000,
+                histogram_points: 1_000_000,
+                chi2_samples: 1_000_000,
+                repetitions: 300,
+                generator_numbers: 50_000_000,
+            }
+        }
+    }
+}
+
+/// Writes every figure of the chapter into `out`.
+pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
+    prepare_output_dir(out)?;
+    let quality = Quality::new(quick);
+    warp_scatter_plots(out, &quality).context("the warp scatter plots")?;
+    histograms(out, &quality).context("the histogram-against-density maps")?;
+    randu_planes(out, &quality).context("the RANDU plot")?;
+    generators(out, &quality).context("the generator table")?;
+    chi2_table(out, &quality).context("the chi-square table")?;
+    estimators(out, &quality).context("the error-against-n and -time figures")?;
+    eprintln!("ch02 figures written to {}", out.display());
+    Ok(())
+}
+
+/// `n` uniform points of the unit square from a fixed seed.
+fn uniform_points(n: usize, seed: u64) -> Vec<Vec2> {
+    let mut rng = Pcg32::seed_from_u64(seed);
+    (0..n)
+        .map(|_| Vec2::new(unit_f32(rng.next_u32()), unit_f32(rng.next_u32())))
+        .collect()
+}
+
+/// The planar point of a warp, or the top view `(x, y)` of a direction.
+fn in_plane(point: WarpPoint) -> Vec2 {
+    match point {
+        WarpPoint::Plane(p) => p,
+        WarpPoint::Direction(d) => Vec2::new(d.x, d.y),
+    }
+}
+
+fn warped(warp: &Warp, points: &[Vec2]) -> (String, Vec<Vec2>) {
+    (
+        warp.name().to_string(),
+        points.iter().map(|&u| in_plane(warp.sample(u))).collect(),
+    )
+}
+
+/// The same uniform points through each warp: the naive disc next to the correct ones.
+fn warp_scatter_plots(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let points = uniform_points(quality.scatter_points, 1);
+    let disc = [Vec2::splat(-1.0), Vec2::splat(1.0)];
+    let disks = vec![
+        (
+            "naive: r = ξ2 (wrong)".to_string(),
+            warped(&Warp::DiskNaive, &points).1,
+        ),
+        (
+            "polar: r = √ξ2".to_string(),
+            warped(&Warp::DiskPolar, &points).1,
+        ),
+        (
+            "concentric".to_string(),
+            warped(&Warp::DiskConcentric, &points).1,
+        ),
+    ];
+    scatter_plot(
+        &out.join("warps_disk.png"),
+        "The same points warped onto the unit disc",
+        &disks,
+        disc,
+    )?;
+    let plane = vec![
+        ("unit square".to_string(), points.clone()),
+        warped(&Warp::Parallelogram, &points),
+        warped(&Warp::Triangle, &points),
+    ];
+    scatter_plot(
+        &out.join("warps_plane.png"),
+        "Parallelogram and triangle (with the fold)",
+        &plane,
+        [Vec2::ZERO, Vec2::ONE],
+    )?;
+    let directions = vec![
+        warped(&Warp::Hemisphere, &points),
+        warped(&Warp::CosineHemisphere, &points),
+        (
+            "cos-lobe, n = 20".to_string(),
+            warped(&Warp::CosLobe { exponent: 20.0 }, &points).1,
+        ),
+        (
+            "spherical cap, cos θmax = 0.8".to_string(),
+            warped(&Warp::SphericalCap { cos_theta_max: 0.8 }, &points).1,
+        ),
+    ];
+    scatter_plot(
+        &out.join("warps_directions.png"),
+        "Directions seen from above the pole (x, y)",
+        &directions,
+        disc,
+    )?;
+    Ok(())
+}
+
+/// Histograms of warped points against the density each warp claims. Directions are shown in
+/// the coordinates `(φ / 2π, cos θ)`, where the solid angle is `2π dx dy`.
+fn histograms(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let points = uniform_points(quality.histogram_points, 2);
+    for warp in [
+        Warp::DiskNaive,
+        Warp::DiskPolar,
+        Warp::CosineHemisphere,
+        Warp::CosLobe { exponent: 20.0 },
+    ] {
+        let path = out.join(format!("heatmap_{}.png", warp.name()));
+        match warp.domain() {
+            Domain::Plane { min, max } => {
+                let samples: Vec<Vec2> = points.iter().map(|&u| in_plane(warp.sample(u))).collect();
+                let pdf = |p: Vec2| f64::from(warp.pdf(WarpPoint::Plane(p)));
+                let title = format!("{}: histogram against the claimed density", warp.name());
+                histogram_vs_pdf(&path, &title, &samples, &pdf, [min, max], 40)?;
+            }
+            Domain::Sphere => {
+                let to_map = |d: Vec3| Vec2::new(d.y.atan2(d.x).rem_euclid(TAU) / TAU, d.z);
+                let samples: Vec<Vec2> = points
+                    .iter()
+                    .filter_map(|&u| match warp.sample(u) {
+                        WarpPoint::Direction(d) => Some(to_map(d)),
+                        WarpPoint::Plane(_) => None,
+                    })
+                    .collect();
+                let pdf = |m: Vec2| {
+                    let sin_theta = (1.0 - m.y * m.y).max(0.0).sqrt();
+                    let phi = m.x * TAU;
+                    let d = Vec3::new(sin_theta * phi.cos(), sin_theta * phi.sin(), m.y);
+                    f64::from(warp.pdf(WarpPoint::Direction(d))) * std::f64::consts::TAU
+                };
+                let title = format!(
+                    "{}: histogram against the density, in (φ/2π, cos θ)",
+                    warp.name()
+                );
+                histogram_vs_pdf(&path, &title, &samples, &pdf, [Vec2::ZERO, Vec2::ONE], 40)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Consecutive triples `(x, y, z)` plotted as `x` against `9x - 6y + z`: RANDU's take only
+/// 15 values, one per plane.
+fn randu_planes(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let sets: Vec<(String, Vec<Vec2>)> = [Generator::Randu, Generator::Pcg32]
+        .into_iter()
+        .map(|generator| {
+            let triples = consecutive_triples(&mut generator.new_source(1), quality.scatter_points);
+            let points = triples
+                .iter()
+                .map(|&t| Vec2::new(t[0] as f32, ((randu_plane_index(t) + 6.0) / 16.0) as f32))
+                .collect();
+            (
+                format!("{}: x against (9x - 6y + z + 6) / 16", generator.name()),
+                points,
+            )
+        })
+        .collect();
+    scatter_plot(
+        &out.join("randu_planes.png"),
+        "Consecutive triples: RANDU lies on 15 planes",
+        &sets,
+        [Vec2::ZERO, Vec2::ONE],
+    )?;
+    Ok(())
+}
+
+/// Speed and evenness of each generator, as CSV and as a Markdown table for the book.
+fn generators(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let mut csv = String::from(
+        "generator,numbers_per_second,uniformity_p_value,serial_3d_p_value,share_on_randu_planes\n",
+    );
+    let mut table = String::from(
+        "| generator | numbers per second | uniformity p (1D, 100 bins) | serial p (3D, 8³ cells) | triples on RANDU's planes |\n|---|---|---|---|---|\n",
+    );
+    for generator in Generator::ALL {
+        let speed = numbers_per_second(generator, quality.generator_numbers);
+        let uniform = uniformity_chi2(&mut generator.new_source(3), 200_000, 100);
+        let serial = serial_chi2_3d(&mut generator.new_source(3), 100_000, 8);
+        let planes = fraction_on_randu_planes(
+            &consecutive_triples(&mut generator.new_source(3), 100_000),
+            1e-6,
+        );
+        csv.push_str(&format!(
+            "{},{speed},{},{},{planes}\n",
+            generator.name(),
+            uniform.p_value,
+            serial.p_value
+        ));
+        table.push_str(&format!(
+            "| {} | {:.0} M | {:.3} | {:.2e} | {:.1}% |\n",
+            generator.name(),
+            speed / 1e6,
+            uniform.p_value,
+            serial.p_value,
+            planes * 100.0
+        ));
+    }
+    write_text(&out.join("generators.csv"), &csv)?;
+    write_text(&out.join("generators.md"), &table)?;
+    Ok(())
+}
+
+/// A row name: the warp's command-line name, with its parameter where it has one.
+fn row_name(warp: &Warp) -> String {
+    match warp {
+        Warp::CosLobe { exponent } => format!("cos-lobe n={exponent}"),
+        Warp::SphericalCap { cos_theta_max } => format!("spherical-cap cos={cos_theta_max}"),
+        other => other.name().to_string(),
+    }
+}
+
+/// The chi-square goodness-of-fit test of every warp against the density it claims.
+///
+/// The grid is as fine as the sample count allows: at most 32 x 32 bins in the plane and
+/// 32 x 64 on the sphere, and no finer than about 20 expected samples per bin, so that the
+/// pooling of nearly empty bins never swallows the whole test.
+pub fn chi2_rows(samples: usize) -> Vec<(String, Chi2Result)> {
+    let bins = (samples / 20).max(4);
+    let plane_side = (bins as f64).sqrt().floor().clamp(2.0, 32.0) as usize;
+    let sphere_side = ((bins / 2) as f64).sqrt().floor().clamp(2.0, 32.0) as usize;
+    Warp::all_for_tests()
+        .iter()
+        .map(|warp| {
+            let resolution = match warp.domain() {
+                Domain::Plane { .. } => (plane_side, plane_side),
+                Domain::Sphere => (sphere_side, 2 * sphere_side),
+            };
+            (row_name(warp), chi2_test(warp, samples, 7, resolution))
+        })
+        .collect()
+}
+
+fn chi2_table(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let rows = chi2_rows(quality.chi2_samples);
+    let level = significance_level(rows.len(), 0.01);
+    let mut csv = String::from("warp,statistic,dof,p_value\n");
+    let mut table = format!(
+        "| warp | X² | degrees of freedom | p-value | verdict at {level:.1e} |\n|---|---|---|---|---|\n"
+    );
+    for (name, result) in &rows {
+        csv.push_str(&format!(
+            "{name},{},{},{}\n",
+            result.statistic, result.dof, result.p_value
+        ));
+        let verdict = if result.p_value >= level {
+            "passes"
+        } else {
+            "**fails**"
+        };
+        table.push_str(&format!(
+            "| {name} | {:.1} | {} | {:.3e} | {verdict} |\n",
+            result.statistic, result.dof, result.p_value
+        ));
+        println!(
+            "chi2 {name:<24} statistic {:>12.1}  dof {:>5}  p {:.3e}",
+            result.statistic, result.dof, result.p_value
+        );
+    }
+    write_text(&out.join("chi2.csv"), &csv)?;
+    write_text(&out.join("chi2.md"), &table)?;
+    Ok(())
+}
+
+/// Error against n and against time for uniform, importance and stratified sampling.
+fn estimators(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let counts = crate::estimator::SAMPLE_COUNTS;
+    let smooth = x_squared();
+    let records = convergence(&smooth, &Strategy::ALL, &counts, quality.repetitions, 11);
+    save_convergence(out, "convergence_smooth", smooth.formula, &records)?;
+    let peaked = peaked_quartic();
+    let records = convergence(&peaked, &Strategy::ALL, &counts, quality.repetitions, 12);
+    save_convergence(out, "convergence_peaked", peaked.formula, &records)?;
+    let sky = sky_irradiance();
+    let records = convergence(&sky, &Strategy::ALL, &counts, quality.repetitions, 13);
+    save_convergence(
+        out,
+        "convergence_sky",
+        "Irradiance under a uniform sky",
+        &records,
+    )?;
+    Ok(())
+}
