@@ -57,6 +57,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     prepare_output_dir(out)?;
     let quality = Quality::new(quick);
     warp_scatter_plots(out, &quality).context("the warp scatter plots")?;
+    stratification(out).context("the stratified sample sets")?;
     histograms(out, &quality).context("the histogram-against-density maps")?;
     randu_planes(out, &quality).context("the RANDU plot")?;
     generators(out, &quality).context("the generator table")?;
@@ -125,6 +126,10 @@ fn warp_scatter_plots(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         [Vec2::ZERO, Vec2::ONE],
     )?;
     let directions = vec![
+        (
+            "sphere (both halves overlap)".to_string(),
+            warped(&Warp::Sphere, &points).1,
+        ),
         warped(&Warp::Hemisphere, &points),
         warped(&Warp::CosineHemisphere, &points),
         (
@@ -145,16 +150,34 @@ fn warp_scatter_plots(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// 256 independent points against 256 jittered ones, one in each cell of a 16 x 16 grid.
+fn stratification(out: &Path) -> anyhow::Result<()> {
+    let mut rng = Pcg32::seed_from_u64(5);
+    let sets = vec![
+        (
+            "independent".to_string(),
+            crate::stratified::independent_2d(256, &mut rng),
+        ),
+        (
+            "jittered (stratified 16 x 16)".to_string(),
+            crate::stratified::jittered_2d(16, &mut rng),
+        ),
+    ];
+    scatter_plot(
+        &out.join("stratified.png"),
+        "256 points of the unit square",
+        &sets,
+        [Vec2::ZERO, Vec2::ONE],
+    )?;
+    Ok(())
+}
+
 /// Histograms of warped points against the density each warp claims. Directions are shown in
-/// the coordinates `(φ / 2π, cos θ)`, where the solid angle is `2π dx dy`.
+/// the coordinates `(φ / 2π, cos θ)` over `[0, 1] x [-1, 1]`, where the solid angle is `2π dx dy`.
 fn histograms(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let points = uniform_points(quality.histogram_points, 2);
-    for warp in [
-        Warp::DiskNaive,
-        Warp::DiskPolar,
-        Warp::CosineHemisphere,
-        Warp::CosLobe { exponent: 20.0 },
-    ] {
+    for name in Warp::NAMES {
+        let warp = Warp::from_name(name, None).map_err(anyhow::Error::msg)?;
         let path = out.join(format!("heatmap_{}.png", warp.name()));
         match warp.domain() {
             Domain::Plane { min, max } => {
@@ -182,7 +205,14 @@ fn histograms(out: &Path, quality: &Quality) -> anyhow::Result<()> {
                     "{}: histogram against the density, in (φ/2π, cos θ)",
                     warp.name()
                 );
-                histogram_vs_pdf(&path, &title, &samples, &pdf, [Vec2::ZERO, Vec2::ONE], 40)?;
+                histogram_vs_pdf(
+                    &path,
+                    &title,
+                    &samples,
+                    &pdf,
+                    [Vec2::new(0.0, -1.0), Vec2::ONE],
+                    40,
+                )?;
             }
         }
     }
