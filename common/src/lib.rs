@@ -16,6 +16,7 @@ pub mod output;
 pub mod ray;
 pub mod render;
 pub mod sampler;
+pub mod scene;
 
 pub use glam::{DVec3, UVec2, Vec2, Vec3};
 pub use ray::Ray;

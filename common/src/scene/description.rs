@@ -1,0 +1,255 @@
+//! The neutral scene description: what a scene file says, resolved, as plain data.
+//!
+//! Defaults are substituted, `<ref>`s followed and transforms composed into matrices, but no
+//! rendering decision is taken: turning a description into a chapter's scene is the chapter's
+//! job. Transforms are glam `Mat4` (`f32`), like the rest of the workbook's geometry; colours are
+//! linear RGB triples stored in a `Vec3`.
+
+use std::path::PathBuf;
+
+use glam::{Mat4, Vec3};
+
+/// Everything a scene file describes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneDescription {
+    /// How light transport is computed (`path` when the file names no integrator, as in Mitsuba).
+    pub integrator: Integrator,
+    /// The camera with its film and sampler.
+    pub sensor: Sensor,
+    /// Every shape, in file order, each with its material and optional area light.
+    pub shapes: Vec<ShapeDescription>,
+    /// The lights that are not shapes (`point` and `constant`), in file order.
+    pub emitters: Vec<EmitterDescription>,
+}
+
+/// The integrator, the light transport algorithm.
+///
+/// The two Mitsuba 3 integrators of the subset are parsed into their own variants. Any other
+/// type (a chapter's own integrator, say) is kept with its raw properties in `Other`, so a later
+/// chapter can give it a meaning; the loader warns that Mitsuba 3 would not know it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Integrator {
+    /// Mitsuba's `path`: unidirectional path tracing.
+    Path {
+        /// Path segments including the camera ray; -1 means unlimited (Mitsuba's default).
+        max_depth: i32,
+        /// The depth from which Russian roulette may stop a path (default 5).
+        rr_depth: i32,
+    },
+    /// Mitsuba's `direct`: one light and one BSDF sample per hit.
+    Direct,
+    /// A type that is not part of the Mitsuba 3 subset, kept for a later chapter.
+    Other {
+        /// The `type` attribute.
+        type_name: String,
+        /// The properties as written, in file order.
+        properties: Vec<(String, PropertyValue)>,
+    },
+}
+
+/// A property's value as written in the file, for plugins kept as `Other`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PropertyValue {
+    /// `<float>`.
+    Float(f32),
+    /// `<integer>`.
+    Integer(i64),
+    /// `<boolean>`.
+    Boolean(bool),
+    /// `<string>`.
+    String(String),
+    /// `<rgb>`.
+    Rgb(Vec3),
+    /// `<point>`.
+    Point(Vec3),
+    /// `<vector>`.
+    Vector(Vec3),
+    /// `<transform>`, composed into one matrix.
+    Transform(Mat4),
+}
+
+/// The camera model of a sensor.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CameraModel {
+    /// Mitsuba's `perspective`: a pinhole camera.
+    Perspective,
+    /// Mitsuba's `thinlens`: a thin lens focused on the plane `z = focus_distance`.
+    ThinLens {
+        /// Radius of the lens disc in camera space (required).
+        aperture_radius: f32,
+        /// Distance along the camera's +z axis of the plane in focus (required).
+        focus_distance: f32,
+    },
+}
+
+/// A camera: where it is, what it sees, and how its image is sampled and stored.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sensor {
+    /// Pinhole or thin lens.
+    pub model: CameraModel,
+    /// The horizontal field of view in degrees, already converted from the file's `fov` and
+    /// `fov_axis` with the film's aspect ratio, as Mitsuba 3 does.
+    pub fov_x_degrees: f32,
+    /// Rays start this far along the camera axis (default 0.01).
+    pub near_clip: f32,
+    /// Rays end this far along the camera axis (default 10 000).
+    pub far_clip: f32,
+    /// Start of the shutter interval (default 0).
+    pub shutter_open: f32,
+    /// End of the shutter interval (default 0: no motion blur).
+    pub shutter_close: f32,
+    /// Camera to world. Camera space has +z forward, +y up and **+x to the image's left**.
+    pub to_world: Mat4,
+    /// The image the camera records.
+    pub film: FilmDescription,
+    /// How many samples each pixel gets, and from which seed.
+    pub sampler: SamplerDescription,
+}
+
+/// An `hdrfilm`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FilmDescription {
+    /// Width in pixels (default 768).
+    pub width: u32,
+    /// Height in pixels (default 576).
+    pub height: u32,
+    /// The reconstruction filter (`gaussian` by default, as in Mitsuba).
+    pub filter: ReconstructionFilter,
+    /// Mitsuba's `pixel_format` (default "rgb"); recorded, not interpreted.
+    pub pixel_format: String,
+    /// Mitsuba's `component_format` (default "float16"); recorded, not interpreted.
+    pub component_format: String,
+}
+
+/// The filter that spreads a sample over nearby pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ReconstructionFilter {
+    /// One pixel wide: a pixel is the mean of its own samples.
+    Box,
+    /// A tent of the given radius in pixels (default 1).
+    Tent {
+        /// Radius in pixels.
+        radius: f32,
+    },
+    /// A Gaussian of the given standard deviation in pixels (default 0.5).
+    Gaussian {
+        /// Standard deviation in pixels.
+        stddev: f32,
+    },
+}
+
+/// The sampler: any type is accepted and recorded; chapters pick their own strategies.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SamplerDescription {
+    /// The `type` attribute, such as "independent".
+    pub type_name: String,
+    /// Samples per pixel (default 4).
+    pub sample_count: u32,
+    /// The seed (default 0).
+    pub seed: u32,
+}
+
+/// One shape with everything attached to it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShapeDescription {
+    /// The geometry in the shape's own space.
+    pub geometry: ShapeGeometry,
+    /// Object to world. For a sphere, `center` and `radius` are applied *before* it.
+    pub to_world: Mat4,
+    /// The material: inline, referenced, or Mitsuba's default diffuse 0.5.
+    pub bsdf: Bsdf,
+    /// The area light, when the shape glows.
+    pub emitter: Option<AreaEmitter>,
+    /// Whether the normals point the other way.
+    pub flip_normals: bool,
+}
+
+/// The geometry of a shape, in Mitsuba 3's object space.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ShapeGeometry {
+    /// A sphere with outward normals.
+    Sphere {
+        /// Centre in object space (default the origin).
+        center: Vec3,
+        /// Radius, always positive (default 1).
+        radius: f32,
+    },
+    /// The square [-1, 1]^2 in the xy-plane, normal +z.
+    Rectangle,
+    /// The unit disc in the xy-plane, normal +z.
+    Disk,
+    /// The cube [-1, 1]^3.
+    Cube,
+    /// A Wavefront OBJ mesh, not loaded yet.
+    Obj {
+        /// The mesh file, resolved relative to the scene file's directory.
+        filename: PathBuf,
+    },
+}
+
+/// A material. Mitsuba 3's BSDFs of the subset get their own variants; any other type is kept
+/// with its raw properties in `Other` for a later chapter (a `phong` lobe, say).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Bsdf {
+    /// Lambertian reflection, reflectance / pi, one-sided.
+    Diffuse {
+        /// Albedo (default 0.5).
+        reflectance: Vec3,
+    },
+    /// A metal. `material = "none"` is a perfect mirror.
+    Conductor {
+        /// Mitsuba's named metal, "none" by default; recorded, not interpreted.
+        material: String,
+        /// A factor on the reflection (default 1).
+        specular_reflectance: Vec3,
+    },
+    /// Glass: Fresnel reflection and refraction.
+    Dielectric {
+        /// Index of refraction inside (default 1.5046, BK7).
+        int_ior: f32,
+        /// Index of refraction outside (default 1.000277, air).
+        ext_ior: f32,
+    },
+    /// The wrapped BSDF on both sides of the surface.
+    TwoSided(Box<Bsdf>),
+    /// A type outside the Mitsuba 3 subset, kept for a later chapter.
+    Other {
+        /// The `type` attribute.
+        type_name: String,
+        /// The properties as written, in file order.
+        properties: Vec<(String, PropertyValue)>,
+    },
+}
+
+impl Bsdf {
+    /// What Mitsuba 3 gives a shape without a BSDF: diffuse with reflectance 0.5.
+    pub fn mitsuba_default() -> Self {
+        Bsdf::Diffuse {
+            reflectance: Vec3::splat(0.5),
+        }
+    }
+}
+
+/// The `area` emitter of a shape: it emits on the side the normal points to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AreaEmitter {
+    /// Emitted radiance.
+    pub radiance: Vec3,
+}
+
+/// A light that is not a shape.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EmitterDescription {
+    /// A point light.
+    Point {
+        /// World position (from `position`, or the translation of `to_world`).
+        position: Vec3,
+        /// Radiant intensity in W/sr (default 1).
+        intensity: Vec3,
+    },
+    /// Radiance arriving from every direction that leaves the scene.
+    Constant {
+        /// Radiance (default 1).
+        radiance: Vec3,
+    },
+}

@@ -1,0 +1,68 @@
+//! `<integrator>`: `path` and `direct`, or a chapter's own type kept as `Other`.
+
+use roxmltree::Node;
+
+use super::description::Integrator;
+use super::error::SceneError;
+use super::properties::Properties;
+use super::reader::Reader;
+
+/// What Mitsuba 3 uses when the file names no integrator.
+pub(super) fn default_integrator() -> Integrator {
+    Integrator::Path {
+        max_depth: -1,
+        rr_depth: 5,
+    }
+}
+
+/// Reads an `<integrator>`.
+pub(super) fn read_integrator(reader: &mut Reader, node: Node) -> Result<Integrator, SceneError> {
+    let type_name = reader.required_attribute(node, "type")?;
+    let mut properties = Properties::read(reader, node, format!("{type_name} integrator"))?;
+    if let Some(object) = properties.objects.first() {
+        let tag = object.tag_name().name();
+        return Err(reader.error(
+            *object,
+            format!("<{tag}> is not allowed inside <integrator>"),
+        ));
+    }
+    let mut depth = |name: &str, default: i32| -> Result<i32, SceneError> {
+        let Some(value) = properties.integer(reader, name)? else {
+            return Ok(default);
+        };
+        let position = properties
+            .position_of(name)
+            .unwrap_or(reader.position(node));
+        i32::try_from(value)
+            .ok()
+            .filter(|&depth| depth >= -1)
+            .ok_or_else(|| {
+                reader.error_at(
+                    position,
+                    format!("{name} must be -1 (unlimited) or more, found {value}"),
+                )
+            })
+    };
+    let integrator = match type_name.as_str() {
+        "path" => Integrator::Path {
+            max_depth: depth("max_depth", -1)?,
+            rr_depth: depth("rr_depth", 5)?,
+        },
+        "direct" => Integrator::Direct,
+        _ => {
+            reader.warn_at(
+                reader.position(node),
+                format!(
+                    "integrator type \"{type_name}\" is not one of Mitsuba 3's (path, direct): \
+                     kept as is for a chapter that knows it"
+                ),
+            );
+            Integrator::Other {
+                type_name,
+                properties: properties.take_raw(),
+            }
+        }
+    };
+    properties.finish(reader);
+    Ok(integrator)
+}

@@ -1,0 +1,62 @@
+//! `<emitter>`: area lights attached to shapes, and point and constant lights on their own.
+
+use glam::Vec3;
+use roxmltree::Node;
+
+use super::description::{AreaEmitter, EmitterDescription};
+use super::error::SceneError;
+use super::properties::Properties;
+use super::reader::Reader;
+
+/// An `<emitter>` is either attached to a shape (area) or stands alone (point, constant).
+pub(super) enum Emitter {
+    /// Must be inside a `<shape>`.
+    Area(AreaEmitter),
+    /// Must be at the top level.
+    Standalone(EmitterDescription),
+}
+
+/// Reads an `<emitter>` of type `area`, `point` or `constant`.
+pub(super) fn read_emitter(reader: &mut Reader, node: Node) -> Result<Emitter, SceneError> {
+    let type_name = reader.required_attribute(node, "type")?;
+    let mut properties = Properties::read(reader, node, format!("{type_name} emitter"))?;
+    if let Some(object) = properties.objects.first() {
+        let tag = object.tag_name().name();
+        return Err(reader.error(*object, format!("<{tag}> is not allowed inside <emitter>")));
+    }
+    let emitter = match type_name.as_str() {
+        "area" => Emitter::Area(AreaEmitter {
+            radiance: properties.rgb(reader, "radiance")?.unwrap_or(Vec3::ONE),
+        }),
+        "constant" => Emitter::Standalone(EmitterDescription::Constant {
+            radiance: properties.rgb(reader, "radiance")?.unwrap_or(Vec3::ONE),
+        }),
+        "point" => {
+            let position = properties.point(reader, "position")?;
+            let to_world = properties.transform(reader, "to_world")?;
+            let position = match (position, to_world) {
+                (Some(_), Some(_)) => {
+                    return Err(reader.error(
+                        node,
+                        "a point emitter takes \"position\" or \"to_world\", not both",
+                    ));
+                }
+                (Some(position), None) => position,
+                (None, Some(to_world)) => to_world.transform_point3(Vec3::ZERO),
+                (None, None) => Vec3::ZERO,
+            };
+            Emitter::Standalone(EmitterDescription::Point {
+                position,
+                intensity: properties.rgb(reader, "intensity")?.unwrap_or(Vec3::ONE),
+            })
+        }
+        _ => {
+            return Err(reader.error(
+                node,
+                format!("unknown emitter type \"{type_name}\": expected area, point or constant"),
+            ));
+        }
+    };
+    properties.finish(reader);
+    Ok(emitter)
+}

@@ -1,0 +1,247 @@
+//! The named properties of one plugin element (`<float name="radius" value="1"/>` and friends),
+//! read with their kind checked, and the nested objects (`<bsdf>`, `<film>`, ...) set aside for
+//! the plugin to handle.
+//!
+//! Every property the plugin does not ask for becomes a warning when it is `finish`ed: a typo
+//! in a property name is then visible instead of silently ignored.
+
+use glam::{Mat4, Vec3};
+use roxmltree::Node;
+
+use super::description::PropertyValue;
+use super::error::{SceneError, TextPosition};
+use super::reader::Reader;
+use super::transform::read_transform;
+use super::values::{parse_boolean, parse_float, parse_integer, parse_rgb, parse_vec3};
+
+/// Elements that are objects rather than properties.
+const OBJECT_TAGS: &[&str] = &[
+    "bsdf",
+    "emitter",
+    "film",
+    "sampler",
+    "rfilter",
+    "ref",
+    "shape",
+    "sensor",
+    "integrator",
+];
+
+struct Property {
+    name: String,
+    value: PropertyValue,
+    position: TextPosition,
+    used: bool,
+}
+
+/// The properties and nested objects of one plugin element.
+pub(super) struct Properties<'a, 'input> {
+    /// How messages name the plugin, such as "sphere shape".
+    plugin: String,
+    list: Vec<Property>,
+    /// Nested objects, in file order.
+    pub objects: Vec<Node<'a, 'input>>,
+}
+
+impl<'a, 'input> Properties<'a, 'input> {
+    /// Reads every child element of `node`; `plugin` names it in messages ("sphere shape").
+    pub fn read(
+        reader: &Reader,
+        node: Node<'a, 'input>,
+        plugin: String,
+    ) -> Result<Self, SceneError> {
+        let mut properties = Properties {
+            plugin,
+            list: Vec::new(),
+            objects: Vec::new(),
+        };
+        for child in node.children().filter(Node::is_element) {
+            let tag = child.tag_name().name();
+            if OBJECT_TAGS.contains(&tag) {
+                properties.objects.push(child);
+                continue;
+            }
+            let value = read_value(reader, child)?;
+            let name = reader.required_attribute(child, "name")?;
+            if properties.list.iter().any(|p| p.name == name) {
+                let plugin = &properties.plugin;
+                return Err(reader.error(
+                    child,
+                    format!("property \"{name}\" of the {plugin} is given twice"),
+                ));
+            }
+            properties.list.push(Property {
+                name,
+                value,
+                position: reader.position(child),
+                used: false,
+            });
+        }
+        Ok(properties)
+    }
+
+    /// Marks `name` as used and returns its value and position.
+    fn take(&mut self, name: &str) -> Option<(&PropertyValue, TextPosition)> {
+        let property = self.list.iter_mut().find(|p| p.name == name)?;
+        property.used = true;
+        Some((&property.value, property.position))
+    }
+
+    /// Where the property `name` is written, if it is.
+    pub fn position_of(&self, name: &str) -> Option<TextPosition> {
+        self.list
+            .iter()
+            .find(|p| p.name == name)
+            .map(|p| p.position)
+    }
+
+    /// Reads `name` with `convert`, which returns `None` for a value of the wrong kind.
+    fn typed<T>(
+        &mut self,
+        reader: &Reader,
+        name: &str,
+        expected: &str,
+        convert: impl Fn(&PropertyValue) -> Option<T>,
+    ) -> Result<Option<T>, SceneError> {
+        let plugin = self.plugin.clone();
+        let Some((value, position)) = self.take(name) else {
+            return Ok(None);
+        };
+        convert(value).map(Some).ok_or_else(|| {
+            let found = kind_name(value);
+            let message =
+                format!("property \"{name}\" of the {plugin} must be {expected}, found {found}");
+            reader.error_at(position, message)
+        })
+    }
+
+    /// A `<float>` (an `<integer>` is accepted too).
+    pub fn float(&mut self, reader: &Reader, name: &str) -> Result<Option<f32>, SceneError> {
+        self.typed(reader, name, "a <float>", |value| match value {
+            PropertyValue::Float(x) => Some(*x),
+            PropertyValue::Integer(i) => Some(*i as f32),
+            _ => None,
+        })
+    }
+
+    /// An `<integer>`.
+    pub fn integer(&mut self, reader: &Reader, name: &str) -> Result<Option<i64>, SceneError> {
+        self.typed(reader, name, "an <integer>", |value| match value {
+            PropertyValue::Integer(i) => Some(*i),
+            _ => None,
+        })
+    }
+
+    /// A `<boolean>`.
+    pub fn boolean(&mut self, reader: &Reader, name: &str) -> Result<Option<bool>, SceneError> {
+        self.typed(reader, name, "a <boolean>", |value| match value {
+            PropertyValue::Boolean(b) => Some(*b),
+            _ => None,
+        })
+    }
+
+    /// A `<string>`.
+    pub fn string(&mut self, reader: &Reader, name: &str) -> Result<Option<String>, SceneError> {
+        self.typed(reader, name, "a <string>", |value| match value {
+            PropertyValue::String(s) => Some(s.clone()),
+            _ => None,
+        })
+    }
+
+    /// A colour: `<rgb>`, or a `<float>` meaning a grey.
+    pub fn rgb(&mut self, reader: &Reader, name: &str) -> Result<Option<Vec3>, SceneError> {
+        self.typed(reader, name, "an <rgb> or a <float>", |value| match value {
+            PropertyValue::Rgb(c) => Some(*c),
+            PropertyValue::Float(x) => Some(Vec3::splat(*x)),
+            PropertyValue::Integer(i) => Some(Vec3::splat(*i as f32)),
+            _ => None,
+        })
+    }
+
+    /// A `<point>`.
+    pub fn point(&mut self, reader: &Reader, name: &str) -> Result<Option<Vec3>, SceneError> {
+        self.typed(reader, name, "a <point>", |value| match value {
+            PropertyValue::Point(p) => Some(*p),
+            _ => None,
+        })
+    }
+
+    /// A `<transform>`.
+    pub fn transform(&mut self, reader: &Reader, name: &str) -> Result<Option<Mat4>, SceneError> {
+        self.typed(reader, name, "a <transform>", |value| match value {
+            PropertyValue::Transform(m) => Some(*m),
+            _ => None,
+        })
+    }
+
+    /// Takes every property as written, for plugins kept as `Other` (so none is warned about).
+    pub fn take_raw(&mut self) -> Vec<(String, PropertyValue)> {
+        self.list.drain(..).map(|p| (p.name, p.value)).collect()
+    }
+
+    /// Warns about every property the plugin did not ask for.
+    pub fn finish(self, reader: &mut Reader) {
+        for property in self.list.iter().filter(|p| !p.used) {
+            let (name, plugin) = (&property.name, &self.plugin);
+            let message = format!("unknown property \"{name}\" of the {plugin}, ignored");
+            reader.warn_at(property.position, message);
+        }
+    }
+}
+
+/// The value of one property element, such as `<rgb name="radiance" value="17, 12, 4"/>`.
+fn read_value(reader: &Reader, node: Node) -> Result<PropertyValue, SceneError> {
+    let tag = node.tag_name().name();
+    let value = |parse: fn(&str) -> Result<PropertyValue, String>| {
+        let text = reader.required_attribute(node, "value")?;
+        parse(&text).map_err(|message| reader.error(node, format!("<{tag}>: {message}")))
+    };
+    match tag {
+        "float" => value(|t| parse_float(t).map(PropertyValue::Float)),
+        "integer" => value(|t| parse_integer(t).map(PropertyValue::Integer)),
+        "boolean" => value(|t| parse_boolean(t).map(PropertyValue::Boolean)),
+        "string" => Ok(PropertyValue::String(
+            reader.required_attribute(node, "value")?,
+        )),
+        "rgb" => value(|t| parse_rgb(t).map(PropertyValue::Rgb)),
+        "point" => read_xyz(reader, node).map(PropertyValue::Point),
+        "vector" => read_xyz(reader, node).map(PropertyValue::Vector),
+        "transform" => read_transform(reader, node).map(PropertyValue::Transform),
+        _ => Err(reader.error(
+            node,
+            format!(
+                "unknown element <{tag}>: expected a property (float, integer, boolean, string, \
+                 rgb, point, vector, transform) or an object ({})",
+                OBJECT_TAGS.join(", ")
+            ),
+        )),
+    }
+}
+
+/// A point or vector written as `value="x, y, z"` or as `x`, `y`, `z` attributes (default 0).
+pub(super) fn read_xyz(reader: &Reader, node: Node) -> Result<Vec3, SceneError> {
+    if let Some(value) = reader.parsed_attribute(node, "value", parse_vec3)? {
+        return Ok(value);
+    }
+    let mut xyz = Vec3::ZERO;
+    for (axis, name) in ["x", "y", "z"].into_iter().enumerate() {
+        if let Some(coordinate) = reader.parsed_attribute(node, name, parse_float)? {
+            xyz[axis] = coordinate;
+        }
+    }
+    Ok(xyz)
+}
+
+/// How messages name the kind of a value.
+fn kind_name(value: &PropertyValue) -> &'static str {
+    match value {
+        PropertyValue::Float(_) => "a <float>",
+        PropertyValue::Integer(_) => "an <integer>",
+        PropertyValue::Boolean(_) => "a <boolean>",
+        PropertyValue::String(_) => "a <string>",
+        PropertyValue::Rgb(_) => "an <rgb>",
+        PropertyValue::Point(_) => "a <point>",
+        PropertyValue::Vector(_) => "a <vector>",
+        PropertyValue::Transform(_) => "a <transform>",
+    }
+}

@@ -1,0 +1,99 @@
+//! `<shape>`: geometry with its transform, material and optional area light.
+
+use glam::{Mat4, Vec3};
+use roxmltree::Node;
+
+use super::description::{Bsdf, ShapeDescription, ShapeGeometry};
+use super::error::SceneError;
+use super::lights::{Emitter, read_emitter};
+use super::materials::nested_bsdfs;
+use super::properties::Properties;
+use super::reader::Reader;
+
+/// Reads a `sphere`, `rectangle`, `disk`, `cube` or `obj` shape.
+pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescription, SceneError> {
+    let type_name = reader.required_attribute(node, "type")?;
+    let mut properties = Properties::read(reader, node, format!("{type_name} shape"))?;
+    let geometry = match type_name.as_str() {
+        "sphere" => {
+            let radius = properties.float(reader, "radius")?.unwrap_or(1.0);
+            if radius <= 0.0 {
+                let position = properties
+                    .position_of("radius")
+                    .unwrap_or(reader.position(node));
+                return Err(reader.error_at(
+                    position,
+                    format!("a sphere's radius must be positive, found {radius}"),
+                ));
+            }
+            ShapeGeometry::Sphere {
+                center: properties.point(reader, "center")?.unwrap_or(Vec3::ZERO),
+                radius,
+            }
+        }
+        "rectangle" => ShapeGeometry::Rectangle,
+        "disk" => ShapeGeometry::Disk,
+        "cube" => ShapeGeometry::Cube,
+        "obj" => {
+            let filename = properties.string(reader, "filename")?.ok_or_else(|| {
+                reader.error(
+                    node,
+                    "an obj shape needs <string name=\"filename\" value=\"mesh.obj\"/>",
+                )
+            })?;
+            let directory = reader.file.parent().unwrap_or(reader.file);
+            ShapeGeometry::Obj {
+                filename: directory.join(filename),
+            }
+        }
+        _ => {
+            return Err(reader.error(
+                node,
+                format!(
+                    "unknown shape type \"{type_name}\": expected sphere, rectangle, disk, cube \
+                     or obj"
+                ),
+            ));
+        }
+    };
+    let to_world = properties
+        .transform(reader, "to_world")?
+        .unwrap_or(Mat4::IDENTITY);
+    let flip_normals = properties.boolean(reader, "flip_normals")?.unwrap_or(false);
+
+    let (emitter_nodes, bsdf_nodes): (Vec<Node>, Vec<Node>) = properties
+        .objects
+        .iter()
+        .partition(|object| object.tag_name().name() == "emitter");
+    let bsdf = match nested_bsdfs(reader, &bsdf_nodes, node)?.as_slice() {
+        [] => Bsdf::mitsuba_default(),
+        [bsdf] => bsdf.clone(),
+        [_, ..] => {
+            return Err(reader.error(bsdf_nodes[1], "a shape has at most one bsdf"));
+        }
+    };
+    let emitter = match emitter_nodes.as_slice() {
+        [] => None,
+        [emitter_node] => match read_emitter(reader, *emitter_node)? {
+            Emitter::Area(area) => Some(area),
+            Emitter::Standalone(_) => {
+                return Err(reader.error(
+                    *emitter_node,
+                    "only an area emitter can be inside a shape; put point and constant \
+                     emitters at the top level",
+                ));
+            }
+        },
+        [_, second, ..] => {
+            return Err(reader.error(*second, "a shape has at most one emitter"));
+        }
+    };
+    properties.finish(reader);
+    Ok(ShapeDescription {
+        geometry,
+        to_world,
+        bsdf,
+        emitter,
+        flip_normals,
+    })
+}

@@ -1,0 +1,3 @@
+//! Tests of the scene loader.
+
+mod cornell;
