@@ -1,3 +1,25 @@
 //! Tests of the scene loader.
 
+mod broken_files;
 mod cornell;
+mod never_panics;
+mod transforms;
+mod warnings;
+
+use std::path::Path;
+
+use super::{LoadedScene, SceneError, parse_scene};
+
+/// Wraps `body` in a scene with a minimal sensor. The body starts on **line 2**, so a broken
+/// element on the body's first line is reported on line 2.
+fn scene_with(body: &str) -> String {
+    format!(
+        "<scene version=\"3.0.0\">\n{body}\n<sensor type=\"perspective\"><float name=\"fov\" \
+         value=\"40\"/></sensor>\n</scene>"
+    )
+}
+
+/// Parses `text` as if it came from `test.xml`.
+fn parse(text: &str) -> Result<LoadedScene, SceneError> {
+    parse_scene(text, Path::new("test.xml"), &[])
+}

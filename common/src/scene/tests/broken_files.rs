@@ -1,0 +1,186 @@
+//! A corpus of broken scene files: each must fail with a message that names the problem, on
+//! the line where the problem is.
+
+use std::path::Path;
+
+use super::super::load_scene_file;
+use super::{parse, scene_with};
+
+/// What is parsed: a body wrapped by [`scene_with`] (starting on line 2), or a whole file.
+enum Input {
+    Body(&'static str),
+    Whole(&'static str),
+}
+
+use Input::{Body, Whole};
+
+/// One broken file: its name, its text, a fragment the message must contain, and the line.
+struct Broken {
+    name: &'static str,
+    input: Input,
+    fragment: &'static str,
+    line: u32,
+}
+
+const CORPUS: &[Broken] = &[
+    Broken {
+        name: "malformed XML",
+        input: Whole("<scene version=\"3.0.0\">\n<shape type=\"cube\"></shap>\n</scene>"),
+        fragment: "malformed XML",
+        line: 2,
+    },
+    Broken {
+        name: "unknown shape type",
+        input: Body("<shape type=\"torus\"/>"),
+        fragment: "unknown shape type \"torus\"",
+        line: 2,
+    },
+    Broken {
+        name: "unknown element",
+        input: Body("<texture type=\"bitmap\"/>"),
+        fragment: "unknown element <texture>",
+        line: 2,
+    },
+    Broken {
+        name: "unknown property element",
+        input: Body("<shape type=\"cube\">\n<spectrum name=\"x\" value=\"1\"/></shape>"),
+        fragment: "unknown element <spectrum>",
+        line: 3,
+    },
+    Broken {
+        name: "missing ref",
+        input: Body("<shape type=\"cube\">\n<ref id=\"gold\"/></shape>"),
+        fragment: "<ref id=\"gold\"> names no bsdf",
+        line: 3,
+    },
+    Broken {
+        name: "bad float",
+        input: Body("<shape type=\"sphere\">\n<float name=\"radius\" value=\"1.0x\"/></shape>"),
+        fragment: "expected a finite number, found \"1.0x\"",
+        line: 3,
+    },
+    Broken {
+        name: "wrong property kind",
+        input: Body("<shape type=\"sphere\">\n<string name=\"radius\" value=\"big\"/></shape>"),
+        fragment: "\"radius\" of the sphere shape must be a <float>, found a <string>",
+        line: 3,
+    },
+    Broken {
+        name: "zero radius",
+        input: Body("<shape type=\"sphere\">\n<float name=\"radius\" value=\"0\"/></shape>"),
+        fragment: "radius must be positive",
+        line: 3,
+    },
+    Broken {
+        name: "zero scale",
+        input: Body(
+            "<shape type=\"cube\"><transform name=\"to_world\">\n<scale x=\"0\"/></transform></shape>",
+        ),
+        fragment: "<scale> by zero",
+        line: 3,
+    },
+    Broken {
+        name: "singular matrix",
+        input: Body(
+            "<shape type=\"cube\"><transform name=\"to_world\">\n\
+             <matrix value=\"1 0 0 0 1 0 0 0 0 0 0 0 0 0 0 1\"/></transform></shape>",
+        ),
+        fragment: "<matrix> is not invertible",
+        line: 3,
+    },
+    Broken {
+        name: "lookat origin equals target",
+        input: Body(
+            "<shape type=\"cube\"><transform name=\"to_world\">\n\
+             <lookat origin=\"1, 1, 1\" target=\"1, 1, 1\" up=\"0, 1, 0\"/></transform></shape>",
+        ),
+        fragment: "origin equal to target",
+        line: 3,
+    },
+    Broken {
+        name: "lookat up along the view",
+        input: Body(
+            "<shape type=\"cube\"><transform name=\"to_world\">\n\
+             <lookat origin=\"0, 0, 0\" target=\"0, 2, 0\" up=\"0, 1, 0\"/></transform></shape>",
+        ),
+        fragment: "parallel to the view direction",
+        line: 3,
+    },
+    Broken {
+        name: "unknown $name",
+        input: Body("<shape type=\"sphere\">\n<float name=\"radius\" value=\"$r\"/></shape>"),
+        fragment: "unknown parameter \"$r\"",
+        line: 3,
+    },
+    Broken {
+        name: "obj without filename",
+        input: Body("<shape type=\"obj\"/>"),
+        fragment: "needs <string name=\"filename\"",
+        line: 2,
+    },
+    Broken {
+        name: "zero film width",
+        input: Whole(
+            "<scene version=\"3.0.0\"><sensor type=\"perspective\"><float name=\"fov\" value=\"40\"/>\n\
+             <film type=\"hdrfilm\"><integer name=\"width\" value=\"0\"/></film></sensor></scene>",
+        ),
+        fragment: "width must be a positive integer",
+        line: 2,
+    },
+    Broken {
+        name: "area emitter at top level",
+        input: Body("<emitter type=\"area\"/>"),
+        fragment: "must be inside the <shape>",
+        line: 2,
+    },
+    Broken {
+        name: "no sensor",
+        input: Whole("<scene version=\"3.0.0\"></scene>"),
+        fragment: "no <sensor>",
+        line: 0,
+    },
+];
+
+#[test]
+fn every_broken_file_fails_with_its_message_and_line() {
+    for broken in CORPUS {
+        let text = match broken.input {
+            Body(body) => scene_with(body),
+            Whole(text) => text.to_string(),
+        };
+        let name = broken.name;
+        let error = match parse(&text) {
+            Ok(_) => panic!("{name}: loaded, but should fail"),
+            Err(error) => error,
+        };
+        assert!(
+            error.message.contains(broken.fragment),
+            "{name}: message {:?} lacks {:?}",
+            error.message,
+            broken.fragment
+        );
+        assert_eq!(error.line, broken.line, "{name}: {error}");
+        assert_eq!(error.file, Path::new("test.xml"), "{name}");
+    }
+}
+
+#[test]
+fn errors_display_file_line_and_column() {
+    let error = parse(&scene_with("<shape type=\"torus\"/>")).expect_err("unknown shape");
+    assert!(
+        error
+            .to_string()
+            .starts_with("test.xml:2:1: unknown shape type"),
+        "{error}"
+    );
+}
+
+#[test]
+fn a_missing_file_is_an_error_naming_it() {
+    let directory = tempfile::tempdir().expect("temporary directory");
+    let path = directory.path().join("no-such-scene.xml");
+    let error = load_scene_file(&path, &[]).expect_err("the file does not exist");
+    assert_eq!(error.file, path);
+    assert!(error.to_string().contains("no-such-scene.xml"), "{error}");
+    assert!(error.message.contains("cannot read"), "{error}");
+}
