@@ -19,6 +19,12 @@ pub const MAX_IMAGE_BYTES: u64 = 4 << 30;
 /// Options of every chapter's `render` subcommand.
 #[derive(clap::Args, Clone, Debug)]
 pub struct RenderArgs {
+    /// A scene in Mitsuba 3's XML format (the subset described in the book).
+    #[arg(long, value_name = "FILE.xml")]
+    pub scene: Option<PathBuf>,
+    /// Sets a `<default>` parameter of the scene file, e.g. -D spp=16 (repeatable).
+    #[arg(short = 'D', value_name = "NAME=VALUE", requires = "scene", value_parser = parse_define)]
+    pub define: Vec<(String, String)>,
     /// Samples per pixel [default: the chapter's choice].
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..=1_000_000_000), conflicts_with = "time")]
     pub spp: Option<u64>,
@@ -78,6 +84,15 @@ pub enum CliError {
     /// Any other check that failed, with its explanation.
     #[error("{0}")]
     Invalid(String),
+}
+
+fn parse_define(text: &str) -> Result<(String, String), String> {
+    match text.split_once('=') {
+        Some((name, value)) if !name.trim().is_empty() => {
+            Ok((name.trim().to_string(), value.to_string()))
+        }
+        _ => Err(format!("`{text}` is not NAME=VALUE")),
+    }
 }
 
 fn parse_seconds(text: &str) -> Result<f64, String> {
@@ -241,6 +256,20 @@ mod tests {
         assert!(err.contains("60000x60000") && err.contains("MiB"), "{err}");
         assert!(check_image_size(1920, 1080).is_ok());
         assert!(check_image_size(0, 5).is_err());
+    }
+
+    #[test]
+    fn defines_are_name_value_pairs() {
+        assert_eq!(
+            parse_define("spp=16"),
+            Ok(("spp".to_string(), "16".to_string()))
+        );
+        assert_eq!(
+            parse_define("name=a=b"),
+            Ok(("name".to_string(), "a=b".to_string()))
+        );
+        assert!(parse_define("spp").is_err());
+        assert!(parse_define("=3").is_err());
     }
 
     #[test]

@@ -8,7 +8,8 @@
 //!
 //! - [`optics`]: reflection, Snell's law, the Fresnel equations.
 //! - [`camera`]: the pinhole camera.
-//! - [`material`], [`light`], [`scene`], [`scenes`]: what the world is made of.
+//! - [`material`], [`light`], [`scene`], [`scenes`]: what the world is made of;
+//!   [`scene_file`]: the same from a Mitsuba 3 XML file.
 //! - [`tracer`]: the recursive tracer.
 //! - [`pixel`]: where in its pixel a ray goes (the centre, or a regular grid).
 //! - [`figures`]: the chapter's figures for the book.
@@ -22,6 +23,7 @@ pub mod material;
 pub mod optics;
 pub mod pixel;
 pub mod scene;
+pub mod scene_file;
 pub mod scenes;
 pub mod tracer;
 

@@ -1,9 +1,11 @@
 //! `ch01-whitted`: render the chapter's scenes, or write its figures.
 
+use ch01_whitted::scene_file::convert;
 use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch01_whitted::{PixelPattern, figures, render};
 use clap::{Parser, Subcommand};
 use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::scene::load_scene_file;
 use std::process::ExitCode;
 
 /// Chapter 01 of the workbook: Whitted ray tracing.
@@ -24,13 +26,14 @@ enum Command {
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
-    /// The built-in scene to render.
-    #[arg(long, value_enum, default_value_t = Builtin::Spheres)]
+    /// The built-in scene to render (when no --scene file is given).
+    #[arg(long, value_enum, default_value_t = Builtin::Spheres, conflicts_with = "scene")]
     builtin: Builtin,
     /// Longest path in segments, counting the camera ray (Mitsuba's max_depth): 1 shows only
-    /// the background, 2 adds direct light, each step more one more mirror or glass bounce.
-    #[arg(long, default_value_t = DEFAULT_MAX_DEPTH, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    max_depth: u32,
+    /// the background, 2 adds direct light, each step more one more mirror or glass bounce
+    /// [default: the scene file's, or 12].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    max_depth: Option<u32>,
     /// Where the samples of a pixel go. Whitted's tracer is deterministic: several samples at
     /// the centre give the same image as one; `grid` supersamples (with a square --spp).
     #[arg(long, value_enum, default_value_t = PixelPattern::Centre)]
@@ -52,10 +55,34 @@ fn main() -> ExitCode {
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let scene = command.builtin.build(command.max_depth);
+    if command.args.scene.is_none() && !command.args.define.is_empty() {
+        anyhow::bail!("-D sets a parameter of a scene file; it needs --scene FILE.xml");
+    }
+    let (mut scene, default_spp, scene_name) = match &command.args.scene {
+        Some(path) => {
+            let loaded = load_scene_file(path, &command.args.define)?;
+            for warning in &loaded.warnings {
+                eprintln!("{warning}");
+            }
+            let converted =
+                convert(&loaded.scene).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+            for note in &converted.notes {
+                eprintln!("note: {note}");
+            }
+            (converted.scene, converted.spp, path.display().to_string())
+        }
+        None => (
+            command.builtin.build(DEFAULT_MAX_DEPTH),
+            1,
+            command.builtin.name().to_string(),
+        ),
+    };
+    if let Some(max_depth) = command.max_depth {
+        scene.max_depth = max_depth;
+    }
     let settings = command
         .args
-        .settings((scene.camera.width, scene.camera.height), 1)?;
+        .settings((scene.camera.width, scene.camera.height), default_spp)?;
     if command.pixel == PixelPattern::Grid && command.args.time.is_some() {
         anyhow::bail!(
             "--pixel grid needs a fixed --spp (a square such as 4, 16 or 64), not --time"
@@ -68,8 +95,8 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         );
     };
     let extra = serde_json::json!({
-        "scene": command.builtin.name(),
-        "max_depth": command.max_depth,
+        "scene": scene_name,
+        "max_depth": scene.max_depth,
         "pixel": format!("{:?}", command.pixel).to_lowercase(),
         "seed": command.args.seed,
     });

@@ -31,6 +31,7 @@ mod materials;
 mod properties;
 mod reader;
 mod shapes;
+mod to_geometry;
 mod transform;
 mod values;
 
@@ -46,6 +47,7 @@ pub use description::{
     ShapeGeometry,
 };
 pub use error::{SceneError, SceneWarning, TextPosition};
+pub use to_geometry::world_shapes;
 
 /// A scene read from a file, with what the loader ignored.
 #[derive(Clone, Debug, PartialEq)]

@@ -5,7 +5,7 @@
 //! element must be invertible (a zero scale or a camera looking at itself is a mistake in the
 //! file, not a shape worth rendering), so each is checked where it is written.
 
-use glam::{Mat4, Vec3};
+use glam::{Mat4, Vec3, Vec4};
 use roxmltree::Node;
 
 use super::error::SceneError;
@@ -88,7 +88,7 @@ fn rotate(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
     if unit_axis == Vec3::ZERO {
         return Err(reader.error(node, "<rotate> needs a non-zero axis (x, y, z or \"axis\")"));
     }
-    Ok(Mat4::from_axis_angle(unit_axis, angle.to_radians()))
+    Ok(rotation(unit_axis, angle))
 }
 
 /// A scale: `value` (one number for all axes, or three) or `x`, `y`, `z` (default 1).
@@ -143,4 +143,69 @@ fn matrix_element(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
         return Err(reader.error(node, "<matrix> is not invertible"));
     }
     Ok(matrix)
+}
+
+/// The rotation by `degrees` about the unit `axis` (Rodrigues' formula).
+///
+/// Quarter turns are exact: `sin` and `cos` of 90 degrees computed in floating point are not
+/// (cos(π/2) comes out as -4.4e-8), which would tilt a wall of a box by that much and open
+/// hairline gaps, or overlaps, along the edges where walls meet.
+fn rotation(axis: Vec3, degrees: f32) -> Mat4 {
+    let quarter_turns = degrees / 90.0;
+    let (sin, cos) = if quarter_turns == quarter_turns.round() {
+        match (quarter_turns.round() as i64).rem_euclid(4) {
+            0 => (0.0, 1.0),
+            1 => (1.0, 0.0),
+            2 => (0.0, -1.0),
+            _ => (-1.0, 0.0),
+        }
+    } else {
+        degrees.to_radians().sin_cos()
+    };
+    let k = axis;
+    let outer = |a: f32, b: f32| a * b * (1.0 - cos);
+    Mat4::from_cols(
+        Vec4::new(
+            cos + outer(k.x, k.x),
+            outer(k.y, k.x) + sin * k.z,
+            outer(k.z, k.x) - sin * k.y,
+            0.0,
+        ),
+        Vec4::new(
+            outer(k.x, k.y) - sin * k.z,
+            cos + outer(k.y, k.y),
+            outer(k.z, k.y) + sin * k.x,
+            0.0,
+        ),
+        Vec4::new(
+            outer(k.x, k.z) + sin * k.y,
+            outer(k.y, k.z) - sin * k.x,
+            cos + outer(k.z, k.z),
+            0.0,
+        ),
+        Vec4::W,
+    )
+}
+
+#[cfg(test)]
+mod rotation_tests {
+    use super::rotation;
+    use glam::{Mat4, Vec3};
+
+    #[test]
+    fn rotations_agree_with_glam_and_quarter_turns_are_exact() {
+        let axis = Vec3::new(1.0, 2.0, -0.5).normalize();
+        for degrees in [13.0f32, -70.0, 200.0] {
+            let ours = rotation(axis, degrees);
+            let glam = Mat4::from_axis_angle(axis, degrees.to_radians());
+            assert!(ours.abs_diff_eq(glam, 1e-6), "{degrees}: {ours} vs {glam}");
+        }
+        assert_eq!(rotation(Vec3::X, -90.0).transform_vector3(Vec3::Z), Vec3::Y);
+        assert_eq!(rotation(Vec3::Y, 90.0).transform_vector3(Vec3::Z), Vec3::X);
+        assert_eq!(
+            rotation(Vec3::Z, 180.0).transform_vector3(Vec3::X),
+            -Vec3::X
+        );
+        assert_eq!(rotation(Vec3::Z, 450.0).transform_vector3(Vec3::X), Vec3::Y);
+    }
 }

@@ -1,0 +1,216 @@
+//! Rendering Mitsuba 3 XML scene files, and refusing what chapter 01 cannot render.
+
+use ch01_whitted::scene_file::convert;
+use ch01_whitted::scenes::Builtin;
+use ch01_whitted::{PixelPattern, render};
+use common::render::RenderSettings;
+use common::scene::{load_scene_file, parse_scene};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ch01-whitted"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+#[test]
+fn the_cornell_file_renders_like_the_builtin_cornell_box() {
+    let loaded = load_scene_file(&scene_path("cornell-point.xml"), &[]).unwrap();
+    assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+    let converted = convert(&loaded.scene).unwrap();
+    let settings = RenderSettings::new(64, 64, 1);
+    let from_file = render(&converted.scene, &settings, PixelPattern::Centre, 0)
+        .unwrap()
+        .image;
+    let builtin = render(
+        &Builtin::Cornell.build(12),
+        &settings,
+        PixelPattern::Centre,
+        0,
+    )
+    .unwrap()
+    .image;
+    // The box is symmetric and the camera on its axis, so the pixel centres on the image's
+    // diagonals look exactly into the room's creases, where two walls tie for the nearest hit
+    // and the last bits of the camera frame decide which wall (and whether the shadow ray
+    // starts a rounding error outside the room). About 31 such pixels differ; everything else
+    // must agree.
+    let differing = from_file
+        .pixels
+        .iter()
+        .zip(&builtin.pixels)
+        .filter(|(a, b)| (**a - **b).abs().max_element() > 1e-3)
+        .count();
+    assert!(differing <= 40, "{differing} of 4096 pixels differ");
+    let mean = |image: &common::image::Image| {
+        image
+            .pixels
+            .iter()
+            .map(|p| f64::from(p.element_sum()))
+            .sum::<f64>()
+    };
+    let relative = (mean(&from_file) - mean(&builtin)).abs() / mean(&builtin);
+    assert!(relative < 2e-3, "the images' means differ by {relative}");
+}
+
+#[test]
+fn scene_defaults_and_overrides_reach_the_render() {
+    let dir = tempfile::tempdir().unwrap();
+    let stats = dir.path().join("stats.json");
+    let image = dir.path().join("img.pfm");
+    let scene = scene_path("matte-spheres.xml");
+    let out = run(&[
+        "render",
+        "--scene",
+        scene.to_str().unwrap(),
+        "-D",
+        "spp=4",
+        "-D",
+        "width=20",
+        "--out",
+        image.to_str().unwrap(),
+        "--stats",
+        stats.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    assert_eq!(json["spp"], 4);
+    assert_eq!(json["width"], 20);
+    assert_eq!(json["height"], 96);
+    assert_eq!(json["max_depth"], 2);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("leaves out indirect light"),
+        "the note about missing light: {stderr}"
+    );
+}
+
+/// A minimal scene around one shape, bsdf, emitter or sensor fragment.
+fn scene_with(sensor_extra: &str, body: &str) -> String {
+    format!(
+        r#"<scene version="3.0.0">
+    <sensor type="{sensor_type}">
+        <float name="fov" value="45"/>{sensor_inner}
+        <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+        <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>
+    </sensor>
+    {body}
+</scene>"#,
+        sensor_type = if sensor_extra.is_empty() {
+            "perspective"
+        } else {
+            "thinlens"
+        },
+        sensor_inner = sensor_extra,
+    )
+}
+
+#[test]
+fn features_of_later_chapters_are_refused_with_their_chapter() {
+    let cases = [
+        (
+            scene_with(
+                "",
+                r#"<shape type="sphere"><emitter type="area"><rgb name="radiance" value="1"/></emitter></shape>"#,
+            ),
+            "chapter 07",
+        ),
+        (
+            scene_with(
+                r#"<float name="aperture_radius" value="0.1"/><float name="focus_distance" value="5"/>"#,
+                r#"<shape type="sphere"/>"#,
+            ),
+            "chapter 04",
+        ),
+        (
+            scene_with("", r#"<shape type="sphere"><bsdf type="phong"/></shape>"#),
+            "chapter 06",
+        ),
+        (
+            scene_with(
+                "",
+                r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Au"/></bsdf></shape>"#,
+            ),
+            "perfect mirror",
+        ),
+        (
+            scene_with(
+                "",
+                r#"<shape type="obj"><string name="filename" value="bunny.obj"/></shape>"#,
+            ),
+            "OBJ",
+        ),
+    ];
+    for (text, expected) in cases {
+        let loaded =
+            parse_scene(&text, Path::new("test.xml"), &[]).expect("the file itself is valid");
+        let error = convert(&loaded.scene)
+            .err()
+            .unwrap_or_else(|| panic!("accepted: {text}"));
+        assert!(
+            error.contains(expected),
+            "expected `{expected}` in: {error}"
+        );
+    }
+    // A lens of aperture 0 is a pinhole, and renders.
+    let pinhole = scene_with(
+        r#"<float name="aperture_radius" value="0"/><float name="focus_distance" value="5"/>"#,
+        r#"<shape type="sphere"/>"#,
+    );
+    assert!(
+        convert(
+            &parse_scene(&pinhole, Path::new("test.xml"), &[])
+                .unwrap()
+                .scene
+        )
+        .is_ok()
+    );
+}
+
+#[test]
+fn broken_scene_files_are_refused_by_the_binary() {
+    let dir = tempfile::tempdir().unwrap();
+    let image = dir.path().join("img.png");
+    let broken = dir.path().join("broken.xml");
+    std::fs::write(&broken, "<scene version=\"3.0.0\">\n  <shape type=\"sphere\">\n    <float name=\"radius\" value=\"1.0x\"/>\n  </shape>\n</scene>\n").unwrap();
+    let area = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../common/tests/scenes/cornell.xml");
+    let missing = dir.path().join("missing.xml");
+    for (scene, expected) in [
+        (broken.to_str().unwrap(), "broken.xml:3:"),
+        (area.to_str().unwrap(), "chapter 07"),
+        (missing.to_str().unwrap(), "missing.xml"),
+    ] {
+        let out = run(&["render", "--scene", scene, "--out", image.to_str().unwrap()]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{scene} rendered");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+        assert!(
+            stderr.contains(expected),
+            "expected `{expected}` in: {stderr}"
+        );
+    }
+    let out = run(&[
+        "render",
+        "--builtin",
+        "cornell",
+        "-D",
+        "spp=3",
+        "--out",
+        image.to_str().unwrap(),
+    ]);
+    assert!(!out.status.success(), "-D without --scene was accepted");
+    assert!(!image.exists());
+}

@@ -1,0 +1,199 @@
+//! Turning a shape description into the renderer's shapes, in world space.
+//!
+//! Every chapter needs this step and none of them teaches it, so it lives here. Mitsuba 3
+//! defines each shape in object space (the rectangle is `[-1, 1]^2` at z = 0 with normal +z, the
+//! disc the unit disc, the cube `[-1, 1]^3`) and maps it with `to_world`; normals transform with
+//! the inverse transpose, which is what keeps them perpendicular under non-uniform scaling.
+
+use super::{ShapeDescription, ShapeGeometry};
+use crate::geometry::{Disc, Quad, Shape, Sphere};
+use glam::{Mat4, Vec3};
+
+/// The world-space shapes of one description: one for a sphere, rectangle or disc, six
+/// parallelograms for a cube. An OBJ mesh, or a sphere or disc under a transform that does not
+/// keep it round, is refused with a message saying why.
+pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
+    let m = shape.to_world;
+    match &shape.geometry {
+        ShapeGeometry::Sphere { center, radius } => {
+            let scale = uniform_scale(m).ok_or("a sphere under a non-uniform scale is an ellipsoid, which the renderer has no shape for")?;
+            Ok(vec![Shape::Sphere(Sphere::new(
+                m.transform_point3(*center),
+                radius * scale,
+            ))])
+        }
+        ShapeGeometry::Rectangle => Ok(vec![square_face(m, Mat4::IDENTITY, shape.flip_normals)]),
+        ShapeGeometry::Disk => {
+            let scale = uniform_scale(m).ok_or("a disk under a non-uniform scale is an ellipse, which the renderer has no shape for")?;
+            let mut normal = world_normal(m, Vec3::Z);
+            if shape.flip_normals {
+                normal = -normal;
+            }
+            Ok(vec![Shape::Disc(Disc::new(
+                m.transform_point3(Vec3::ZERO),
+                normal,
+                scale,
+            ))])
+        }
+        ShapeGeometry::Cube => {
+            // The six faces of [-1, 1]^3, each the unit rectangle moved onto the face with its
+            // normal pointing out of the cube.
+            let faces = [
+                Mat4::from_translation(Vec3::Z),
+                Mat4::from_translation(-Vec3::Z) * Mat4::from_rotation_x(std::f32::consts::PI),
+                Mat4::from_translation(Vec3::X)
+                    * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2),
+                Mat4::from_translation(-Vec3::X)
+                    * Mat4::from_rotation_y(-std::f32::consts::FRAC_PI_2),
+                Mat4::from_translation(Vec3::Y)
+                    * Mat4::from_rotation_x(-std::f32::consts::FRAC_PI_2),
+                Mat4::from_translation(-Vec3::Y)
+                    * Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2),
+            ];
+            Ok(faces
+                .iter()
+                .map(|&face| square_face(m, face, shape.flip_normals))
+                .collect())
+        }
+        ShapeGeometry::Obj { filename } => Err(format!(
+            "the OBJ mesh {} cannot be loaded yet: OBJ support is still to come",
+            filename.display()
+        )),
+    }
+}
+
+/// The rectangle `[-1, 1]^2` (normal +z) placed by `to_world * face` as a parallelogram whose
+/// normal `e1 x e2` is the transformed normal (flipped if asked).
+fn square_face(to_world: Mat4, face: Mat4, flip: bool) -> Shape {
+    let m = to_world * face;
+    let corner = m.transform_point3(Vec3::new(-1.0, -1.0, 0.0));
+    let mut e1 = m.transform_point3(Vec3::new(1.0, -1.0, 0.0)) - corner;
+    let mut e2 = m.transform_point3(Vec3::new(-1.0, 1.0, 0.0)) - corner;
+    // A mirroring transform turns e1 x e2 against the true normal; swapping the edges turns it
+    // back. Flipping the normal is the same swap once more.
+    let want = if flip {
+        -world_normal(m, Vec3::Z)
+    } else {
+        world_normal(m, Vec3::Z)
+    };
+    if e1.cross(e2).dot(want) < 0.0 {
+        std::mem::swap(&mut e1, &mut e2);
+    }
+    Shape::Quad(Quad::new(corner, e1, e2))
+}
+
+/// A normal mapped by the inverse transpose of `m`.
+fn world_normal(m: Mat4, n: Vec3) -> Vec3 {
+    m.inverse().transpose().transform_vector3(n).normalize()
+}
+
+/// The common length factor of `m`, if it scales every direction alike (up to 1e-4).
+fn uniform_scale(m: Mat4) -> Option<f32> {
+    let axes = [
+        m.x_axis.truncate(),
+        m.y_axis.truncate(),
+        m.z_axis.truncate(),
+    ];
+    let lengths = axes.map(Vec3::length);
+    let scale = lengths[0];
+    let orthogonal =
+        axes[0].dot(axes[1]).abs() + axes[1].dot(axes[2]).abs() + axes[0].dot(axes[2]).abs();
+    let same = lengths.iter().all(|l| (l - scale).abs() <= 1e-4 * scale);
+    (scale > 0.0 && same && orthogonal <= 1e-4 * scale * scale).then_some(scale)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Ray;
+    use crate::scene::Bsdf;
+
+    fn description(geometry: ShapeGeometry, to_world: Mat4) -> ShapeDescription {
+        ShapeDescription {
+            geometry,
+            to_world,
+            bsdf: Bsdf::mitsuba_default(),
+            emitter: None,
+            flip_normals: false,
+        }
+    }
+
+    fn hit_normal(shapes: &[Shape], ray: Ray) -> Option<Vec3> {
+        shapes
+            .iter()
+            .filter_map(|s| s.intersect(&ray))
+            .min_by(|a, b| a.t.total_cmp(&b.t))
+            .map(|h| h.n)
+    }
+
+    #[test]
+    fn the_cornell_floor_faces_up_at_y_minus_one() {
+        // <rotate x="1" angle="-90"/><translate y="-1"/>
+        let m =
+            Mat4::from_translation(-Vec3::Y) * Mat4::from_rotation_x(-std::f32::consts::FRAC_PI_2);
+        let shapes = world_shapes(&description(ShapeGeometry::Rectangle, m)).unwrap();
+        let n = hit_normal(&shapes, Ray::new(Vec3::new(0.3, 0.0, 0.2), -Vec3::Y)).unwrap();
+        assert!((n - Vec3::Y).length() < 1e-5, "{n}");
+    }
+
+    #[test]
+    fn mirroring_keeps_the_transformed_normal() {
+        let m = Mat4::from_scale(Vec3::new(-1.0, 1.0, 1.0));
+        let shapes = world_shapes(&description(ShapeGeometry::Rectangle, m)).unwrap();
+        let n = hit_normal(&shapes, Ray::new(Vec3::new(0.1, 0.1, 1.0), -Vec3::Z)).unwrap();
+        assert!((n - Vec3::Z).length() < 1e-5, "{n}");
+        let mut flipped = description(ShapeGeometry::Rectangle, m);
+        flipped.flip_normals = true;
+        let n = hit_normal(
+            &world_shapes(&flipped).unwrap(),
+            Ray::new(Vec3::new(0.1, 0.1, 1.0), -Vec3::Z),
+        )
+        .unwrap();
+        assert!((n + Vec3::Z).length() < 1e-5, "{n}");
+    }
+
+    #[test]
+    fn cube_faces_point_outwards() {
+        let shapes = world_shapes(&description(
+            ShapeGeometry::Cube,
+            Mat4::from_scale(Vec3::splat(2.0)),
+        ))
+        .unwrap();
+        assert_eq!(shapes.len(), 6);
+        for axis in [Vec3::X, Vec3::Y, Vec3::Z, -Vec3::X, -Vec3::Y, -Vec3::Z] {
+            let n = hit_normal(&shapes, Ray::new(axis * 5.0 + Vec3::splat(0.01), -axis)).unwrap();
+            assert!((n - axis).length() < 1e-5, "{axis}: {n}");
+        }
+    }
+
+    #[test]
+    fn spheres_and_discs_need_uniform_scales() {
+        let sphere = ShapeGeometry::Sphere {
+            center: Vec3::X,
+            radius: 0.5,
+        };
+        let shapes = world_shapes(&description(
+            sphere.clone(),
+            Mat4::from_scale(Vec3::splat(3.0)),
+        ))
+        .unwrap();
+        match &shapes[0] {
+            Shape::Sphere(s) => {
+                assert!((s.center - Vec3::new(3.0, 0.0, 0.0)).length() < 1e-6);
+                assert!((s.radius - 1.5).abs() < 1e-6);
+            }
+            other => panic!("{other:?}"),
+        }
+        let squash = Mat4::from_scale(Vec3::new(1.0, 2.0, 1.0));
+        assert!(
+            world_shapes(&description(sphere, squash))
+                .unwrap_err()
+                .contains("ellipsoid")
+        );
+        assert!(
+            world_shapes(&description(ShapeGeometry::Disk, squash))
+                .unwrap_err()
+                .contains("ellipse")
+        );
+    }
+}
