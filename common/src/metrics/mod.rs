@@ -13,4 +13,4 @@ mod plots;
 pub use convergence::{ConvergenceRecord, Technique, run_convergence};
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
-pub use plots::{plot_error_vs_spp, plot_error_vs_time};
+pub use plots::{plot_error_vs_spp, plot_error_vs_time, series_by_technique};

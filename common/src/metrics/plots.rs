@@ -43,8 +43,9 @@ pub fn plot_error_vs_spp(
 }
 
 /// One series per technique, in order of first appearance, its points `(x(record), rmse)`
-/// sorted by x so the line runs left to right.
-fn series_by_technique(
+/// sorted by x so the line runs left to right. Chapters use it to add series of their own
+/// (a reference slope, say) to the same plot.
+pub fn series_by_technique(
     records: &[ConvergenceRecord],
     x: impl Fn(&ConvergenceRecord) -> f64,
 ) -> Vec<Series> {

@@ -2,7 +2,9 @@
 
 use std::path::Path;
 
-use common::metrics::{ConvergenceRecord, plot_error_vs_time, write_convergence_csv};
+use common::metrics::{
+    ConvergenceRecord, plot_error_vs_time, series_by_technique, write_convergence_csv,
+};
 use common::output::OutputError;
 use common::output::figures::{Axes, Series, SeriesStyle, line_plot};
 
@@ -18,7 +20,7 @@ pub fn plot_error_vs_n_with_slope(
     title: &str,
     records: &[ConvergenceRecord],
 ) -> Result<(), OutputError> {
-    let mut series = series_by_technique(records);
+    let mut series = series_by_technique(records, |r| r.spp as f64);
     series.extend(inverse_sqrt_reference(records));
     let axes = Axes::log_log("samples n", "RMSE");
     line_plot(path, title, &axes, &series)
@@ -59,26 +61,6 @@ pub fn save_convergence(
         title,
         records,
     )
-}
-
-/// One series of `(n, RMSE)` per technique, in order of first appearance, sorted by `n`.
-fn series_by_technique(records: &[ConvergenceRecord]) -> Vec<Series> {
-    let mut series: Vec<Series> = Vec::new();
-    for record in records {
-        let point = (record.spp as f64, record.rmse);
-        match series.iter_mut().find(|s| s.label == record.technique) {
-            Some(existing) => existing.points.push(point),
-            None => series.push(Series::new(
-                record.technique.clone(),
-                vec![point],
-                SeriesStyle::LineAndPoints,
-            )),
-        }
-    }
-    for s in &mut series {
-        s.points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    }
-    series
 }
 
 #[cfg(test)]
@@ -122,7 +104,7 @@ mod tests {
             record("b", 4, 3.0),
             record("a", 4, 2.0),
         ];
-        let series = series_by_technique(&records);
+        let series = series_by_technique(&records, |r| r.spp as f64);
         assert_eq!(series.len(), 2);
         assert_eq!(series[0].label, "a");
         assert_eq!(series[0].points, [(4.0, 2.0), (16.0, 1.0)]);
