@@ -5,6 +5,7 @@ use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch01_whitted::{PixelPattern, figures, render};
 use clap::{Parser, Subcommand};
 use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::render::Budget;
 use common::scene::load_scene_file;
 use std::process::ExitCode;
 
@@ -36,8 +37,9 @@ struct RenderCommand {
     max_depth: Option<u32>,
     /// Where the samples of a pixel go. Whitted's tracer is deterministic: several samples at
     /// the centre give the same image as one; `grid` supersamples (with a square --spp).
-    #[arg(long, value_enum, default_value_t = PixelPattern::Centre)]
-    pixel: PixelPattern,
+    /// [default: centre; for a scene file asking for a square number of samples, grid]
+    #[arg(long, value_enum)]
+    pixel: Option<PixelPattern>,
     #[command(flatten)]
     args: RenderArgs,
 }
@@ -83,13 +85,24 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let settings = command
         .args
         .settings((scene.camera.width, scene.camera.height), default_spp)?;
-    if command.pixel == PixelPattern::Grid && command.args.time.is_some() {
+    let pixel = command.pixel.unwrap_or_else(|| {
+        // A scene file that asks for several samples per pixel expects them spread over the
+        // pixel, as Mitsuba spreads them; Whitted's own choice is the centre.
+        let square = |n: u64| (n as f64).sqrt().round().powi(2) as u64 == n;
+        match settings.budget {
+            Budget::Samples(spp) if command.args.scene.is_some() && spp > 1 && square(spp) => {
+                PixelPattern::Grid
+            }
+            _ => PixelPattern::Centre,
+        }
+    });
+    if pixel == PixelPattern::Grid && command.args.time.is_some() {
         anyhow::bail!(
             "--pixel grid needs a fixed --spp (a square such as 4, 16 or 64), not --time"
         );
     }
     command.args.check_outputs()?;
-    let Some(rendered) = render(&scene, &settings, command.pixel, command.args.seed) else {
+    let Some(rendered) = render(&scene, &settings, pixel, command.args.seed) else {
         anyhow::bail!(
             "--pixel grid places the samples of a pixel on a k x k grid, so --spp must be a square (1, 4, 9, 16, ...)"
         );
@@ -97,7 +110,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let extra = serde_json::json!({
         "scene": scene_name,
         "max_depth": scene.max_depth,
-        "pixel": format!("{:?}", command.pixel).to_lowercase(),
+        "pixel": format!("{pixel:?}").to_lowercase(),
         "seed": command.args.seed,
     });
     command.args.write_outputs(&rendered, extra)?;
