@@ -91,7 +91,10 @@ fn scene_defaults_and_overrides_reach_the_render() {
     assert_eq!(json["width"], 20);
     assert_eq!(json["height"], 96);
     assert_eq!(json["max_depth"], 2);
-    assert_eq!(json["pixel"], "grid", "a scene file's 4 samples spread over the pixel");
+    assert_eq!(
+        json["pixel"], "grid",
+        "a scene file's 4 samples spread over the pixel"
+    );
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
         stderr.contains("leaves out indirect light"),
