@@ -155,7 +155,7 @@ fn features_of_later_chapters_are_refused_with_their_chapter() {
                 "",
                 r#"<shape type="obj"><string name="filename" value="bunny.obj"/></shape>"#,
             ),
-            "OBJ",
+            "cannot read the mesh bunny.obj",
         ),
     ];
     for (text, expected) in cases {

@@ -28,6 +28,7 @@ mod error;
 mod integrator;
 mod lights;
 mod materials;
+mod obj;
 mod properties;
 mod reader;
 mod shapes;
@@ -47,6 +48,7 @@ pub use description::{
     ShapeGeometry,
 };
 pub use error::{SceneError, SceneWarning, TextPosition};
+pub use obj::{load_obj, parse_obj};
 pub use to_geometry::world_shapes;
 
 /// A scene read from a file, with what the loader ignored.

@@ -6,12 +6,13 @@
 //! the inverse transpose, which is what keeps them perpendicular under non-uniform scaling.
 
 use super::{ShapeDescription, ShapeGeometry};
-use crate::geometry::{Disc, Quad, Shape, Sphere};
+use crate::geometry::{Disc, Quad, Shape, Sphere, Triangle};
 use glam::{Mat4, Vec3};
 
 /// The world-space shapes of one description: one for a sphere, rectangle or disc, six
-/// parallelograms for a cube. An OBJ mesh, or a sphere or disc under a transform that does not
-/// keep it round, is refused with a message saying why.
+/// parallelograms for a cube, one triangle per face of an OBJ mesh. A sphere or disc under a
+/// transform that does not keep it round, or a mesh that cannot be read, is refused with a
+/// message saying why.
 pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
     let m = shape.to_world;
     match &shape.geometry {
@@ -55,10 +56,35 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
                 .map(|&face| square_face(m, face, shape.flip_normals))
                 .collect())
         }
-        ShapeGeometry::Obj { filename } => Err(format!(
-            "the OBJ mesh {} cannot be loaded yet: OBJ support is still to come",
-            filename.display()
-        )),
+        ShapeGeometry::Obj { filename } => {
+            let mesh = super::load_obj(filename)?;
+            let normal_matrix = m.inverse().transpose();
+            let flip_winding = (m.determinant() < 0.0) != shape.flip_normals;
+            Ok(mesh
+                .triangles()
+                .map(|triangle| {
+                    let mut p = triangle.p.map(|p| m.transform_point3(p));
+                    let mut normals = triangle.normals.map(|normals| {
+                        normals.map(|n| {
+                            let n = normal_matrix.transform_vector3(n).normalize_or_zero();
+                            if shape.flip_normals { -n } else { n }
+                        })
+                    });
+                    // The geometric normal follows the winding: keep it on the side the
+                    // transformed (and possibly flipped) surface faces.
+                    if flip_winding {
+                        p.swap(1, 2);
+                        if let Some(n) = normals.as_mut() {
+                            n.swap(1, 2);
+                        }
+                    }
+                    match normals {
+                        Some(n) => Shape::Triangle(Triangle::with_normals(p, n)),
+                        None => Shape::Triangle(Triangle::new(p[0], p[1], p[2])),
+                    }
+                })
+                .collect())
+        }
     }
 }
 
@@ -164,6 +190,39 @@ mod tests {
             let n = hit_normal(&shapes, Ray::new(axis * 5.0 + Vec3::splat(0.01), -axis)).unwrap();
             assert!((n - axis).length() < 1e-5, "{axis}: {n}");
         }
+    }
+
+    #[test]
+    fn obj_meshes_are_placed_and_keep_their_facing() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("square.obj");
+        std::fs::write(&path, "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n").unwrap();
+        let obj = ShapeGeometry::Obj { filename: path };
+        // Mirrored in x and lifted by 2: still two triangles facing +z, now at z = 2.
+        let m = Mat4::from_translation(2.0 * Vec3::Z) * Mat4::from_scale(Vec3::new(-3.0, 3.0, 3.0));
+        let shapes = world_shapes(&description(obj.clone(), m)).unwrap();
+        assert_eq!(shapes.len(), 2);
+        let ray = Ray::new(Vec3::new(0.5, 0.25, 5.0), -Vec3::Z);
+        let hit = shapes
+            .iter()
+            .find_map(|s| s.intersect(&ray))
+            .expect("the square is hit");
+        assert!(
+            (hit.p.z - 2.0).abs() < 1e-6 && (hit.n - Vec3::Z).length() < 1e-5,
+            "{hit:?}"
+        );
+        let mut flipped = description(obj, m);
+        flipped.flip_normals = true;
+        let n = hit_normal(&world_shapes(&flipped).unwrap(), ray).unwrap();
+        assert!((n + Vec3::Z).length() < 1e-5, "{n}");
+        let missing = ShapeGeometry::Obj {
+            filename: "missing.obj".into(),
+        };
+        assert!(
+            world_shapes(&description(missing, Mat4::IDENTITY))
+                .unwrap_err()
+                .contains("missing.obj")
+        );
     }
 
     #[test]
