@@ -2,14 +2,16 @@
 //!
 //! A chapter claims "technique B beats technique A". This module is how it backs the claim:
 //! render both against a converged reference at several budgets ([`run_convergence`]), measure
-//! how far each render is from the reference ([`rmse`], [`relmse`]), save the table
+//! how far each render is from the reference ([`rmse`], [`relmse`]), tell noise from bias ([`bias_blocks`]), save the table
 //! ([`write_convergence_csv`]) and plot error against time ([`plot_error_vs_time`]).
 
+mod bias_blocks;
 mod convergence;
 mod csv;
 mod error_metrics;
 mod plots;
 
+pub use bias_blocks::{BIAS_BLOCK_SIZE, BIAS_THRESHOLD, bias_blocks};
 pub use convergence::{ConvergenceRecord, Technique, run_convergence};
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
