@@ -31,6 +31,17 @@ pub fn trace(scene: &Scene, ray: &Ray, depth: u32, counters: &mut SampleCounters
         Material::Diffuse { albedo, two_sided } => {
             direct_light(scene, ray, &hit, albedo, two_sided, counters)
         }
+        Material::CheckeredDiffuse {
+            checkerboard,
+            two_sided,
+        } => direct_light(
+            scene,
+            ray,
+            &hit,
+            checkerboard.eval(hit.uv),
+            two_sided,
+            counters,
+        ),
         Material::Mirror { reflectance } => {
             if !hit.front_face(ray.dir) {
                 return Vec3::ZERO; // mirrors reflect on their front side only, as in Mitsuba

@@ -1,0 +1,47 @@
+//! # Chapter 03: Anti-aliasing
+//!
+//! A pixel is a small square, not a point, and its value is an integral over that square.
+//! Chapter 01 evaluated the image at each pixel's centre: every edge became a staircase and
+//! every fine pattern a false, coarse one (aliasing). This chapter estimates the integral with
+//! several samples per pixel placed at random, stratified, or along a low-discrepancy
+//! sequence, and combines nearby samples with a reconstruction filter.
+//!
+//! - [`pixel_samplers`]: where in its pixel each sample looks.
+//! - [`filters`]: how samples are weighted into pixels, `Σ f L / Σ f`.
+//! - [`scenes`], [`scene_file`]: scenes that alias, built in or read from Mitsuba 3 XML.
+//! - [`figures`]: the chapter's figures for the book.
+//!
+//! The tracer is chapter 01's, unchanged: anti-aliasing only changes which camera rays are
+//! shot and how their radiance is averaged.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod figures;
+pub mod filters;
+pub mod pixel_samplers;
+pub mod scene_file;
+pub mod scenes;
+
+pub use filters::{FilterKind, ReconstructionFilter};
+pub use pixel_samplers::{PixelSampler, PixelSamplerKind};
+
+use ch01_whitted::scene::Scene;
+use common::film::Filter;
+use common::render::{self, RenderOutput, RenderSettings};
+use common::sampler::Sampler;
+
+// ANCHOR: render_with
+/// Renders a chapter 01 `scene` with Whitted's tracer: pixel positions from `sampler`, each
+/// sample one camera ray, reconstructed with `filter`.
+pub fn render_with<S: Sampler>(
+    scene: &Scene,
+    settings: &RenderSettings,
+    sampler: &S,
+    filter: &dyn Filter,
+) -> RenderOutput {
+    let camera = scene.camera.with_size(settings.width, settings.height);
+    render::render(settings, sampler, filter, |p_film, _sampler, counters| {
+        ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film), 1, counters)
+    })
+}
+// ANCHOR_END: render_with
