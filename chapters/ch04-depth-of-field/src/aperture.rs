@@ -1,0 +1,334 @@
+//! The shape of the aperture, and how a uniform point of it is drawn.
+//!
+//! A real lens stops light down with a diaphragm of a few curved blades. Wide open the hole is
+//! a disc; stopped down, the blades leave a regular polygon. Every out-of-focus point of light
+//! is spread over the image of that hole, which is why the blurred highlights of a photograph
+//! (its *bokeh*) are discs or pentagons or hexagons: each is a picture of the aperture.
+//!
+//! Shapes here are of unit size: the unit disc, or the regular `n`-gon inscribed in it. The
+//! [`crate::lens::Lens`] scales them by the aperture radius.
+//!
+//! Drawing a point of the disc is chapter 02's business (its warps are reused, not copied);
+//! this module adds the polygon, in the same style: a warp of the unit square with its
+//! density beside it.
+
+use ch02_monte_carlo::warps::{
+    disk_naive_pdf, sample_disk_naive, sample_triangle, sample_uniform_disk_concentric,
+    sample_uniform_disk_polar, uniform_disk_pdf,
+};
+use glam::Vec2;
+use std::f32::consts::TAU;
+
+/// The most blades a polygonal aperture may have: past a few dozen a polygon is a disc to the
+/// eye, and the limit keeps the fan of triangles small.
+pub const MAX_BLADES: u32 = 64;
+
+/// The hole of the diaphragm, at unit size.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Aperture {
+    /// The unit disc: a lens wide open.
+    Disc,
+    /// The regular polygon with `blades` corners on the unit circle: a diaphragm stopped down.
+    Polygon {
+        /// Number of blades, and so of corners: at least 3, at most [`MAX_BLADES`].
+        blades: u32,
+        /// Angle of the first corner from the camera's +x axis, in radians.
+        rotation: f32,
+    },
+}
+
+impl Aperture {
+    /// A polygonal aperture, or why there is none: fewer than 3 blades make no polygon.
+    pub fn polygon(blades: u32, rotation: f32) -> Result<Self, String> {
+        if !(3..=MAX_BLADES).contains(&blades) {
+            return Err(format!(
+                "an aperture polygon needs between 3 and {MAX_BLADES} blades, not {blades}"
+            ));
+        }
+        if !rotation.is_finite() {
+            return Err(format!(
+                "the aperture's rotation must be a finite angle, not {rotation}"
+            ));
+        }
+        Ok(Aperture::Polygon { blades, rotation })
+    }
+
+    /// The area of the unit-size shape: `π` for the disc, `(n/2) sin(2π/n)` for the polygon.
+    pub fn area(&self) -> f32 {
+        match *self {
+            Aperture::Disc => std::f32::consts::PI,
+            Aperture::Polygon { blades, .. } => regular_polygon_area(blades),
+        }
+    }
+}
+
+/// How a point of the unit disc is made from two uniform numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum LensWarp {
+    /// Shirley and Chiu's concentric map: uniform, little distortion; Mitsuba's choice.
+    Concentric,
+    /// Polar coordinates with `r = √ξ2`: uniform.
+    Polar,
+    /// Polar coordinates with `r = ξ2`: **not** uniform, too many points near the centre, so
+    /// blurred highlights come out too bright in their middle. Kept to show the mistake.
+    Naive,
+}
+
+impl LensWarp {
+    /// Every warp, in the order of the enum.
+    pub const ALL: [LensWarp; 3] = [LensWarp::Concentric, LensWarp::Polar, LensWarp::Naive];
+
+    /// The name on the command line and in figures.
+    pub fn name(self) -> &'static str {
+        match self {
+            LensWarp::Concentric => "concentric",
+            LensWarp::Polar => "polar",
+            LensWarp::Naive => "naive",
+        }
+    }
+
+    /// The point of the unit disc this warp makes of `u`.
+    pub fn sample(self, u: Vec2) -> Vec2 {
+        match self {
+            LensWarp::Concentric => sample_uniform_disk_concentric(u),
+            LensWarp::Polar => sample_uniform_disk_polar(u),
+            LensWarp::Naive => sample_disk_naive(u),
+        }
+    }
+
+    /// The density, per unit area, of the points this warp makes, at `p`: `1/π` for the two
+    /// uniform warps, `1 / (2π r)` for the naive one.
+    pub fn pdf(self, p: Vec2) -> f32 {
+        match self {
+            LensWarp::Concentric | LensWarp::Polar => {
+                if p.length_squared() <= 1.0 {
+                    uniform_disk_pdf()
+                } else {
+                    0.0
+                }
+            }
+            LensWarp::Naive => disk_naive_pdf(p),
+        }
+    }
+}
+
+/// Corner `k` of the regular `blades`-gon on the unit circle, turned by `rotation`.
+pub fn polygon_corner(k: u32, blades: u32, rotation: f32) -> Vec2 {
+    let angle = rotation + TAU * (k % blades) as f32 / blades as f32;
+    let (sin, cos) = angle.sin_cos();
+    Vec2::new(cos, sin)
+}
+
+/// The area of the regular `blades`-gon inscribed in the unit circle: `blades` triangles from
+/// the centre, each with two sides of length 1 enclosing the angle `2π / blades`, so of area
+/// `sin(2π / blades) / 2`.
+pub fn regular_polygon_area(blades: u32) -> f32 {
+    0.5 * blades as f32 * (TAU / blades as f32).sin()
+}
+
+// ANCHOR: polygon_aperture
+/// A uniform point of the regular `blades`-gon inscribed in the unit circle, its first corner
+/// at angle `rotation`; density [`sample_uniform_regular_polygon_pdf`].
+///
+/// The polygon is a fan of `blades` equal triangles around the centre. Choose a triangle with
+/// `ξ1` (each has the same area, so each gets the same chance), then a uniform point inside
+/// it with chapter 02's triangle warp. The choice uses only the integer part of
+/// `blades * ξ1`; its fractional part is again uniform in `[0, 1)` and independent of the
+/// choice, so it serves as the triangle's first number: one random number does two jobs.
+pub fn sample_uniform_regular_polygon(u: Vec2, blades: u32, rotation: f32) -> Vec2 {
+    // BEGIN SOLUTION
+    let scaled = u.x * blades as f32;
+    // `u.x < 1`, yet `blades * u.x` may round up to `blades`: keep the last triangle then.
+    let k = (scaled as u32).min(blades - 1);
+    let reused = (scaled - k as f32).clamp(0.0, 1.0);
+    sample_triangle(
+        Vec2::new(reused, u.y),
+        Vec2::ZERO,
+        polygon_corner(k, blades, rotation),
+        polygon_corner(k + 1, blades, rotation),
+    )
+    // END SOLUTION
+}
+// ANCHOR_END: polygon_aperture
+
+/// The density of [`sample_uniform_regular_polygon`] per unit area: one over the polygon's
+/// area inside (the polygon is convex, so a point is inside when it is on the inner side of
+/// every edge), zero outside.
+pub fn sample_uniform_regular_polygon_pdf(p: Vec2, blades: u32, rotation: f32) -> f32 {
+    let inside = (0..blades).all(|k| {
+        let a = polygon_corner(k, blades, rotation);
+        let b = polygon_corner(k + 1, blades, rotation);
+        // Corners run counter-clockwise, so the inside is to the left of each edge a -> b.
+        (b - a).perp_dot(p - a) >= -1e-6
+    });
+    if inside {
+        1.0 / regular_polygon_area(blades)
+    } else {
+        0.0
+    }
+}
+
+/// A point of the unit-size `aperture` from `u`: the disc through `warp`, the polygon
+/// uniformly (the warp choice is a disc's; a polygon is always drawn by its fan).
+pub fn sample_aperture(aperture: Aperture, warp: LensWarp, u: Vec2) -> Vec2 {
+    match aperture {
+        Aperture::Disc => warp.sample(u),
+        Aperture::Polygon { blades, rotation } => {
+            sample_uniform_regular_polygon(u, blades, rotation)
+        }
+    }
+}
+
+/// The density of [`sample_aperture`]'s points, per unit area of the unit-size aperture.
+pub fn sample_aperture_pdf(aperture: Aperture, warp: LensWarp, p: Vec2) -> f32 {
+    match aperture {
+        Aperture::Disc => warp.pdf(p),
+        Aperture::Polygon { blades, rotation } => {
+            sample_uniform_regular_polygon_pdf(p, blades, rotation)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use ch02_monte_carlo::chi2::{chi2_test_density, significance_level};
+    use ch02_monte_carlo::warps::{Domain, WarpPoint};
+
+    /// Points of the unit square on a grid, its edges included (up to just below 1).
+    fn grid(n: usize) -> Vec<Vec2> {
+        let below_one = 1.0 - f32::EPSILON / 2.0;
+        let coordinate = |i: usize| (i as f32 / (n - 1) as f32).min(below_one);
+        (0..n)
+            .flat_map(|i| (0..n).map(move |j| Vec2::new(coordinate(i), coordinate(j))))
+            .collect()
+    }
+
+    fn polygon_chi2(
+        blades: u32,
+        rotation: f32,
+        sample: impl Fn(Vec2) -> Vec2,
+    ) -> ch02_monte_carlo::chi2::Chi2Result {
+        chi2_test_density(
+            Domain::Plane {
+                min: Vec2::splat(-1.0),
+                max: Vec2::ONE,
+            },
+            200_000,
+            4,
+            (20, 20),
+            |u| WarpPoint::Plane(sample(u)),
+            |point| match point {
+                WarpPoint::Plane(p) => sample_uniform_regular_polygon_pdf(p, blades, rotation),
+                WarpPoint::Direction(_) => 0.0,
+            },
+        )
+    }
+
+    #[test]
+    fn exercise_polygon_aperture_stays_inside_the_polygon() {
+        for blades in [3, 5, 6, 9] {
+            for u in grid(41) {
+                let p = sample_uniform_regular_polygon(u, blades, 0.3);
+                assert!(p.is_finite(), "{blades} blades, u = {u}: {p}");
+                assert!(
+                    sample_uniform_regular_polygon_pdf(p, blades, 0.3) > 0.0,
+                    "{blades} blades, u = {u}: {p} is outside"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn exercise_polygon_aperture_is_uniform() {
+        // Chi-square against the density 1/area inside the polygon: a triangle picked with the
+        // wrong weight, or a non-uniform point inside it, shows as a huge statistic.
+        for (blades, rotation) in [(3, 0.0), (5, 0.4), (6, 0.0)] {
+            let result = polygon_chi2(blades, rotation, |u| {
+                sample_uniform_regular_polygon(u, blades, rotation)
+            });
+            assert!(
+                result.p_value > significance_level(3, 0.01),
+                "{blades} blades: {result:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn exercise_polygon_aperture_reaches_every_corner() {
+        // u.x just below (k + 1) / n and u.y near 1 folds to the far corner of triangle k.
+        let blades = 5;
+        for k in 0..blades {
+            let corner = polygon_corner(k, blades, 0.0);
+            let nearest = grid(101)
+                .into_iter()
+                .map(|u| sample_uniform_regular_polygon(u, blades, 0.0).distance(corner))
+                .fold(f32::INFINITY, f32::min);
+            assert!(nearest < 0.03, "corner {k} is never reached: {nearest}");
+        }
+    }
+
+    #[test]
+    fn the_polygon_density_integrates_to_one() {
+        // Midpoint rule over [-1, 1]^2.
+        let n = 400;
+        let h = 2.0 / n as f32;
+        let mut sum = 0.0f64;
+        for i in 0..n {
+            for j in 0..n {
+                let p = Vec2::new(-1.0 + (i as f32 + 0.5) * h, -1.0 + (j as f32 + 0.5) * h);
+                sum += f64::from(sample_uniform_regular_polygon_pdf(p, 6, 0.2) * h * h);
+            }
+        }
+        assert_relative_eq!(sum, 1.0, epsilon = 5e-3);
+        assert_relative_eq!(regular_polygon_area(4), 2.0, epsilon = 1e-6);
+        assert_relative_eq!(
+            regular_polygon_area(MAX_BLADES),
+            std::f32::consts::PI,
+            epsilon = 0.01
+        );
+    }
+
+    #[test]
+    fn a_wrong_polygon_sampler_fails_the_same_test() {
+        // Picking a triangle well, then a point by the *unfolded* map of the square onto the
+        // triangle (squeezing it towards the centre corner) is not uniform: the test must see it.
+        let blades = 6;
+        let squeezed = |u: Vec2| {
+            let k = ((u.x * blades as f32) as u32).min(blades - 1);
+            let s = u.x * blades as f32 - k as f32;
+            let a = polygon_corner(k, blades, 0.0);
+            let b = polygon_corner(k + 1, blades, 0.0);
+            // radius u.y, position along the edge s: a "naive" triangle warp
+            u.y * (a + (b - a) * s)
+        };
+        let result = polygon_chi2(blades, 0.0, squeezed);
+        assert!(result.p_value < 1e-6, "{result:?}");
+    }
+
+    #[test]
+    fn too_few_blades_are_refused() {
+        assert!(Aperture::polygon(2, 0.0).is_err());
+        assert!(Aperture::polygon(0, 0.0).is_err());
+        assert!(Aperture::polygon(MAX_BLADES + 1, 0.0).is_err());
+        assert!(Aperture::polygon(5, f32::NAN).is_err());
+        assert!(Aperture::polygon(3, 0.0).is_ok());
+    }
+
+    #[test]
+    fn disc_warps_report_their_densities() {
+        assert_relative_eq!(
+            LensWarp::Concentric.pdf(Vec2::new(0.3, 0.1)),
+            std::f32::consts::FRAC_1_PI
+        );
+        assert_eq!(LensWarp::Polar.pdf(Vec2::new(0.9, 0.9)), 0.0);
+        // The naive warp's density at radius 1/2 equals the uniform one; nearer, it is higher.
+        assert_relative_eq!(
+            LensWarp::Naive.pdf(Vec2::new(0.5, 0.0)),
+            std::f32::consts::FRAC_1_PI,
+            epsilon = 1e-6
+        );
+        assert!(LensWarp::Naive.pdf(Vec2::new(0.1, 0.0)) > 4.0 / std::f32::consts::PI);
+    }
+}

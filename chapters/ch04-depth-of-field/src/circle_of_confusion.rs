@@ -1,0 +1,165 @@
+//! How large a point at depth `d` appears when the lens focuses at `d_f`: the circle of
+//! confusion.
+//!
+//! **In Mitsuba's terms** (aperture radius `R`, focus distance `d_f`, no focal length): the
+//! rays through one film position leave the lens disc of radius `R` and all meet at the focus
+//! point on the plane `z = d_f`. Look at it the other way round: which film positions see a
+//! point `Q` at depth `d`? A ray from lens point `P_l` through `Q` reaches the focal plane at
+//! `P_f = P_l + (Q - P_l) d_f / d = Q d_f / d + P_l (1 - d_f / d)`. As `P_l` runs over the
+//! lens disc, `P_f` runs over a disc of radius `R |d - d_f| / d` on the focal plane. The film
+//! sees the focal plane through the pinhole at scale `1 / d_f` (tangent units, the pinhole's
+//! `z = 1` plane), so the point's image is a disc of diameter
+//!
+//! ```text
+//! c = 2 R |d - d_f| / (d d_f)        (in tangent units; times W / (2 tan(fov_x / 2)) in pixels)
+//! ```
+//!
+//! **In a photographer's terms** (focal length `f`, aperture diameter `A = f / N`, film at
+//! `v = f d_f / (d_f - f)` behind the lens by the thin lens equation): similar triangles give
+//! the blur disc on the film, `c_film = A |d - d_f| / d * f / (d_f - f)`. Divide by the film
+//! distance `v` to get the angle it covers: `c_film / v = A |d - d_f| / (d d_f)`, the same
+//! expression with `A = 2R`. The two models agree; Mitsuba's only drops the focal length,
+//! which affects nothing but the film's distance (and that the field of view already fixes).
+//!
+//! The blur grows without bound in front of the focal plane (as `d → 0`) but tends to the
+//! finite `2R / d_f` behind it (as `d → ∞`): a distant background is never blurred more than
+//! that, which is why a far focus keeps everything behind it nearly sharp (the hyperfocal trick).
+
+use ch01_whitted::camera::PinholeCamera;
+
+// ANCHOR: circle_of_confusion
+/// The diameter of the circle of confusion of a point at depth `depth` (along the camera's
+/// axis), for a lens of radius `aperture_radius` focused at `focus_distance`, in the tangent
+/// units of the pinhole's `z = 1` plane: `2 R |d - d_f| / (d d_f)`.
+pub fn circle_of_confusion(aperture_radius: f32, focus_distance: f32, depth: f32) -> f32 {
+    2.0 * aperture_radius * (depth - focus_distance).abs() / (depth * focus_distance)
+}
+// ANCHOR_END: circle_of_confusion
+
+/// The same diameter in pixels of `camera`'s film: one pixel spans `2 tan(fov_x / 2) / W`
+/// tangent units.
+pub fn circle_of_confusion_pixels(
+    camera: &PinholeCamera,
+    aperture_radius: f32,
+    focus_distance: f32,
+    depth: f32,
+) -> f32 {
+    let pixels_per_tangent_unit = camera.width as f32 / (2.0 * camera.tan_half_fov_x);
+    circle_of_confusion(aperture_radius, focus_distance, depth) * pixels_per_tangent_unit
+}
+
+/// The photographer's version: the blur disc's diameter *on the film*, for focal length
+/// `focal_length`, aperture diameter `aperture_diameter = f / N`, focused at `focus_distance`
+/// (which must exceed the focal length): `A |d - d_f| / d * f / (d_f - f)`.
+pub fn circle_of_confusion_on_film(
+    focal_length: f32,
+    aperture_diameter: f32,
+    focus_distance: f32,
+    depth: f32,
+) -> f32 {
+    aperture_diameter * (depth - focus_distance).abs() / depth * focal_length
+        / (focus_distance - focal_length)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lens::{Lens, image_distance};
+    use crate::thin_lens::ThinLensCamera;
+    use approx::assert_relative_eq;
+    use ch01_whitted::camera::CameraFrame;
+    use common::geometry::Sphere;
+    use glam::{Vec2, Vec3};
+
+    #[test]
+    fn the_two_models_agree_once_the_film_distance_is_divided_out() {
+        let (f, n) = (0.05f32, 2.8f32);
+        let a = f / n;
+        let d_f = 2.0;
+        let v = image_distance(f, d_f).unwrap();
+        for d in [0.5f32, 1.0, 1.9, 2.0, 3.0, 100.0] {
+            let on_film = circle_of_confusion_on_film(f, a, d_f, d);
+            assert_relative_eq!(
+                on_film / v,
+                circle_of_confusion(a / 2.0, d_f, d),
+                max_relative = 1e-5,
+                epsilon = 1e-9
+            );
+        }
+    }
+
+    #[test]
+    fn sharp_at_the_focus_and_bounded_far_behind_it() {
+        assert_eq!(circle_of_confusion(0.3, 4.0, 4.0), 0.0);
+        assert_relative_eq!(
+            circle_of_confusion(0.3, 4.0, 1e9),
+            2.0 * 0.3 / 4.0,
+            epsilon = 1e-6
+        );
+        assert!(circle_of_confusion(0.3, 4.0, 0.1) > 1.0);
+    }
+
+    /// The width, in pixels, of the band of film positions along the image's middle row from
+    /// which at least one lens ray hits `sphere`. Each edge of the band is found by bisection
+    /// between a position that sees the sphere and one that does not.
+    fn measured_blur_width(camera: &ThinLensCamera, sphere: &Sphere) -> f32 {
+        let row = camera.pinhole.height as f32 / 2.0;
+        // The sphere sits on the axis and the film positions on the middle row, so the rays
+        // that can hit it leave from the lens's horizontal diameter: sample it densely (the
+        // polar warp's u = (0, r^2) and (1/2, r^2) are its two halves), rim included.
+        let lens_samples: Vec<Vec2> = (0..=2000)
+            .flat_map(|i| {
+                let r = (i as f32 / 2000.0).min(1.0 - 1e-7);
+                [Vec2::new(0.0, r * r), Vec2::new(0.5, r * r)]
+            })
+            .collect();
+        let camera = ThinLensCamera {
+            lens: camera.lens.with_warp(crate::aperture::LensWarp::Polar),
+            ..*camera
+        };
+        let sees = |x: f32| {
+            lens_samples.iter().any(|&u| {
+                sphere
+                    .intersect(&camera.generate_ray_through(Vec2::new(x, row), u))
+                    .is_some()
+            })
+        };
+        let centre = camera.pinhole.width as f32 / 2.0;
+        assert!(sees(centre), "the sphere straight ahead is seen");
+        let edge = |outside: f32| {
+            let (mut inside, mut outside) = (centre, outside);
+            for _ in 0..40 {
+                let middle = 0.5 * (inside + outside);
+                if sees(middle) {
+                    inside = middle;
+                } else {
+                    outside = middle;
+                }
+            }
+            inside
+        };
+        edge(camera.pinhole.width as f32) - edge(0.0)
+    }
+
+    #[test]
+    fn traced_rays_blur_a_point_over_the_predicted_circle() {
+        let frame = CameraFrame::look_at(Vec3::ZERO, Vec3::Z, Vec3::Y).unwrap();
+        let pinhole = PinholeCamera::new(frame, 40.0, 400, 100);
+        let (radius, focus) = (0.15, 4.0);
+        let camera = ThinLensCamera::new(pinhole, Lens::new(radius, focus).unwrap());
+        let rho = 0.003;
+        for depth in [1.5f32, 3.0, 4.0, 6.0, 20.0] {
+            let sphere = Sphere::new(Vec3::new(0.0, 0.0, depth), rho);
+            let measured = measured_blur_width(&camera, &sphere);
+            let predicted = circle_of_confusion_pixels(&pinhole, radius, focus, depth);
+            // The sphere's own image, 2 rho / d in tangent units, widens the band.
+            let pixels_per_tangent_unit = 400.0 / (2.0 * pinhole.tan_half_fov_x);
+            let own_size = 2.0 * rho / depth * pixels_per_tangent_unit;
+            let expected = predicted + own_size;
+            assert!(
+                (measured - expected).abs() < 0.01 * expected + 0.05,
+                "depth {depth}: measured {measured} px, predicted {predicted} + {own_size} px"
+            );
+        }
+    }
+}
