@@ -1,10 +1,335 @@
-//! The chapter's figures.
+//! The chapter's figures: every sampler at growing sample counts, zoomed edges, the filters on
+//! the checkerboard, where the samples of a pixel land, the filter profiles, the error of one
+//! edge pixel, and error against time.
 
+use crate::coverage::{HalfPlane, coverage_mse};
+use crate::filters::{FilterKind, ReconstructionFilter};
+use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
+use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH};
+use anyhow::Context;
+use ch01_whitted::scene::Scene;
 use common::cli::prepare_output_dir;
+use common::film::Filter;
+use common::image::Image;
+use common::metrics::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use common::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, crop, line_plot, scatter_plot,
+};
+use common::render::RenderSettings;
+use glam::{UVec2, Vec2};
 use std::path::Path;
 
+/// Image sizes and budgets: the book's, or small ones for tests and CI.
+struct Quality {
+    /// Size of the sampler and filter comparisons.
+    width: u32,
+    height: u32,
+    /// Sample counts of the sampler comparison.
+    spp_steps: &'static [u64],
+    /// Samples per pixel of the reference renders.
+    reference_spp: u64,
+    /// Size of the error-against-time renders.
+    convergence_size: (u32, u32),
+    /// Sample counts of the error-against-time runs.
+    budgets: &'static [u64],
+    /// Seeds averaged for the edge-pixel error.
+    repetitions: u64,
+}
+
+impl Quality {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Quality {
+                width: 80,
+                height: 60,
+                spp_steps: &[1, 4, 16],
+                reference_spp: 256,
+                convergence_size: (32, 24),
+                budgets: &[1, 4, 16],
+                repetitions: 200,
+            }
+        } else {
+            Quality {
+                width: 240,
+                height: 180,
+                spp_steps: &[1, 4, 16, 64],
+                reference_spp: 1024,
+                convergence_size: (80, 60),
+                budgets: &[1, 4, 16, 64, 256],
+                repetitions: 2000,
+            }
+        }
+    }
+}
+
 /// Writes every figure of the chapter into `out`.
-pub fn write_all(out: &Path, _quick: bool) -> anyhow::Result<()> {
+pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     prepare_output_dir(out)?;
+    let quality = Quality::new(quick);
+    samplers(out, &quality).context("the sampler comparison")?;
+    filters(out, &quality).context("the filter comparison")?;
+    pixel_samples(out).context("the sample-position plots")?;
+    filter_profiles(out).context("the filter profiles")?;
+    edge_pixel(out, &quality).context("the edge-pixel error plot")?;
+    convergence(out, &quality).context("the error-against-time figures")?;
+    eprintln!("ch03 figures written to {}", out.display());
+    Ok(())
+}
+
+/// A rectangle of the image, in pixels.
+#[derive(Clone, Copy, Debug)]
+struct Window {
+    min: UVec2,
+    size: UVec2,
+}
+
+impl Window {
+    /// The window covering the fractions `[x0, x1] x [y0, y1]` of a `width x height` image.
+    fn fraction(width: u32, height: u32, [x0, x1, y0, y1]: [f32; 4]) -> Self {
+        let min = UVec2::new((x0 * width as f32) as u32, (y0 * height as f32) as u32);
+        let max = UVec2::new((x1 * width as f32) as u32, (y1 * height as f32) as u32);
+        Window {
+            min,
+            size: (max - min).max(UVec2::ONE),
+        }
+    }
+
+    fn crop(&self, image: &Image) -> Image {
+        crop(image, self.min.x, self.min.y, self.size.x, self.size.y)
+    }
+}
+
+/// The thin bars and the steep bar of the edge scene, where they cross.
+const EDGE_DETAIL: [f32; 4] = [0.08, 0.38, 0.36, 0.6];
+
+/// Renders `scene` at `width x height` with `spp` samples of `kind` and `filter`.
+fn render(
+    scene: &Scene,
+    (width, height): (u32, u32),
+    kind: PixelSamplerKind,
+    spp: u64,
+    filter: &dyn Filter,
+) -> Image {
+    let settings = RenderSettings::new(width, height, spp);
+    let sampler = PixelSampler::new(kind, spp, 0).expect("every figure asks for samples");
+    let out = crate::render_with(scene, &settings, &sampler, filter);
+    debug_assert_eq!(out.stats.nonfinite_samples, 0);
+    out.image
+}
+
+/// Only `window` of the `full`-size image, so that a dense reference of a detail stays cheap.
+fn render_window(
+    scene: &Scene,
+    full: (u32, u32),
+    window: Window,
+    kind: PixelSamplerKind,
+    spp: u64,
+) -> Image {
+    let camera = scene.camera.with_size(full.0, full.1);
+    let offset = window.min.as_vec2();
+    let settings = RenderSettings::new(window.size.x, window.size.y, spp);
+    let sampler = PixelSampler::new(kind, spp, 0).expect("every figure asks for samples");
+    common::render::render(
+        &settings,
+        &sampler,
+        &common::film::PixelBoxFilter,
+        |p_film, _s: &mut PixelSampler, counters| {
+            ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film + offset), 1, counters)
+        },
+    )
+    .image
+}
+
+/// Every sampler at every sample count (`samplers.png`), and the detail of the thin bars
+/// enlarged (`edges_zoom.png`).
+fn samplers(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let scene = Builtin::Edges.build(DEFAULT_MAX_DEPTH);
+    let size = (quality.width, quality.height);
+    let window = Window::fraction(size.0, size.1, EDGE_DETAIL);
+    let box_filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the default box");
+    let mut cells = Vec::new();
+    let mut zoomed = Vec::new();
+    // The detail at 4 samples per pixel, where the samplers still differ visibly.
+    let zoom_spp = 4;
+    for kind in PixelSamplerKind::ALL {
+        for &spp in quality.spp_steps {
+            let image = render(&scene, size, kind, spp, &box_filter);
+            let zoom = match kind {
+                PixelSamplerKind::Centre => spp == 1,
+                _ => spp == zoom_spp,
+            };
+            if zoom {
+                zoomed.push((format!("{}, {spp} spp", kind.name()), window.crop(&image)));
+            }
+            cells.push((format!("{}, {spp} spp", kind.name()), image));
+        }
+    }
+    comparison_grid(
+        &out.join("samplers.png"),
+        &cells,
+        quality.spp_steps.len(),
+        1,
+    )?;
+    let reference = render_window(
+        &scene,
+        size,
+        window,
+        PixelSamplerKind::Stratified,
+        quality.reference_spp,
+    );
+    zoomed.push((
+        format!("reference, {} spp", quality.reference_spp),
+        reference,
+    ));
+    let scale = (320 / window.size.x).max(1);
+    comparison_grid(&out.join("edges_zoom.png"), &zoomed, 3, scale)?;
+    Ok(())
+}
+
+/// The four filters on the checkerboard (`filters.png`) and its horizon enlarged
+/// (`filters_horizon.png`).
+fn filters(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let scene = Builtin::Checkerboard.build(DEFAULT_MAX_DEPTH);
+    let size = (quality.width, quality.height);
+    let spp = 16;
+    let horizon = Window::fraction(size.0, size.1, [0.35, 0.65, 0.38, 0.6]);
+    let mut cells = Vec::new();
+    let mut zoomed = Vec::new();
+    let centre = render(
+        &scene,
+        size,
+        PixelSamplerKind::Centre,
+        1,
+        &ReconstructionFilter::new(FilterKind::Box, None).expect("the default box"),
+    );
+    zoomed.push(("1 sample at the centre".to_string(), horizon.crop(&centre)));
+    for kind in FilterKind::ALL {
+        let filter = ReconstructionFilter::new(kind, None).expect("the default filter");
+        let image = render(&scene, size, PixelSamplerKind::Stratified, spp, &filter);
+        let label = format!("{}, radius {}", kind.name(), filter.half_width());
+        zoomed.push((label.clone(), horizon.crop(&image)));
+        cells.push((format!("{label}, {spp} spp stratified"), image));
+    }
+    comparison_grid(&out.join("filters.png"), &cells, 2, 1)?;
+    let scale = (216 / horizon.size.x).max(1);
+    comparison_grid(&out.join("filters_horizon.png"), &zoomed, 5, scale)?;
+    Ok(())
+}
+
+/// Where the samples of one pixel land, per sampler, at 16 and at 256 samples.
+fn pixel_samples(out: &Path) -> anyhow::Result<()> {
+    for spp in [16u64, 256] {
+        let sets: Vec<(String, Vec<Vec2>)> = PixelSamplerKind::ALL
+            .into_iter()
+            .map(|kind| {
+                let mut sampler = PixelSampler::new(kind, spp, 0).expect("spp > 0");
+                let points = sampler.positions(UVec2::new(7, 3), spp);
+                (kind.name().to_string(), points)
+            })
+            .collect();
+        scatter_plot(
+            &out.join(format!("pixel_samples_{spp}.png")),
+            &format!("{spp} sample positions in one pixel"),
+            &sets,
+            [Vec2::ZERO, Vec2::ONE],
+        )?;
+    }
+    Ok(())
+}
+
+/// The 1-D profiles of the four filters at their default radii.
+fn filter_profiles(out: &Path) -> anyhow::Result<()> {
+    let series: Vec<Series> = FilterKind::ALL
+        .into_iter()
+        .map(|kind| {
+            let filter = ReconstructionFilter::new(kind, None).expect("the default filter");
+            let points = (-300..=300)
+                .map(|i| {
+                    let x = i as f32 * 0.01;
+                    (f64::from(x), f64::from(filter.evaluate_1d(x)))
+                })
+                .collect();
+            Series::new(
+                format!("{} (radius {})", kind.name(), filter.half_width()),
+                points,
+                SeriesStyle::Line,
+            )
+        })
+        .collect();
+    line_plot(
+        &out.join("filter_profiles.png"),
+        "Reconstruction filters, one-dimensional profile",
+        &Axes::linear("offset from the pixel centre (pixels)", "weight f(x)"),
+        &series,
+    )?;
+    Ok(())
+}
+
+/// Mean squared error of one pixel's coverage by an edge against samples per pixel: the slopes
+/// of random (-1), stratified (-3/2) and Halton sampling, and the centre's fixed error.
+fn edge_pixel(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let edge = HalfPlane {
+        slope: 0.35,
+        intercept: 0.3,
+    };
+    let counts = [1u64, 4, 16, 64, 256];
+    let series: Vec<Series> = PixelSamplerKind::ALL
+        .into_iter()
+        .map(|kind| {
+            let points = counts
+                .iter()
+                .map(|&n| (n as f64, coverage_mse(kind, n, quality.repetitions, edge)))
+                .collect();
+            Series::new(kind.name(), points, SeriesStyle::LineAndPoints)
+        })
+        .collect();
+    line_plot(
+        &out.join("edge_pixel.png"),
+        "Error of one pixel cut by an edge",
+        &Axes::log_log("samples per pixel", "mean squared error of the coverage"),
+        &series,
+    )?;
+    Ok(())
+}
+
+/// Error against time and against samples for every sampler, on the edge scene.
+fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let scene = Builtin::Edges.build(DEFAULT_MAX_DEPTH);
+    let size = quality.convergence_size;
+    let box_filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the default box");
+    // Sixteen times the densest budget: the reference's own error is far below the errors
+    // being measured.
+    let reference_spp = 16 * quality.budgets.last().copied().unwrap_or(1);
+    let reference = render(
+        &scene,
+        size,
+        PixelSamplerKind::Stratified,
+        reference_spp,
+        &box_filter,
+    );
+    let techniques: Vec<Technique> = PixelSamplerKind::ALL
+        .into_iter()
+        .map(|kind| {
+            let scene = &scene;
+            let filter = &box_filter;
+            Technique::new(kind.name(), move |spp| {
+                render(scene, size, kind, spp, filter)
+            })
+        })
+        .collect();
+    let records = run_convergence(&techniques, quality.budgets, &reference);
+    write_convergence_csv(&out.join("convergence.csv"), &records)?;
+    plot_error_vs_time(
+        &out.join("convergence.png"),
+        "Error against time (edges)",
+        &records,
+    )?;
+    plot_error_vs_spp(
+        &out.join("convergence_spp.png"),
+        "Error against samples per pixel (edges)",
+        &records,
+    )?;
     Ok(())
 }

@@ -9,6 +9,7 @@
 //! - [`pixel_samplers`]: where in its pixel each sample looks.
 //! - [`filters`]: how samples are weighted into pixels, `Σ f L / Σ f`.
 //! - [`scenes`], [`scene_file`]: scenes that alias, built in or read from Mitsuba 3 XML.
+//! - [`coverage`]: one pixel cut by an edge, the samplers' error in its purest form.
 //! - [`figures`]: the chapter's figures for the book.
 //!
 //! The tracer is chapter 01's, unchanged: anti-aliasing only changes which camera rays are
@@ -16,6 +17,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod coverage;
 pub mod figures;
 pub mod filters;
 pub mod pixel_samplers;

@@ -41,7 +41,7 @@ struct RenderCommand {
     filter: Option<FilterKind>,
     /// Half-width of the filter in pixels, in (0, 16] [default: the filter's own; for the
     /// Gaussian, four standard deviations].
-    #[arg(long, value_name = "PIXELS", value_parser = parse_radius)]
+    #[arg(long, value_name = "PIXELS", value_parser = parse_radius, allow_hyphen_values = true)]
     filter_radius: Option<f32>,
     /// Longest path in segments, counting the camera ray (Mitsuba's max_depth)
     /// [default: the scene file's, or 4].
