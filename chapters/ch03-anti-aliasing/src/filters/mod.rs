@@ -174,6 +174,7 @@ pub fn check_radius(radius: f32) -> Result<(), String> {
     }
 }
 
+// ANCHOR: filter_impl
 /// Rounds a weight to the nearest multiple of [`WEIGHT_QUANTUM`].
 pub fn quantise_weight(weight: f32) -> f32 {
     (weight / WEIGHT_QUANTUM).round() * WEIGHT_QUANTUM
@@ -192,6 +193,7 @@ impl Filter for ReconstructionFilter {
         quantise_weight(self.evaluate_1d(offset.x) * self.evaluate_1d(offset.y))
     }
 }
+// ANCHOR_END: filter_impl
 
 #[cfg(test)]
 mod tests;

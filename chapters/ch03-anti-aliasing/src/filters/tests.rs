@@ -191,12 +191,12 @@ fn tiny_filters_stay_finite_and_leave_unreached_pixels_black() {
 
 #[test]
 fn cancelling_mitchell_weights_give_black_or_a_bounded_value_never_infinity() {
-    // Two samples whose Mitchell weights nearly cancel: one in the negative lobe, one in the
-    // positive centre at the offset (found by bisection) where the weights are opposite.
+    // Two samples whose Mitchell weights nearly cancel: one in the negative lobe, one where
+    // the profile, falling from the centre, has the opposite value (found by bisection).
     let filter = ReconstructionFilter::new(FilterKind::Mitchell, None).unwrap();
     let negative = Vec2::new(1.4, 0.0);
     let target = -filter.evaluate_1d(negative.x);
-    let (mut lo, mut hi) = (0.0f32, 1.0f32); // the profile falls from 8/9 to 1/18 on [0, 1]
+    let (mut lo, mut hi) = (0.0f32, negative.x); // the profile falls all the way on [0, 1.4]
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
         if filter.evaluate_1d(mid) > target {
@@ -218,6 +218,11 @@ fn cancelling_mitchell_weights_give_black_or_a_bounded_value_never_infinity() {
         );
         film.merge(&tile);
         let sum = film.pixel(0, 0);
+        assert!(
+            sum.weight.abs() < 1e-3,
+            "the weights nearly cancel: {}",
+            sum.weight
+        );
         let value = film.image().get(0, 0);
         assert!(value.is_finite(), "{value}");
         if sum.weight != 0.0 {

@@ -6,7 +6,6 @@
 //! is the lecture's "less noise near edges": for a pixel cut by an edge the variance falls as
 //! `n^-3/2` instead of `n^-1`.
 
-use super::ONE_MINUS_EPSILON;
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 
@@ -44,7 +43,7 @@ pub fn jittered(sample_index: u64, columns: u32, rows: u32, xi: Vec2) -> Vec2 {
     let row = (stratum / u64::from(columns)) as f32;
     let p = Vec2::new((column + xi.x) / columns as f32, (row + xi.y) / rows as f32);
     // (k + ξ) / n can round up to 1 in f32 for the last stratum; 1 is the next pixel.
-    p.min(Vec2::splat(ONE_MINUS_EPSILON))
+    p.min(Vec2::splat(super::ONE_MINUS_EPSILON))
     // END SOLUTION
 }
 // ANCHOR_END: jittered
