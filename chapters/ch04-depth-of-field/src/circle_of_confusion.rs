@@ -25,7 +25,11 @@
 //! finite `2R / d_f` behind it (as `d → ∞`): a distant background is never blurred more than
 //! that, which is why a far focus keeps everything behind it nearly sharp (the hyperfocal trick).
 
+use crate::aperture::LensWarp;
+use crate::thin_lens::ThinLensCamera;
 use ch01_whitted::camera::PinholeCamera;
+use common::geometry::Sphere;
+use glam::Vec2;
 
 // ANCHOR: circle_of_confusion
 /// The diameter of the circle of confusion of a point at depth `depth` (along the camera's
@@ -61,15 +65,62 @@ pub fn circle_of_confusion_on_film(
         / (focus_distance - focal_length)
 }
 
+/// The width, in pixels, of the band of film positions along the image's middle row from
+/// which at least one lens ray hits `sphere`. Each edge of the band is found by bisection
+/// between a position that sees the sphere and one that does not.
+///
+/// This measures the circle of confusion without the formula: for a small `sphere` on the
+/// camera's axis the band is the blur circle widened by the sphere's own image.
+///
+/// # Panics
+///
+/// If the middle of the row does not see the sphere at all (it is not on the axis).
+pub fn measured_blur_width(camera: &ThinLensCamera, sphere: &Sphere) -> f32 {
+    let row = camera.pinhole.height as f32 / 2.0;
+    // The sphere sits on the axis and the film positions on the middle row, so the rays
+    // that can hit it leave from the lens's horizontal diameter: sample it densely (the
+    // polar warp's u = (0, r^2) and (1/2, r^2) are its two halves), rim included.
+    let lens_samples: Vec<Vec2> = (0..=2000)
+        .flat_map(|i| {
+            let r = (i as f32 / 2000.0).min(1.0 - 1e-7);
+            [Vec2::new(0.0, r * r), Vec2::new(0.5, r * r)]
+        })
+        .collect();
+    let camera = ThinLensCamera {
+        lens: camera.lens.with_warp(LensWarp::Polar),
+        ..*camera
+    };
+    let sees = |x: f32| {
+        lens_samples.iter().any(|&u| {
+            sphere
+                .intersect(&camera.generate_ray_through(Vec2::new(x, row), u))
+                .is_some()
+        })
+    };
+    let centre = camera.pinhole.width as f32 / 2.0;
+    assert!(sees(centre), "the sphere straight ahead is seen");
+    let edge = |outside: f32| {
+        let (mut inside, mut outside) = (centre, outside);
+        for _ in 0..40 {
+            let middle = 0.5 * (inside + outside);
+            if sees(middle) {
+                inside = middle;
+            } else {
+                outside = middle;
+            }
+        }
+        inside
+    };
+    edge(camera.pinhole.width as f32) - edge(0.0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::lens::{Lens, image_distance};
-    use crate::thin_lens::ThinLensCamera;
     use approx::assert_relative_eq;
     use ch01_whitted::camera::CameraFrame;
-    use common::geometry::Sphere;
-    use glam::{Vec2, Vec3};
+    use glam::Vec3;
 
     #[test]
     fn the_two_models_agree_once_the_film_distance_is_divided_out() {
@@ -97,48 +148,6 @@ mod tests {
             epsilon = 1e-6
         );
         assert!(circle_of_confusion(0.3, 4.0, 0.1) > 1.0);
-    }
-
-    /// The width, in pixels, of the band of film positions along the image's middle row from
-    /// which at least one lens ray hits `sphere`. Each edge of the band is found by bisection
-    /// between a position that sees the sphere and one that does not.
-    fn measured_blur_width(camera: &ThinLensCamera, sphere: &Sphere) -> f32 {
-        let row = camera.pinhole.height as f32 / 2.0;
-        // The sphere sits on the axis and the film positions on the middle row, so the rays
-        // that can hit it leave from the lens's horizontal diameter: sample it densely (the
-        // polar warp's u = (0, r^2) and (1/2, r^2) are its two halves), rim included.
-        let lens_samples: Vec<Vec2> = (0..=2000)
-            .flat_map(|i| {
-                let r = (i as f32 / 2000.0).min(1.0 - 1e-7);
-                [Vec2::new(0.0, r * r), Vec2::new(0.5, r * r)]
-            })
-            .collect();
-        let camera = ThinLensCamera {
-            lens: camera.lens.with_warp(crate::aperture::LensWarp::Polar),
-            ..*camera
-        };
-        let sees = |x: f32| {
-            lens_samples.iter().any(|&u| {
-                sphere
-                    .intersect(&camera.generate_ray_through(Vec2::new(x, row), u))
-                    .is_some()
-            })
-        };
-        let centre = camera.pinhole.width as f32 / 2.0;
-        assert!(sees(centre), "the sphere straight ahead is seen");
-        let edge = |outside: f32| {
-            let (mut inside, mut outside) = (centre, outside);
-            for _ in 0..40 {
-                let middle = 0.5 * (inside + outside);
-                if sees(middle) {
-                    inside = middle;
-                } else {
-                    outside = middle;
-                }
-            }
-            inside
-        };
-        edge(camera.pinhole.width as f32) - edge(0.0)
     }
 
     #[test]

@@ -10,13 +10,16 @@
 //!   drawn; the naive disc warp, kept to show what it does wrong.
 //! - [`thin_lens`]: the thin-lens camera, Mitsuba's `thinlens` sensor.
 //! - [`circle_of_confusion`]: how large a point at another depth appears.
-//! - [`scenes`]: what to look at.
+//! - [`scenes`], [`scene_file`]: what to look at.
+//! - [`figures`]: the chapter's figures for the book.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod aperture;
 pub mod circle_of_confusion;
+pub mod figures;
 pub mod lens;
+pub mod scene_file;
 pub mod scenes;
 pub mod thin_lens;
 

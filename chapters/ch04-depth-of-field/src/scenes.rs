@@ -71,10 +71,10 @@ pub const DEFAULT_DEPTH: u32 = DEFAULT_MAX_DEPTH;
 /// Radiance of the background seen through the holes of the far wall: much brighter than any
 /// lit surface, so that a hole stays bright even when its light is spread over a blur disc
 /// hundreds of times its size.
-pub const HOLE_RADIANCE: Vec3 = Vec3::new(60.0, 42.0, 22.0);
+pub const HOLE_RADIANCE: Vec3 = Vec3::new(12.0, 8.5, 4.5);
 
 /// Side of a square hole in the far wall.
-const HOLE_SIZE: f32 = 0.12;
+const HOLE_SIZE: f32 = 0.16;
 
 /// The bokeh scene. The camera stands at z = 7 looking down -z, so a point at world z has
 /// depth about `7 - z`.

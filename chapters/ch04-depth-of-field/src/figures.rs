@@ -1,0 +1,468 @@
+//! The chapter's figures: the lecture's aperture series, three focus settings, the naive lens
+//! warp against the correct ones, polygonal bokeh, where lens samples land, the circle of
+//! confusion against depth, and error against time.
+
+use crate::aperture::{
+    Aperture, LensWarp, sample_uniform_regular_polygon, sample_uniform_regular_polygon_pdf,
+};
+use crate::circle_of_confusion::{circle_of_confusion_pixels, measured_blur_width};
+use crate::lens::Lens;
+use crate::render_with;
+use crate::scenes::{BOKEH_SPHERE_DEPTHS, BOKEH_WALL_DEPTH, Builtin, DEFAULT_DEPTH};
+use crate::thin_lens::ThinLensCamera;
+use anyhow::Context;
+use ch01_whitted::camera::{CameraFrame, PinholeCamera};
+use ch01_whitted::scene::Scene;
+use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
+use common::cli::prepare_output_dir;
+use common::geometry::Sphere;
+use common::image::Image;
+use common::metrics::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use common::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
+};
+use common::render::RenderSettings;
+use common::sampler::{IndependentSampler, Sampler};
+use glam::{UVec2, Vec2, Vec3};
+use std::path::Path;
+
+/// The aperture radii of the lecture's series, in scene units: zero, small, large, very large.
+pub const APERTURE_SERIES: [(f32, &str); 4] = [
+    (0.0, "zero aperture (pinhole)"),
+    (0.03, "small aperture, R = 0.03"),
+    (0.12, "large aperture, R = 0.12"),
+    (0.35, "very large aperture, R = 0.35"),
+];
+
+/// Image sizes and budgets: the book's, or small ones for tests and CI.
+struct Quality {
+    width: u32,
+    height: u32,
+    /// Samples per pixel of the gallery images.
+    spp: u64,
+    /// Sample counts of the error-against-time runs.
+    budgets: &'static [u64],
+    /// Samples per pixel of the converged reference they are measured against.
+    reference_spp: u64,
+    /// Samples per pixel of the enlarged details.
+    detail_spp: u64,
+    /// Points in each lens scatter plot.
+    lens_points: u32,
+}
+
+impl Quality {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Quality {
+                width: 120,
+                height: 80,
+                spp: 16,
+                budgets: &[1, 4, 16],
+                reference_spp: 256,
+                detail_spp: 64,
+                lens_points: 512,
+            }
+        } else {
+            Quality {
+                width: 300,
+                height: 200,
+                spp: 32,
+                budgets: &[1, 4, 16, 64, 256],
+                reference_spp: 2048,
+                detail_spp: 512,
+                lens_points: 2048,
+            }
+        }
+    }
+
+    fn settings(&self, spp: u64) -> RenderSettings {
+        RenderSettings {
+            progress: true,
+            ..RenderSettings::new(self.width, self.height, spp)
+        }
+    }
+}
+
+/// Writes every figure of the chapter into `out`.
+pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
+    prepare_output_dir(out)?;
+    let quality = Quality::new(quick);
+    let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+    let gallery = Gallery::new(&scene, &quality);
+    aperture_series(out, &gallery).context("the aperture series")?;
+    focus_depths(out, &gallery).context("the focus figure")?;
+    naive_against_correct(out, &quality, &gallery).context("the naive-warp figure")?;
+    bokeh_shapes(out, &quality, &gallery).context("the bokeh-shape figure")?;
+    lens_samples(out, &quality).context("the lens-sample plot")?;
+    circle_of_confusion_plot(out, &quality).context("the circle-of-confusion plot")?;
+    convergence(out, &quality, &scene).context("the error-against-time figures")?;
+    eprintln!("ch04 figures written to {}", out.display());
+    Ok(())
+}
+
+/// The gallery renders of the bokeh scene, each rendered once however many figures show it.
+struct Gallery<'a> {
+    scene: &'a Scene,
+    settings: RenderSettings,
+    rendered: std::cell::RefCell<Vec<(Lens, Image)>>,
+}
+
+impl<'a> Gallery<'a> {
+    fn new(scene: &'a Scene, quality: &Quality) -> Self {
+        Self {
+            scene,
+            settings: quality.settings(quality.spp),
+            rendered: Default::default(),
+        }
+    }
+
+    /// The scene through `lens`, rendered now or taken from an earlier figure.
+    fn image(&self, lens: Lens) -> Image {
+        if let Some((_, image)) = self.rendered.borrow().iter().find(|(l, _)| *l == lens) {
+            return image.clone();
+        }
+        let image = render(self.scene, lens, &self.settings, 0);
+        self.rendered.borrow_mut().push((lens, image.clone()));
+        image
+    }
+}
+
+/// Renders the bokeh scene through `lens` with stratified pixel samples and a box filter.
+fn render(scene: &Scene, lens: Lens, settings: &RenderSettings, seed: u64) -> Image {
+    let spp = match settings.budget {
+        common::render::Budget::Samples(spp) => spp,
+        common::render::Budget::Seconds(_) => 1,
+    };
+    let sampler = PixelSampler::new(PixelSamplerKind::Stratified, spp, seed)
+        .expect("a positive sample count");
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter");
+    render_with(scene, &lens, settings, &sampler, &filter).image
+}
+
+/// A disc lens of radius `radius` focused at `focus`.
+fn disc(radius: f32, focus: f32) -> Lens {
+    Lens::new(radius, focus).expect("the figures' lenses are valid")
+}
+
+/// The lecture's series: the same scene, focused on the middle sphere, through a growing
+/// aperture.
+fn aperture_series(out: &Path, gallery: &Gallery) -> anyhow::Result<()> {
+    let cells: Vec<(String, Image)> = APERTURE_SERIES
+        .iter()
+        .map(|&(radius, label)| {
+            let lens = disc(radius, BOKEH_SPHERE_DEPTHS[1]);
+            (label.to_string(), gallery.image(lens))
+        })
+        .collect();
+    comparison_grid(&out.join("apertures.png"), &cells, 2, 1)?;
+    Ok(())
+}
+
+/// One aperture, focused on each of the three spheres in turn.
+fn focus_depths(out: &Path, gallery: &Gallery) -> anyhow::Result<()> {
+    let names = ["near", "middle", "far"];
+    let cells: Vec<(String, Image)> = BOKEH_SPHERE_DEPTHS
+        .iter()
+        .zip(names)
+        .map(|(&depth, name)| {
+            let lens = disc(0.12, depth);
+            (
+                format!("focused on the {name} sphere, d_f = {depth}"),
+                gallery.image(lens),
+            )
+        })
+        .collect();
+    comparison_grid(&out.join("focus.png"), &cells, 3, 1)?;
+    Ok(())
+}
+
+/// Where a world point lands on the film of `camera`, in pixels, or `None` behind it.
+fn project(camera: &PinholeCamera, point: Vec3) -> Option<Vec2> {
+    let frame = &camera.frame;
+    let v = point - frame.origin;
+    let (x, y, z) = (v.dot(frame.left), v.dot(frame.up), v.dot(frame.forward));
+    if z <= 0.0 {
+        return None;
+    }
+    let aspect = camera.width as f32 / camera.height as f32;
+    let t = camera.tan_half_fov_x;
+    Some(Vec2::new(
+        0.5 * (1.0 - x / (z * t)) * camera.width as f32,
+        0.5 * (1.0 - y * aspect / (z * t)) * camera.height as f32,
+    ))
+}
+
+/// Renders only the `side x side` window of the full-size image centred on `centre`, with
+/// `spp` samples per pixel: enlarged details of a highlight, converged without paying for
+/// the whole image.
+fn render_window(
+    scene: &Scene,
+    lens: Lens,
+    quality: &Quality,
+    centre: Vec2,
+    side: u32,
+    spp: u64,
+) -> Image {
+    let camera = ThinLensCamera::new(scene.camera, lens).with_size(quality.width, quality.height);
+    let side = side.min(quality.width).min(quality.height);
+    let start = |c: f32, size: u32| {
+        (c - side as f32 / 2.0)
+            .clamp(0.0, (size - side) as f32)
+            .floor()
+    };
+    let offset = Vec2::new(
+        start(centre.x, quality.width),
+        start(centre.y, quality.height),
+    );
+    let settings = RenderSettings {
+        progress: true,
+        ..RenderSettings::new(side, side, spp)
+    };
+    let sampler =
+        PixelSampler::new(PixelSamplerKind::Stratified, spp, 0).expect("a positive sample count");
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter");
+    common::render::render(&settings, &sampler, &filter, |p_film, sampler, counters| {
+        let ray = camera.generate_ray(p_film + offset, sampler);
+        ch01_whitted::tracer::trace(scene, &ray, 1, counters)
+    })
+    .image
+}
+
+/// A hole of the far wall, as the camera of `scene` sees it at `width x height`.
+fn highlight_on_film(scene: &Scene, quality: &Quality) -> Vec2 {
+    let camera = scene.camera.with_size(quality.width, quality.height);
+    // The hole at x = -1.2 on the upper row (see `scenes`), near the middle of the picture.
+    let wall_z = 7.0 - BOKEH_WALL_DEPTH;
+    project(&camera, Vec3::new(-1.12, 2.68, wall_z)).expect("the wall is in front")
+}
+
+/// The naive lens warp against the concentric one, with the near sphere in focus so that the
+/// far wall's holes blur into large discs; below, the same highlight enlarged.
+fn naive_against_correct(out: &Path, quality: &Quality, gallery: &Gallery) -> anyhow::Result<()> {
+    let scene = gallery.scene;
+    let lens = disc(0.12, BOKEH_SPHERE_DEPTHS[0]);
+    let warps = [
+        (
+            LensWarp::Naive,
+            "naive warp r = ξ2: too bright in the middle",
+        ),
+        (LensWarp::Polar, "polar warp r = √ξ2"),
+        (LensWarp::Concentric, "concentric warp (Mitsuba's)"),
+    ];
+    // The full pictures of the two extremes; the details below show all three warps.
+    let images: Vec<(String, Image)> = [warps[0], warps[2]]
+        .iter()
+        .map(|&(warp, label)| (label.to_string(), gallery.image(lens.with_warp(warp))))
+        .collect();
+    comparison_grid(&out.join("naive_vs_correct.png"), &images, 2, 1)?;
+    let centre = highlight_on_film(scene, quality);
+    let side = quality.height / 4;
+    let crops: Vec<(String, Image)> = warps
+        .iter()
+        .map(|&(warp, _)| {
+            (
+                format!("{} warp, enlarged, {} spp", warp.name(), quality.detail_spp),
+                render_window(
+                    scene,
+                    lens.with_warp(warp),
+                    quality,
+                    centre,
+                    side,
+                    quality.detail_spp,
+                ),
+            )
+        })
+        .collect();
+    let scale = (300 / side).max(1);
+    comparison_grid(&out.join("naive_vs_correct_crops.png"), &crops, 3, scale)?;
+    Ok(())
+}
+
+/// The blurred highlights take the aperture's shape: a disc, a pentagon, a hexagon.
+fn bokeh_shapes(out: &Path, quality: &Quality, gallery: &Gallery) -> anyhow::Result<()> {
+    let scene = gallery.scene;
+    let base = disc(0.12, BOKEH_SPHERE_DEPTHS[0]);
+    let shapes = [
+        (Aperture::Disc, "disc"),
+        (
+            Aperture::polygon(5, 0.3).map_err(anyhow::Error::msg)?,
+            "5 blades",
+        ),
+        (
+            Aperture::polygon(6, 0.0).map_err(anyhow::Error::msg)?,
+            "6 blades",
+        ),
+    ];
+    let centre = highlight_on_film(scene, quality);
+    let side = quality.height / 4;
+    let mut full = Vec::new();
+    let mut crops = Vec::new();
+    for (aperture, label) in shapes {
+        let lens = base.with_aperture(aperture);
+        full.push((format!("aperture: {label}"), gallery.image(lens)));
+        crops.push((
+            format!("{label}, enlarged"),
+            render_window(scene, lens, quality, centre, side, quality.detail_spp),
+        ));
+    }
+    comparison_grid(&out.join("bokeh_shapes.png"), &full, 3, 1)?;
+    let scale = (300 / side).max(1);
+    comparison_grid(&out.join("bokeh_shapes_crops.png"), &crops, 3, scale)?;
+    Ok(())
+}
+
+/// Where lens samples land on the unit aperture: the naive warp crowds the centre.
+fn lens_samples(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let mut sampler = IndependentSampler::new(7);
+    let mut uniforms = Vec::new();
+    for i in 0..quality.lens_points {
+        sampler.start_pixel_sample(UVec2::ZERO, u64::from(i));
+        uniforms.push(sampler.get_2d());
+    }
+    let mut sets: Vec<(String, Vec<Vec2>)> = LensWarp::ALL
+        .iter()
+        .rev()
+        .map(|&warp| {
+            (
+                format!("{} disc", warp.name()),
+                uniforms.iter().map(|&u| warp.sample(u)).collect(),
+            )
+        })
+        .collect();
+    sets.push((
+        "hexagon (6 blades)".to_string(),
+        uniforms
+            .iter()
+            .map(|&u| sample_uniform_regular_polygon(u, 6, 0.0))
+            .collect(),
+    ));
+    debug_assert!(
+        sets[3]
+            .1
+            .iter()
+            .all(|&p| { sample_uniform_regular_polygon_pdf(p, 6, 0.0) > 0.0 })
+    );
+    scatter_plot(
+        &out.join("lens_samples.png"),
+        &format!("{} lens samples on the unit aperture", quality.lens_points),
+        &sets,
+        [Vec2::splat(-1.0), Vec2::ONE],
+    )?;
+    Ok(())
+}
+
+/// The circle of confusion against depth: the formula as lines, traced rays as dots.
+fn circle_of_confusion_plot(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let frame = CameraFrame::look_at(Vec3::ZERO, Vec3::Z, Vec3::Y).expect("a valid frame");
+    let pinhole = PinholeCamera::new(frame, 40.0, 360, 240);
+    let focus = BOKEH_SPHERE_DEPTHS[1];
+    let depths: Vec<f32> = (0..=200).map(|i| 1.0 + 19.0 * i as f32 / 200.0).collect();
+    let measured_depths: &[f32] = if quality.width < 200 {
+        &[2.0, 5.0, 10.0, 18.0]
+    } else {
+        &[1.5, 2.5, 4.0, 5.5, 7.0, 9.0, 12.0, 16.0, 20.0]
+    };
+    let mut series = Vec::new();
+    for radius in [0.03, 0.12, 0.35] {
+        series.push(Series::new(
+            format!("R = {radius}: 2R |d - d_f| / (d d_f)"),
+            depths
+                .iter()
+                .map(|&d| {
+                    let c = circle_of_confusion_pixels(&pinhole, radius, focus, d);
+                    (f64::from(d), f64::from(c))
+                })
+                .collect(),
+            SeriesStyle::Line,
+        ));
+    }
+    // Measured: the band of film positions that see a small sphere, less the sphere's own size.
+    let radius = 0.12;
+    let rho = 0.002;
+    let camera = ThinLensCamera::new(pinhole, disc(radius, focus));
+    let pixels_per_tangent_unit = pinhole.width as f32 / (2.0 * pinhole.tan_half_fov_x);
+    let measured: Vec<(f64, f64)> = measured_depths
+        .iter()
+        .map(|&d| {
+            let sphere = Sphere::new(Vec3::new(0.0, 0.0, d), rho);
+            let own = 2.0 * rho / d * pixels_per_tangent_unit;
+            (
+                f64::from(d),
+                f64::from(measured_blur_width(&camera, &sphere) - own),
+            )
+        })
+        .collect();
+    series.push(Series::new(
+        "R = 0.12, measured from traced rays",
+        measured,
+        SeriesStyle::Points,
+    ));
+    let axes = Axes::linear(
+        "depth d (scene units; focus d_f = 7)",
+        "circle of confusion (pixels of a 360-pixel-wide, 40° image)",
+    );
+    line_plot(
+        &out.join("circle_of_confusion.png"),
+        "Blur against depth",
+        &axes,
+        &series,
+    )?;
+    Ok(())
+}
+
+/// Error against time for the three disc warps: the uniform ones converge, the naive one
+/// converges to the wrong image.
+fn convergence(out: &Path, quality: &Quality, scene: &Scene) -> anyhow::Result<()> {
+    let (width, height) = (quality.width / 5, quality.height / 5);
+    let settings = |spp| RenderSettings::new(width, height, spp);
+    let lens = disc(0.12, BOKEH_SPHERE_DEPTHS[0]);
+    // Random pixel samples: each technique differs only in its lens warp.
+    let render_random = |warp: LensWarp, spp: u64, seed: u64| {
+        let sampler =
+            PixelSampler::new(PixelSamplerKind::Random, spp, seed).expect("a positive count");
+        let filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter");
+        render_with(
+            scene,
+            &lens.with_warp(warp),
+            &settings(spp),
+            &sampler,
+            &filter,
+        )
+        .image
+    };
+    let reference = render_random(LensWarp::Concentric, quality.reference_spp, 1_000);
+    let techniques: Vec<Technique> = LensWarp::ALL
+        .iter()
+        .map(|&warp| Technique::new(warp.name(), move |spp| render_random(warp, spp, 0)))
+        .collect();
+    let records = run_convergence(&techniques, quality.budgets, &reference);
+    write_convergence_csv(&out.join("convergence.csv"), &records)?;
+    plot_error_vs_time(
+        &out.join("convergence.png"),
+        "Error against time: lens warps (bokeh scene)",
+        &records,
+    )?;
+    plot_error_vs_spp(
+        &out.join("convergence_spp.png"),
+        "Error against samples per pixel: lens warps (bokeh scene)",
+        &records,
+    )?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn projection_inverts_the_pinhole_ray() {
+        let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+        let camera = scene.camera;
+        let p_film = Vec2::new(100.5, 37.25);
+        let ray = camera.generate_ray(p_film);
+        let back = project(&camera, ray.at(5.0)).unwrap();
+        assert!((back - p_film).length() < 1e-3, "{back}");
+    }
+}
