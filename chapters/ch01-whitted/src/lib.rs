@@ -12,10 +12,12 @@
 //!   [`scene_file`]: the same from a Mitsuba 3 XML file.
 //! - [`tracer`]: the recursive tracer.
 //! - [`pixel`]: where in its pixel a ray goes (the centre, or a regular grid).
-//! - [`figures`]: the chapter's figures for the book.
+//! - [`figures`]: the chapter's figures for the book; [`agreement`]: the scenes on which it is
+//!   checked against Mitsuba 3.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod agreement;
 pub mod camera;
 pub mod figures;
 pub mod light;

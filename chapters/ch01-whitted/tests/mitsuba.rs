@@ -1,66 +1,43 @@
-//! Agreement with Mitsuba 3 on a scene both render exactly: direct light from a point light on
-//! matte surfaces (Mitsuba's `path` with `max_depth` 2 computes nothing more).
+//! Agreement with Mitsuba 3, rendered afresh. Needs a Python with the `mitsuba` package
+//! (`pip install mitsuba`), so it is ignored by default. Run it with
 //!
-//! Needs a Python with the `mitsuba` package (`pip install mitsuba`), so it is ignored by
-//! default. Run it with
-//! `MITSUBA_PYTHON=/path/to/python cargo test --release -p ch01-whitted --test mitsuba -- --ignored`.
+//! ```text
+//! MITSUBA_PYTHON=/path/to/python cargo test --release -p ch01-whitted --test mitsuba -- --ignored --nocapture
+//! ```
+//!
+//! With `UPDATE_MITSUBA_RENDERS=1` as well, it replaces the stored renders in
+//! `scenes/mitsuba/` that the test `agreement` and the book compare against.
 
-use ch01_whitted::scene_file::convert;
-use ch01_whitted::{PixelPattern, render};
-use common::render::RenderSettings;
-use common::scene::load_scene_file;
-use std::path::Path;
-use std::process::Command;
-
-/// Renders `scene` with Mitsuba's `scalar_rgb` variant and writes a PFM to `out`.
-const RENDER_WITH_MITSUBA: &str = r#"
-import sys, numpy as np, mitsuba as mi
-mi.set_variant("scalar_rgb")
-scene = mi.load_file(sys.argv[1], spp=int(sys.argv[3]))
-img = np.array(mi.render(scene, seed=1), dtype=np.float32)[:, :, :3]
-h, w, _ = img.shape
-with open(sys.argv[2], "wb") as f:
-    f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
-    f.write(np.ascontiguousarray(img[::-1]).astype("<f4").tobytes())
-"#;
+use ch01_whitted::agreement::{
+    AGREEMENT_SCENES, AGREEMENT_SPP, REFERENCE_SPP, mitsuba_dir, render_agreement_scene, scenes_dir,
+};
+use common::metrics::{make_reference_renders, mitsuba_python};
 
 #[test]
 #[ignore = "needs Mitsuba 3 (set MITSUBA_PYTHON)"]
-fn direct_light_agrees_with_mitsuba() {
-    let python = std::env::var("MITSUBA_PYTHON").unwrap_or_else(|_| "python3".to_string());
-    let scene_file = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/matte-spheres.xml");
-    let dir = tempfile::tempdir().unwrap();
-    let reference_path = dir.path().join("mitsuba.pfm");
-    let spp = 1024;
-    let status = Command::new(&python)
-        .args([
-            "-c",
-            RENDER_WITH_MITSUBA,
-            scene_file.to_str().unwrap(),
-            reference_path.to_str().unwrap(),
-            &spp.to_string(),
-        ])
-        .status()
-        .expect("MITSUBA_PYTHON runs");
-    assert!(status.success(), "Mitsuba failed to render");
-    let reference = common::output::read_image(&reference_path).unwrap();
-
-    let loaded = load_scene_file(&scene_file, &[]).unwrap();
-    let converted = convert(&loaded.scene).unwrap();
-    let settings = RenderSettings::new(reference.width, reference.height, spp);
-    // Mitsuba spreads its samples randomly over each pixel; a fine regular grid integrates the
-    // same pixel area.
-    let ours = render(&converted.scene, &settings, PixelPattern::Grid, 0)
-        .unwrap()
-        .image;
-
-    let mean = |image: &common::image::Image| common::metrics::mean(image);
-    let (m_ours, m_ref) = (mean(&ours), mean(&reference));
-    let relative = ((m_ours - m_ref).length() / m_ref.length()).abs();
-    let rmse = common::metrics::rmse(&ours, &reference);
-    eprintln!(
-        "mean ours {m_ours}, Mitsuba {m_ref}; relative difference {relative:.2e}; RMSE {rmse:.2e}"
-    );
-    assert!(relative < 2e-3, "the means differ by {relative}");
-    assert!(rmse < 2e-3, "RMSE {rmse}");
+fn chapter_01_agrees_with_mitsuba() {
+    let python = mitsuba_python().expect("set MITSUBA_PYTHON to a Python with mitsuba");
+    let update = std::env::var("UPDATE_MITSUBA_RENDERS").is_ok_and(|v| v == "1");
+    let mut failures = Vec::new();
+    for (name, checks) in AGREEMENT_SCENES {
+        let scene = scenes_dir().join(format!("{name}.xml"));
+        let renders =
+            make_reference_renders(&python, &scene, AGREEMENT_SPP, REFERENCE_SPP, &[]).unwrap();
+        let ours = render_agreement_scene(name).unwrap();
+        let agreement = renders.agreement(&ours);
+        eprintln!(
+            "{name} ({checks}): RMSE ours {:.2e} / Mitsuba {:.2e}, bias_blocks ours {:.4} / Mitsuba {:.4}",
+            agreement.ours.rmse,
+            agreement.other.rmse,
+            agreement.ours.bias_blocks,
+            agreement.other.bias_blocks
+        );
+        if !(agreement.unbiased(0.005) && agreement.noise_no_worse(1.05)) {
+            failures.push(name);
+        }
+        if update {
+            renders.save(&mitsuba_dir(), name).unwrap();
+        }
+    }
+    assert!(failures.is_empty(), "disagreement on {failures:?}");
 }

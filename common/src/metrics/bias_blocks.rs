@@ -61,8 +61,9 @@ pub fn bias_blocks(image: &Image, reference: &Image) -> f64 {
                     / n;
                 let standard_error =
                     variance.sqrt() / n.sqrt() + 1e-4 * (1.0 + mean_reference.abs());
+                let within = (mean_image - mean_reference).abs() <= BIAS_THRESHOLD * standard_error;
                 // NaN compares false: a NaN block is counted as off, never as fine.
-                if !((mean_image - mean_reference).abs() <= BIAS_THRESHOLD * standard_error) {
+                if !within {
                     off += 1;
                 }
             }

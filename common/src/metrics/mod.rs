@@ -5,14 +5,23 @@
 //! how far each render is from the reference ([`rmse`], [`relmse`]), tell noise from bias ([`bias_blocks`]), save the table
 //! ([`write_convergence_csv`]) and plot error against time ([`plot_error_vs_time`]).
 
+mod agreement;
 mod bias_blocks;
 mod convergence;
 mod csv;
 mod error_metrics;
+mod mitsuba;
 mod plots;
 
+pub use agreement::{
+    Agreement, Comparison, ReferenceRenders, RenderProvenance, agreement_table,
+    write_agreement_figure,
+};
 pub use bias_blocks::{BIAS_BLOCK_SIZE, BIAS_THRESHOLD, bias_blocks};
 pub use convergence::{ConvergenceRecord, Technique, run_convergence};
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
+pub use mitsuba::{
+    MITSUBA_PYTHON, MITSUBA_VARIANT, make_reference_renders, mitsuba_python, render_with_mitsuba,
+};
 pub use plots::{plot_error_vs_spp, plot_error_vs_time, series_by_technique};

@@ -184,6 +184,10 @@ pub enum ShapeGeometry {
     Obj {
         /// The mesh file, resolved relative to the scene file's directory.
         filename: PathBuf,
+        /// Mitsuba's `face_normals`: shade every triangle flat, ignoring the file's normals.
+        /// When it is off and the file has no normals, smooth vertex normals are computed (as
+        /// Mitsuba does), so a faceted mesh looks faceted only with `face_normals` on.
+        face_normals: bool,
     },
 }
 

@@ -44,6 +44,7 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
             let directory = reader.file.parent().unwrap_or(reader.file);
             ShapeGeometry::Obj {
                 filename: directory.join(filename),
+                face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
             }
         }
         _ => {

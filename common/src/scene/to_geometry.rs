@@ -6,7 +6,7 @@
 //! the inverse transpose, which is what keeps them perpendicular under non-uniform scaling.
 
 use super::{ShapeDescription, ShapeGeometry};
-use crate::geometry::{Disc, Quad, Shape, Sphere, Triangle};
+use crate::geometry::{Disc, Quad, Shape, Sphere};
 use glam::{Mat4, Vec3};
 
 /// The world-space shapes of one description: one for a sphere, rectangle or disc, six
@@ -56,34 +56,38 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
                 .map(|&face| square_face(m, face, shape.flip_normals))
                 .collect())
         }
-        ShapeGeometry::Obj { filename } => {
-            let mesh = super::load_obj(filename)?;
+        ShapeGeometry::Obj {
+            filename,
+            face_normals,
+        } => {
+            let mut mesh = super::load_obj(filename)?;
+            mesh.positions = mesh
+                .positions
+                .iter()
+                .map(|&p| m.transform_point3(p))
+                .collect();
             let normal_matrix = m.inverse().transpose();
-            let flip_winding = (m.determinant() < 0.0) != shape.flip_normals;
-            Ok(mesh
-                .triangles()
-                .map(|triangle| {
-                    let mut p = triangle.p.map(|p| m.transform_point3(p));
-                    let mut normals = triangle.normals.map(|normals| {
-                        normals.map(|n| {
-                            let n = normal_matrix.transform_vector3(n).normalize_or_zero();
-                            if shape.flip_normals { -n } else { n }
-                        })
-                    });
-                    // The geometric normal follows the winding: keep it on the side the
-                    // transformed (and possibly flipped) surface faces.
-                    if flip_winding {
-                        p.swap(1, 2);
-                        if let Some(n) = normals.as_mut() {
-                            n.swap(1, 2);
-                        }
-                    }
-                    match normals {
-                        Some(n) => Shape::Triangle(Triangle::with_normals(p, n)),
-                        None => Shape::Triangle(Triangle::new(p[0], p[1], p[2])),
-                    }
-                })
-                .collect())
+            if let Some(normals) = mesh.normals.as_mut() {
+                for n in normals {
+                    let world = normal_matrix.transform_vector3(*n).normalize_or_zero();
+                    *n = if shape.flip_normals { -world } else { world };
+                }
+            }
+            // The geometric normal follows the winding: keep it on the side the transformed
+            // (and possibly flipped) surface faces.
+            if (m.determinant() < 0.0) != shape.flip_normals {
+                for corners in &mut mesh.indices {
+                    corners.swap(1, 2);
+                }
+            }
+            if *face_normals {
+                mesh.normals = None;
+            } else if mesh.normals.is_none() {
+                // In world space, as Mitsuba does: angle weights change under a non-uniform
+                // scale, so computing them before the transform would give other normals.
+                mesh.recompute_vertex_normals();
+            }
+            Ok(mesh.triangles().map(Shape::Triangle).collect())
         }
     }
 }
@@ -197,7 +201,10 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("square.obj");
         std::fs::write(&path, "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n").unwrap();
-        let obj = ShapeGeometry::Obj { filename: path };
+        let obj = ShapeGeometry::Obj {
+            filename: path,
+            face_normals: true,
+        };
         // Mirrored in x and lifted by 2: still two triangles facing +z, now at z = 2.
         let m = Mat4::from_translation(2.0 * Vec3::Z) * Mat4::from_scale(Vec3::new(-3.0, 3.0, 3.0));
         let shapes = world_shapes(&description(obj.clone(), m)).unwrap();
@@ -217,6 +224,7 @@ mod tests {
         assert!((n + Vec3::Z).length() < 1e-5, "{n}");
         let missing = ShapeGeometry::Obj {
             filename: "missing.obj".into(),
+            face_normals: false,
         };
         assert!(
             world_shapes(&description(missing, Mat4::IDENTITY))

@@ -1,0 +1,101 @@
+//! Rendering a scene file with Mitsuba 3, to check our renders against an established renderer.
+//!
+//! Mitsuba 3 is a Python package (`pip install mitsuba`); nothing here needs it except the
+//! functions that call it, which only the ignored agreement tests and the reference-refreshing
+//! runs use. The environment variable [`MITSUBA_PYTHON`] names the Python that has it.
+
+use std::path::Path;
+use std::process::Command;
+
+use super::agreement::{ReferenceRenders, RenderProvenance};
+use crate::image::Image;
+use crate::output::read_image;
+
+/// The environment variable naming a Python interpreter with the `mitsuba` package.
+pub const MITSUBA_PYTHON: &str = "MITSUBA_PYTHON";
+
+/// The Mitsuba variant used: RGB rendering on the CPU, like ours (spectral variants turn RGB
+/// into spectra and differ slightly).
+pub const MITSUBA_VARIANT: &str = "scalar_rgb";
+
+/// Loads the scene (argv 1) in the variant (argv 5) with the sample count (argv 3) and `-D`
+/// parameters (argv 6...), renders it with the seed (argv 4) and writes a linear PFM (argv 2).
+/// Prints Mitsuba's version.
+const RENDER_SCRIPT: &str = r#"
+import sys, numpy as np, mitsuba as mi
+mi.set_variant(sys.argv[5])
+params = dict(kv.split("=", 1) for kv in sys.argv[6:])
+scene = mi.load_file(sys.argv[1], spp=int(sys.argv[3]), **params)
+img = np.array(mi.render(scene, seed=int(sys.argv[4])), dtype=np.float32)[:, :, :3]
+h, w, _ = img.shape
+with open(sys.argv[2], "wb") as f:
+    f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+    f.write(np.ascontiguousarray(img[::-1]).astype("<f4").tobytes())
+print(mi.__version__)
+"#;
+
+/// The Python named by [`MITSUBA_PYTHON`], if the variable is set.
+pub fn mitsuba_python() -> Option<String> {
+    std::env::var(MITSUBA_PYTHON).ok().filter(|p| !p.is_empty())
+}
+
+/// Renders `scene` with Mitsuba 3 at `spp` samples per pixel and `seed`, with scene parameters
+/// `defines` (`name=value`, as `-D` takes them). Returns the image and Mitsuba's version.
+///
+/// The scene must declare `<default name="spp" .../>` and use `$spp` for its sample count.
+pub fn render_with_mitsuba(
+    python: &str,
+    scene: &Path,
+    spp: u64,
+    seed: u64,
+    defines: &[String],
+) -> Result<(Image, String), String> {
+    let dir = tempfile::tempdir().map_err(|e| format!("no temporary directory: {e}"))?;
+    let out = dir.path().join("mitsuba.pfm");
+    let output = Command::new(python)
+        .arg("-c")
+        .arg(RENDER_SCRIPT)
+        .arg(scene)
+        .arg(&out)
+        .arg(spp.to_string())
+        .arg(seed.to_string())
+        .arg(MITSUBA_VARIANT)
+        .args(defines)
+        .output()
+        .map_err(|e| format!("cannot run {python}: {e}"))?;
+    if !output.status.success() {
+        return Err(format!(
+            "Mitsuba failed on {}: {}",
+            scene.display(),
+            String::from_utf8_lossy(&output.stderr)
+        ));
+    }
+    let version = String::from_utf8_lossy(&output.stdout).trim().to_string();
+    let image = read_image(&out).map_err(|e| e.to_string())?;
+    Ok((image, version))
+}
+
+/// Makes the stored renders of `scene`: a reference at `reference_spp` (seed 1) and a second
+/// render at `spp` (seed 2).
+pub fn make_reference_renders(
+    python: &str,
+    scene: &Path,
+    spp: u64,
+    reference_spp: u64,
+    defines: &[String],
+) -> Result<ReferenceRenders, String> {
+    let seeds = [1, 2];
+    let (reference, version) =
+        render_with_mitsuba(python, scene, reference_spp, seeds[0], defines)?;
+    let (equal_spp, _) = render_with_mitsuba(python, scene, spp, seeds[1], defines)?;
+    Ok(ReferenceRenders {
+        provenance: RenderProvenance {
+            renderer: format!("Mitsuba {version} ({MITSUBA_VARIANT})"),
+            reference_spp,
+            spp,
+            seeds,
+        },
+        reference,
+        equal_spp,
+    })
+}
