@@ -88,12 +88,14 @@ pub fn convert(description: &SceneDescription) -> Result<ConvertedScene, String>
     for (index, shape) in description.shapes.iter().enumerate() {
         if shape.emitter.is_some() {
             return Err(format!(
-                "shape {} is an area light: lights with an area (and their soft shadows) come in chapter 07 (ch07-soft-shadows); chapter 01 knows point lights",
-                index + 1
+                "shape {} ({}) is an area light: lights with an area (and their soft shadows) come in chapter 07 (ch07-soft-shadows); chapter 01 knows point lights",
+                index + 1,
+                shape.position
             ));
         }
-        let material = material(&shape.bsdf).map_err(|e| format!("shape {}: {e}", index + 1))?;
-        for world_shape in world_shapes(shape).map_err(|e| format!("shape {}: {e}", index + 1))? {
+        let name = format!("shape {} ({})", index + 1, shape.position);
+        let material = material(&shape.bsdf).map_err(|e| format!("{name}: {e}"))?;
+        for world_shape in world_shapes(shape).map_err(|e| format!("{name}: {e}"))? {
             builder = builder.shape(world_shape, material);
         }
     }

@@ -130,7 +130,8 @@ fn features_of_later_chapters_are_refused_with_their_chapter() {
                 "",
                 r#"<shape type="sphere"><emitter type="area"><rgb name="radiance" value="1"/></emitter></shape>"#,
             ),
-            "chapter 07",
+            // The refusal points at the shape in the file (line 7 of `scene_with`'s text).
+            "shape 1 (line 7, column 5) is an area light: lights with an area (and their soft shadows) come in chapter 07",
         ),
         (
             scene_with(

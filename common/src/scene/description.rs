@@ -9,6 +9,8 @@ use std::path::PathBuf;
 
 use glam::{Mat4, Vec3};
 
+use super::TextPosition;
+
 /// Everything a scene file describes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneDescription {
@@ -162,6 +164,9 @@ pub struct ShapeDescription {
     pub emitter: Option<AreaEmitter>,
     /// Whether the normals point the other way.
     pub flip_normals: bool,
+    /// Where the `<shape>` element starts in its file, so that a chapter refusing the shape
+    /// can point at it.
+    pub position: TextPosition,
 }
 
 /// The geometry of a shape, in Mitsuba 3's object space.

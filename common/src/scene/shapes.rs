@@ -96,5 +96,6 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
         bsdf,
         emitter,
         flip_normals,
+        position: reader.position(node),
     })
 }

@@ -145,6 +145,7 @@ mod tests {
             bsdf: Bsdf::mitsuba_default(),
             emitter: None,
             flip_normals: false,
+            position: Default::default(),
         }
     }
 
