@@ -52,8 +52,8 @@ impl Quality {
             }
         } else {
             Quality {
-                width: 240,
-                height: 180,
+                width: 320,
+                height: 240,
                 spp_steps: &[1, 4, 16, 64],
                 reference_spp: 1024,
                 convergence_size: (80, 60),

@@ -49,3 +49,73 @@ pub fn filter_of(filter: scene::ReconstructionFilter) -> Result<ReconstructionFi
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use common::scene::parse_scene;
+    use std::path::Path;
+
+    /// A one-sphere scene whose film has the filter `rfilter` (XML) or none (Mitsuba's default).
+    fn scene_with(rfilter: &str) -> SceneDescription {
+        let text = format!(
+            r#"<scene version="3.0.0">
+                <integrator type="direct"/>
+                <sensor type="perspective"><float name="fov" value="40"/>
+                    <sampler type="independent"><integer name="sample_count" value="9"/></sampler>
+                    <film type="hdrfilm">
+                        <integer name="width" value="8"/><integer name="height" value="6"/>
+                        {rfilter}
+                    </film>
+                </sensor>
+                <shape type="sphere"><bsdf type="diffuse"/></shape>
+                <emitter type="point"><point name="position" x="0" y="0" z="-4"/></emitter>
+            </scene>"#
+        );
+        parse_scene(&text, Path::new("test.xml"), &[])
+            .unwrap()
+            .scene
+    }
+
+    #[test]
+    fn the_files_filter_becomes_the_chapters_filter() {
+        let cases = [
+            (r#"<rfilter type="box"/>"#, FilterKind::Box, 0.5),
+            (
+                r#"<rfilter type="tent"><float name="radius" value="1.5"/></rfilter>"#,
+                FilterKind::Tent,
+                1.5,
+            ),
+            (
+                r#"<rfilter type="gaussian"><float name="stddev" value="0.25"/></rfilter>"#,
+                FilterKind::Gaussian,
+                1.0,
+            ),
+            // Mitsuba's default film filter is the Gaussian of standard deviation 1/2.
+            ("", FilterKind::Gaussian, 2.0),
+        ];
+        for (rfilter, kind, radius) in cases {
+            let converted = convert(&scene_with(rfilter)).unwrap();
+            assert_eq!(converted.filter.kind(), kind, "{rfilter}");
+            assert_eq!(converted.filter.half_width(), radius, "{rfilter}");
+            assert_eq!(converted.spp, 9);
+            assert_eq!(
+                (converted.scene.camera.width, converted.scene.camera.height),
+                (8, 6)
+            );
+            assert!(
+                converted.notes.iter().all(|n| !n.contains("filter")),
+                "chapter 03 uses the filter, it does not note it away: {:?}",
+                converted.notes
+            );
+        }
+    }
+
+    #[test]
+    fn an_unusable_filter_radius_is_refused_naming_the_rfilter() {
+        let scene =
+            scene_with(r#"<rfilter type="tent"><float name="radius" value="40"/></rfilter>"#);
+        let err = convert(&scene).err().expect("radius 40 is refused");
+        assert!(err.contains("rfilter") && err.contains("40"), "{err}");
+    }
+}
