@@ -131,6 +131,33 @@ fn a_small_render_writes_the_image_and_its_statistics() {
 }
 
 #[test]
+fn a_timed_render_works_with_samplers_that_need_no_count() {
+    let dir = tempfile::tempdir().unwrap();
+    for sampler in ["random", "halton", "centre"] {
+        let image = dir.path().join(format!("{sampler}.png"));
+        let out = run(&[
+            "render",
+            "--sampler",
+            sampler,
+            "--time",
+            "0.01",
+            "--width",
+            "8",
+            "--height",
+            "6",
+            "--out",
+            image.to_str().unwrap(),
+        ]);
+        assert!(
+            out.status.success(),
+            "{sampler}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(image.exists());
+    }
+}
+
+#[test]
 fn the_chapter_scene_files_render_with_their_own_filter() {
     let dir = tempfile::tempdir().unwrap();
     for (name, filter, radius) in [
