@@ -20,6 +20,7 @@ pub const CHAPTERS: &[(&str, WriteFigures)] = &[
     ("ch01", ch01_whitted::figures::write_all),
     ("ch02", ch02_monte_carlo::figures::write_all),
     ("ch03", ch03_anti_aliasing::figures::write_all),
+    ("ch04", ch04_depth_of_field::figures::write_all),
 ];
 
 /// Regenerates every chapter's figures under `figures_dir`, starting each chapter from an empty

@@ -13,8 +13,8 @@
 //! density beside it.
 
 use ch02_monte_carlo::warps::{
-    disk_naive_pdf, sample_disk_naive, sample_triangle, sample_uniform_disk_concentric,
-    sample_uniform_disk_polar, uniform_disk_pdf,
+    disk_naive_pdf, sample_disk_naive, sample_uniform_disk_concentric, sample_uniform_disk_polar,
+    uniform_disk_pdf,
 };
 use glam::Vec2;
 use std::f32::consts::TAU;
@@ -141,7 +141,7 @@ pub fn sample_uniform_regular_polygon(u: Vec2, blades: u32, rotation: f32) -> Ve
     // `u.x < 1`, yet `blades * u.x` may round up to `blades`: keep the last triangle then.
     let k = (scaled as u32).min(blades - 1);
     let reused = (scaled - k as f32).clamp(0.0, 1.0);
-    sample_triangle(
+    ch02_monte_carlo::warps::sample_triangle(
         Vec2::new(reused, u.y),
         Vec2::ZERO,
         polygon_corner(k, blades, rotation),

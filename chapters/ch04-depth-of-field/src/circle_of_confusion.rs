@@ -36,7 +36,9 @@ use glam::Vec2;
 /// axis), for a lens of radius `aperture_radius` focused at `focus_distance`, in the tangent
 /// units of the pinhole's `z = 1` plane: `2 R |d - d_f| / (d d_f)`.
 pub fn circle_of_confusion(aperture_radius: f32, focus_distance: f32, depth: f32) -> f32 {
+    // BEGIN SOLUTION
     2.0 * aperture_radius * (depth - focus_distance).abs() / (depth * focus_distance)
+    // END SOLUTION
 }
 // ANCHOR_END: circle_of_confusion
 
@@ -140,7 +142,7 @@ mod tests {
     }
 
     #[test]
-    fn sharp_at_the_focus_and_bounded_far_behind_it() {
+    fn exercise_circle_of_confusion_is_sharp_at_the_focus_and_bounded_far_behind_it() {
         assert_eq!(circle_of_confusion(0.3, 4.0, 4.0), 0.0);
         assert_relative_eq!(
             circle_of_confusion(0.3, 4.0, 1e9),
@@ -151,7 +153,7 @@ mod tests {
     }
 
     #[test]
-    fn traced_rays_blur_a_point_over_the_predicted_circle() {
+    fn exercise_circle_of_confusion_matches_traced_rays() {
         let frame = CameraFrame::look_at(Vec3::ZERO, Vec3::Z, Vec3::Y).unwrap();
         let pinhole = PinholeCamera::new(frame, 40.0, 400, 100);
         let (radius, focus) = (0.15, 4.0);
