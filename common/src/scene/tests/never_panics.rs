@@ -1,12 +1,20 @@
 //! No input, however broken, makes the loader panic.
+//!
+//! Each property runs 256 cases in the test suite. For a longer fuzzing run, set
+//! `SCENE_FUZZ_CASES`, e.g.
+//! `SCENE_FUZZ_CASES=200000 cargo test --release -p common never_panics`.
 
 use std::path::Path;
 
 use proptest::prelude::*;
 
-use super::super::parse_scene;
+use super::super::{parse_obj, parse_scene, world_shapes};
 
 const CORNELL: &str = include_str!("../../../tests/scenes/cornell.xml");
+
+/// A small OBJ mesh with normals, negative indices and a quad.
+const OBJ: &str =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\nf -4 -3 -2\n";
 
 /// One edit of a text: delete, duplicate or replace the character at a position.
 #[derive(Clone, Debug)]
@@ -40,7 +48,9 @@ fn apply(text: &str, edits: &[Edit]) -> String {
 }
 
 fn edit() -> impl Strategy<Value = Edit> {
-    let interesting = prop::sample::select(vec!['<', '>', '/', '"', '$', '0', '-', ' ', 'x', '=']);
+    let interesting = prop::sample::select(vec![
+        '<', '>', '/', '"', '$', '0', '-', ' ', 'x', '=', '\n', '9', 'e', 'f', 'v',
+    ]);
     prop_oneof![
         any::<usize>().prop_map(Edit::Delete),
         any::<usize>().prop_map(Edit::Duplicate),
@@ -48,8 +58,16 @@ fn edit() -> impl Strategy<Value = Edit> {
     ]
 }
 
+/// Cases per property: `SCENE_FUZZ_CASES`, or 256.
+fn cases() -> u32 {
+    std::env::var("SCENE_FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(256)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases(), failure_persistence: None, ..ProptestConfig::default() })]
 
     #[test]
     fn random_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..512)) {
@@ -60,6 +78,17 @@ proptest! {
     #[test]
     fn mutated_cornell_never_panics(edits in prop::collection::vec(edit(), 1..8)) {
         let text = apply(CORNELL, &edits);
-        let _ = parse_scene(&text, Path::new("cornell.xml"), &[]);
+        // A file that still parses must also place its shapes without panicking: a mutated
+        // number can make a transform degenerate or a radius zero.
+        if let Ok(loaded) = parse_scene(&text, Path::new("cornell.xml"), &[]) {
+            for shape in &loaded.scene.shapes {
+                let _ = world_shapes(shape);
+            }
+        }
+    }
+
+    #[test]
+    fn mutated_obj_never_panics(edits in prop::collection::vec(edit(), 1..8)) {
+        let _ = parse_obj(&apply(OBJ, &edits));
     }
 }
