@@ -49,7 +49,7 @@ struct RenderCommand {
     #[arg(long, value_enum)]
     filter: Option<FilterKind>,
     /// Half-width of the filter in pixels [default: the filter's own].
-    #[arg(long, value_name = "PIXELS", value_parser = parse_filter_radius)]
+    #[arg(long, value_name = "PIXELS", allow_negative_numbers = true, value_parser = parse_number)]
     filter_radius: Option<f32>,
     /// Longest path in segments, counting the camera ray (Mitsuba's max_depth)
     /// [default: the scene file's, or 12].
@@ -86,12 +86,6 @@ struct RenderCommand {
     lens_warp: Option<LensWarp>,
     #[command(flatten)]
     args: RenderArgs,
-}
-
-fn parse_filter_radius(text: &str) -> Result<f32, String> {
-    let radius = parse_number(text)?;
-    ch03_anti_aliasing::filters::check_radius(radius)?;
-    Ok(radius)
 }
 
 /// Any number; each option's own rule is checked where the lens is built, with the reason.
