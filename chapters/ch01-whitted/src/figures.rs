@@ -1,7 +1,7 @@
 //! The chapter's figures: what recursion adds, what one ray per pixel misses, Fresnel's
 //! curves, how the ray tree grows, and error against time.
 
-use crate::agreement::{AGREEMENT_SCENES, mitsuba_dir, render_agreement_scene};
+use crate::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
 use crate::optics::fresnel_dielectric;
 use crate::pixel::{CentreSampler, GridSampler};
 use crate::scenes::Builtin;
@@ -10,13 +10,12 @@ use anyhow::Context;
 use common::cli::prepare_output_dir;
 use common::image::Image;
 use common::metrics::{
-    ReferenceRenders, Technique, agreement_table, plot_error_vs_spp, plot_error_vs_time,
-    run_convergence, write_agreement_figure, write_convergence_csv,
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_agreement_figures,
+    write_convergence_csv,
 };
 use common::output::figures::{
     Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
 };
-use common::output::write_text;
 use common::render::RenderSettings;
 use glam::Vec2;
 use std::path::Path;
@@ -343,28 +342,15 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 }
 
 /// Ours next to Mitsuba 3 on the scenes where Whitted's method is exact, with the numbers.
-/// The renders are small (128 x 96) in every quality: the comparison is against stored
-/// Mitsuba renders of that size.
+/// The renders are small (128 x 96) in every quality: they are compared with stored Mitsuba
+/// renders of that size.
 fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
-    let mut rows = Vec::new();
-    for (name, _) in AGREEMENT_SCENES {
-        let renders = ReferenceRenders::load(&mitsuba_dir(), name)?;
-        let ours = render_agreement_scene(name)?;
-        write_agreement_figure(
-            &out.join(format!("mitsuba-{name}.png")),
-            "ours (Whitted)",
-            &ours,
-            &renders,
-            10.0,
-            2,
-        )?;
-        let agreement = renders.agreement(&ours);
-        rows.push((name.to_string(), renders, agreement));
-    }
-    let table: Vec<_> = rows
-        .iter()
-        .map(|(name, renders, agreement)| (name.clone(), renders, *agreement))
-        .collect();
-    write_text(&out.join("mitsuba.md"), &agreement_table(&table))?;
-    Ok(())
+    write_agreement_figures(
+        out,
+        "ours (Whitted)",
+        &scenes_dir(),
+        AGREEMENT_SCENES,
+        &render_scene_file,
+    )
+    .map_err(anyhow::Error::msg)
 }

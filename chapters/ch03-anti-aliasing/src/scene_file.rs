@@ -5,6 +5,7 @@
 //! scene file says about anti-aliasing besides its sample count.
 
 use crate::filters::{FilterKind, ReconstructionFilter};
+use crate::pixel_samplers::PixelSamplerKind;
 use ch01_whitted::scene::Scene;
 use common::scene::{self, SceneDescription};
 
@@ -16,6 +17,8 @@ pub struct ConvertedScene {
     pub filter: ReconstructionFilter,
     /// Samples per pixel the file asks for.
     pub spp: u64,
+    /// The pixel sampler closest to the file's `<sampler>` type.
+    pub sampler: PixelSamplerKind,
     /// Light the method leaves out, and settings it ignores.
     pub notes: Vec<String>,
 }
@@ -28,12 +31,37 @@ pub fn convert(description: &SceneDescription) -> Result<ConvertedScene, String>
     // Chapter 01 would note that it ignores any filter but the box; this chapter does not.
     boxed.sensor.film.filter = scene::ReconstructionFilter::Box;
     let converted = ch01_whitted::scene_file::convert(&boxed)?;
+    let mut notes = converted.notes;
+    let (sampler, note) = sampler_of(&description.sensor.sampler.type_name);
+    notes.extend(note);
     Ok(ConvertedScene {
         scene: converted.scene,
         filter,
         spp: converted.spp,
-        notes: converted.notes,
+        sampler,
+        notes,
     })
+}
+
+/// The chapter's pixel sampler for a Mitsuba `<sampler>` type, and a note when it is only the
+/// closest one: Mitsuba's `independent` is our random sampler and its `stratified` our
+/// stratified one; its `multijitter` and `orthogonal` are refinements of stratification, and
+/// its `ldsampler` a low-discrepancy sequence like our Halton points.
+pub fn sampler_of(type_name: &str) -> (PixelSamplerKind, Option<String>) {
+    let closest = |kind: PixelSamplerKind| {
+        let note = format!(
+            "the file's `{type_name}` sampler is rendered with the closest of this chapter's, `{}`",
+            kind.name()
+        );
+        (kind, Some(note))
+    };
+    match type_name {
+        "independent" => (PixelSamplerKind::Random, None),
+        "stratified" => (PixelSamplerKind::Stratified, None),
+        "multijitter" | "orthogonal" => closest(PixelSamplerKind::Stratified),
+        "ldsampler" => closest(PixelSamplerKind::Halton),
+        _ => closest(PixelSamplerKind::Stratified),
+    }
 }
 
 /// The chapter's filter for a file's `<rfilter>`, with Mitsuba's parameters.

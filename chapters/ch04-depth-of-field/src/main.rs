@@ -1,6 +1,6 @@
 //! `ch04-depth-of-field`: render through a thin lens, or write the chapter's figures.
 
-use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
+use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::aperture::{Aperture, LensWarp};
 use ch04_depth_of_field::lens::Lens;
 use ch04_depth_of_field::scene_file::convert;
@@ -8,7 +8,6 @@ use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{figures, render_with};
 use clap::{Parser, Subcommand};
 use common::cli::{FiguresArgs, RenderArgs, report_error};
-use common::render::Budget;
 use common::scene::load_scene_file;
 use std::process::ExitCode;
 
@@ -42,15 +41,8 @@ struct RenderCommand {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Bokeh, conflicts_with = "scene")]
     builtin: Builtin,
-    /// Where the samples of a pixel go.
-    #[arg(long, value_enum, default_value_t = PixelSamplerKind::Stratified)]
-    sampler: PixelSamplerKind,
-    /// How samples are weighted into pixels [default: the scene file's rfilter, or box].
-    #[arg(long, value_enum)]
-    filter: Option<FilterKind>,
-    /// Half-width of the filter in pixels [default: the filter's own].
-    #[arg(long, value_name = "PIXELS", allow_negative_numbers = true, value_parser = parse_number)]
-    filter_radius: Option<f32>,
+    #[command(flatten)]
+    anti_aliasing: AntiAliasingArgs,
     /// Longest path in segments, counting the camera ray (Mitsuba's max_depth)
     /// [default: the scene file's, or 12].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
@@ -179,60 +171,49 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     if command.args.scene.is_none() && !command.args.define.is_empty() {
         anyhow::bail!("-D sets a parameter of a scene file; it needs --scene FILE.xml");
     }
-    let (mut scene, scene_lens, file_filter, default_spp, scene_name) = match &command.args.scene {
-        Some(path) => {
-            let loaded = load_scene_file(path, &command.args.define)?;
-            for warning in &loaded.warnings {
-                eprintln!("{warning}");
+    let (mut scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
+        match &command.args.scene {
+            Some(path) => {
+                let loaded = load_scene_file(path, &command.args.define)?;
+                for warning in &loaded.warnings {
+                    eprintln!("{warning}");
+                }
+                let converted = convert(&loaded.scene)
+                    .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+                for note in &converted.notes {
+                    eprintln!("note: {note}");
+                }
+                (
+                    converted.scene,
+                    converted.lens,
+                    Some(converted.filter),
+                    Some(converted.sampler),
+                    converted.spp,
+                    path.display().to_string(),
+                )
             }
-            let converted =
-                convert(&loaded.scene).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-            for note in &converted.notes {
-                eprintln!("note: {note}");
-            }
-            (
-                converted.scene,
-                converted.lens,
-                Some(converted.filter),
-                converted.spp,
-                path.display().to_string(),
-            )
-        }
-        None => (
-            command.builtin.build(DEFAULT_DEPTH),
-            command.builtin.default_lens(),
-            None,
-            16,
-            command.builtin.name().to_string(),
-        ),
-    };
+            None => (
+                command.builtin.build(DEFAULT_DEPTH),
+                command.builtin.default_lens(),
+                None,
+                None,
+                16,
+                command.builtin.name().to_string(),
+            ),
+        };
     let lens = lens_of(&command, scene_lens)?;
     if let Some(max_depth) = command.max_depth {
         scene.max_depth = max_depth;
     }
-    let filter = match (command.filter, file_filter) {
-        (Some(kind), _) => ReconstructionFilter::new(kind, command.filter_radius),
-        (None, Some(from_file)) => match command.filter_radius {
-            Some(radius) => ReconstructionFilter::new(from_file.kind(), Some(radius)),
-            None => Ok(from_file),
-        },
-        (None, None) => ReconstructionFilter::new(FilterKind::Box, command.filter_radius),
-    }
-    .map_err(|e| anyhow::anyhow!("--filter-radius: {e}"))?;
+    let filter = command.anti_aliasing.filter(file_filter)?;
+    let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
     let settings = command
         .args
         .settings((scene.camera.width, scene.camera.height), default_spp)?;
-    let spp = match settings.budget {
-        Budget::Samples(spp) => spp,
-        Budget::Seconds(_) if command.sampler == PixelSamplerKind::Stratified => {
-            anyhow::bail!(
-                "--sampler stratified lays out a fixed number of strata, so it needs --spp, not --time (random and halton work with --time)"
-            )
-        }
-        Budget::Seconds(_) => 1,
-    };
-    let sampler = PixelSampler::new(command.sampler, spp, command.args.seed)
-        .map_err(|e| anyhow::anyhow!("--sampler {}: {e}", command.sampler.name()))?;
+    let sampler =
+        command
+            .anti_aliasing
+            .pixel_sampler(sampler_kind, &settings.budget, command.args.seed)?;
     command.args.check_outputs()?;
     let rendered = render_with(&scene, &lens, &settings, &sampler, &filter);
     let aperture = match lens.aperture {
@@ -244,7 +225,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let extra = serde_json::json!({
         "scene": scene_name,
         "max_depth": scene.max_depth,
-        "sampler": command.sampler.name(),
+        "sampler": sampler_kind.name(),
         "filter": filter.kind().name(),
         "filter_radius": filter.half_width(),
         "aperture_radius": lens.aperture_radius,

@@ -20,6 +20,8 @@ pub struct ConvertedScene {
     pub filter: ReconstructionFilter,
     /// Samples per pixel the file asks for.
     pub spp: u64,
+    /// The pixel sampler closest to the file's `<sampler>` type.
+    pub sampler: ch03_anti_aliasing::PixelSamplerKind,
     /// Light the method leaves out, and settings it ignores.
     pub notes: Vec<String>,
 }
@@ -43,6 +45,7 @@ pub fn convert(description: &SceneDescription) -> Result<ConvertedScene, String>
         lens,
         filter: converted.filter,
         spp: converted.spp,
+        sampler: converted.sampler,
         notes: converted.notes,
     })
 }

@@ -217,6 +217,107 @@ pub fn write_agreement_figure(
     comparison_grid(path, &cells, 5, scale)
 }
 
+/// Samples per pixel of the renders compared: ours and the other renderer's second render.
+pub const AGREEMENT_SPP: u64 = 64;
+
+/// Samples per pixel of the other renderer's reference.
+pub const REFERENCE_SPP: u64 = 4096;
+
+/// One scene file of a chapter that is checked against Mitsuba 3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AgreementScene {
+    /// The file's stem in the chapter's `scenes/` folder; the stored renders are in
+    /// `scenes/mitsuba/` under the same name.
+    pub name: &'static str,
+    /// What the scene checks, for messages and the book.
+    pub checks: &'static str,
+    /// The Mitsuba variant that renders it (see [`MITSUBA_VARIANT`](super::MITSUBA_VARIANT)).
+    pub variant: &'static str,
+}
+
+impl AgreementScene {
+    /// The scene file in `scenes_dir`.
+    pub fn file(&self, scenes_dir: &Path) -> PathBuf {
+        scenes_dir.join(format!("{}.xml", self.name))
+    }
+}
+
+/// Where the stored renders of a chapter's scenes are: `scenes/mitsuba/`.
+pub fn stored_renders_dir(scenes_dir: &Path) -> PathBuf {
+    scenes_dir.join("mitsuba")
+}
+
+/// A chapter's render of one scene file at [`AGREEMENT_SPP`] samples per pixel.
+pub type RenderSceneFile<'a> = &'a dyn Fn(&Path) -> Result<Image, String>;
+
+/// Our render of `scene` measured against its stored renders.
+pub fn stored_agreement(
+    scenes_dir: &Path,
+    scene: &AgreementScene,
+    render: RenderSceneFile,
+) -> Result<(Image, ReferenceRenders, Agreement), String> {
+    let renders = ReferenceRenders::load(&stored_renders_dir(scenes_dir), scene.name)
+        .map_err(|e| e.to_string())?;
+    let ours = render(&scene.file(scenes_dir))?;
+    let agreement = renders.agreement(&ours);
+    Ok((ours, renders, agreement))
+}
+
+/// Checks every scene against its stored renders: ours must be as unbiased as the other
+/// renderer's second render (`bias_blocks` within 0.005 of it, or of 1 %) and no noisier
+/// (RMSE within 5 %). Returns a message naming each scene that fails.
+pub fn check_stored_agreement(
+    scenes_dir: &Path,
+    scenes: &[AgreementScene],
+    render: RenderSceneFile,
+) -> Result<(), String> {
+    let mut failures = Vec::new();
+    for scene in scenes {
+        let (_, _, agreement) = stored_agreement(scenes_dir, scene, render)?;
+        if !(agreement.unbiased(0.005) && agreement.noise_no_worse(1.05)) {
+            failures.push(format!("{} ({}): {agreement:?}", scene.name, scene.checks));
+        }
+    }
+    if failures.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "disagreement with Mitsuba on {}",
+            failures.join("; ")
+        ))
+    }
+}
+
+/// Writes the book's comparison figures `mitsuba-<name>.png` and the table `mitsuba.md` for
+/// a chapter's scenes.
+pub fn write_agreement_figures(
+    out: &Path,
+    ours_label: &str,
+    scenes_dir: &Path,
+    scenes: &[AgreementScene],
+    render: RenderSceneFile,
+) -> Result<(), String> {
+    let mut rows = Vec::new();
+    for scene in scenes {
+        let (ours, renders, agreement) = stored_agreement(scenes_dir, scene, render)?;
+        write_agreement_figure(
+            &out.join(format!("mitsuba-{}.png", scene.name)),
+            ours_label,
+            &ours,
+            &renders,
+            10.0,
+            2,
+        )
+        .map_err(|e| e.to_string())?;
+        rows.push((scene.name.to_string(), renders, agreement));
+    }
+    let table: Vec<_> = rows
+        .iter()
+        .map(|(name, renders, agreement)| (name.clone(), renders, *agreement))
+        .collect();
+    write_text(&out.join("mitsuba.md"), &agreement_table(&table)).map_err(|e| e.to_string())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -7,16 +7,27 @@
 use std::path::Path;
 use std::process::Command;
 
-use super::agreement::{ReferenceRenders, RenderProvenance};
+use super::agreement::{
+    AGREEMENT_SPP, AgreementScene, REFERENCE_SPP, ReferenceRenders, RenderProvenance,
+    RenderSceneFile, stored_renders_dir,
+};
 use crate::image::Image;
 use crate::output::read_image;
 
 /// The environment variable naming a Python interpreter with the `mitsuba` package.
 pub const MITSUBA_PYTHON: &str = "MITSUBA_PYTHON";
 
-/// The Mitsuba variant used: RGB rendering on the CPU, like ours (spectral variants turn RGB
-/// into spectra and differ slightly).
+/// The Mitsuba variant used by default: RGB rendering on the CPU, like ours (spectral variants
+/// turn RGB into spectra and differ slightly).
 pub const MITSUBA_VARIANT: &str = "scalar_rgb";
+
+/// The just-in-time compiled RGB variant. Its film evaluates the reconstruction filter
+/// exactly, where the scalar variant looks it up in a table of 31 steps per radius, each step
+/// holding the value at its inner end, so a tent of radius 1.5 weighs a sample 1 pixel away
+/// with 0.355 instead of 1/3: a slightly wider filter, which shows as a bias along edges.
+/// Scenes with a tent or Gaussian filter are compared with this variant. It needs a working
+/// LLVM library.
+pub const MITSUBA_JIT_VARIANT: &str = "llvm_ad_rgb";
 
 /// Loads the scene (argv 1) in the variant (argv 5) with the sample count (argv 3) and `-D`
 /// parameters (argv 6...), renders it with the seed (argv 4) and writes a linear PFM (argv 2).
@@ -39,12 +50,14 @@ pub fn mitsuba_python() -> Option<String> {
     std::env::var(MITSUBA_PYTHON).ok().filter(|p| !p.is_empty())
 }
 
-/// Renders `scene` with Mitsuba 3 at `spp` samples per pixel and `seed`, with scene parameters
-/// `defines` (`name=value`, as `-D` takes them). Returns the image and Mitsuba's version.
+/// Renders `scene` with Mitsuba 3's `variant` at `spp` samples per pixel and `seed`, with scene
+/// parameters `defines` (`name=value`, as `-D` takes them). Returns the image and Mitsuba's
+/// version.
 ///
 /// The scene must declare `<default name="spp" .../>` and use `$spp` for its sample count.
 pub fn render_with_mitsuba(
     python: &str,
+    variant: &str,
     scene: &Path,
     spp: u64,
     seed: u64,
@@ -59,7 +72,7 @@ pub fn render_with_mitsuba(
         .arg(&out)
         .arg(spp.to_string())
         .arg(seed.to_string())
-        .arg(MITSUBA_VARIANT)
+        .arg(variant)
         .args(defines)
         .output()
         .map_err(|e| format!("cannot run {python}: {e}"))?;
@@ -75,10 +88,11 @@ pub fn render_with_mitsuba(
     Ok((image, version))
 }
 
-/// Makes the stored renders of `scene`: a reference at `reference_spp` (seed 1) and a second
-/// render at `spp` (seed 2).
+/// Makes the stored renders of `scene` with Mitsuba's `variant`: a reference at
+/// `reference_spp` (seed 1) and a second render at `spp` (seed 2).
 pub fn make_reference_renders(
     python: &str,
+    variant: &str,
     scene: &Path,
     spp: u64,
     reference_spp: u64,
@@ -86,11 +100,11 @@ pub fn make_reference_renders(
 ) -> Result<ReferenceRenders, String> {
     let seeds = [1, 2];
     let (reference, version) =
-        render_with_mitsuba(python, scene, reference_spp, seeds[0], defines)?;
-    let (equal_spp, _) = render_with_mitsuba(python, scene, spp, seeds[1], defines)?;
+        render_with_mitsuba(python, variant, scene, reference_spp, seeds[0], defines)?;
+    let (equal_spp, _) = render_with_mitsuba(python, variant, scene, spp, seeds[1], defines)?;
     Ok(ReferenceRenders {
         provenance: RenderProvenance {
-            renderer: format!("Mitsuba {version} ({MITSUBA_VARIANT})"),
+            renderer: format!("Mitsuba {version} ({variant})"),
             reference_spp,
             spp,
             seeds,
@@ -98,4 +112,55 @@ pub fn make_reference_renders(
         reference,
         equal_spp,
     })
+}
+
+/// Renders every scene afresh with Mitsuba, compares ours with the new renders (as
+/// [`check_stored_agreement`](super::check_stored_agreement) does with the stored ones) and, with `update`, stores them.
+/// Returns one line per scene with the numbers, and an error naming the scenes that disagree.
+pub fn refresh_agreement(
+    python: &str,
+    scenes_dir: &Path,
+    scenes: &[AgreementScene],
+    render: RenderSceneFile,
+    update: bool,
+) -> Result<Vec<String>, String> {
+    let mut lines = Vec::new();
+    let mut failures = Vec::new();
+    for scene in scenes {
+        let file = scene.file(scenes_dir);
+        let renders = make_reference_renders(
+            python,
+            scene.variant,
+            &file,
+            AGREEMENT_SPP,
+            REFERENCE_SPP,
+            &[],
+        )?;
+        let agreement = renders.agreement(&render(&file)?);
+        lines.push(format!(
+            "{} ({}): RMSE ours {:.2e} / Mitsuba {:.2e}, bias_blocks ours {:.4} / Mitsuba {:.4}",
+            scene.name,
+            scene.checks,
+            agreement.ours.rmse,
+            agreement.other.rmse,
+            agreement.ours.bias_blocks,
+            agreement.other.bias_blocks
+        ));
+        if !(agreement.unbiased(0.005) && agreement.noise_no_worse(1.05)) {
+            failures.push(scene.name);
+        }
+        if update {
+            renders
+                .save(&stored_renders_dir(scenes_dir), scene.name)
+                .map_err(|e| e.to_string())?;
+        }
+    }
+    if failures.is_empty() {
+        Ok(lines)
+    } else {
+        Err(format!(
+            "{}\ndisagreement on {failures:?}",
+            lines.join("\n")
+        ))
+    }
 }

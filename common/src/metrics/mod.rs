@@ -14,14 +14,16 @@ mod mitsuba;
 mod plots;
 
 pub use agreement::{
-    Agreement, Comparison, ReferenceRenders, RenderProvenance, agreement_table,
-    write_agreement_figure,
+    AGREEMENT_SPP, Agreement, AgreementScene, Comparison, REFERENCE_SPP, ReferenceRenders,
+    RenderProvenance, RenderSceneFile, agreement_table, check_stored_agreement, stored_agreement,
+    stored_renders_dir, write_agreement_figure, write_agreement_figures,
 };
 pub use bias_blocks::{BIAS_BLOCK_SIZE, BIAS_THRESHOLD, bias_blocks};
 pub use convergence::{ConvergenceRecord, Technique, run_convergence};
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
 pub use mitsuba::{
-    MITSUBA_PYTHON, MITSUBA_VARIANT, make_reference_renders, mitsuba_python, render_with_mitsuba,
+    MITSUBA_JIT_VARIANT, MITSUBA_PYTHON, MITSUBA_VARIANT, make_reference_renders, mitsuba_python,
+    refresh_agreement, render_with_mitsuba,
 };
 pub use plots::{plot_error_vs_spp, plot_error_vs_time, series_by_technique};
