@@ -88,6 +88,7 @@ pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, Sce
     } else {
         CameraModel::Perspective
     };
+    let (to_world, to_world_keyframes) = properties.transform_or_animation(reader, "to_world")?;
     let sensor = Sensor {
         model,
         fov_x_degrees,
@@ -95,9 +96,8 @@ pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, Sce
         far_clip: properties.float(reader, "far_clip")?.unwrap_or(10_000.0),
         shutter_open: properties.float(reader, "shutter_open")?.unwrap_or(0.0),
         shutter_close: properties.float(reader, "shutter_close")?.unwrap_or(0.0),
-        to_world: properties
-            .transform(reader, "to_world")?
-            .unwrap_or(Mat4::IDENTITY),
+        to_world: to_world.unwrap_or(Mat4::IDENTITY),
+        to_world_keyframes,
         film,
         sampler,
     };

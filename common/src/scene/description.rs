@@ -68,6 +68,8 @@ pub enum PropertyValue {
     Vector(Vec3),
     /// `<transform>`, composed into one matrix.
     Transform(Mat4),
+    /// `<animation>` (the workbook's extension): `(time, matrix)` keyframes, times increasing.
+    Animation(Vec<(f32, Mat4)>),
 }
 
 /// The camera model of a sensor.
@@ -101,7 +103,12 @@ pub struct Sensor {
     /// End of the shutter interval (default 0: no motion blur).
     pub shutter_close: f32,
     /// Camera to world. Camera space has +z forward, +y up and **+x to the image's left**.
+    /// For a moving camera, the first keyframe's matrix.
     pub to_world: Mat4,
+    /// A moving camera's `(time, camera to world)` keyframes, from an
+    /// `<animation name="to_world">` (the workbook's extension, see [`ShapeDescription`]);
+    /// empty for a camera that does not move.
+    pub to_world_keyframes: Vec<(f32, Mat4)>,
     /// The image the camera records.
     pub film: FilmDescription,
     /// How many samples each pixel gets, and from which seed.
@@ -156,8 +163,17 @@ pub struct SamplerDescription {
 pub struct ShapeDescription {
     /// The geometry in the shape's own space.
     pub geometry: ShapeGeometry,
-    /// Object to world. For a sphere, `center` and `radius` are applied *before* it.
+    /// Object to world. For a sphere, `center` and `radius` are applied *before* it. For a
+    /// moving shape, the first keyframe's matrix.
     pub to_world: Mat4,
+    /// A moving shape's `(time, object to world)` keyframes, at least two, with strictly
+    /// increasing times, each matrix invertible; empty for a shape that does not move.
+    ///
+    /// Mitsuba 3 has no animated transforms: this is the workbook's own extension, written as
+    /// Mitsuba 0.6 wrote it, `<animation name="to_world">` holding `<transform time="...">`
+    /// keyframes in place of `<transform name="to_world">`. Chapter 05 renders it; earlier
+    /// chapters refuse it.
+    pub to_world_keyframes: Vec<(f32, Mat4)>,
     /// The material: inline, referenced, or Mitsuba's default diffuse 0.5.
     pub bsdf: Bsdf,
     /// The area light, when the shape glows.

@@ -20,7 +20,11 @@
 //! - `bsdf`: `diffuse`, `conductor`, `dielectric`, `twosided`; other types are kept raw.
 //! - `emitter`: `area` (in a shape), `point`, `constant`.
 //! - `transform`: `lookat`, `translate`, `rotate`, `scale`, `matrix`.
+//! - `animation` (the workbook's extension, in Mitsuba 0.6's syntax, for chapter 05's motion
+//!   blur): `<animation name="to_world">` with `<transform time="...">` keyframes, in a shape
+//!   or a sensor.
 
+mod animation;
 mod camera;
 mod description;
 mod document;

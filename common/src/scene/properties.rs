@@ -8,11 +8,15 @@
 use glam::{Mat4, Vec3};
 use roxmltree::Node;
 
+use super::animation::read_animation;
 use super::description::PropertyValue;
 use super::error::{SceneError, TextPosition};
 use super::reader::Reader;
 use super::transform::read_transform;
 use super::values::{parse_boolean, parse_float, parse_integer, parse_rgb, parse_vec3};
+
+/// `(time, matrix)` keyframes of an `<animation>`.
+type Keyframes = Vec<(f32, Mat4)>;
 
 /// Elements that are objects rather than properties.
 const OBJECT_TAGS: &[&str] = &[
@@ -174,6 +178,35 @@ impl<'a, 'input> Properties<'a, 'input> {
         })
     }
 
+    /// An `<animation>`: its keyframes.
+    pub fn animation(
+        &mut self,
+        reader: &Reader,
+        name: &str,
+    ) -> Result<Option<Vec<(f32, Mat4)>>, SceneError> {
+        self.typed(reader, name, "an <animation>", |value| match value {
+            PropertyValue::Animation(keyframes) => Some(keyframes.clone()),
+            _ => None,
+        })
+    }
+
+    /// A transform that may move: a `<transform>` (no keyframes) or an `<animation>` (its
+    /// first keyframe's matrix, and the keyframes).
+    pub fn transform_or_animation(
+        &mut self,
+        reader: &Reader,
+        name: &str,
+    ) -> Result<(Option<Mat4>, Keyframes), SceneError> {
+        let is_animation = self
+            .list
+            .iter()
+            .any(|p| p.name == name && matches!(p.value, PropertyValue::Animation(_)));
+        if is_animation && let Some(keyframes) = self.animation(reader, name)? {
+            return Ok((Some(keyframes[0].1), keyframes));
+        }
+        Ok((self.transform(reader, name)?, Vec::new()))
+    }
+
     /// Takes every property as written, for plugins kept as `Other` (so none is warned about).
     pub fn take_raw(&mut self) -> Vec<(String, PropertyValue)> {
         self.list.drain(..).map(|p| (p.name, p.value)).collect()
@@ -207,11 +240,12 @@ fn read_value(reader: &Reader, node: Node) -> Result<PropertyValue, SceneError> 
         "point" => read_xyz(reader, node).map(PropertyValue::Point),
         "vector" => read_xyz(reader, node).map(PropertyValue::Vector),
         "transform" => read_transform(reader, node).map(PropertyValue::Transform),
+        "animation" => read_animation(reader, node).map(PropertyValue::Animation),
         _ => Err(reader.error(
             node,
             format!(
                 "unknown element <{tag}>: expected a property (float, integer, boolean, string, \
-                 rgb, point, vector, transform) or an object ({})",
+                 rgb, point, vector, transform, animation) or an object ({})",
                 OBJECT_TAGS.join(", ")
             ),
         )),
@@ -243,5 +277,6 @@ fn kind_name(value: &PropertyValue) -> &'static str {
         PropertyValue::Point(_) => "a <point>",
         PropertyValue::Vector(_) => "a <vector>",
         PropertyValue::Transform(_) => "a <transform>",
+        PropertyValue::Animation(_) => "an <animation>",
     }
 }

@@ -57,9 +57,8 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
             ));
         }
     };
-    let to_world = properties
-        .transform(reader, "to_world")?
-        .unwrap_or(Mat4::IDENTITY);
+    let (to_world, to_world_keyframes) = properties.transform_or_animation(reader, "to_world")?;
+    let to_world = to_world.unwrap_or(Mat4::IDENTITY);
     let flip_normals = properties.boolean(reader, "flip_normals")?.unwrap_or(false);
 
     let (emitter_nodes, bsdf_nodes): (Vec<Node>, Vec<Node>) = properties
@@ -93,6 +92,7 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
     Ok(ShapeDescription {
         geometry,
         to_world,
+        to_world_keyframes,
         bsdf,
         emitter,
         flip_normals,

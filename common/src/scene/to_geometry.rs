@@ -142,6 +142,7 @@ mod tests {
         ShapeDescription {
             geometry,
             to_world,
+            to_world_keyframes: Vec::new(),
             bsdf: Bsdf::mitsuba_default(),
             emitter: None,
             flip_normals: false,

@@ -134,6 +134,79 @@ const CORPUS: &[Broken] = &[
         line: 2,
     },
     Broken {
+        name: "animation with one keyframe",
+        input: Body(
+            "<shape type=\"cube\">\n<animation name=\"to_world\">\
+             <transform time=\"0\"><translate x=\"1\"/></transform></animation></shape>",
+        ),
+        fragment: "needs at least two <transform time=",
+        line: 3,
+    },
+    Broken {
+        name: "animation times not increasing",
+        input: Body(
+            "<shape type=\"cube\"><animation name=\"to_world\">\
+             <transform time=\"0.5\"/>\n<transform time=\"0.5\"/></animation></shape>",
+        ),
+        fragment: "keyframe times must increase: time 0.5 follows time 0.5",
+        line: 3,
+    },
+    Broken {
+        name: "animation keyframe without time",
+        input: Body(
+            "<shape type=\"cube\"><animation name=\"to_world\"><transform time=\"0\"/>\n\
+             <transform><translate x=\"1\"/></transform></animation></shape>",
+        ),
+        fragment: "needs a \"time\" attribute",
+        line: 3,
+    },
+    Broken {
+        name: "animation keyframe degenerate",
+        input: Body(
+            "<shape type=\"cube\"><animation name=\"to_world\"><transform time=\"0\"/>\
+             <transform time=\"1\">\n<scale x=\"0\"/></transform></animation></shape>",
+        ),
+        fragment: "<scale> by zero",
+        line: 3,
+    },
+    Broken {
+        name: "animation keyframe singular matrix",
+        input: Body(
+            "<sensor type=\"perspective\"><float name=\"fov\" value=\"40\"/>\
+             <animation name=\"to_world\"><transform time=\"0\"/><transform time=\"1\">\n\
+             <matrix value=\"1 0 0 0 1 0 0 0 0 0 0 0 0 0 0 1\"/></transform></animation></sensor>",
+        ),
+        fragment: "<matrix> is not invertible",
+        line: 3,
+    },
+    Broken {
+        name: "animation with a stray element",
+        input: Body(
+            "<shape type=\"cube\"><animation name=\"to_world\">\n\
+             <translate x=\"1\"/></animation></shape>",
+        ),
+        fragment: "<translate> is not allowed in an <animation>",
+        line: 3,
+    },
+    Broken {
+        name: "animation and transform both",
+        input: Body(
+            "<shape type=\"cube\"><transform name=\"to_world\"/>\n<animation name=\"to_world\">\
+             <transform time=\"0\"/><transform time=\"1\"/></animation></shape>",
+        ),
+        fragment: "\"to_world\" of the cube shape is given twice",
+        line: 3,
+    },
+    Broken {
+        name: "animation where a float belongs",
+        input: Body(
+            "<shape type=\"sphere\">\n<animation name=\"radius\"><transform time=\"0\"/>\
+             <transform time=\"1\"/></animation></shape>",
+        ),
+        fragment: "must be a <float>, found an <animation>",
+        line: 3,
+    },
+    Broken {
         name: "no sensor",
         input: Whole("<scene version=\"3.0.0\"></scene>"),
         fragment: "no <sensor>",

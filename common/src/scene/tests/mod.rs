@@ -1,5 +1,6 @@
 //! Tests of the scene loader.
 
+mod animation;
 mod broken_files;
 mod cornell;
 mod never_panics;
