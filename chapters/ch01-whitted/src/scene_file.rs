@@ -63,6 +63,12 @@ pub fn convert(description: &SceneDescription) -> Result<ConvertedScene, String>
             "the thinlens camera has an aperture of radius {aperture_radius}: depth of field needs a lens, which chapter 04 (ch04-depth-of-field) brings"
         ));
     }
+    if !sensor.to_world_keyframes.is_empty() {
+        return Err(
+            "the sensor moves (an <animation> of its to_world): a moving camera blurs the image over the shutter interval, which chapter 05 (ch05-motion-blur) brings"
+                .to_string(),
+        );
+    }
     if sensor.film.filter != ReconstructionFilter::Box {
         notes.push(format!(
             "the film's {:?} reconstruction filter belongs to chapter 03; chapter 01 averages each pixel's own samples (a box filter)",
@@ -89,6 +95,13 @@ pub fn convert(description: &SceneDescription) -> Result<ConvertedScene, String>
         if shape.emitter.is_some() {
             return Err(format!(
                 "shape {} ({}) is an area light: lights with an area (and their soft shadows) come in chapter 07 (ch07-soft-shadows); chapter 01 knows point lights",
+                index + 1,
+                shape.position
+            ));
+        }
+        if !shape.to_world_keyframes.is_empty() {
+            return Err(format!(
+                "shape {} ({}) moves (an <animation> of its to_world): moving objects and motion blur come in chapter 05 (ch05-motion-blur)",
                 index + 1,
                 shape.position
             ));

@@ -185,6 +185,38 @@ fn features_of_later_chapters_are_refused_with_their_chapter() {
     );
 }
 
+/// Motion (the workbook's `<animation>` extension) is chapter 05's; chapters 01, 03 and 04
+/// convert through this function, so this one refusal covers them all.
+#[test]
+fn moving_shapes_and_cameras_are_refused_with_chapter_05() {
+    let keyframes = r#"<animation name="to_world">
+            <transform time="0"><translate x="-1"/></transform>
+            <transform time="1"><translate x="1"/></transform>
+        </animation>"#;
+    let moving_shape = scene_with("", &format!(r#"<shape type="sphere">{keyframes}</shape>"#));
+    let moving_sensor = format!(
+        r#"<scene version="3.0.0">
+    <sensor type="perspective"><float name="fov" value="45"/>{keyframes}</sensor>
+    <shape type="sphere"/>
+</scene>"#
+    );
+    for (text, expected) in [
+        (moving_shape, "shape 1 (line 7, column 5) moves"),
+        (moving_sensor, "the sensor moves"),
+    ] {
+        let loaded =
+            parse_scene(&text, Path::new("test.xml"), &[]).expect("the file itself is valid");
+        let error = convert(&loaded.scene)
+            .err()
+            .unwrap_or_else(|| panic!("accepted: {text}"));
+        assert!(
+            error.contains(expected),
+            "expected `{expected}` in: {error}"
+        );
+        assert!(error.contains("chapter 05 (ch05-motion-blur)"), "{error}");
+    }
+}
+
 #[test]
 fn broken_scene_files_are_refused_by_the_binary() {
     let dir = tempfile::tempdir().unwrap();
