@@ -3,7 +3,8 @@
 use crate::camera::PinholeCamera;
 use crate::light::PointLight;
 use crate::material::Material;
-use common::geometry::{Geometry, Shape, TriangleMesh};
+use common::Ray;
+use common::geometry::{Geometry, Shape, SurfaceHit, TriangleMesh};
 use glam::Vec3;
 
 /// Everything the tracer needs to know about the world.
@@ -23,6 +24,39 @@ pub struct Scene {
     /// `max_depth`: 1 sees only the background, 2 adds direct light (the shadow ray is the
     /// second segment), each further step one more mirror or glass bounce.
     pub max_depth: u32,
+}
+
+// ANCHOR: world
+/// What the tracer asks of the world: the nearest surface on a ray, and whether a shadow ray
+/// is blocked. Materials, lights and the background come from [`World::scene`].
+///
+/// Chapter 01's [`Scene`] answers from its static geometry. A later chapter adds what it
+/// needs behind the same two questions (chapter 05: objects that move with the ray's
+/// `time`) and reuses the tracer as it is. A hit's `shape` indexes the scene's `materials`.
+pub trait World: Sync {
+    /// The materials, lights, background and depth limit.
+    fn scene(&self) -> &Scene;
+    /// The nearest hit with `0 < t < ray.t_max`.
+    fn intersect(&self, ray: &Ray) -> Option<SurfaceHit>;
+    /// Whether anything lies on the ray before `ray.t_max`.
+    fn occluded(&self, ray: &Ray) -> bool;
+}
+// ANCHOR_END: world
+
+impl World for Scene {
+    fn scene(&self) -> &Scene {
+        self
+    }
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        self.geometry.intersect(ray)
+    }
+
+    #[inline]
+    fn occluded(&self, ray: &Ray) -> bool {
+        self.geometry.occluded(ray)
+    }
 }
 
 /// Collects shapes and materials in matching order.

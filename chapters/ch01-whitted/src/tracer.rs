@@ -8,7 +8,7 @@
 
 use crate::material::Material;
 use crate::optics::{fresnel_dielectric, reflect, refract};
-use crate::scene::Scene;
+use crate::scene::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
@@ -17,10 +17,11 @@ use std::f32::consts::FRAC_1_PI;
 
 // ANCHOR: trace
 /// The radiance arriving along `ray`, which is segment number `depth` of its path (the camera
-/// ray is segment 1).
-pub fn trace(scene: &Scene, ray: &Ray, depth: u32, counters: &mut SampleCounters) -> Vec3 {
+/// ray is segment 1). Every ray it spawns keeps the ray's shutter `time`.
+pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCounters) -> Vec3 {
     counters.rays += 1;
-    let Some(hit) = scene.geometry.intersect(ray) else {
+    let scene = world.scene();
+    let Some(hit) = world.intersect(ray) else {
         return scene.background;
     };
     if depth >= scene.max_depth {
@@ -29,13 +30,13 @@ pub fn trace(scene: &Scene, ray: &Ray, depth: u32, counters: &mut SampleCounters
     }
     match scene.materials[hit.shape as usize] {
         Material::Diffuse { albedo, two_sided } => {
-            direct_light(scene, ray, &hit, albedo, two_sided, counters)
+            direct_light(world, ray, &hit, albedo, two_sided, counters)
         }
         Material::CheckeredDiffuse {
             checkerboard,
             two_sided,
         } => direct_light(
-            scene,
+            world,
             ray,
             &hit,
             checkerboard.eval(hit.uv),
@@ -47,10 +48,10 @@ pub fn trace(scene: &Scene, ray: &Ray, depth: u32, counters: &mut SampleCounters
                 return Vec3::ZERO; // mirrors reflect on their front side only, as in Mitsuba
             }
             let reflected = hit.spawn_ray(reflect(ray.dir, hit.n), ray.time);
-            reflectance * trace(scene, &reflected, depth + 1, counters)
+            reflectance * trace(world, &reflected, depth + 1, counters)
         }
         Material::Dielectric { int_ior, ext_ior } => {
-            dielectric(scene, ray, &hit, int_ior, ext_ior, depth, counters)
+            dielectric(world, ray, &hit, int_ior, ext_ior, depth, counters)
         }
     }
 }
@@ -59,8 +60,8 @@ pub fn trace(scene: &Scene, ray: &Ray, depth: u32, counters: &mut SampleCounters
 // ANCHOR: direct_light
 /// Light reflected by a matte surface from every point light it sees: `albedo / pi` times
 /// the irradiance `I cos(theta) / r^2`, where a shadow ray finds nothing in the way.
-fn direct_light(
-    scene: &Scene,
+fn direct_light<W: World>(
+    world: &W,
     ray: &Ray,
     hit: &SurfaceHit,
     albedo: Vec3,
@@ -75,7 +76,7 @@ fn direct_light(
         return Vec3::ZERO; // the back of a one-sided surface is black
     };
     let mut radiance = Vec3::ZERO;
-    for light in &scene.lights {
+    for light in &world.scene().lights {
         let to_light = light.position - hit.p;
         let distance_squared = to_light.length_squared();
         let cos_theta = normal.dot(to_light) / distance_squared.sqrt();
@@ -84,10 +85,7 @@ fn direct_light(
             continue; // behind the surface, or the light sits on it
         }
         counters.rays += 1;
-        if scene
-            .geometry
-            .occluded(&hit.spawn_ray_to(light.position, ray.time))
-        {
+        if world.occluded(&hit.spawn_ray_to(light.position, ray.time)) {
             continue; // in shadow: hard-edged, since the light is a point
         }
         radiance += albedo * FRAC_1_PI * light.intensity * cos_theta / distance_squared;
@@ -99,8 +97,8 @@ fn direct_light(
 // ANCHOR: dielectric
 /// Glass: a Fresnel-weighted sum of the reflected and the refracted ray. Radiance crossing
 /// into a denser medium is squeezed into a narrower cone, so it is scaled by `(eta_i/eta_t)^2`.
-fn dielectric(
-    scene: &Scene,
+fn dielectric<W: World>(
+    world: &W,
     ray: &Ray,
     hit: &SurfaceHit,
     int_ior: f32,
@@ -119,13 +117,13 @@ fn dielectric(
     let mut radiance = Vec3::ZERO;
     if reflectance > 0.0 {
         let reflected = hit.spawn_ray(reflect(ray.dir, normal), ray.time);
-        radiance += reflectance * trace(scene, &reflected, depth + 1, counters);
+        radiance += reflectance * trace(world, &reflected, depth + 1, counters);
     }
     if reflectance < 1.0
         && let Some(dir) = refract(ray.dir, normal, eta)
     {
         let refracted = hit.spawn_ray(dir, ray.time);
-        radiance += (1.0 - reflectance) * eta * eta * trace(scene, &refracted, depth + 1, counters);
+        radiance += (1.0 - reflectance) * eta * eta * trace(world, &refracted, depth + 1, counters);
     }
     radiance
 }
