@@ -15,6 +15,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod agreement;
 pub mod aperture;
 pub mod circle_of_confusion;
 pub mod figures;

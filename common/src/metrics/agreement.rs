@@ -150,6 +150,11 @@ impl Agreement {
     pub fn noise_no_worse(&self, factor: f64) -> bool {
         self.ours.rmse <= factor * self.other.rmse
     }
+
+    /// Both, with the workbook's tolerances [`BIAS_SLACK`] and [`NOISE_TOLERANCE`].
+    pub fn holds(&self) -> bool {
+        self.unbiased(BIAS_SLACK) && self.noise_no_worse(NOISE_TOLERANCE)
+    }
 }
 
 /// The rows of a Markdown table for the book, one per scene: name, sample count, our RMSE and
@@ -217,6 +222,16 @@ pub fn write_agreement_figure(
     comparison_grid(path, &cells, 5, scale)
 }
 
+/// How much higher our RMSE may be than the other renderer's second render and still count as
+/// "no noisier": the RMSE of a single 64-spp image of the same estimator varies by about 5 %
+/// from seed to seed (measured on chapter 03's tent scene over five seeds: 2.59e-4 to
+/// 2.81e-4), so two equally noisy renders differ by up to 10-15 %.
+pub const NOISE_TOLERANCE: f64 = 1.15;
+
+/// How much higher our `bias_blocks` score may be than the other renderer's (or than 1 %,
+/// whichever is larger): a few blocks in a few hundred pass 3 standard errors by chance.
+pub const BIAS_SLACK: f64 = 0.005;
+
 /// Samples per pixel of the renders compared: ours and the other renderer's second render.
 pub const AGREEMENT_SPP: u64 = 64;
 
@@ -264,8 +279,8 @@ pub fn stored_agreement(
 }
 
 /// Checks every scene against its stored renders: ours must be as unbiased as the other
-/// renderer's second render (`bias_blocks` within 0.005 of it, or of 1 %) and no noisier
-/// (RMSE within 5 %). Returns a message naming each scene that fails.
+/// renderer's second render ([`BIAS_SLACK`]) and no noisier ([`NOISE_TOLERANCE`]). Returns a
+/// message naming each scene that fails.
 pub fn check_stored_agreement(
     scenes_dir: &Path,
     scenes: &[AgreementScene],
@@ -274,7 +289,7 @@ pub fn check_stored_agreement(
     let mut failures = Vec::new();
     for scene in scenes {
         let (_, _, agreement) = stored_agreement(scenes_dir, scene, render)?;
-        if !(agreement.unbiased(0.005) && agreement.noise_no_worse(1.05)) {
+        if !agreement.holds() {
             failures.push(format!("{} ({}): {agreement:?}", scene.name, scene.checks));
         }
     }

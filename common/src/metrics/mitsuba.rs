@@ -146,7 +146,7 @@ pub fn refresh_agreement(
             agreement.ours.bias_blocks,
             agreement.other.bias_blocks
         ));
-        if !(agreement.unbiased(0.005) && agreement.noise_no_worse(1.05)) {
+        if !agreement.holds() {
             failures.push(scene.name);
         }
         if update {

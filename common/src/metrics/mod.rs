@@ -14,9 +14,10 @@ mod mitsuba;
 mod plots;
 
 pub use agreement::{
-    AGREEMENT_SPP, Agreement, AgreementScene, Comparison, REFERENCE_SPP, ReferenceRenders,
-    RenderProvenance, RenderSceneFile, agreement_table, check_stored_agreement, stored_agreement,
-    stored_renders_dir, write_agreement_figure, write_agreement_figures,
+    AGREEMENT_SPP, Agreement, AgreementScene, BIAS_SLACK, Comparison, NOISE_TOLERANCE,
+    REFERENCE_SPP, ReferenceRenders, RenderProvenance, RenderSceneFile, agreement_table,
+    check_stored_agreement, stored_agreement, stored_renders_dir, write_agreement_figure,
+    write_agreement_figures,
 };
 pub use bias_blocks::{BIAS_BLOCK_SIZE, BIAS_THRESHOLD, bias_blocks};
 pub use convergence::{ConvergenceRecord, Technique, run_convergence};
