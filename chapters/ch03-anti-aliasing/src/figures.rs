@@ -74,6 +74,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     filter_profiles(out).context("the filter profiles")?;
     edge_pixel(out, &quality).context("the edge-pixel error plot")?;
     convergence(out, &quality).context("the error-against-time figures")?;
+    mitsuba_agreement(out).context("the comparison with Mitsuba 3")?;
     eprintln!("ch03 figures written to {}", out.display());
     Ok(())
 }
@@ -332,4 +333,17 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &records,
     )?;
     Ok(())
+}
+
+/// Ours next to Mitsuba 3 on the chapter's scene files, with the numbers. The renders are at
+/// the files' own small sizes in every quality: they are compared with stored Mitsuba renders.
+fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
+    common::metrics::write_agreement_figures(
+        out,
+        "ours",
+        &crate::agreement::scenes_dir(),
+        crate::agreement::AGREEMENT_SCENES,
+        &crate::agreement::render_scene_file,
+    )
+    .map_err(anyhow::Error::msg)
 }

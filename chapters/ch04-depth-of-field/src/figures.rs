@@ -98,6 +98,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     lens_samples(out, &quality).context("the lens-sample plot")?;
     circle_of_confusion_plot(out, &quality).context("the circle-of-confusion plot")?;
     convergence(out, &quality, &scene).context("the error-against-time figures")?;
+    mitsuba_agreement(out).context("the comparison with Mitsuba 3")?;
     eprintln!("ch04 figures written to {}", out.display());
     Ok(())
 }
@@ -465,4 +466,17 @@ mod tests {
         let back = project(&camera, ray.at(5.0)).unwrap();
         assert!((back - p_film).length() < 1e-3, "{back}");
     }
+}
+
+/// Ours next to Mitsuba 3 on the chapter's scene files, with the numbers. The renders are at
+/// the files' own small sizes in every quality: they are compared with stored Mitsuba renders.
+fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
+    common::metrics::write_agreement_figures(
+        out,
+        "ours (thin lens)",
+        &crate::agreement::scenes_dir(),
+        crate::agreement::AGREEMENT_SCENES,
+        &crate::agreement::render_scene_file,
+    )
+    .map_err(anyhow::Error::msg)
 }
