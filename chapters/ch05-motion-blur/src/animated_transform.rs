@@ -1,0 +1,339 @@
+//! Transforms that change with time: keyframes, interpolated the way pbrt's
+//! `AnimatedTransform` does.
+//!
+//! Lerping two matrices does not give a transform in between: halfway between a rotation by
+//! 0 and one by 90 degrees, the lerped matrix shrinks the object by `cos 45° ≈ 0.71` and
+//! shears it. So every keyframe matrix is split into a translation `T`, a rotation `R` and a
+//! scale `S` (`M = T R S`, a polar decomposition), and the parts are interpolated each in its
+//! own way: `T` and `S` linearly, `R` as a quaternion along the great circle (slerp), which
+//! turns at constant speed about a fixed axis.
+//!
+//! Slerp takes the shorter way round, so two neighbouring keyframes must differ by less than
+//! half a turn; a spin by one turn or more is written as several keyframes (see
+//! [`AnimatedTransform::spin`]).
+
+use glam::{DMat3, Mat3, Mat4, Quat, Vec3};
+use std::fmt;
+
+/// A matrix split into translation, rotation and scale: `M = T R S`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Decomposed {
+    /// The translation `T`.
+    pub translation: Vec3,
+    /// The rotation `R`, a unit quaternion.
+    pub rotation: Quat,
+    /// What is left, `S = R^-1 M`: symmetric, a scale along some axes (and a reflection when
+    /// the determinant is negative).
+    pub scale: Mat3,
+}
+
+impl Decomposed {
+    /// Splits `m` (invertible, affine). The rotation comes from the polar decomposition,
+    /// iterated as in pbrt: `R ← (R + R^-T) / 2` converges to the orthogonal factor.
+    pub fn new(m: Mat4) -> Self {
+        let m3: DMat3 = Mat3::from_mat4(m).as_dmat3();
+        let mut r = m3;
+        for _ in 0..100 {
+            let next = 0.5 * (r + r.inverse().transpose());
+            let change = (0..3)
+                .map(|i| (next.col(i) - r.col(i)).abs().element_sum())
+                .fold(0.0, f64::max);
+            r = next;
+            if change < 1e-12 {
+                break;
+            }
+        }
+        // A reflection is an orthogonal matrix with determinant -1, which no quaternion
+        // describes; moving the sign into the scale keeps `R` a rotation and `R S` unchanged.
+        if r.determinant() < 0.0 {
+            r = -r;
+        }
+        let scale = r.transpose() * m3;
+        Self {
+            translation: m.w_axis.truncate(),
+            rotation: Quat::from_mat3(&r.as_mat3()).normalize(),
+            scale: scale.as_mat3(),
+        }
+    }
+
+    /// The matrix `T R S`.
+    pub fn matrix(&self) -> Mat4 {
+        Mat4::from_translation(self.translation)
+            * Mat4::from_quat(self.rotation)
+            * Mat4::from_mat3(self.scale)
+    }
+}
+
+/// One keyframe: the matrix at a time, and its parts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Keyframe {
+    /// When.
+    pub time: f32,
+    /// Object to world at that time, exactly as given.
+    pub matrix: Mat4,
+    /// Its parts.
+    pub parts: Decomposed,
+}
+
+/// Why keyframes are refused.
+#[derive(Clone, Debug, PartialEq)]
+pub enum MotionError {
+    /// No keyframe at all.
+    NoKeyframes,
+    /// Times must be finite and strictly increasing.
+    TimesNotIncreasing {
+        /// The offending time.
+        time: f32,
+    },
+    /// A matrix that cannot be inverted (or is not finite).
+    Degenerate {
+        /// The keyframe's time.
+        time: f32,
+    },
+    /// Two neighbours half a turn apart: the shorter way round is not defined.
+    HalfTurn {
+        /// The later keyframe's time.
+        time: f32,
+    },
+}
+
+impl fmt::Display for MotionError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MotionError::NoKeyframes => write!(f, "a motion needs at least one keyframe"),
+            MotionError::TimesNotIncreasing { time } => write!(
+                f,
+                "keyframe times must be finite and increasing (time {time})"
+            ),
+            MotionError::Degenerate { time } => {
+                write!(f, "the keyframe at time {time} is not invertible")
+            }
+            MotionError::HalfTurn { time } => write!(
+                f,
+                "the keyframe at time {time} is turned half a turn from the one before: \
+                 the way round is ambiguous; add a keyframe in between"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for MotionError {}
+
+/// A transform given at keyframes and interpolated in between; constant before the first
+/// keyframe and after the last.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AnimatedTransform {
+    keyframes: Vec<Keyframe>,
+}
+
+impl AnimatedTransform {
+    /// A transform that does not move.
+    pub fn fixed(matrix: Mat4) -> Self {
+        Self::new(&[(0.0, matrix)]).expect("one invertible keyframe")
+    }
+
+    /// Keyframes `(time, matrix)`: times strictly increasing, matrices invertible, neighbours
+    /// less than half a turn apart.
+    pub fn new(keyframes: &[(f32, Mat4)]) -> Result<Self, MotionError> {
+        if keyframes.is_empty() {
+            return Err(MotionError::NoKeyframes);
+        }
+        let mut out: Vec<Keyframe> = Vec::with_capacity(keyframes.len());
+        for &(time, matrix) in keyframes {
+            let later = out.last().is_none_or(|previous| time > previous.time);
+            if !time.is_finite() || !later {
+                return Err(MotionError::TimesNotIncreasing { time });
+            }
+            let determinant = matrix.determinant();
+            if !matrix.is_finite() || !determinant.is_finite() || determinant == 0.0 {
+                return Err(MotionError::Degenerate { time });
+            }
+            let parts = Decomposed::new(matrix);
+            if let Some(previous) = out.last() {
+                // |dot| = cos(angle / 2): near 0 means near half a turn.
+                if previous.parts.rotation.dot(parts.rotation).abs() < 1e-3 {
+                    return Err(MotionError::HalfTurn { time });
+                }
+            }
+            out.push(Keyframe {
+                time,
+                matrix,
+                parts,
+            });
+        }
+        Ok(Self { keyframes: out })
+    }
+
+    /// A spin by `turns` full turns (any number, negative for the other way) about the unit
+    /// `axis` through the origin, from `start` to `end`, followed by `then` (a placement).
+    /// Written with a keyframe every quarter turn, so slerp never has to guess the way round.
+    pub fn spin(axis: Vec3, turns: f32, start: f32, end: f32, then: Mat4) -> Self {
+        let quarters = (turns.abs() * 4.0).ceil().max(1.0) as usize;
+        let keyframes: Vec<(f32, Mat4)> = (0..=quarters)
+            .map(|i| {
+                let s = i as f32 / quarters as f32;
+                let angle = turns * std::f32::consts::TAU * s;
+                (
+                    start + s * (end - start),
+                    then * Mat4::from_axis_angle(axis, angle),
+                )
+            })
+            .collect();
+        Self::new(&keyframes).expect("quarter-turn keyframes are valid")
+    }
+
+    /// The keyframes.
+    pub fn keyframes(&self) -> &[Keyframe] {
+        &self.keyframes
+    }
+
+    /// Whether the transform changes at all.
+    pub fn is_moving(&self) -> bool {
+        self.keyframes
+            .windows(2)
+            .any(|pair| pair[0].matrix != pair[1].matrix)
+    }
+
+    /// The keyframe segment that `time` falls in, and how far along it (`0..1`); `None`
+    /// outside the keyframes' span, where the transform is constant.
+    pub fn segment_at(&self, time: f32) -> Option<(usize, f32)> {
+        let i = self.keyframes.partition_point(|k| k.time <= time);
+        if i == 0 || i == self.keyframes.len() {
+            return None;
+        }
+        let (a, b) = (&self.keyframes[i - 1], &self.keyframes[i]);
+        Some((i - 1, (time - a.time) / (b.time - a.time)))
+    }
+
+    /// Object to world at `time`. At a keyframe's time this is the keyframe's own matrix,
+    /// exactly; in between, the interpolated parts recombined.
+    pub fn at(&self, time: f32) -> Mat4 {
+        let first = &self.keyframes[0];
+        let last = &self.keyframes[self.keyframes.len() - 1];
+        if time.is_nan() || time <= first.time {
+            return first.matrix;
+        }
+        if time >= last.time {
+            return last.matrix;
+        }
+        let Some((i, u)) = self.segment_at(time) else {
+            return first.matrix;
+        };
+        if u == 0.0 {
+            return self.keyframes[i].matrix;
+        }
+        interpolate(&self.keyframes[i].parts, &self.keyframes[i + 1].parts, u).matrix()
+    }
+}
+
+// ANCHOR: interpolate
+/// The transform a fraction `u` of the way from `a` to `b`: translation and scale lerped,
+/// rotation slerped (the shorter way, at constant angular speed).
+pub fn interpolate(a: &Decomposed, b: &Decomposed, u: f32) -> Decomposed {
+    Decomposed {
+        translation: a.translation.lerp(b.translation, u),
+        rotation: a.rotation.slerp(b.rotation, u),
+        scale: a.scale * (1.0 - u) + b.scale * u,
+    }
+}
+// ANCHOR_END: interpolate
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f32::consts::{FRAC_PI_2, PI};
+
+    #[test]
+    fn decomposing_and_recombining_gives_the_matrix_back() {
+        let matrices = [
+            Mat4::from_scale_rotation_translation(
+                Vec3::new(2.0, 0.5, 1.5),
+                Quat::from_axis_angle(Vec3::new(1.0, 2.0, 3.0).normalize(), 1.1),
+                Vec3::new(-3.0, 4.0, 0.5),
+            ),
+            // Scale after rotation: a shear in T R S form, kept in the symmetric S.
+            Mat4::from_scale(Vec3::new(3.0, 1.0, 1.0)) * Mat4::from_rotation_z(0.6),
+            // A mirror.
+            Mat4::from_scale(Vec3::new(-1.0, 1.0, 1.0)) * Mat4::from_rotation_y(0.3),
+        ];
+        for m in matrices {
+            let parts = Decomposed::new(m);
+            assert!(
+                parts.matrix().abs_diff_eq(m, 1e-5),
+                "{m} vs {}",
+                parts.matrix()
+            );
+            assert!((parts.rotation.length() - 1.0).abs() < 1e-6);
+            let s = parts.scale;
+            assert!(s.abs_diff_eq(s.transpose(), 1e-5), "S symmetric: {s}");
+        }
+    }
+
+    #[test]
+    fn halfway_through_a_quarter_turn_is_an_eighth_turn_not_a_shrunken_matrix() {
+        let motion = AnimatedTransform::new(&[
+            (0.0, Mat4::IDENTITY),
+            (1.0, Mat4::from_rotation_z(FRAC_PI_2)),
+        ])
+        .unwrap();
+        let halfway = motion.at(0.5);
+        assert!(halfway.abs_diff_eq(Mat4::from_rotation_z(FRAC_PI_2 / 2.0), 1e-6));
+        // Lerping the matrices would have shrunk the point to length cos(45°).
+        let lerped = Mat4::IDENTITY * 0.5 + Mat4::from_rotation_z(FRAC_PI_2) * 0.5;
+        assert!((lerped.transform_point3(Vec3::X).length() - 0.5f32.sqrt()).abs() < 1e-6);
+        assert!((halfway.transform_point3(Vec3::X).length() - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn keyframes_are_exact_and_the_ends_hold() {
+        let a = Mat4::from_translation(Vec3::X) * Mat4::from_rotation_y(0.3);
+        let b = Mat4::from_translation(Vec3::Y) * Mat4::from_scale(Vec3::splat(2.0));
+        let motion = AnimatedTransform::new(&[(1.0, a), (3.0, b)]).unwrap();
+        assert_eq!(motion.at(1.0), a);
+        assert_eq!(motion.at(3.0), b);
+        assert_eq!(motion.at(-5.0), a);
+        assert_eq!(motion.at(7.0), b);
+        assert_eq!(motion.at(f32::NAN), a);
+        let middle = motion.at(2.0).transform_point3(Vec3::ZERO);
+        assert!(
+            middle.abs_diff_eq(Vec3::new(0.5, 0.5, 0.0), 1e-6),
+            "{middle}"
+        );
+    }
+
+    #[test]
+    fn a_spin_of_more_than_a_turn_turns_all_the_way() {
+        // 1.25 turns about y: at each time the point (1, 0, 0) is where one rotation puts it.
+        let motion = AnimatedTransform::spin(Vec3::Y, 1.25, 0.0, 1.0, Mat4::IDENTITY);
+        assert_eq!(motion.keyframes().len(), 6);
+        for i in 0..=40 {
+            let time = i as f32 / 40.0;
+            let angle = 1.25 * 2.0 * PI * time;
+            let expected = Mat4::from_rotation_y(angle).transform_point3(Vec3::X);
+            let got = motion.at(time).transform_point3(Vec3::X);
+            assert!(
+                got.abs_diff_eq(expected, 1e-5),
+                "time {time}: {got} vs {expected}"
+            );
+            assert!(got.is_finite());
+        }
+    }
+
+    #[test]
+    fn bad_keyframes_are_refused() {
+        let m = Mat4::IDENTITY;
+        assert_eq!(AnimatedTransform::new(&[]), Err(MotionError::NoKeyframes));
+        assert!(matches!(
+            AnimatedTransform::new(&[(0.0, m), (0.0, m)]),
+            Err(MotionError::TimesNotIncreasing { .. })
+        ));
+        assert!(matches!(
+            AnimatedTransform::new(&[(0.0, m), (1.0, Mat4::from_scale(Vec3::new(1.0, 0.0, 1.0)))]),
+            Err(MotionError::Degenerate { .. })
+        ));
+        assert!(matches!(
+            AnimatedTransform::new(&[(0.0, m), (1.0, Mat4::from_rotation_x(PI))]),
+            Err(MotionError::HalfTurn { .. })
+        ));
+    }
+}

@@ -1,0 +1,133 @@
+//! Intersecting a moving object: take the ray into the object's own space at the ray's time.
+//!
+//! The object itself never moves. Its transform at the ray's `time` maps object space to
+//! world space, so the inverse maps the *ray* into object space, where the shape sits still
+//! and is intersected as it is. Transforming one ray is far cheaper than transforming every
+//! triangle of an object for every time sample, and it works for any shape.
+//!
+//! The direction is transformed but **not normalised**: then the point at parameter `t` in
+//! object space is the transform of the point at the same `t` in world space, so the hit's `t`
+//! needs no conversion and the ray's `t_max` (a shadow ray stops at its light) stays valid.
+
+use common::Ray;
+use common::geometry::{SurfaceHit, gamma};
+use glam::{Mat3, Mat4};
+
+// ANCHOR: to_object_space
+/// The world-space `ray` in object space, given the world-to-object matrix at the ray's time.
+/// Same `t` for the same point in both spaces; same `t_max` and `time`.
+pub fn to_object_space(ray: &Ray, world_to_object: &Mat4) -> Ray {
+    // BEGIN SOLUTION
+    Ray {
+        origin: world_to_object.transform_point3(ray.origin),
+        // Not normalised: keeps `t` the same in both spaces.
+        dir: world_to_object.transform_vector3(ray.dir),
+        t_max: ray.t_max,
+        time: ray.time,
+    }
+    // END SOLUTION
+}
+// ANCHOR_END: to_object_space
+
+/// An object-space hit taken back to world space: the point by `object_to_world`, the normals
+/// by the inverse transpose (which keeps them perpendicular to the surface under any scale),
+/// and the point's error bound grown by the rounding of the transform, as pbrt does, so that
+/// secondary rays still leave from the right side of the surface.
+pub fn hit_to_world(
+    hit: &SurfaceHit,
+    object_to_world: &Mat4,
+    world_to_object: &Mat4,
+) -> SurfaceHit {
+    let p = object_to_world.transform_point3(hit.p);
+    let linear = Mat3::from_mat4(*object_to_world);
+    let abs = Mat3::from_cols(
+        linear.x_axis.abs(),
+        linear.y_axis.abs(),
+        linear.z_axis.abs(),
+    );
+    // Rounding of `M p` is at most γ(3) (|M| |p| + |translation|) per component; the error
+    // already in `p` is carried through `|M|`. The world-to-object matrix is itself rounded,
+    // so spawned rays going back into object space land a few ulps off: a wider γ covers it.
+    let g = gamma(8);
+    let p_error = (1.0 + g) * (abs * hit.p_error)
+        + g * (abs * hit.p.abs() + object_to_world.w_axis.truncate().abs());
+    let normal_matrix = Mat3::from_mat4(*world_to_object).transpose();
+    let n = (normal_matrix * hit.n).normalize();
+    let shading_n = (normal_matrix * hit.shading_n).normalize();
+    SurfaceHit {
+        t: hit.t,
+        p,
+        p_error,
+        n,
+        shading_n,
+        uv: hit.uv,
+        shape: hit.shape,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use common::geometry::Sphere;
+    use glam::Vec3;
+
+    #[test]
+    fn exercise_to_object_space_keeps_t_the_same_in_both_spaces() {
+        let object_to_world = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0))
+            * Mat4::from_rotation_y(0.7)
+            * Mat4::from_scale(Vec3::new(2.0, 0.5, 3.0));
+        let world_to_object = object_to_world.inverse();
+        let ray = Ray {
+            origin: Vec3::new(-4.0, 1.0, 0.5),
+            dir: Vec3::new(1.0, 0.2, 0.3).normalize(),
+            t_max: 7.5,
+            time: 0.25,
+        };
+        let local = to_object_space(&ray, &world_to_object);
+        assert_eq!(local.t_max, 7.5);
+        assert_eq!(local.time, 0.25);
+        for t in [0.0, 1.0, 3.7] {
+            let back = object_to_world.transform_point3(local.at(t));
+            assert_relative_eq!(back, ray.at(t), epsilon = 1e-4);
+        }
+    }
+
+    #[test]
+    fn exercise_to_object_space_moves_the_ray_not_the_object() {
+        // The object moved 5 to the right: in its own space the ray starts 5 further left.
+        let world_to_object = Mat4::from_translation(Vec3::new(5.0, 0.0, 0.0)).inverse();
+        let ray = Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z).with_time(0.5);
+        let local = to_object_space(&ray, &world_to_object);
+        assert_eq!(local.origin, Vec3::new(-5.0, 0.0, -3.0));
+        assert_eq!(local.dir, Vec3::Z);
+        // A scaled object sees a scaled direction: not normalised.
+        let scaled = to_object_space(&ray, &Mat4::from_scale(Vec3::splat(0.5)));
+        assert_eq!(scaled.dir, Vec3::new(0.0, 0.0, 0.5));
+    }
+
+    #[test]
+    fn a_hit_in_object_space_matches_the_same_shape_placed_in_world_space() {
+        let object_to_world =
+            Mat4::from_translation(Vec3::new(0.3, -1.0, 2.0)) * Mat4::from_scale(Vec3::splat(2.0));
+        let world_to_object = object_to_world.inverse();
+        let ray = Ray::new(Vec3::new(0.5, -0.7, -6.0), Vec3::Z);
+        let unit = Sphere::new(Vec3::ZERO, 1.0);
+        let local_hit = unit
+            .intersect(&to_object_space(&ray, &world_to_object))
+            .unwrap();
+        let hit = hit_to_world(&local_hit, &object_to_world, &world_to_object);
+        let world_hit = Sphere::new(Vec3::new(0.3, -1.0, 2.0), 2.0)
+            .intersect(&ray)
+            .unwrap();
+        assert_relative_eq!(hit.t, world_hit.t, epsilon = 1e-4);
+        assert_relative_eq!(hit.p, world_hit.p, epsilon = 1e-4);
+        assert_relative_eq!(hit.n, world_hit.n, epsilon = 1e-4);
+        assert!(
+            (hit.p - world_hit.p)
+                .abs()
+                .cmple(hit.p_error + world_hit.p_error)
+                .all()
+        );
+    }
+}

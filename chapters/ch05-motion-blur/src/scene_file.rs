@@ -1,0 +1,1 @@
+//! Scenes from Mitsuba 3 XML files.

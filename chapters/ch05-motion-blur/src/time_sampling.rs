@@ -1,0 +1,229 @@
+//! Where in the shutter interval the samples of a pixel go.
+//!
+//! The time is the sample's second dimension, after the pixel position and before the lens
+//! (pbrt-v4's order). *Independent* time samples are uniform numbers, each on its own; they
+//! clump and leave gaps, and a pixel that a moving edge crosses sees the edge's time share
+//! with the noise of a coin tossed `n` times. *Stratified* time samples cut the interval into
+//! `n` equal strata, one per sample, each sample jittered inside its own: the share of time
+//! is then right to within one stratum.
+//!
+//! Which sample gets which stratum is a permutation, different for every pixel (fixed by the
+//! seed and the pixel, so renders stay deterministic): with the same order everywhere, sample
+//! `i` would see the same instant in every pixel, and the time would correlate with the pixel
+//! position and the lens, which other samplers stratify by sample index too.
+
+use ch03_anti_aliasing::PixelSampler;
+use common::sampler::{IndependentSampler, Sampler, mix};
+use glam::{UVec2, Vec2};
+
+/// A sampler that can hand out the time dimension.
+pub trait TimeSampler: Sampler {
+    /// The number in `[0, 1)` that picks the sample's time. By default the next dimension.
+    fn get_time_1d(&mut self) -> f32 {
+        self.get_1d()
+    }
+}
+
+impl TimeSampler for IndependentSampler {}
+impl TimeSampler for PixelSampler {}
+
+/// The two ways of drawing time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum TimeSampling {
+    /// Each sample's time on its own.
+    Independent,
+    /// One sample per stratum of the shutter interval, in a per-pixel random order.
+    Stratified,
+}
+
+impl TimeSampling {
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            TimeSampling::Independent => "independent",
+            TimeSampling::Stratified => "stratified",
+        }
+    }
+}
+
+/// The largest `f32` below 1.
+pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
+
+// ANCHOR: stratified_time_sample
+/// The time sample of stratum `stratum` out of `strata`, jittered by `jitter` in `[0, 1)`:
+/// `(stratum + jitter) / strata`, a uniform number inside the stratum. Always below 1, even
+/// where rounding `(strata - 1 + jitter) / strata` would give exactly 1.
+pub fn stratified_time_sample(stratum: u64, strata: u64, jitter: f32) -> f32 {
+    // BEGIN SOLUTION
+    let u = (stratum as f64 + f64::from(jitter)) / strata.max(1) as f64;
+    (u as f32).min(ONE_MINUS_EPSILON)
+    // END SOLUTION
+}
+// ANCHOR_END: stratified_time_sample
+
+/// Element `i` of a random permutation of `0..n` chosen by `key`, without building the
+/// permutation (Kensler's hash-based permutation, as in pbrt-v4's `PermutationElement`).
+pub fn permutation_element(i: u32, n: u32, key: u32) -> u32 {
+    let p = key;
+    let mut w = n.max(1) - 1;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    let mut i = i;
+    loop {
+        i ^= p;
+        i = i.wrapping_mul(0xe170_893d);
+        i ^= p >> 16;
+        i ^= (i & w) >> 4;
+        i ^= p >> 8;
+        i = i.wrapping_mul(0x0929_eb3f);
+        i ^= p >> 23;
+        i ^= (i & w) >> 1;
+        i = i.wrapping_mul(1 | (p >> 27));
+        i = i.wrapping_mul(0x6935_fa69);
+        i ^= (i & w) >> 11;
+        i = i.wrapping_mul(0x74dc_b303);
+        i ^= (i & w) >> 2;
+        i = i.wrapping_mul(0x9e50_1cc3);
+        i ^= (i & w) >> 2;
+        i = i.wrapping_mul(0xc860_a3df);
+        i &= w;
+        i ^= i >> 5;
+        if i < n {
+            break;
+        }
+    }
+    i.wrapping_add(p) % n.max(1)
+}
+
+/// Wraps a sampler and stratifies its time dimension over the `strata` samples of a pixel;
+/// every other dimension comes from the inner sampler unchanged.
+///
+/// Samples `strata .. 2 strata` (a longer render) get a fresh permutation, so every run of
+/// `strata` consecutive samples covers every stratum once.
+#[derive(Clone, Debug)]
+pub struct StratifiedTime<S> {
+    inner: S,
+    strata: u64,
+    seed: u64,
+    stratum: u64,
+}
+
+impl<S: Sampler> StratifiedTime<S> {
+    /// `inner` with its time stratified over `strata` samples (at least 1).
+    pub fn new(inner: S, strata: u64, seed: u64) -> Self {
+        Self {
+            inner,
+            strata: strata.clamp(1, u64::from(u32::MAX)),
+            seed,
+            stratum: 0,
+        }
+    }
+
+    /// The stratum of the current sample.
+    pub fn stratum(&self) -> u64 {
+        self.stratum
+    }
+}
+
+impl<S: Sampler> Sampler for StratifiedTime<S> {
+    fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
+        self.inner.start_pixel_sample(pixel, sample_index);
+        let pixel_key = (u64::from(pixel.y) << 32) | u64::from(pixel.x);
+        let round = sample_index / self.strata;
+        let key = mix(mix(self.seed ^ 0x7469_6d65) ^ mix(pixel_key) ^ round) as u32;
+        let i = (sample_index % self.strata) as u32;
+        self.stratum = u64::from(permutation_element(i, self.strata as u32, key));
+    }
+
+    fn get_pixel_2d(&mut self) -> Vec2 {
+        self.inner.get_pixel_2d()
+    }
+
+    fn get_1d(&mut self) -> f32 {
+        self.inner.get_1d()
+    }
+}
+
+impl<S: Sampler> TimeSampler for StratifiedTime<S> {
+    fn get_time_1d(&mut self) -> f32 {
+        // The jitter is the inner sampler's next number: the same dimension an independent
+        // time would use, so the lens and later dimensions are unchanged.
+        stratified_time_sample(self.stratum, self.strata, self.inner.get_1d())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exercise_stratified_time_sample_lands_in_its_stratum() {
+        for strata in [1u64, 2, 7, 64] {
+            for stratum in 0..strata {
+                for jitter in [0.0, 0.25, 0.5, 0.999] {
+                    let u = stratified_time_sample(stratum, strata, jitter);
+                    let low = stratum as f32 / strata as f32;
+                    let high = (stratum + 1) as f32 / strata as f32;
+                    assert!(
+                        u >= low && u < high,
+                        "{stratum}/{strata} jitter {jitter}: {u}"
+                    );
+                }
+            }
+        }
+        assert_eq!(stratified_time_sample(3, 8, 0.5), 3.5 / 8.0);
+    }
+
+    #[test]
+    fn exercise_stratified_time_sample_stays_below_one() {
+        let strata = 1u64 << 30;
+        let u = stratified_time_sample(strata - 1, strata, ONE_MINUS_EPSILON);
+        assert!(u < 1.0, "{u}");
+        assert_eq!(
+            stratified_time_sample(0, 1, ONE_MINUS_EPSILON),
+            ONE_MINUS_EPSILON
+        );
+    }
+
+    #[test]
+    fn permutations_are_permutations_and_differ_by_key() {
+        for n in [1u32, 2, 5, 16, 33] {
+            for key in [0u32, 1, 0xdead_beef] {
+                let mut seen: Vec<u32> = (0..n).map(|i| permutation_element(i, n, key)).collect();
+                seen.sort();
+                assert_eq!(seen, (0..n).collect::<Vec<_>>(), "n {n} key {key}");
+            }
+        }
+        let a: Vec<u32> = (0..16).map(|i| permutation_element(i, 16, 1)).collect();
+        let b: Vec<u32> = (0..16).map(|i| permutation_element(i, 16, 2)).collect();
+        assert_ne!(a, b);
+    }
+
+    #[test]
+    fn every_pixel_covers_every_stratum_once_in_a_different_order() {
+        let n = 8;
+        let mut sampler = StratifiedTime::new(IndependentSampler::new(3), n, 3);
+        let mut orders = Vec::new();
+        for pixel in [UVec2::new(0, 0), UVec2::new(1, 0), UVec2::new(5, 9)] {
+            let mut strata = Vec::new();
+            for index in 0..2 * n {
+                sampler.start_pixel_sample(pixel, index);
+                sampler.get_pixel_2d();
+                let u = sampler.get_time_1d();
+                strata.push((u * n as f32) as u64);
+                assert_eq!(strata[index as usize], sampler.stratum());
+            }
+            for round in strata.chunks(n as usize) {
+                let mut sorted = round.to_vec();
+                sorted.sort();
+                assert_eq!(sorted, (0..n).collect::<Vec<_>>(), "{pixel}");
+            }
+            orders.push(strata);
+        }
+        assert_ne!(orders[0], orders[1]);
+        assert_ne!(orders[1], orders[2]);
+    }
+}
