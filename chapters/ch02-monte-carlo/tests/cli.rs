@@ -1,23 +1,16 @@
 //! The binary: samples as CSV, and bad input refused with a message, never a panic.
 
-use std::process::{Command, Output};
+use common::test_support::run_binary;
+use std::process::Output;
+
+const BINARY: &str = env!("CARGO_BIN_EXE_ch02-monte-carlo");
 
 fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ch02-monte-carlo"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
+    run_binary(BINARY, args)
 }
 
 fn assert_refused(args: &[&str], expected: &str) {
-    let out = run(args);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(!out.status.success(), "{args:?} succeeded");
-    assert!(!stderr.contains("panicked"), "{args:?} panicked: {stderr}");
-    assert!(
-        stderr.contains(expected),
-        "{args:?}: expected `{expected}` in: {stderr}"
-    );
+    common::test_support::assert_refused(BINARY, args, expected);
 }
 
 #[test]

@@ -1,25 +1,18 @@
 //! The binary refuses bad input with a message and a non-zero exit, never a panic, and
 //! writes nothing then; good input writes the image.
 
+use common::test_support::run_binary;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
+
+const BINARY: &str = env!("CARGO_BIN_EXE_ch03-anti-aliasing");
 
 fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ch03-anti-aliasing"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
+    run_binary(BINARY, args)
 }
 
 fn assert_refused(args: &[&str], expected: &str) {
-    let out = run(args);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(!out.status.success(), "{args:?} succeeded");
-    assert!(!stderr.contains("panicked"), "{args:?} panicked: {stderr}");
-    assert!(
-        stderr.contains(expected),
-        "{args:?}: expected `{expected}` in: {stderr}"
-    );
+    common::test_support::assert_refused(BINARY, args, expected);
 }
 
 fn scene_file(name: &str) -> PathBuf {

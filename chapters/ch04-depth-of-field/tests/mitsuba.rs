@@ -9,21 +9,12 @@
 //! `scenes/mitsuba/` that the test `agreement` and the book compare against.
 
 use ch04_depth_of_field::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
-use common::metrics::{mitsuba_python, refresh_agreement};
+use common::metrics::refresh_agreement_from_env;
 
 #[test]
 #[ignore = "needs Mitsuba 3 (set MITSUBA_PYTHON)"]
 fn chapter_04_agrees_with_mitsuba() {
-    let python = mitsuba_python().expect("set MITSUBA_PYTHON to a Python with mitsuba");
-    let update = std::env::var("UPDATE_MITSUBA_RENDERS").is_ok_and(|v| v == "1");
-    let report = refresh_agreement(
-        &python,
-        &scenes_dir(),
-        AGREEMENT_SCENES,
-        &render_scene_file,
-        update,
-    );
-    match report {
+    match refresh_agreement_from_env(&scenes_dir(), AGREEMENT_SCENES, &render_scene_file) {
         Ok(lines) => eprintln!("{}", lines.join("\n")),
         Err(message) => panic!("{message}"),
     }

@@ -1,45 +1,15 @@
 //! Snapshot tests: tiny fixed renders whose summaries are compared with the stored ones.
 //!
-//! The summary is an 8-level luminance picture (catches moved geometry, a lens focused at the
+//! The summary is a 10-level luminance picture (`common::test_support::image_summary`) (catches moved geometry, a lens focused at the
 //! wrong distance, a missing blur) plus the image's mean colour to four decimals and the ray
 //! count. The renders are random, but their seeds are fixed, so the summary is exact.
 
 use ch04_depth_of_field::scenes::{BOKEH_SPHERE_DEPTHS, Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{Aperture, Lens, LensWarp, render_with};
 use common::film::PixelBoxFilter;
-use common::image::Image;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
-
-/// Characters from dark to bright.
-const RAMP: &[u8] = b" .:-=+*#%@";
-
-fn summary(image: &Image, rays: u64) -> String {
-    let mut text = String::new();
-    for y in 0..image.height {
-        for x in 0..image.width {
-            let p = image.get(x, y);
-            let luminance = 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
-            let level = (luminance.clamp(0.0, 1.0).powf(1.0 / 2.2) * (RAMP.len() - 1) as f32)
-                .round() as usize;
-            text.push(RAMP[level] as char);
-        }
-        text.push('\n');
-    }
-    let n = image.pixels.len() as f64;
-    let mean = image.pixels.iter().fold([0.0f64; 3], |acc, p| {
-        [
-            acc[0] + f64::from(p.x) / n,
-            acc[1] + f64::from(p.y) / n,
-            acc[2] + f64::from(p.z) / n,
-        ]
-    });
-    text.push_str(&format!(
-        "mean rgb: {:.4} {:.4} {:.4}\nrays: {rays}\n",
-        mean[0], mean[1], mean[2]
-    ));
-    text
-}
+use common::test_support::image_summary;
 
 fn snapshot_of(lens: Lens) -> String {
     let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
@@ -55,7 +25,7 @@ fn snapshot_of(lens: Lens) -> String {
         &PixelBoxFilter,
     );
     assert_eq!(out.stats.nonfinite_samples, 0);
-    summary(&out.image, out.stats.rays)
+    image_summary(&out.image, out.stats.rays)
 }
 
 #[test]

@@ -164,3 +164,19 @@ pub fn refresh_agreement(
         ))
     }
 }
+
+/// The environment variable that makes [`refresh_agreement_from_env`] store the new renders.
+pub const UPDATE_MITSUBA_RENDERS: &str = "UPDATE_MITSUBA_RENDERS";
+
+/// [`refresh_agreement`] with the Python named by [`MITSUBA_PYTHON`], storing the new renders
+/// when [`UPDATE_MITSUBA_RENDERS`] is `1`: what each chapter's ignored `tests/mitsuba.rs` runs.
+pub fn refresh_agreement_from_env(
+    scenes_dir: &Path,
+    scenes: &[AgreementScene],
+    render: RenderSceneFile,
+) -> Result<Vec<String>, String> {
+    let python = mitsuba_python()
+        .ok_or_else(|| format!("set {MITSUBA_PYTHON} to a Python that has the mitsuba package"))?;
+    let update = std::env::var(UPDATE_MITSUBA_RENDERS).is_ok_and(|v| v == "1");
+    refresh_agreement(&python, scenes_dir, scenes, render, update)
+}

@@ -24,7 +24,8 @@ pub use convergence::{ConvergenceRecord, Technique, run_convergence};
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
 pub use mitsuba::{
-    MITSUBA_JIT_VARIANT, MITSUBA_PYTHON, MITSUBA_VARIANT, make_reference_renders, mitsuba_python,
-    refresh_agreement, render_with_mitsuba,
+    MITSUBA_JIT_VARIANT, MITSUBA_PYTHON, MITSUBA_VARIANT, UPDATE_MITSUBA_RENDERS,
+    make_reference_renders, mitsuba_python, refresh_agreement, refresh_agreement_from_env,
+    render_with_mitsuba,
 };
 pub use plots::{plot_error_vs_spp, plot_error_vs_time, series_by_technique};

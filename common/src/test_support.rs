@@ -1,0 +1,82 @@
+//! Helpers for the chapters' own tests: running a chapter's binary on bad input, and the text
+//! summary of a tiny render that snapshot tests store.
+//!
+//! Nothing here is used by a renderer; it lives in `common` so that every chapter's tests ask
+//! the same questions in the same way.
+
+use std::process::{Command, Output};
+
+use crate::image::Image;
+
+/// Runs `binary` (a path such as `env!("CARGO_BIN_EXE_ch01-whitted")`) with `args`.
+pub fn run_binary(binary: &str, args: &[&str]) -> Output {
+    Command::new(binary)
+        .args(args)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {binary}: {e}"))
+}
+
+/// Asserts that `binary` refuses `args`: it exits non-zero, does not panic, and its error
+/// message contains `expected`.
+pub fn assert_refused(binary: &str, args: &[&str], expected: &str) {
+    let out = run_binary(binary, args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{args:?} succeeded");
+    assert!(!stderr.contains("panicked"), "{args:?} panicked: {stderr}");
+    assert!(
+        stderr.contains(expected),
+        "{args:?}: expected `{expected}` in: {stderr}"
+    );
+}
+
+/// Characters from dark to bright, for [`image_summary`].
+const RAMP: &[u8] = b" .:-=+*#%@";
+
+/// The text a snapshot test stores for a tiny render: a picture of its luminance in 10 levels
+/// (which catches moved or missing geometry, shadows, reflections), its mean colour to four
+/// decimals and its ray count (which catch changes of shading and recursion).
+///
+/// The levels are of the sRGB-like value `L^(1/2.2)`, rounded, so that tiny floating-point
+/// changes flip a character only where they cross a level.
+pub fn image_summary(image: &Image, rays: u64) -> String {
+    let mut text = String::new();
+    for y in 0..image.height {
+        for x in 0..image.width {
+            let p = image.get(x, y);
+            let luminance = 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+            let level = (luminance.clamp(0.0, 1.0).powf(1.0 / 2.2) * (RAMP.len() - 1) as f32)
+                .round() as usize;
+            text.push(RAMP[level] as char);
+        }
+        text.push('\n');
+    }
+    let n = image.pixels.len() as f64;
+    let mean = image.pixels.iter().fold([0.0f64; 3], |acc, p| {
+        [
+            acc[0] + f64::from(p.x) / n,
+            acc[1] + f64::from(p.y) / n,
+            acc[2] + f64::from(p.z) / n,
+        ]
+    });
+    text.push_str(&format!(
+        "mean rgb: {:.4} {:.4} {:.4}\nrays: {rays}\n",
+        mean[0], mean[1], mean[2]
+    ));
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn the_summary_draws_luminance_and_states_the_mean() {
+        let mut image = Image::new(3, 1);
+        image.set(1, 0, Vec3::splat(0.25));
+        image.set(2, 0, Vec3::ONE);
+        let text = image_summary(&image, 7);
+        // 0.25^(1/2.2) * 9 = 4.8 rounds to level 5, '+'.
+        assert_eq!(text, " +@\nmean rgb: 0.4167 0.4167 0.4167\nrays: 7\n");
+    }
+}
