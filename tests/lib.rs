@@ -4,6 +4,8 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod binaries;
+
 use ch01_whitted::camera::{CameraFrame, PinholeCamera};
 use ch01_whitted::light::PointLight;
 use ch01_whitted::material::Material;

@@ -6,9 +6,10 @@
 
 use crate::film::PixelSum;
 use crate::output::{self, OutputError};
-use crate::render::{Budget, RenderOutput, RenderSettings};
+use crate::render::{Budget, RenderOutput, RenderSettings, StopFlag};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::OnceLock;
 
 /// The largest image side we accept.
 pub const MAX_IMAGE_SIDE: u32 = 1 << 16;
@@ -17,6 +18,10 @@ pub const MAX_IMAGE_SIDE: u32 = 1 << 16;
 pub const MAX_IMAGE_BYTES: u64 = 4 << 30;
 
 /// Options of every chapter's `render` subcommand.
+///
+/// Negative numbers are accepted by the parser of every numeric option so that `--spp -3` is
+/// refused by the option's own check, which names the option and its range, rather than
+/// read as an unknown flag `-3`.
 #[derive(clap::Args, Clone, Debug)]
 pub struct RenderArgs {
     /// A scene in Mitsuba 3's XML format (the subset described in the book).
@@ -26,22 +31,23 @@ pub struct RenderArgs {
     #[arg(short = 'D', value_name = "NAME=VALUE", requires = "scene", value_parser = parse_define)]
     pub define: Vec<(String, String)>,
     /// Samples per pixel [default: the chapter's choice].
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=1_000_000_000), conflicts_with = "time")]
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "time",
+          value_parser = clap::value_parser!(u64).range(1..=1_000_000_000))]
     pub spp: Option<u64>,
     /// Render for this many seconds instead of a fixed sample count (progressive passes).
-    #[arg(long, value_name = "SECONDS", value_parser = parse_seconds)]
+    #[arg(long, value_name = "SECONDS", allow_negative_numbers = true, value_parser = parse_seconds)]
     pub time: Option<f64>,
     /// Image width in pixels [default: the scene's].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
+    #[arg(long, allow_negative_numbers = true, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
     pub width: Option<u32>,
     /// Image height in pixels [default: the scene's].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
+    #[arg(long, allow_negative_numbers = true, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
     pub height: Option<u32>,
     /// Seed of every random number of the render.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_negative_numbers = true)]
     pub seed: u64,
     /// Worker threads [default: one per core]. The image does not depend on it.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    #[arg(long, allow_negative_numbers = true, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub threads: Option<u32>,
     /// Output image: .png (sRGB, 8-bit), .exr or .pfm (linear float).
     #[arg(long, value_name = "FILE")]
@@ -84,6 +90,56 @@ pub enum CliError {
     /// Any other check that failed, with its explanation.
     #[error("{0}")]
     Invalid(String),
+    /// The render was stopped (Ctrl-C) before its budget was spent.
+    #[error("{}", describe_interrupt(written.as_deref(), *spp, *requested_spp))]
+    Interrupted {
+        /// The image written with the completed passes, if at least one completed.
+        written: Option<PathBuf>,
+        /// Samples per pixel the written image holds.
+        spp: u64,
+        /// Samples per pixel asked for; `None` for a time budget.
+        requested_spp: Option<u64>,
+    },
+}
+
+fn describe_interrupt(written: Option<&Path>, spp: u64, requested_spp: Option<u64>) -> String {
+    let of = requested_spp.map_or(String::new(), |n| format!(" of {n}"));
+    match written {
+        Some(path) => format!(
+            "interrupted: wrote {} with {spp}{of} samples per pixel",
+            path.display()
+        ),
+        None => "interrupted before the first pass completed: nothing written".to_string(),
+    }
+}
+
+/// The stop flag of the process's renders, set by Ctrl-C (SIGINT).
+///
+/// The first call installs the handler; later calls return the same flag. A first Ctrl-C asks
+/// the render to stop and write what it has; a second one quits at once, writing nothing (the
+/// outputs are written atomically, so no half-written file is left either way).
+pub fn ctrl_c_stop_flag() -> StopFlag {
+    static FLAG: OnceLock<StopFlag> = OnceLock::new();
+    FLAG.get_or_init(|| {
+        let flag = StopFlag::new();
+        let seen = flag.clone();
+        let installed = ctrlc::set_handler(move || {
+            if seen.is_requested() {
+                eprintln!("\ninterrupted again: quitting without writing");
+                std::process::exit(130);
+            }
+            seen.request();
+            eprintln!(
+                "\ninterrupted: finishing with the completed passes (Ctrl-C again quits without writing)"
+            );
+        });
+        if let Err(error) = installed {
+            // Rendering still works; only Ctrl-C keeps its default meaning (quit at once).
+            eprintln!("warning: Ctrl-C will not save a partial render: {error}");
+        }
+        flag
+    })
+    .clone()
 }
 
 fn parse_define(text: &str) -> Result<(String, String), String> {
@@ -111,6 +167,9 @@ fn parse_seconds(text: &str) -> Result<f64, String> {
 impl RenderArgs {
     /// The render settings, filling what the command line left open with the scene's or
     /// chapter's defaults, and refusing images that cannot fit in memory.
+    ///
+    /// Only a binary calls this, so it is where Ctrl-C gets its meaning: the settings carry
+    /// [`ctrl_c_stop_flag`], and [`RenderArgs::write_outputs`] then saves the completed passes.
     pub fn settings(
         &self,
         default_size: (u32, u32),
@@ -130,6 +189,7 @@ impl RenderArgs {
             budget,
             threads: self.threads.map(|t| t as usize),
             progress: true,
+            stop: ctrl_c_stop_flag(),
         })
     }
 
@@ -157,11 +217,23 @@ impl RenderArgs {
 
     /// Writes the image, and the statistics if asked for, each file whole or not at all.
     /// `extra` adds chapter-specific fields to the statistics object.
+    ///
+    /// An interrupted render still writes the image of its completed passes (nothing if none
+    /// completed) and then returns [`CliError::Interrupted`], so that the binary says what it
+    /// wrote and exits non-zero.
     pub fn write_outputs(
         &self,
         rendered: &RenderOutput,
         extra: serde_json::Value,
     ) -> Result<(), CliError> {
+        let stats = &rendered.stats;
+        if stats.interrupted && stats.spp == 0 {
+            return Err(CliError::Interrupted {
+                written: None,
+                spp: 0,
+                requested_spp: stats.requested_spp,
+            });
+        }
         output::write_image(&self.out, &rendered.image)?;
         if let Some(path) = &self.stats {
             let mut json = serde_json::to_value(&rendered.stats).expect("statistics serialise");
@@ -170,6 +242,13 @@ impl RenderArgs {
             }
             let text = serde_json::to_string_pretty(&json).expect("statistics serialise") + "\n";
             output::write_text(path, &text)?;
+        }
+        if stats.interrupted {
+            return Err(CliError::Interrupted {
+                written: Some(self.out.clone()),
+                spp: stats.spp,
+                requested_spp: stats.requested_spp,
+            });
         }
         Ok(())
     }
@@ -199,6 +278,14 @@ pub fn check_image_size(width: u32, height: u32) -> Result<(), CliError> {
 /// Creates the directory of `path` if needed and proves that a file can be created there,
 /// so that a render fails in its first millisecond rather than after an hour.
 pub fn check_writable(path: &Path) -> Result<(), CliError> {
+    // `out.png/` has the parent and the extension of `out.png`, but no file can have its name.
+    let text = path.as_os_str().to_string_lossy();
+    if text.ends_with('/') || text.ends_with(std::path::MAIN_SEPARATOR) {
+        return Err(CliError::Invalid(format!(
+            "{} ends in a path separator: it names a directory, not a file",
+            path.display()
+        )));
+    }
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
@@ -259,6 +346,27 @@ mod tests {
     }
 
     #[test]
+    fn interrupts_say_what_was_written() {
+        let message = CliError::Interrupted {
+            written: Some(PathBuf::from("out.png")),
+            spp: 64,
+            requested_spp: Some(1024),
+        }
+        .to_string();
+        assert_eq!(
+            message,
+            "interrupted: wrote out.png with 64 of 1024 samples per pixel"
+        );
+        let timed = CliError::Interrupted {
+            written: None,
+            spp: 0,
+            requested_spp: None,
+        }
+        .to_string();
+        assert!(timed.contains("nothing written"), "{timed}");
+    }
+
+    #[test]
     fn defines_are_name_value_pairs() {
         assert_eq!(
             parse_define("spp=16"),
@@ -285,5 +393,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         assert!(check_writable(dir.path()).is_err());
         assert!(check_writable(&dir.path().join("new/sub/img.png")).is_ok());
+        let trailing = format!("{}/img.png/", dir.path().display());
+        assert!(check_writable(Path::new(&trailing)).is_err());
     }
 }

@@ -7,14 +7,17 @@
 //! The work is done in passes of growing sample counts. Each pass is merged into the film
 //! tile by tile in a fixed order, so the image depends only on the seed and the pass schedule,
 //! never on the number of threads. A `--time` budget simply keeps adding passes until the time
-//! is up.
+//! is up. A [`StopFlag`] set during a render (Ctrl-C in the binaries) ends it early with the
+//! image of the passes completed so far.
 
 mod budget;
 mod progress;
 mod stats;
+mod stop;
 
 pub use budget::Budget;
 pub use stats::RenderStats;
+pub use stop::StopFlag;
 
 use crate::film::{Film, FilmTile, Filter, PixelRect};
 use crate::image::Image;
@@ -35,6 +38,8 @@ pub struct RenderSettings {
     pub threads: Option<usize>,
     /// Show a progress bar on a terminal.
     pub progress: bool,
+    /// Set it to stop the render early; the image then holds the passes completed.
+    pub stop: StopFlag,
 }
 
 impl RenderSettings {
@@ -46,6 +51,7 @@ impl RenderSettings {
             budget: Budget::Samples(spp),
             threads: None,
             progress: false,
+            stop: StopFlag::new(),
         }
     }
 }
@@ -57,10 +63,11 @@ pub struct SampleCounters {
     pub rays: u64,
 }
 
-/// A finished render.
+/// A finished render, or the completed passes of an interrupted one
+/// ([`RenderStats::interrupted`]).
 #[derive(Clone, Debug)]
 pub struct RenderOutput {
-    /// The averaged image.
+    /// The averaged image: every pixel holds [`RenderStats::spp`] samples.
     pub image: Image,
     /// What it cost.
     pub stats: RenderStats,
@@ -93,21 +100,37 @@ where
     let progress = progress::Progress::new(settings, tiles.len());
     let mut totals = stats::Totals::default();
 
+    let stop = &settings.stop;
+
     let mut run = || {
         let mut done_spp = 0u64;
+        let mut interrupted = false;
         while let Some(pass) = settings.budget.next_pass(done_spp, start.elapsed()) {
             let samples = done_spp..done_spp + pass;
-            let rendered: Vec<(FilmTile, stats::Totals)> = {
+            // `None` as soon as one tile saw the stop flag: the pass is then incomplete, and
+            // it is dropped whole so that every pixel keeps the same number of samples.
+            let rendered: Option<Vec<(FilmTile, stats::Totals)>> = {
                 use rayon::prelude::*;
                 tiles
                     .par_iter()
                     .map(|&rect| {
-                        let out =
-                            render_tile(&film, rect, samples.clone(), sampler, filter, &radiance);
+                        let out = render_tile(
+                            &film,
+                            rect,
+                            samples.clone(),
+                            sampler,
+                            filter,
+                            &radiance,
+                            stop,
+                        );
                         progress.tile_done();
                         out
                     })
                     .collect()
+            };
+            let Some(rendered) = rendered else {
+                interrupted = true;
+                break;
             };
             // Merge in tile order: floating-point sums then come out the same on any schedule.
             for (tile, tile_totals) in &rendered {
@@ -117,9 +140,9 @@ where
             done_spp += pass;
             progress.pass_done(done_spp);
         }
-        done_spp
+        (done_spp, interrupted)
     };
-    let spp = match settings.threads {
+    let (spp, interrupted) = match settings.threads {
         Some(n) => rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build()
@@ -131,12 +154,14 @@ where
     let seconds = start.elapsed().as_secs_f64();
     RenderOutput {
         image: film.image(),
-        stats: RenderStats::new(settings, spp, seconds, &totals),
+        stats: RenderStats::new(settings, spp, interrupted, seconds, &totals),
     }
 }
 // ANCHOR_END: render_loop
 
-/// Renders samples `samples` of every pixel of `rect` into a fresh tile.
+/// Renders samples `samples` of every pixel of `rect` into a fresh tile, or `None` when
+/// `stop` is requested before it is done (checked per pixel, so a stop is prompt even in a
+/// pass of many samples).
 fn render_tile<S, F>(
     film: &Film,
     rect: PixelRect,
@@ -144,7 +169,8 @@ fn render_tile<S, F>(
     sampler: &S,
     filter: &dyn Filter,
     radiance: &F,
-) -> (FilmTile, stats::Totals)
+    stop: &StopFlag,
+) -> Option<(FilmTile, stats::Totals)>
 where
     S: Sampler,
     F: Fn(Vec2, &mut S, &mut SampleCounters) -> Vec3 + Sync,
@@ -153,6 +179,9 @@ where
     let mut sampler = sampler.clone();
     let mut totals = stats::Totals::default();
     for pixel in rect.pixels() {
+        if stop.is_requested() {
+            return None;
+        }
         for index in samples.clone() {
             sampler.start_pixel_sample(pixel, index);
             let p_film = pixel.as_vec2() + sampler.get_pixel_2d();
@@ -169,7 +198,7 @@ where
             }
         }
     }
-    (tile, totals)
+    Some((tile, totals))
 }
 
 /// The image cut into tiles, row by row.
@@ -250,6 +279,68 @@ mod tests {
             noisy,
         );
         assert!(out.stats.spp >= 1);
+    }
+
+    /// A stop requested in the middle of the fourth pass (passes of 1, 1, 2, 4, ... samples)
+    /// leaves exactly the image of the first three: 4 samples per pixel, bit for bit the same
+    /// as a render asked for 4.
+    #[test]
+    fn a_stop_mid_render_keeps_exactly_the_completed_passes() {
+        use std::sync::atomic::{AtomicU64, Ordering};
+        let (width, height) = (40, 24);
+        let pixels = u64::from(width * height);
+        let stop = StopFlag::new();
+        let calls = AtomicU64::new(0);
+        let settings = RenderSettings {
+            stop: stop.clone(),
+            threads: Some(2),
+            ..RenderSettings::new(width, height, 1000)
+        };
+        let out = render(
+            &settings,
+            &IndependentSampler::new(7),
+            &PixelBoxFilter,
+            |p, s: &mut IndependentSampler, c: &mut SampleCounters| {
+                if calls.fetch_add(1, Ordering::Relaxed) == 4 * pixels + pixels / 2 {
+                    stop.request();
+                }
+                noisy(p, s, c)
+            },
+        );
+        assert!(out.stats.interrupted);
+        assert_eq!(out.stats.spp, 4);
+        assert_eq!(out.stats.requested_spp, Some(1000));
+        assert_eq!(
+            out.stats.samples,
+            4 * pixels,
+            "the broken pass is not counted"
+        );
+        assert!(
+            calls.load(Ordering::Relaxed) < 8 * pixels,
+            "the fourth pass was not cut short"
+        );
+        let four = render(
+            &RenderSettings::new(width, height, 4),
+            &IndependentSampler::new(7),
+            &PixelBoxFilter,
+            noisy,
+        );
+        assert!(!four.stats.interrupted);
+        assert_eq!(out.image, four.image);
+    }
+
+    #[test]
+    fn a_stop_before_the_first_pass_leaves_no_samples() {
+        let settings = RenderSettings::new(8, 8, 16);
+        settings.stop.request();
+        let out = render(
+            &settings,
+            &IndependentSampler::new(1),
+            &PixelBoxFilter,
+            noisy,
+        );
+        assert!(out.stats.interrupted);
+        assert_eq!((out.stats.spp, out.stats.samples), (0, 0));
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! What a render cost, as written by `render --stats FILE.json`.
 
-use super::RenderSettings;
+use super::{Budget, RenderSettings};
 use serde::Serialize;
 
 /// Sums gathered per tile and added up in tile order.
@@ -24,8 +24,12 @@ impl Totals {
 pub struct RenderStats {
     /// Wall-clock seconds of the whole render.
     pub seconds: f64,
-    /// Samples per pixel rendered.
+    /// Samples per pixel in the image (of completed passes only, if interrupted).
     pub spp: u64,
+    /// Samples per pixel the budget asked for; `None` for a time budget.
+    pub requested_spp: Option<u64>,
+    /// Whether the render was stopped before its budget was spent.
+    pub interrupted: bool,
     /// Image width.
     pub width: u32,
     /// Image height.
@@ -46,7 +50,13 @@ pub struct RenderStats {
 }
 
 impl RenderStats {
-    pub(super) fn new(settings: &RenderSettings, spp: u64, seconds: f64, totals: &Totals) -> Self {
+    pub(super) fn new(
+        settings: &RenderSettings,
+        spp: u64,
+        interrupted: bool,
+        seconds: f64,
+        totals: &Totals,
+    ) -> Self {
         let per_second = |n: u64| {
             if seconds > 0.0 {
                 n as f64 / seconds
@@ -57,6 +67,11 @@ impl RenderStats {
         Self {
             seconds,
             spp,
+            requested_spp: match settings.budget {
+                Budget::Samples(spp) => Some(spp),
+                Budget::Seconds(_) => None,
+            },
+            interrupted,
             width: settings.width,
             height: settings.height,
             rays: totals.rays,

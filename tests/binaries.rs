@@ -1,0 +1,87 @@
+//! The chapter binaries, run as a user runs them.
+//!
+//! Cargo hands a package's integration tests only that package's own binaries
+//! (`CARGO_BIN_EXE_<name>`). This crate tests every chapter's, so it finds them where cargo
+//! puts them, `target/<profile>/`, next to the `deps/` directory holding the test itself, and
+//! asks cargo once per test process to bring them up to date (a no-op after
+//! `cargo test --workspace`, which has built them already).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::sync::LazyLock;
+
+/// Every chapter binary that exists now, by package (and binary) name.
+pub const CHAPTERS: &[&str] = &[
+    "ch01-whitted",
+    "ch02-monte-carlo",
+    "ch03-anti-aliasing",
+    "ch04-depth-of-field",
+];
+
+/// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
+pub const RENDERING_CHAPTERS: &[&str] =
+    &["ch01-whitted", "ch03-anti-aliasing", "ch04-depth-of-field"];
+
+/// `target/<profile>`, where cargo writes binaries: the parent of the test's `deps/`.
+fn profile_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("the test knows its own path");
+    let deps = exe.parent().expect("the test lives in a directory");
+    let dir = if deps.file_name().is_some_and(|n| n == "deps") {
+        deps.parent().expect("deps/ has a parent")
+    } else {
+        deps
+    };
+    dir.to_path_buf()
+}
+
+/// Builds every chapter binary once per process, with the profile of this test.
+static BUILT: LazyLock<PathBuf> = LazyLock::new(|| {
+    let dir = profile_dir();
+    let profile = match dir.file_name().and_then(|n| n.to_str()) {
+        Some("debug") | None => "dev".to_string(),
+        Some(other) => other.to_string(),
+    };
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut command = Command::new(cargo);
+    command.args(["build", "--quiet", "--bins", "--profile", &profile]);
+    for chapter in CHAPTERS {
+        command.args(["-p", chapter]);
+    }
+    let status = command
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")))
+        .status()
+        .expect("cargo runs");
+    assert!(status.success(), "building the chapter binaries failed");
+    dir
+});
+
+/// The path of a chapter's binary, built and up to date.
+pub fn chapter_binary(chapter: &str) -> PathBuf {
+    BUILT.join(format!("{chapter}{}", std::env::consts::EXE_SUFFIX))
+}
+
+/// Runs a chapter binary to the end and collects its output.
+pub fn run_chapter(chapter: &str, args: &[&str]) -> Output {
+    Command::new(chapter_binary(chapter))
+        .args(args)
+        .output()
+        .expect("the chapter binary runs")
+}
+
+/// The names of the files in `dir`, sorted.
+pub fn files_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|entries| {
+            entries
+                .map(|e| {
+                    e.expect("a directory entry")
+                        .file_name()
+                        .to_string_lossy()
+                        .into_owned()
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    names.sort();
+    names
+}
