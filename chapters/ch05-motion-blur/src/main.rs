@@ -1,1 +1,201 @@
-fn main() {}
+//! `ch05-motion-blur`: render a scene in motion through an open shutter, or write the
+//! chapter's figures.
+
+use ch03_anti_aliasing::cli::AntiAliasingArgs;
+use ch04_depth_of_field::Lens;
+use ch05_motion_blur::scene_file::convert;
+use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
+use ch05_motion_blur::world::DEFAULT_STRETCHES;
+use ch05_motion_blur::{Shutter, StratifiedTime, TimeSampling, figures, render_with};
+use clap::{Parser, Subcommand};
+use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::render::Budget;
+use common::scene::load_scene_file;
+use std::process::ExitCode;
+
+/// Chapter 05 of the workbook: motion blur.
+#[derive(Parser, Debug)]
+#[command(name = "ch05-motion-blur", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Render a scene in motion over the shutter interval.
+    Render(RenderCommand),
+    /// Write the chapter's comparison images, plots, tables and error-against-time data.
+    Figures(FiguresArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct RenderCommand {
+    /// The built-in scene to render (when no --scene file is given).
+    #[arg(long, value_enum, default_value_t = Builtin::Street, conflicts_with = "scene")]
+    builtin: Builtin,
+    #[command(flatten)]
+    anti_aliasing: AntiAliasingArgs,
+    /// Longest path in segments, counting the camera ray (Mitsuba's max_depth)
+    /// [default: the scene file's, or 12].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    max_depth: Option<u32>,
+    /// When the shutter opens [default: the scene file's shutter_open, or 0].
+    #[arg(long, value_name = "T0", allow_negative_numbers = true, value_parser = parse_number)]
+    shutter_open: Option<f32>,
+    /// When the shutter closes; equal to --shutter-open for no blur
+    /// [default: the scene file's shutter_close, or 1].
+    #[arg(long, value_name = "T1", allow_negative_numbers = true, value_parser = parse_number)]
+    shutter_close: Option<f32>,
+    /// How the times of a pixel's samples are drawn.
+    #[arg(long, value_enum, default_value_t = TimeSampling::Stratified)]
+    time_sampling: TimeSampling,
+    /// Radius of the lens aperture in scene units; 0 is a pinhole [default: the scene file's,
+    /// or 0].
+    #[arg(long, value_name = "R", allow_negative_numbers = true, value_parser = parse_number)]
+    aperture_radius: Option<f32>,
+    /// Distance of the plane in focus along the viewing axis [default: the scene file's, or 5].
+    #[arg(long, value_name = "D", allow_negative_numbers = true, value_parser = parse_number)]
+    focus_distance: Option<f32>,
+    /// Into how many stretches of the shutter the moving objects' bounds are cut, one BVH each.
+    #[arg(long, value_name = "K", default_value_t = DEFAULT_STRETCHES as u32,
+          value_parser = clap::value_parser!(u32).range(1..=1024))]
+    stretches: u32,
+    #[command(flatten)]
+    args: RenderArgs,
+}
+
+/// Any number, including NaN and infinities: each option's own rule is checked where it is
+/// used, with the reason.
+fn parse_number(text: &str) -> Result<f32, String> {
+    text.trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number"))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Render(command) => run_render(command),
+        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => report_error(error.as_ref()),
+    }
+}
+
+fn run_render(command: RenderCommand) -> anyhow::Result<()> {
+    if command.args.scene.is_none() && !command.args.define.is_empty() {
+        anyhow::bail!("-D sets a parameter of a scene file; it needs --scene FILE.xml");
+    }
+    let (world, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
+        match &command.args.scene {
+            Some(path) => {
+                let loaded = load_scene_file(path, &command.args.define)?;
+                for warning in &loaded.warnings {
+                    eprintln!("{warning}");
+                }
+                let converted = convert(&loaded.scene)
+                    .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+                for note in &converted.notes {
+                    eprintln!("note: {note}");
+                }
+                (
+                    converted.world,
+                    converted.lens,
+                    Some(converted.filter),
+                    Some(converted.sampler),
+                    converted.spp,
+                    path.display().to_string(),
+                )
+            }
+            None => (
+                command.builtin.build(DEFAULT_DEPTH, DEFAULT_SHUTTER),
+                Lens::PINHOLE,
+                None,
+                None,
+                16,
+                command.builtin.name().to_string(),
+            ),
+        };
+    let shutter = Shutter::new(
+        command.shutter_open.unwrap_or(world.shutter.open),
+        command.shutter_close.unwrap_or(world.shutter.close),
+    )
+    .map_err(|e| anyhow::anyhow!("--shutter-open and --shutter-close: {e}"))?;
+    let lens = Lens::new(
+        command
+            .aperture_radius
+            .unwrap_or(scene_lens.aperture_radius),
+        command
+            .focus_distance
+            .unwrap_or(if scene_lens.is_pinhole() {
+                5.0
+            } else {
+                scene_lens.focus_distance
+            }),
+    )
+    .map_err(|e| anyhow::anyhow!("--aperture-radius and --focus-distance: {e}"))?;
+    let mut world = world.with_shutter(shutter, command.stretches as usize);
+    if let Some(max_depth) = command.max_depth {
+        world.scene.max_depth = max_depth;
+    }
+    let filter = command.anti_aliasing.filter(file_filter)?;
+    let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
+    let camera = world.scene.camera;
+    let settings = command
+        .args
+        .settings((camera.width, camera.height), default_spp)?;
+    let pixel_sampler =
+        command
+            .anti_aliasing
+            .pixel_sampler(sampler_kind, &settings.budget, command.args.seed)?;
+    let rendered = match (command.time_sampling, settings.budget) {
+        (TimeSampling::Independent, _) => {
+            command.args.check_outputs()?;
+            render_with(&world, &lens, &settings, &pixel_sampler, &filter)
+        }
+        (TimeSampling::Stratified, Budget::Samples(spp)) => {
+            command.args.check_outputs()?;
+            let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
+            render_with(&world, &lens, &settings, &sampler, &filter)
+        }
+        (TimeSampling::Stratified, Budget::Seconds(_)) => anyhow::bail!(
+            "--time-sampling stratified cuts the shutter into one stratum per sample, so it needs --spp, not --time (use --time-sampling independent with --time)"
+        ),
+    };
+    let extra = serde_json::json!({
+        "scene": scene_name,
+        "max_depth": world.scene.max_depth,
+        "sampler": sampler_kind.name(),
+        "filter": filter.kind().name(),
+        "filter_radius": filter.half_width(),
+        "aperture_radius": lens.aperture_radius,
+        "focus_distance": lens.focus_distance,
+        "shutter_open": shutter.open,
+        "shutter_close": shutter.close,
+        "time_sampling": command.time_sampling.name(),
+        "stretches": world.moving.stretches(),
+        "seed": command.args.seed,
+    });
+    command.args.write_outputs(&rendered, extra)?;
+    eprintln!(
+        "wrote {} ({}x{}, {} spp, shutter [{}, {}], {:.2} s, {:.0} rays/s)",
+        command.args.out.display(),
+        rendered.stats.width,
+        rendered.stats.height,
+        rendered.stats.spp,
+        shutter.open,
+        shutter.close,
+        rendered.stats.seconds,
+        rendered.stats.rays_per_second
+    );
+    if rendered.stats.nonfinite_samples > 0 {
+        eprintln!(
+            "warning: {} samples were not finite and were left out",
+            rendered.stats.nonfinite_samples
+        );
+    }
+    Ok(())
+}

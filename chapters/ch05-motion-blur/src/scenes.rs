@@ -127,12 +127,12 @@ fn spinning_cube(
 }
 
 /// Where the fast sphere of `street` starts and ends: far outside the frame on both sides.
-pub const FAST_SPHERE_PATH: (Vec3, Vec3) = (Vec3::new(-6.0, 0.5, 1.6), Vec3::new(6.0, 0.5, 1.6));
+pub const FAST_SPHERE_PATH: (Vec3, Vec3) = (Vec3::new(-4.0, 0.6, 1.6), Vec3::new(4.0, 0.6, 1.6));
 
 fn street(max_depth: u32, shutter: Shutter) -> MotionScene {
     let floor = Shape::Quad(Quad::new(
-        Vec3::new(-8.0, 0.0, 6.0),
-        -14.0 * Vec3::Z,
+        Vec3::new(-8.0, 0.0, -8.0),
+        14.0 * Vec3::Z,
         16.0 * Vec3::X,
     ));
     let mirror = Shape::Quad(Quad::new(
@@ -165,8 +165,8 @@ fn street(max_depth: u32, shutter: Shutter) -> MotionScene {
     let scene = scene.build(PinholeCamera::new(frame, 50.0, 320, 200), max_depth);
     let mut moving = vec![
         (
-            sliding_sphere(0.5, FAST_SPHERE_PATH.0, FAST_SPHERE_PATH.1),
-            Material::diffuse(Vec3::new(0.85, 0.2, 0.1)),
+            sliding_sphere(0.6, FAST_SPHERE_PATH.0, FAST_SPHERE_PATH.1),
+            Material::diffuse(Vec3::new(0.95, 0.3, 0.1)),
         ),
         (
             sliding_sphere(0.6, Vec3::new(-2.2, 0.6, -1.0), Vec3::new(-1.7, 0.6, -1.0)),

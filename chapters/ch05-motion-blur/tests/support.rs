@@ -1,0 +1,143 @@
+//! Helpers shared by the chapter's tests.
+#![allow(dead_code)]
+
+use ch01_whitted::material::Material;
+use ch01_whitted::scene::{Scene, SceneBuilder};
+use ch05_motion_blur::TimeSampler;
+use ch05_motion_blur::world::MotionScene;
+use common::geometry::{Quad, Shape, Sphere};
+use common::image::Image;
+use common::sampler::{IndependentSampler, Sampler};
+use glam::{Mat4, UVec2, Vec2, Vec3};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Counts how many time numbers and other numbers a sampler hands out after the pixel.
+#[derive(Clone)]
+pub struct Counting {
+    inner: IndependentSampler,
+    pub time_draws: Arc<AtomicU64>,
+    pub other_draws: Arc<AtomicU64>,
+}
+
+impl Counting {
+    pub fn new(seed: u64) -> Self {
+        Self {
+            inner: IndependentSampler::new(seed),
+            time_draws: Arc::new(AtomicU64::new(0)),
+            other_draws: Arc::new(AtomicU64::new(0)),
+        }
+    }
+
+    pub fn times(&self) -> u64 {
+        self.time_draws.load(Ordering::Relaxed)
+    }
+}
+
+impl Sampler for Counting {
+    fn start_pixel_sample(&mut self, pixel: UVec2, index: u64) {
+        self.inner.start_pixel_sample(pixel, index);
+    }
+    fn get_pixel_2d(&mut self) -> Vec2 {
+        self.inner.get_pixel_2d()
+    }
+    fn get_1d(&mut self) -> f32 {
+        self.other_draws.fetch_add(1, Ordering::Relaxed);
+        self.inner.get_1d()
+    }
+}
+
+impl TimeSampler for Counting {
+    fn get_time_1d(&mut self) -> f32 {
+        self.time_draws.fetch_add(1, Ordering::Relaxed);
+        self.inner.get_1d()
+    }
+}
+
+/// The moving shapes of `world` frozen where they are at `time`, as ordinary world-space
+/// shapes in a static scene: what a still photograph at `time` shows.
+pub fn frozen_at(world: &MotionScene, time: f32) -> Scene {
+    let still = &world.scene;
+    let mut builder = SceneBuilder::new().background(still.background);
+    for (index, shape) in still.geometry.shapes().iter().enumerate() {
+        builder = builder.shape(*shape, still.materials[index]);
+    }
+    let first_moving = still.geometry.shapes().len();
+    for (index, moving) in world.moving.shapes().iter().enumerate() {
+        let m = moving.motion.at(time);
+        let placed = place(&moving.shape, &m);
+        builder = builder.shape(placed, still.materials[first_moving + index]);
+    }
+    for light in &still.lights {
+        builder = builder.light(*light);
+    }
+    let mut camera = still.camera;
+    if world.camera_motion.is_some() {
+        camera = world.camera_at(time, camera.width, camera.height);
+    }
+    builder.build(camera, still.max_depth)
+}
+
+/// A shape moved by a rigid transform (with uniform scale).
+fn place(shape: &Shape, m: &Mat4) -> Shape {
+    match shape {
+        Shape::Sphere(s) => {
+            let scale = m.transform_vector3(Vec3::X).length();
+            Shape::Sphere(Sphere::new(m.transform_point3(s.center), s.radius * scale))
+        }
+        Shape::Quad(q) => Shape::Quad(Quad::new(
+            m.transform_point3(q.corner()),
+            m.transform_vector3(q.e1()),
+            m.transform_vector3(q.e2()),
+        )),
+        other => panic!("frozen_at does not place {other:?}"),
+    }
+}
+
+/// A sphere sliding along x through a point light's view of a mirror: the camera sees only the
+/// mirror, so the sphere appears in the image by reflection alone, and its shadow falls on a
+/// floor that the camera sees in the mirror too.
+pub fn mirror_only_scene() -> MotionScene {
+    use ch01_whitted::camera::{CameraFrame, PinholeCamera};
+    use ch01_whitted::light::PointLight;
+    use ch05_motion_blur::{AnimatedTransform, MovingShape, Shutter};
+    // Camera at z = 4 looking down -z at a mirror at z = 0; the sphere sits behind the camera
+    // (z = 6), out of its view.
+    let mirror = Shape::Quad(Quad::new(
+        Vec3::new(-3.0, -2.0, 0.0),
+        6.0 * Vec3::X,
+        4.0 * Vec3::Y,
+    ));
+    let scene = SceneBuilder::new()
+        .background(Vec3::splat(0.1))
+        .shape(mirror, Material::mirror())
+        .light(PointLight {
+            position: Vec3::new(0.0, 3.0, 3.0),
+            intensity: Vec3::splat(80.0),
+        });
+    let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap();
+    let scene = scene.build(PinholeCamera::new(frame, 50.0, 32, 16), 4);
+    let sphere = MovingShape::new(
+        Shape::Sphere(Sphere::new(Vec3::ZERO, 1.2)),
+        AnimatedTransform::new(&[
+            (0.0, Mat4::from_translation(Vec3::new(-2.0, 0.0, 7.0))),
+            (1.0, Mat4::from_translation(Vec3::new(2.0, 0.0, 7.0))),
+        ])
+        .unwrap(),
+    );
+    MotionScene::new(
+        scene,
+        vec![(sphere, Material::diffuse(Vec3::new(0.9, 0.6, 0.2)))],
+        None,
+        Shutter::new(0.0, 1.0).unwrap(),
+    )
+}
+
+/// The per-pixel mean of images.
+pub fn average(images: &[Image]) -> Image {
+    let mut out = Image::new(images[0].width, images[0].height);
+    for (i, pixel) in out.pixels.iter_mut().enumerate() {
+        *pixel = images.iter().map(|image| image.pixels[i]).sum::<Vec3>() / images.len() as f32;
+    }
+    out
+}
