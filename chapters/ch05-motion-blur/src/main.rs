@@ -41,21 +41,21 @@ struct RenderCommand {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
     max_depth: Option<u32>,
     /// When the shutter opens [default: the scene file's shutter_open, or 0].
-    #[arg(long, value_name = "T0", allow_negative_numbers = true, value_parser = parse_number)]
+    #[arg(long, value_name = "T0", allow_hyphen_values = true, value_parser = parse_number)]
     shutter_open: Option<f32>,
     /// When the shutter closes; equal to --shutter-open for no blur
     /// [default: the scene file's shutter_close, or 1].
-    #[arg(long, value_name = "T1", allow_negative_numbers = true, value_parser = parse_number)]
+    #[arg(long, value_name = "T1", allow_hyphen_values = true, value_parser = parse_number)]
     shutter_close: Option<f32>,
     /// How the times of a pixel's samples are drawn.
     #[arg(long, value_enum, default_value_t = TimeSampling::Stratified)]
     time_sampling: TimeSampling,
     /// Radius of the lens aperture in scene units; 0 is a pinhole [default: the scene file's,
     /// or 0].
-    #[arg(long, value_name = "R", allow_negative_numbers = true, value_parser = parse_number)]
+    #[arg(long, value_name = "R", allow_hyphen_values = true, value_parser = parse_number)]
     aperture_radius: Option<f32>,
     /// Distance of the plane in focus along the viewing axis [default: the scene file's, or 5].
-    #[arg(long, value_name = "D", allow_negative_numbers = true, value_parser = parse_number)]
+    #[arg(long, value_name = "D", allow_hyphen_values = true, value_parser = parse_number)]
     focus_distance: Option<f32>,
     /// Into how many stretches of the shutter the moving objects' bounds are cut, one BVH each.
     #[arg(long, value_name = "K", default_value_t = DEFAULT_STRETCHES as u32,

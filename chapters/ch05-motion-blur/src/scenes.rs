@@ -185,14 +185,14 @@ fn street(max_depth: u32, shutter: Shutter) -> MotionScene {
 
 fn spinner(max_depth: u32, shutter: Shutter) -> MotionScene {
     let scene = SceneBuilder::new()
-        .background(Vec3::new(0.2, 0.22, 0.26))
+        .background(Vec3::new(0.05, 0.05, 0.07))
         .light(PointLight {
             position: Vec3::new(-2.0, 3.0, 5.0),
-            intensity: Vec3::splat(40.0),
+            intensity: Vec3::splat(70.0),
         })
         .light(PointLight {
             position: Vec3::new(3.0, -1.0, 4.0),
-            intensity: Vec3::splat(10.0),
+            intensity: Vec3::splat(20.0),
         });
     let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y)
         .expect("the camera looks along a valid direction");

@@ -1,0 +1,135 @@
+//! Scene files with the `<animation>` extension: they render, and what is wrong is refused.
+
+use ch05_motion_blur::scene_file::convert;
+use common::scene::{load_scene_file, parse_scene};
+use common::test_support::run_binary;
+use std::path::{Path, PathBuf};
+
+const BINARY: &str = env!("CARGO_BIN_EXE_ch05-motion-blur");
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+#[test]
+fn the_chapters_scene_files_render_with_their_motion() {
+    for (name, shapes_moving, camera_moving) in [
+        ("rolling-ball.xml", 7, false),
+        ("panning-camera.xml", 0, true),
+    ] {
+        let loaded = load_scene_file(&scene_path(name), &[]).expect(name);
+        assert!(loaded.warnings.is_empty(), "{name}: {:?}", loaded.warnings);
+        let converted = convert(&loaded.scene).expect(name);
+        let world = &converted.world;
+        assert!(world.moves(), "{name}");
+        // A sphere is one shape, a cube six faces.
+        assert_eq!(world.moving.shapes().len(), shapes_moving, "{name}");
+        assert_eq!(world.camera_motion.is_some(), camera_moving, "{name}");
+        assert_eq!((world.shutter.open, world.shutter.close), (0.0, 1.0));
+
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("out.png");
+        let path = scene_path(name);
+        let args = [
+            "render",
+            "--scene",
+            path.to_str().unwrap(),
+            "--spp",
+            "2",
+            "--width",
+            "24",
+            "--height",
+            "16",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        let run = run_binary(BINARY, &args);
+        assert!(
+            run.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        assert!(out.exists());
+    }
+}
+
+fn scene_with(shutter: &str, body: &str) -> String {
+    format!(
+        r#"<scene version="3.0.0">
+    <sensor type="perspective">
+        <float name="fov" value="45"/>{shutter}
+        <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+        <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>
+    </sensor>
+    {body}
+</scene>"#
+    )
+}
+
+const MOVING_SPHERE: &str = r#"<shape type="sphere"><animation name="to_world">
+    <transform time="0"><translate x="-1"/></transform>
+    <transform time="1"><translate x="1"/></transform></animation></shape>"#;
+
+#[test]
+fn what_the_chapter_cannot_render_is_refused_with_the_reason() {
+    let cases = [
+        (
+            scene_with(
+                "",
+                r#"<shape type="sphere"><animation name="to_world">
+                <transform time="0"/><transform time="1"><rotate y="1" angle="180"/></transform>
+                </animation></shape>"#,
+            ),
+            "shape 1 (line 7, column 5): the keyframe at time 1 is turned half a turn",
+        ),
+        (
+            scene_with(
+                "",
+                r#"<shape type="sphere"><animation name="to_world">
+                <transform time="0"/><transform time="1"><translate x="1"/></transform>
+                </animation><emitter type="area"><rgb name="radiance" value="1"/></emitter></shape>"#,
+            ),
+            "shape 1 (line 7, column 5) is an area light",
+        ),
+        (
+            scene_with(
+                "",
+                r#"<shape type="sphere"><animation name="to_world">
+                <transform time="0"/><transform time="1"><translate x="1"/></transform>
+                </animation><bsdf type="roughplastic"/></shape>"#,
+            ),
+            "chapter 06",
+        ),
+        (
+            scene_with(
+                r#"<float name="shutter_open" value="1"/><float name="shutter_close" value="0.5"/>"#,
+                MOVING_SPHERE,
+            ),
+            "shutter must close at or after",
+        ),
+    ];
+    for (text, expected) in cases {
+        let loaded = parse_scene(&text, Path::new("test.xml"), &[]).expect("valid file");
+        let error = convert(&loaded.scene)
+            .err()
+            .unwrap_or_else(|| panic!("accepted: {text}"));
+        assert!(
+            error.contains(expected),
+            "expected `{expected}` in: {error}"
+        );
+    }
+}
+
+#[test]
+fn a_moving_scene_with_a_closed_shutter_renders_an_instant_and_says_so() {
+    let loaded = parse_scene(&scene_with("", MOVING_SPHERE), Path::new("test.xml"), &[]).unwrap();
+    let converted = convert(&loaded.scene).unwrap();
+    assert!(converted.world.shutter.is_instant());
+    assert!(
+        converted.notes.iter().any(|n| n.contains("without blur")),
+        "{:?}",
+        converted.notes
+    );
+}
