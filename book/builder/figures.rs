@@ -21,6 +21,7 @@ pub const CHAPTERS: &[(&str, WriteFigures)] = &[
     ("ch02", ch02_monte_carlo::figures::write_all),
     ("ch03", ch03_anti_aliasing::figures::write_all),
     ("ch04", ch04_depth_of_field::figures::write_all),
+    ("ch05", ch05_motion_blur::figures::write_all),
 ];
 
 /// Regenerates every chapter's figures under `figures_dir`, starting each chapter from an empty

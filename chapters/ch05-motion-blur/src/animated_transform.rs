@@ -62,6 +62,14 @@ impl Decomposed {
             * Mat4::from_quat(self.rotation)
             * Mat4::from_mat3(self.scale)
     }
+
+    /// Its inverse `S^-1 R^-1 T^-1`, from the parts: a 3 x 3 inverse and a transposed
+    /// rotation instead of a general 4 x 4 inverse, once per ray.
+    pub fn inverse_matrix(&self) -> Mat4 {
+        Mat4::from_mat3(self.scale.inverse())
+            * Mat4::from_quat(self.rotation.conjugate())
+            * Mat4::from_translation(-self.translation)
+    }
 }
 
 /// One keyframe: the matrix at a time, and its parts.
@@ -71,6 +79,8 @@ pub struct Keyframe {
     pub time: f32,
     /// Object to world at that time, exactly as given.
     pub matrix: Mat4,
+    /// Its inverse, world to object.
+    pub inverse: Mat4,
     /// Its parts.
     pub parts: Decomposed,
 }
@@ -158,6 +168,7 @@ impl AnimatedTransform {
             out.push(Keyframe {
                 time,
                 matrix,
+                inverse: matrix.inverse(),
                 parts,
             });
         }
@@ -208,21 +219,28 @@ impl AnimatedTransform {
     /// Object to world at `time`. At a keyframe's time this is the keyframe's own matrix,
     /// exactly; in between, the interpolated parts recombined.
     pub fn at(&self, time: f32) -> Mat4 {
+        self.at_with_inverse(time).0
+    }
+
+    /// Object to world at `time` and its inverse, world to object.
+    pub fn at_with_inverse(&self, time: f32) -> (Mat4, Mat4) {
         let first = &self.keyframes[0];
         let last = &self.keyframes[self.keyframes.len() - 1];
+        let exact = |k: &Keyframe| (k.matrix, k.inverse);
         if time.is_nan() || time <= first.time {
-            return first.matrix;
+            return exact(first);
         }
         if time >= last.time {
-            return last.matrix;
+            return exact(last);
         }
         let Some((i, u)) = self.segment_at(time) else {
-            return first.matrix;
+            return exact(first);
         };
         if u == 0.0 {
-            return self.keyframes[i].matrix;
+            return exact(&self.keyframes[i]);
         }
-        interpolate(&self.keyframes[i].parts, &self.keyframes[i + 1].parts, u).matrix()
+        let parts = interpolate(&self.keyframes[i].parts, &self.keyframes[i + 1].parts, u);
+        (parts.matrix(), parts.inverse_matrix())
     }
 }
 

@@ -38,8 +38,7 @@ impl MovingShape {
     // ANCHOR: moving_intersect
     /// The nearest hit at the ray's time: the ray goes into object space, the hit comes back.
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
-        let object_to_world = self.motion.at(ray.time);
-        let world_to_object = object_to_world.inverse();
+        let (object_to_world, world_to_object) = self.motion.at_with_inverse(ray.time);
         let local_hit = self
             .shape
             .intersect(&to_object_space(ray, &world_to_object))?;

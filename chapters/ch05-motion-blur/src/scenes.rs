@@ -219,3 +219,46 @@ fn pan(max_depth: u32, shutter: Shutter) -> MotionScene {
     .expect("two camera frames are valid keyframes");
     MotionScene::new(scene, Vec::new(), Some(motion), shutter)
 }
+
+/// The scene of the motion-bounds measurements: `rows x rows` small spheres on a floor, each
+/// sliding sideways by `travel` while the shutter is open (alternate rows in opposite
+/// directions). With a long travel, every sphere's box over the whole shutter covers most of
+/// its row, and a ray must test all of the row's spheres.
+pub fn swarm(rows: u32, travel: f32, shutter: Shutter) -> MotionScene {
+    let floor = Shape::Quad(Quad::new(
+        Vec3::new(-12.0, 0.0, -14.0),
+        20.0 * Vec3::Z,
+        24.0 * Vec3::X,
+    ));
+    let scene = SceneBuilder::new()
+        .background(Vec3::new(0.45, 0.6, 0.85))
+        .shape(floor, Material::diffuse(Vec3::splat(0.6)))
+        .light(PointLight {
+            position: Vec3::new(-3.0, 8.0, 6.0),
+            intensity: Vec3::splat(120.0),
+        });
+    let frame = CameraFrame::look_at(Vec3::new(0.0, 5.0, 9.0), Vec3::new(0.0, 0.0, -3.0), Vec3::Y)
+        .expect("the camera looks along a valid direction");
+    let scene = scene.build(PinholeCamera::new(frame, 60.0, 240, 160), DEFAULT_MAX_DEPTH);
+    let spacing = 16.0 / rows as f32;
+    let radius = 0.35 * spacing;
+    let mut moving = Vec::new();
+    for row in 0..rows {
+        let direction = if row % 2 == 0 { 1.0 } else { -1.0 };
+        for column in 0..rows {
+            let start = Vec3::new(
+                -8.0 + (column as f32 + 0.5) * spacing - 0.5 * direction * travel,
+                radius,
+                -12.0 + (row as f32 + 0.5) * spacing,
+            );
+            let end = start + Vec3::new(direction * travel, 0.0, 0.0);
+            let hue = (row * rows + column) as f32 / (rows * rows) as f32;
+            let albedo = Vec3::new(0.2 + 0.7 * hue, 0.5, 0.9 - 0.7 * hue);
+            moving.push((
+                sliding_sphere(radius, start, end),
+                Material::diffuse(albedo),
+            ));
+        }
+    }
+    MotionScene::new(scene, moving, None, shutter)
+}
