@@ -176,7 +176,7 @@ fn time_samples(out: &Path) -> anyhow::Result<()> {
     let n = 32u64;
     let pixel = UVec2::new(7, 4);
     let draw =
-        |sampler: &mut dyn FnMut(u64) -> f32| -> Vec<f32> { (0..n).map(|i| sampler(i)).collect() };
+        |sampler: &mut dyn FnMut(u64) -> f32| -> Vec<f32> { (0..n).map(&mut *sampler).collect() };
     let mut independent = IndependentSampler::new(3);
     let mut stratified = StratifiedTime::new(IndependentSampler::new(3), n, 3);
     let independent_times = draw(&mut |i| {
