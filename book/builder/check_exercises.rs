@@ -86,9 +86,9 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
 
 /// Settings for this check's own build of the student edition, written into the edition's
 /// `.cargo/config.toml` (which overrides the manifest's profiles): the checks are small unit
-/// tests, so the dependencies are compiled without optimisation or debug information. That
-/// halves the time of the check's largest step, a second build of every dependency; the
-/// edition handed to students (`book student`) keeps the workspace's settings.
+/// tests, so the dependencies are compiled without optimisation or debug information, which
+/// shortens the check's largest step, a second build of every dependency. The edition handed
+/// to students (`book student`) keeps the workspace's settings.
 const QUICK_BUILD_CONFIG: &str = "\
 # Written by `book check-exercises` for its own build of the student edition.
 [profile.dev]
