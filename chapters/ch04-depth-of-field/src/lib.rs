@@ -18,6 +18,7 @@
 pub mod agreement;
 pub mod aperture;
 pub mod circle_of_confusion;
+pub mod cli;
 pub mod figures;
 pub mod lens;
 pub mod scene_file;

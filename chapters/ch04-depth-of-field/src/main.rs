@@ -1,8 +1,8 @@
 //! `ch04-depth-of-field`: render through a thin lens, or write the chapter's figures.
 
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
-use ch04_depth_of_field::aperture::{Aperture, LensWarp};
-use ch04_depth_of_field::lens::Lens;
+use ch04_depth_of_field::Aperture;
+use ch04_depth_of_field::cli::LensArgs;
 use ch04_depth_of_field::scene_file::convert;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{figures, render_with};
@@ -27,15 +27,6 @@ enum Command {
     Figures(FiguresArgs),
 }
 
-/// The shapes `--aperture` accepts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-enum ApertureShape {
-    /// A round hole.
-    Disc,
-    /// A regular polygon, one corner per diaphragm blade (see --blades).
-    Polygon,
-}
-
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
     /// The built-in scene to render (when no --scene file is given).
@@ -47,59 +38,10 @@ struct RenderCommand {
     /// [default: the scene file's, or 12].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
     max_depth: Option<u32>,
-    /// Radius of the lens aperture in scene units; 0 is a pinhole
-    /// [default: the scene file's, or the built-in scene's].
-    #[arg(long, value_name = "R", allow_negative_numbers = true, value_parser = parse_number,
-          conflicts_with = "f_number")]
-    aperture_radius: Option<f32>,
-    /// The f-number N: the aperture's diameter is the focal length over N (needs --focal-length).
-    #[arg(long, value_name = "N", allow_negative_numbers = true, value_parser = parse_number,
-          requires = "focal_length")]
-    f_number: Option<f32>,
-    /// Focal length in scene units, for --f-number (the field of view stays the scene's).
-    #[arg(long, value_name = "F", allow_negative_numbers = true, value_parser = parse_number,
-          requires = "f_number")]
-    focal_length: Option<f32>,
-    /// Distance of the plane in focus along the viewing axis, in scene units
-    /// [default: the scene file's, or the built-in scene's].
-    #[arg(long, value_name = "D", allow_negative_numbers = true, value_parser = parse_number)]
-    focus_distance: Option<f32>,
-    /// Shape of the aperture [default: disc, or polygon when --blades is given].
-    #[arg(long, value_enum)]
-    aperture: Option<ApertureShape>,
-    /// Blades of a polygonal aperture: its number of corners, 3 to 64 [default: 6].
-    #[arg(long, allow_negative_numbers = true, value_parser = parse_blades)]
-    blades: Option<u32>,
-    /// Rotation of a polygonal aperture in degrees.
-    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, value_parser = parse_number)]
-    aperture_rotation: Option<f32>,
-    /// How a point of a disc aperture is drawn; `naive` is the wrong one, for comparison.
-    #[arg(long, value_enum)]
-    lens_warp: Option<LensWarp>,
+    #[command(flatten)]
+    lens: LensArgs,
     #[command(flatten)]
     args: RenderArgs,
-}
-
-/// Any number; each option's own rule is checked where the lens is built, with the reason.
-fn parse_number(text: &str) -> Result<f32, String> {
-    text.trim()
-        .parse()
-        .map_err(|_| format!("`{text}` is not a number"))
-}
-
-fn parse_blades(text: &str) -> Result<u32, String> {
-    let blades: i64 = text
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{text}` is not a whole number of blades"))?;
-    let max = ch04_depth_of_field::aperture::MAX_BLADES;
-    if (3..=i64::from(max)).contains(&blades) {
-        Ok(blades as u32)
-    } else {
-        Err(format!(
-            "an aperture polygon needs between 3 and {max} blades, not {blades}"
-        ))
-    }
 }
 
 fn main() -> ExitCode {
@@ -112,59 +54,6 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => report_error(error.as_ref()),
     }
-}
-
-/// The lens the command line asks for, starting from the scene's own.
-fn lens_of(command: &RenderCommand, scene_lens: Lens) -> anyhow::Result<Lens> {
-    let radius = match (
-        command.aperture_radius,
-        command.f_number,
-        command.focal_length,
-    ) {
-        (Some(radius), _, _) => {
-            Lens::new(radius, 1.0).map_err(|e| anyhow::anyhow!("--aperture-radius: {e}"))?;
-            radius
-        }
-        (None, Some(n), Some(f)) => {
-            Lens::from_f_number(f, n, 1.0)
-                .map_err(|e| anyhow::anyhow!("--f-number and --focal-length: {e}"))?
-                .aperture_radius
-        }
-        _ => scene_lens.aperture_radius,
-    };
-    let focus = command.focus_distance.unwrap_or(scene_lens.focus_distance);
-    let mut lens =
-        Lens::new(radius, focus).map_err(|e| anyhow::anyhow!("--focus-distance: {e}"))?;
-    let shape = command.aperture.unwrap_or(if command.blades.is_some() {
-        ApertureShape::Polygon
-    } else {
-        ApertureShape::Disc
-    });
-    match shape {
-        ApertureShape::Disc => {
-            if command.blades.is_some() || command.aperture_rotation.is_some() {
-                anyhow::bail!(
-                    "--blades and --aperture-rotation shape a polygonal aperture; they need --aperture polygon, not disc"
-                );
-            }
-            lens = lens.with_aperture(Aperture::Disc);
-        }
-        ApertureShape::Polygon => {
-            if command.lens_warp.is_some() {
-                anyhow::bail!(
-                    "--lens-warp chooses how a disc is sampled; a polygonal aperture is always sampled uniformly by its triangles"
-                );
-            }
-            let degrees = command.aperture_rotation.unwrap_or(0.0);
-            let aperture = Aperture::polygon(command.blades.unwrap_or(6), degrees.to_radians())
-                .map_err(|e| anyhow::anyhow!("--aperture-rotation: {e}"))?;
-            lens = lens.with_aperture(aperture);
-        }
-    }
-    if let Some(warp) = command.lens_warp {
-        lens = lens.with_warp(warp);
-    }
-    Ok(lens)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
@@ -201,7 +90,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
                 command.builtin.name().to_string(),
             ),
         };
-    let lens = lens_of(&command, scene_lens)?;
+    let lens = command.lens.lens(scene_lens)?;
     if let Some(max_depth) = command.max_depth {
         scene.max_depth = max_depth;
     }

@@ -3,6 +3,7 @@
 
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Lens;
+use ch04_depth_of_field::cli::LensArgs;
 use ch05_motion_blur::scene_file::convert;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
@@ -50,13 +51,8 @@ struct RenderCommand {
     /// How the times of a pixel's samples are drawn.
     #[arg(long, value_enum, default_value_t = TimeSampling::Stratified)]
     time_sampling: TimeSampling,
-    /// Radius of the lens aperture in scene units; 0 is a pinhole [default: the scene file's,
-    /// or 0].
-    #[arg(long, value_name = "R", allow_hyphen_values = true, value_parser = parse_number)]
-    aperture_radius: Option<f32>,
-    /// Distance of the plane in focus along the viewing axis [default: the scene file's, or 5].
-    #[arg(long, value_name = "D", allow_hyphen_values = true, value_parser = parse_number)]
-    focus_distance: Option<f32>,
+    #[command(flatten)]
+    lens: LensArgs,
     /// Into how many stretches of the shutter the moving objects' bounds are cut, one BVH each.
     #[arg(long, value_name = "K", default_value_t = DEFAULT_STRETCHES as u32,
           value_parser = clap::value_parser!(u32).range(1..=1024))]
@@ -124,19 +120,16 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         command.shutter_close.unwrap_or(world.shutter.close),
     )
     .map_err(|e| anyhow::anyhow!("--shutter-open and --shutter-close: {e}"))?;
-    let lens = Lens::new(
-        command
-            .aperture_radius
-            .unwrap_or(scene_lens.aperture_radius),
-        command
-            .focus_distance
-            .unwrap_or(if scene_lens.is_pinhole() {
-                5.0
-            } else {
-                scene_lens.focus_distance
-            }),
-    )
-    .map_err(|e| anyhow::anyhow!("--aperture-radius and --focus-distance: {e}"))?;
+    // A pinhole scene given an aperture on the command line focuses 5 units away unless told.
+    let scene_lens = if scene_lens.is_pinhole() {
+        Lens {
+            focus_distance: 5.0,
+            ..scene_lens
+        }
+    } else {
+        scene_lens
+    };
+    let lens = command.lens.lens(scene_lens)?;
     let mut world = world.with_shutter(shutter, command.stretches as usize);
     if let Some(max_depth) = command.max_depth {
         world.scene.max_depth = max_depth;
