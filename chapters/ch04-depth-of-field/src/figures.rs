@@ -453,6 +453,19 @@ fn convergence(out: &Path, quality: &Quality, scene: &Scene) -> anyhow::Result<(
     Ok(())
 }
 
+/// Ours next to Mitsuba 3 on the chapter's scene files, with the numbers. The renders are at
+/// the files' own small sizes in every quality: they are compared with stored Mitsuba renders.
+fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
+    common::metrics::write_agreement_figures(
+        out,
+        "ours (thin lens)",
+        &crate::agreement::scenes_dir(),
+        crate::agreement::AGREEMENT_SCENES,
+        &crate::agreement::render_scene_file,
+    )
+    .map_err(anyhow::Error::msg)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -466,17 +479,4 @@ mod tests {
         let back = project(&camera, ray.at(5.0)).unwrap();
         assert!((back - p_film).length() < 1e-3, "{back}");
     }
-}
-
-/// Ours next to Mitsuba 3 on the chapter's scene files, with the numbers. The renders are at
-/// the files' own small sizes in every quality: they are compared with stored Mitsuba renders.
-fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
-    common::metrics::write_agreement_figures(
-        out,
-        "ours (thin lens)",
-        &crate::agreement::scenes_dir(),
-        crate::agreement::AGREEMENT_SCENES,
-        &crate::agreement::render_scene_file,
-    )
-    .map_err(anyhow::Error::msg)
 }

@@ -22,7 +22,7 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Render a scene through a thin lens.
-    Render(RenderCommand),
+    Render(Box<RenderCommand>),
     /// Write the chapter's comparison images, plots and error-against-time data.
     Figures(FiguresArgs),
 }
@@ -47,7 +47,7 @@ struct RenderCommand {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Render(command) => run_render(command),
+        Command::Render(command) => run_render(*command),
         Command::Figures(args) => figures::write_all(&args.out, args.quick),
     };
     match result {

@@ -25,7 +25,7 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Render a scene in motion over the shutter interval.
-    Render(RenderCommand),
+    Render(Box<RenderCommand>),
     /// Write the chapter's comparison images, plots, tables and error-against-time data.
     Figures(FiguresArgs),
 }
@@ -72,7 +72,7 @@ fn parse_number(text: &str) -> Result<f32, String> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Render(command) => run_render(command),
+        Command::Render(command) => run_render(*command),
         Command::Figures(args) => figures::write_all(&args.out, args.quick),
     };
     match result {
