@@ -1,0 +1,169 @@
+//! Extreme parameters, swept by property tests: cameras with fields of view from 1e-3 to
+//! 179.9 degrees placed far out, scenes from 1e-4 to 1e5 in size, lights near and far, glass of
+//! any index, recursion limits up to 1000, every pixel sampler and filter at any radius, and
+//! lenses from a pinhole to 1e4 wide focused from 1e-6 to 1e9 away. Every pixel must be finite
+//! and no sample may be non-finite: a NaN or an infinity is a bug at its source, which the
+//! render loop counts in `nonfinite_samples` and keeps out of the image.
+//!
+//! Case counts are modest so that the suite stays fast; `PROPTEST_CASES=10000` sweeps harder,
+//! and `PROPTEST_RNG_SEED=N` sweeps other cases (the seed is fixed, so a run is repeatable).
+//!
+//! The recursion limit is swept up to 64 here, not to the command line's 1000: Whitted's
+//! tracer follows both branches at every glass surface, and in the test scene (a mirror and a
+//! glass sphere side by side) the number of rays grows exponentially beyond a depth of about
+//! 200 (chapter 01's `spheres` scene at 32x24 pixels: 0.07 s at depth 200, 17 s at 500, hours
+//! at 1000). [`a_recursion_limit_of_1000_finishes`] records that; it is ignored until the
+//! tracer bounds the tree.
+
+use ch01_whitted::PixelPattern;
+use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
+use ch04_depth_of_field::aperture::{Aperture, LensWarp};
+use ch04_depth_of_field::lens::Lens;
+use common::render::{RenderOutput, RenderSettings};
+use glam::Vec3;
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
+use workbook_tests::{WhittedSceneParams, whitted_scene};
+
+/// Cases per property: `PROPTEST_CASES` if set, else few enough for CI.
+fn config() -> ProptestConfig {
+    let cases = std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|n| n.parse().ok());
+    let seed = std::env::var("PROPTEST_RNG_SEED")
+        .ok()
+        .and_then(|n| n.parse().ok());
+    ProptestConfig {
+        cases: cases.unwrap_or(40),
+        rng_seed: RngSeed::Fixed(seed.unwrap_or(20_261_122)),
+        // Shrunk failures are printed; nothing is written into the source tree.
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+/// A number between `lo` and `hi` (both positive), spread evenly over its orders of magnitude.
+fn log_uniform(lo: f32, hi: f32) -> impl Strategy<Value = f32> {
+    (lo.log10()..=hi.log10()).prop_map(|e| 10f32.powf(e))
+}
+
+/// A coordinate anywhere from -1e6 to 1e6, often zero.
+fn far_coordinate() -> impl Strategy<Value = f32> {
+    prop_oneof![Just(0.0f32), -1e6f32..1e6f32]
+}
+
+/// Every chapter 01 knob of the test scene.
+fn whitted_params() -> impl Strategy<Value = WhittedSceneParams> {
+    (
+        log_uniform(1e-4, 1e5),
+        (far_coordinate(), far_coordinate(), far_coordinate()),
+        (1u32..=6, 1u32..=5),
+        prop_oneof![log_uniform(1e-3, 179.9), Just(179.9f32), Just(1e-3f32)],
+        log_uniform(1e-3, 1e6),
+        log_uniform(1e-2, 1e6),
+        prop_oneof![1.0f32..=4.0, Just(1.0f32), Just(4.0f32)],
+        prop_oneof![1u32..=64, Just(1u32), Just(64u32)],
+    )
+        .prop_map(
+            |(scale, (x, y, z), (width, height), fov, camera, light, ior, depth)| {
+                WhittedSceneParams {
+                    scale,
+                    offset: Vec3::new(x, y, z),
+                    width,
+                    height,
+                    fov_degrees: fov,
+                    camera_distance: camera,
+                    light_distance: light,
+                    glass_ior: ior,
+                    max_depth: depth,
+                }
+            },
+        )
+}
+
+/// Why `out` is not acceptable, if it is not.
+fn check_finite(out: &RenderOutput) -> Result<(), TestCaseError> {
+    prop_assert_eq!(out.stats.nonfinite_samples, 0, "non-finite samples");
+    prop_assert!(
+        out.image.pixels.iter().all(|p| p.is_finite()),
+        "a non-finite pixel"
+    );
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn whitted_pixels_are_finite(params in whitted_params(), grid in any::<bool>()) {
+        let scene = whitted_scene(&params);
+        prop_assume!(scene.is_some(), "the camera is at its target");
+        let scene = scene.unwrap();
+        let (pattern, spp) = if grid { (PixelPattern::Grid, 4) } else { (PixelPattern::Centre, 1) };
+        let settings = RenderSettings::new(params.width, params.height, spp);
+        let out = ch01_whitted::render(&scene, &settings, pattern, 1).unwrap();
+        check_finite(&out)?;
+    }
+
+    #[test]
+    fn every_sampler_and_filter_gives_finite_pixels(
+        params in whitted_params(),
+        sampler in prop::sample::select(PixelSamplerKind::ALL.to_vec()),
+        filter in prop::sample::select(FilterKind::ALL.to_vec()),
+        radius in prop_oneof![log_uniform(1e-6, 16.0), Just(16.0f32)],
+        spp in prop_oneof![1u64..=64, Just(64u64)],
+        seed in any::<u64>(),
+    ) {
+        let scene = whitted_scene(&params);
+        prop_assume!(scene.is_some(), "the camera is at its target");
+        let scene = scene.unwrap();
+        let sampler = PixelSampler::new(sampler, spp, seed).unwrap();
+        let filter = ReconstructionFilter::new(filter, Some(radius)).unwrap();
+        let settings = RenderSettings::new(params.width, params.height, spp);
+        let out = ch03_anti_aliasing::render_with(&scene, &settings, &sampler, &filter);
+        check_finite(&out)?;
+        prop_assert_eq!(out.stats.spp, spp);
+    }
+
+    #[test]
+    fn every_lens_gives_finite_pixels(
+        params in whitted_params(),
+        radius in prop_oneof![Just(0.0f32), log_uniform(1e-6, 1e4), Just(1e4f32)],
+        focus in prop_oneof![log_uniform(1e-6, 1e9), Just(1e-6f32), Just(1e9f32)],
+        blades in prop_oneof![Just(0u32), 3u32..=64],
+        rotation in -10.0f32..10.0,
+        warp in prop::sample::select(LensWarp::ALL.to_vec()),
+        spp in 1u64..=8,
+        seed in any::<u64>(),
+    ) {
+        let scene = whitted_scene(&params);
+        prop_assume!(scene.is_some(), "the camera is at its target");
+        let scene = scene.unwrap();
+        let mut lens = Lens::new(radius, focus).unwrap();
+        lens = if blades == 0 {
+            lens.with_warp(warp)
+        } else {
+            lens.with_aperture(Aperture::polygon(blades, rotation).unwrap())
+        };
+        let sampler = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
+        let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
+        let settings = RenderSettings::new(params.width, params.height, spp);
+        let out = ch04_depth_of_field::render_with(&scene, &lens, &settings, &sampler, &filter);
+        check_finite(&out)?;
+    }
+}
+
+/// The command line accepts `--max-depth 1000`; the render must then finish, in time linear in
+/// the depth at worst. Today it does not (see the top of this file): the tracer needs to stop
+/// following a branch whose contribution has become negligible.
+#[test]
+#[ignore = "Whitted's ray tree grows exponentially with the recursion limit beyond ~200"]
+fn a_recursion_limit_of_1000_finishes() {
+    let scene = ch01_whitted::scenes::Builtin::Spheres.build(1000);
+    let start = std::time::Instant::now();
+    let settings = RenderSettings::new(32, 24, 1);
+    let out = ch01_whitted::render(&scene, &settings, PixelPattern::Centre, 0).unwrap();
+    assert_eq!(out.stats.nonfinite_samples, 0);
+    let seconds = start.elapsed().as_secs_f64();
+    assert!(seconds < 5.0, "{seconds} s");
+}
