@@ -16,11 +16,16 @@ pub const CHAPTERS: &[&str] = &[
     "ch02-monte-carlo",
     "ch03-anti-aliasing",
     "ch04-depth-of-field",
+    "ch05-motion-blur",
 ];
 
 /// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
-pub const RENDERING_CHAPTERS: &[&str] =
-    &["ch01-whitted", "ch03-anti-aliasing", "ch04-depth-of-field"];
+pub const RENDERING_CHAPTERS: &[&str] = &[
+    "ch01-whitted",
+    "ch03-anti-aliasing",
+    "ch04-depth-of-field",
+    "ch05-motion-blur",
+];
 
 /// `target/<profile>`, where cargo writes binaries: the parent of the test's `deps/`.
 fn profile_dir() -> PathBuf {

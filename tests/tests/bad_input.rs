@@ -21,10 +21,16 @@ struct Case {
 const ALL: &[&str] = CHAPTERS;
 const RENDERING: &[&str] = RENDERING_CHAPTERS;
 /// The chapters with chapter 03's pixel samplers and filters.
-const ANTI_ALIASED: &[&str] = &["ch03-anti-aliasing", "ch04-depth-of-field"];
+const ANTI_ALIASED: &[&str] = &[
+    "ch03-anti-aliasing",
+    "ch04-depth-of-field",
+    "ch05-motion-blur",
+];
+/// The chapters with chapter 04's lens options.
+const WITH_LENS: &[&str] = &["ch04-depth-of-field", "ch05-motion-blur"];
+const CH05: &[&str] = &["ch05-motion-blur"];
 const CH01: &[&str] = &["ch01-whitted"];
 const CH02: &[&str] = &["ch02-monte-carlo"];
-const CH04: &[&str] = &["ch04-depth-of-field"];
 /// The chapters before chapter 04, which have no lens.
 const BEFORE_CH04: &[&str] = &["ch01-whitted", "ch03-anti-aliasing"];
 
@@ -41,6 +47,7 @@ const fn case(
 }
 
 /// Every bad input tried, and the message it must give.
+#[rustfmt::skip]
 const CASES: &[Case] = &[
     // The command line itself.
     case(ALL, &[], "Usage"),
@@ -48,530 +55,97 @@ const CASES: &[Case] = &[
     case(RENDERING, &["render", "--no-such-flag"], "--no-such-flag"),
     case(RENDERING, &["render"], "--out"),
     case(ALL, &["figures"], "--out"),
-    case(
-        ALL,
-        &["figures", "--out", "{dir}", "--no-such-flag"],
-        "--no-such-flag",
-    ),
+    case(ALL, &["figures", "--out", "{dir}", "--no-such-flag"], "--no-such-flag"),
     case(CH02, &["render"], "renders no scene"),
     // Sample counts and budgets.
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--spp", "0"],
-        "--spp",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--spp", "-3"],
-        "invalid value '-3' for '--spp",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--spp", "1000000001"],
-        "--spp",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--spp", "many"],
-        "many",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--time", "0"],
-        "time budget",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--time", "-1"],
-        "time budget",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--time", "nan"],
-        "time budget",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--time", "inf"],
-        "time budget",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--spp", "4", "--time", "1"],
-        "cannot be used with",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--threads", "0"],
-        "--threads",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--seed", "-1"],
-        "invalid value '-1' for '--seed",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--threads", "-2"],
-        "invalid value '-2' for '--threads",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--max-depth", "0"],
-        "--max-depth",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--max-depth", "1001"],
-        "--max-depth",
-    ),
+    case(RENDERING, &["render", "--out", "{out}", "--spp", "0"], "--spp"),
+    case(RENDERING, &["render", "--out", "{out}", "--spp", "-3"], "invalid value '-3' for '--spp"),
+    case(RENDERING, &["render", "--out", "{out}", "--spp", "1000000001"], "--spp"),
+    case(RENDERING, &["render", "--out", "{out}", "--spp", "many"], "many"),
+    case(RENDERING, &["render", "--out", "{out}", "--time", "0"], "time budget"),
+    case(RENDERING, &["render", "--out", "{out}", "--time", "-1"], "time budget"),
+    case(RENDERING, &["render", "--out", "{out}", "--time", "nan"], "time budget"),
+    case(RENDERING, &["render", "--out", "{out}", "--time", "inf"], "time budget"),
+    case(RENDERING, &["render", "--out", "{out}", "--spp", "4", "--time", "1"], "cannot be used with"),
+    case(RENDERING, &["render", "--out", "{out}", "--threads", "0"], "--threads"),
+    case(RENDERING, &["render", "--out", "{out}", "--seed", "-1"], "invalid value '-1' for '--seed"),
+    case(RENDERING, &["render", "--out", "{out}", "--threads", "-2"], "invalid value '-2' for '--threads"),
+    case(RENDERING, &["render", "--out", "{out}", "--max-depth", "0"], "--max-depth"),
+    case(RENDERING, &["render", "--out", "{out}", "--max-depth", "1001"], "--max-depth"),
     // Image sizes: none, negative, a side too long, and too many pixels for memory (refused
     // before any allocation, with the memory it would need).
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--width", "0"],
-        "--width",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--height", "-5"],
-        "invalid value '-5' for '--height",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--width", "65537"],
-        "--width",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render", "--out", "{out}", "--width", "65536", "--height", "65536",
-        ],
-        "needs 229376 MiB",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render", "--out", "{out}", "--width", "20000", "--height", "10000",
-        ],
-        "the limit is 4096 MiB",
-    ),
+    case(RENDERING, &["render", "--out", "{out}", "--width", "0"], "--width"),
+    case(RENDERING, &["render", "--out", "{out}", "--height", "-5"], "invalid value '-5' for '--height"),
+    case(RENDERING, &["render", "--out", "{out}", "--width", "65537"], "--width"),
+    case(RENDERING, &["render", "--out", "{out}", "--width", "65536", "--height", "65536"], "needs 229376 MiB"),
+    case(RENDERING, &["render", "--out", "{out}", "--width", "20000", "--height", "10000"], "the limit is 4096 MiB"),
     // Output paths.
-    case(
-        RENDERING,
-        &["render", "--out", "{dir}/out.jpg"],
-        ".png, .exr or .pfm",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{dir}/out"],
-        ".png, .exr or .pfm",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{dir}"],
-        ".png, .exr or .pfm",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{dir}/sub.png/"],
-        "names a directory, not a file",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{dir}/"],
-        ".png, .exr or .pfm",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{file}/out.png"],
-        "cannot create the directory",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--stats", "{dir}/stats.txt"],
-        ".json",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--stats", "{file}/stats.json"],
-        "cannot create the directory",
-    ),
-    case(
-        ALL,
-        &["figures", "--out", "{file}/figures"],
-        "cannot create the output directory",
-    ),
+    case(RENDERING, &["render", "--out", "{dir}/out.jpg"], ".png, .exr or .pfm"),
+    case(RENDERING, &["render", "--out", "{dir}/out"], ".png, .exr or .pfm"),
+    case(RENDERING, &["render", "--out", "{dir}"], ".png, .exr or .pfm"),
+    case(RENDERING, &["render", "--out", "{dir}/sub.png/"], "names a directory, not a file"),
+    case(RENDERING, &["render", "--out", "{dir}/"], ".png, .exr or .pfm"),
+    case(RENDERING, &["render", "--out", "{file}/out.png"], "cannot create the directory"),
+    case(RENDERING, &["render", "--out", "{out}", "--stats", "{dir}/stats.txt"], ".json"),
+    case(RENDERING, &["render", "--out", "{out}", "--stats", "{file}/stats.json"], "cannot create the directory"),
+    case(ALL, &["figures", "--out", "{file}/figures"], "cannot create the output directory"),
     // Scenes: built-in names, scene files missing, malformed or beyond the chapter.
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--builtin", "teapot"],
-        "teapot",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "-D", "spp=4"],
-        "--scene",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/empty.xml",
-            "-D",
-            "spp",
-        ],
-        "NAME=VALUE",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{dir}/no-such-scene.xml",
-        ],
-        "no-such-scene.xml",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--scene", "{bad}/empty.xml"],
-        "empty.xml",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--scene", "{bad}/not-xml.xml"],
-        "not-xml.xml",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--scene", "{bad}/malformed.xml"],
-        "malformed XML",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/unknown-shape.xml",
-        ],
-        "unknown shape type \"torus\"",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--scene", "{bad}/no-sensor.xml"],
-        "no <sensor>",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--scene", "{bad}/fov-180.xml"],
-        "fov must be between 0 and 180",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/nan-radius.xml",
-        ],
-        "expected a finite number, found \"nan\"",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/negative-radius.xml",
-        ],
-        "radius must be positive",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/missing-mesh.xml",
-        ],
-        "cannot read the mesh",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/broken-mesh.xml",
-        ],
-        "broken.obj:3: face corner `3` refers to vertex 3",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/self-default.xml",
-        ],
-        "found \"$spp\"",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/undefined-parameter.xml",
-        ],
-        "unknown parameter \"$undefined\"",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--scene", "{bad}/zero-spp.xml"],
-        "sample_count must be an integer of at least 1",
-    ),
-    case(
-        RENDERING,
-        &["render", "--out", "{out}", "--scene", "{bad}/huge-film.xml"],
-        "needs 534058 MiB",
-    ),
-    case(
-        RENDERING,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{bad}/zero-spp.xml",
-            "-D",
-            "=3",
-        ],
-        "NAME=VALUE",
-    ),
-    case(
-        BEFORE_CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--scene",
-            "{ch04}/thinlens-spheres.xml",
-        ],
-        "thinlens",
-    ),
+    case(RENDERING, &["render", "--out", "{out}", "--builtin", "teapot"], "teapot"),
+    case(RENDERING, &["render", "--out", "{out}", "-D", "spp=4"], "--scene"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/empty.xml", "-D", "spp"], "NAME=VALUE"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{dir}/no-such-scene.xml"], "no-such-scene.xml"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/empty.xml"], "empty.xml"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/not-xml.xml"], "not-xml.xml"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/malformed.xml"], "malformed XML"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/unknown-shape.xml"], "unknown shape type \"torus\""),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/no-sensor.xml"], "no <sensor>"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/fov-180.xml"], "fov must be between 0 and 180"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/nan-radius.xml"], "expected a finite number, found \"nan\""),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/negative-radius.xml"], "radius must be positive"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/missing-mesh.xml"], "cannot read the mesh"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/broken-mesh.xml"], "broken.obj:3: face corner `3` refers to vertex 3"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/self-default.xml"], "found \"$spp\""),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/undefined-parameter.xml"], "unknown parameter \"$undefined\""),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/zero-spp.xml"], "sample_count must be an integer of at least 1"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/huge-film.xml"], "needs 534058 MiB"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/zero-spp.xml", "-D", "=3"], "NAME=VALUE"),
+    case(BEFORE_CH04, &["render", "--out", "{out}", "--scene", "{ch04}/thinlens-spheres.xml"], "thinlens"),
     // Chapter 01's pixel pattern.
-    case(
-        CH01,
-        &["render", "--out", "{out}", "--pixel", "grid", "--spp", "8"],
-        "square",
-    ),
-    case(
-        CH01,
-        &["render", "--out", "{out}", "--pixel", "grid", "--time", "1"],
-        "--time",
-    ),
-    case(
-        CH01,
-        &["render", "--out", "{out}", "--pixel", "jitter"],
-        "jitter",
-    ),
+    case(CH01, &["render", "--out", "{out}", "--pixel", "grid", "--spp", "8"], "square"),
+    case(CH01, &["render", "--out", "{out}", "--pixel", "grid", "--time", "1"], "--time"),
+    case(CH01, &["render", "--out", "{out}", "--pixel", "jitter"], "jitter"),
     // Chapter 03's samplers and filters (chapter 04 has them too).
-    case(
-        ANTI_ALIASED,
-        &["render", "--out", "{out}", "--sampler", "sobol"],
-        "sobol",
-    ),
-    case(
-        ANTI_ALIASED,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--sampler",
-            "stratified",
-            "--time",
-            "1",
-        ],
-        "--spp",
-    ),
-    case(
-        ANTI_ALIASED,
-        &["render", "--out", "{out}", "--filter", "lanczos"],
-        "lanczos",
-    ),
-    case(
-        ANTI_ALIASED,
-        &["render", "--out", "{out}", "--filter-radius", "0"],
-        "radius",
-    ),
-    case(
-        ANTI_ALIASED,
-        &["render", "--out", "{out}", "--filter-radius", "-1"],
-        "radius",
-    ),
-    case(
-        ANTI_ALIASED,
-        &["render", "--out", "{out}", "--filter-radius", "nan"],
-        "radius",
-    ),
-    case(
-        ANTI_ALIASED,
-        &["render", "--out", "{out}", "--filter-radius", "17"],
-        "radius",
-    ),
-    // Chapter 04's lens.
-    case(
-        CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--f-number",
-            "0",
-            "--focal-length",
-            "0.05",
-        ],
-        "f-number",
-    ),
-    case(
-        CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--f-number",
-            "-2",
-            "--focal-length",
-            "0.05",
-        ],
-        "f-number",
-    ),
-    case(
-        CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--f-number",
-            "2",
-            "--focal-length",
-            "0",
-        ],
-        "focal length",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--f-number", "2"],
-        "--focal-length",
-    ),
-    case(
-        CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--aperture-radius",
-            "0.1",
-            "--f-number",
-            "2",
-            "--focal-length",
-            "0.05",
-        ],
-        "cannot be used with",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--aperture-radius", "-1"],
-        "--aperture-radius",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--aperture-radius", "nan"],
-        "--aperture-radius",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--aperture-radius", "inf"],
-        "--aperture-radius",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--focus-distance", "0"],
-        "--focus-distance",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--focus-distance", "-3"],
-        "--focus-distance",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--focus-distance", "nan"],
-        "--focus-distance",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--blades", "2"],
-        "blades",
-    ),
-    case(
-        CH04,
-        &["render", "--out", "{out}", "--blades", "65"],
-        "blades",
-    ),
-    case(
-        CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--aperture",
-            "disc",
-            "--blades",
-            "6",
-        ],
-        "polygon",
-    ),
-    case(
-        CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--aperture",
-            "polygon",
-            "--lens-warp",
-            "naive",
-        ],
-        "--lens-warp",
-    ),
-    case(
-        CH04,
-        &[
-            "render",
-            "--out",
-            "{out}",
-            "--aperture-rotation",
-            "nan",
-            "--aperture",
-            "polygon",
-        ],
-        "rotation",
-    ),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--sampler", "sobol"], "sobol"),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--sampler", "stratified", "--time", "1"], "--spp"),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter", "lanczos"], "lanczos"),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "0"], "radius"),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "-1"], "radius"),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "nan"], "radius"),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "17"], "radius"),
+    // Chapter 05's shutter.
+    case(CH05, &["render", "--out", "{out}", "--shutter-open", "1", "--shutter-close", "0.5"], "must close at or after the time it opens"),
+    case(CH05, &["render", "--out", "{out}", "--shutter-open", "nan"], "shutter times must be finite"),
+    case(CH05, &["render", "--out", "{out}", "--shutter-close", "inf"], "shutter times must be finite"),
+    case(CH05, &["render", "--out", "{out}", "--shutter-close", "soon"], "`soon` is not a number"),
+    case(CH05, &["render", "--out", "{out}", "--stretches", "0"], "--stretches"),
+    case(CH05, &["render", "--out", "{out}", "--time-sampling", "sobol"], "sobol"),
+    // Chapter 04's lens (chapter 05 has it too).
+    case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "0", "--focal-length", "0.05"], "f-number"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "-2", "--focal-length", "0.05"], "f-number"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "2", "--focal-length", "0"], "focal length"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "2"], "--focal-length"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--aperture-radius", "0.1", "--f-number", "2", "--focal-length", "0.05"], "cannot be used with"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--aperture-radius", "-1"], "--aperture-radius"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--aperture-radius", "nan"], "--aperture-radius"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--aperture-radius", "inf"], "--aperture-radius"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--focus-distance", "0"], "--focus-distance"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--focus-distance", "-3"], "--focus-distance"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--focus-distance", "nan"], "--focus-distance"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--blades", "2"], "blades"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--blades", "65"], "blades"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--aperture", "disc", "--blades", "6"], "polygon"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--aperture", "polygon", "--lens-warp", "naive"], "--lens-warp"),
+    case(WITH_LENS, &["render", "--out", "{out}", "--aperture-rotation", "nan", "--aperture", "polygon"], "rotation"),
 ];
 
 /// The arguments of `case` with the placeholders filled in.

@@ -8,6 +8,7 @@
 use ch01_whitted::PixelPattern;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::aperture::Aperture;
+use ch04_depth_of_field::lens::Lens;
 use common::image::Image;
 use common::render::RenderSettings;
 use workbook_tests::binaries::{RENDERING_CHAPTERS, run_chapter};
@@ -120,5 +121,21 @@ fn two_runs_of_each_binary_write_the_same_bytes() {
             std::fs::read(path).unwrap()
         };
         assert!(run("first") == run("second"), "{chapter}: two runs differ");
+    }
+}
+
+#[test]
+fn chapter_05_is_thread_independent_with_motion_and_a_lens() {
+    use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
+    use ch05_motion_blur::{StratifiedTime, render_with};
+    let lens = Lens::new(0.05, 5.0).unwrap();
+    let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
+    for builtin in Builtin::ALL {
+        let scene = builtin.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+        let pixels = PixelSampler::new(PixelSamplerKind::Stratified, 4, 11).unwrap();
+        let sampler = StratifiedTime::new(pixels, 4, 11);
+        assert_thread_independent(&format!("ch05 {}", builtin.name()), |t| {
+            render_with(&scene, &lens, &settings(t, 4), &sampler, &filter).image
+        });
     }
 }

@@ -1,9 +1,10 @@
 //! Extreme parameters, swept by property tests: cameras with fields of view from 1e-3 to
 //! 179.9 degrees placed far out, scenes from 1e-4 to 1e5 in size, lights near and far, glass of
-//! any index, recursion limits up to 1000, every pixel sampler and filter at any radius, and
-//! lenses from a pinhole to 1e4 wide focused from 1e-6 to 1e9 away. Every pixel must be finite
-//! and no sample may be non-finite: a NaN or an infinity is a bug at its source, which the
-//! render loop counts in `nonfinite_samples` and keeps out of the image.
+//! any index, deep recursion, every pixel sampler and filter at any radius, lenses from a
+//! pinhole to 1e4 wide focused from 1e-6 to 1e9 away, and shutters from an instant to 1e30
+//! long. Every pixel must be finite and no sample may be non-finite: a NaN or an infinity is a
+//! bug at its source, which the render loop counts in `nonfinite_samples` and keeps out of the
+//! image.
 //!
 //! Case counts are modest so that the suite stays fast; `PROPTEST_CASES=10000` sweeps harder,
 //! and `PROPTEST_RNG_SEED=N` sweeps other cases (the seed is fixed, so a run is repeatable).
@@ -123,6 +124,33 @@ proptest! {
         let out = ch03_anti_aliasing::render_with(&scene, &settings, &sampler, &filter);
         check_finite(&out)?;
         prop_assert_eq!(out.stats.spp, spp);
+    }
+
+    #[test]
+    fn every_shutter_gives_finite_pixels(
+        builtin in prop::sample::select(ch05_motion_blur::scenes::Builtin::ALL.to_vec()),
+        open in prop_oneof![Just(0.0f32), -1e6f32..1e6, Just(-1e30f32)],
+        length in prop_oneof![Just(0.0f32), log_uniform(1e-6, 1e6), Just(1e30f32)],
+        stratified in any::<bool>(),
+        radius in prop_oneof![Just(0.0f32), log_uniform(1e-6, 1e3)],
+        focus in log_uniform(1e-6, 1e9),
+        spp in 1u64..=8,
+        (width, height) in (1u32..=6, 1u32..=5),
+        seed in any::<u64>(),
+    ) {
+        use ch05_motion_blur::{Shutter, StratifiedTime, render_with};
+        let shutter = Shutter::new(open, open + length).unwrap();
+        let scene = builtin.build(12, shutter);
+        let lens = Lens::new(radius, focus).unwrap();
+        let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+        let settings = RenderSettings::new(width, height, spp);
+        let pixels = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
+        let out = if stratified {
+            render_with(&scene, &lens, &settings, &StratifiedTime::new(pixels, spp, seed), &filter)
+        } else {
+            render_with(&scene, &lens, &settings, &pixels, &filter)
+        };
+        check_finite(&out)?;
     }
 
     #[test]

@@ -32,12 +32,14 @@ fn small_render<'a>(chapter: &str, out: &'a str, stats: &'a str, spp: &'a str) -
     args
 }
 
-/// Chapter 01 renders pixel centres; the later chapters are told to take random positions.
+/// Chapter 01 renders pixel centres; the later chapters are told to take random positions
+/// (and chapter 05 independent times: its stratified times, too, are laid out for the whole
+/// sample count).
 fn sampler_args(chapter: &str) -> &'static [&'static str] {
-    if chapter == "ch01-whitted" {
-        &[]
-    } else {
-        &["--sampler", "random"]
+    match chapter {
+        "ch01-whitted" => &[],
+        "ch05-motion-blur" => &["--sampler", "random", "--time-sampling", "independent"],
+        _ => &["--sampler", "random"],
     }
 }
 
