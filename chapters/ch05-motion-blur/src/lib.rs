@@ -39,8 +39,64 @@ use ch01_whitted::tracer;
 use ch04_depth_of_field::{Lens, ThinLensCamera};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
+use common::{Ray, Vec2};
 
 // ANCHOR: render_with
+/// Camera rays over a shutter interval: the time a sample draws, the camera where it is at
+/// that time, the lens in front. Built once per render; chapter 06 builds its camera rays
+/// with it too, so both chapters draw the same numbers in the same order.
+#[derive(Clone, Copy, Debug)]
+pub struct CameraRays {
+    shutter: Shutter,
+    draws_time: bool,
+    camera_moves: bool,
+    camera_at_open: ThinLensCamera,
+    lens: Lens,
+    width: u32,
+    height: u32,
+}
+
+impl CameraRays {
+    /// Camera rays of `world` through `lens` for an image of `width` by `height` pixels.
+    pub fn new(world: &MotionScene, lens: &Lens, width: u32, height: u32) -> Self {
+        let shutter = world.shutter;
+        CameraRays {
+            shutter,
+            draws_time: !shutter.is_instant() && world.moves(),
+            camera_moves: world.camera_motion.is_some(),
+            camera_at_open: ThinLensCamera::new(
+                world.camera_at(shutter.open, width, height),
+                *lens,
+            ),
+            lens: *lens,
+            width,
+            height,
+        }
+    }
+
+    /// The camera ray through film point `p_film`. Draws, in order: the time (only if the
+    /// shutter is open for a while and something moves), then the lens point (only for an
+    /// aperture). The ray carries its time, which every ray of its path keeps.
+    pub fn generate<S: TimeSampler>(
+        &self,
+        world: &MotionScene,
+        p_film: Vec2,
+        sampler: &mut S,
+    ) -> Ray {
+        let time = if self.draws_time {
+            self.shutter.time_at(sampler.get_time_1d())
+        } else {
+            self.shutter.open
+        };
+        let camera = if self.camera_moves {
+            ThinLensCamera::new(world.camera_at(time, self.width, self.height), self.lens)
+        } else {
+            self.camera_at_open
+        };
+        camera.generate_ray(p_film, sampler).with_time(time)
+    }
+}
+
 /// Renders `world` through `lens` over its shutter interval. Each sample draws, in order: the
 /// pixel position (in the render loop), the time (only if the shutter is open for a while and
 /// something moves), the lens point (only for an aperture). Every ray of the path keeps the
@@ -52,22 +108,9 @@ pub fn render_with<S: TimeSampler>(
     sampler: &S,
     filter: &dyn Filter,
 ) -> RenderOutput {
-    let (width, height) = (settings.width, settings.height);
-    let shutter = world.shutter;
-    let draws_time = !shutter.is_instant() && world.moves();
-    let camera_at_open = ThinLensCamera::new(world.camera_at(shutter.open, width, height), *lens);
+    let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
-        let time = if draws_time {
-            shutter.time_at(sampler.get_time_1d())
-        } else {
-            shutter.open
-        };
-        let camera = if world.camera_motion.is_some() {
-            ThinLensCamera::new(world.camera_at(time, width, height), *lens)
-        } else {
-            camera_at_open
-        };
-        let ray = camera.generate_ray(p_film, sampler).with_time(time);
+        let ray = camera_rays.generate(world, p_film, sampler);
         tracer::trace(world, &ray, 1, counters)
     })
 }
