@@ -60,7 +60,9 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
 // ANCHOR: direct_light
 /// Light reflected by a matte surface from every point light it sees: `albedo / pi` times
 /// the irradiance `I cos(theta) / r^2`, where a shadow ray finds nothing in the way.
-fn direct_light<W: World>(
+///
+/// Public because the later chapters' tracers light their matte surfaces the same way.
+pub fn direct_light<W: World>(
     world: &W,
     ray: &Ray,
     hit: &SurfaceHit,

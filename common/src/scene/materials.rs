@@ -23,6 +23,20 @@ const NAMED_IORS: &[(&str, f32)] = &[
     ("diamond", 2.419),
 ];
 
+/// The index of refraction of a material Mitsuba knows by name (`bk7`, `water`, ...), also
+/// for chapters that read the properties of a BSDF outside the subset; and the names known.
+pub fn named_ior(name: &str) -> Option<f32> {
+    NAMED_IORS
+        .iter()
+        .find(|(material, _)| *material == name)
+        .map(|&(_, ior)| ior)
+}
+
+/// The names [`named_ior`] knows, for error messages.
+pub fn named_ior_names() -> Vec<&'static str> {
+    NAMED_IORS.iter().map(|(material, _)| *material).collect()
+}
+
 /// Reads a `<bsdf>` element and, when it has an `id`, registers it for later `<ref>`s.
 pub(super) fn read_bsdf(reader: &mut Reader, node: Node) -> Result<Bsdf, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
@@ -139,12 +153,11 @@ fn ior(
         return Ok(default);
     };
     let value = if let Ok(Some(named)) = properties.string(reader, name) {
-        let known = NAMED_IORS.iter().find(|(material, _)| *material == named);
-        match (known, parse_float(&named)) {
-            (Some(&(_, ior)), _) => ior,
+        match (named_ior(&named), parse_float(&named)) {
+            (Some(ior), _) => ior,
             (None, Ok(ior)) => ior,
             (None, Err(_)) => {
-                let names: Vec<&str> = NAMED_IORS.iter().map(|(material, _)| *material).collect();
+                let names = named_ior_names();
                 return Err(reader.error_at(
                     position,
                     format!(

@@ -52,6 +52,7 @@ pub use description::{
     ShapeGeometry,
 };
 pub use error::{SceneError, SceneWarning, TextPosition};
+pub use materials::{named_ior, named_ior_names};
 pub use obj::{load_obj, parse_obj};
 pub use to_geometry::world_shapes;
 

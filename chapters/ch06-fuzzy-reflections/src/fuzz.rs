@@ -1,0 +1,290 @@
+//! Spreading a mirror (or refracted) direction: the lecture's two ways of making a surface
+//! fuzzy.
+//!
+//! A real surface is never perfectly smooth, so the light it reflects comes not from one
+//! mirror direction but from a small cone of directions around it. Both ways below take the
+//! ideal direction `center` (the mirror or the refracted direction) and return a direction
+//! near it:
+//!
+//! - **The empirical approach** ([`sample_disc_perturbation`]): build an orthonormal frame
+//!   `(a, b)` around `center`, draw a point `(x, y)` on a disc of radius `R`, and add
+//!   `x a + y b` to the direction. It is quick and looks plausible, but the directions it
+//!   makes have no named distribution, and a renderer that uses it weights every ray by the
+//!   surface's reflectance alone, so what it computes is whatever that distribution happens
+//!   to be.
+//! - **The `cos^n` lobe** ([`sample_lobe_around`]): directions with density
+//!   `(n + 1) / 2π · cos^n α` per solid angle, `α` the angle from `center` (chapter 02's
+//!   warp, turned to point along `center`). The exponent `n` is the roughness: `n = 0` spreads
+//!   over a whole hemisphere, `n = 1e6` stays within about a milliradian, and `n → ∞` is the
+//!   mirror.
+//!
+//! The chapter's glossy material *is* the `cos^n` lobe: a fuzzy mirror of reflectance `k`
+//! sends the light arriving from direction `ω` (density `(n + 1)/2π · cos^n α` around the
+//! mirror direction) towards the viewer. Sampling that lobe gives each ray the weight `k`,
+//! which is its proper weight `f_r cos θ / pdf`. The disc is then a different, empirical lobe,
+//! which [`disc_radius_for_exponent`] sizes to spread as wide as the `cos^n` one.
+
+use ch02_monte_carlo::warps::{sample_cos_lobe, sample_uniform_disk_concentric};
+use glam::{Vec2, Vec3};
+
+/// How a fuzzy surface spreads its directions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum FuzzMethod {
+    /// The `cos^n` lobe around the ideal direction, with its proper weight.
+    Lobe,
+    /// The empirical approach: a disc point added to the ideal direction.
+    Disc,
+}
+
+impl FuzzMethod {
+    /// Both methods, lobe first.
+    pub const ALL: [FuzzMethod; 2] = [FuzzMethod::Lobe, FuzzMethod::Disc];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            FuzzMethod::Lobe => "lobe",
+            FuzzMethod::Disc => "disc",
+        }
+    }
+
+    /// A direction near `center` spread as much as a `cos^n` lobe of `exponent`.
+    pub fn sample(self, center: Vec3, exponent: f32, u: Vec2) -> Vec3 {
+        match self {
+            FuzzMethod::Lobe => sample_lobe_around(center, exponent, u),
+            FuzzMethod::Disc => {
+                sample_disc_perturbation(center, disc_radius_for_exponent(exponent), u)
+            }
+        }
+    }
+
+    /// The density per unit solid angle of [`sample`](Self::sample) at a direction at angle
+    /// `α` from the centre (`cos_alpha = cos α`). An infinite exponent is a mirror, whose
+    /// density is a delta with no finite value: 0 is returned, and light reaches a mirror
+    /// only along its one direction.
+    pub fn pdf(self, cos_alpha: f32, exponent: f32) -> f32 {
+        if !exponent.is_finite() {
+            return 0.0;
+        }
+        match self {
+            FuzzMethod::Lobe => lobe_around_pdf(cos_alpha, exponent),
+            FuzzMethod::Disc => {
+                disc_perturbation_pdf(cos_alpha, disc_radius_for_exponent(exponent))
+            }
+        }
+    }
+}
+
+// ANCHOR: lobe_around
+/// A direction around the unit vector `center` with density `(n + 1) / 2π · cos^n α` per
+/// unit solid angle, `α` the angle between the direction and `center`
+/// ([`lobe_around_pdf`]).
+///
+/// Chapter 02's `sample_cos_lobe` draws the lobe around `+z`; here it is turned so that `+z`
+/// becomes `center`, through any orthonormal frame `(a, b, center)`: the lobe is symmetric
+/// about its axis, so which `a` and `b` does not matter.
+pub fn sample_lobe_around(center: Vec3, exponent: f32, u: Vec2) -> Vec3 {
+    // BEGIN SOLUTION
+    let (a, b) = center.any_orthonormal_pair();
+    let local = sample_cos_lobe(u, exponent);
+    local.x * a + local.y * b + local.z * center
+    // END SOLUTION
+}
+// ANCHOR_END: lobe_around
+
+/// The density of [`sample_lobe_around`] per unit solid angle, from `cos α = d · center`.
+pub fn lobe_around_pdf(cos_alpha: f32, exponent: f32) -> f32 {
+    ch02_monte_carlo::warps::cos_lobe_pdf(cos_alpha, exponent)
+}
+
+// ANCHOR: disc_perturbation
+/// The lecture's empirical fuzz: `normalize(center + x a + y b)` for a uniform point `(x, y)`
+/// on the disc of `radius`, in an orthonormal frame `(a, b)` around the unit `center`.
+///
+/// The disc sits one unit along `center`, so the angle from `center` is `atan(radius ρ)`, `ρ`
+/// the distance of the disc point from its centre (uniform by area, so `ρ²` is uniform):
+/// no direction ever leaves a cone of half-angle `atan(radius)`, and inside it directions
+/// near the rim are favoured over a `cos^n` lobe's.
+pub fn sample_disc_perturbation(center: Vec3, radius: f32, u: Vec2) -> Vec3 {
+    let (a, b) = center.any_orthonormal_pair();
+    let p = radius * sample_uniform_disk_concentric(u);
+    (center + p.x * a + p.y * b).normalize()
+}
+// ANCHOR_END: disc_perturbation
+
+/// The density per unit solid angle of [`sample_disc_perturbation`] at a direction at angle
+/// `α` from the centre: `1 / (π R² cos³ α)` inside the cone `tan α ≤ R`, else 0.
+///
+/// The disc lies in the plane one unit along the centre. A patch `dA` of it, seen at angle
+/// `α` and distance `1 / cos α`, subtends `dω = dA cos α / (1 / cos α)² = dA cos³ α`, and the
+/// disc point is uniform with density `1 / (π R²)` per area.
+pub fn disc_perturbation_pdf(cos_alpha: f32, radius: f32) -> f32 {
+    if cos_alpha <= 0.0 || radius <= 0.0 {
+        return 0.0;
+    }
+    let cos_alpha = cos_alpha.min(1.0);
+    // tan² α = (1 - cos² α) / cos² α, compared as tan² α ≤ R² without dividing.
+    let sin2 = (1.0 - cos_alpha) * (1.0 + cos_alpha);
+    if sin2 > radius * radius * cos_alpha * cos_alpha {
+        return 0.0;
+    }
+    1.0 / (std::f32::consts::PI * radius * radius * cos_alpha.powi(3))
+}
+
+/// The disc radius at which the empirical approach spreads directions as much as a `cos^n`
+/// lobe of `exponent`: both then have the same mean `sin² α` to first order.
+///
+/// For the lobe, `E[cos² α] = (n + 1)/(n + 3)`, so `E[sin² α] = 2/(n + 3)`. For the disc,
+/// `sin² α ≈ R² ρ²` for small angles, and `E[ρ²] = 1/2` over the unit disc: `R²/2`. Equal
+/// when `R = 2 / √(n + 3)`: about 1.15 for `n = 0`, 0.2 for `n = 100`, 0.002 for `n = 1e6`.
+pub fn disc_radius_for_exponent(exponent: f32) -> f32 {
+    2.0 / (exponent + 3.0).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use common::sampler::{IndependentSampler, Sampler};
+    use glam::UVec2;
+
+    const EXPONENTS: [f32; 7] = [0.0, 1.0, 10.0, 100.0, 1e3, 1e4, 1e6];
+
+    fn centres() -> [Vec3; 4] {
+        [
+            Vec3::Z,
+            -Vec3::Z,
+            Vec3::new(1.0, 2.0, -0.5).normalize(),
+            Vec3::new(0.0, -1.0, 1e-7).normalize(),
+        ]
+    }
+
+    fn uniforms(n: u64) -> impl Iterator<Item = Vec2> {
+        let mut sampler = IndependentSampler::new(6);
+        (0..n).map(move |i| {
+            sampler.start_pixel_sample(UVec2::ZERO, i);
+            sampler.get_2d()
+        })
+    }
+
+    #[test]
+    fn exercise_lobe_around_points_along_the_centre() {
+        for center in centres() {
+            for exponent in EXPONENTS {
+                let mut mean = Vec3::ZERO;
+                let n = 2000;
+                for u in uniforms(n) {
+                    let d = sample_lobe_around(center, exponent, u);
+                    assert!(d.is_finite(), "{center} n={exponent}: {d}");
+                    assert_relative_eq!(d.length(), 1.0, epsilon = 1e-4);
+                    assert!(d.dot(center) > 0.0, "{center} n={exponent}: {d}");
+                    mean += d / n as f32;
+                }
+                // E[cos α] = (n + 1)/(n + 2) for the cos^n lobe; 6 standard errors of the
+                // mean (Var cos α <= 1/12 for n = 0 and smaller for narrower lobes).
+                let expected = (exponent + 1.0) / (exponent + 2.0);
+                let tolerance = 6.0 * (1.0 / 12.0 / n as f32).sqrt();
+                assert!(
+                    (mean.dot(center) - expected).abs() < tolerance,
+                    "{center} n={exponent}: E[cos] {} vs {expected}",
+                    mean.dot(center)
+                );
+                // Symmetric about the axis: the sideways mean vanishes.
+                let sideways = (mean - mean.dot(center) * center).length();
+                assert!(sideways < tolerance, "{center} n={exponent}: {sideways}");
+            }
+        }
+    }
+
+    #[test]
+    fn exercise_lobe_around_has_the_lobes_distribution_of_angles() {
+        // P(cos α >= c) = 1 - c^(n+1): a binomial count at three thresholds.
+        let center = Vec3::new(0.3, -0.4, 0.8).normalize();
+        for exponent in [0.0f32, 3.0, 50.0] {
+            let n = 20_000;
+            for p in [0.2f32, 0.6, 0.9] {
+                // The threshold the lobe exceeds with probability p.
+                let c = (1.0 - p).powf(1.0 / (exponent + 1.0));
+                let hits = uniforms(n)
+                    .filter(|&u| sample_lobe_around(center, exponent, u).dot(center) >= c)
+                    .count() as f32;
+                let sigma = (n as f32 * p * (1.0 - p)).sqrt();
+                assert!(
+                    (hits - n as f32 * p).abs() < 5.0 * sigma,
+                    "n={exponent} c={c}: {hits} vs {}",
+                    n as f32 * p
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_huge_exponent_is_the_mirror_direction() {
+        for center in centres() {
+            for u in uniforms(100) {
+                let d = sample_lobe_around(center, 1e9, u);
+                assert!(d.dot(center) > 1.0 - 1e-6, "{center}: {d}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_disc_stays_inside_its_cone() {
+        for center in centres() {
+            for exponent in EXPONENTS {
+                let radius = disc_radius_for_exponent(exponent);
+                let cos_max = 1.0 / (1.0 + radius * radius).sqrt();
+                for u in uniforms(500) {
+                    let d = sample_disc_perturbation(center, radius, u);
+                    assert!(d.is_finite());
+                    assert_relative_eq!(d.length(), 1.0, epsilon = 1e-5);
+                    assert!(d.dot(center) >= cos_max - 1e-5, "{center} R={radius}: {d}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn both_densities_integrate_to_one() {
+        // Integrate over the sphere around +z in (cos α, φ), where dω = d(cos α) dφ; the
+        // disc's cone is narrow, so the grid is fine near cos α = 1.
+        for exponent in [0.0f32, 1.0, 10.0, 100.0, 1e3] {
+            for method in FuzzMethod::ALL {
+                let n = 200_000;
+                let mut integral = 0.0f64;
+                for i in 0..n {
+                    // Points crowd towards the pole: cos α = 1 - s² (2), ds uniform.
+                    let s = (i as f64 + 0.5) / n as f64 * 2f64.sqrt();
+                    let cos_alpha = 1.0 - s * s;
+                    let d_cos = 2.0 * s * 2f64.sqrt() / n as f64;
+                    let p = f64::from(method.pdf(cos_alpha as f32, exponent));
+                    integral += std::f64::consts::TAU * p * d_cos;
+                }
+                assert_relative_eq!(integral, 1.0, max_relative = 2e-3);
+            }
+        }
+    }
+
+    #[test]
+    fn disc_and_lobe_spread_alike() {
+        // The matching of `disc_radius_for_exponent`: equal mean sin^2 to within 10 % for
+        // narrow lobes, where the first-order argument holds.
+        let center = Vec3::new(0.2, 0.9, -0.1).normalize();
+        for exponent in [100.0f32, 1e3, 1e4] {
+            let n = 20_000;
+            let mean_sin2 = |method: FuzzMethod| {
+                uniforms(n)
+                    .map(|u| {
+                        let c = method.sample(center, exponent, u).dot(center);
+                        f64::from(1.0 - c * c)
+                    })
+                    .sum::<f64>()
+                    / n as f64
+            };
+            let lobe = mean_sin2(FuzzMethod::Lobe);
+            let disc = mean_sin2(FuzzMethod::Disc);
+            assert_relative_eq!(lobe, 2.0 / f64::from(exponent + 3.0), max_relative = 0.05);
+            assert_relative_eq!(disc, lobe, max_relative = 0.1);
+        }
+    }
+}

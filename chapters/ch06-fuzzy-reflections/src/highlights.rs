@@ -1,0 +1,67 @@
+//! Highlights: what a fuzzy surface reflects of the point lights.
+//!
+//! A point light is a single direction, which no sampled reflection ray will ever hit. A
+//! perfect mirror therefore never shows one (chapter 01), but a fuzzy mirror does: its lobe
+//! has a density in every direction, so the light arriving from a point light's direction
+//! `l` is reflected in the proportion the lobe gives it. With the material's reflectance `k`
+//! and the lobe's density `p(l)` per solid angle around the ideal direction, the radiance sent
+//! towards the viewer is `k p(l) I / r²`: the glossy highlight, a blurred image of the light,
+//! tight and bright for a large exponent, wide and dim for a small one.
+
+use crate::fuzz::FuzzMethod;
+use ch01_whitted::scene::World;
+use common::geometry::SurfaceHit;
+use common::render::SampleCounters;
+use glam::Vec3;
+
+/// The lobe a surface scatters into: its ideal direction, its exponent, and the side of the
+/// surface it leaves on.
+#[derive(Clone, Copy, Debug)]
+pub struct Lobe {
+    /// The mirror or refracted direction the lobe is centred on.
+    pub center: Vec3,
+    /// The lobe's exponent; infinite for a smooth surface.
+    pub exponent: f32,
+    /// The unit normal on the side the scattered light leaves from.
+    pub side: Vec3,
+    /// How the lobe's directions are spread.
+    pub method: FuzzMethod,
+}
+
+// ANCHOR: highlights
+/// The radiance `lobe` scatters back along the incoming ray from every point light that
+/// `hit` sees on the lobe's side of the surface: `p(l) I / r²` per light, `p` the lobe's
+/// density at the light's direction `l` (the material's reflectance is applied by the caller).
+pub fn point_light_highlights<W: World>(
+    world: &W,
+    hit: &SurfaceHit,
+    lobe: &Lobe,
+    time: f32,
+    counters: &mut SampleCounters,
+) -> Vec3 {
+    if !lobe.exponent.is_finite() {
+        return Vec3::ZERO; // a mirror's lobe is a single direction: no highlight
+    }
+    let mut radiance = Vec3::ZERO;
+    for light in &world.scene().lights {
+        let to_light = light.position - hit.p;
+        let distance_squared = to_light.length_squared();
+        let l = to_light / distance_squared.sqrt();
+        let cos_side = l.dot(lobe.side);
+        // Written so that the NaN of a light sitting on the surface is skipped too.
+        if cos_side.is_nan() || cos_side <= 0.0 {
+            continue;
+        }
+        let density = lobe.method.pdf(l.dot(lobe.center), lobe.exponent);
+        if density == 0.0 {
+            continue; // outside the lobe: no shadow ray needed
+        }
+        counters.rays += 1;
+        if world.occluded(&hit.spawn_ray_to(light.position, time)) {
+            continue;
+        }
+        radiance += density * light.intensity / distance_squared;
+    }
+    radiance
+}
+// ANCHOR_END: highlights
