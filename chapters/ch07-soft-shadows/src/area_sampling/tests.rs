@@ -1,0 +1,268 @@
+//! The area samplers: every point on its light, every claimed density the true one (chi-square
+//! in the light's plane), except for the naive disc, which must fail.
+
+use std::f32::consts::PI;
+
+use approx::assert_relative_eq;
+use ch02_monte_carlo::chi2::chi2_test_density;
+use ch02_monte_carlo::warps::{Domain, WarpPoint, invert_parallelogram, sample_uniform_disk_polar};
+
+use super::*;
+use crate::test_support::{
+    CHI2_SAMPLES, PlaneFrame, bounds_in, chi2_on_plane, passes, uniform_points,
+};
+
+fn slanted_quad() -> Quad {
+    Quad::new(
+        Vec3::new(1.0, 2.0, -1.0),
+        Vec3::new(2.0, 0.5, 0.0),
+        Vec3::new(0.6, 0.3, 1.5),
+    )
+}
+
+fn slanted_disc() -> Disc {
+    Disc::new(Vec3::new(-1.0, 3.0, 2.0), Vec3::new(0.3, -1.0, 0.2), 1.5)
+}
+
+/// The edge coordinates of `p` in the quad, in `f64`.
+fn quad_coordinates(quad: &Quad, p: Vec3) -> Vec2 {
+    let frame = PlaneFrame::new(quad.corner(), quad.normal());
+    let q = |v: Vec3| frame.coordinates(v);
+    invert_parallelogram(
+        q(p),
+        q(quad.corner()),
+        q(quad.corner() + quad.e1()),
+        q(quad.corner() + quad.e2()),
+    )
+}
+
+#[test]
+fn exercise_parallelogram_light_point_lies_on_the_light() {
+    let quad = slanted_quad();
+    for u in uniform_points(500, 1) {
+        let s = sample_parallelogram_light(&quad, u).expect("the quad has an area");
+        assert_relative_eq!(quad_coordinates(&quad, s.p), u, epsilon = 1e-4);
+        assert_eq!(s.n, quad.normal());
+        assert_relative_eq!(s.pdf, 1.0 / quad.area(), max_relative = 1e-6);
+        assert_eq!(s.pdf_solid_angle, None);
+    }
+    let corner = sample_parallelogram_light(&quad, Vec2::ZERO).unwrap();
+    assert_eq!(corner.p, quad.corner());
+    let far = sample_parallelogram_light(&quad, Vec2::new(1.0, 0.0)).unwrap();
+    assert_relative_eq!(far.p, quad.corner() + quad.e1(), epsilon = 1e-6);
+}
+
+#[test]
+fn exercise_parallelogram_light_point_is_uniform() {
+    let quad = slanted_quad();
+    let frame = PlaneFrame::new(quad.corner(), quad.normal());
+    let corners = [0.0, 1.0].map(|a| [0.0, 1.0].map(|b| quad.point_at(a, b)));
+    let result = chi2_on_plane(
+        frame,
+        bounds_in(frame, corners.as_flattened()),
+        1,
+        |u| sample_parallelogram_light(&quad, u),
+        |q| {
+            let p = frame.origin + q.x * frame.t + q.y * frame.b;
+            let c = quad_coordinates(&quad, p);
+            let inside = c.cmpge(Vec2::ZERO).all() && c.cmple(Vec2::ONE).all();
+            if inside { 1.0 / quad.area() } else { 0.0 }
+        },
+    );
+    assert!(passes(&result), "{result:?}");
+}
+
+#[test]
+fn exercise_parallelogram_light_point_has_none_without_area() {
+    for quad in [
+        Quad::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X),
+        Quad::new(Vec3::ZERO, Vec3::ZERO, Vec3::Z),
+    ] {
+        assert_eq!(sample_parallelogram_light(&quad, Vec2::splat(0.5)), None);
+    }
+}
+
+#[test]
+fn exercise_disc_light_point_lies_on_the_disc_with_the_uniform_density() {
+    let disc = slanted_disc();
+    for u in uniform_points(500, 2) {
+        let s = sample_disc_light_polar(&disc, u).expect("the disc has an area");
+        let offset = s.p - disc.center();
+        assert!(offset.dot(disc.normal()).abs() < 1e-5, "{offset}");
+        assert!(offset.length() <= disc.radius() * (1.0 + 1e-6));
+        assert_eq!(s.n, disc.normal());
+        assert_relative_eq!(s.pdf, 1.0 / (PI * 1.5 * 1.5), max_relative = 1e-6);
+    }
+}
+
+#[test]
+fn exercise_disc_light_point_follows_the_lectures_parametrisation() {
+    // ξ1 is the angle (a quarter turn goes to the bitangent), ξ2 the squared relative radius,
+    // as chapter 02's polar map.
+    let disc = slanted_disc();
+    let s = sample_disc_light_polar(&disc, Vec2::new(0.25, 0.64)).unwrap();
+    assert_relative_eq!(s.p, disc.point_at(0.0, 0.8 * 1.5), epsilon = 1e-5);
+    for u in uniform_points(100, 3) {
+        let s = sample_disc_light_polar(&disc, u).unwrap();
+        let q = 1.5 * sample_uniform_disk_polar(u);
+        assert_relative_eq!(s.p, disc.point_at(q.x, q.y), epsilon = 1e-5);
+    }
+}
+
+#[test]
+fn exercise_disc_light_point_is_uniform() {
+    let result = chi2_on_disc(DiscWarp::Polar, 4);
+    assert!(passes(&result), "{result:?}");
+}
+
+#[test]
+fn exercise_disc_light_point_has_none_without_area() {
+    for radius in [0.0, -1.0, f32::NAN] {
+        let disc = Disc::new(Vec3::ZERO, Vec3::Y, radius);
+        assert_eq!(sample_disc_light_polar(&disc, Vec2::splat(0.3)), None);
+    }
+}
+
+/// The disc light's samples by `warp` against the uniform density every disc sample claims.
+fn chi2_on_disc(warp: DiscWarp, seed: u64) -> ch02_monte_carlo::chi2::Chi2Result {
+    let disc = slanted_disc();
+    let frame = PlaneFrame::new(disc.center(), disc.normal());
+    let r = disc.radius();
+    chi2_on_plane(
+        frame,
+        (Vec2::splat(-1.01 * r), Vec2::splat(1.01 * r)),
+        seed,
+        |u| sample_disc_light(&disc, u, warp),
+        |q| {
+            if q.length() <= r {
+                LightShape::Disc(disc).pdf_area()
+            } else {
+                0.0
+            }
+        },
+    )
+}
+
+#[test]
+fn uniform_disc_warps_pass_and_the_naive_one_fails() {
+    for warp in [DiscWarp::Concentric, DiscWarp::Polar] {
+        let result = chi2_on_disc(warp, 5);
+        assert!(passes(&result), "{}: {result:?}", warp.name());
+    }
+    let naive = chi2_on_disc(DiscWarp::Naive, 5);
+    assert!(naive.p_value < 1e-12, "the naive disc passed: {naive:?}");
+}
+
+#[test]
+fn triangle_light_points_are_uniform_on_the_triangle() {
+    let triangle = Triangle::new(
+        Vec3::new(0.0, 1.0, 0.0),
+        Vec3::new(2.0, 1.5, 0.5),
+        Vec3::new(0.5, 2.5, 1.0),
+    );
+    let frame = PlaneFrame::new(
+        triangle.p[0],
+        (triangle.p[1] - triangle.p[0]).cross(triangle.p[2] - triangle.p[0]),
+    );
+    let [a, b, c] = triangle.p.map(|p| frame.coordinates(p));
+    let area = triangle.area();
+    let result = chi2_on_plane(
+        frame,
+        bounds_in(frame, &triangle.p),
+        6,
+        |u| {
+            let s = sample_triangle_light(&triangle, u)?;
+            assert_relative_eq!(s.pdf, 1.0 / area, max_relative = 1e-6);
+            Some(s)
+        },
+        |q| {
+            // Inside when q is on the inner side of all three edges.
+            let side = |p: Vec2, r: Vec2| (r - p).perp_dot(q - p);
+            let inside = side(a, b) >= 0.0 && side(b, c) >= 0.0 && side(c, a) >= 0.0;
+            if inside { 1.0 / area } else { 0.0 }
+        },
+    );
+    assert!(passes(&result), "{result:?}");
+}
+
+#[test]
+fn sphere_area_points_are_uniform_on_the_sphere() {
+    let sphere = Sphere::new(Vec3::new(1.0, -2.0, 0.5), 0.7);
+    // Directions from the centre: a density per unit area is R² times one per steradian.
+    let result = chi2_test_density(
+        Domain::Sphere,
+        CHI2_SAMPLES,
+        7,
+        (16, 32),
+        |u| {
+            let s = sample_sphere_area(&sphere, u).expect("the sphere has an area");
+            assert_relative_eq!(s.n, (s.p - sphere.center) / 0.7, epsilon = 1e-5);
+            WarpPoint::Direction((s.p - sphere.center).normalize())
+        },
+        |_| LightShape::Sphere(sphere).pdf_area() * 0.7 * 0.7,
+    );
+    assert!(passes(&result), "{result:?}");
+}
+
+/// How far `p` is from the exact shape's plane or sphere, in `f64`, against its bound.
+fn check_error_bound(shape: &LightShape, s: &LightSample) {
+    let p = s.p.as_dvec3();
+    let distance = match shape {
+        LightShape::Parallelogram(q) => {
+            let n = q.e1().as_dvec3().cross(q.e2().as_dvec3()).normalize();
+            (p - q.corner().as_dvec3()).dot(n).abs()
+        }
+        LightShape::Triangle(t) => {
+            let [p0, p1, p2] = t.p.map(|v| v.as_dvec3());
+            (p - p0).dot((p1 - p0).cross(p2 - p0).normalize()).abs()
+        }
+        LightShape::Disc(d) => {
+            let n = d
+                .tangent()
+                .as_dvec3()
+                .cross(d.bitangent().as_dvec3())
+                .normalize();
+            (p - d.center().as_dvec3()).dot(n).abs()
+        }
+        LightShape::Sphere(sp) => ((p - sp.center.as_dvec3()).length() - sp.radius as f64).abs(),
+    };
+    let bound = s.n.abs().as_dvec3().dot(s.p_error.as_dvec3());
+    assert!(
+        distance <= bound,
+        "{shape:?}: {s:?} is {distance} off, bound {bound}"
+    );
+}
+
+#[test]
+fn sampled_points_are_within_their_error_bounds_at_every_scale() {
+    for scale in [1e-4f32, 1.0, 1e5] {
+        let at = |v: Vec3| v * scale;
+        let shapes: [LightShape; 4] = [
+            Quad::new(
+                at(Vec3::new(3.0, 7.0, -2.0)),
+                at(Vec3::new(0.3, 0.1, 0.0)),
+                at(Vec3::new(0.05, 0.2, 0.4)),
+            )
+            .into(),
+            Triangle::new(
+                at(Vec3::new(3.0, 7.0, -2.0)),
+                at(Vec3::new(3.3, 7.1, -2.0)),
+                at(Vec3::new(3.05, 7.2, -1.6)),
+            )
+            .into(),
+            Disc::new(
+                at(Vec3::new(3.0, 7.0, -2.0)),
+                Vec3::new(0.2, -1.0, 0.4),
+                0.3 * scale,
+            )
+            .into(),
+            Sphere::new(at(Vec3::new(3.0, 7.0, -2.0)), 0.3 * scale).into(),
+        ];
+        for shape in shapes {
+            for u in uniform_points(300, 8) {
+                let s = shape.sample_area(u, DiscWarp::Concentric).unwrap();
+                check_error_bound(&shape, &s);
+            }
+        }
+    }
+}

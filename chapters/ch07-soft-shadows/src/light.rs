@@ -1,0 +1,162 @@
+//! Area lights: shapes of finite size that glow.
+//!
+//! An area light is one of `common`'s shapes with a radiance `L` (per colour channel, in
+//! W m⁻² sr⁻¹): every point of its surface sends `L` in every direction of its front
+//! hemisphere. This is Mitsuba 3's `area` emitter, and its conventions are kept so that scenes
+//! can be compared with Mitsuba:
+//!
+//! - a planar light (parallelogram, triangle, disc) emits only on the side its geometric
+//!   normal points to; seen from behind it is black. A lamp is usually a panel against a
+//!   ceiling, and a two-sided panel would light the ceiling as brightly as the room;
+//! - a sphere emits outwards, its normal being the outward one.
+//!
+//! A Lambertian emitter sends `L cos θ` per unit area and solid angle, and `∫ cos θ dω = π`
+//! over the hemisphere, so its power is `Φ = π L A`. Holding `Φ` (or `L A`) fixed while the
+//! area shrinks leads to a point light: [`crate::estimator`]'s tests check that limit.
+
+use std::f32::consts::PI;
+
+use common::geometry::{Disc, Quad, Sphere, Triangle};
+use glam::Vec3;
+
+/// The shape of an area light: one of `common`'s shapes that has a surface to sample.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightShape {
+    /// A parallelogram `corner + u e1 + v e2`, emitting towards `e1 × e2`.
+    Parallelogram(Quad),
+    /// A triangle, emitting towards `(p1 - p0) × (p2 - p0)` (counter-clockwise from the front).
+    Triangle(Triangle),
+    /// A disc, emitting towards its normal.
+    Disc(Disc),
+    /// A sphere, emitting outwards.
+    Sphere(Sphere),
+}
+
+impl LightShape {
+    /// The surface area, and 0 for a shape that has none: parallel edges, a zero or negative
+    /// radius, non-finite vertices. A light of zero area is allowed and simply emits nothing.
+    pub fn area(&self) -> f32 {
+        let area = match self {
+            LightShape::Parallelogram(q) => q.area(),
+            LightShape::Triangle(t) => t.area(),
+            LightShape::Disc(d) if d.radius() > 0.0 && d.normal() != Vec3::ZERO => d.area(),
+            LightShape::Sphere(s) if s.radius > 0.0 => s.area(),
+            LightShape::Disc(_) | LightShape::Sphere(_) => 0.0,
+        };
+        if area.is_finite() && area > 0.0 {
+            area
+        } else {
+            0.0
+        }
+    }
+}
+
+impl From<Quad> for LightShape {
+    fn from(q: Quad) -> Self {
+        LightShape::Parallelogram(q)
+    }
+}
+
+impl From<Triangle> for LightShape {
+    fn from(t: Triangle) -> Self {
+        LightShape::Triangle(t)
+    }
+}
+
+impl From<Disc> for LightShape {
+    fn from(d: Disc) -> Self {
+        LightShape::Disc(d)
+    }
+}
+
+impl From<Sphere> for LightShape {
+    fn from(s: Sphere) -> Self {
+        LightShape::Sphere(s)
+    }
+}
+
+/// A shape that emits the radiance `radiance` from every point of its front side.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AreaLight {
+    /// Where the light is.
+    pub shape: LightShape,
+    /// The radiance `L` of its front side, per colour channel.
+    pub radiance: Vec3,
+}
+
+impl AreaLight {
+    /// The light of `shape` with front-side radiance `radiance`.
+    pub fn new(shape: impl Into<LightShape>, radiance: Vec3) -> Self {
+        Self {
+            shape: shape.into(),
+            radiance,
+        }
+    }
+
+    /// The radiance leaving a point of the light whose geometric normal is `n`, towards a
+    /// viewer in the direction `towards_viewer` (from the light to the viewer, any length):
+    /// `L` on the front side, 0 behind and exactly edge-on.
+    pub fn emitted(&self, n: Vec3, towards_viewer: Vec3) -> Vec3 {
+        if n.dot(towards_viewer) > 0.0 {
+            self.radiance
+        } else {
+            Vec3::ZERO
+        }
+    }
+
+    /// The surface area of the light (0 for a degenerate shape).
+    pub fn area(&self) -> f32 {
+        self.shape.area()
+    }
+
+    /// The total power `Φ = π L A` the light sends out: radiance `L` over the area `A` and the
+    /// front hemisphere, where `∫ cos θ dω = π`.
+    pub fn power(&self) -> Vec3 {
+        self.radiance * (PI * self.area())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn planar_lights_shine_on_their_front_side_only() {
+        let light = AreaLight::new(Quad::new(Vec3::ZERO, Vec3::X, Vec3::Z), Vec3::ONE);
+        // X × Z = -Y: the quad faces down.
+        assert_eq!(
+            light.emitted(-Vec3::Y, Vec3::new(0.3, -1.0, 0.2)),
+            Vec3::ONE
+        );
+        assert_eq!(
+            light.emitted(-Vec3::Y, Vec3::new(0.3, 1.0, 0.2)),
+            Vec3::ZERO
+        );
+        assert_eq!(light.emitted(-Vec3::Y, Vec3::X), Vec3::ZERO);
+    }
+
+    #[test]
+    fn power_is_pi_radiance_area() {
+        let light = AreaLight::new(Sphere::new(Vec3::ZERO, 2.0), Vec3::new(1.0, 2.0, 3.0));
+        assert_relative_eq!(light.power(), Vec3::new(1.0, 2.0, 3.0) * 16.0 * PI * PI);
+        let disc = AreaLight::new(Disc::new(Vec3::ZERO, Vec3::Y, 1.0), Vec3::ONE);
+        assert_relative_eq!(disc.power(), Vec3::splat(PI * PI));
+    }
+
+    #[test]
+    fn degenerate_shapes_have_no_area() {
+        let shapes: [LightShape; 6] = [
+            Quad::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X).into(),
+            Triangle::new(Vec3::ZERO, Vec3::X, Vec3::X).into(),
+            Triangle::new(Vec3::ZERO, Vec3::X, Vec3::NAN).into(),
+            Disc::new(Vec3::ZERO, Vec3::Y, 0.0).into(),
+            Disc::new(Vec3::ZERO, Vec3::Y, -1.0).into(),
+            Sphere::new(Vec3::ZERO, 0.0).into(),
+        ];
+        for shape in shapes {
+            assert_eq!(shape.area(), 0.0, "{shape:?}");
+            assert_eq!(AreaLight::new(shape, Vec3::ONE).power(), Vec3::ZERO);
+        }
+    }
+}
