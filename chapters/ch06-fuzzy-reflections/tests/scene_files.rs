@@ -1,0 +1,159 @@
+//! Scene files: the chapter's own render, rough materials converted (with the note that says
+//! how), and broken or unknown materials refused with the shape they belong to.
+
+use ch06_fuzzy_reflections::Material;
+use ch06_fuzzy_reflections::agreement::scenes_dir;
+use ch06_fuzzy_reflections::scene_file::convert;
+use common::scene::{load_scene_file, parse_scene};
+use common::test_support::{assert_refused, run_binary};
+
+const BINARY: &str = env!("CARGO_BIN_EXE_ch06-fuzzy-reflections");
+
+#[test]
+fn every_shipped_scene_renders() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in [
+        "rough-metal",
+        "frosted-glass",
+        "phong-plates",
+        "glass-panes",
+    ] {
+        let scene = scenes_dir().join(format!("{name}.xml"));
+        let out = dir.path().join(format!("{name}.exr"));
+        let run = run_binary(
+            BINARY,
+            &[
+                "render",
+                "--scene",
+                scene.to_str().unwrap(),
+                "-D",
+                "spp=2",
+                "--width",
+                "24",
+                "--height",
+                "18",
+                "--out",
+                out.to_str().unwrap(),
+            ],
+        );
+        assert!(
+            run.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        assert!(out.exists(), "{name}");
+    }
+}
+
+#[test]
+fn rough_materials_become_lobes_with_a_note() {
+    let loaded = load_scene_file(&scenes_dir().join("rough-metal.xml"), &[]).unwrap();
+    let converted = convert(&loaded.scene).unwrap();
+    let Material::Glossy(floor) = converted.scene.materials[0] else {
+        panic!("the floor is glossy: {:?}", converted.scene.materials[0]);
+    };
+    approx::assert_relative_eq!(floor.exponent, 198.0, max_relative = 1e-4);
+    assert!(
+        converted
+            .notes
+            .iter()
+            .any(|n| n.contains("n = 2/alpha^2 - 2"))
+    );
+    // The frosted pane is a cube: six faces, each frosted glass.
+    let loaded = load_scene_file(&scenes_dir().join("frosted-glass.xml"), &[]).unwrap();
+    let converted = convert(&loaded.scene).unwrap();
+    let frosted = converted
+        .scene
+        .materials
+        .iter()
+        .filter(|m| matches!(m, Material::RoughGlass(_)))
+        .count();
+    assert_eq!(frosted, 6);
+    assert_eq!(
+        converted.scene.materials.len(),
+        converted.scene.world.scene.materials.len()
+    );
+}
+
+/// The scene file with `bsdf` as the material of its only shape, converted.
+fn convert_with(bsdf: &str) -> Result<ch06_fuzzy_reflections::scene_file::ConvertedScene, String> {
+    let xml = format!(
+        r#"<scene version="3.0.0">
+             <sensor type="perspective"><float name="fov" value="40"/><film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film></sensor>
+             <shape type="sphere">{bsdf}</shape>
+           </scene>"#
+    );
+    let loaded =
+        parse_scene(&xml, std::path::Path::new("test.xml"), &[]).map_err(|e| e.to_string())?;
+    convert(&loaded.scene)
+}
+
+#[test]
+fn every_rough_material_is_read_and_wrong_ones_are_refused() {
+    let glossy =
+        convert_with(r#"<bsdf type="phong"><float name="exponent" value="50"/></bsdf>"#).unwrap();
+    assert!(matches!(glossy.scene.materials[0], Material::Glossy(g) if g.exponent == 50.0));
+    let two_sided = convert_with(
+        r#"<bsdf type="twosided"><bsdf type="roughconductor"><float name="alpha" value="0.2"/></bsdf></bsdf>"#,
+    )
+    .unwrap();
+    assert!(matches!(two_sided.scene.materials[0], Material::Glossy(g) if g.two_sided));
+    let glass = convert_with(
+        r#"<bsdf type="roughdielectric"><string name="int_ior" value="water"/><float name="alpha" value="0.05"/></bsdf>"#,
+    )
+    .unwrap();
+    assert!(matches!(glass.scene.materials[0], Material::RoughGlass(g) if g.int_ior == 1.333));
+    for (bsdf, expected) in [
+        (r#"<bsdf type="plastic"/>"#, "not one this chapter renders"),
+        (
+            r#"<bsdf type="roughconductor"><string name="material" value="Au"/></bsdf>"#,
+            "measured metal data",
+        ),
+        (
+            r#"<bsdf type="roughconductor"><float name="alpha" value="-0.1"/></bsdf>"#,
+            "alpha must be a positive number",
+        ),
+        (
+            r#"<bsdf type="roughconductor"><float name="alpah" value="0.1"/></bsdf>"#,
+            "has no property `alpah`",
+        ),
+        (
+            r#"<bsdf type="roughconductor"><string name="distribution" value="phong"/></bsdf>"#,
+            "unknown microfacet distribution",
+        ),
+        (
+            r#"<bsdf type="roughdielectric"><string name="int_ior" value="glassy"/></bsdf>"#,
+            "unknown material \"glassy\"",
+        ),
+        (
+            r#"<bsdf type="phong"><float name="exponent" value="-3"/></bsdf>"#,
+            "lobe exponent",
+        ),
+    ] {
+        let message = convert_with(bsdf)
+            .err()
+            .unwrap_or_else(|| panic!("{bsdf} was accepted"));
+        assert!(message.contains(expected), "{bsdf}: {message}");
+        assert!(message.contains("shape 1"), "{bsdf}: {message}");
+    }
+}
+
+#[test]
+fn a_broken_scene_file_is_refused_by_the_binary() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("broken.xml");
+    std::fs::write(&scene, "<scene version=\"3.0.0\"><shape type=\"sphere\">").unwrap();
+    let out = dir.path().join("never.png");
+    assert_refused(
+        BINARY,
+        &[
+            "render",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        "broken.xml",
+    );
+    assert!(!out.exists());
+}
