@@ -17,6 +17,7 @@ pub const CHAPTERS: &[&str] = &[
     "ch03-anti-aliasing",
     "ch04-depth-of-field",
     "ch05-motion-blur",
+    "ch06-fuzzy-reflections",
 ];
 
 /// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
@@ -25,6 +26,7 @@ pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch03-anti-aliasing",
     "ch04-depth-of-field",
     "ch05-motion-blur",
+    "ch06-fuzzy-reflections",
 ];
 
 /// `target/<profile>`, where cargo writes binaries: the parent of the test's `deps/`.

@@ -22,6 +22,7 @@ pub const CHAPTERS: &[(&str, WriteFigures)] = &[
     ("ch03", ch03_anti_aliasing::figures::write_all),
     ("ch04", ch04_depth_of_field::figures::write_all),
     ("ch05", ch05_motion_blur::figures::write_all),
+    ("ch06", ch06_fuzzy_reflections::figures::write_all),
 ];
 
 /// Regenerates every chapter's figures under `figures_dir`, starting each chapter from an empty

@@ -25,10 +25,16 @@ const ANTI_ALIASED: &[&str] = &[
     "ch03-anti-aliasing",
     "ch04-depth-of-field",
     "ch05-motion-blur",
+    "ch06-fuzzy-reflections",
 ];
 /// The chapters with chapter 04's lens options.
-const WITH_LENS: &[&str] = &["ch04-depth-of-field", "ch05-motion-blur"];
+const WITH_LENS: &[&str] = &[
+    "ch04-depth-of-field",
+    "ch05-motion-blur",
+    "ch06-fuzzy-reflections",
+];
 const CH05: &[&str] = &["ch05-motion-blur"];
+const CH06: &[&str] = &["ch06-fuzzy-reflections"];
 const CH01: &[&str] = &["ch01-whitted"];
 const CH02: &[&str] = &["ch02-monte-carlo"];
 /// The chapters before chapter 04, which have no lens.
@@ -129,6 +135,16 @@ const CASES: &[Case] = &[
     case(CH05, &["render", "--out", "{out}", "--shutter-close", "soon"], "`soon` is not a number"),
     case(CH05, &["render", "--out", "{out}", "--stretches", "0"], "--stretches"),
     case(CH05, &["render", "--out", "{out}", "--time-sampling", "sobol"], "sobol"),
+    // Chapter 06's lobes and choices at glass.
+    case(CH06, &["render", "--out", "{out}", "--exponent", "-1"], "the lobe exponent must be a finite number >= 0"),
+    case(CH06, &["render", "--out", "{out}", "--exponent", "nan"], "the lobe exponent must be a finite number >= 0"),
+    case(CH06, &["render", "--out", "{out}", "--exponent", "inf"], "the lobe exponent must be a finite number >= 0"),
+    case(CH06, &["render", "--out", "{out}", "--exponent", "shiny"], "`shiny` is not a number"),
+    case(CH06, &["render", "--out", "{out}", "--glass", "neither"], "neither"),
+    case(CH06, &["render", "--out", "{out}", "--fuzz", "gaussian"], "gaussian"),
+    case(CH06, &["render", "--out", "{out}", "--below-surface", "clamp"], "clamp"),
+    case(CH06, &["render", "--out", "{out}", "--scene", "{bad}/unknown-bsdf.xml"], "the bsdf `plastic` is not one this chapter renders"),
+    case(CH06, &["render", "--out", "{out}", "--scene", "{bad}/rough-typo.xml"], "roughconductor has no property `alhpa`"),
     // Chapter 04's lens (chapter 05 has it too).
     case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "0", "--focal-length", "0.05"], "f-number"),
     case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "-2", "--focal-length", "0.05"], "f-number"),

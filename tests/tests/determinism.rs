@@ -139,3 +139,39 @@ fn chapter_05_is_thread_independent_with_motion_and_a_lens() {
         });
     }
 }
+
+#[test]
+fn chapter_06_is_thread_independent_with_every_choice_at_glass_and_stray_ray_policy() {
+    use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
+    use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, PointLights};
+    use ch06_fuzzy_reflections::{TraceOptions, render_with};
+    let lens = Lens::new(0.05, 5.0).unwrap();
+    let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
+    for builtin in Builtin::ALL {
+        let scene = builtin.build(DEFAULT_DEPTH, 10.0);
+        for (glass, fuzz, below) in [
+            (GlassStrategy::Fresnel, FuzzMethod::Lobe, BelowSurface::Drop),
+            (
+                GlassStrategy::Half,
+                FuzzMethod::Disc,
+                BelowSurface::Resample,
+            ),
+            (GlassStrategy::Both, FuzzMethod::Lobe, BelowSurface::Reflect),
+        ] {
+            let options = TraceOptions { glass, fuzz, below };
+            let sampler = PixelSampler::new(PixelSamplerKind::Stratified, 4, 11).unwrap();
+            assert_thread_independent(&format!("ch06 {} {options:?}", builtin.name()), |t| {
+                render_with(
+                    &scene,
+                    &PointLights,
+                    options,
+                    &lens,
+                    &settings(t, 4),
+                    &sampler,
+                    &filter,
+                )
+                .image
+            });
+        }
+    }
+}

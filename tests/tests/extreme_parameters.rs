@@ -160,6 +160,37 @@ proptest! {
     }
 
     #[test]
+    fn every_roughness_index_and_choice_at_glass_gives_finite_pixels(
+        builtin in prop::sample::select(ch06_fuzzy_reflections::scenes::Builtin::ALL.to_vec()),
+        exponent in prop_oneof![Just(0.0f32), log_uniform(1e-3, 1e7), Just(1e7f32)],
+        ior in prop_oneof![Just(1.0f32), 1.0f32..4.0, log_uniform(1e-2, 1e2)],
+        glass in prop::sample::select(ch06_fuzzy_reflections::GlassStrategy::ALL.to_vec()),
+        fuzz in prop::sample::select(ch06_fuzzy_reflections::FuzzMethod::ALL.to_vec()),
+        below in prop::sample::select(ch06_fuzzy_reflections::BelowSurface::ALL.to_vec()),
+        max_depth in 1u32..=16,
+        spp in 1u64..=4,
+        (width, height) in (1u32..=6, 1u32..=5),
+        seed in any::<u64>(),
+    ) {
+        use ch06_fuzzy_reflections::material::RoughGlass;
+        use ch06_fuzzy_reflections::{Material, PointLights, TraceOptions, render_with};
+        let mut scene = builtin.build(max_depth, exponent);
+        for material in &mut scene.materials {
+            if let Material::RoughGlass(glass) = material {
+                *glass = RoughGlass { int_ior: ior, ..*glass };
+            }
+        }
+        let options = TraceOptions { glass, fuzz, below };
+        let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+        let settings = RenderSettings::new(width, height, spp);
+        let pixels = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
+        let out = render_with(
+            &scene, &PointLights, options, &Lens::PINHOLE, &settings, &pixels, &filter,
+        );
+        check_finite(&out)?;
+    }
+
+    #[test]
     fn every_lens_gives_finite_pixels(
         params in whitted_params(),
         radius in prop_oneof![Just(0.0f32), log_uniform(1e-6, 1e4), Just(1e4f32)],

@@ -53,6 +53,7 @@ impl BelowSurface {
         }
     }
 
+    // ANCHOR: scatter
     /// A direction from `draw` that leaves on the side `side` points to (the surface normal
     /// for reflection, its negative for refraction), handled by this policy; `None` when the
     /// sample carries no light.
@@ -79,6 +80,7 @@ impl BelowSurface {
             BelowSurface::Reflect => Some(mirror_through_plane(d, side)).filter(|&d| above(d)),
         }
     }
+    // ANCHOR_END: scatter
 }
 
 /// `d` mirrored through the plane with unit normal `n`: the part along `n` changes sign.

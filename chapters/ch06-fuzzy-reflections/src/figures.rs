@@ -1,10 +1,495 @@
-//! The chapter's figures.
+//! The chapter's figures: roughness series for reflection and refraction, the empirical disc
+//! against the `cos^n` lobe, the below-surface policies (images, energy, and where their
+//! directions go), lobe samples, the ray count of "trace both" against the depth, the three
+//! glass strategies at equal time, error against time, and the agreement with Mitsuba 3.
 
+use crate::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
+use crate::below_surface::BelowSurface;
+use crate::furnace::{incoming, mean_radiance, white_floor};
+use crate::fuzz::FuzzMethod;
+use crate::glass_choice::GlassStrategy;
+use crate::lighting::PointLights;
+use crate::material::Material;
+use crate::render_with;
+use crate::scene::FuzzyScene;
+use crate::scenes::{Builtin, DEFAULT_DEPTH};
+use crate::tracer::TraceOptions;
+use anyhow::Context;
+use ch01_whitted::material::Material as SmoothMaterial;
+use ch01_whitted::optics::reflect;
+use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
+use ch04_depth_of_field::Lens;
 use common::cli::prepare_output_dir;
+use common::image::Image;
+use common::metrics::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_agreement_figures,
+    write_convergence_csv,
+};
+use common::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
+};
+use common::output::write_text;
+use common::render::{Budget, RenderOutput, RenderSettings};
+use common::sampler::{IndependentSampler, Sampler};
+use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
 
+/// Image sizes and budgets: the book's, or small ones for tests and CI.
+struct Quality {
+    width: u32,
+    height: u32,
+    /// Samples per pixel of the gallery images.
+    spp: u64,
+    /// Sample counts of the error-against-time runs.
+    budgets: &'static [u64],
+    /// Samples per pixel of the converged reference they are measured against.
+    reference_spp: u64,
+    /// Seconds each glass strategy gets in the equal-time comparison.
+    equal_seconds: f64,
+    /// Rays traced per point of the furnace curves.
+    furnace_samples: u64,
+}
+
+impl Quality {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Quality {
+                width: 96,
+                height: 72,
+                spp: 8,
+                budgets: &[1, 4, 16],
+                reference_spp: 256,
+                equal_seconds: 0.2,
+                furnace_samples: 500,
+            }
+        } else {
+            Quality {
+                width: 320,
+                height: 240,
+                spp: 64,
+                budgets: &[1, 4, 16, 64],
+                reference_spp: 2048,
+                equal_seconds: 2.0,
+                furnace_samples: 20_000,
+            }
+        }
+    }
+}
+
 /// Writes every figure of the chapter into `out`.
-pub fn write_all(out: &Path, _quick: bool) -> anyhow::Result<()> {
+pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     prepare_output_dir(out)?;
+    let quality = Quality::new(quick);
+    roughness_series(out, &quality).context("the roughness series")?;
+    disc_against_lobe(out, &quality).context("the disc against the lobe")?;
+    below_surface(out, &quality).context("the below-surface comparison")?;
+    lobe_samples(out).context("the lobe-sample plots")?;
+    ray_growth(out, &quality).context("the ray-count growth")?;
+    equal_time(out, &quality).context("the equal-time comparison")?;
+    convergence(out, &quality).context("the error-against-time figures")?;
+    write_agreement_figures(
+        out,
+        "chapter 06",
+        &scenes_dir(),
+        AGREEMENT_SCENES,
+        &render_scene_file,
+    )
+    .map_err(anyhow::Error::msg)
+    .context("the comparison with Mitsuba 3")?;
+    eprintln!("ch06 figures written to {}", out.display());
+    Ok(())
+}
+
+fn box_filter() -> ReconstructionFilter {
+    ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter")
+}
+
+/// Renders `scene` with stratified pixel positions, box-filtered.
+fn render(
+    scene: &FuzzyScene,
+    options: TraceOptions,
+    settings: &RenderSettings,
+    seed: u64,
+) -> RenderOutput {
+    let spp = match settings.budget {
+        Budget::Samples(spp) => spp,
+        Budget::Seconds(_) => 1,
+    };
+    let kind = match settings.budget {
+        Budget::Samples(_) => PixelSamplerKind::Stratified,
+        // A timed render does not know its sample count: independent positions.
+        Budget::Seconds(_) => PixelSamplerKind::Random,
+    };
+    let pixels = PixelSampler::new(kind, spp, seed).expect("a positive count");
+    render_with(
+        scene,
+        &PointLights,
+        options,
+        &Lens::PINHOLE,
+        settings,
+        &pixels,
+        &box_filter(),
+    )
+}
+
+fn gallery_settings(quality: &Quality) -> RenderSettings {
+    RenderSettings {
+        progress: true,
+        ..RenderSettings::new(quality.width, quality.height, quality.spp)
+    }
+}
+
+/// The exponent as a caption: "n = 1e6" rather than "n = 1000000".
+fn exponent_label(exponent: f32) -> String {
+    if exponent >= 1e4 {
+        format!("n = 1e{}", exponent.log10().round())
+    } else {
+        format!("n = {exponent}")
+    }
+}
+
+/// The glossy floor and the frosted pane from rough to smooth.
+fn roughness_series(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let settings = gallery_settings(quality);
+    let options = TraceOptions::default();
+    let mut reflection = Vec::new();
+    for exponent in [1.0f32, 10.0, 100.0, 1e3, 1e6] {
+        let scene = Builtin::Floor.build(DEFAULT_DEPTH, exponent);
+        reflection.push((
+            format!("glossy floor, {}", exponent_label(exponent)),
+            render(&scene, options, &settings, 0).image,
+        ));
+    }
+    let mut mirror = Builtin::Floor.build(DEFAULT_DEPTH, 1.0);
+    mirror.materials[0] = SmoothMaterial::Mirror {
+        reflectance: Vec3::splat(0.8),
+    }
+    .into();
+    reflection.push((
+        "perfect mirror (chapter 01)".to_string(),
+        render(&mirror, options, &settings, 0).image,
+    ));
+    comparison_grid(&out.join("roughness_reflection.png"), &reflection, 3, 1)?;
+
+    let mut refraction = Vec::new();
+    for exponent in [0.0f32, 1.0, 10.0, 100.0, 1e3] {
+        let scene = Builtin::Frosted.build(DEFAULT_DEPTH, exponent);
+        refraction.push((
+            format!("frosted pane, {}", exponent_label(exponent)),
+            render(&scene, options, &settings, 0).image,
+        ));
+    }
+    let mut smooth = Builtin::Frosted.build(DEFAULT_DEPTH, 1.0);
+    for material in &mut smooth.materials {
+        if matches!(material, Material::RoughGlass(_)) {
+            *material = SmoothMaterial::glass(1.5).into();
+        }
+    }
+    refraction.push((
+        "smooth glass (chapter 01)".to_string(),
+        render(&smooth, options, &settings, 0).image,
+    ));
+    comparison_grid(&out.join("roughness_refraction.png"), &refraction, 3, 1)?;
+    Ok(())
+}
+
+/// The empirical disc and the `cos^n` lobe, sized to the same spread.
+fn disc_against_lobe(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let settings = gallery_settings(quality);
+    let mut cells = Vec::new();
+    for exponent in [10.0f32, 300.0] {
+        let scene = Builtin::Floor.build(DEFAULT_DEPTH, exponent);
+        for fuzz in FuzzMethod::ALL {
+            let options = TraceOptions {
+                fuzz,
+                ..TraceOptions::default()
+            };
+            let caption = match fuzz {
+                FuzzMethod::Lobe => format!("cos^n lobe, {}", exponent_label(exponent)),
+                FuzzMethod::Disc => format!(
+                    "empirical disc, radius {:.2} (as wide)",
+                    crate::fuzz::disc_radius_for_exponent(exponent)
+                ),
+            };
+            cells.push((caption, render(&scene, options, &settings, 0).image));
+        }
+    }
+    comparison_grid(&out.join("disc_vs_lobe.png"), &cells, 2, 1)?;
+    Ok(())
+}
+
+/// The three below-surface policies: in the plates scene at a low exponent, in the furnace
+/// (reflected energy against the angle of incidence), and in a table.
+fn below_surface(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let settings = gallery_settings(quality);
+    let scene = Builtin::Floor.build(DEFAULT_DEPTH, 3.0);
+    let cells: Vec<(String, Image)> = BelowSurface::ALL
+        .iter()
+        .map(|&below| {
+            let options = TraceOptions {
+                below,
+                ..TraceOptions::default()
+            };
+            (
+                format!("n = 3, stray rays: {}", below.name()),
+                render(&scene, options, &settings, 0).image,
+            )
+        })
+        .collect();
+    comparison_grid(&out.join("below_surface.png"), &cells, 3, 1)?;
+
+    // Albedo in the furnace against the angle of incidence.
+    let angles: Vec<f32> = (0..=18)
+        .map(|i| 5.0 * i as f32)
+        .map(|a| a.min(89.9))
+        .collect();
+    let mut series = Vec::new();
+    let mut csv = String::from("exponent,fuzz,below_surface,degrees,albedo,standard_error\n");
+    for exponent in [1.0f32, 10.0] {
+        let floor = white_floor(exponent);
+        for below in BelowSurface::ALL {
+            let options = TraceOptions {
+                below,
+                ..TraceOptions::default()
+            };
+            let mut points = Vec::new();
+            for &degrees in &angles {
+                let (albedo, se) =
+                    mean_radiance(&floor, options, &incoming(degrees), quality.furnace_samples);
+                csv.push_str(&format!(
+                    "{exponent},lobe,{},{degrees},{albedo},{se}\n",
+                    below.name()
+                ));
+                points.push((f64::from(degrees), albedo));
+            }
+            let style = if exponent == 1.0 {
+                SeriesStyle::LineAndPoints
+            } else {
+                SeriesStyle::Dashed
+            };
+            series.push(Series::new(
+                format!("n = {exponent}, {}", below.name()),
+                points,
+                style,
+            ));
+        }
+    }
+    write_text(&out.join("below_surface_energy.csv"), &csv)?;
+    line_plot(
+        &out.join("below_surface_energy.png"),
+        "A white glossy floor in a furnace of radiance 1",
+        &Axes::linear(
+            "angle of incidence (degrees)",
+            "reflected radiance (albedo)",
+        ),
+        &series,
+    )?;
+    Ok(())
+}
+
+/// Where a lobe's directions go: around its own axis for each method and exponent, and at
+/// grazing incidence, seen from above the surface, as each below-surface policy leaves them.
+fn lobe_samples(out: &Path) -> anyhow::Result<()> {
+    let n = 2000;
+    let uniforms: Vec<Vec2> = {
+        let mut sampler = IndependentSampler::new(5);
+        (0..n)
+            .map(|i| {
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                sampler.get_2d()
+            })
+            .collect()
+    };
+    // Around +z, projected on the plane perpendicular to the axis: (x, y) = sin α (cos φ, sin φ).
+    let mut sets = Vec::new();
+    for exponent in [1.0f32, 10.0, 100.0] {
+        for method in FuzzMethod::ALL {
+            let points = uniforms
+                .iter()
+                .map(|&u| method.sample(Vec3::Z, exponent, u).truncate())
+                .collect();
+            sets.push((format!("{}, n = {exponent}", method.name()), points));
+        }
+    }
+    scatter_plot(
+        &out.join("lobe_samples.png"),
+        "Lobe directions seen along the lobe's axis",
+        &sets,
+        [Vec2::splat(-1.0), Vec2::ONE],
+    )?;
+
+    // A ray arriving 75 degrees from the normal +y: the mirror direction is 15 degrees above
+    // the surface, and a lobe of n = 10 reaches well below it.
+    let incident = incoming(75.0).dir;
+    let mirror = reflect(incident, Vec3::Y);
+    let exponent = 10.0;
+    let mut sampler = IndependentSampler::new(6);
+    // Seen from far along the mirror direction: x across it, y the height above the floor.
+    let side_view = |d: Vec3| Vec2::new(d.z, d.y);
+    let drawn = (0..n)
+        .map(|i| {
+            sampler.start_pixel_sample(UVec2::ZERO, i);
+            side_view(FuzzMethod::Lobe.sample(mirror, exponent, sampler.get_2d()))
+        })
+        .collect();
+    let mut sets = vec![("as drawn: below the floor where y < 0".to_string(), drawn)];
+    for below in BelowSurface::ALL {
+        let mut points = Vec::new();
+        for i in 0..n {
+            sampler.start_pixel_sample(UVec2::ZERO, i);
+            if let Some(d) = below.scatter(Vec3::Y, &mut sampler, |u| {
+                FuzzMethod::Lobe.sample(mirror, exponent, u)
+            }) {
+                points.push(side_view(d));
+            }
+        }
+        sets.push((
+            format!("{}: {} of {n} kept", below.name(), points.len()),
+            points,
+        ));
+    }
+    scatter_plot(
+        &out.join("below_surface_samples.png"),
+        "Lobe n = 10 at 75 degrees incidence, side view (y < 0: below the floor)",
+        &sets,
+        [Vec2::splat(-1.0), Vec2::ONE],
+    )?;
+    Ok(())
+}
+
+/// Rays per camera ray against the depth limit, for each glass strategy, in the panes scene.
+fn ray_growth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let (width, height) = (quality.width / 4, quality.height / 4);
+    let spp = 2;
+    let depths: Vec<u32> = (1..=14).collect();
+    let mut csv = String::from("strategy,max_depth,rays_per_camera_ray,seconds\n");
+    let mut series = Vec::new();
+    for glass in GlassStrategy::ALL {
+        let mut points = Vec::new();
+        for &depth in &depths {
+            let scene = Builtin::Panes.build(depth, 1e6);
+            let options = TraceOptions {
+                glass,
+                ..TraceOptions::default()
+            };
+            let rendered = render(&scene, options, &RenderSettings::new(width, height, spp), 0);
+            let camera_rays = u64::from(width * height) * spp;
+            let per_ray = rendered.stats.rays as f64 / camera_rays as f64;
+            csv.push_str(&format!(
+                "{},{depth},{per_ray},{}\n",
+                glass.name(),
+                rendered.stats.seconds
+            ));
+            points.push((f64::from(depth), per_ray));
+        }
+        series.push(Series::new(
+            glass.name(),
+            points,
+            SeriesStyle::LineAndPoints,
+        ));
+    }
+    write_text(&out.join("ray_growth.csv"), &csv)?;
+    line_plot(
+        &out.join("ray_growth.png"),
+        "Rays per camera ray against the depth limit",
+        &Axes {
+            log_y: true,
+            ..Axes::linear(
+                "max_depth (segments, camera ray included)",
+                "rays per camera ray",
+            )
+        },
+        &series,
+    )?;
+    Ok(())
+}
+
+/// The panes scene with each glass strategy, given the same time. Tracing both rays goes
+/// first: a timed render always finishes one sample per pixel, and if that takes longer than
+/// the budget, the others get as long as it took.
+fn equal_time(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let scene = Builtin::Panes.build(DEFAULT_DEPTH, 1e6);
+    let mut cells = Vec::new();
+    let mut seconds = quality.equal_seconds;
+    for glass in GlassStrategy::ALL {
+        let settings = RenderSettings {
+            budget: Budget::Seconds(seconds),
+            ..RenderSettings::new(quality.width, quality.height, 1)
+        };
+        let options = TraceOptions {
+            glass,
+            ..TraceOptions::default()
+        };
+        let rendered = render(&scene, options, &settings, 0);
+        seconds = seconds.max(rendered.stats.seconds);
+        cells.push((
+            format!(
+                "{}: {} spp in {:.1} s",
+                glass.name(),
+                rendered.stats.spp,
+                rendered.stats.seconds
+            ),
+            rendered.image,
+        ));
+    }
+    comparison_grid(&out.join("strategies_equal_time.png"), &cells, 3, 1)?;
+    Ok(())
+}
+
+/// Error against time of the three glass strategies, on smooth panes and on a frosted pane.
+fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let (width, height) = (quality.width / 4, quality.height / 4);
+    for (builtin, exponent, name) in [
+        (Builtin::Panes, 1e6, "convergence"),
+        (Builtin::Frosted, 10.0, "convergence_frosted"),
+    ] {
+        let scene = builtin.build(DEFAULT_DEPTH, exponent);
+        let with = |glass| TraceOptions {
+            glass,
+            ..TraceOptions::default()
+        };
+        // The reference: the Fresnel choice (unbiased, and the fastest per sample), long.
+        let reference = render(
+            &scene,
+            with(GlassStrategy::Fresnel),
+            &RenderSettings {
+                progress: true,
+                ..RenderSettings::new(width, height, quality.reference_spp)
+            },
+            1_000,
+        )
+        .image;
+        let techniques: Vec<Technique> = GlassStrategy::ALL
+            .iter()
+            .map(|&glass| {
+                let scene = &scene;
+                Technique::new(glass.name(), move |spp| {
+                    render(
+                        scene,
+                        with(glass),
+                        &RenderSettings::new(width, height, spp),
+                        0,
+                    )
+                    .image
+                })
+            })
+            .collect();
+        let records = run_convergence(&techniques, quality.budgets, &reference);
+        write_convergence_csv(&out.join(format!("{name}.csv")), &records)?;
+        let what = match builtin {
+            Builtin::Panes => "smooth glass panes",
+            _ => "frosted pane",
+        };
+        plot_error_vs_time(
+            &out.join(format!("{name}.png")),
+            &format!("Error against time: which ray at glass ({what})"),
+            &records,
+        )?;
+        plot_error_vs_spp(
+            &out.join(format!("{name}_spp.png")),
+            &format!("Error against spp: which ray at glass ({what})"),
+            &records,
+        )?;
+    }
     Ok(())
 }

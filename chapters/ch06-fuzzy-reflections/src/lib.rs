@@ -20,6 +20,7 @@
 pub mod agreement;
 pub mod below_surface;
 pub mod figures;
+pub mod furnace;
 pub mod fuzz;
 pub mod glass_choice;
 pub mod highlights;

@@ -7,14 +7,12 @@
 //! lobe's share below the surface (the model's own loss at grazing angles), resampling and
 //! reflecting keep everything.
 
-mod support;
-
 use ch01_whitted::material::Material as SmoothMaterial;
+use ch06_fuzzy_reflections::furnace::{incoming, mean_radiance, scene_of, white_floor};
 use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, Material, TraceOptions};
 use common::Ray;
 use common::geometry::{Quad, Shape, Sphere};
 use glam::Vec3;
-use support::{mean_radiance, scene_of};
 
 const EXPONENTS: [f32; 7] = [0.0, 1.0, 10.0, 100.0, 1e3, 1e4, 1e6];
 /// Angles of incidence from the normal, in degrees, up to a ray a hair from the surface.
@@ -27,26 +25,6 @@ fn options(fuzz: FuzzMethod, below: BelowSurface) -> TraceOptions {
         fuzz,
         below,
     }
-}
-
-/// A ray from height 1 that reaches the origin at `degrees` from the normal +y.
-fn incoming(degrees: f32) -> Ray {
-    let theta = degrees.to_radians();
-    let to_surface = Vec3::new(theta.sin(), -theta.cos(), 0.0);
-    // Start where the ray is at height 1 (far off for a grazing ray, but above the floor).
-    Ray::new(-to_surface / theta.cos().max(1e-3), to_surface)
-}
-
-/// A large white glossy floor at y = 0 in the furnace.
-fn white_floor(exponent: f32) -> ch06_fuzzy_reflections::FuzzyScene {
-    let floor = Quad::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
-    scene_of(
-        vec![(Shape::Quad(floor), Material::glossy(Vec3::ONE, exponent))],
-        Vec3::ONE,
-        Vec3::new(0.0, 2.0, 5.0),
-        Vec3::ZERO,
-        4,
-    )
 }
 
 #[test]

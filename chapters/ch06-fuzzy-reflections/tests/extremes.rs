@@ -7,6 +7,7 @@ mod support;
 use ch01_whitted::material::Material as SmoothMaterial;
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::render_with as chapter05_render;
+use ch06_fuzzy_reflections::furnace::{mean_radiance, scene_of};
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
 use ch06_fuzzy_reflections::{
     BelowSurface, FuzzMethod, FuzzyScene, GlassStrategy, Material, TraceOptions,
@@ -17,7 +18,7 @@ use common::geometry::{Quad, Shape};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
 use glam::{Vec2, Vec3};
-use support::{assert_finite, mean_radiance, render, scene_of};
+use support::{assert_finite, render};
 
 fn every_option() -> Vec<TraceOptions> {
     let mut all = Vec::new();
