@@ -83,6 +83,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     roughness_series(out, &quality).context("the roughness series")?;
     disc_against_lobe(out, &quality).context("the disc against the lobe")?;
     below_surface(out, &quality).context("the below-surface comparison")?;
+    inter_reflections(out, &quality).context("the plates")?;
     lobe_samples(out).context("the lobe-sample plots")?;
     ray_growth(out, &quality).context("the ray-count growth")?;
     equal_time(out, &quality).context("the equal-time comparison")?;
@@ -284,6 +285,23 @@ fn below_surface(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         ),
         &series,
     )?;
+    Ok(())
+}
+
+/// Two glossy plates facing each other: reflections of reflections, blurring as they repeat.
+fn inter_reflections(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let settings = gallery_settings(quality);
+    let cells: Vec<(String, Image)> = [1e5f32, 1e3, 100.0]
+        .iter()
+        .map(|&exponent| {
+            let scene = Builtin::Plates.build(DEFAULT_DEPTH, exponent);
+            (
+                format!("plates, {}", exponent_label(exponent)),
+                render(&scene, TraceOptions::default(), &settings, 0).image,
+            )
+        })
+        .collect();
+    comparison_grid(&out.join("plates.png"), &cells, 3, 1)?;
     Ok(())
 }
 

@@ -114,10 +114,10 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
                 )
             }
             None => (
-                command.builtin.build(
-                    DEFAULT_DEPTH,
-                    exponent.unwrap_or(command.builtin.default_exponent()),
-                ),
+                // Built with its own exponent; --exponent replaces it below, as in a file.
+                command
+                    .builtin
+                    .build(DEFAULT_DEPTH, command.builtin.default_exponent()),
                 Lens::PINHOLE,
                 None,
                 None,

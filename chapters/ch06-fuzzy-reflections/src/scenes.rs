@@ -5,7 +5,7 @@
 //!   mirror ball on it and a low lamp behind them: the reflections of the balls, the wall and
 //!   the lamp blur as the floor gets rougher.
 //! - `frosted`: a pane of frosted glass in front of coloured balls and a checkered wall.
-//! - `plates`: two glossy plates facing each other, a ball between them: reflections of
+//! - `plates`: two glossy plates facing each other, two balls between them: reflections of
 //!   reflections, each one blurrier than the last.
 //! - `panes`: four smooth glass panes and a glass ball in front of a checkered wall: every
 //!   ray splits at eight or more surfaces, where following both rays explodes.
@@ -251,24 +251,28 @@ fn plates(max_depth: u32, exponent: f32) -> FuzzyScene {
     Builder::new(SKY)
         .shape(
             quad(Vec3::new(-8.0, 0.0, -8.0), 16.0 * Vec3::Z, 16.0 * Vec3::X),
-            checkered(WALL_LIGHT, WALL_DARK, Vec2::splat(8.0)),
+            checkered(WALL_LIGHT, WALL_DARK, Vec2::splat(16.0)),
         )
-        // Two plates facing each other across x = 0: normals +x and -x.
+        // Two plates facing each other across x = 0, 2.4 apart: normals +x and -x.
         .shape(
-            quad(Vec3::new(-1.5, 0.0, -3.0), 2.5 * Vec3::Y, 5.0 * Vec3::Z),
+            quad(Vec3::new(-1.2, 0.0, -5.0), 2.0 * Vec3::Y, 8.0 * Vec3::Z),
             plate,
         )
         .shape(
-            quad(Vec3::new(1.5, 0.0, -3.0), 5.0 * Vec3::Z, 2.5 * Vec3::Y),
+            quad(Vec3::new(1.2, 0.0, -5.0), 8.0 * Vec3::Z, 2.0 * Vec3::Y),
             plate,
         )
         .shape(
-            sphere(Vec3::new(0.0, 0.5, -0.5), 0.5),
+            sphere(Vec3::new(0.3, 0.4, -1.0), 0.4),
             matte(Vec3::new(0.85, 0.2, 0.1)),
+        )
+        .shape(
+            sphere(Vec3::new(-0.5, 0.3, -2.5), 0.3),
+            matte(Vec3::new(0.2, 0.4, 0.9)),
         )
         .light(Vec3::new(0.0, 5.0, 2.0), Vec3::splat(40.0))
         .build(
-            camera(Vec3::new(0.6, 1.4, 4.0), Vec3::new(-0.4, 0.6, -1.0), 50.0),
+            camera(Vec3::new(0.9, 0.9, 1.5), Vec3::new(-1.2, 0.6, -1.0), 55.0),
             max_depth,
         )
 }
