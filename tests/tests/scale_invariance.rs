@@ -119,3 +119,45 @@ fn thin_lens_images_do_not_depend_on_scene_scale() {
         );
     }
 }
+
+/// Chapter 06: the same scene with its mirror made glossy and its glass frosted. The random
+/// numbers of a sample do not depend on the scale, so the spread rays are the same rays,
+/// scaled: any difference is a self-hit or a leak of the rays spawned off rough surfaces.
+fn fuzzy_at(scale: f32) -> Image {
+    use ch01_whitted::material::Material as Smooth;
+    use ch05_motion_blur::MotionScene;
+    use ch06_fuzzy_reflections::{FuzzyScene, Material, PointLights, TraceOptions, render_with};
+    let whitted = MotionScene::still(scaled_whitted_scene(scale, Vec3::ZERO, SIZE));
+    let materials = whitted
+        .scene
+        .materials
+        .iter()
+        .map(|&m| match m {
+            Smooth::Mirror { reflectance } => Material::glossy(reflectance, 200.0),
+            Smooth::Dielectric { int_ior, .. } => Material::rough_glass(int_ior, 50.0),
+            other => other.into(),
+        })
+        .collect();
+    let scene = FuzzyScene::new(whitted, materials).unwrap();
+    assert!(scene.has_fuzzy_materials());
+    let sampler = PixelSampler::new(PixelSamplerKind::Stratified, 16, 0).unwrap();
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+    let settings = RenderSettings::new(SIZE, SIZE, 16);
+    finite(render_with(
+        &scene,
+        &PointLights,
+        TraceOptions::default(),
+        &Lens::PINHOLE,
+        &settings,
+        &sampler,
+        &filter,
+    ))
+}
+
+#[test]
+fn fuzzy_images_do_not_depend_on_scene_scale() {
+    let reference = fuzzy_at(1.0);
+    for scale in SCALES {
+        assert_same_image(&format!("ch06 scale {scale}"), &reference, &fuzzy_at(scale));
+    }
+}
