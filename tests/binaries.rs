@@ -18,6 +18,7 @@ pub const CHAPTERS: &[&str] = &[
     "ch04-depth-of-field",
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
 ];
 
 /// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
@@ -27,6 +28,7 @@ pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch04-depth-of-field",
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
 ];
 
 /// `target/<profile>`, where cargo writes binaries: the parent of the test's `deps/`.

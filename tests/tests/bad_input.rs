@@ -26,15 +26,19 @@ const ANTI_ALIASED: &[&str] = &[
     "ch04-depth-of-field",
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
 ];
 /// The chapters with chapter 04's lens options.
 const WITH_LENS: &[&str] = &[
     "ch04-depth-of-field",
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
 ];
 const CH05: &[&str] = &["ch05-motion-blur"];
-const CH06: &[&str] = &["ch06-fuzzy-reflections"];
+/// The chapters with chapter 06's lobes and choices at glass.
+const FUZZY: &[&str] = &["ch06-fuzzy-reflections", "ch07-soft-shadows"];
+const CH07: &[&str] = &["ch07-soft-shadows"];
 const CH01: &[&str] = &["ch01-whitted"];
 const CH02: &[&str] = &["ch02-monte-carlo"];
 /// The chapters before chapter 04, which have no lens.
@@ -136,15 +140,26 @@ const CASES: &[Case] = &[
     case(CH05, &["render", "--out", "{out}", "--stretches", "0"], "--stretches"),
     case(CH05, &["render", "--out", "{out}", "--time-sampling", "sobol"], "sobol"),
     // Chapter 06's lobes and choices at glass.
-    case(CH06, &["render", "--out", "{out}", "--exponent", "-1"], "the lobe exponent must be a finite number >= 0"),
-    case(CH06, &["render", "--out", "{out}", "--exponent", "nan"], "the lobe exponent must be a finite number >= 0"),
-    case(CH06, &["render", "--out", "{out}", "--exponent", "inf"], "the lobe exponent must be a finite number >= 0"),
-    case(CH06, &["render", "--out", "{out}", "--exponent", "shiny"], "`shiny` is not a number"),
-    case(CH06, &["render", "--out", "{out}", "--glass", "neither"], "neither"),
-    case(CH06, &["render", "--out", "{out}", "--fuzz", "gaussian"], "gaussian"),
-    case(CH06, &["render", "--out", "{out}", "--below-surface", "clamp"], "clamp"),
-    case(CH06, &["render", "--out", "{out}", "--scene", "{bad}/unknown-bsdf.xml"], "the bsdf `plastic` is not one this chapter renders"),
-    case(CH06, &["render", "--out", "{out}", "--scene", "{bad}/rough-typo.xml"], "roughconductor has no property `alhpa`"),
+    case(FUZZY, &["render", "--out", "{out}", "--exponent", "-1"], "the lobe exponent must be a finite number >= 0"),
+    case(FUZZY, &["render", "--out", "{out}", "--exponent", "nan"], "the lobe exponent must be a finite number >= 0"),
+    case(FUZZY, &["render", "--out", "{out}", "--exponent", "inf"], "the lobe exponent must be a finite number >= 0"),
+    case(FUZZY, &["render", "--out", "{out}", "--exponent", "shiny"], "`shiny` is not a number"),
+    case(FUZZY, &["render", "--out", "{out}", "--glass", "neither"], "neither"),
+    case(FUZZY, &["render", "--out", "{out}", "--fuzz", "gaussian"], "gaussian"),
+    case(FUZZY, &["render", "--out", "{out}", "--below-surface", "clamp"], "clamp"),
+    case(FUZZY, &["render", "--out", "{out}", "--scene", "{bad}/unknown-bsdf.xml"], "the bsdf `plastic` is not one this chapter renders"),
+    case(FUZZY, &["render", "--out", "{out}", "--scene", "{bad}/rough-typo.xml"], "roughconductor has no property `alhpa`"),
+    // Chapter 07's area lights.
+    case(CH07, &["render", "--out", "{out}", "--light-samples", "0"], "--light-samples"),
+    case(CH07, &["render", "--out", "{out}", "--light-samples", "-4"], "invalid value '-4' for '--light-samples"),
+    case(CH07, &["render", "--out", "{out}", "--light-samples", "4097"], "--light-samples"),
+    case(CH07, &["render", "--out", "{out}", "--light-strata", "sobol"], "sobol"),
+    case(CH07, &["render", "--out", "{out}", "--light-sampling", "importance"], "importance"),
+    case(CH07, &["render", "--out", "{out}", "--disc-warp", "square"], "square"),
+    case(CH07, &["render", "--out", "{out}", "--light-scale", "0"], "--light-scale must be a number from 1e-4 to 1e4"),
+    case(CH07, &["render", "--out", "{out}", "--light-scale", "nan"], "--light-scale must be a number from 1e-4 to 1e4"),
+    case(CH07, &["render", "--out", "{out}", "--light-scale", "1e9"], "--light-scale must be a number from 1e-4 to 1e4"),
+    case(CH07, &["render", "--out", "{out}", "--scene", "{bad}/moving-light.xml"], "is an area light that moves"),
     // Chapter 04's lens (chapter 05 has it too).
     case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "0", "--focal-length", "0.05"], "f-number"),
     case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "-2", "--focal-length", "0.05"], "f-number"),

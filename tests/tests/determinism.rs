@@ -175,3 +175,53 @@ fn chapter_06_is_thread_independent_with_every_choice_at_glass_and_stray_ray_pol
         }
     }
 }
+
+#[test]
+fn chapter_07_is_thread_independent_with_every_light_option() {
+    use ch07_soft_shadows::disc_warp::DiscWarp;
+    use ch07_soft_shadows::light_options::{LightOptions, LightStrata};
+    use ch07_soft_shadows::light_sample::{LightSampling, Strategy};
+    use ch07_soft_shadows::render_with;
+    use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+    let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
+    for builtin in Builtin::ALL {
+        let scene = builtin.build(DEFAULT_DEPTH, 1.0);
+        for (samples, strata, strategy, disc_warp) in [
+            (
+                1,
+                LightStrata::Stratified,
+                Strategy::SolidAngle,
+                DiscWarp::Concentric,
+            ),
+            (4, LightStrata::Stratified, Strategy::Area, DiscWarp::Naive),
+            (
+                3,
+                LightStrata::Independent,
+                Strategy::SolidAngle,
+                DiscWarp::Polar,
+            ),
+        ] {
+            let lights = LightOptions {
+                samples,
+                strata,
+                sampling: LightSampling {
+                    strategy,
+                    disc_warp,
+                },
+            };
+            let sampler = PixelSampler::new(PixelSamplerKind::Stratified, 4, 11).unwrap();
+            assert_thread_independent(&format!("ch07 {} {lights:?}", builtin.name()), |t| {
+                render_with(
+                    &scene,
+                    lights,
+                    ch06_fuzzy_reflections::TraceOptions::default(),
+                    &Lens::PINHOLE,
+                    &settings(t, 4),
+                    &sampler,
+                    &filter,
+                )
+                .image
+            });
+        }
+    }
+}

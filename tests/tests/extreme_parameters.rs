@@ -191,6 +191,38 @@ proptest! {
     }
 
     #[test]
+    fn every_light_size_and_sampling_gives_finite_pixels(
+        builtin in prop::sample::select(ch07_soft_shadows::scenes::Builtin::ALL.to_vec()),
+        light_scale in prop_oneof![Just(1e-4f32), log_uniform(1e-4, 1e4), Just(1e4f32)],
+        samples in 1u32..=9,
+        strata in prop::sample::select(ch07_soft_shadows::light_options::LightStrata::ALL.to_vec()),
+        strategy in prop::sample::select(ch07_soft_shadows::light_sample::Strategy::ALL.to_vec()),
+        disc_warp in prop::sample::select(ch07_soft_shadows::disc_warp::DiscWarp::ALL.to_vec()),
+        max_depth in 1u32..=16,
+        spp in 1u64..=4,
+        (width, height) in (1u32..=6, 1u32..=5),
+        seed in any::<u64>(),
+    ) {
+        use ch07_soft_shadows::light_options::LightOptions;
+        use ch07_soft_shadows::light_sample::LightSampling;
+        let scene = builtin.build(max_depth, light_scale);
+        let lights = LightOptions { samples, strata, sampling: LightSampling { strategy, disc_warp } };
+        let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+        let settings = RenderSettings::new(width, height, spp);
+        let pixels = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
+        let out = ch07_soft_shadows::render_with(
+            &scene,
+            lights,
+            ch06_fuzzy_reflections::TraceOptions::default(),
+            &Lens::PINHOLE,
+            &settings,
+            &pixels,
+            &filter,
+        );
+        check_finite(&out)?;
+    }
+
+    #[test]
     fn every_lens_gives_finite_pixels(
         params in whitted_params(),
         radius in prop_oneof![Just(0.0f32), log_uniform(1e-6, 1e4), Just(1e4f32)],

@@ -19,6 +19,7 @@
 
 pub mod agreement;
 pub mod below_surface;
+pub mod cli;
 pub mod figures;
 pub mod furnace;
 pub mod fuzz;

@@ -5,12 +5,10 @@ use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::cli::LensArgs;
 use ch05_motion_blur::{Shutter, StratifiedTime, TimeSampling};
-use ch06_fuzzy_reflections::material::check_exponent;
+use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::scene_file::convert;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
-use ch06_fuzzy_reflections::{
-    BelowSurface, FuzzMethod, GlassStrategy, PointLights, TraceOptions, figures, render_with,
-};
+use ch06_fuzzy_reflections::{PointLights, figures, render_with};
 use clap::{Parser, Subcommand};
 use common::cli::{FiguresArgs, RenderArgs, report_error};
 use common::render::Budget;
@@ -38,37 +36,14 @@ struct RenderCommand {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Floor, conflicts_with = "scene")]
     builtin: Builtin,
-    /// The exponent n of every cos^n lobe: 0 is a hemisphere, 1e6 almost a mirror
-    /// [default: the scene's].
-    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = parse_number)]
-    exponent: Option<f32>,
-    /// Which ray to trace at glass: both, one with probability 1/2, or one by the Fresnel term.
-    #[arg(long, value_enum, default_value_t = GlassStrategy::Fresnel)]
-    glass: GlassStrategy,
-    /// How fuzzy surfaces spread their rays: the cos^n lobe, or the empirical disc.
-    #[arg(long, value_enum, default_value_t = FuzzMethod::Lobe)]
-    fuzz: FuzzMethod,
-    /// What to do with a spread ray that points below the surface.
-    #[arg(long, value_enum, default_value_t = BelowSurface::Drop)]
-    below_surface: BelowSurface,
-    /// Longest path in segments, counting the camera ray (Mitsuba's max_depth)
-    /// [default: the scene file's, or 12].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    max_depth: Option<u32>,
+    #[command(flatten)]
+    fuzzy: FuzzyArgs,
     #[command(flatten)]
     anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
     lens: LensArgs,
     #[command(flatten)]
     args: RenderArgs,
-}
-
-/// Any number, including NaN and infinities: each option's own rule is checked where it is
-/// used, with the reason.
-fn parse_number(text: &str) -> Result<f32, String> {
-    text.trim()
-        .parse()
-        .map_err(|_| format!("`{text}` is not a number"))
 }
 
 fn main() -> ExitCode {
@@ -87,11 +62,6 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     if command.args.scene.is_none() && !command.args.define.is_empty() {
         anyhow::bail!("-D sets a parameter of a scene file; it needs --scene FILE.xml");
     }
-    let exponent = command
-        .exponent
-        .map(check_exponent)
-        .transpose()
-        .map_err(|e| anyhow::anyhow!("--exponent: {e}"))?;
     let (scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match &command.args.scene {
             Some(path) => {
@@ -125,13 +95,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
                 command.builtin.name().to_string(),
             ),
         };
-    let mut scene = match exponent {
-        Some(exponent) => scene.with_exponent(exponent),
-        None => scene,
-    };
-    if let Some(max_depth) = command.max_depth {
-        scene.world.scene.max_depth = max_depth;
-    }
+    let scene = command.fuzzy.apply(scene)?;
     // A pinhole scene given an aperture on the command line focuses 5 units away unless told.
     let scene_lens = if scene_lens.is_pinhole() {
         Lens {
@@ -153,11 +117,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             .anti_aliasing
             .pixel_sampler(sampler_kind, &settings.budget, command.args.seed)?;
     command.args.check_outputs()?;
-    let options = TraceOptions {
-        glass: command.glass,
-        fuzz: command.fuzz,
-        below: command.below_surface,
-    };
+    let options = command.fuzzy.options();
     // Stratified time when something moves and the budget is a sample count (chapter 05's
     // default); without motion no time is drawn and the choice changes nothing.
     let shutter: Shutter = scene.world.shutter;
@@ -189,7 +149,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     } else {
         TimeSampling::Independent
     };
-    let extra = serde_json::json!({
+    let mut extra = serde_json::json!({
         "scene": scene_name,
         "max_depth": scene.world.scene.max_depth,
         "sampler": sampler_kind.name(),
@@ -200,12 +160,12 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         "shutter_open": shutter.open,
         "shutter_close": shutter.close,
         "time_sampling": time_sampling.name(),
-        "glass": command.glass.name(),
-        "fuzz": command.fuzz.name(),
-        "below_surface": command.below_surface.name(),
-        "exponent": exponent,
         "seed": command.args.seed,
     });
+    extra
+        .as_object_mut()
+        .expect("a JSON object")
+        .extend(command.fuzzy.stats());
     command.args.write_outputs(&rendered, extra)?;
     eprintln!(
         "wrote {} ({}x{}, {} spp, glass {}, {:.2} s, {:.0} rays/s)",
@@ -213,7 +173,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         rendered.stats.width,
         rendered.stats.height,
         rendered.stats.spp,
-        command.glass.name(),
+        command.fuzzy.glass.name(),
         rendered.stats.seconds,
         rendered.stats.rays_per_second
     );

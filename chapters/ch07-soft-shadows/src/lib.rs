@@ -7,8 +7,8 @@
 //! that is visible, weighted the way the light arrives. In the lecture's words: "random sample
 //! point on surface of light source; scale intensity by area and cosine".
 //!
-//! This crate is that idea as a library; the tracer that uses it comes with the chapter's
-//! renderer.
+//! The library comes first, the renderer on top of it: chapter 06's tracer, lit through its
+//! `Lighting` hook by [`lighting::AreaLighting`].
 //!
 //! - [`light`]: area lights of finite size, one-sided (Mitsuba 3's `area` emitter).
 //! - [`disc_warp`]: which of chapter 02's disc warps puts points on a disc light.
@@ -19,16 +19,30 @@
 //! - [`estimator`]: the direct-light estimate of irradiance at a matte receiver.
 //! - [`mod@light_samples`]: the `u` of the shadow rays, independent or stratified.
 //! - [`mod@reference`]: exact irradiance from polygons, discs and spheres, for the tests.
+//! - [`sample_stream`], [`light_options`]: the sample's numbers for the shadow rays, and how
+//!   many rays each light gets.
+//! - [`lighting`], [`scene`]: chapter 06's tracer lit by area lights; [`render_with`].
+//! - [`scenes`], [`scene_file`], [`agreement`]: what to look at, and the check against
+//!   Mitsuba 3; [`cli`]: the light options of `render`; [`figures`]: the chapter's figures.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod agreement;
 pub mod area_sampling;
+pub mod cli;
 pub mod disc_warp;
 pub mod estimator;
+pub mod figures;
 pub mod light;
+pub mod light_options;
 pub mod light_sample;
 pub mod light_samples;
+pub mod lighting;
 pub mod reference;
+pub mod sample_stream;
+pub mod scene;
+pub mod scene_file;
+pub mod scenes;
 pub mod solid_angle;
 
 #[cfg(test)]
@@ -37,5 +51,41 @@ pub(crate) mod test_support;
 pub use disc_warp::DiscWarp;
 pub use estimator::{estimate_irradiance, light_sample_contribution, matte_reflected_radiance};
 pub use light::{AreaLight, LightShape};
+pub use light_options::{LightOptions, LightStrata};
 pub use light_sample::{LightSample, LightSampling, Strategy};
 pub use light_samples::light_samples;
+pub use lighting::AreaLighting;
+pub use scene::SoftShadowScene;
+
+use ch04_depth_of_field::Lens;
+use ch05_motion_blur::TimeSampler;
+use ch06_fuzzy_reflections::TraceOptions;
+use common::film::Filter;
+use common::render::{RenderOutput, RenderSettings};
+
+// ANCHOR: render_with
+/// Renders `scene` through `lens` with chapter 06's tracer, its lights sampled as `lights`
+/// says. Each sample draws, in order: the pixel position, the time and the lens point (each
+/// only when needed), then per bounce the glass and lobe numbers and, at a matte hit, the
+/// points on each area light. Without area lights this is chapter 06's render, bit for bit.
+pub fn render_with<S: TimeSampler>(
+    scene: &SoftShadowScene,
+    lights: LightOptions,
+    options: TraceOptions,
+    lens: &Lens,
+    settings: &RenderSettings,
+    sampler: &S,
+    filter: &dyn Filter,
+) -> RenderOutput {
+    let lighting = scene.lighting(lights);
+    ch06_fuzzy_reflections::render_with(
+        &scene.scene,
+        &lighting,
+        options,
+        lens,
+        settings,
+        sampler,
+        filter,
+    )
+}
+// ANCHOR_END: render_with

@@ -72,7 +72,7 @@ impl LightSample {
 }
 
 /// How points are chosen on a sphere light.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
 pub enum Strategy {
     /// Uniformly over the light's whole surface. Simple, and for a sphere wasteful: the half
     /// facing away from the receiver gets half the samples and contributes nothing.
@@ -108,6 +108,19 @@ impl LightSampling {
         Self {
             strategy: Strategy::SolidAngle,
             disc_warp: DiscWarp::Concentric,
+        }
+    }
+}
+
+impl Strategy {
+    /// Both strategies, by area first.
+    pub const ALL: [Strategy; 2] = [Strategy::Area, Strategy::SolidAngle];
+
+    /// The name used on the command line and in figures.
+    pub fn name(self) -> &'static str {
+        match self {
+            Strategy::Area => "area",
+            Strategy::SolidAngle => "solid-angle",
         }
     }
 }

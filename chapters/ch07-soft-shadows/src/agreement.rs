@@ -1,0 +1,67 @@
+//! Checking chapter 07 against Mitsuba 3: area lights and their soft shadows.
+//!
+//! The scenes are direct light from area lights on matte surfaces, which both this chapter and
+//! Mitsuba 3's `direct` integrator (or `path` with `max_depth` 2) compute without bias: the
+//! same lights, the same one-sided emission, the same cosines and visibility must give the same
+//! penumbrae. Mitsuba combines a light sample with a BSDF sample by multiple importance
+//! sampling; we send one shadow ray per light, so the noise differs a little, the mean not.
+
+use crate::scene_file::convert;
+use crate::{LightOptions, render_with};
+use ch06_fuzzy_reflections::TraceOptions;
+use common::image::Image;
+use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
+use common::render::{Budget, RenderSettings};
+use common::scene::load_scene_file;
+use std::path::{Path, PathBuf};
+
+/// The scenes compared, with what each one checks.
+pub const AGREEMENT_SCENES: &[AgreementScene] = &[
+    AgreementScene {
+        name: "quad-light",
+        checks: "a rectangle light over spheres: area sampling, one-sided emission, penumbrae",
+        variant: MITSUBA_VARIANT,
+    },
+    AgreementScene {
+        name: "disc-light",
+        checks: "a disk light, tilted: the concentric disc, the light's cosine",
+        variant: MITSUBA_VARIANT,
+    },
+    AgreementScene {
+        name: "sphere-light",
+        checks: "a sphere light: the cone sampled by solid angle, seen directly",
+        variant: MITSUBA_VARIANT,
+    },
+    AgreementScene {
+        name: "several-lights",
+        checks: "a cube light (six parallelograms), a triangle mesh light and a point light",
+        variant: MITSUBA_VARIANT,
+    },
+];
+
+/// The chapter's scene directory.
+pub fn scenes_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
+}
+
+/// Our render of a scene file at [`AGREEMENT_SPP`] samples per pixel, with the file's lens,
+/// pixel sampler and filter, one shadow ray per light per hit.
+pub fn render_scene_file(path: &Path) -> Result<Image, String> {
+    let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
+    let converted = convert(&loaded.scene).map_err(|e| format!("{}: {e}", path.display()))?;
+    let camera = &converted.scene.scene.world.scene.camera;
+    let settings = RenderSettings::new(camera.width, camera.height, AGREEMENT_SPP);
+    let sampler = ch03_anti_aliasing::cli::AntiAliasingArgs::default()
+        .pixel_sampler(converted.sampler, &Budget::Samples(AGREEMENT_SPP), 0)
+        .map_err(|e| e.to_string())?;
+    let rendered = render_with(
+        &converted.scene,
+        LightOptions::default(),
+        TraceOptions::default(),
+        &converted.lens,
+        &settings,
+        &sampler,
+        &converted.filter,
+    );
+    Ok(rendered.image)
+}

@@ -1,0 +1,469 @@
+//! The chapter's figures: the lecture's small and large light; one light of each shape;
+//! shadow rays per light; a sphere light sampled by area and by solid angle; the naive disc's
+//! wrong penumbra, measured; where the points land on each light; error against time.
+
+use crate::sample_stream::SampleStream;
+use crate::scenes::{Builder, Builtin, DEFAULT_DEPTH, camera, floor, matte};
+use crate::{DiscWarp, LightOptions, LightStrata, SoftShadowScene, Strategy, render_with};
+use anyhow::Context;
+use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
+use ch04_depth_of_field::Lens;
+use ch06_fuzzy_reflections::TraceOptions;
+use common::cli::prepare_output_dir;
+use common::geometry::{Disc, Quad, Shape, Sphere, Triangle};
+use common::image::Image;
+use common::metrics::{
+    Technique, mean, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence,
+    write_convergence_csv,
+};
+use common::output::figures::{comparison_grid, scatter_plot};
+use common::output::write_text;
+use common::render::RenderSettings;
+use common::sampler::{IndependentSampler, Sampler};
+use glam::{UVec2, Vec2, Vec3};
+use std::path::Path;
+
+/// Image sizes and budgets: the book's, or small ones for tests and CI.
+struct Quality {
+    width: u32,
+    height: u32,
+    /// Samples per pixel of the gallery images.
+    spp: u64,
+    /// Sample counts of the error-against-time runs.
+    budgets: &'static [u64],
+    /// Samples per pixel of the references they are measured against.
+    reference_spp: u64,
+}
+
+impl Quality {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Quality {
+                width: 96,
+                height: 72,
+                spp: 8,
+                budgets: &[1, 4],
+                reference_spp: 64,
+            }
+        } else {
+            Quality {
+                width: 320,
+                height: 240,
+                spp: 32,
+                budgets: &[1, 4, 16, 32],
+                reference_spp: 128,
+            }
+        }
+    }
+}
+
+/// Writes every figure of the chapter into `out`.
+pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
+    prepare_output_dir(out)?;
+    let quality = Quality::new(quick);
+    gallery(out, &quality).context("the gallery of lights")?;
+    samples_per_light(out, &quality).context("the shadow rays per light")?;
+    sphere_strategies(out, &quality).context("the sphere light's strategies")?;
+    disc_warps(out, &quality).context("the disc warps")?;
+    light_points(out).context("the light-sample plots")?;
+    convergence(out, &quality).context("the error-against-time figures")?;
+    common::metrics::write_agreement_figures(
+        out,
+        "chapter 07",
+        &crate::agreement::scenes_dir(),
+        crate::agreement::AGREEMENT_SCENES,
+        &crate::agreement::render_scene_file,
+    )
+    .map_err(anyhow::Error::msg)
+    .context("the comparison with Mitsuba 3")?;
+    eprintln!("ch07 figures written to {}", out.display());
+    Ok(())
+}
+
+/// Renders `scene` at `width x height` with stratified pixel positions, box-filtered.
+fn render(
+    scene: &SoftShadowScene,
+    lights: LightOptions,
+    size: (u32, u32),
+    spp: u64,
+    seed: u64,
+) -> Image {
+    let settings = RenderSettings::new(size.0, size.1, spp);
+    let pixels =
+        PixelSampler::new(PixelSamplerKind::Stratified, spp, seed).expect("a positive count");
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter");
+    render_with(
+        scene,
+        lights,
+        TraceOptions::default(),
+        &Lens::PINHOLE,
+        &settings,
+        &pixels,
+        &filter,
+    )
+    .image
+}
+
+/// The lecture's pair, and the other built-in scenes.
+fn gallery(out: &Path, q: &Quality) -> anyhow::Result<()> {
+    let size = (q.width, q.height);
+    let lights = LightOptions::with_samples(4);
+    let pair = vec![
+        (
+            format!(
+                "a small light ({} wide): nearly hard shadows",
+                crate::scenes::SMALL_PANEL
+            ),
+            render(
+                &Builtin::Small.build(DEFAULT_DEPTH, 1.0),
+                lights,
+                size,
+                q.spp,
+                0,
+            ),
+        ),
+        (
+            format!(
+                "a large light ({} wide), same power: soft shadows",
+                10.0 * crate::scenes::SMALL_PANEL
+            ),
+            render(
+                &Builtin::Large.build(DEFAULT_DEPTH, 1.0),
+                lights,
+                size,
+                q.spp,
+                0,
+            ),
+        ),
+    ];
+    comparison_grid(&out.join("small_large.png"), &pair, 2, 1)?;
+    let others = vec![
+        (
+            "parallelogram, triangle, disc and sphere lights".to_string(),
+            render(
+                &Builtin::Shapes.build(DEFAULT_DEPTH, 1.0),
+                lights,
+                size,
+                q.spp,
+                0,
+            ),
+        ),
+        (
+            "red, green and blue discs and a point light".to_string(),
+            render(
+                &Builtin::Several.build(DEFAULT_DEPTH, 1.0),
+                lights,
+                size,
+                q.spp,
+                0,
+            ),
+        ),
+        (
+            "a glossy floor reflecting a sphere light and a panel".to_string(),
+            render(
+                &Builtin::Glossy.build(DEFAULT_DEPTH, 1.0),
+                lights,
+                size,
+                4 * q.spp,
+                0,
+            ),
+        ),
+    ];
+    comparison_grid(&out.join("shapes.png"), &others, 3, 1)?;
+    Ok(())
+}
+
+/// The large light at 1, 4 and 16 shadow rays per light and hit, the same pixel samples.
+fn samples_per_light(out: &Path, q: &Quality) -> anyhow::Result<()> {
+    let scene = Builtin::Large.build(DEFAULT_DEPTH, 1.0);
+    let spp = (q.spp / 4).max(1);
+    let cells: Vec<(String, Image)> = [1u32, 4, 16]
+        .iter()
+        .map(|&n| {
+            (
+                format!("{spp} spp x {n} shadow ray(s) per light"),
+                render(
+                    &scene,
+                    LightOptions::with_samples(n),
+                    (q.width, q.height),
+                    spp,
+                    0,
+                ),
+            )
+        })
+        .collect();
+    comparison_grid(&out.join("samples_per_light.png"), &cells, 3, 1)?;
+    Ok(())
+}
+
+/// A floor with two balls under a small sphere light 3 above it.
+fn sphere_light_scene(radius: f32) -> SoftShadowScene {
+    let light = Sphere::new(Vec3::new(0.3, 3.0, 0.3), radius);
+    Builder::new()
+        .shape(floor(6.0), matte(Vec3::splat(0.7)))
+        .shape(
+            Shape::Sphere(Sphere::new(Vec3::new(-0.6, 0.5, 0.0), 0.5)),
+            matte(Vec3::new(0.8, 0.3, 0.2)),
+        )
+        .shape(
+            Shape::Sphere(Sphere::new(Vec3::new(0.8, 0.35, 0.6), 0.35)),
+            matte(Vec3::new(0.2, 0.4, 0.8)),
+        )
+        .area_light(Shape::Sphere(light), Vec3::splat(10.0 / light.area()))
+        .build(
+            camera(Vec3::new(0.0, 1.8, 5.0), Vec3::new(0.0, 0.4, 0.0), 45.0),
+            DEFAULT_DEPTH,
+        )
+}
+
+/// Area against solid-angle sampling of a sphere light, same samples.
+fn sphere_strategies(out: &Path, q: &Quality) -> anyhow::Result<()> {
+    let scene = sphere_light_scene(0.3);
+    let spp = (q.spp / 2).max(1);
+    let cells: Vec<(String, Image)> = [Strategy::Area, Strategy::SolidAngle]
+        .iter()
+        .map(|&strategy| {
+            (
+                format!("sphere light sampled by {} ({spp} spp)", strategy.name()),
+                render(
+                    &scene,
+                    LightOptions::default().with_strategy(strategy),
+                    (q.width, q.height),
+                    spp,
+                    0,
+                ),
+            )
+        })
+        .collect();
+    comparison_grid(&out.join("sphere_strategies.png"), &cells, 2, 1)?;
+    Ok(())
+}
+
+/// A disc light of radius 1 only 1.4 above a floor with a ball and a block: close enough that
+/// the middle of the light and its rim light the floor very differently.
+fn disc_light_scene() -> SoftShadowScene {
+    let disc = Disc::new(Vec3::new(0.0, 1.4, 0.0), -Vec3::Y, 1.0);
+    Builder::new()
+        .shape(floor(6.0), matte(Vec3::splat(0.7)))
+        .shape(
+            Shape::Sphere(Sphere::new(Vec3::new(-0.5, 0.35, 0.3), 0.35)),
+            matte(Vec3::new(0.8, 0.3, 0.2)),
+        )
+        .block(
+            Vec3::new(0.3, 0.0, -0.5),
+            Vec3::new(0.9, 0.5, 0.1),
+            matte(Vec3::new(0.2, 0.4, 0.8)),
+        )
+        .area_light(Shape::Disc(disc), Vec3::splat(1.5))
+        .build(
+            camera(Vec3::new(0.0, 1.6, 4.5), Vec3::new(0.0, 0.3, 0.0), 45.0),
+            DEFAULT_DEPTH,
+        )
+}
+
+/// The three disc warps on a close disc light against a reference, with the error of each:
+/// the naive warp's comes from its bias and does not fall with more samples.
+fn disc_warps(out: &Path, q: &Quality) -> anyhow::Result<()> {
+    let scene = disc_light_scene();
+    let size = (q.width / 2, q.height / 2);
+    let reference = render(
+        &scene,
+        LightOptions::with_samples(16),
+        size,
+        q.reference_spp,
+        99,
+    );
+    let reference_mean = mean(&reference);
+    let mut table = String::from(
+        "| disc warp | spp | RMSE | relative RMSE | mean brightness against the reference |\n|---|---:|---:|---:|---:|\n",
+    );
+    let mut csv = String::from("warp,spp,rmse,relative_rmse,mean_ratio\n");
+    let mut cells = vec![("reference".to_string(), reference.clone())];
+    for warp in DiscWarp::ALL {
+        for spp in [q.spp, 4 * q.spp] {
+            let image = render(
+                &scene,
+                LightOptions::with_samples(4).with_disc_warp(warp),
+                size,
+                spp,
+                0,
+            );
+            let error = rmse(&image, &reference);
+            let relative = error / reference_mean.y;
+            let ratio = mean(&image).y / reference_mean.y;
+            table.push_str(&format!(
+                "| {} | {spp} | {error:.4} | {relative:.3} | {ratio:.3} |\n",
+                warp.name()
+            ));
+            csv.push_str(&format!(
+                "{},{spp},{error},{relative},{ratio}\n",
+                warp.name()
+            ));
+            if spp == 4 * q.spp {
+                cells.push((format!("{} disc warp", warp.name()), image));
+            }
+        }
+    }
+    write_text(&out.join("disc_warps.md"), &table)?;
+    write_text(&out.join("disc_warps.csv"), &csv)?;
+    comparison_grid(&out.join("disc_warps.png"), &cells, 4, 2)?;
+    Ok(())
+}
+
+/// 256 points on each light shape, in the light's own plane (the sphere: its points seen from
+/// a receiver below, projected on the plane across the view).
+fn light_points(out: &Path) -> anyhow::Result<()> {
+    let mut sampler = IndependentSampler::new(7);
+    sampler.start_pixel_sample(UVec2::ZERO, 0);
+    let n = 256;
+    let stratified = crate::light_samples(n, true, &mut SampleStream(&mut sampler));
+    let independent = crate::light_samples(n, false, &mut SampleStream(&mut sampler));
+    let quad = Quad::new(
+        Vec3::new(-0.9, 0.0, -0.6),
+        Vec3::new(1.8, 0.0, 0.0),
+        Vec3::new(0.6, 0.0, 1.2),
+    );
+    let triangle = Triangle::new(
+        Vec3::new(-0.9, 0.0, -0.8),
+        Vec3::new(0.0, 0.0, 0.9),
+        Vec3::new(0.9, 0.0, -0.8),
+    );
+    let disc = Disc::new(Vec3::ZERO, Vec3::Y, 0.95);
+    let sphere = Sphere::new(Vec3::new(0.0, 3.0, 0.0), 0.95);
+    // Planar lights from above (x, z); the sphere from the side (x, y - 3), the receiver
+    // at the origin below it.
+    let on = |shape: crate::LightShape, u: &[Vec2], sampling: crate::LightSampling| -> Vec<Vec2> {
+        let light = crate::AreaLight::new(shape, Vec3::ONE);
+        let side_view = matches!(shape, crate::LightShape::Sphere(_));
+        u.iter()
+            .filter_map(|&u| light.sample(Vec3::ZERO, u, sampling))
+            .map(|s| {
+                if side_view {
+                    Vec2::new(s.p.x, s.p.y - 3.0)
+                } else {
+                    Vec2::new(s.p.x, s.p.z)
+                }
+            })
+            .collect()
+    };
+    let area = |warp| crate::LightSampling::area(warp);
+    let sets = vec![
+        (
+            "parallelogram, stratified".to_string(),
+            on(quad.into(), &stratified, area(DiscWarp::Concentric)),
+        ),
+        (
+            "parallelogram, independent".to_string(),
+            on(quad.into(), &independent, area(DiscWarp::Concentric)),
+        ),
+        (
+            "triangle, stratified".to_string(),
+            on(triangle.into(), &stratified, area(DiscWarp::Concentric)),
+        ),
+        (
+            "disc, concentric".to_string(),
+            on(disc.into(), &stratified, area(DiscWarp::Concentric)),
+        ),
+        (
+            "disc, polar r = R sqrt(u)".to_string(),
+            on(disc.into(), &stratified, area(DiscWarp::Polar)),
+        ),
+        (
+            "disc, naive r = R u: crowds the centre".to_string(),
+            on(disc.into(), &stratified, area(DiscWarp::Naive)),
+        ),
+        (
+            "sphere by area, seen from the side".to_string(),
+            on(sphere.into(), &stratified, area(DiscWarp::Concentric)),
+        ),
+        (
+            "sphere by solid angle: its near side only".to_string(),
+            on(
+                sphere.into(),
+                &stratified,
+                crate::LightSampling::solid_angle(),
+            ),
+        ),
+    ];
+    scatter_plot(
+        &out.join("light_points.png"),
+        "256 points on each light (stratified u unless named)",
+        &sets,
+        [Vec2::splat(-1.0), Vec2::splat(1.0)],
+    )?;
+    Ok(())
+}
+
+/// Error against time on the large light's penumbrae (independent and stratified shadow
+/// rays, 1, 4 and 16 per light) and on the sphere light (area and solid angle).
+fn convergence(out: &Path, q: &Quality) -> anyhow::Result<()> {
+    let size = (q.width / 2, q.height / 2);
+    let large = Builtin::Large.build(DEFAULT_DEPTH, 1.0);
+    let reference = render(
+        &large,
+        LightOptions::with_samples(16),
+        size,
+        q.reference_spp,
+        1_000,
+    );
+    let technique = |name: String, lights: LightOptions| {
+        let scene = &large;
+        Technique::new(name, move |spp| render(scene, lights, size, spp, 0))
+    };
+    let mut techniques = Vec::new();
+    for n in [1u32, 4, 16] {
+        for strata in [LightStrata::Independent, LightStrata::Stratified] {
+            if n == 1 && strata == LightStrata::Stratified {
+                continue; // one point has nothing to stratify
+            }
+            techniques.push(technique(
+                format!("{n} {} ray(s) per light", strata.name()),
+                LightOptions::with_samples(n).with_strata(strata),
+            ));
+        }
+    }
+    let records = run_convergence(&techniques, q.budgets, &reference);
+    write_convergence_csv(&out.join("convergence_shadow_rays.csv"), &records)?;
+    plot_error_vs_time(
+        &out.join("convergence_shadow_rays.png"),
+        "Error against time: shadow rays per light (large light)",
+        &records,
+    )?;
+    plot_error_vs_spp(
+        &out.join("convergence_shadow_rays_spp.png"),
+        "Error against samples per pixel: shadow rays per light (large light)",
+        &records,
+    )?;
+
+    let sphere = sphere_light_scene(0.15);
+    let reference = render(
+        &sphere,
+        LightOptions::with_samples(4),
+        size,
+        q.reference_spp,
+        1_000,
+    );
+    let techniques: Vec<Technique> = [Strategy::Area, Strategy::SolidAngle]
+        .iter()
+        .map(|&strategy| {
+            let scene = &sphere;
+            Technique::new(format!("sphere by {}", strategy.name()), move |spp| {
+                render(
+                    scene,
+                    LightOptions::default().with_strategy(strategy),
+                    size,
+                    spp,
+                    0,
+                )
+            })
+        })
+        .collect();
+    let records = run_convergence(&techniques, q.budgets, &reference);
+    write_convergence_csv(&out.join("convergence_sphere.csv"), &records)?;
+    plot_error_vs_time(
+        &out.join("convergence_sphere.png"),
+        "Error against time: a small sphere light by area and by solid angle",
+        &records,
+    )?;
+    Ok(())
+}

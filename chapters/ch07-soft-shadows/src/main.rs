@@ -1,0 +1,209 @@
+//! `ch07-soft-shadows`: render a scene with area lights and soft shadows, or write the
+//! chapter's figures.
+
+use ch03_anti_aliasing::cli::AntiAliasingArgs;
+use ch04_depth_of_field::Lens;
+use ch04_depth_of_field::cli::LensArgs;
+use ch05_motion_blur::{StratifiedTime, TimeSampling};
+use ch06_fuzzy_reflections::cli::{FuzzyArgs, parse_number};
+use ch07_soft_shadows::cli::LightArgs;
+use ch07_soft_shadows::scene::SoftShadowScene;
+use ch07_soft_shadows::scene_file::convert;
+use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+use ch07_soft_shadows::{figures, render_with};
+use clap::{Parser, Subcommand};
+use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::render::Budget;
+use common::scene::load_scene_file;
+use std::process::ExitCode;
+
+/// Chapter 07 of the workbook: soft shadows from area lights.
+#[derive(Parser, Debug)]
+#[command(name = "ch07-soft-shadows", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Render a scene lit by area lights.
+    Render(Box<RenderCommand>),
+    /// Write the chapter's comparison images, plots, tables and error-against-time data.
+    Figures(FiguresArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct RenderCommand {
+    /// The built-in scene to render (when no --scene file is given).
+    #[arg(long, value_enum, default_value_t = Builtin::Small, conflicts_with = "scene")]
+    builtin: Builtin,
+    /// Grow (above 1) or shrink (below 1) every area light of the built-in scene about its
+    /// centre, its power kept: the shadows soften or harden, the brightness stays.
+    #[arg(long, value_name = "S", default_value_t = 1.0, allow_hyphen_values = true,
+          value_parser = parse_number, conflicts_with = "scene")]
+    light_scale: f32,
+    #[command(flatten)]
+    lights: LightArgs,
+    #[command(flatten)]
+    fuzzy: FuzzyArgs,
+    #[command(flatten)]
+    anti_aliasing: AntiAliasingArgs,
+    #[command(flatten)]
+    lens: LensArgs,
+    #[command(flatten)]
+    args: RenderArgs,
+}
+
+/// The light scale must keep every light a light: positive, finite, and within a range where
+/// the radiance `L / S²` stays a normal float.
+fn check_light_scale(scale: f32) -> anyhow::Result<f32> {
+    if scale.is_finite() && (1e-4..=1e4).contains(&scale) {
+        Ok(scale)
+    } else {
+        anyhow::bail!("--light-scale must be a number from 1e-4 to 1e4, found {scale}")
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Render(command) => run_render(*command),
+        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => report_error(error.as_ref()),
+    }
+}
+
+fn run_render(command: RenderCommand) -> anyhow::Result<()> {
+    if command.args.scene.is_none() && !command.args.define.is_empty() {
+        anyhow::bail!("-D sets a parameter of a scene file; it needs --scene FILE.xml");
+    }
+    let light_scale = check_light_scale(command.light_scale)?;
+    let (scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
+        match &command.args.scene {
+            Some(path) => {
+                let loaded = load_scene_file(path, &command.args.define)?;
+                for warning in &loaded.warnings {
+                    eprintln!("{warning}");
+                }
+                let converted = convert(&loaded.scene)
+                    .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+                for note in &converted.notes {
+                    eprintln!("note: {note}");
+                }
+                (
+                    converted.scene,
+                    converted.lens,
+                    Some(converted.filter),
+                    Some(converted.sampler),
+                    converted.spp,
+                    path.display().to_string(),
+                )
+            }
+            None => (
+                command.builtin.build(DEFAULT_DEPTH, light_scale),
+                Lens::PINHOLE,
+                None,
+                None,
+                16,
+                command.builtin.name().to_string(),
+            ),
+        };
+    let scene = SoftShadowScene {
+        scene: command.fuzzy.apply(scene.scene)?,
+        ..scene
+    };
+    // A pinhole scene given an aperture on the command line focuses 5 units away unless told.
+    let scene_lens = if scene_lens.is_pinhole() {
+        Lens {
+            focus_distance: 5.0,
+            ..scene_lens
+        }
+    } else {
+        scene_lens
+    };
+    let lens = command.lens.lens(scene_lens)?;
+    let filter = command.anti_aliasing.filter(file_filter)?;
+    let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
+    let world = &scene.scene.world;
+    let camera = world.scene.camera;
+    let settings = command
+        .args
+        .settings((camera.width, camera.height), default_spp)?;
+    let pixel_sampler =
+        command
+            .anti_aliasing
+            .pixel_sampler(sampler_kind, &settings.budget, command.args.seed)?;
+    command.args.check_outputs()?;
+    let options = command.fuzzy.options();
+    let lights = command.lights.options();
+    let shutter = world.shutter;
+    let moves = world.moves();
+    // Stratified time when something moves and the budget is a sample count (chapter 05's
+    // default); without motion no time is drawn and the choice changes nothing.
+    let rendered = match settings.budget {
+        Budget::Samples(spp) if moves => {
+            let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
+            render_with(&scene, lights, options, &lens, &settings, &sampler, &filter)
+        }
+        _ => render_with(
+            &scene,
+            lights,
+            options,
+            &lens,
+            &settings,
+            &pixel_sampler,
+            &filter,
+        ),
+    };
+    let time_sampling = if moves && matches!(settings.budget, Budget::Samples(_)) {
+        TimeSampling::Stratified
+    } else {
+        TimeSampling::Independent
+    };
+    let mut extra = serde_json::json!({
+        "scene": scene_name,
+        "area_lights": scene.lights.len(),
+        "point_lights": scene.scene.world.scene.lights.len(),
+        "light_scale": command.args.scene.is_none().then_some(light_scale),
+        "light_samples": lights.samples,
+        "light_strata": lights.strata.name(),
+        "light_sampling": lights.sampling.strategy.name(),
+        "disc_warp": lights.sampling.disc_warp.name(),
+        "max_depth": scene.scene.world.scene.max_depth,
+        "sampler": sampler_kind.name(),
+        "filter": filter.kind().name(),
+        "filter_radius": filter.half_width(),
+        "aperture_radius": lens.aperture_radius,
+        "focus_distance": lens.focus_distance,
+        "shutter_open": shutter.open,
+        "shutter_close": shutter.close,
+        "time_sampling": time_sampling.name(),
+        "seed": command.args.seed,
+    });
+    extra
+        .as_object_mut()
+        .expect("a JSON object")
+        .extend(command.fuzzy.stats());
+    command.args.write_outputs(&rendered, extra)?;
+    eprintln!(
+        "wrote {} ({}x{}, {} spp, {} shadow ray(s) per light, {:.2} s, {:.0} rays/s)",
+        command.args.out.display(),
+        rendered.stats.width,
+        rendered.stats.height,
+        rendered.stats.spp,
+        lights.samples,
+        rendered.stats.seconds,
+        rendered.stats.rays_per_second
+    );
+    if rendered.stats.nonfinite_samples > 0 {
+        eprintln!(
+            "warning: {} samples were not finite and were left out",
+            rendered.stats.nonfinite_samples
+        );
+    }
+    Ok(())
+}

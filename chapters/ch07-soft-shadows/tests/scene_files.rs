@@ -1,0 +1,140 @@
+//! The chapter's scene files convert, with their lights where the file puts them: one light
+//! per piece of a shape (six for a cube, one per triangle of a mesh), each with the file's
+//! radiance; what the chapter cannot render is refused with the shape's position.
+
+use ch07_soft_shadows::light::LightShape;
+use ch07_soft_shadows::scene_file::convert;
+use common::scene::{load_scene_file, parse_scene};
+use glam::Vec3;
+use std::path::Path;
+
+fn converted(name: &str) -> ch07_soft_shadows::scene_file::ConvertedScene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name);
+    let loaded = load_scene_file(&path, &[]).unwrap();
+    convert(&loaded.scene).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+#[test]
+fn every_shipped_scene_converts_with_its_lights() {
+    let cases = [
+        ("quad-light.xml", 1),
+        ("disc-light.xml", 1),
+        ("sphere-light.xml", 1),
+        ("several-lights.xml", 6 + 2),
+    ];
+    for (name, lights) in cases {
+        let scene = converted(name).scene;
+        assert_eq!(scene.lights.len(), lights, "{name}");
+        // Every light is a shape of the world, and the table points back at it.
+        let shapes = scene.scene.world.scene.geometry.shapes();
+        for (shape, entry) in shapes.iter().zip(&scene.light_of_shape) {
+            if let Some(index) = entry {
+                let light = scene.lights[*index as usize];
+                assert_eq!(
+                    light.shape,
+                    ch07_soft_shadows::scene::light_shape(shape),
+                    "{name}"
+                );
+            }
+        }
+        assert!(
+            converted(name)
+                .notes
+                .iter()
+                .all(|n| !n.contains("indirect")),
+            "{name}: direct light only"
+        );
+    }
+}
+
+#[test]
+fn a_cube_light_is_six_parallelograms_and_a_mesh_one_triangle_per_face() {
+    let scene = converted("several-lights.xml").scene;
+    let kinds: Vec<_> = scene
+        .lights
+        .iter()
+        .map(|light| match light.shape {
+            LightShape::Parallelogram(_) => "parallelogram",
+            LightShape::Triangle(_) => "triangle",
+            LightShape::Disc(_) => "disc",
+            LightShape::Sphere(_) => "sphere",
+        })
+        .collect();
+    assert_eq!(
+        kinds,
+        [["parallelogram"; 6].as_slice(), &["triangle"; 2]].concat()
+    );
+    for light in &scene.lights[..6] {
+        assert_eq!(light.radiance, Vec3::new(14.0, 4.5, 2.2));
+    }
+    for light in &scene.lights[6..] {
+        assert_eq!(light.radiance, Vec3::new(2.0, 4.0, 9.0));
+        // The diamond faces down.
+        let LightShape::Triangle(t) = light.shape else {
+            unreachable!()
+        };
+        assert!((t.p[1] - t.p[0]).cross(t.p[2] - t.p[0]).y < 0.0);
+    }
+    assert_eq!(scene.scene.world.scene.lights.len(), 1, "the point light");
+}
+
+fn convert_text(text: &str) -> Result<ch07_soft_shadows::scene_file::ConvertedScene, String> {
+    let loaded = parse_scene(text, Path::new("test.xml"), &[]).map_err(|e| e.to_string())?;
+    convert(&loaded.scene)
+}
+
+const SENSOR: &str = r#"<sensor type="perspective"><float name="fov" value="40"/>
+        <transform name="to_world"><lookat origin="0, 1, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+        <film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film>
+    </sensor>"#;
+
+#[test]
+fn a_scene_without_lights_is_chapter_06s_and_the_integrator_notes_follow_the_depth() {
+    let text = |integrator: &str, emitter: &str| {
+        format!(
+            r#"<scene version="3.0.0">{integrator}{SENSOR}
+            <shape type="rectangle"/>
+            <shape type="sphere">{emitter}</shape>
+            <emitter type="point"><point name="position" x="0" y="3" z="0"/></emitter></scene>"#
+        )
+    };
+    let dark = convert_text(&text("", "")).unwrap();
+    assert!(dark.scene.lights.is_empty());
+    assert_eq!(dark.scene.light_of_shape, vec![None, None]);
+    let lit = convert_text(&text(
+        r#"<integrator type="path"><integer name="max_depth" value="8"/></integrator>"#,
+        r#"<emitter type="area"><rgb name="radiance" value="2, 2, 2"/></emitter>"#,
+    ))
+    .unwrap();
+    assert_eq!(lit.scene.light_of_shape, vec![None, Some(0)]);
+    assert!(
+        lit.notes.iter().any(|n| n.contains("indirect")),
+        "{:?}",
+        lit.notes
+    );
+    let direct = convert_text(&text(
+        r#"<integrator type="path"><integer name="max_depth" value="2"/></integrator>"#,
+        r#"<emitter type="area"><rgb name="radiance" value="2, 2, 2"/></emitter>"#,
+    ))
+    .unwrap();
+    assert!(
+        direct.notes.iter().all(|n| !n.contains("indirect")),
+        "{:?}",
+        direct.notes
+    );
+}
+
+#[test]
+fn a_sphere_light_turned_inside_out_is_refused() {
+    let text = format!(
+        r#"<scene version="3.0.0">{SENSOR}<shape type="sphere"><boolean name="flip_normals" value="true"/>
+        <emitter type="area"><rgb name="radiance" value="1, 1, 1"/></emitter></shape></scene>"#
+    );
+    let error = convert_text(&text).err().unwrap();
+    assert!(
+        error.contains("flip_normals") && error.contains("shape 1"),
+        "{error}"
+    );
+}
