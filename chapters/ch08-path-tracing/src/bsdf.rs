@@ -1,0 +1,215 @@
+//! The BSDF of every chapter-06 material, as the path tracer needs it: *sample* a direction,
+//! *evaluate* `f cos θ` for a direction the light sample chose, and the *density* with which
+//! sampling would have chosen it (for multiple importance sampling).
+//!
+//! Each material keeps the three in one small module. Directions point away from the surface:
+//! `wo` towards where the path came from, `wi` towards where the light comes from. A
+//! [`BsdfSample`]'s `weight` is `f cos θ / pdf`, which for every material here is a constant
+//! (the albedo, the reflectance, 1 or the refraction's `eta²`): each material is sampled by
+//! exactly the lobe it is made of.
+//!
+//! Random numbers, in this order: a choice at glass (1), a direction (2) for diffuse, glossy
+//! and frosted surfaces; a mirror and smooth glass's chosen branch take no direction numbers.
+
+pub mod dielectric;
+pub mod diffuse;
+pub mod glossy;
+pub mod mirror;
+pub mod rough_glass;
+
+use ch01_whitted::material::Material as SmoothMaterial;
+use ch06_fuzzy_reflections::{FuzzMethod, Material};
+use common::geometry::SurfaceHit;
+use common::sampler::Sampler;
+use glam::Vec3;
+
+/// A sampled direction and what it carries.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BsdfSample {
+    /// The unit direction the light comes from.
+    pub wi: Vec3,
+    /// `f cos θ / pdf`: what the path's throughput is multiplied by.
+    pub weight: Vec3,
+    /// The density per unit solid angle (of the whole BSDF, all lobes), `f32::INFINITY` for
+    /// a delta lobe, which a light sample can never produce.
+    pub pdf: f32,
+    /// The radiance scaling `(eta_i / eta_t)²` included in `weight` (1 without refraction),
+    /// so that Russian roulette can look at the throughput without it, as Mitsuba does.
+    pub eta_scale: f32,
+}
+
+impl BsdfSample {
+    /// Whether the direction was the only one possible (mirror, smooth glass).
+    pub fn is_delta(&self) -> bool {
+        self.pdf.is_infinite()
+    }
+}
+
+/// A material at a hit point, ready to scatter: the material, its albedo at the hit (a
+/// checkerboard is read here), the hit and the lobe family.
+#[derive(Clone, Copy, Debug)]
+pub struct Bsdf<'a> {
+    /// The material.
+    pub material: &'a Material,
+    /// The surface point.
+    pub hit: &'a SurfaceHit,
+    /// How fuzzy lobes spread (chapter 06's `cos^n` lobe or the empirical disc).
+    pub fuzz: FuzzMethod,
+}
+
+impl Bsdf<'_> {
+    /// Whether every direction the material scatters to is a delta: no light sample can
+    /// help it, so the path tracer sends none.
+    pub fn is_delta(&self) -> bool {
+        match self.material {
+            Material::Smooth(SmoothMaterial::Mirror { .. } | SmoothMaterial::Dielectric { .. }) => {
+                true
+            }
+            Material::Smooth(_) => false,
+            Material::Glossy(g) => !g.exponent.is_finite(),
+            Material::RoughGlass(g) => !g.exponent.is_finite(),
+        }
+    }
+
+    /// Samples `wi` for the outgoing `wo`, drawing the material's numbers from `sampler`;
+    /// `None` when the path ends here (a one-sided surface seen from behind, a lobe direction
+    /// below the surface, a branch that carries nothing).
+    pub fn sample<S: Sampler>(&self, wo: Vec3, sampler: &mut S) -> Option<BsdfSample> {
+        let hit = self.hit;
+        match *self.material {
+            Material::Smooth(SmoothMaterial::Diffuse { albedo, two_sided }) => {
+                diffuse::sample(hit, wo, albedo, two_sided, sampler.get_2d())
+            }
+            Material::Smooth(SmoothMaterial::CheckeredDiffuse {
+                checkerboard,
+                two_sided,
+            }) => diffuse::sample(
+                hit,
+                wo,
+                checkerboard.eval(hit.uv),
+                two_sided,
+                sampler.get_2d(),
+            ),
+            Material::Smooth(SmoothMaterial::Mirror { reflectance }) => {
+                mirror::sample(hit, wo, reflectance)
+            }
+            Material::Smooth(SmoothMaterial::Dielectric { int_ior, ext_ior }) => {
+                dielectric::sample(hit, wo, int_ior, ext_ior, sampler.get_1d())
+            }
+            Material::Glossy(g) => {
+                let u = if g.exponent.is_finite() {
+                    sampler.get_2d()
+                } else {
+                    glam::Vec2::ZERO
+                };
+                glossy::sample(hit, wo, &g, self.fuzz, u)
+            }
+            Material::RoughGlass(g) => {
+                let choice = sampler.get_1d();
+                let u = if g.exponent.is_finite() {
+                    sampler.get_2d()
+                } else {
+                    glam::Vec2::ZERO
+                };
+                rough_glass::sample(hit, wo, &g, self.fuzz, choice, u)
+            }
+        }
+    }
+
+    /// `f(wo, wi) cos θ_i` without the delta parts (0 for a mirror or smooth glass).
+    pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
+        let hit = self.hit;
+        match *self.material {
+            Material::Smooth(SmoothMaterial::Diffuse { albedo, two_sided }) => {
+                diffuse::eval(hit, wo, wi, albedo, two_sided)
+            }
+            Material::Smooth(SmoothMaterial::CheckeredDiffuse {
+                checkerboard,
+                two_sided,
+            }) => diffuse::eval(hit, wo, wi, checkerboard.eval(hit.uv), two_sided),
+            Material::Smooth(_) => Vec3::ZERO,
+            Material::Glossy(g) => glossy::eval(hit, wo, wi, &g, self.fuzz),
+            Material::RoughGlass(g) => rough_glass::eval(hit, wo, wi, &g, self.fuzz),
+        }
+    }
+
+    /// The density per unit solid angle with which [`sample`](Self::sample) picks `wi`
+    /// (its delta parts left out: 0 for a mirror or smooth glass).
+    pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        let hit = self.hit;
+        match *self.material {
+            Material::Smooth(
+                SmoothMaterial::Diffuse { two_sided, .. }
+                | SmoothMaterial::CheckeredDiffuse { two_sided, .. },
+            ) => diffuse::pdf(hit, wo, wi, two_sided),
+            Material::Smooth(_) => 0.0,
+            Material::Glossy(g) => glossy::pdf(hit, wo, wi, &g, self.fuzz),
+            Material::RoughGlass(g) => rough_glass::pdf(hit, wo, wi, &g, self.fuzz),
+        }
+    }
+}
+
+/// The shading normal turned to the side `wo` is on, or `None` for the back of a one-sided
+/// surface (Mitsuba's `diffuse`, `conductor` and `roughconductor` are black from behind).
+pub fn facing_normal(hit: &SurfaceHit, wo: Vec3, two_sided: bool) -> Option<Vec3> {
+    if wo.dot(hit.n) > 0.0 {
+        Some(hit.shading_n)
+    } else if two_sided {
+        Some(-hit.shading_n)
+    } else {
+        None
+    }
+}
+
+/// `local` (z along `normal`) in world space, through any frame around the unit `normal`.
+pub fn to_world(normal: Vec3, local: Vec3) -> Vec3 {
+    let (a, b) = normal.any_orthonormal_pair();
+    local.x * a + local.y * b + local.z * normal
+}
+
+#[cfg(test)]
+pub(crate) mod test_support;
+
+#[cfg(test)]
+mod tests {
+    use super::test_support::check_consistent;
+    use ch01_whitted::material::Material as Smooth;
+    use ch06_fuzzy_reflections::Material;
+    use glam::Vec3;
+
+    #[test]
+    fn sampling_eval_and_pdf_describe_the_same_material() {
+        let materials = [
+            Material::from(Smooth::diffuse(Vec3::splat(0.8))),
+            Material::from(Smooth::two_sided_diffuse(Vec3::splat(0.5))),
+            Material::glossy(Vec3::splat(0.9), 0.0),
+            Material::glossy(Vec3::splat(0.9), 50.0),
+            Material::rough_glass(1.5, 10.0),
+            Material::rough_glass(1.5, 1000.0),
+        ];
+        for wo in [
+            Vec3::Y,
+            Vec3::new(0.6, 0.8, 0.0),
+            Vec3::new(0.0, -0.7, 0.714),
+        ] {
+            let wo = wo.normalize();
+            for material in &materials {
+                let (albedo, _) = check_consistent(material, wo, 2000);
+                // Energy: a white material reflects at most what arrives, a glass transmits
+                // at most eta² of it (radiance scaling).
+                assert!(albedo.max_element() <= 2.3, "{material:?} {wo}: {albedo}");
+            }
+        }
+    }
+
+    #[test]
+    fn smooth_glass_splits_by_fresnel() {
+        // Normal incidence on glass of 1.5: F = 0.04.
+        let (_, deltas) = check_consistent(&Material::from(Smooth::glass(1.5)), Vec3::Y, 20_000);
+        assert_eq!(deltas, 1.0);
+        let (weight, _) = check_consistent(&Material::from(Smooth::glass(1.5)), Vec3::Y, 20_000);
+        // E[weight] = F + (1 - F) / 1.5² = 0.04 + 0.96 / 2.25.
+        let expected = 0.04 + 0.96 / 2.25;
+        assert!((weight.x - expected).abs() < 0.01, "{weight} vs {expected}");
+    }
+}

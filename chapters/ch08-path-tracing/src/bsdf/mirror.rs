@@ -1,0 +1,17 @@
+//! The perfect mirror: one direction, a delta. Nothing to evaluate for a light sample.
+
+use super::BsdfSample;
+use ch01_whitted::optics::reflect;
+use common::geometry::SurfaceHit;
+use glam::Vec3;
+
+/// The mirror direction with weight `reflectance`, on the front side only (Mitsuba's
+/// `conductor` is one-sided).
+pub fn sample(hit: &SurfaceHit, wo: Vec3, reflectance: Vec3) -> Option<BsdfSample> {
+    (wo.dot(hit.n) > 0.0).then(|| BsdfSample {
+        wi: reflect(-wo, hit.n),
+        weight: reflectance,
+        pdf: f32::INFINITY,
+        eta_scale: 1.0,
+    })
+}

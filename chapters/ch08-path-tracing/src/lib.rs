@@ -1,0 +1,93 @@
+//! # Chapter 08: combined effects and the path tracer
+//!
+//! Chapters 03 to 07 each added one dimension to the distribution: the pixel, the time, the
+//! lens, the glossy lobe, the point on the light. Here they are combined into one estimator of
+//! the rendering equation, the *path tracer*: a camera ray, then at every surface one
+//! direction drawn from its BSDF, with the light sampled at every bounce and the two combined
+//! by multiple importance sampling. Indirect diffuse light, which chapters 01 to 07 leave out,
+//! is now simply one more bounce.
+//!
+//! - [`bsdf`]: every chapter 06 material's sample, `f cos θ` and density, one module each.
+//! - [`lights`]: area lights, point lights and the environment as one list picked uniformly.
+//! - [`mis`]: the balance and the power heuristic; [`nee`]: one light sample's contribution.
+//! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
+//! - [`path`]: the path loop; [`render_with`].
+//! - [`scene_file`], [`agreement`]: scene files and the check against Mitsuba 3's `path`;
+//!   [`furnace`]: the white furnace; [`cli`]: the options of `render`; [`figures`].
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod agreement;
+pub mod bsdf;
+pub mod cli;
+pub mod figures;
+pub mod furnace;
+pub mod lights;
+pub mod mis;
+pub mod nee;
+pub mod options;
+pub mod path;
+pub mod roulette;
+pub mod scene_file;
+
+pub use bsdf::{Bsdf, BsdfSample};
+pub use lights::SceneLights;
+pub use mis::MisHeuristic;
+pub use options::PathOptions;
+pub use path::PathTracer;
+
+use ch04_depth_of_field::Lens;
+use ch05_motion_blur::{CameraRays, TimeSampler};
+use ch06_fuzzy_reflections::FuzzMethod;
+use ch07_soft_shadows::{LightSampling, SoftShadowScene};
+use common::film::Filter;
+use common::render::{self, RenderOutput, RenderSettings};
+
+/// Everything about a path-traced render besides the scene and the image settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Method {
+    /// NEE, MIS, roulette, depth.
+    pub options: PathOptions,
+    /// How area lights are sampled (chapter 07).
+    pub light_sampling: LightSampling,
+    /// How fuzzy lobes spread (chapter 06).
+    pub fuzz: FuzzMethod,
+}
+
+impl Method {
+    /// `options` with Mitsuba's light sampling (spheres by solid angle) and the `cos^n` lobe.
+    pub fn new(options: PathOptions) -> Self {
+        Self {
+            options,
+            light_sampling: LightSampling::solid_angle(),
+            fuzz: FuzzMethod::Lobe,
+        }
+    }
+}
+
+// ANCHOR: render_with
+/// Path-traces `scene` through `lens`. Each sample draws, in order: the pixel position, the
+/// time and the lens point (chapter 05's camera rays, each only when needed), then the numbers
+/// of each bounce (see [`path`]). The same seed gives the same image on any number of threads.
+pub fn render_with<S: TimeSampler>(
+    scene: &SoftShadowScene,
+    method: Method,
+    lens: &Lens,
+    settings: &RenderSettings,
+    sampler: &S,
+    filter: &dyn Filter,
+) -> RenderOutput {
+    let world = &scene.scene.world;
+    let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
+    let tracer = PathTracer {
+        scene,
+        lights: SceneLights::of(scene, method.light_sampling),
+        options: method.options,
+        fuzz: method.fuzz,
+    };
+    render::render(settings, sampler, filter, |p_film, sampler, counters| {
+        let ray = camera_rays.generate(world, p_film, sampler);
+        tracer.radiance(ray, sampler, counters)
+    })
+}
+// ANCHOR_END: render_with

@@ -1,0 +1,185 @@
+//! Every light of a scene as one list to pick from: the area lights (chapter 07), the point
+//! lights (chapter 01) and the constant environment (the scene's background).
+//!
+//! Next-event estimation picks **one light uniformly**, as Mitsuba 3's `path` integrator
+//! does, and divides by the chance `1/N`: one shadow ray per bounce whatever the number of
+//! lights, which keeps a path a path. (Sampling every light would make each bounce cost `N`
+//! shadow rays; picking by power would favour bright lights. Uniform keeps our noise close to
+//! Mitsuba's, which the agreement check compares.)
+
+use ch01_whitted::light::PointLight;
+use ch02_monte_carlo::warps::{sample_uniform_sphere, uniform_sphere_pdf};
+use ch07_soft_shadows::light::LightShape;
+use ch07_soft_shadows::solid_angle::{pdf_area_to_solid_angle, sphere_solid_angle_pdf};
+use ch07_soft_shadows::{AreaLight, LightSampling, SoftShadowScene, Strategy};
+use common::Ray;
+use common::geometry::SurfaceHit;
+use glam::{Vec2, Vec3};
+
+/// One light of the list.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightRef {
+    /// An area light, by its index in the scene's list.
+    Area(usize),
+    /// A point light, by its index.
+    Point(usize),
+    /// The constant environment.
+    Environment,
+}
+
+/// A light sampled from a receiver: where the light comes from and how much.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightDirection {
+    /// The unit direction from the receiver to the light.
+    pub wi: Vec3,
+    /// The radiance arriving along `wi` if nothing blocks it (for a point light: `I / d²`).
+    pub radiance: Vec3,
+    /// The density per unit solid angle of `wi`, the pick's `1/N` included; `f32::INFINITY`
+    /// for a point light, which no BSDF sample can find.
+    pub pdf: f32,
+    /// The shadow ray: both ends offset, stopping short of the light.
+    pub shadow_ray: Ray,
+}
+
+/// The scene's lights, borrowed.
+#[derive(Clone, Copy, Debug)]
+pub struct SceneLights<'a> {
+    /// Area lights, in the scene's order.
+    pub area: &'a [AreaLight],
+    /// For every shape, the area light it is.
+    pub light_of_shape: &'a [Option<u32>],
+    /// Point lights.
+    pub points: &'a [PointLight],
+    /// The environment's radiance; black means there is none.
+    pub environment: Vec3,
+    /// How area lights are sampled (chapter 07).
+    pub sampling: LightSampling,
+}
+
+impl<'a> SceneLights<'a> {
+    /// The lights of `scene`, area lights sampled as `sampling` says.
+    pub fn of(scene: &'a SoftShadowScene, sampling: LightSampling) -> Self {
+        let world = &scene.scene.world.scene;
+        Self {
+            area: &scene.lights,
+            light_of_shape: &scene.light_of_shape,
+            points: &world.lights,
+            environment: world.background,
+            sampling,
+        }
+    }
+
+    /// How many lights there are to pick from.
+    pub fn count(&self) -> usize {
+        self.area.len() + self.points.len() + usize::from(self.has_environment())
+    }
+
+    /// Whether the scene has a (non-black) environment.
+    pub fn has_environment(&self) -> bool {
+        self.environment != Vec3::ZERO
+    }
+
+    /// The chance of picking any one light.
+    pub fn pick_probability(&self) -> f32 {
+        1.0 / self.count().max(1) as f32
+    }
+
+    /// The light picked by `u` in `[0, 1)`: area lights first, then point lights, then the
+    /// environment. `None` when there is no light.
+    pub fn pick(&self, u: f32) -> Option<LightRef> {
+        let n = self.count();
+        if n == 0 {
+            return None;
+        }
+        let i = ((u * n as f32) as usize).min(n - 1);
+        Some(if i < self.area.len() {
+            LightRef::Area(i)
+        } else if i < self.area.len() + self.points.len() {
+            LightRef::Point(i - self.area.len())
+        } else {
+            LightRef::Environment
+        })
+    }
+
+    /// The area light that world shape `shape` is, if any.
+    pub fn area_light_of(&self, shape: u32) -> Option<&AreaLight> {
+        let index = (*self.light_of_shape.get(shape as usize)?)?;
+        self.area.get(index as usize)
+    }
+
+    /// A direction to `light` from `receiver` with the numbers `u` (a point light uses
+    /// none), or `None` when the light offers nothing there (no area, a degenerate sample).
+    pub fn sample(
+        &self,
+        light: LightRef,
+        receiver: &SurfaceHit,
+        u: Vec2,
+        time: f32,
+    ) -> Option<LightDirection> {
+        let pick = self.pick_probability();
+        let x = receiver.p;
+        let found = match light {
+            LightRef::Area(i) => {
+                let light = &self.area[i];
+                let sample = light.sample(x, u, self.sampling)?;
+                let to_light = sample.p - x;
+                let d2 = to_light.length_squared();
+                let wi = to_light / d2.sqrt();
+                let pdf = sample
+                    .pdf_solid_angle
+                    .unwrap_or_else(|| pdf_area_to_solid_angle(sample.pdf, d2, sample.n.dot(wi)));
+                LightDirection {
+                    wi,
+                    radiance: light.emitted(sample.n, -wi),
+                    pdf: pick * pdf,
+                    shadow_ray: sample.shadow_ray(receiver, time),
+                }
+            }
+            LightRef::Point(i) => {
+                let light = &self.points[i];
+                let to_light = light.position - x;
+                let d2 = to_light.length_squared();
+                LightDirection {
+                    wi: to_light / d2.sqrt(),
+                    radiance: light.intensity / d2,
+                    pdf: f32::INFINITY,
+                    shadow_ray: receiver.spawn_ray_to(light.position, time),
+                }
+            }
+            LightRef::Environment => {
+                let wi = sample_uniform_sphere(u);
+                LightDirection {
+                    wi,
+                    radiance: self.environment,
+                    pdf: pick * uniform_sphere_pdf(),
+                    shadow_ray: receiver.spawn_ray(wi, time),
+                }
+            }
+        };
+        let usable = found.wi.is_finite() && found.radiance.is_finite() && !found.pdf.is_nan();
+        (usable && found.pdf > 0.0).then_some(found)
+    }
+
+    /// The density per unit solid angle with which [`sample`](Self::sample) (pick included)
+    /// would have chosen the point `y` (normal `n_y`) of `light` from `x`: what a BSDF sample
+    /// that hit the light needs for its MIS weight.
+    pub fn area_pdf(&self, light: &AreaLight, x: Vec3, y: Vec3, n_y: Vec3) -> f32 {
+        let to_light = y - x;
+        let pdf = match (light.shape, self.sampling.strategy) {
+            (LightShape::Sphere(sphere), Strategy::SolidAngle) => {
+                sphere_solid_angle_pdf(&sphere, x, to_light)
+            }
+            _ => None,
+        };
+        let pdf = pdf.unwrap_or_else(|| {
+            let d2 = to_light.length_squared();
+            pdf_area_to_solid_angle(light.shape.pdf_area(), d2, n_y.dot(to_light / d2.sqrt()))
+        });
+        self.pick_probability() * pdf
+    }
+
+    /// The density with which the environment is sampled in any direction, pick included.
+    pub fn environment_pdf(&self) -> f32 {
+        self.pick_probability() * uniform_sphere_pdf()
+    }
+}

@@ -1,0 +1,184 @@
+//! `ch08-path-tracing`: path-trace a scene file, or write the chapter's figures.
+
+use anyhow::Context;
+use ch03_anti_aliasing::cli::AntiAliasingArgs;
+use ch04_depth_of_field::Lens;
+use ch04_depth_of_field::cli::LensArgs;
+use ch05_motion_blur::StratifiedTime;
+use ch06_fuzzy_reflections::cli::FuzzyArgs;
+use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
+use ch07_soft_shadows::SoftShadowScene;
+use ch07_soft_shadows::cli::LightArgs;
+use ch08_path_tracing::cli::PathArgs;
+use ch08_path_tracing::scene_file::convert;
+use ch08_path_tracing::{Method, figures, render_with};
+use clap::{Parser, Subcommand};
+use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::render::Budget;
+use common::scene::load_scene_file;
+use std::process::ExitCode;
+
+/// Chapter 08 of the workbook: the path tracer.
+#[derive(Parser, Debug)]
+#[command(name = "ch08-path-tracing", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Path-trace a scene file (--scene FILE.xml).
+    Render(Box<RenderCommand>),
+    /// Write the chapter's comparison images and error-against-time data.
+    Figures(FiguresArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct RenderCommand {
+    #[command(flatten)]
+    path: PathArgs,
+    #[command(flatten)]
+    lights: LightArgs,
+    #[command(flatten)]
+    fuzzy: FuzzyArgs,
+    #[command(flatten)]
+    anti_aliasing: AntiAliasingArgs,
+    #[command(flatten)]
+    lens: LensArgs,
+    #[command(flatten)]
+    args: RenderArgs,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Render(command) => run_render(*command),
+        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => report_error(error.as_ref()),
+    }
+}
+
+/// The options of chapters 06 and 07 that mean something for a path: a path follows one ray
+/// at glass, chosen by Fresnel, drops lobe directions below the surface, and sends one light
+/// sample per bounce.
+fn check_path_options(command: &RenderCommand) -> anyhow::Result<()> {
+    if command.fuzzy.glass != GlassStrategy::Fresnel {
+        anyhow::bail!(
+            "--glass {}: a path follows one ray per bounce, chosen at glass by the Fresnel term; only --glass fresnel applies",
+            command.fuzzy.glass.name()
+        );
+    }
+    if command.fuzzy.below_surface != BelowSurface::Drop {
+        anyhow::bail!(
+            "--below-surface {}: the path tracer's BSDFs drop lobe directions below the surface; only --below-surface drop applies",
+            command.fuzzy.below_surface.name()
+        );
+    }
+    if command.lights.light_samples != 1 {
+        anyhow::bail!(
+            "--light-samples {}: the path tracer sends one light sample per bounce, to one light picked uniformly",
+            command.lights.light_samples
+        );
+    }
+    Ok(())
+}
+
+fn run_render(command: RenderCommand) -> anyhow::Result<()> {
+    check_path_options(&command)?;
+    let Some(path) = &command.args.scene else {
+        anyhow::bail!(
+            "render needs a scene: --scene FILE.xml (see chapters/ch08-path-tracing/scenes/)"
+        );
+    };
+    let loaded = load_scene_file(path, &command.args.define)?;
+    for warning in &loaded.warnings {
+        eprintln!("{warning}");
+    }
+    let scene = convert(&loaded.scene).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    let file_options = scene.options;
+    let converted = scene.converted;
+    for note in &converted.notes {
+        eprintln!("note: {note}");
+    }
+    let fuzzy_scene = command.fuzzy.apply(converted.scene.scene)?;
+    let max_depth = fuzzy_scene.world.scene.max_depth;
+    let scene = SoftShadowScene {
+        scene: fuzzy_scene,
+        ..converted.scene
+    };
+    let options = ch08_path_tracing::PathOptions {
+        max_depth,
+        ..command.path.options(file_options)
+    };
+    let scene_lens = if converted.lens.is_pinhole() {
+        Lens {
+            focus_distance: 5.0,
+            ..converted.lens
+        }
+    } else {
+        converted.lens
+    };
+    let lens = command.lens.lens(scene_lens)?;
+    let filter = command.anti_aliasing.filter(Some(converted.filter))?;
+    let sampler_kind = command.anti_aliasing.sampler_kind(Some(converted.sampler));
+    let world = &scene.scene.world;
+    let camera = world.scene.camera;
+    let settings = command
+        .args
+        .settings((camera.width, camera.height), converted.spp)?;
+    let pixel_sampler =
+        command
+            .anti_aliasing
+            .pixel_sampler(sampler_kind, &settings.budget, command.args.seed)?;
+    command.args.check_outputs()?;
+    let method = Method {
+        options,
+        light_sampling: command.lights.options().sampling,
+        fuzz: command.fuzzy.fuzz,
+    };
+    let rendered = match settings.budget {
+        Budget::Samples(spp) if world.moves() => {
+            let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
+            render_with(&scene, method, &lens, &settings, &sampler, &filter)
+        }
+        _ => render_with(&scene, method, &lens, &settings, &pixel_sampler, &filter),
+    };
+    let mut extra = serde_json::json!({
+        "scene": path.display().to_string(),
+        "nee": options.nee,
+        "mis": options.mis.name(),
+        "rr_depth": options.rr_depth,
+        "max_depth": options.max_depth,
+        "area_lights": scene.lights.len(),
+        "point_lights": world.scene.lights.len(),
+        "sampler": sampler_kind.name(),
+        "filter": filter.kind().name(),
+        "aperture_radius": lens.aperture_radius,
+        "seed": command.args.seed,
+    });
+    extra
+        .as_object_mut()
+        .context("a JSON object")?
+        .extend(command.fuzzy.stats());
+    command.args.write_outputs(&rendered, extra)?;
+    eprintln!(
+        "wrote {} ({}x{}, {} spp, {:.2} s, {:.0} rays/s)",
+        command.args.out.display(),
+        rendered.stats.width,
+        rendered.stats.height,
+        rendered.stats.spp,
+        rendered.stats.seconds,
+        rendered.stats.rays_per_second
+    );
+    if rendered.stats.nonfinite_samples > 0 {
+        eprintln!(
+            "warning: {} samples were not finite and were left out",
+            rendered.stats.nonfinite_samples
+        );
+    }
+    Ok(())
+}

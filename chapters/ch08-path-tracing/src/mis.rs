@@ -1,0 +1,113 @@
+//! Multiple importance sampling: two ways of finding the same light, each weighted where it is
+//! good.
+//!
+//! A light reaches a surface along a direction that two strategies can produce: the light
+//! sample (good for small lights, bad for a sharp glossy lobe) and the BSDF sample (the
+//! reverse). Counting both would count the light twice; counting one throws the other's
+//! strength away. Veach's answer: weight each sample by `w_a(x)`, with `w_a + w_b = 1` at
+//! every `x`, and the sum stays unbiased whatever the weights. The *balance heuristic*
+//! `p_a / (p_a + p_b)` is provably close to the best; the *power heuristic* (squares) is
+//! better still when one density is much larger, and is what Mitsuba 3 and pbrt use.
+
+/// How the two estimators of the same light are combined.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum MisHeuristic {
+    /// No combination: light found by BSDF rays at non-delta surfaces is ignored, the light
+    /// sample alone counts (plain next-event estimation).
+    None,
+    /// `p_a / (p_a + p_b)`.
+    Balance,
+    /// `p_a² / (p_a² + p_b²)`.
+    Power,
+}
+
+impl MisHeuristic {
+    /// Every heuristic.
+    pub const ALL: [MisHeuristic; 3] = [
+        MisHeuristic::None,
+        MisHeuristic::Balance,
+        MisHeuristic::Power,
+    ];
+
+    /// The name used on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            MisHeuristic::None => "none",
+            MisHeuristic::Balance => "balance",
+            MisHeuristic::Power => "power",
+        }
+    }
+
+    /// The weight of a sample drawn with density `pdf_a` that the other strategy would have
+    /// drawn with density `pdf_b`. With [`MisHeuristic::None`] the light sample (the caller's
+    /// `a`) takes everything: 1.
+    pub fn weight(self, pdf_a: f32, pdf_b: f32) -> f32 {
+        match self {
+            MisHeuristic::None => 1.0,
+            MisHeuristic::Balance => balance_heuristic(pdf_a, pdf_b),
+            MisHeuristic::Power => power_heuristic(pdf_a, pdf_b),
+        }
+    }
+}
+
+/// `p_a / (p_a + p_b)`, 0 when `p_a` is 0 (the sample could not have been drawn).
+pub fn balance_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {
+    if pdf_a <= 0.0 {
+        return 0.0;
+    }
+    if pdf_a.is_infinite() {
+        return 1.0;
+    }
+    pdf_a / (pdf_a + pdf_b)
+}
+
+// ANCHOR: power_heuristic
+/// Veach's power heuristic with exponent 2: `p_a² / (p_a² + p_b²)`.
+///
+/// 0 when `p_a` is 0 (strategy `a` could not have drawn the sample), 1 when `p_a` is infinite
+/// (a delta, which the other strategy can never draw). The squares are taken of the ratio
+/// `p_b / p_a`, so two large densities do not overflow `f32` into `inf / inf`.
+pub fn power_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {
+    // BEGIN SOLUTION
+    if pdf_a <= 0.0 {
+        return 0.0;
+    }
+    if pdf_a.is_infinite() {
+        return 1.0;
+    }
+    let ratio = pdf_b / pdf_a;
+    1.0 / (1.0 + ratio * ratio)
+    // END SOLUTION
+}
+// ANCHOR_END: power_heuristic
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exercise_power_heuristic_squares_the_densities() {
+        assert_eq!(power_heuristic(1.0, 1.0), 0.5);
+        assert!((power_heuristic(3.0, 1.0) - 0.9).abs() < 1e-6);
+        assert!((power_heuristic(1.0, 3.0) - 0.1).abs() < 1e-6);
+        assert_eq!(power_heuristic(0.0, 5.0), 0.0);
+        assert_eq!(power_heuristic(2.0, 0.0), 1.0);
+        assert_eq!(power_heuristic(f32::INFINITY, 1.0), 1.0);
+        // No overflow for huge densities (a sharp lobe): 1e30² is infinite in f32.
+        assert!((power_heuristic(1e30, 1e30) - 0.5).abs() < 1e-6);
+        // The two weights of one sample add up to 1: the combination is unbiased.
+        for (a, b) in [(0.3f32, 7.0f32), (1e-3, 1e3), (2.0, 2.5)] {
+            let sum = power_heuristic(a, b) + power_heuristic(b, a);
+            assert!((sum - 1.0).abs() < 1e-6, "{a} {b}: {sum}");
+        }
+    }
+
+    #[test]
+    fn balance_weights_add_up_to_one() {
+        for (a, b) in [(0.3f32, 7.0f32), (1e-3, 1e3), (2.0, 2.5)] {
+            let sum = balance_heuristic(a, b) + balance_heuristic(b, a);
+            assert!((sum - 1.0).abs() < 1e-6);
+        }
+        assert_eq!(MisHeuristic::None.weight(0.1, 10.0), 1.0);
+    }
+}

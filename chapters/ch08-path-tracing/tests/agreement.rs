@@ -1,0 +1,11 @@
+//! Agreement with Mitsuba 3's stored renders of the chapter's scenes (see
+//! `ch08_path_tracing::agreement`): our render at the same sample count must be as unbiased as
+//! Mitsuba's own second render against Mitsuba's reference, and no noisier.
+
+use ch08_path_tracing::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
+use common::metrics::check_stored_agreement;
+
+#[test]
+fn renders_agree_with_the_stored_mitsuba_renders() {
+    check_stored_agreement(&scenes_dir(), AGREEMENT_SCENES, &render_scene_file).unwrap();
+}

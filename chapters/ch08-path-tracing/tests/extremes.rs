@@ -1,0 +1,101 @@
+//! Extremes: no NaN, no infinity, at any depth limit, with roulette or without, through glass.
+
+mod support;
+
+use ch01_whitted::material::Material as Smooth;
+use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
+use ch04_depth_of_field::Lens;
+use ch06_fuzzy_reflections::Material;
+use ch08_path_tracing::furnace::spheres;
+use ch08_path_tracing::{Method, PathOptions, render_with};
+use common::render::RenderSettings;
+use common::sampler::IndependentSampler;
+use glam::Vec3;
+
+fn render_finite(
+    scene: &ch07_soft_shadows::SoftShadowScene,
+    options: PathOptions,
+    what: &str,
+) -> f64 {
+    let settings = RenderSettings::new(16, 16, 4);
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+    let out = render_with(
+        scene,
+        Method::new(options),
+        &Lens::PINHOLE,
+        &settings,
+        &IndependentSampler::new(5),
+        &filter,
+    );
+    assert_eq!(out.stats.nonfinite_samples, 0, "{what}");
+    assert!(out.image.pixels.iter().all(|p| p.is_finite()), "{what}");
+    common::metrics::mean(&out.image).y
+}
+
+#[test]
+fn the_cornell_box_is_finite_at_depth_1_and_1000_with_and_without_roulette() {
+    let scene = support::scene_file("cornell-box.xml");
+    let s = &scene.converted.scene;
+    let one = render_finite(
+        s,
+        PathOptions {
+            max_depth: 1,
+            ..scene.options
+        },
+        "depth 1",
+    );
+    let deep = render_finite(
+        s,
+        PathOptions {
+            max_depth: 1000,
+            rr_depth: None,
+            ..scene.options
+        },
+        "depth 1000, no roulette",
+    );
+    let rr = render_finite(
+        s,
+        PathOptions {
+            max_depth: 1000,
+            rr_depth: Some(1),
+            ..scene.options
+        },
+        "depth 1000, roulette from 1",
+    );
+    // Depth 1 sees the light only; more depth adds light, never removes it.
+    assert!(one > 0.0 && deep > one && rr > one, "{one} {deep} {rr}");
+}
+
+#[test]
+fn an_all_glass_world_and_a_light_through_glass_stay_finite() {
+    let glass = Material::from(Smooth::glass(1.5));
+    let rough = Material::rough_glass(1.5, 5.0);
+    render_finite(
+        &spheres(&[glass, rough, glass], 1000),
+        PathOptions {
+            rr_depth: None,
+            ..PathOptions::with_depth(1000)
+        },
+        "all glass",
+    );
+    let scene = support::scene_file("point-and-sky.xml");
+    render_finite(
+        &scene.converted.scene,
+        PathOptions {
+            max_depth: 1000,
+            ..scene.options
+        },
+        "lights through glass",
+    );
+}
+
+#[test]
+fn a_black_world_stays_black() {
+    let black = Material::from(Smooth::diffuse(Vec3::ZERO));
+    let mut scene = spheres(&[black], 8);
+    scene.scene.world.scene.background = Vec3::ZERO;
+    assert_eq!(
+        render_finite(&scene, PathOptions::with_depth(8), "black"),
+        0.0
+    );
+}

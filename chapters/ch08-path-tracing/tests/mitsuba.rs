@@ -1,0 +1,21 @@
+//! Agreement with Mitsuba 3, rendered afresh. Needs a Python with the `mitsuba` package
+//! (`pip install mitsuba`), so it is ignored by default. Run it with
+//!
+//! ```text
+//! MITSUBA_PYTHON=/path/to/python cargo test --release -p ch08-path-tracing --test mitsuba -- --ignored --nocapture
+//! ```
+//!
+//! With `UPDATE_MITSUBA_RENDERS=1` as well, it replaces the stored renders in
+//! `scenes/mitsuba/` that the test `agreement` and the book compare against.
+
+use ch08_path_tracing::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
+use common::metrics::refresh_agreement_from_env;
+
+#[test]
+#[ignore = "needs Mitsuba 3 (set MITSUBA_PYTHON)"]
+fn chapter_08_agrees_with_mitsuba() {
+    match refresh_agreement_from_env(&scenes_dir(), AGREEMENT_SCENES, &render_scene_file) {
+        Ok(lines) => eprintln!("{}", lines.join("\n")),
+        Err(message) => panic!("{message}"),
+    }
+}
