@@ -24,6 +24,7 @@ pub const CHAPTERS: &[(&str, WriteFigures)] = &[
     ("ch05", ch05_motion_blur::figures::write_all),
     ("ch06", ch06_fuzzy_reflections::figures::write_all),
     ("ch07", ch07_soft_shadows::figures::write_all),
+    ("ch08", ch08_path_tracing::figures::write_all),
 ];
 
 /// Regenerates every chapter's figures under `figures_dir`, starting each chapter from an empty

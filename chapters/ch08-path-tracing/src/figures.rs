@@ -1,21 +1,39 @@
-//! The chapter's figures, a first set: NEE off and on, MIS off and on, Russian roulette on
-//! and off, each as an image and as error against time on the Cornell box.
+//! The chapter's figures, in the order of the page:
+//!
+//! - the ray tree: rays per camera ray against the depth limit for branching factors 1, 2
+//!   and 4 (`ray-tree.csv`/`.png`), and the share of the pixel carried by each depth
+//!   (`depth-shares.csv`/`.png`);
+//! - distribution ray tracing against path tracing of the same scene at equal time
+//!   (`drt-vs-pt.png`), with error against time (`drt-vs-pt-convergence.*`), and the
+//!   lecture's final comparison, Cook's tracer against the path tracer (`final-comparison.png`);
+//! - NEE, MIS and Russian roulette on the Cornell box (`bsdf-only.png`, `nee.png`, ...,
+//!   `roulette.png`, `convergence.*`) and on Veach's glossy plates (`mis-plates.png`,
+//!   `plates-convergence.*`);
+//! - the comparison with Mitsuba 3 (`mitsuba.md` and its images).
+//!
+//! `quick` renders thumbnails at few samples, for CI; the full set takes about a minute.
 
 use crate::agreement::scenes_dir;
+use crate::distribution::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
+use crate::distribution::{DistributionOptions, render_distribution};
 use crate::mis::MisHeuristic;
 use crate::options::PathOptions;
-use crate::scene_file::convert;
+use crate::scene_file::{ConvertedScene, convert};
 use crate::{Method, render_with};
 use anyhow::Context;
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch07_soft_shadows::SoftShadowScene;
 use common::image::Image;
-use common::metrics::{Technique, plot_error_vs_time, run_convergence, write_convergence_csv};
-use common::output::write_image;
-use common::render::RenderSettings;
+use common::metrics::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence, write_convergence_csv,
+};
+use common::output::figures::{Axes, Series, SeriesStyle, comparison_grid, line_plot};
+use common::output::{write_image, write_text};
+use common::render::{Budget, RenderOutput, RenderSettings};
 use common::sampler::IndependentSampler;
 use std::path::Path;
+use std::time::Instant;
 
 /// The techniques compared, by name.
 pub fn techniques(file: PathOptions) -> Vec<(&'static str, PathOptions)> {
@@ -57,6 +75,33 @@ pub fn techniques(file: PathOptions) -> Vec<(&'static str, PathOptions)> {
     ]
 }
 
+/// The box filter every figure uses: one sample lands in one pixel.
+fn box_filter() -> ReconstructionFilter {
+    ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter")
+}
+
+/// Path-traces `scene` with `options` under `budget`, independent samples, box filter.
+fn path_trace(
+    scene: &SoftShadowScene,
+    options: PathOptions,
+    size: (u32, u32),
+    budget: Budget,
+    seed: u64,
+) -> RenderOutput {
+    let settings = RenderSettings {
+        budget,
+        ..RenderSettings::new(size.0, size.1, 1)
+    };
+    render_with(
+        scene,
+        Method::new(options),
+        &Lens::PINHOLE,
+        &settings,
+        &IndependentSampler::new(seed),
+        &box_filter(),
+    )
+}
+
 /// Renders `scene` with `options` at `spp`, independent samples, box filter.
 pub fn render(
     scene: &SoftShadowScene,
@@ -65,55 +110,339 @@ pub fn render(
     spp: u64,
     seed: u64,
 ) -> Image {
-    let settings = RenderSettings::new(size.0, size.1, spp);
-    render_with(
-        scene,
-        Method::new(options),
-        &Lens::PINHOLE,
-        &settings,
-        &IndependentSampler::new(seed),
-        &ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter"),
-    )
-    .image
+    path_trace(scene, options, size, Budget::Samples(spp), seed).image
+}
+
+/// A chapter scene file, converted.
+fn load(name: &str) -> anyhow::Result<ConvertedScene> {
+    let file = scenes_dir().join(name);
+    let loaded = common::scene::load_scene_file(&file, &[])?;
+    convert(&loaded.scene).map_err(anyhow::Error::msg)
+}
+
+/// Sizes and sample counts: thumbnails for `quick`.
+struct Quality {
+    quick: bool,
+    reference_spp: u64,
+    budgets: &'static [u64],
+}
+
+impl Quality {
+    fn size(&self, scene: &SoftShadowScene, quick_size: (u32, u32)) -> (u32, u32) {
+        let camera = scene.scene.world.scene.camera;
+        if self.quick {
+            quick_size
+        } else {
+            (camera.width, camera.height)
+        }
+    }
 }
 
 /// Writes every figure into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
-    let file = scenes_dir().join("cornell-box.xml");
-    let loaded = common::scene::load_scene_file(&file, &[])?;
-    let scene = convert(&loaded.scene).map_err(anyhow::Error::msg)?;
-    let camera = scene.converted.scene.scene.world.scene.camera;
-    let size = if quick {
-        (32, 32)
+    let quality = if quick {
+        Quality {
+            quick,
+            reference_spp: 64,
+            budgets: &[1, 4],
+        }
     } else {
-        (camera.width, camera.height)
+        Quality {
+            quick,
+            reference_spp: 1024,
+            budgets: &[1, 4, 16, 64],
+        }
     };
-    let (reference_spp, budgets): (u64, &[u64]) = if quick {
-        (64, &[1, 4])
-    } else {
-        (2048, &[1, 4, 16, 64])
-    };
-    let scene_ref = &scene.converted.scene;
-    let reference = render(scene_ref, scene.options, size, reference_spp, 99);
-    let techniques = techniques(scene.options);
-    for &(name, options) in &techniques {
-        let image = render(scene_ref, options, size, 16, 1);
-        write_image(&out.join(format!("ch08-{name}-16spp.png")), &image)?;
+    let start = Instant::now();
+    ray_tree(out, &quality).context("the ray-tree figures")?;
+    distribution_vs_path(out, &quality).context("distribution against path tracing")?;
+    cornell_techniques(out, &quality).context("NEE, MIS and roulette on the Cornell box")?;
+    glossy_plates(out, &quality).context("MIS on the glossy plates")?;
+    common::metrics::write_agreement_figures(
+        out,
+        "chapter 08",
+        &scenes_dir(),
+        crate::agreement::AGREEMENT_SCENES,
+        &crate::agreement::render_scene_file,
+    )
+    .map_err(anyhow::Error::msg)
+    .context("the comparison with Mitsuba 3")?;
+    eprintln!(
+        "ch08 figures written to {} in {:.1} s",
+        out.display(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+// ANCHOR: ray_tree
+/// Rays per camera ray against the depth limit, for branching factors 1, 2 and 4 with
+/// indirect diffuse light and 4 without (Cook's tracer), and the share of the image each
+/// depth carries, on the Cornell box.
+fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let file = load("cornell-box.xml")?;
+    let scene = &file.converted.scene;
+    let size = (16, 16);
+    let deepest = if quality.quick { 4 } else { 6 };
+    let mut csv = String::from("branching,indirect_diffuse,max_depth,rays_per_camera_ray\n");
+    let mut series = Vec::new();
+    for (branching, indirect) in [(1, true), (2, true), (4, true), (4, false)] {
+        let mut points = Vec::new();
+        for depth in 1..=deepest {
+            let options = DistributionOptions::branching(branching, depth, indirect);
+            let rays = rays_per_camera_ray(&render_small(scene, options, size, 1, 1));
+            csv += &format!("{branching},{indirect},{depth},{rays:.2}\n");
+            points.push((f64::from(depth), rays));
+        }
+        let label = if indirect {
+            format!("k = m = {branching}, indirect diffuse")
+        } else {
+            format!("k = m = {branching}, Cook 1984 (no indirect)")
+        };
+        series.push(Series::new(label, points, SeriesStyle::LineAndPoints));
     }
+    write_text(&out.join("ray-tree.csv"), &csv)?;
+    let log_y = Axes {
+        log_y: true,
+        ..Axes::linear(
+            "max_depth (segments, the camera ray is 1)",
+            "rays per camera ray",
+        )
+    };
+    line_plot(
+        &out.join("ray-tree.png"),
+        "Cornell box: the ray tree grows as k^depth",
+        &log_y,
+        &series,
+    )?;
+
+    let spp = if quality.quick { 16 } else { 256 };
+    let shares = depth_shares(
+        scene,
+        DistributionOptions::branching(1, 8, true),
+        (32, 32),
+        spp,
+        2,
+    );
+    let mut csv = String::from("depth,share\n");
+    for &(depth, share) in &shares {
+        csv += &format!("{depth},{share:.5}\n");
+    }
+    write_text(&out.join("depth-shares.csv"), &csv)?;
+    let points = shares.iter().map(|&(d, s)| (f64::from(d), s)).collect();
+    let log_y = Axes {
+        log_y: true,
+        ..Axes::linear(
+            "depth of the ray (segment)",
+            "share of the image's radiance",
+        )
+    };
+    line_plot(
+        &out.join("depth-shares.png"),
+        "Cornell box: what the rays of each depth carry",
+        &log_y,
+        &[Series::new("share", points, SeriesStyle::LineAndPoints)],
+    )?;
+    Ok(())
+}
+// ANCHOR_END: ray_tree
+
+// ANCHOR: distribution_vs_path
+/// The Cornell box at depth 4 by distribution ray tracing (k = m = 2, indirect diffuse
+/// light: the same light as the path tracer computes) and by path tracing in the same time.
+fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let depth = 4;
+    let file = load("cornell-box.xml")?;
+    let scene = &file.converted.scene;
+    let size = quality.size(scene, (32, 32));
+    let pt_options = PathOptions::with_depth(depth);
+    let reference = render(scene, pt_options, size, quality.reference_spp, 99);
+    let drt = |options: DistributionOptions, spp: u64| {
+        let settings = RenderSettings::new(size.0, size.1, spp);
+        let sampler = IndependentSampler::new(1);
+        render_distribution(
+            scene,
+            options,
+            &Lens::PINHOLE,
+            &settings,
+            &sampler,
+            &box_filter(),
+        )
+    };
+    let branching = DistributionOptions::branching(2, depth, true);
+    let tree = drt(branching, if quality.quick { 1 } else { 4 });
+    let seconds = tree.stats.seconds;
+    let paths = path_trace(scene, pt_options, size, Budget::Seconds(seconds), 1);
+    let caption = |name: &str, output: &RenderOutput| {
+        format!(
+            "{name}: {} spp, {:.2} s, RMSE {:.4}",
+            output.stats.spp,
+            output.stats.seconds,
+            rmse(&output.image, &reference)
+        )
+    };
+    let cells = vec![
+        (caption("distribution k=m=2", &tree), tree.image.clone()),
+        (caption("path", &paths), paths.image.clone()),
+    ];
+    comparison_grid(&out.join("drt-vs-pt.png"), &cells, 2, 3)?;
+    eprintln!("drt-vs-pt: {} | {}", cells[0].0, cells[1].0);
+
+    let runs = vec![
+        Technique::new("distribution k=m=1", move |spp| {
+            drt(DistributionOptions::branching(1, depth, true), spp).image
+        }),
+        Technique::new("distribution k=m=2", move |spp| drt(branching, spp).image),
+        Technique::new("path", move |spp| render(scene, pt_options, size, spp, 1)),
+    ];
+    // The tree's renders are the dearest: one budget fewer.
+    let budgets = &quality.budgets[..quality.budgets.len() - 1];
+    let records = run_convergence(&runs, budgets, &reference);
+    write_convergence_csv(&out.join("drt-vs-pt-convergence.csv"), &records)?;
+    plot_error_vs_time(
+        &out.join("drt-vs-pt-convergence.png"),
+        "Cornell box, depth 4: the tree against the path",
+        &records,
+    )?;
+
+    // The lecture's last slide: Cook's tracer (no indirect diffuse light) against the path
+    // tracer, both converged, at the scene's own depth.
+    let full = file.options.max_depth;
+    let spp = if quality.quick { 16 } else { 256 };
+    let cook = drt(DistributionOptions::branching(1, full, false), spp);
+    let path_image = render(scene, file.options, size, spp, 2);
+    comparison_grid(
+        &out.join("final-comparison.png"),
+        &[
+            (format!("distribution (Cook 1984), {spp} spp"), cook.image),
+            (format!("path tracing, {spp} spp"), path_image),
+        ],
+        2,
+        3,
+    )?;
+    Ok(())
+}
+// ANCHOR_END: distribution_vs_path
+
+/// NEE, MIS and roulette on the Cornell box at the file's depth: one image each at 16 spp,
+/// roulette on and off with their times, and error against time.
+fn cornell_techniques(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let file = load("cornell-box.xml")?;
+    let scene = &file.converted.scene;
+    let size = quality.size(scene, (32, 32));
+    let reference = render(scene, file.options, size, quality.reference_spp, 99);
+    let techniques = techniques(file.options);
+    for &(name, options) in &techniques {
+        let image = render(scene, options, size, 16, 1);
+        write_image(&out.join(format!("{name}.png")), &image)?;
+    }
+    let roulette: Vec<(String, Image)> = [
+        ("roulette from 5", file.options),
+        ("no roulette", {
+            PathOptions {
+                rr_depth: None,
+                ..file.options
+            }
+        }),
+    ]
+    .into_iter()
+    .map(|(name, options)| {
+        let output = path_trace(scene, options, size, Budget::Samples(64), 1);
+        let caption = format!(
+            "{name}: 64 spp, {:.2} s, RMSE {:.4}",
+            output.stats.seconds,
+            rmse(&output.image, &reference)
+        );
+        (caption, output.image)
+    })
+    .collect();
+    comparison_grid(&out.join("roulette.png"), &roulette, 2, 3)?;
     let runs: Vec<Technique> = techniques
         .iter()
         .map(|&(name, options)| {
-            Technique::new(name, move |spp| render(scene_ref, options, size, spp, 1))
+            Technique::new(name, move |spp| render(scene, options, size, spp, 1))
         })
         .collect();
-    let records = run_convergence(&runs, budgets, &reference);
-    write_convergence_csv(&out.join("ch08-convergence.csv"), &records)?;
+    let records = run_convergence(&runs, quality.budgets, &reference);
+    write_convergence_csv(&out.join("convergence.csv"), &records)?;
     plot_error_vs_time(
-        &out.join("ch08-convergence.png"),
+        &out.join("convergence.png"),
         "Cornell box: error against time",
         &records,
     )?;
-    eprintln!("ch08 figures written to {}", out.display());
+    plot_error_vs_spp(
+        &out.join("convergence-spp.png"),
+        "Cornell box: error against samples",
+        &records,
+    )?;
     Ok(())
 }
+
+// ANCHOR: glossy_plates
+/// Veach's glossy plates at depth 2 (direct light only): BSDF sampling alone, light sampling
+/// alone, and both combined by the balance and the power heuristic, at equal samples.
+fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let file = load("glossy-plates.xml")?;
+    let scene = &file.converted.scene;
+    let size = quality.size(scene, (96, 64));
+    let direct = PathOptions {
+        rr_depth: None,
+        ..PathOptions::with_depth(2)
+    };
+    let reference = render(scene, direct, size, quality.reference_spp, 99);
+    // Light sampling alone: NEE whose BSDF-found light is dropped (MIS `None`) is exactly
+    // that at depth 2, where a BSDF direction that finds a light ends the path.
+    let variants = [
+        (
+            "BSDF sampling",
+            PathOptions {
+                nee: false,
+                ..direct
+            },
+        ),
+        (
+            "light sampling",
+            PathOptions {
+                mis: MisHeuristic::None,
+                ..direct
+            },
+        ),
+        (
+            "MIS, balance",
+            PathOptions {
+                mis: MisHeuristic::Balance,
+                ..direct
+            },
+        ),
+        ("MIS, power", direct),
+    ];
+    let spp = 4;
+    let mut cells = Vec::new();
+    for &(name, options) in &variants {
+        let image = render(scene, options, size, spp, 1);
+        let error = rmse(&image, &reference);
+        eprintln!("plates {name}: RMSE {error:.4} at {spp} spp");
+        cells.push((format!("{name}, {spp} spp, RMSE {error:.3}"), image));
+    }
+    cells.push((
+        format!("reference, {} spp", quality.reference_spp),
+        reference.clone(),
+    ));
+    comparison_grid(&out.join("mis-plates.png"), &cells, 2, 2)?;
+    let runs: Vec<Technique> = variants
+        .iter()
+        .map(|&(name, options)| {
+            Technique::new(name, move |spp| render(scene, options, size, spp, 1))
+        })
+        .collect();
+    let records = run_convergence(&runs, quality.budgets, &reference);
+    write_convergence_csv(&out.join("plates-convergence.csv"), &records)?;
+    plot_error_vs_time(
+        &out.join("plates-convergence.png"),
+        "Glossy plates: error against time",
+        &records,
+    )?;
+    Ok(())
+}
+// ANCHOR_END: glossy_plates

@@ -12,6 +12,8 @@
 //! - [`mis`]: the balance and the power heuristic; [`nee`]: one light sample's contribution.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
 //! - [`path`]: the path loop; [`render_with`].
+//! - [`distribution`]: Cook's branching tracer with every effect, for comparison;
+//!   [`render_distribution`].
 //! - [`scene_file`], [`agreement`]: scene files and the check against Mitsuba 3's `path`;
 //!   [`furnace`]: the white furnace; [`cli`]: the options of `render`; [`figures`].
 #![forbid(unsafe_code)]
@@ -20,6 +22,8 @@
 pub mod agreement;
 pub mod bsdf;
 pub mod cli;
+pub mod dimensions;
+pub mod distribution;
 pub mod figures;
 pub mod furnace;
 pub mod lights;
@@ -31,6 +35,7 @@ pub mod roulette;
 pub mod scene_file;
 
 pub use bsdf::{Bsdf, BsdfSample};
+pub use distribution::{DistributionOptions, DistributionTracer, render_distribution};
 pub use lights::SceneLights;
 pub use mis::MisHeuristic;
 pub use options::PathOptions;

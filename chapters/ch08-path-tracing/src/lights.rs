@@ -74,6 +74,12 @@ impl<'a> SceneLights<'a> {
         self.area.len() + self.points.len() + usize::from(self.has_environment())
     }
 
+    /// Whether a ray can find a light by hitting it: an area light or the environment (a
+    /// point light it never can). Without, a path's last segment would find nothing.
+    pub fn can_be_hit(&self) -> bool {
+        !self.area.is_empty() || self.has_environment()
+    }
+
     /// Whether the scene has a (non-black) environment.
     pub fn has_environment(&self) -> bool {
         self.environment != Vec3::ZERO
@@ -116,10 +122,10 @@ impl<'a> SceneLights<'a> {
         u: Vec2,
         time: f32,
     ) -> Option<LightDirection> {
-        let pick = self.pick_probability();
         let x = receiver.p;
         let found = match light {
             LightRef::Area(i) => {
+                let pick = self.pick_probability();
                 let light = &self.area[i];
                 let sample = light.sample(x, u, self.sampling)?;
                 let to_light = sample.p - x;
@@ -147,6 +153,7 @@ impl<'a> SceneLights<'a> {
                 }
             }
             LightRef::Environment => {
+                let pick = self.pick_probability();
                 let wi = sample_uniform_sphere(u);
                 LightDirection {
                     wi,

@@ -10,8 +10,9 @@ use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
 use ch07_soft_shadows::SoftShadowScene;
 use ch07_soft_shadows::cli::LightArgs;
 use ch08_path_tracing::cli::PathArgs;
+use ch08_path_tracing::dimensions::render_counted;
 use ch08_path_tracing::scene_file::convert;
-use ch08_path_tracing::{Method, figures, render_with};
+use ch08_path_tracing::{Method, figures};
 use clap::{Parser, Subcommand};
 use common::cli::{FiguresArgs, RenderArgs, report_error};
 use common::render::Budget;
@@ -140,12 +141,22 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         light_sampling: command.lights.options().sampling,
         fuzz: command.fuzzy.fuzz,
     };
-    let rendered = match settings.budget {
+    // Dimensions are counted only for --stats, where they are written.
+    let count = command.args.stats.is_some();
+    let (rendered, dimensions) = match settings.budget {
         Budget::Samples(spp) if world.moves() => {
             let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
-            render_with(&scene, method, &lens, &settings, &sampler, &filter)
+            render_counted(count, &scene, method, &lens, &settings, &sampler, &filter)
         }
-        _ => render_with(&scene, method, &lens, &settings, &pixel_sampler, &filter),
+        _ => render_counted(
+            count,
+            &scene,
+            method,
+            &lens,
+            &settings,
+            &pixel_sampler,
+            &filter,
+        ),
     };
     let mut extra = serde_json::json!({
         "scene": path.display().to_string(),
@@ -164,6 +175,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         .as_object_mut()
         .context("a JSON object")?
         .extend(command.fuzzy.stats());
+    if let Some(dimensions) = dimensions {
+        extra["dimensions_per_path"] = dimensions.to_json();
+    }
     command.args.write_outputs(&rendered, extra)?;
     eprintln!(
         "wrote {} ({}x{}, {} spp, {:.2} s, {:.0} rays/s)",

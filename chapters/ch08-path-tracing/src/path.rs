@@ -19,7 +19,10 @@
 //!
 //! Random numbers, after the camera's: per bounce, the light pick (only with several lights)
 //! and the light point (two; none for a point light) when NEE runs, then the BSDF's (see
-//! [`crate::bsdf`]), then one for the roulette when it is active.
+//! [`crate::bsdf`]), then one for the roulette when it is active. A scene pays only for what
+//! it has: without lights there is no light sample, and when no ray can find emission (no
+//! area light, no environment) the last segment, which could only find emission, is not
+//! traced. [`crate::dimensions`] counts the numbers a path draws.
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
@@ -94,8 +97,14 @@ impl PathTracer<'_> {
                 fuzz: self.fuzz,
             };
             let wo = -ray.dir.normalize();
-            if self.options.nee && !bsdf.is_delta() {
+            if self.options.nee && self.lights.count() > 0 && !bsdf.is_delta() {
                 radiance += throughput * self.light_sample(&bsdf, wo, ray.time, sampler, counters);
+            }
+            if depth + 1 >= self.options.max_depth && !self.lights.can_be_hit() {
+                // The next segment would be the last: all it could find is emission, and no
+                // ray can hit a point light. Its direction, ray and numbers are skipped; they
+                // were the sample's last, so the image is the same.
+                break;
             }
             let Some(sample) = bsdf.sample(wo, sampler) else {
                 break;
@@ -191,11 +200,17 @@ impl PathTracer<'_> {
             return Vec3::ZERO;
         };
         let f_cos = bsdf.eval(wo, sample.wi);
+        // A point light's weight is 1 whatever the BSDF's density, so it is not computed.
+        let bsdf_pdf = if sample.pdf.is_finite() {
+            bsdf.pdf(wo, sample.wi)
+        } else {
+            0.0
+        };
         let contribution = light_sample_contribution(
             sample.radiance,
             f_cos,
             sample.pdf,
-            bsdf.pdf(wo, sample.wi),
+            bsdf_pdf,
             self.lights.pick_probability(),
             self.options.mis,
         );

@@ -1,0 +1,173 @@
+//! How many dimensions a path draws, and that counting them leaves the image alone.
+//!
+//! The scenes look at one big matte plane that fills the view, so every camera ray hits it
+//! and every bounce off it leaves the scene: each path's count is then known exactly.
+//!
+//! At `max_depth` 2 a path is the camera ray and one light sample at the plane. With one
+//! point light that sample draws nothing (no pick among one light, no point on a point), and
+//! the BSDF direction that would extend the path is not drawn either: its segment would be
+//! the last, and could only find emission, which a scene of point lights has none of. So a
+//! static pinhole path draws exactly the 2 numbers of its pixel position.
+
+use ch01_whitted::camera::{CameraFrame, PinholeCamera};
+use ch01_whitted::light::PointLight;
+use ch01_whitted::material::Material;
+use ch01_whitted::scene::SceneBuilder;
+use ch04_depth_of_field::Lens;
+use ch05_motion_blur::{AnimatedTransform, MotionScene, MovingShape, Shutter};
+use ch06_fuzzy_reflections::FuzzyScene;
+use ch07_soft_shadows::SoftShadowScene;
+use ch08_path_tracing::dimensions::{DimensionStats, render_counted};
+use ch08_path_tracing::{Method, PathOptions};
+use common::film::PixelBoxFilter;
+use common::geometry::{Quad, Shape, Sphere};
+use common::render::RenderSettings;
+use common::sampler::IndependentSampler;
+use glam::{Mat4, Vec3};
+
+/// The plane, seen by a camera 5 units in front of it, lit by `lights` point lights.
+fn plane(lights: usize) -> SceneBuilder {
+    let mut builder = SceneBuilder::new().shape(
+        // X x Y = +Z: the plane faces the camera.
+        Shape::Quad(Quad::new(
+            Vec3::new(-10.0, -10.0, 0.0),
+            20.0 * Vec3::X,
+            20.0 * Vec3::Y,
+        )),
+        Material::diffuse(Vec3::splat(0.7)),
+    );
+    for i in 0..lights {
+        builder = builder.light(PointLight {
+            position: Vec3::new(i as f32, 0.5, 3.0),
+            intensity: Vec3::splat(10.0),
+        });
+    }
+    builder
+}
+
+/// `builder`'s scene as chapter 08 renders it, with `moving` shapes, seen over `shutter`.
+fn scene(
+    builder: SceneBuilder,
+    moving: Vec<(MovingShape, Material)>,
+    shutter: Shutter,
+) -> SoftShadowScene {
+    let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y)
+        .expect("a valid camera direction");
+    let still = builder.build(PinholeCamera::new(frame, 40.0, 8, 8), 2);
+    let world = MotionScene::new(still, moving, None, shutter);
+    SoftShadowScene::without_lights(FuzzyScene::smooth(world))
+}
+
+fn static_scene(lights: usize) -> SoftShadowScene {
+    scene(plane(lights), Vec::new(), Shutter::INSTANT)
+}
+
+/// A small matte sphere in front of the plane, sliding sideways over the shutter.
+fn sliding_sphere() -> (MovingShape, Material) {
+    let motion = AnimatedTransform::new(&[
+        (0.0, Mat4::IDENTITY),
+        (1.0, Mat4::from_translation(0.5 * Vec3::X)),
+    ])
+    .expect("valid keyframes");
+    let sphere = Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, 1.0), 0.3));
+    (
+        MovingShape::new(sphere, motion),
+        Material::diffuse(Vec3::splat(0.5)),
+    )
+}
+
+/// Renders 8 x 8 pixels at 2 samples and returns the dimensions per path.
+fn dimensions(scene: &SoftShadowScene, lens: &Lens, max_depth: u32) -> DimensionStats {
+    let (_, stats) = render_counted(
+        true,
+        scene,
+        Method::new(PathOptions::with_depth(max_depth)),
+        lens,
+        &RenderSettings::new(8, 8, 2),
+        &IndependentSampler::new(1),
+        &PixelBoxFilter,
+    );
+    let stats = stats.expect("counted");
+    assert_eq!(stats.paths, 8 * 8 * 2);
+    stats
+}
+
+/// Asserts that every path drew exactly `n` dimensions.
+fn assert_exactly(stats: DimensionStats, n: u64) {
+    assert_eq!((stats.mean, stats.max), (n as f64, n), "{stats:?}");
+}
+
+fn thin_lens() -> Lens {
+    Lens::new(0.1, 5.0).expect("a valid lens")
+}
+
+#[test]
+fn a_static_pinhole_path_to_one_point_light_draws_only_its_pixel() {
+    // Pixel 2, light sample 0 (one light: no pick; a point: no point on it), no BSDF numbers.
+    assert_exactly(dimensions(&static_scene(1), &Lens::PINHOLE, 2), 2);
+}
+
+#[test]
+fn a_lens_adds_exactly_two() {
+    assert_exactly(dimensions(&static_scene(1), &thin_lens(), 2), 4);
+}
+
+#[test]
+fn motion_adds_exactly_one() {
+    let shutter = Shutter::new(0.0, 1.0).expect("a valid shutter");
+    let moving = scene(plane(1), vec![sliding_sphere()], shutter);
+    assert_exactly(dimensions(&moving, &Lens::PINHOLE, 2), 3);
+    assert_exactly(dimensions(&moving, &thin_lens(), 2), 5);
+}
+
+#[test]
+fn only_several_lights_draw_a_pick() {
+    // Pixel 2, the light pick 1.
+    assert_exactly(dimensions(&static_scene(2), &Lens::PINHOLE, 2), 3);
+}
+
+#[test]
+fn a_scene_without_lights_draws_no_light_numbers() {
+    assert_exactly(dimensions(&static_scene(0), &Lens::PINHOLE, 2), 2);
+    // One bounce more: pixel 2, then the BSDF's 2 at the plane; the bounce leaves the scene.
+    // Two lights would add their pick at the plane (1): 5.
+    assert_exactly(dimensions(&static_scene(0), &Lens::PINHOLE, 3), 4);
+    assert_exactly(dimensions(&static_scene(2), &Lens::PINHOLE, 3), 5);
+}
+
+#[test]
+fn counting_leaves_the_image_bit_identical() {
+    // Everything that draws: a lens, motion, two point lights and an area light, glass.
+    let shutter = Shutter::new(0.0, 1.0).expect("a valid shutter");
+    let builder = plane(2)
+        .shape(
+            Shape::Sphere(Sphere::new(Vec3::new(-0.6, 0.3, 1.0), 0.4)),
+            Material::glass(1.5),
+        )
+        .shape(
+            Shape::Quad(Quad::new(Vec3::new(0.5, 1.0, 2.0), Vec3::X, -Vec3::Z)),
+            Material::diffuse(Vec3::ZERO),
+        );
+    let base = scene(builder, vec![sliding_sphere()], shutter);
+    let lamp = 2; // the third still shape
+    let scene = SoftShadowScene::new(base.scene, &[(lamp, Vec3::splat(4.0))]).expect("a lamp");
+    let render = |count| {
+        render_counted(
+            count,
+            &scene,
+            Method::new(PathOptions::with_depth(6)),
+            &thin_lens(),
+            &RenderSettings::new(16, 16, 4),
+            &IndependentSampler::new(3),
+            &PixelBoxFilter,
+        )
+    };
+    let (plain, none) = render(false);
+    let (counted, stats) = render(true);
+    assert!(none.is_none());
+    assert_eq!(plain.image, counted.image);
+    assert_eq!(plain.stats.rays, counted.stats.rays);
+    let stats = stats.expect("counted");
+    // Pixel, time and lens (5), then at least the plane's light sample and BSDF numbers.
+    assert!(stats.mean > 5.0 && stats.max > 10, "{stats:?}");
+}
