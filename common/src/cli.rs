@@ -7,6 +7,7 @@
 use crate::film::PixelSum;
 use crate::output::{self, OutputError};
 use crate::render::{Budget, RenderOutput, RenderSettings, StopFlag};
+use crate::scene::{SceneDescription, SceneError, load_scene_file};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::OnceLock;
@@ -87,6 +88,17 @@ pub enum CliError {
     /// An output could not be written.
     #[error(transparent)]
     Output(#[from] OutputError),
+    /// The scene file could not be read.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// The scene file was read, but the chapter cannot render what it describes.
+    #[error("{}: {message}", file.display())]
+    Unrenderable {
+        /// The scene file.
+        file: PathBuf,
+        /// Why, in the chapter's words (which chapter brings the feature, say).
+        message: String,
+    },
     /// Any other check that failed, with its explanation.
     #[error("{0}")]
     Invalid(String),
@@ -111,6 +123,30 @@ fn describe_interrupt(written: Option<&Path>, spp: u64, requested_spp: Option<u6
         ),
         None => "interrupted before the first pass completed: nothing written".to_string(),
     }
+}
+
+/// A scene file read for a chapter's `render`: loaded with the `-D` overrides, the loader's
+/// warnings printed, turned into the chapter's scene by its `convert` (whose refusal is
+/// prefixed with the file's name), and the notes that `notes` finds in the result printed:
+/// the light the chapter's method leaves out, the settings it ignores.
+pub fn read_scene_file<T>(
+    path: &Path,
+    defines: &[(String, String)],
+    convert: impl FnOnce(&SceneDescription) -> Result<T, String>,
+    notes: impl FnOnce(&T) -> &[String],
+) -> Result<T, CliError> {
+    let loaded = load_scene_file(path, defines)?;
+    for warning in &loaded.warnings {
+        eprintln!("{warning}");
+    }
+    let converted = convert(&loaded.scene).map_err(|message| CliError::Unrenderable {
+        file: path.to_path_buf(),
+        message,
+    })?;
+    for note in notes(&converted) {
+        eprintln!("note: {note}");
+    }
+    Ok(converted)
 }
 
 /// The stop flag of the process's renders, set by Ctrl-C (SIGINT).

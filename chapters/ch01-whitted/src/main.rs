@@ -4,9 +4,8 @@ use ch01_whitted::scene_file::convert;
 use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch01_whitted::{PixelPattern, figures, render};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
 use common::render::Budget;
-use common::scene::load_scene_file;
 use std::process::ExitCode;
 
 /// Chapter 01 of the workbook: Whitted ray tracing.
@@ -62,15 +61,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     }
     let (mut scene, default_spp, scene_name) = match &command.args.scene {
         Some(path) => {
-            let loaded = load_scene_file(path, &command.args.define)?;
-            for warning in &loaded.warnings {
-                eprintln!("{warning}");
-            }
-            let converted =
-                convert(&loaded.scene).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-            for note in &converted.notes {
-                eprintln!("note: {note}");
-            }
+            let converted = read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
             (converted.scene, converted.spp, path.display().to_string())
         }
         None => (

@@ -6,8 +6,7 @@ use ch03_anti_aliasing::scene_file::convert;
 use ch03_anti_aliasing::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch03_anti_aliasing::{figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
-use common::scene::load_scene_file;
+use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
 use std::process::ExitCode;
 
 /// Chapter 03 of the workbook: anti-aliasing.
@@ -60,15 +59,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (mut scene, file_filter, file_sampler, default_spp, scene_name) = match &command.args.scene
     {
         Some(path) => {
-            let loaded = load_scene_file(path, &command.args.define)?;
-            for warning in &loaded.warnings {
-                eprintln!("{warning}");
-            }
-            let converted =
-                convert(&loaded.scene).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-            for note in &converted.notes {
-                eprintln!("note: {note}");
-            }
+            let converted = read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
             (
                 converted.scene,
                 Some(converted.filter),

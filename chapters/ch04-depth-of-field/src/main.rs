@@ -7,8 +7,7 @@ use ch04_depth_of_field::scene_file::convert;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
-use common::scene::load_scene_file;
+use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
 use std::process::ExitCode;
 
 /// Chapter 04 of the workbook: depth of field.
@@ -63,15 +62,8 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (mut scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match &command.args.scene {
             Some(path) => {
-                let loaded = load_scene_file(path, &command.args.define)?;
-                for warning in &loaded.warnings {
-                    eprintln!("{warning}");
-                }
-                let converted = convert(&loaded.scene)
-                    .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-                for note in &converted.notes {
-                    eprintln!("note: {note}");
-                }
+                let converted =
+                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
                 (
                     converted.scene,
                     converted.lens,

@@ -9,9 +9,8 @@ use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
 use ch05_motion_blur::{Shutter, StratifiedTime, TimeSampling, figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
 use common::render::Budget;
-use common::scene::load_scene_file;
 use std::process::ExitCode;
 
 /// Chapter 05 of the workbook: motion blur.
@@ -88,15 +87,8 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (world, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match &command.args.scene {
             Some(path) => {
-                let loaded = load_scene_file(path, &command.args.define)?;
-                for warning in &loaded.warnings {
-                    eprintln!("{warning}");
-                }
-                let converted = convert(&loaded.scene)
-                    .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-                for note in &converted.notes {
-                    eprintln!("note: {note}");
-                }
+                let converted =
+                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
                 (
                     converted.world,
                     converted.lens,

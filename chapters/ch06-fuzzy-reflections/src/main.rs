@@ -10,9 +10,8 @@ use ch06_fuzzy_reflections::scene_file::convert;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
 use ch06_fuzzy_reflections::{PointLights, figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
 use common::render::Budget;
-use common::scene::load_scene_file;
 use std::process::ExitCode;
 
 /// Chapter 06 of the workbook: fuzzy reflections and refractions.
@@ -65,15 +64,8 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match &command.args.scene {
             Some(path) => {
-                let loaded = load_scene_file(path, &command.args.define)?;
-                for warning in &loaded.warnings {
-                    eprintln!("{warning}");
-                }
-                let converted = convert(&loaded.scene)
-                    .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-                for note in &converted.notes {
-                    eprintln!("note: {note}");
-                }
+                let converted =
+                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
                 (
                     converted.scene,
                     converted.lens,

@@ -14,9 +14,8 @@ use ch08_path_tracing::dimensions::render_counted;
 use ch08_path_tracing::scene_file::convert;
 use ch08_path_tracing::{Method, figures};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
 use common::render::Budget;
-use common::scene::load_scene_file;
 use std::process::ExitCode;
 
 /// Chapter 08 of the workbook: the path tracer.
@@ -95,16 +94,11 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             "render needs a scene: --scene FILE.xml (see chapters/ch08-path-tracing/scenes/)"
         );
     };
-    let loaded = load_scene_file(path, &command.args.define)?;
-    for warning in &loaded.warnings {
-        eprintln!("{warning}");
-    }
-    let scene = convert(&loaded.scene).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    let scene = read_scene_file(path, &command.args.define, convert, |s| {
+        &s.converted.notes[..]
+    })?;
     let file_options = scene.options;
     let converted = scene.converted;
-    for note in &converted.notes {
-        eprintln!("note: {note}");
-    }
     let fuzzy_scene = command.fuzzy.apply(converted.scene.scene)?;
     let max_depth = fuzzy_scene.world.scene.max_depth;
     let scene = SoftShadowScene {
