@@ -225,3 +225,37 @@ fn chapter_07_is_thread_independent_with_every_light_option() {
         }
     }
 }
+
+#[test]
+fn chapter_08_path_tracing_is_thread_independent_with_every_estimator() {
+    use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+    use ch08_path_tracing::{Method, MisHeuristic, PathOptions, render_with};
+    let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
+    for builtin in Builtin::ALL {
+        let scene = builtin.build(DEFAULT_DEPTH, 1.0);
+        for (nee, mis, rr_depth) in [
+            (true, MisHeuristic::Power, Some(2)),
+            (true, MisHeuristic::None, None),
+            (false, MisHeuristic::Balance, Some(1)),
+        ] {
+            let method = Method::new(PathOptions {
+                nee,
+                mis,
+                rr_depth,
+                max_depth: 8,
+            });
+            let sampler = PixelSampler::new(PixelSamplerKind::Stratified, 4, 11).unwrap();
+            assert_thread_independent(&format!("ch08 {} {method:?}", builtin.name()), |t| {
+                render_with(
+                    &scene,
+                    method,
+                    &Lens::PINHOLE,
+                    &settings(t, 4),
+                    &sampler,
+                    &filter,
+                )
+                .image
+            });
+        }
+    }
+}

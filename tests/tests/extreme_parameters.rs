@@ -223,6 +223,28 @@ proptest! {
     }
 
     #[test]
+    fn every_path_estimator_and_depth_gives_finite_pixels(
+        builtin in prop::sample::select(ch07_soft_shadows::scenes::Builtin::ALL.to_vec()),
+        light_scale in prop_oneof![Just(1e-4f32), log_uniform(1e-4, 1e4), Just(1e4f32)],
+        nee in any::<bool>(),
+        mis in prop::sample::select(ch08_path_tracing::MisHeuristic::ALL.to_vec()),
+        rr_depth in prop_oneof![Just(None), (1u32..=8).prop_map(Some)],
+        max_depth in prop_oneof![1u32..=16, Just(1000u32)],
+        spp in 1u64..=4,
+        (width, height) in (1u32..=6, 1u32..=5),
+        seed in any::<u64>(),
+    ) {
+        use ch08_path_tracing::{Method, PathOptions, render_with};
+        let scene = builtin.build(12, light_scale);
+        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth });
+        let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+        let settings = RenderSettings::new(width, height, spp);
+        let pixels = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
+        let out = render_with(&scene, method, &Lens::PINHOLE, &settings, &pixels, &filter);
+        check_finite(&out)?;
+    }
+
+    #[test]
     fn every_lens_gives_finite_pixels(
         params in whitted_params(),
         radius in prop_oneof![Just(0.0f32), log_uniform(1e-6, 1e4), Just(1e4f32)],
