@@ -15,6 +15,10 @@ pub enum ApertureShape {
     Polygon,
 }
 
+/// Where a pinhole scene focuses when the command line opens an aperture without saying where
+/// (`--focus-distance`): about the depth of the later chapters' built-in scenes.
+pub const PINHOLE_SCENE_FOCUS: f32 = 5.0;
+
 /// `--aperture-radius` or `--f-number` with `--focal-length`, `--focus-distance`, and the
 /// aperture's shape and sampling.
 #[derive(clap::Args, Clone, Debug, Default)]
@@ -99,6 +103,21 @@ impl LensArgs {
             lens = lens.with_warp(warp);
         }
         Ok(lens)
+    }
+
+    /// [`lens`](Self::lens) for the later chapters, whose scenes often have no lens: a
+    /// pinhole scene given an aperture on the command line focuses
+    /// [`PINHOLE_SCENE_FOCUS`] away unless `--focus-distance` says otherwise.
+    pub fn lens_or_pinhole(&self, scene_lens: Lens) -> anyhow::Result<Lens> {
+        let scene_lens = if scene_lens.is_pinhole() {
+            Lens {
+                focus_distance: PINHOLE_SCENE_FOCUS,
+                ..scene_lens
+            }
+        } else {
+            scene_lens
+        };
+        self.lens(scene_lens)
     }
 }
 

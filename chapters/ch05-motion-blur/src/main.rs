@@ -112,16 +112,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         command.shutter_close.unwrap_or(world.shutter.close),
     )
     .map_err(|e| anyhow::anyhow!("--shutter-open and --shutter-close: {e}"))?;
-    // A pinhole scene given an aperture on the command line focuses 5 units away unless told.
-    let scene_lens = if scene_lens.is_pinhole() {
-        Lens {
-            focus_distance: 5.0,
-            ..scene_lens
-        }
-    } else {
-        scene_lens
-    };
-    let lens = command.lens.lens(scene_lens)?;
+    let lens = command.lens.lens_or_pinhole(scene_lens)?;
     let mut world = world.with_shutter(shutter, command.stretches as usize);
     if let Some(max_depth) = command.max_depth {
         world.scene.max_depth = max_depth;

@@ -13,6 +13,7 @@
 //! position and the lens, which other samplers stratify by sample index too.
 
 use ch03_anti_aliasing::PixelSampler;
+use common::render::Budget;
 use common::sampler::{IndependentSampler, Sampler, mix};
 use glam::{UVec2, Vec2};
 
@@ -37,6 +38,16 @@ pub enum TimeSampling {
 }
 
 impl TimeSampling {
+    /// What a render that offers no choice uses: stratified time when something moves and the
+    /// budget is a sample count (the strata are laid out for it), else independent time (and
+    /// a scene that does not move draws no time at all, so the choice changes nothing).
+    pub fn by_default(moves: bool, budget: &Budget) -> Self {
+        match budget {
+            Budget::Samples(_) if moves => TimeSampling::Stratified,
+            _ => TimeSampling::Independent,
+        }
+    }
+
     /// The name used on the command line.
     pub fn name(self) -> &'static str {
         match self {

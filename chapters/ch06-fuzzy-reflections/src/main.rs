@@ -88,16 +88,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             ),
         };
     let scene = command.fuzzy.apply(scene)?;
-    // A pinhole scene given an aperture on the command line focuses 5 units away unless told.
-    let scene_lens = if scene_lens.is_pinhole() {
-        Lens {
-            focus_distance: 5.0,
-            ..scene_lens
-        }
-    } else {
-        scene_lens
-    };
-    let lens = command.lens.lens(scene_lens)?;
+    let lens = command.lens.lens_or_pinhole(scene_lens)?;
     let filter = command.anti_aliasing.filter(file_filter)?;
     let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
     let camera = scene.world.scene.camera;
@@ -110,11 +101,10 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             .pixel_sampler(sampler_kind, &settings.budget, command.args.seed)?;
     command.args.check_outputs()?;
     let options = command.fuzzy.options();
-    // Stratified time when something moves and the budget is a sample count (chapter 05's
-    // default); without motion no time is drawn and the choice changes nothing.
     let shutter: Shutter = scene.world.shutter;
-    let rendered = match settings.budget {
-        Budget::Samples(spp) if scene.world.moves() => {
+    let time_sampling = TimeSampling::by_default(scene.world.moves(), &settings.budget);
+    let rendered = match (time_sampling, settings.budget) {
+        (TimeSampling::Stratified, Budget::Samples(spp)) => {
             let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
             render_with(
                 &scene,
@@ -135,11 +125,6 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             &pixel_sampler,
             &filter,
         ),
-    };
-    let time_sampling = if scene.world.moves() && matches!(settings.budget, Budget::Samples(_)) {
-        TimeSampling::Stratified
-    } else {
-        TimeSampling::Independent
     };
     let mut extra = serde_json::json!({
         "scene": scene_name,

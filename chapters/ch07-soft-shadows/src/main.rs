@@ -108,16 +108,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         scene: command.fuzzy.apply(scene.scene)?,
         ..scene
     };
-    // A pinhole scene given an aperture on the command line focuses 5 units away unless told.
-    let scene_lens = if scene_lens.is_pinhole() {
-        Lens {
-            focus_distance: 5.0,
-            ..scene_lens
-        }
-    } else {
-        scene_lens
-    };
-    let lens = command.lens.lens(scene_lens)?;
+    let lens = command.lens.lens_or_pinhole(scene_lens)?;
     let filter = command.anti_aliasing.filter(file_filter)?;
     let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
     let world = &scene.scene.world;
@@ -133,11 +124,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let options = command.fuzzy.options();
     let lights = command.lights.options();
     let shutter = world.shutter;
-    let moves = world.moves();
-    // Stratified time when something moves and the budget is a sample count (chapter 05's
-    // default); without motion no time is drawn and the choice changes nothing.
-    let rendered = match settings.budget {
-        Budget::Samples(spp) if moves => {
+    let time_sampling = TimeSampling::by_default(world.moves(), &settings.budget);
+    let rendered = match (time_sampling, settings.budget) {
+        (TimeSampling::Stratified, Budget::Samples(spp)) => {
             let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
             render_with(&scene, lights, options, &lens, &settings, &sampler, &filter)
         }
@@ -150,11 +139,6 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             &pixel_sampler,
             &filter,
         ),
-    };
-    let time_sampling = if moves && matches!(settings.budget, Budget::Samples(_)) {
-        TimeSampling::Stratified
-    } else {
-        TimeSampling::Independent
     };
     let mut extra = serde_json::json!({
         "scene": scene_name,

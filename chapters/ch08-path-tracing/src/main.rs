@@ -2,9 +2,8 @@
 
 use anyhow::Context;
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
-use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::cli::LensArgs;
-use ch05_motion_blur::StratifiedTime;
+use ch05_motion_blur::{StratifiedTime, TimeSampling};
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
 use ch07_soft_shadows::SoftShadowScene;
@@ -109,15 +108,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         max_depth,
         ..command.path.options(file_options)
     };
-    let scene_lens = if converted.lens.is_pinhole() {
-        Lens {
-            focus_distance: 5.0,
-            ..converted.lens
-        }
-    } else {
-        converted.lens
-    };
-    let lens = command.lens.lens(scene_lens)?;
+    let lens = command.lens.lens_or_pinhole(converted.lens)?;
     let filter = command.anti_aliasing.filter(Some(converted.filter))?;
     let sampler_kind = command.anti_aliasing.sampler_kind(Some(converted.sampler));
     let world = &scene.scene.world;
@@ -137,8 +128,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     };
     // Dimensions are counted only for --stats, where they are written.
     let count = command.args.stats.is_some();
-    let (rendered, dimensions) = match settings.budget {
-        Budget::Samples(spp) if world.moves() => {
+    let time_sampling = TimeSampling::by_default(world.moves(), &settings.budget);
+    let (rendered, dimensions) = match (time_sampling, settings.budget) {
+        (TimeSampling::Stratified, Budget::Samples(spp)) => {
             let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
             render_counted(count, &scene, method, &lens, &settings, &sampler, &filter)
         }
