@@ -1,6 +1,6 @@
 //! Axis-aligned bounding boxes and the slab test that decides whether a ray can reach one.
 
-use glam::Vec3;
+use glam::{BVec3A, Vec3, Vec3A};
 
 use super::float::{gamma, next_float_down, next_float_up};
 use crate::Ray;
@@ -146,25 +146,30 @@ impl Aabb {
     ///   flat box would miss it. Each exit is multiplied by `1 + 2 γ(3)`, which provably covers
     ///   the three roundings in `(max - o) * inv_dir`.
     /// * A ray parallel to a slab has `inv_dir = ±∞`. If its origin lies exactly on the slab's
-    ///   plane, `0 * ∞` is NaN. `f32::max` and `f32::min` return the *other* operand when one is
-    ///   NaN, so such a slab simply does not narrow the range: the ray counts as inside it,
-    ///   which is the conservative answer.
+    ///   plane, `0 * ∞` is NaN. Such a bound is replaced by one that cannot narrow the range
+    ///   (0 for an entry, `∞` for an exit): the ray counts as inside that slab, which is the
+    ///   conservative answer.
+    ///
+    /// The three axes are computed at once in SIMD lanes; each lane rounds exactly as the
+    /// scalar `f32` operations would, so the answer does not depend on the instruction set.
     fn slab_interval(&self, ray: &SlabRay, t_max: f32) -> Option<(f32, f32)> {
         const EXIT_SLACK: f32 = 1.0 + 2.0 * gamma(3);
-        let mut t_enter = 0.0f32;
-        let mut t_exit = t_max;
-        for axis in 0..3 {
-            let (near, far) = if ray.dir_is_negative[axis] {
-                (self.max[axis], self.min[axis])
-            } else {
-                (self.min[axis], self.max[axis])
-            };
-            let t_near = (near - ray.origin[axis]) * ray.inv_dir[axis];
-            let t_far = (far - ray.origin[axis]) * ray.inv_dir[axis] * EXIT_SLACK;
-            t_enter = t_enter.max(t_near);
-            t_exit = t_exit.min(t_far);
-        }
-        (t_enter <= t_exit).then_some((t_enter, t_exit))
+        let ray = &ray.simd;
+        let (min, max) = (Vec3A::from(self.min), Vec3A::from(self.max));
+        let near = Vec3A::select(ray.negative, max, min);
+        let far = Vec3A::select(ray.negative, min, max);
+        let t_near = (near - ray.origin) * ray.inv_dir;
+        let t_far = (far - ray.origin) * ray.inv_dir * EXIT_SLACK;
+        // A NaN slab bound (0 × ∞) must not narrow the range: it becomes a bound that cannot.
+        let t_near = Vec3A::select(t_near.is_nan_mask(), Vec3A::ZERO, t_near);
+        let t_far = Vec3A::select(t_far.is_nan_mask(), Vec3A::INFINITY, t_far);
+        // Comparisons rather than `f32::max` and `f32::min`, so that a NaN `t_max` is kept
+        // (and nothing is hit) rather than skipped.
+        let later = |a: f32, b: f32| if b > a { b } else { a };
+        let earlier = |a: f32, b: f32| if b < a { b } else { a };
+        let t_enter = later(0.0, t_near.max_element());
+        let t_exit = earlier(t_max, t_far.min_element());
+        (t_enter <= t_exit).then_some((t_enter, t_exit)) // false for a NaN t_max
     }
 }
 
@@ -178,16 +183,34 @@ pub struct SlabRay {
     /// Whether the ray travels towards smaller coordinates on each axis. Decided from the sign
     /// of `inv_dir`, so `dir = -0` counts as negative, matching `inv_dir = -∞`.
     pub dir_is_negative: [bool; 3],
+    /// The same three as SIMD vectors, for the slab test: it runs for every BVH node a ray
+    /// visits, and a SIMD vector computes all three axes in one instruction per operation,
+    /// each lane rounding exactly as `f32` does.
+    simd: SimdSlabRay,
+}
+
+/// The slab test's inputs as SIMD vectors.
+#[derive(Clone, Copy, Debug)]
+struct SimdSlabRay {
+    origin: Vec3A,
+    inv_dir: Vec3A,
+    negative: BVec3A,
 }
 
 impl SlabRay {
     /// Precompute the inverse direction of `ray`.
     pub fn new(ray: &Ray) -> Self {
         let inv_dir = ray.dir.recip();
+        let dir_is_negative = [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0];
         Self {
             origin: ray.origin,
             inv_dir,
-            dir_is_negative: inv_dir.to_array().map(|c| c < 0.0),
+            dir_is_negative,
+            simd: SimdSlabRay {
+                origin: ray.origin.into(),
+                inv_dir: inv_dir.into(),
+                negative: BVec3A::from_array(dir_is_negative),
+            },
         }
     }
 }

@@ -30,11 +30,13 @@ pub(crate) type IntervalVec3 = [Interval; 3];
 
 impl Interval {
     /// A value known exactly (an input such as a ray origin or a radius).
+    #[inline]
     pub fn exact(v: f32) -> Self {
         Self { lo: v, hi: v }
     }
 
     /// `[lo, hi]` widened by one float on each side, to cover the rounding that produced them.
+    #[inline]
     fn widened(lo: f32, hi: f32) -> Self {
         Self {
             lo: next_float_down(lo),
@@ -49,16 +51,19 @@ impl Interval {
     };
 
     /// The best single-float estimate of the exact value.
+    #[inline]
     pub fn midpoint(self) -> f32 {
         0.5 * (self.lo + self.hi)
     }
 
     /// Whether zero lies inside.
+    #[inline]
     pub fn contains_zero(self) -> bool {
         self.lo <= 0.0 && self.hi >= 0.0
     }
 
     /// `x²`, which unlike `x * x` knows that both factors are the same and so is never negative.
+    #[inline]
     pub fn squared(self) -> Self {
         let lo_sq = self.lo * self.lo;
         let hi_sq = self.hi * self.hi;
@@ -73,6 +78,7 @@ impl Interval {
     }
 
     /// `√x`, treating any negative part of the interval as zero.
+    #[inline]
     pub fn sqrt(self) -> Self {
         Self {
             lo: next_float_down(self.lo.max(0.0).sqrt()).max(0.0),
@@ -81,6 +87,7 @@ impl Interval {
     }
 
     /// The interval of four candidate end points (products or quotients of the ends).
+    #[inline]
     fn spanning(candidates: [f32; 4]) -> Self {
         let lo = candidates.iter().copied().fold(f32::INFINITY, f32::min);
         let hi = candidates.iter().copied().fold(f32::NEG_INFINITY, f32::max);
@@ -90,6 +97,7 @@ impl Interval {
 
 impl Add for Interval {
     type Output = Self;
+    #[inline]
     fn add(self, rhs: Self) -> Self {
         Self::widened(self.lo + rhs.lo, self.hi + rhs.hi)
     }
@@ -97,6 +105,7 @@ impl Add for Interval {
 
 impl Sub for Interval {
     type Output = Self;
+    #[inline]
     fn sub(self, rhs: Self) -> Self {
         Self::widened(self.lo - rhs.hi, self.hi - rhs.lo)
     }
@@ -105,6 +114,7 @@ impl Sub for Interval {
 impl Neg for Interval {
     type Output = Self;
     /// Negation is exact, so no widening.
+    #[inline]
     fn neg(self) -> Self {
         Self {
             lo: -self.hi,
@@ -115,6 +125,7 @@ impl Neg for Interval {
 
 impl Mul for Interval {
     type Output = Self;
+    #[inline]
     fn mul(self, rhs: Self) -> Self {
         Self::spanning([
             self.lo * rhs.lo,
@@ -127,6 +138,7 @@ impl Mul for Interval {
 
 impl Div for Interval {
     type Output = Self;
+    #[inline]
     fn div(self, rhs: Self) -> Self {
         if rhs.contains_zero() {
             return Self::EVERYTHING;
@@ -141,21 +153,35 @@ impl Div for Interval {
 }
 
 /// The exact vector `v`.
+#[inline]
 pub(crate) fn exact_vec(v: Vec3) -> IntervalVec3 {
-    v.to_array().map(Interval::exact)
+    // Written out rather than `to_array().map(..)`, which the optimiser does not always unroll
+    // on this hot path (the same below).
+    [
+        Interval::exact(v.x),
+        Interval::exact(v.y),
+        Interval::exact(v.z),
+    ]
 }
 
 /// `a - b` for exactly known `a` and `b`, with the rounding of the subtraction accounted for.
+#[inline]
 pub(crate) fn difference(a: Vec3, b: Vec3) -> IntervalVec3 {
-    [0, 1, 2].map(|i| Interval::exact(a[i]) - Interval::exact(b[i]))
+    [
+        Interval::exact(a.x) - Interval::exact(b.x),
+        Interval::exact(a.y) - Interval::exact(b.y),
+        Interval::exact(a.z) - Interval::exact(b.z),
+    ]
 }
 
 /// The dot product of two interval vectors.
+#[inline]
 pub(crate) fn dot(a: IntervalVec3, b: IntervalVec3) -> Interval {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// The cross product of two interval vectors.
+#[inline]
 pub(crate) fn cross(a: IntervalVec3, b: IntervalVec3) -> IntervalVec3 {
     [
         a[1] * b[2] - a[2] * b[1],
@@ -165,6 +191,7 @@ pub(crate) fn cross(a: IntervalVec3, b: IntervalVec3) -> IntervalVec3 {
 }
 
 /// The squared length of an interval vector.
+#[inline]
 pub(crate) fn length_squared(a: IntervalVec3) -> Interval {
     a[0].squared() + a[1].squared() + a[2].squared()
 }

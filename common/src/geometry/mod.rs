@@ -40,5 +40,5 @@ pub use bvh::{Bvh, BvhHit, MAX_PRIMITIVES_PER_LEAF};
 pub use float::{MACHINE_EPSILON, gamma, next_float_down, next_float_up};
 pub use hit::SurfaceHit;
 pub use scene_geometry::Geometry;
-pub use shapes::{Disc, MeshError, Quad, Shape, Sphere, Triangle, TriangleMesh};
+pub use shapes::{Crossing, Disc, MeshError, Quad, Shape, Sphere, Triangle, TriangleMesh};
 pub use spawn::{SHADOW_EPSILON, offset_ray_origin};

@@ -3,7 +3,7 @@
 use super::aabb::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
-use super::shapes::Shape;
+use super::shapes::{Crossing, Shape};
 use crate::Ray;
 
 /// All the shapes of a scene and the BVH that finds which one a ray meets first.
@@ -28,23 +28,25 @@ impl Geometry {
     /// The nearest hit with `0 < t < ray.t_max`; its `shape` is an index into
     /// [`shapes`](Self::shapes).
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
-        let mut nearest: Option<SurfaceHit> = None;
+        // Every closer crossing replaces the last; the record is built for the nearest only.
+        let mut nearest: Option<(usize, Crossing)> = None;
         self.bvh.intersect(ray, |index, t_max| {
-            let hit = self.shapes[index].intersect(&Ray { t_max, ..*ray })?;
-            nearest = Some(SurfaceHit {
-                shape: index as u32,
-                ..hit
-            });
-            Some(hit.t)
+            let crossing = self.shapes[index].crossing(&Ray { t_max, ..*ray })?;
+            nearest = Some((index, crossing));
+            Some(crossing.t)
         });
-        nearest
+        let (index, crossing) = nearest?;
+        Some(SurfaceHit {
+            shape: index as u32,
+            ..self.shapes[index].surface_hit(crossing)
+        })
     }
 
     /// Whether anything lies on the ray before `ray.t_max` (a shadow test). Cheaper than
     /// [`intersect`](Self::intersect): it stops at the first hit found, nearest or not.
     pub fn occluded(&self, ray: &Ray) -> bool {
         self.bvh
-            .any_hit(ray, |index| self.shapes[index].intersect(ray).is_some())
+            .any_hit(ray, |index| self.shapes[index].crossing(ray).is_some())
     }
 
     /// The shapes, in the order given to [`new`](Self::new).

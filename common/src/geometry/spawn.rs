@@ -32,15 +32,20 @@ pub fn offset_ray_origin(p: Vec3, p_error: Vec3, n: Vec3, w: Vec3) -> Vec3 {
     let d = n.abs().dot(p_error);
     let offset = if w.dot(n) < 0.0 { -d * n } else { d * n };
     let moved = p + offset;
-    Vec3::from_array([0, 1, 2].map(|axis| {
-        if offset[axis] > 0.0 {
-            next_float_up(moved[axis])
-        } else if offset[axis] < 0.0 {
-            next_float_down(moved[axis])
+    let away = |moved: f32, offset: f32| {
+        if offset > 0.0 {
+            next_float_up(moved)
+        } else if offset < 0.0 {
+            next_float_down(moved)
         } else {
-            moved[axis]
+            moved
         }
-    }))
+    };
+    Vec3::new(
+        away(moved.x, offset.x),
+        away(moved.y, offset.y),
+        away(moved.z, offset.z),
+    )
 }
 
 #[cfg(test)]

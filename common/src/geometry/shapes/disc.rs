@@ -4,6 +4,7 @@ use std::f32::consts::{PI, TAU};
 
 use glam::{Vec2, Vec3};
 
+use super::Crossing;
 use super::plane::SpannedPlane;
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
@@ -101,6 +102,12 @@ impl Disc {
     /// coordinates `(a, b)` along the tangents, then `p = center + a tangent + b bitangent` with
     /// the error bound `γ(3) (|center| + |a tangent| + |b bitangent|)`.
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        self.crossing(ray)
+            .map(|crossing| self.surface_hit(crossing))
+    }
+
+    /// The crossing behind [`intersect`](Self::intersect), with `(a, b)`.
+    pub(crate) fn crossing(&self, ray: &Ray) -> Option<Crossing> {
         let has_area = self.radius > 0.0 && self.normal != Vec3::ZERO; // false for a NaN radius
         if !has_area {
             return None;
@@ -113,20 +120,29 @@ impl Disc {
         if r > self.radius {
             return None;
         }
+        Some(Crossing {
+            t,
+            coords: [a, b, r],
+        })
+    }
+
+    /// The hit record of a crossing.
+    pub(crate) fn surface_hit(&self, crossing: Crossing) -> SurfaceHit {
+        let [a, b, r] = crossing.coords;
         let p = self.point_at(a, b);
         let p_error =
             gamma(3) * (self.center.abs() + (a * self.tangent).abs() + (b * self.bitangent).abs());
         let phi = b.atan2(a);
         let phi = if phi < 0.0 { phi + TAU } else { phi };
-        Some(SurfaceHit {
-            t,
+        SurfaceHit {
+            t: crossing.t,
             p,
             p_error,
             n: self.normal,
             shading_n: self.normal,
             uv: Vec2::new(r / self.radius, phi / TAU),
             shape: 0,
-        })
+        }
     }
 }
 

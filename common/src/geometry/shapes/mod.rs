@@ -21,6 +21,23 @@ use crate::Ray;
 use crate::geometry::aabb::Aabb;
 use crate::geometry::hit::SurfaceHit;
 
+/// Where a ray crosses a shape, before its hit record is built.
+///
+/// Finding a crossing is the test; building the record (the point and its error bound, the
+/// normals, the texture coordinates, for a sphere an arc tangent and an arc cosine) is extra
+/// work that only the *nearest* crossing of a ray needs, and a shadow ray, which asks only
+/// whether there is one, never does. So a shape answers in two steps: [`Shape::crossing`],
+/// then [`Shape::surface_hit`] for the one crossing that is kept.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossing {
+    /// The ray parameter of the crossing, `0 < t < ray.t_max`.
+    pub t: f32,
+    /// The shape's own coordinates of the point, which its record is built from: a quad's
+    /// `(u, v)`, a disc's offsets along its tangents, a triangle's barycentrics, the offset
+    /// of a sphere's point from its centre.
+    pub(crate) coords: [f32; 3],
+}
+
 /// Any one shape.
 ///
 /// An enum rather than a trait object: the set of shapes is closed, a `match` is easy to read,
@@ -43,11 +60,29 @@ pub enum Shape {
 impl Shape {
     /// The nearest hit with `0 < t < ray.t_max`, with `shape` set to 0.
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        self.crossing(ray)
+            .map(|crossing| self.surface_hit(crossing))
+    }
+
+    /// Where `ray` crosses the shape with `0 < t < ray.t_max`, without building the record:
+    /// [`intersect`](Self::intersect) is this followed by [`surface_hit`](Self::surface_hit).
+    #[inline]
+    pub fn crossing(&self, ray: &Ray) -> Option<Crossing> {
         match self {
-            Shape::Sphere(s) => s.intersect(ray),
-            Shape::Triangle(s) => s.intersect(ray),
-            Shape::Quad(s) => s.intersect(ray),
-            Shape::Disc(s) => s.intersect(ray),
+            Shape::Sphere(s) => s.crossing(ray),
+            Shape::Triangle(s) => s.checked_crossing(ray),
+            Shape::Quad(s) => s.crossing(ray),
+            Shape::Disc(s) => s.crossing(ray),
+        }
+    }
+
+    /// The hit record of a crossing this shape reported.
+    pub fn surface_hit(&self, crossing: Crossing) -> SurfaceHit {
+        match self {
+            Shape::Sphere(s) => s.surface_hit(crossing),
+            Shape::Triangle(s) => s.surface_hit(crossing),
+            Shape::Quad(s) => s.surface_hit(crossing),
+            Shape::Disc(s) => s.surface_hit(crossing),
         }
     }
 

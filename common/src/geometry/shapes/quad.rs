@@ -2,6 +2,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::Crossing;
 use super::plane::SpannedPlane;
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
@@ -98,6 +99,12 @@ impl Quad {
     /// whatever the errors in `t`, `u` and `v`, which gives the bound
     /// `γ(3) (|corner| + |u e1| + |v e2|)`.
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        self.crossing(ray)
+            .map(|crossing| self.surface_hit(crossing))
+    }
+
+    /// The crossing behind [`intersect`](Self::intersect), with `(u, v)`.
+    pub(crate) fn crossing(&self, ray: &Ray) -> Option<Crossing> {
         if self.normal == Vec3::ZERO {
             return None;
         }
@@ -108,17 +115,26 @@ impl Quad {
         if !((0.0..=1.0).contains(&u) && (0.0..=1.0).contains(&v)) {
             return None;
         }
+        Some(Crossing {
+            t,
+            coords: [u, v, 0.0],
+        })
+    }
+
+    /// The hit record of a crossing.
+    pub(crate) fn surface_hit(&self, crossing: Crossing) -> SurfaceHit {
+        let [u, v, _] = crossing.coords;
         let p = self.point_at(u, v);
         let p_error = gamma(3) * (self.corner.abs() + (u * self.e1).abs() + (v * self.e2).abs());
-        Some(SurfaceHit {
-            t,
+        SurfaceHit {
+            t: crossing.t,
             p,
             p_error,
             n: self.normal,
             shading_n: self.normal,
             uv: Vec2::new(u, v),
             shape: 0,
-        })
+        }
     }
 }
 

@@ -2,6 +2,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::Crossing;
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
 use crate::geometry::float::gamma;
@@ -18,12 +19,6 @@ pub struct Triangle {
     pub p: [Vec3; 3],
     /// Unit normals at the vertices, interpolated into the shading normal.
     pub normals: Option<[Vec3; 3]>,
-}
-
-/// Where a ray crosses a triangle: its ray parameter and barycentric coordinates.
-struct Crossing {
-    t: f32,
-    b: [f32; 3],
 }
 
 impl Triangle {
@@ -61,33 +56,44 @@ impl Triangle {
     /// The hit with `0 < t < ray.t_max`, seen from either side; degenerate triangles (zero area,
     /// or non-finite vertices) are never hit.
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
-        let normal = self.unnormalized_normal();
-        let has_area = normal.length_squared() > 0.0; // false for NaN vertices too
+        self.checked_crossing(ray)
+            .map(|crossing| self.surface_hit(crossing))
+    }
+
+    /// The crossing behind [`intersect`](Self::intersect), with the barycentrics; none for a
+    /// degenerate triangle.
+    pub(crate) fn checked_crossing(&self, ray: &Ray) -> Option<Crossing> {
+        let has_area = self.unnormalized_normal().length_squared() > 0.0; // false for NaN too
         if !has_area {
             return None;
         }
-        let Crossing { t, b } = self.crossing(ray)?;
+        self.crossing(ray)
+    }
+
+    /// The hit record of a crossing.
+    pub(crate) fn surface_hit(&self, crossing: Crossing) -> SurfaceHit {
+        let b = crossing.coords;
         let [p0, p1, p2] = self.p;
         // The point from the barycentrics, not from t: then its error does not depend on how
         // far the ray travelled. Bound from pbrt-v4, section 6.8.6.
         let p = b[0] * p0 + b[1] * p1 + b[2] * p2;
         let p_error = gamma(7) * ((b[0] * p0).abs() + (b[1] * p1).abs() + (b[2] * p2).abs());
-        let n = normal.normalize();
+        let n = self.unnormalized_normal().normalize();
         let shading_n = match self.normals {
             Some([n0, n1, n2]) => (b[0] * n0 + b[1] * n1 + b[2] * n2)
                 .try_normalize()
                 .unwrap_or(n),
             None => n,
         };
-        Some(SurfaceHit {
-            t,
+        SurfaceHit {
+            t: crossing.t,
             p,
             p_error,
             n,
             shading_n,
             uv: Vec2::new(b[1], b[2]),
             shape: 0,
-        })
+        }
     }
 
     /// The watertight test, following pbrt-v4 (section 6.5.3).
@@ -167,7 +173,7 @@ impl Triangle {
         if !certainly_in_range {
             return None;
         }
-        Some(Crossing { t, b })
+        Some(Crossing { t, coords: b })
     }
 }
 
