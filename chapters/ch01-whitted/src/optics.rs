@@ -46,6 +46,7 @@ pub fn refract(d: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
 ///
 /// `cos_i` is the cosine between the incident ray and the normal (in `[0, 1]`), `eta` the
 /// relative index `eta_i / eta_t`. The refracted share is `1 - fresnel_dielectric(...)`.
+#[inline]
 pub fn fresnel_dielectric(cos_i: f32, eta: f32) -> f32 {
     // BEGIN SOLUTION
     if eta == 1.0 {

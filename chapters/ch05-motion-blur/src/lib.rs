@@ -88,10 +88,12 @@ impl CameraRays {
         } else {
             self.shutter.open
         };
+        let moved;
         let camera = if self.camera_moves {
-            ThinLensCamera::new(world.camera_at(time, self.width, self.height), self.lens)
+            moved = ThinLensCamera::new(world.camera_at(time, self.width, self.height), self.lens);
+            &moved
         } else {
-            self.camera_at_open
+            &self.camera_at_open // borrowed, not copied: a still camera costs nothing here
         };
         camera.generate_ray(p_film, sampler).with_time(time)
     }

@@ -113,6 +113,7 @@ impl World for MotionScene {
         &self.scene
     }
 
+    #[inline]
     fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         let still = self.scene.geometry.intersect(ray);
         if self.moving.is_empty() {
@@ -123,6 +124,7 @@ impl World for MotionScene {
         self.moving.intersect(&Ray { t_max, ..*ray }).or(still)
     }
 
+    #[inline]
     fn occluded(&self, ray: &Ray) -> bool {
         self.scene.geometry.occluded(ray) || (!self.moving.is_empty() && self.moving.occluded(ray))
     }

@@ -41,6 +41,7 @@ pub fn parallelogram_point_error(quad: &Quad, u: Vec2) -> Vec3 {
 /// Chapter 02's warp is used with the corner at the origin, `(0, e1, e2)`, so that the edges
 /// enter unrounded; the corner is added last. Far from the origin, `corner + e1` would round
 /// and the difference `(corner + e1) - corner` would no longer be `e1`.
+#[inline]
 pub fn sample_parallelogram_light(quad: &Quad, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION
     let p = quad.corner() + sample_parallelogram(u, Vec3::ZERO, quad.e1(), quad.e2());

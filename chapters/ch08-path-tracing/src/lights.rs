@@ -54,24 +54,32 @@ pub struct SceneLights<'a> {
     pub environment: Vec3,
     /// How area lights are sampled (chapter 07).
     pub sampling: LightSampling,
+    /// How many lights there are, counted once: every bounce asks.
+    count: usize,
+    /// `1 / count` (1 without lights), computed once for the same reason.
+    pick_probability: f32,
 }
 
 impl<'a> SceneLights<'a> {
     /// The lights of `scene`, area lights sampled as `sampling` says.
     pub fn of(scene: &'a SoftShadowScene, sampling: LightSampling) -> Self {
         let world = &scene.scene.world.scene;
+        let has_environment = world.background != Vec3::ZERO;
+        let count = scene.lights.len() + world.lights.len() + usize::from(has_environment);
         Self {
             area: &scene.lights,
             light_of_shape: &scene.light_of_shape,
             points: &world.lights,
             environment: world.background,
             sampling,
+            count,
+            pick_probability: 1.0 / count.max(1) as f32,
         }
     }
 
     /// How many lights there are to pick from.
     pub fn count(&self) -> usize {
-        self.area.len() + self.points.len() + usize::from(self.has_environment())
+        self.count
     }
 
     /// Whether a ray can find a light by hitting it: an area light or the environment (a
@@ -87,7 +95,7 @@ impl<'a> SceneLights<'a> {
 
     /// The chance of picking any one light.
     pub fn pick_probability(&self) -> f32 {
-        1.0 / self.count().max(1) as f32
+        self.pick_probability
     }
 
     /// The light picked by `u` in `[0, 1)`: area lights first, then point lights, then the

@@ -37,12 +37,14 @@ impl SurfaceHit {
     }
 
     /// The origin for a ray leaving towards `w`, certainly on `w`'s side of the surface.
+    #[inline]
     pub fn offset_origin(&self, w: Vec3) -> Vec3 {
         offset_ray_origin(self.p, self.p_error, self.n, w)
     }
 
     /// A secondary ray (reflection, refraction, a sampled direction) leaving along `dir`,
     /// unbounded in `t`.
+    #[inline]
     pub fn spawn_ray(&self, dir: Vec3, time: f32) -> Ray {
         Ray {
             origin: self.offset_origin(dir),
@@ -57,6 +59,7 @@ impl SurfaceHit {
     /// `dir = target - origin` is *not* normalised, so the target is at `t = 1`; the ray stops at
     /// `t_max = 1 - SHADOW_EPSILON`, just short of it, so a surface at the target itself does
     /// not count as a blocker.
+    #[inline]
     pub fn spawn_ray_to(&self, target: Vec3, time: f32) -> Ray {
         let origin = self.offset_origin(target - self.p);
         Ray {
@@ -69,6 +72,7 @@ impl SurfaceHit {
 
     /// A shadow ray between two surface points (this one and a point on an area light, say),
     /// with *both* ends offset off their surfaces, each towards the other end.
+    #[inline]
     pub fn spawn_ray_to_hit(&self, other: &SurfaceHit, time: f32) -> Ray {
         let from = self.offset_origin(other.p - self.p);
         let to = other.offset_origin(from - other.p);

@@ -28,6 +28,7 @@ pub const SHADOW_EPSILON: f32 = 1e-4;
 /// `d` along `±n`, towards the side `w` points to, puts it on that side of the true surface.
 /// The addition `p + offset` rounds too; stepping each moved component one more float away
 /// from `p` makes sure the rounding cannot undo the move.
+#[inline]
 pub fn offset_ray_origin(p: Vec3, p_error: Vec3, n: Vec3, w: Vec3) -> Vec3 {
     let d = n.abs().dot(p_error);
     let offset = if w.dot(n) < 0.0 { -d * n } else { d * n };

@@ -124,6 +124,7 @@ impl PixelSampler {
 }
 
 impl Sampler for PixelSampler {
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
         match self {
             PixelSampler::Centre(s) => s.start_pixel_sample(pixel, sample_index),
@@ -133,6 +134,7 @@ impl Sampler for PixelSampler {
         }
     }
 
+    #[inline]
     fn get_pixel_2d(&mut self) -> Vec2 {
         match self {
             PixelSampler::Centre(s) => s.get_pixel_2d(),
@@ -142,6 +144,7 @@ impl Sampler for PixelSampler {
         }
     }
 
+    #[inline]
     fn get_1d(&mut self) -> f32 {
         match self {
             PixelSampler::Centre(s) => s.get_1d(),
