@@ -202,9 +202,9 @@ impl<'a> DistributionTracer<'a> {
         }
         let mut sum = Vec3::ZERO;
         for i in 0..self.lights.points.len() {
-            let Some(light) =
-                self.lights
-                    .sample(LightRef::Point(i), bsdf.hit, glam::Vec2::ZERO, time)
+            let Some(light) = self
+                .lights
+                .sample(LightRef::Point(i), bsdf.hit, glam::Vec2::ZERO)
             else {
                 continue;
             };
@@ -213,7 +213,12 @@ impl<'a> DistributionTracer<'a> {
                 continue;
             }
             counters.rays += 1;
-            if !self.scene.scene.world.occluded(&light.shadow_ray) {
+            if !self
+                .scene
+                .scene
+                .world
+                .occluded(&light.shadow_ray(bsdf.hit, time))
+            {
                 sum += f_cos * light.radiance;
             }
         }

@@ -10,6 +10,7 @@
 use ch01_whitted::light::PointLight;
 use ch02_monte_carlo::warps::{sample_uniform_sphere, uniform_sphere_pdf};
 use ch07_soft_shadows::light::LightShape;
+use ch07_soft_shadows::light_sample::LightSample;
 use ch07_soft_shadows::solid_angle::{pdf_area_to_solid_angle, sphere_solid_angle_pdf};
 use ch07_soft_shadows::{AreaLight, LightSampling, SoftShadowScene, Strategy};
 use common::Ray;
@@ -37,8 +38,32 @@ pub struct LightDirection {
     /// The density per unit solid angle of `wi`, the pick's `1/N` included; `f32::INFINITY`
     /// for a point light, which no BSDF sample can find.
     pub pdf: f32,
-    /// The shadow ray: both ends offset, stopping short of the light.
-    pub shadow_ray: Ray,
+    /// Where the shadow ray goes; [`shadow_ray`](Self::shadow_ray) builds it.
+    target: ShadowTarget,
+}
+
+/// Where a light sample's shadow ray goes. Kept rather than the ray itself, so that offsetting
+/// the ray's ends is paid only for a sample that carries something.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum ShadowTarget {
+    /// A point on an area light: the ray is offset at both ends and stops short of it.
+    Surface(LightSample),
+    /// A point light's position: the ray stops short of it.
+    Point(Vec3),
+    /// The environment, in a direction: nothing ends the ray.
+    Direction(Vec3),
+}
+
+impl LightDirection {
+    /// The shadow ray from `receiver` at shutter time `time`: what must be unblocked for the
+    /// light to arrive.
+    pub fn shadow_ray(&self, receiver: &SurfaceHit, time: f32) -> Ray {
+        match self.target {
+            ShadowTarget::Surface(sample) => sample.shadow_ray(receiver, time),
+            ShadowTarget::Point(position) => receiver.spawn_ray_to(position, time),
+            ShadowTarget::Direction(wi) => receiver.spawn_ray(wi, time),
+        }
+    }
 }
 
 /// The scene's lights, borrowed.
@@ -105,7 +130,12 @@ impl<'a> SceneLights<'a> {
         if n == 0 {
             return None;
         }
-        let i = ((u * n as f32) as usize).min(n - 1);
+        // One light needs no arithmetic (and the path tracer draws no number for it).
+        let i = if n == 1 {
+            0
+        } else {
+            ((u * n as f32) as usize).min(n - 1)
+        };
         Some(if i < self.area.len() {
             LightRef::Area(i)
         } else if i < self.area.len() + self.points.len() {
@@ -128,7 +158,6 @@ impl<'a> SceneLights<'a> {
         light: LightRef,
         receiver: &SurfaceHit,
         u: Vec2,
-        time: f32,
     ) -> Option<LightDirection> {
         let x = receiver.p;
         let found = match light {
@@ -146,7 +175,7 @@ impl<'a> SceneLights<'a> {
                     wi,
                     radiance: light.emitted(sample.n, -wi),
                     pdf: pick * pdf,
-                    shadow_ray: sample.shadow_ray(receiver, time),
+                    target: ShadowTarget::Surface(sample),
                 }
             }
             LightRef::Point(i) => {
@@ -157,7 +186,7 @@ impl<'a> SceneLights<'a> {
                     wi: to_light / d2.sqrt(),
                     radiance: light.intensity / d2,
                     pdf: f32::INFINITY,
-                    shadow_ray: receiver.spawn_ray_to(light.position, time),
+                    target: ShadowTarget::Point(light.position),
                 }
             }
             LightRef::Environment => {
@@ -167,7 +196,7 @@ impl<'a> SceneLights<'a> {
                     wi,
                     radiance: self.environment,
                     pdf: pick * uniform_sphere_pdf(),
-                    shadow_ray: receiver.spawn_ray(wi, time),
+                    target: ShadowTarget::Direction(wi),
                 }
             }
         };

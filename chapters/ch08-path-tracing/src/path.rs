@@ -196,7 +196,7 @@ impl PathTracer<'_> {
             crate::lights::LightRef::Point(_) => Vec2::ZERO,
             _ => sampler.get_2d(),
         };
-        let Some(sample) = self.lights.sample(light, bsdf.hit, u, time) else {
+        let Some(sample) = self.lights.sample(light, bsdf.hit, u) else {
             return Vec3::ZERO;
         };
         let f_cos = bsdf.eval(wo, sample.wi);
@@ -218,7 +218,12 @@ impl PathTracer<'_> {
             return Vec3::ZERO; // nothing to carry: no shadow ray
         }
         counters.rays += 1;
-        if self.scene.scene.world.occluded(&sample.shadow_ray) {
+        if self
+            .scene
+            .scene
+            .world
+            .occluded(&sample.shadow_ray(bsdf.hit, time))
+        {
             Vec3::ZERO
         } else {
             contribution

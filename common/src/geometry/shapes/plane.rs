@@ -59,7 +59,7 @@ impl SpannedPlane {
     fn interval_crossing(&self, ray: &Ray) -> Option<f32> {
         let towards_anchor = interval::difference(self.anchor, ray.origin);
         let numerator: Interval = interval::dot(towards_anchor, self.normal);
-        let denominator = interval::dot(interval::exact_vec(ray.dir), self.normal);
+        let denominator = interval::dot_exact(ray.dir, self.normal);
         let t = numerator / denominator;
         let certainly_ahead = t.lo > 0.0;
         if !certainly_ahead {

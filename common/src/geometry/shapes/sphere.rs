@@ -75,28 +75,26 @@ impl Sphere {
         let o = interval::difference(ray.origin, self.center);
         let d = interval::exact_vec(ray.dir);
         let r = Interval::exact(self.radius);
-        let two = Interval::exact(2.0);
 
         let a = interval::length_squared(d);
-        let b = two * interval::dot(d, o);
+        let b = interval::dot_exact(ray.dir, o).scaled(2.0);
         let c = interval::length_squared(o) - r.squared();
-        let along = b / (two * a);
+        let along = b / a.scaled(2.0);
         let v = [
-            o[0] - along * d[0],
-            o[1] - along * d[1],
-            o[2] - along * d[2],
+            o[0] - along.scaled(ray.dir.x),
+            o[1] - along.scaled(ray.dir.y),
+            o[2] - along.scaled(ray.dir.z),
         ];
         let v_length = interval::length_squared(v).sqrt();
-        let discriminant = Interval::exact(4.0) * a * (r + v_length) * (r - v_length);
+        let discriminant = a.scaled(4.0) * (r + v_length) * (r - v_length);
         if discriminant.lo < 0.0 {
             return None;
         }
         let root = discriminant.sqrt();
-        let minus_half = Interval::exact(-0.5);
         let q = if b.midpoint() < 0.0 {
-            minus_half * (b - root)
+            (b - root).scaled(-0.5)
         } else {
-            minus_half * (b + root)
+            (b + root).scaled(-0.5)
         };
         let (mut t0, mut t1) = (q / a, c / q);
         if t0.lo > t1.lo {
