@@ -49,6 +49,24 @@ struct Previous {
     pdf: f32,
 }
 
+/// What a path carries from one segment to the next.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Carried {
+    /// The product of the BSDF weights (and roulette factors) so far: what one unit of
+    /// radiance found at the path's end adds to the pixel.
+    throughput: Vec3,
+    /// The product of the radiance scalings `(eta_i / eta_t)²` inside `throughput`.
+    eta_scale: f32,
+}
+
+/// The path's next segment: its ray, what it carries, and how its direction was chosen.
+#[derive(Clone, Copy, Debug)]
+struct NextSegment {
+    ray: Ray,
+    carried: Carried,
+    previous: Previous,
+}
+
 /// A path tracer over a chapter 07 scene.
 #[derive(Clone, Copy)]
 pub struct PathTracer<'a> {
@@ -74,20 +92,22 @@ impl PathTracer<'_> {
         let world = &self.scene.scene.world;
         let mut ray = ray;
         let mut radiance = Vec3::ZERO;
-        let mut throughput = Vec3::ONE;
-        let mut eta_scale = 1.0f32;
+        let mut carried = Carried {
+            throughput: Vec3::ONE,
+            eta_scale: 1.0,
+        };
         let mut previous: Option<Previous> = None; // the camera ray: no MIS
         for depth in 1.. {
             counters.rays += 1;
             let Some(hit) = world.intersect(&ray) else {
                 if self.lights.has_environment() {
                     let pdf = self.lights.environment_pdf();
-                    radiance +=
-                        throughput * self.lights.environment * self.emission_weight(previous, pdf);
+                    let weight = self.emission_weight(previous, pdf);
+                    radiance += carried.throughput * self.lights.environment * weight;
                 }
                 break;
             };
-            radiance += throughput * self.emitted(&hit, &ray, previous);
+            radiance += carried.throughput * self.emitted(&hit, &ray, previous);
             if depth >= self.options.max_depth {
                 break; // no segment left for a light sample or a bounce
             }
@@ -98,7 +118,8 @@ impl PathTracer<'_> {
             };
             let wo = -ray.dir.normalize();
             if self.options.nee && self.lights.count() > 0 && !bsdf.is_delta() {
-                radiance += throughput * self.light_sample(&bsdf, wo, ray.time, sampler, counters);
+                let light = self.light_sample(&bsdf, wo, ray.time, sampler, counters);
+                radiance += carried.throughput * light;
             }
             if depth + 1 >= self.options.max_depth && !self.lights.can_be_hit() {
                 // The next segment would be the last: all it could find is emission, and no
@@ -106,35 +127,60 @@ impl PathTracer<'_> {
                 // were the sample's last, so the image is the same.
                 break;
             }
-            let Some(sample) = bsdf.sample(wo, sampler) else {
+            let Some(next) = self.extend_path(&bsdf, wo, ray.time, depth, carried, sampler) else {
                 break;
             };
-            throughput *= sample.weight;
-            eta_scale *= sample.eta_scale;
-            // A throughput that is not finite is a bug at its source: it is not hidden here,
-            // but reaches the film, which counts it (`nonfinite_samples`).
-            if throughput == Vec3::ZERO {
-                break;
-            }
-            if let Some(rr_depth) = self.options.rr_depth
-                && depth >= rr_depth
-            {
-                let Some(factor) =
-                    russian_roulette(throughput.max_element() / eta_scale, sampler.get_1d())
-                else {
-                    break;
-                };
-                throughput *= factor;
-            }
-            previous = Some(Previous {
-                p: hit.p,
-                pdf: sample.pdf,
-            });
-            ray = hit.spawn_ray(sample.wi, ray.time);
+            carried = next.carried;
+            previous = Some(next.previous);
+            ray = next.ray;
         }
         radiance
     }
     // ANCHOR_END: radiance
+
+    // ANCHOR: extend_path
+    /// The path's next segment from the surface of `bsdf`, seen from `wo`, where segment
+    /// `depth` ended: a direction sampled from the BSDF, the throughput multiplied by its
+    /// weight, then, from `rr_depth` on, Russian roulette on the throughput without its
+    /// radiance scaling (`throughput / eta_scale`). `None` when the path ends: no direction,
+    /// nothing carried, or the roulette says so.
+    fn extend_path<S: Sampler>(
+        &self,
+        bsdf: &Bsdf,
+        wo: Vec3,
+        time: f32,
+        depth: u32,
+        carried: Carried,
+        sampler: &mut S,
+    ) -> Option<NextSegment> {
+        // BEGIN SOLUTION
+        let sample = bsdf.sample(wo, sampler)?;
+        let mut throughput = carried.throughput * sample.weight;
+        let eta_scale = carried.eta_scale * sample.eta_scale;
+        // A throughput that is not finite is a bug at its source: it is not hidden here,
+        // but reaches the film, which counts it (`nonfinite_samples`).
+        if throughput == Vec3::ZERO {
+            return None;
+        }
+        if let Some(rr_depth) = self.options.rr_depth
+            && depth >= rr_depth
+        {
+            throughput *= russian_roulette(throughput.max_element() / eta_scale, sampler.get_1d())?;
+        }
+        Some(NextSegment {
+            ray: bsdf.hit.spawn_ray(sample.wi, time),
+            carried: Carried {
+                throughput,
+                eta_scale,
+            },
+            previous: Previous {
+                p: bsdf.hit.p,
+                pdf: sample.pdf,
+            },
+        })
+        // END SOLUTION
+    }
+    // ANCHOR_END: extend_path
 
     /// What the surface at `hit` emits back along `ray`, MIS-weighted against the light
     /// sample taken at the previous bounce.
@@ -230,4 +276,177 @@ impl PathTracer<'_> {
         }
     }
     // ANCHOR_END: light_sample
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::furnace::spheres;
+    use ch01_whitted::material::Material as Smooth;
+    use ch06_fuzzy_reflections::Material;
+    use ch07_soft_shadows::LightSampling;
+    use common::sampler::IndependentSampler;
+    use glam::UVec2;
+
+    /// A tracer over a furnace scene (one sphere of `material` in a sky of radiance 1).
+    fn with_tracer<R>(
+        material: Material,
+        options: PathOptions,
+        use_tracer: impl FnOnce(&PathTracer) -> R,
+    ) -> R {
+        let scene = spheres(&[material], options.max_depth);
+        let tracer = PathTracer {
+            scene: &scene,
+            lights: SceneLights::of(&scene, LightSampling::solid_angle()),
+            options,
+            fuzz: FuzzMethod::Lobe,
+        };
+        use_tracer(&tracer)
+    }
+
+    /// A hit at the origin of the floor `y = 0`, known to within 1e-6.
+    fn floor_hit() -> SurfaceHit {
+        SurfaceHit {
+            t: 1.0,
+            p: Vec3::ZERO,
+            p_error: Vec3::splat(1e-6),
+            n: Vec3::Y,
+            shading_n: Vec3::Y,
+            uv: glam::Vec2::ZERO,
+            shape: 0,
+        }
+    }
+
+    /// Extends a path from the floor hit, seen from straight above, `n` times with sample
+    /// streams 0..n; the extensions that happened.
+    fn extensions(
+        tracer: &PathTracer,
+        material: &Material,
+        depth: u32,
+        carried: Carried,
+        n: u64,
+    ) -> Vec<NextSegment> {
+        let hit = floor_hit();
+        let bsdf = Bsdf {
+            material,
+            hit: &hit,
+            fuzz: FuzzMethod::Lobe,
+        };
+        let mut sampler = IndependentSampler::new(11);
+        (0..n)
+            .filter_map(|i| {
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                tracer.extend_path(&bsdf, Vec3::Y, 0.25, depth, carried, &mut sampler)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn exercise_extend_path_multiplies_the_throughput_and_keeps_the_density() {
+        let grey = Material::from(Smooth::diffuse(Vec3::new(0.5, 0.25, 1.0)));
+        let options = PathOptions {
+            rr_depth: None,
+            ..PathOptions::with_depth(8)
+        };
+        let carried = Carried {
+            throughput: Vec3::new(0.5, 1.0, 2.0),
+            eta_scale: 1.0,
+        };
+        with_tracer(grey, options, |tracer| {
+            let next = extensions(tracer, &grey, 1, carried, 64);
+            assert_eq!(
+                next.len(),
+                64,
+                "a matte surface seen from its front always scatters"
+            );
+            for segment in next {
+                // A cosine-sampled matte surface: weight = albedo, pdf = cos θ / π.
+                assert_eq!(segment.carried.throughput, Vec3::new(0.25, 0.25, 2.0));
+                assert_eq!(segment.carried.eta_scale, 1.0);
+                let cos = segment.ray.dir.dot(Vec3::Y);
+                assert!(cos > 0.0, "the new ray leaves on the lit side");
+                let pdf = cos * std::f32::consts::FRAC_1_PI;
+                assert!((segment.previous.pdf - pdf).abs() < 1e-5 * pdf.max(1.0));
+                assert_eq!(segment.previous.p, Vec3::ZERO);
+                assert!(
+                    segment.ray.origin.y > 0.0,
+                    "offset off the surface, above it"
+                );
+                assert_eq!(segment.ray.time, 0.25, "the path keeps its time");
+            }
+        });
+    }
+
+    #[test]
+    fn exercise_extend_path_plays_an_unbiased_roulette_on_the_unscaled_throughput() {
+        let white = Material::from(Smooth::diffuse(Vec3::ONE));
+        let options = PathOptions {
+            rr_depth: Some(3),
+            ..PathOptions::with_depth(8)
+        };
+        // Through glass the throughput holds η² = 2.25, which says nothing about how much the
+        // path still matters: the roulette must look at 0.2 · 2.25 / 2.25 = 0.2.
+        let carried = Carried {
+            throughput: Vec3::splat(0.2 * 2.25),
+            eta_scale: 2.25,
+        };
+        with_tracer(white, options, |tracer| {
+            let before_rr = extensions(tracer, &white, 2, carried, 1000);
+            assert_eq!(before_rr.len(), 1000, "no roulette before rr_depth");
+            let n = 20_000;
+            let survivors = extensions(tracer, &white, 3, carried, n);
+            // Survival with probability q = 0.2: the count is binomial(n, 0.2).
+            let q = 0.2;
+            let sigma = (n as f64 * q * (1.0 - q)).sqrt();
+            let expected = n as f64 * q;
+            let count = survivors.len() as f64;
+            assert!(
+                (count - expected).abs() < 5.0 * sigma,
+                "{count} survivors of {n}, expected {expected} ± {sigma:.1}"
+            );
+            // Each survivor carries throughput / q, so the mean over all paths is unchanged.
+            for segment in &survivors {
+                let kept = segment.carried.throughput.x;
+                assert!((kept - 0.45 / 0.2).abs() < 1e-5, "{kept}");
+                assert_eq!(segment.carried.eta_scale, 2.25);
+            }
+        });
+    }
+
+    #[test]
+    fn exercise_extend_path_ends_paths_that_carry_nothing() {
+        let black = Material::from(Smooth::diffuse(Vec3::ZERO));
+        let carried = Carried {
+            throughput: Vec3::ONE,
+            eta_scale: 1.0,
+        };
+        with_tracer(black, PathOptions::with_depth(8), |tracer| {
+            assert!(extensions(tracer, &black, 1, carried, 16).is_empty());
+        });
+    }
+
+    #[test]
+    fn exercise_extend_path_lets_the_furnace_return_one() {
+        // The whole loop through `extend_path`: a white matte sphere under a sky of 1 sends
+        // back exactly 1 whatever the bounces (mean of 256 paths through the centre pixel).
+        let white = Material::from(Smooth::diffuse(Vec3::ONE));
+        let options = PathOptions {
+            nee: false,
+            rr_depth: None,
+            ..PathOptions::with_depth(64)
+        };
+        with_tracer(white, options, |tracer| {
+            let world = &tracer.scene.scene.world;
+            let camera = world.scene.camera;
+            let ray = camera.generate_ray(glam::Vec2::new(32.5, 24.5));
+            let mut sampler = IndependentSampler::new(5);
+            let mut counters = SampleCounters::default();
+            for i in 0..256 {
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                let l = tracer.radiance(ray, &mut sampler, &mut counters);
+                assert!((l - Vec3::ONE).abs().max_element() < 1e-4, "{l}");
+            }
+            assert!(counters.rays > 256, "the paths bounced");
+        });
+    }
 }
