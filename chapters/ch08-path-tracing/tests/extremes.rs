@@ -6,8 +6,11 @@ use ch01_whitted::material::Material as Smooth;
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch06_fuzzy_reflections::Material;
+use ch06_fuzzy_reflections::furnace::scene_of;
+use ch07_soft_shadows::SoftShadowScene;
 use ch08_path_tracing::furnace::spheres;
 use ch08_path_tracing::{Method, PathOptions, render_with};
+use common::geometry::{Quad, Shape, Sphere};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
 use glam::Vec3;
@@ -98,4 +101,50 @@ fn a_black_world_stays_black() {
         render_finite(&scene, PathOptions::with_depth(8), "black"),
         0.0
     );
+}
+
+/// A glass ball on a matte floor, and behind it a light a hundredth wide and 10⁴ bright,
+/// in a black world: the camera sees the light only through the glass, and the floor
+/// gets its focused light (a caustic) only from paths that bounce through the glass to it,
+/// since every light sample from behind the ball is blocked.
+fn a_small_light_behind_glass() -> SoftShadowScene {
+    let floor = Quad::new(
+        Vec3::new(-50.0, -1.0, -50.0),
+        100.0 * Vec3::Z,
+        100.0 * Vec3::X,
+    );
+    let shapes = vec![
+        (
+            Shape::Quad(floor),
+            Material::from(Smooth::diffuse(Vec3::splat(0.5))),
+        ),
+        (
+            Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)),
+            Material::from(Smooth::glass(1.5)),
+        ),
+        (
+            Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 0.01)),
+            Material::from(Smooth::diffuse(Vec3::ZERO)),
+        ),
+    ];
+    let scene = scene_of(shapes, Vec3::ZERO, Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, 12);
+    SoftShadowScene::new(scene, &[(2, Vec3::splat(1e4))]).unwrap()
+}
+
+#[test]
+fn a_tiny_bright_light_seen_through_glass_stays_finite_at_every_depth() {
+    let scene = a_small_light_behind_glass();
+    let direct = render_finite(&scene, PathOptions::with_depth(2), "depth 2");
+    for rr_depth in [Some(1), Some(5), None] {
+        let deep = render_finite(
+            &scene,
+            PathOptions {
+                rr_depth,
+                ..PathOptions::with_depth(1000)
+            },
+            "depth 1000",
+        );
+        // Through the glass there is more light to find, never less.
+        assert!(deep > direct, "roulette {rr_depth:?}: {deep} vs {direct}");
+    }
 }

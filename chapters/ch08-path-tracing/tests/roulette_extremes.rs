@@ -1,0 +1,152 @@
+//! Russian roulette at its extremes: a throughput near 0, where a survivor is multiplied by
+//! an enormous `1 / q`, and near 1, where `q` is capped at 0.95 so that even a white furnace
+//! ends. The factor must stay finite, the game fair, and renders finite and unbiased.
+//! `beta` is what the roulette is given: the throughput's largest channel, its radiance
+//! scaling removed.
+
+mod support;
+
+use ch01_whitted::material::Material as Smooth;
+use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
+use ch04_depth_of_field::Lens;
+use ch06_fuzzy_reflections::Material;
+use ch08_path_tracing::furnace::spheres;
+use ch08_path_tracing::roulette::{MAX_SURVIVAL, russian_roulette};
+use ch08_path_tracing::{Method, PathOptions, render_with};
+use common::render::RenderSettings;
+use common::sampler::IndependentSampler;
+use glam::{Vec2, Vec3};
+
+/// The step between the uniform numbers a sampler hands out (`common::sampler::unit_f32`).
+const U_STEP: f32 = 1.0 / (1u32 << 24) as f32;
+
+#[test]
+fn near_zero_the_factor_is_finite_and_the_game_fair_on_the_samplers_numbers() {
+    // From the smallest normal float up (below it, 1 / q would overflow f32).
+    for beta in [f32::MIN_POSITIVE, 1e-30, 1e-12, 1e-7, 1e-4, 1e-3] {
+        // The smallest u survives, with exactly 1 / β, finite, that brings β back to 1.
+        let factor = russian_roulette(beta, 0.0).expect("u = 0 survives any q > 0");
+        assert!(
+            factor.is_finite() && factor == 1.0 / beta,
+            "{beta}: {factor}"
+        );
+        assert!(
+            (beta * factor - 1.0).abs() <= f32::EPSILON,
+            "{beta}: {}",
+            beta * factor
+        );
+        assert_eq!(
+            russian_roulette(beta, beta),
+            None,
+            "{beta}: u = q ends the path"
+        );
+        assert_eq!(russian_roulette(beta, 0.5), None, "{beta}");
+        // Fair on the numbers a sampler can give, k · 2^-24: the survivors are the
+        // ceil(β 2^24) values below β, so the mean factor is 1 to within 1 / (β 2^24).
+        let survivors = (0u32..)
+            .take_while(|&k| russian_roulette(beta, k as f32 * U_STEP).is_some())
+            .count() as f64;
+        let grid = f64::from(beta) / f64::from(U_STEP);
+        if grid >= 1.0 {
+            let mean = survivors * f64::from(U_STEP) * f64::from(factor);
+            assert!(
+                (mean - 1.0).abs() <= 1.0 / grid,
+                "{beta}: mean factor {mean}"
+            );
+        } else {
+            assert_eq!(survivors, 1.0, "{beta}: only u = 0 is below q");
+        }
+    }
+}
+
+#[test]
+fn near_one_the_survival_is_capped_so_every_path_ends() {
+    let below = MAX_SURVIVAL - f32::EPSILON;
+    for beta in [
+        below,
+        MAX_SURVIVAL,
+        1.0 - U_STEP,
+        1.0,
+        1.0 + f32::EPSILON,
+        1e30,
+        f32::MAX,
+    ] {
+        let q = beta.min(MAX_SURVIVAL);
+        assert_eq!(russian_roulette(beta, q - U_STEP), Some(1.0 / q), "{beta}");
+        // A path of throughput 1 or more still ends one time in twenty.
+        assert_eq!(russian_roulette(beta, q), None, "{beta}");
+        assert_eq!(russian_roulette(beta, 1.0 - U_STEP), None, "{beta}");
+        // The mean factor over u (midpoints of 10⁵ cells) is 1.
+        let n = 100_000;
+        let mean = (0..n)
+            .map(|i| f64::from(russian_roulette(beta, (i as f32 + 0.5) / n as f32).unwrap_or(0.0)))
+            .sum::<f64>()
+            / f64::from(n);
+        assert!((mean - 1.0).abs() < 1e-4, "{beta}: {mean}");
+    }
+}
+
+/// The furnace camera's centre (64 x 48) and two points beside it, all on the spheres.
+const PIXELS: [Vec2; 3] = [
+    Vec2::new(32.5, 24.5),
+    Vec2::new(29.5, 29.5),
+    Vec2::new(36.5, 22.5),
+];
+
+/// Roulette from the first bounce on, as deep as a path likes.
+fn roulette_from_the_start() -> PathOptions {
+    PathOptions {
+        rr_depth: Some(1),
+        ..PathOptions::with_depth(1000)
+    }
+}
+
+#[test]
+fn roulette_at_throughput_one_keeps_the_white_furnace_at_one() {
+    // White spheres and glass keep the throughput (radiance scaling removed) at 1: every
+    // bounce plays at q = 0.95 and multiplies by 1 / 0.95.
+    let white = Material::from(Smooth::diffuse(Vec3::ONE));
+    let glass = Material::from(Smooth::glass(1.5));
+    for materials in [[white, white, white], [glass, white, glass]] {
+        let scene = spheres(&materials, 1000);
+        let method = Method::new(roulette_from_the_start());
+        let (mean, se) = support::estimate(&scene, method, &PIXELS, 5000, 11);
+        eprintln!("furnace, roulette from 1: {mean:.5} ± {se:.5}");
+        assert!(
+            (mean - 1.0).abs() <= 5.0 * se + 1e-4,
+            "{materials:?}: {mean} ± {se}"
+        );
+    }
+}
+
+#[test]
+fn roulette_at_throughput_near_zero_is_unbiased_and_finite() {
+    // A dark convex sphere in the furnace sends back exactly its albedo; after the first
+    // bounce the path survives with q = 0.02 and carries 50 times more.
+    let albedo = 0.02;
+    let dark = spheres(
+        &[Material::from(Smooth::diffuse(Vec3::splat(albedo)))],
+        1000,
+    );
+    let method = Method::new(roulette_from_the_start());
+    let (mean, se) = support::estimate(&dark, method, &PIXELS, 10_000, 12);
+    eprintln!("albedo {albedo}, roulette from 1: {mean:.5} ± {se:.5}");
+    assert!(
+        (mean - f64::from(albedo)).abs() <= 5.0 * se + 1e-6,
+        "{mean} ± {se}"
+    );
+    // Far darker, touching spheres: throughputs of 1e-6, 1e-12 ... 1e-40 and their survivors.
+    for albedo in [1e-6, 1e-20] {
+        let materials = [Material::from(Smooth::diffuse(Vec3::splat(albedo))); 3];
+        let out = render_with(
+            &spheres(&materials, 1000),
+            method,
+            &Lens::PINHOLE,
+            &RenderSettings::new(16, 16, 16),
+            &IndependentSampler::new(13),
+            &ReconstructionFilter::new(FilterKind::Box, None).unwrap(),
+        );
+        assert_eq!(out.stats.nonfinite_samples, 0, "albedo {albedo}");
+        assert!(out.image.pixels.iter().all(|p| p.is_finite()));
+    }
+}

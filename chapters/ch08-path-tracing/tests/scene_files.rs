@@ -1,0 +1,120 @@
+//! `render` renders every scene file of the workbook: the path tracer computes every effect
+//! of chapters 01 to 07, so each chapter's scenes must render here too, tiny, to a finite
+//! image with no non-finite sample, or be refused with the reason listed in [`REFUSED`].
+//!
+//! The files are found, not listed, so a new scene is tested as soon as it is added, and a
+//! scene that starts to be refused fails until its reason is written down here.
+
+use common::output::read_image;
+use common::test_support::run_binary;
+use std::path::{Path, PathBuf};
+
+const BIN: &str = env!("CARGO_BIN_EXE_ch08-path-tracing");
+
+/// Scene files `render` refuses, by file name, with what its message must say. None: every
+/// feature of the subset (motion, lenses, lobes, area and point lights) is the path tracer's.
+const REFUSED: &[(&str, &str)] = &[];
+
+/// Every `.xml` file under `chapters/*/scenes/`, at any depth, sorted.
+fn scene_files() -> Vec<PathBuf> {
+    fn walk(dir: &Path, files: &mut Vec<PathBuf>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, files);
+            } else if path.extension().is_some_and(|e| e == "xml") {
+                files.push(path);
+            }
+        }
+    }
+    let chapters = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+    let mut files = Vec::new();
+    for chapter in std::fs::read_dir(chapters).unwrap() {
+        let scenes = chapter.unwrap().path().join("scenes");
+        if scenes.is_dir() {
+            walk(&scenes, &mut files);
+        }
+    }
+    files.sort();
+    files
+}
+
+/// Renders `scene` at 16 x 12 pixels and 2 samples per pixel; `Err` with the message if
+/// `render` refuses it.
+fn render_tiny(scene: &Path, out: &Path) -> Result<common::image::Image, String> {
+    let image = out.join("image.pfm");
+    let stats = out.join("stats.json");
+    let output = run_binary(
+        BIN,
+        &[
+            "render",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--width",
+            "16",
+            "--height",
+            "12",
+            "--spp",
+            "2",
+            "--out",
+            image.to_str().unwrap(),
+            "--stats",
+            stats.to_str().unwrap(),
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    assert!(
+        !stderr.contains("panicked"),
+        "{}: {stderr}",
+        scene.display()
+    );
+    if !output.status.success() {
+        return Err(stderr);
+    }
+    let stats: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    assert_eq!(
+        stats["nonfinite_samples"],
+        0,
+        "{}: {stderr}",
+        scene.display()
+    );
+    Ok(read_image(&image).unwrap())
+}
+
+#[test]
+fn render_renders_every_scene_file_of_the_workbook() {
+    let files = scene_files();
+    let own = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell-box.xml");
+    assert!(
+        files.contains(&own),
+        "the search finds the chapter's own scenes"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let mut refused = Vec::new();
+    for file in &files {
+        let name = file.file_name().unwrap().to_str().unwrap();
+        let reason = REFUSED.iter().find(|(n, _)| *n == name).map(|(_, r)| *r);
+        match (render_tiny(file, dir.path()), reason) {
+            (Ok(image), None) => {
+                assert_eq!((image.width, image.height), (16, 12), "{name}");
+                assert!(
+                    image.pixels.iter().all(|p| p.is_finite()),
+                    "{name}: a pixel is not finite"
+                );
+            }
+            (Ok(_), Some(reason)) => panic!("{name} rendered, but is listed as refused: {reason}"),
+            (Err(message), Some(reason)) => {
+                assert!(message.contains(reason), "{name}: {message}");
+                refused.push(name);
+            }
+            (Err(message), None) => panic!("{name} is refused: {message}"),
+        }
+    }
+    eprintln!(
+        "{} scene files: {} rendered, refused: {refused:?}",
+        files.len(),
+        files.len() - refused.len()
+    );
+    assert_eq!(refused.len(), REFUSED.len(), "every listed refusal exists");
+}
