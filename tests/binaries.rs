@@ -19,9 +19,11 @@ pub const CHAPTERS: &[&str] = &[
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
+    "ch08-path-tracing",
 ];
 
 /// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
+/// Chapter 08 renders only scene files: run it with [`scene_args`].
 pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch01-whitted",
     "ch03-anti-aliasing",
@@ -29,7 +31,23 @@ pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
+    "ch08-path-tracing",
 ];
+
+/// The suite's smallest scene file (8x6 pixels, one sample per pixel, a ball on a floor under
+/// a panel light and a dim sky), for chapters that need a scene file to render anything.
+pub const TINY_SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/tiny.xml");
+
+/// What `render` of `chapter` needs to render anything, to put after `render`: nothing for
+/// the chapters with built-in scenes, `--scene` [`TINY_SCENE`] for chapter 08, which has none.
+/// Tests give the size and sample count they want on the command line; those override the
+/// file's.
+pub fn scene_args(chapter: &str) -> &'static [&'static str] {
+    match chapter {
+        "ch08-path-tracing" => &["--scene", TINY_SCENE],
+        _ => &[],
+    }
+}
 
 /// `target/<profile>`, where cargo writes binaries: the parent of the test's `deps/`.
 fn profile_dir() -> PathBuf {

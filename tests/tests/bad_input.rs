@@ -6,9 +6,14 @@
 //! In the arguments, `{out}` is `out.png` in a fresh empty directory `{dir}`, in which `{file}`
 //! is an existing regular file (to put a directory where a file is); `{bad}` is the directory
 //! of broken scene files next to this crate, `{ch04}` chapter 04's scene directory.
+//!
+//! Chapter 08 renders only scene files, so a row about anything else would be refused for the
+//! missing scene alone: a `render` row that names no `--scene` runs it with the suite's tiny
+//! scene ([`scene_args`]), and is refused for its own bad input. The `bare` rows run exactly as
+//! written: they are about the missing scene.
 
 use std::path::{Path, PathBuf};
-use workbook_tests::binaries::{CHAPTERS, RENDERING_CHAPTERS, files_in, run_chapter};
+use workbook_tests::binaries::{CHAPTERS, RENDERING_CHAPTERS, files_in, run_chapter, scene_args};
 
 /// One bad input: the chapters it is tried on, the arguments, and a fragment the error
 /// message must contain.
@@ -16,10 +21,21 @@ struct Case {
     chapters: &'static [&'static str],
     args: &'static [&'static str],
     expected: &'static str,
+    /// Whether a chapter without built-in scenes is given one (see the top of the file).
+    with_scene: bool,
 }
 
 const ALL: &[&str] = CHAPTERS;
 const RENDERING: &[&str] = RENDERING_CHAPTERS;
+/// The rendering chapters with built-in scenes (`--builtin`): all but chapter 08.
+const BUILTIN: &[&str] = &[
+    "ch01-whitted",
+    "ch03-anti-aliasing",
+    "ch04-depth-of-field",
+    "ch05-motion-blur",
+    "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
+];
 /// The chapters with chapter 03's pixel samplers and filters.
 const ANTI_ALIASED: &[&str] = &[
     "ch03-anti-aliasing",
@@ -27,6 +43,7 @@ const ANTI_ALIASED: &[&str] = &[
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
+    "ch08-path-tracing",
 ];
 /// The chapters with chapter 04's lens options.
 const WITH_LENS: &[&str] = &[
@@ -34,11 +51,26 @@ const WITH_LENS: &[&str] = &[
     "ch05-motion-blur",
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
+    "ch08-path-tracing",
 ];
 const CH05: &[&str] = &["ch05-motion-blur"];
+/// The chapters with chapter 05's shutter and motion.
+const WITH_MOTION: &[&str] = &[
+    "ch05-motion-blur",
+    "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
+    "ch08-path-tracing",
+];
 /// The chapters with chapter 06's lobes and choices at glass.
-const FUZZY: &[&str] = &["ch06-fuzzy-reflections", "ch07-soft-shadows"];
+const FUZZY: &[&str] = &[
+    "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
+    "ch08-path-tracing",
+];
 const CH07: &[&str] = &["ch07-soft-shadows"];
+/// The chapters with chapter 07's area lights and their sampling options.
+const AREA_LIGHTS: &[&str] = &["ch07-soft-shadows", "ch08-path-tracing"];
+const CH08: &[&str] = &["ch08-path-tracing"];
 const CH01: &[&str] = &["ch01-whitted"];
 const CH02: &[&str] = &["ch02-monte-carlo"];
 /// The chapters before chapter 04, which have no lens.
@@ -53,6 +85,19 @@ const fn case(
         chapters,
         args,
         expected,
+        with_scene: true,
+    }
+}
+
+/// A row run exactly as written, even by chapter 08: a row about a missing scene.
+const fn bare(
+    chapters: &'static [&'static str],
+    args: &'static [&'static str],
+    expected: &'static str,
+) -> Case {
+    Case {
+        with_scene: false,
+        ..case(chapters, args, expected)
     }
 }
 
@@ -100,8 +145,8 @@ const CASES: &[Case] = &[
     case(RENDERING, &["render", "--out", "{out}", "--stats", "{file}/stats.json"], "cannot create the directory"),
     case(ALL, &["figures", "--out", "{file}/figures"], "cannot create the output directory"),
     // Scenes: built-in names, scene files missing, malformed or beyond the chapter.
-    case(RENDERING, &["render", "--out", "{out}", "--builtin", "teapot"], "teapot"),
-    case(RENDERING, &["render", "--out", "{out}", "-D", "spp=4"], "--scene"),
+    case(BUILTIN, &["render", "--out", "{out}", "--builtin", "teapot"], "teapot"),
+    bare(RENDERING, &["render", "--out", "{out}", "-D", "spp=4"], "--scene"),
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/empty.xml", "-D", "spp"], "NAME=VALUE"),
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{dir}/no-such-scene.xml"], "no-such-scene.xml"),
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/empty.xml"], "empty.xml"),
@@ -119,6 +164,14 @@ const CASES: &[Case] = &[
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/zero-spp.xml"], "sample_count must be an integer of at least 1"),
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/huge-film.xml"], "needs 534058 MiB"),
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/zero-spp.xml", "-D", "=3"], "NAME=VALUE"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/bdpt.xml"], "integrator `bdpt`"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/negative-depth.xml"], "max_depth must be -1 (unlimited) or 1 or more (0 would render a black image), found -2"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/zero-depth.xml"], "max_depth must be -1 (unlimited) or 1 or more (0 would render a black image), found 0"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/zero-rr-depth.xml"], "rr_depth must be 1 or more, found 0"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/negative-point-light.xml"], "a point light's intensity must be finite and not negative"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/negative-sky.xml"], "a constant emitter's radiance must be finite and not negative"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/integrator-child.xml"], "<bsdf> is not allowed inside <integrator>"),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/envmap.xml"], "unknown emitter type \"envmap\""),
     case(BEFORE_CH04, &["render", "--out", "{out}", "--scene", "{ch04}/thinlens-spheres.xml"], "thinlens"),
     // Chapter 01's pixel pattern.
     case(CH01, &["render", "--out", "{out}", "--pixel", "grid", "--spp", "8"], "square"),
@@ -132,14 +185,15 @@ const CASES: &[Case] = &[
     case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "-1"], "radius"),
     case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "nan"], "radius"),
     case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "17"], "radius"),
-    // Chapter 05's shutter.
+    // Chapter 05's shutter (the later chapters read it from scene files).
     case(CH05, &["render", "--out", "{out}", "--shutter-open", "1", "--shutter-close", "0.5"], "must close at or after the time it opens"),
     case(CH05, &["render", "--out", "{out}", "--shutter-open", "nan"], "shutter times must be finite"),
     case(CH05, &["render", "--out", "{out}", "--shutter-close", "inf"], "shutter times must be finite"),
     case(CH05, &["render", "--out", "{out}", "--shutter-close", "soon"], "`soon` is not a number"),
     case(CH05, &["render", "--out", "{out}", "--stretches", "0"], "--stretches"),
     case(CH05, &["render", "--out", "{out}", "--time-sampling", "sobol"], "sobol"),
-    // Chapter 06's lobes and choices at glass.
+    case(WITH_MOTION, &["render", "--out", "{out}", "--scene", "{bad}/shutter-backwards.xml"], "the shutter must close at or after the time it opens"),
+    // Chapter 06's lobes and choices at glass (chapters 07 and 08 have them too).
     case(FUZZY, &["render", "--out", "{out}", "--exponent", "-1"], "the lobe exponent must be a finite number >= 0"),
     case(FUZZY, &["render", "--out", "{out}", "--exponent", "nan"], "the lobe exponent must be a finite number >= 0"),
     case(FUZZY, &["render", "--out", "{out}", "--exponent", "inf"], "the lobe exponent must be a finite number >= 0"),
@@ -149,17 +203,35 @@ const CASES: &[Case] = &[
     case(FUZZY, &["render", "--out", "{out}", "--below-surface", "clamp"], "clamp"),
     case(FUZZY, &["render", "--out", "{out}", "--scene", "{bad}/unknown-bsdf.xml"], "the bsdf `plastic` is not one this chapter renders"),
     case(FUZZY, &["render", "--out", "{out}", "--scene", "{bad}/rough-typo.xml"], "roughconductor has no property `alhpa`"),
-    // Chapter 07's area lights.
-    case(CH07, &["render", "--out", "{out}", "--light-samples", "0"], "--light-samples"),
-    case(CH07, &["render", "--out", "{out}", "--light-samples", "-4"], "invalid value '-4' for '--light-samples"),
-    case(CH07, &["render", "--out", "{out}", "--light-samples", "4097"], "--light-samples"),
-    case(CH07, &["render", "--out", "{out}", "--light-strata", "sobol"], "sobol"),
-    case(CH07, &["render", "--out", "{out}", "--light-sampling", "importance"], "importance"),
-    case(CH07, &["render", "--out", "{out}", "--disc-warp", "square"], "square"),
+    // Chapter 07's area lights (chapter 08 has them too).
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--light-samples", "0"], "--light-samples"),
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--light-samples", "-4"], "invalid value '-4' for '--light-samples"),
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--light-samples", "4097"], "--light-samples"),
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--light-strata", "sobol"], "sobol"),
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--light-sampling", "importance"], "importance"),
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--disc-warp", "square"], "square"),
     case(CH07, &["render", "--out", "{out}", "--light-scale", "0"], "--light-scale must be a number from 1e-4 to 1e4"),
     case(CH07, &["render", "--out", "{out}", "--light-scale", "nan"], "--light-scale must be a number from 1e-4 to 1e4"),
     case(CH07, &["render", "--out", "{out}", "--light-scale", "1e9"], "--light-scale must be a number from 1e-4 to 1e4"),
-    case(CH07, &["render", "--out", "{out}", "--scene", "{bad}/moving-light.xml"], "is an area light that moves"),
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--scene", "{bad}/moving-light.xml"], "is an area light that moves"),
+    case(AREA_LIGHTS, &["render", "--out", "{out}", "--scene", "{bad}/negative-light.xml"], "an area light's radiance must be finite and not negative"),
+    // Chapter 08's path tracer: a scene file is needed, and the estimator's options must be
+    // known and in range; chapter 06's and 07's options a path has no use for are refused.
+    bare(CH08, &["render", "--out", "{out}"], "render needs a scene: --scene FILE.xml"),
+    case(CH08, &["render", "--out", "{out}", "--builtin", "cornell-box"], "unexpected argument '--builtin'"),
+    case(CH08, &["render", "--out", "{out}", "--light-scale", "2"], "unexpected argument '--light-scale'"),
+    case(CH08, &["render", "--out", "{out}", "--mis", "sometimes"], "invalid value 'sometimes' for '--mis"),
+    case(CH08, &["render", "--out", "{out}", "--no-nee=yes"], "--no-nee"),
+    case(CH08, &["render", "--out", "{out}", "--rr-depth", "0"], "`0` is neither a depth from 1 to 1000 nor `off`"),
+    case(CH08, &["render", "--out", "{out}", "--rr-depth", "1001"], "`1001` is neither a depth from 1 to 1000 nor `off`"),
+    case(CH08, &["render", "--out", "{out}", "--rr-depth", "2.5"], "`2.5` is neither a depth"),
+    case(CH08, &["render", "--out", "{out}", "--rr-depth", "nan"], "`nan` is neither a depth"),
+    case(CH08, &["render", "--out", "{out}", "--rr-depth", "-1"], "'-1'"),
+    case(CH08, &["render", "--out", "{out}", "--light-samples", "2"], "the path tracer sends one light sample per bounce"),
+    case(CH08, &["render", "--out", "{out}", "--glass", "both"], "--glass both: a path follows one ray per bounce"),
+    case(CH08, &["render", "--out", "{out}", "--glass", "half"], "only --glass fresnel applies"),
+    case(CH08, &["render", "--out", "{out}", "--below-surface", "resample"], "only --below-surface drop applies"),
+    case(CH08, &["render", "--out", "{out}", "--below-surface", "reflect"], "only --below-surface drop applies"),
     // Chapter 04's lens (chapter 05 has it too).
     case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "0", "--focal-length", "0.05"], "f-number"),
     case(WITH_LENS, &["render", "--out", "{out}", "--f-number", "-2", "--focal-length", "0.05"], "f-number"),
@@ -179,7 +251,17 @@ const CASES: &[Case] = &[
     case(WITH_LENS, &["render", "--out", "{out}", "--aperture-rotation", "nan", "--aperture", "polygon"], "rotation"),
 ];
 
-/// The arguments of `case` with the placeholders filled in.
+/// The arguments `chapter` is run with for `case`: the row's, with the chapter's scene after
+/// `render` if it needs one and the row names none (see the top of the file).
+fn arguments(case: &Case, chapter: &str) -> Vec<&'static str> {
+    let mut args = case.args.to_vec();
+    if case.with_scene && args.first() == Some(&"render") && !args.contains(&"--scene") {
+        args.splice(1..1, scene_args(chapter).iter().copied());
+    }
+    args
+}
+
+/// `args` with the placeholders filled in.
 fn fill(args: &[&str], dir: &Path, file: &Path) -> Vec<String> {
     let bad = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/bad");
     let ch04 = Path::new(env!("CARGO_MANIFEST_DIR")).join("../chapters/ch04-depth-of-field/scenes");
@@ -201,7 +283,7 @@ fn failure(case: &Case, chapter: &str) -> Option<String> {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("a-file");
     std::fs::write(&file, b"in the way").unwrap();
-    let args = fill(case.args, dir.path(), &file);
+    let args = fill(&arguments(case, chapter), dir.path(), &file);
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     let out = run_chapter(chapter, &args);
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -218,18 +300,18 @@ fn failure(case: &Case, chapter: &str) -> Option<String> {
         return None;
     };
     Some(format!(
-        "{chapter} {:?} {problem} (expected `{}`; files {left:?}):\n{stderr}",
-        case.args, case.expected
+        "{chapter} {args:?} {problem} (expected `{}`; files {left:?}):\n{stderr}",
+        case.expected
     ))
 }
 
-#[test]
-fn every_bad_input_is_refused_clearly_and_writes_nothing() {
-    let runs: Vec<(&Case, &str)> = CASES
+/// Tries every chapter of every row of `cases`, four at a time (each run is a short process
+/// start, mostly waiting), and fails with the list of the runs that were not refused properly.
+fn assert_refused(cases: &[Case]) {
+    let runs: Vec<(&Case, &str)> = cases
         .iter()
         .flat_map(|case| case.chapters.iter().map(move |chapter| (case, *chapter)))
         .collect();
-    // Four at a time: each run is a short process start, mostly waiting.
     let failures: Vec<String> = std::thread::scope(|scope| {
         let workers: Vec<_> = (0..4)
             .map(|k| {
@@ -255,4 +337,9 @@ fn every_bad_input_is_refused_clearly_and_writes_nothing() {
         runs.len(),
         failures.join("\n")
     );
+}
+
+#[test]
+fn every_bad_input_is_refused_clearly_and_writes_nothing() {
+    assert_refused(CASES);
 }

@@ -11,7 +11,7 @@ use ch04_depth_of_field::aperture::Aperture;
 use ch04_depth_of_field::lens::Lens;
 use common::image::Image;
 use common::render::RenderSettings;
-use workbook_tests::binaries::{RENDERING_CHAPTERS, run_chapter};
+use workbook_tests::binaries::{RENDERING_CHAPTERS, run_chapter, scene_args};
 
 /// 40x20 pixels: six tiles, fewer than the largest thread count, so some threads idle.
 const WIDTH: u32 = 40;
@@ -95,24 +95,23 @@ fn two_runs_of_each_binary_write_the_same_bytes() {
     for chapter in RENDERING_CHAPTERS {
         let run = |name: &str| {
             let path = dir.path().join(format!("{chapter}-{name}.pfm"));
-            let out = run_chapter(
-                chapter,
-                &[
-                    "render",
-                    "--width",
-                    "24",
-                    "--height",
-                    "16",
-                    "--spp",
-                    "4",
-                    "--seed",
-                    "3",
-                    "--threads",
-                    "7",
-                    "--out",
-                    path.to_str().unwrap(),
-                ],
-            );
+            let mut args = vec!["render"];
+            args.extend(scene_args(chapter));
+            args.extend([
+                "--width",
+                "24",
+                "--height",
+                "16",
+                "--spp",
+                "4",
+                "--seed",
+                "3",
+                "--threads",
+                "7",
+                "--out",
+                path.to_str().unwrap(),
+            ]);
+            let out = run_chapter(chapter, &args);
             assert!(
                 out.status.success(),
                 "{}",

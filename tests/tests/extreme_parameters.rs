@@ -244,6 +244,48 @@ proptest! {
         check_finite(&out)?;
     }
 
+    /// Chapter 08 on the Whitted scene of any size, place, camera, light and index, its mirror
+    /// and glass made glossy and frosted with any exponent (or left smooth), its sky the
+    /// environment light, seen through any lens, with every estimator.
+    #[test]
+    fn path_traced_whitted_scenes_give_finite_pixels(
+        params in whitted_params(),
+        exponent in prop_oneof![Just(None), Just(Some(0.0f32)), log_uniform(1e-3, 1e7).prop_map(Some)],
+        nee in any::<bool>(),
+        mis in prop::sample::select(ch08_path_tracing::MisHeuristic::ALL.to_vec()),
+        rr_depth in prop_oneof![Just(None), (1u32..=8).prop_map(Some)],
+        radius in prop_oneof![Just(0.0f32), log_uniform(1e-6, 1e4)],
+        focus in log_uniform(1e-6, 1e9),
+        spp in 1u64..=4,
+        seed in any::<u64>(),
+    ) {
+        use ch01_whitted::material::Material as Smooth;
+        use ch05_motion_blur::MotionScene;
+        use ch06_fuzzy_reflections::{FuzzyScene, Material};
+        use ch07_soft_shadows::SoftShadowScene;
+        use ch08_path_tracing::{Method, PathOptions, render_with};
+        let scene = whitted_scene(&params);
+        prop_assume!(scene.is_some(), "the camera is at its target");
+        let mut scene = FuzzyScene::smooth(MotionScene::still(scene.unwrap()));
+        if let Some(exponent) = exponent {
+            for material in &mut scene.materials {
+                *material = match *material {
+                    Material::Smooth(Smooth::Mirror { reflectance }) => Material::glossy(reflectance, exponent),
+                    Material::Smooth(Smooth::Dielectric { int_ior, .. }) => Material::rough_glass(int_ior, exponent),
+                    other => other,
+                };
+            }
+        }
+        let scene = SoftShadowScene::without_lights(scene);
+        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth: params.max_depth });
+        let lens = Lens::new(radius, focus).unwrap();
+        let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+        let settings = RenderSettings::new(params.width, params.height, spp);
+        let pixels = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
+        let out = render_with(&scene, method, &lens, &settings, &pixels, &filter);
+        check_finite(&out)?;
+    }
+
     #[test]
     fn every_lens_gives_finite_pixels(
         params in whitted_params(),
@@ -285,4 +327,62 @@ fn a_recursion_limit_of_1000_finishes() {
     assert_eq!(out.stats.nonfinite_samples, 0);
     let seconds = start.elapsed().as_secs_f64();
     assert!(seconds < 5.0, "{seconds} s");
+}
+
+/// Chapter 08's binary at the ends of its options' ranges, on the suite's tiny scene: each
+/// render succeeds, and its `--stats` say that no sample was non-finite.
+#[test]
+fn the_path_tracer_binary_counts_no_non_finite_samples_at_extreme_settings() {
+    use workbook_tests::binaries::{TINY_SCENE, run_chapter};
+    let settings: &[&[&str]] = &[
+        &["--max-depth", "1"],
+        &["--max-depth", "1000", "--rr-depth", "off"],
+        &["--max-depth", "1000", "--rr-depth", "1"],
+        &["--no-nee"],
+        &["--mis", "none"],
+        &["--mis", "balance"],
+        &["--exponent", "0"],
+        &["--exponent", "1e7"],
+        &["--aperture-radius", "1e4", "--focus-distance", "1e-6"],
+        &["--aperture-radius", "1e-6", "--focus-distance", "1e9"],
+        &[
+            "--f-number",
+            "1e-3",
+            "--focal-length",
+            "1e3",
+            "--blades",
+            "3",
+        ],
+        &["--filter", "mitchell", "--filter-radius", "16"],
+        &["--filter", "gaussian", "--filter-radius", "1e-6"],
+        &["--sampler", "halton", "--seed", "18446744073709551615"],
+        &["--light-sampling", "area", "--disc-warp", "naive"],
+        &["--width", "1", "--height", "1"],
+        &["--width", "2000", "--height", "1", "--spp", "1"],
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.pfm");
+    let stats = dir.path().join("stats.json");
+    for extra in settings {
+        let mut args = vec!["render", "--scene", TINY_SCENE, "--threads", "2"];
+        args.extend([
+            "--out",
+            out.to_str().unwrap(),
+            "--stats",
+            stats.to_str().unwrap(),
+        ]);
+        // A small image with two samples per pixel, unless the row sizes it itself.
+        if !extra.contains(&"--width") {
+            args.extend(["--width", "6", "--height", "4", "--spp", "2"]);
+        }
+        args.extend_from_slice(extra);
+        let done = run_chapter("ch08-path-tracing", &args);
+        let stderr = String::from_utf8_lossy(&done.stderr);
+        assert!(done.status.success(), "{extra:?}: {stderr}");
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+        assert_eq!(json["nonfinite_samples"], 0, "{extra:?}: {json}");
+        let image = common::output::read_image(&out).unwrap();
+        assert!(image.pixels.iter().all(|p| p.is_finite()), "{extra:?}");
+    }
 }

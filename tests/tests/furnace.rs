@@ -6,6 +6,13 @@
 //! so the objects that can be put in a furnace are the smooth mirror and glass ones. Grazing
 //! views are included (a glass slab and a mirror floor seen at half a degree), where the
 //! Fresnel reflectance approaches 1.
+//!
+//! Chapter 08's path tracer sees the same objects under the same sky. Chapters 07 and 08 are
+//! also put in a box whose walls are area lights of the sky's radiance: a white matte ball,
+//! a mirror and glass inside must look as bright as the walls, and glossy and frosted balls
+//! no brighter, whether the walls are found by light samples, by BSDF samples, or both
+//! weighted by multiple importance sampling. Their estimates are noisy; the tolerance is
+//! measured from the spread of the pixels (see [`assert_as_bright_as_the_sky`]).
 
 use ch01_whitted::camera::{CameraFrame, PinholeCamera};
 use ch01_whitted::material::Material;
@@ -13,6 +20,11 @@ use ch01_whitted::scene::{Scene, SceneBuilder};
 use ch01_whitted::{PixelPattern, render};
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::lens::Lens;
+use ch05_motion_blur::MotionScene;
+use ch06_fuzzy_reflections::{FuzzyScene, Material as FuzzyMaterial, TraceOptions};
+use ch07_soft_shadows::scenes::{Builder, matte};
+use ch07_soft_shadows::{LightOptions, SoftShadowScene};
+use ch08_path_tracing::{Method, MisHeuristic, PathOptions};
 use common::geometry::{Quad, Shape, Sphere};
 use common::render::{RenderOutput, RenderSettings};
 use glam::Vec3;
@@ -177,5 +189,158 @@ fn filters_and_lenses_create_no_energy_either() {
         let out = ch04_depth_of_field::render_with(&scene, &lens, &settings(8), &sampler, &filter);
         let darkest = darkest_pixel(&format!("ch04 {lens:?}"), &out);
         assert!(darkest > 0.99, "ch04 {lens:?}: a pixel of {darkest}");
+    }
+}
+
+/// Half the side of the glowing box of [`in_a_glowing_box`].
+const BOX: f32 = 3.0;
+
+/// `object` alone inside a closed box whose six black walls glow with radiance [`SKY`] inwards:
+/// chapter 07's area lights as the furnace. Everything inside then receives the same radiance
+/// from every direction, through area-light sampling (a light sample) as much as through
+/// rays that hit a wall (a BSDF sample), so an object that absorbs nothing looks exactly as
+/// bright as the walls.
+fn in_a_glowing_box(object: Shape, material: FuzzyMaterial, max_depth: u32) -> SoftShadowScene {
+    let (min, d) = (Vec3::splat(-BOX), 2.0 * BOX);
+    let (dx, dy, dz) = (d * Vec3::X, d * Vec3::Y, d * Vec3::Z);
+    let max = Vec3::splat(BOX);
+    // Each wall's normal, e1 x e2, points into the box.
+    let walls = [
+        Quad::new(Vec3::new(min.x, min.y, max.z), dy, dx),
+        Quad::new(min, dx, dy),
+        Quad::new(Vec3::new(max.x, min.y, min.z), dz, dy),
+        Quad::new(min, dy, dz),
+        Quad::new(Vec3::new(min.x, max.y, min.z), dx, dz),
+        Quad::new(min, dz, dx),
+    ];
+    let frame = CameraFrame::look_at(Vec3::new(0.3, 0.5, 2.6), Vec3::ZERO, Vec3::Y).unwrap();
+    let camera = PinholeCamera::new(frame, 60.0, SIZE, SIZE);
+    walls
+        .into_iter()
+        .fold(Builder::new(), |builder, wall| {
+            builder.area_light(Shape::Quad(wall), Vec3::splat(SKY))
+        })
+        .shape(object, material)
+        .build(camera, max_depth)
+}
+
+/// The objects of the glowing box, and whether they absorb nothing: a white lobe loses the
+/// directions that fall below its surface (they are dropped).
+fn box_objects() -> [(&'static str, FuzzyMaterial, bool); 5] {
+    [
+        ("white matte", matte(Vec3::ONE), true),
+        ("mirror", Material::mirror().into(), true),
+        ("glass", Material::glass(1.5).into(), true),
+        (
+            "white glossy",
+            FuzzyMaterial::glossy(Vec3::ONE, 20.0),
+            false,
+        ),
+        (
+            "frosted glass",
+            FuzzyMaterial::rough_glass(1.5, 50.0),
+            false,
+        ),
+    ]
+}
+
+/// Checks that `out`, a render of a furnace, is on average no brighter than the sky (the
+/// walls), and if `absorbs_nothing`, no darker either.
+///
+/// Random estimators may put single pixels above the sky, so it is their mean that is
+/// checked: in a furnace every pixel of an object that absorbs nothing has the sky as its
+/// expected value, so the spread of the pixels measures the noise, and the mean must lie
+/// within 5 standard errors of the sky. (Where the object loses light depending on the view,
+/// the spread also holds that variation, and the bound is looser.) A smooth object's paths
+/// are exact: there the standard error is 0 and only float rounding is allowed.
+fn assert_as_bright_as_the_sky(what: &str, out: &RenderOutput, absorbs_nothing: bool) {
+    assert_eq!(out.stats.nonfinite_samples, 0, "{what}");
+    let values: Vec<f64> = out
+        .image
+        .pixels
+        .iter()
+        .map(|p| f64::from(p.element_sum()) / 3.0)
+        .collect();
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    let allowed = 5.0 * (variance / n).sqrt() + f64::from(ROUNDING);
+    let sky = f64::from(SKY);
+    assert!(
+        mean <= sky + allowed,
+        "{what}: a mean of {mean} under a sky of {SKY} (± {allowed}): energy was created"
+    );
+    assert!(
+        !absorbs_nothing || mean >= sky - allowed,
+        "{what}: a mean of {mean} under a sky of {SKY} (± {allowed}): energy was lost"
+    );
+}
+
+/// Samples per pixel of the path-traced and area-lit furnaces.
+const NOISY_SPP: u64 = 64;
+
+/// Chapter 08's render of `scene`: random pixel positions, a box filter.
+fn path_traced(scene: &SoftShadowScene, options: PathOptions) -> RenderOutput {
+    let sampler = PixelSampler::new(PixelSamplerKind::Random, NOISY_SPP, 3).unwrap();
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+    ch08_path_tracing::render_with(
+        scene,
+        Method::new(options),
+        &Lens::PINHOLE,
+        &settings(NOISY_SPP),
+        &sampler,
+        &filter,
+    )
+}
+
+/// Chapter 08's path tracer on chapter 01's objects. A path follows one ray at glass, chosen
+/// by the Fresnel term with weight 1, so without Russian roulette every sample is the sky or,
+/// if still inside after 64 segments, nothing: no pixel may be brighter than the sky. With
+/// roulette (Mitsuba's, from segment 5) a surviving path is divided by its chance to survive,
+/// so a sample may be brighter than the sky, and only the mean must match it.
+#[test]
+fn closed_glass_and_mirrors_look_like_the_sky_to_the_path_tracer() {
+    for object in OBJECTS {
+        let world = MotionScene::still(in_the_furnace(object, 64));
+        let scene = SoftShadowScene::without_lights(FuzzyScene::smooth(world));
+        let exact = PathOptions {
+            rr_depth: None,
+            ..PathOptions::with_depth(64)
+        };
+        let what = format!("ch08 {object:?}");
+        let darkest = darkest_pixel(&what, &path_traced(&scene, exact));
+        assert!(darkest > 0.99, "{what}: a pixel of {darkest} is too dark");
+        let out = path_traced(&scene, PathOptions::with_depth(64));
+        assert_as_bright_as_the_sky(&format!("{what} with roulette"), &out, true);
+    }
+}
+
+/// Chapters 07 and 08 in the glowing box: chapter 07's direct light (one point on each wall
+/// per matte hit), and chapter 08's paths with next-event estimation off, and on with each
+/// way of weighting a light sample against a BSDF sample that finds the same wall.
+#[test]
+fn objects_in_a_glowing_box_look_like_its_walls() {
+    let ball = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0));
+    let base = PathOptions::with_depth(64);
+    let mut estimators = vec![PathOptions { nee: false, ..base }];
+    estimators.extend(MisHeuristic::ALL.map(|mis| PathOptions { mis, ..base }));
+    for (name, material, absorbs_nothing) in box_objects() {
+        let scene = in_a_glowing_box(ball, material, 64);
+        let sampler = PixelSampler::new(PixelSamplerKind::Random, NOISY_SPP, 3).unwrap();
+        let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+        let out = ch07_soft_shadows::render_with(
+            &scene,
+            LightOptions::default(),
+            TraceOptions::default(),
+            &Lens::PINHOLE,
+            &settings(NOISY_SPP),
+            &sampler,
+            &filter,
+        );
+        assert_as_bright_as_the_sky(&format!("ch07 {name}"), &out, absorbs_nothing);
+        for options in &estimators {
+            let what = format!("ch08 {name} {options:?}");
+            assert_as_bright_as_the_sky(&what, &path_traced(&scene, *options), absorbs_nothing);
+        }
     }
 }

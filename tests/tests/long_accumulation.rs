@@ -3,6 +3,9 @@
 //!
 //! (The film's own tests add 1e8 identical samples in one thread; here the samples mix
 //! magnitudes six orders apart and the tiles come from several threads, as in a render.)
+//!
+//! Chapter 08's path tracer is run through the same runner in a furnace, where the answer is
+//! known, up to 65536 samples per pixel: its error keeps falling as 1/sqrt(spp).
 
 use common::film::{Film, PixelBoxFilter, PixelRect};
 use common::image::Image;
@@ -143,4 +146,70 @@ fn the_convergence_runner_is_right_at_its_largest_budgets() {
     let text = std::fs::read_to_string(&csv).unwrap();
     assert!(text.contains("independent,1048576,"), "{text}");
     plot_error_vs_time(&dir.path().join("error.png"), "long runs", &records).unwrap();
+}
+
+/// Side of chapter 08's furnace image: 16 pixels, each an independent estimate of 1.
+const FURNACE_SIDE: u32 = 4;
+
+/// Chapter 08's path tracer on its own white furnace (a white matte and a glass ball under a
+/// sky of radiance 1, depth 1000, Mitsuba's roulette): every pixel's expected value is 1.
+fn path_traced_furnace(spp: u64) -> Image {
+    use ch01_whitted::material::Material as Smooth;
+    use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
+    use ch06_fuzzy_reflections::Material;
+    use ch08_path_tracing::{Method, PathOptions, furnace, render_with};
+    let white = Material::from(Smooth::diffuse(Vec3::ONE));
+    let glass = Material::from(Smooth::glass(1.5));
+    let scene = furnace::spheres(&[white, glass], 1000);
+    let sampler = PixelSampler::new(PixelSamplerKind::Random, spp, spp).unwrap();
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+    let settings = RenderSettings {
+        threads: Some(2),
+        ..RenderSettings::new(FURNACE_SIDE, FURNACE_SIDE, spp)
+    };
+    let method = Method::new(PathOptions::with_depth(1000));
+    let out = render_with(
+        &scene,
+        method,
+        &ch04_depth_of_field::Lens::PINHOLE,
+        &settings,
+        &sampler,
+        &filter,
+    );
+    assert_eq!(out.stats.nonfinite_samples, 0);
+    out.image
+}
+
+#[test]
+fn the_path_tracer_converges_without_a_floor_to_65536_samples_per_pixel() {
+    let budgets: Vec<u64> = (0..=8).map(|k| 4u64.pow(k)).collect();
+    let reference = Image::filled(FURNACE_SIDE, FURNACE_SIDE, Vec3::ONE);
+    let techniques = [Technique::new("path", path_traced_furnace)];
+    let records = run_convergence(&techniques, &budgets, &reference);
+    // RMSE * sqrt(spp) estimates the noise of one sample, the same at every budget: the 16
+    // pixels (the channels agree: everything is grey) make its square sigma^2 times a chi^2
+    // with 16 degrees of freedom over 16, so it lies within [0.43, 1.61] sigma with probability
+    // 1 - 1e-4. Sigma is not known for a path tracer: the geometric mean over the budgets up
+    // to 256 spp, where no small bias can show, stands in for it (to within some 10%, hence
+    // the wider band). A bias b leaves a floor under the RMSE: at 65536 spp it leaves the band
+    // once b > sqrt(3) sigma / 256, here 0.08%.
+    let normalised: Vec<f64> = records
+        .iter()
+        .map(|r| r.rmse * (r.spp as f64).sqrt())
+        .collect();
+    let small = &normalised[..5];
+    let sigma = (small.iter().map(|x| x.ln()).sum::<f64>() / small.len() as f64).exp();
+    for (record, n) in records.iter().zip(&normalised) {
+        assert!(
+            record.seconds.is_finite() && record.seconds > 0.0,
+            "{record:?}"
+        );
+        assert!(
+            (0.35..2.0).contains(&(n / sigma)),
+            "{} spp: RMSE {} is {} times the typical sigma/sqrt(spp) ({sigma})",
+            record.spp,
+            record.rmse,
+            n / sigma
+        );
+    }
 }

@@ -1,9 +1,12 @@
 //! No lost work: a render stopped with Ctrl-C writes the image of the passes it completed and
-//! says so; a timed render renders passes until its time is up.
+//! says so; a timed render renders passes until its time is up. Every rendering chapter is
+//! checked, chapter 08 on the suite's tiny scene file (it has no built-in scenes).
 
 use std::path::Path;
 use std::time::{Duration, Instant};
-use workbook_tests::binaries::{RENDERING_CHAPTERS, chapter_binary, files_in, run_chapter};
+use workbook_tests::binaries::{
+    RENDERING_CHAPTERS, chapter_binary, files_in, run_chapter, scene_args,
+};
 
 /// Arguments of a small render of `spp` samples per pixel written to `out` (PFM: exact floats).
 ///
@@ -11,8 +14,9 @@ use workbook_tests::binaries::{RENDERING_CHAPTERS, chapter_binary, files_in, run
 /// for the whole sample count, so the first passes of a render asked for more cover only part
 /// of each pixel, and its interrupted image is not that of a shorter render.
 fn small_render<'a>(chapter: &str, out: &'a str, stats: &'a str, spp: &'a str) -> Vec<&'a str> {
-    let mut args = vec![
-        "render",
+    let mut args = vec!["render"];
+    args.extend(scene_args(chapter));
+    args.extend([
         "--width",
         "16",
         "--height",
@@ -27,7 +31,7 @@ fn small_render<'a>(chapter: &str, out: &'a str, stats: &'a str, spp: &'a str) -
         out,
         "--stats",
         stats,
-    ];
+    ]);
     args.extend(sampler_args(chapter));
     args
 }
@@ -167,8 +171,9 @@ fn a_time_budget_renders_passes_until_the_time_is_up() {
         let out = dir.path().join("out.png");
         let stats = dir.path().join("stats.json");
         let binary = chapter_binary(chapter); // built before the clock starts
-        let mut args = vec![
-            "render",
+        let mut args = vec!["render"];
+        args.extend(scene_args(chapter));
+        args.extend([
             "--width",
             "16",
             "--height",
@@ -179,7 +184,7 @@ fn a_time_budget_renders_passes_until_the_time_is_up() {
             out.to_str().unwrap(),
             "--stats",
             stats.to_str().unwrap(),
-        ];
+        ]);
         args.extend(sampler_args(chapter));
         let start = Instant::now();
         let done = std::process::Command::new(binary)

@@ -49,7 +49,7 @@ pub fn convert(description: &SceneDescription) -> Result<ConvertedScene, String>
         Integrator::Direct => 2,
         Integrator::Other { type_name, .. } => {
             return Err(format!(
-                "chapter 01 renders with Whitted's method; it does not know the integrator `{type_name}`"
+                "the integrator `{type_name}` is not one the workbook renders: it knows Mitsuba's `path` and `direct`"
             ));
         }
     };

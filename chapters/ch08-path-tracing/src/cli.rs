@@ -15,7 +15,7 @@ pub struct PathArgs {
     pub mis: MisHeuristic,
     /// The segment from which Russian roulette may end a path, or `off`
     /// [default: the scene file's, or 5].
-    #[arg(long, value_name = "N|off", value_parser = parse_rr_depth)]
+    #[arg(long, value_name = "N|off", value_parser = parse_rr_depth, allow_hyphen_values = true)]
     pub rr_depth: Option<RrDepth>,
 }
 

@@ -140,7 +140,7 @@ impl Quality {
 
 /// Writes every figure into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    std::fs::create_dir_all(out).with_context(|| format!("creating {}", out.display()))?;
+    common::cli::prepare_output_dir(out)?;
     let quality = if quick {
         Quality {
             quick,

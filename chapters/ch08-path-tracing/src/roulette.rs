@@ -14,11 +14,13 @@ pub const MAX_SURVIVAL: f32 = 0.95;
 /// The roulette for a path whose throughput (radiance scaling removed) has the largest
 /// channel `throughput_max`, with the uniform number `u`: `Some(1 / q)`, the factor the
 /// surviving throughput is multiplied by, or `None` when the path ends.
-/// `q = min(throughput_max, MAX_SURVIVAL)`; a path with nothing left (`q <= 0`, or NaN) ends.
+/// `q = min(throughput_max, MAX_SURVIVAL)`; a path with nothing left (`q` below the smallest
+/// normal float, whose inverse would be infinite, or NaN) ends.
 pub fn russian_roulette(throughput_max: f32, u: f32) -> Option<f32> {
     // BEGIN SOLUTION
-    // `f32::min` ignores NaN, so a NaN throughput is refused before it can become 0.95.
-    if throughput_max.is_nan() || throughput_max <= 0.0 {
+    // `f32::min` ignores NaN, so a NaN throughput is refused before it can become 0.95; and
+    // below the smallest normal float, 1 / q would overflow to infinity.
+    if throughput_max.is_nan() || throughput_max < f32::MIN_POSITIVE {
         return None;
     }
     let q = throughput_max.min(MAX_SURVIVAL);

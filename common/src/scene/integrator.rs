@@ -26,27 +26,31 @@ pub(super) fn read_integrator(reader: &mut Reader, node: Node) -> Result<Integra
             format!("<{tag}> is not allowed inside <integrator>"),
         ));
     }
-    let mut depth = |name: &str, default: i32| -> Result<i32, SceneError> {
+    // Depths the workbook renders: `max_depth` -1 (unlimited) or from 1 (0, which Mitsuba
+    // renders black, is refused rather than changed), `rr_depth` from 1 (as Mitsuba demands).
+    let mut depth = |name: &str, default: i32, allowed: &str| -> Result<i32, SceneError> {
         let Some(value) = properties.integer(reader, name)? else {
             return Ok(default);
         };
         let position = properties
             .position_of(name)
             .unwrap_or(reader.position(node));
+        let unlimited_allowed = name == "max_depth";
         i32::try_from(value)
             .ok()
-            .filter(|&depth| depth >= -1)
+            .filter(|&depth| depth >= 1 || (unlimited_allowed && depth == -1))
             .ok_or_else(|| {
-                reader.error_at(
-                    position,
-                    format!("{name} must be -1 (unlimited) or more, found {value}"),
-                )
+                reader.error_at(position, format!("{name} must be {allowed}, found {value}"))
             })
     };
     let integrator = match type_name.as_str() {
         "path" => Integrator::Path {
-            max_depth: depth("max_depth", -1)?,
-            rr_depth: depth("rr_depth", 5)?,
+            max_depth: depth(
+                "max_depth",
+                -1,
+                "-1 (unlimited) or 1 or more (0 would render a black image)",
+            )?,
+            rr_depth: depth("rr_depth", 5, "1 or more")?,
         },
         "direct" => Integrator::Direct,
         _ => {

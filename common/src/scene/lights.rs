@@ -26,10 +26,16 @@ pub(super) fn read_emitter(reader: &mut Reader, node: Node) -> Result<Emitter, S
     }
     let emitter = match type_name.as_str() {
         "area" => Emitter::Area(AreaEmitter {
-            radiance: properties.rgb(reader, "radiance")?.unwrap_or(Vec3::ONE),
+            radiance: emission(reader, node, &mut properties, "radiance", "an area light's")?,
         }),
         "constant" => Emitter::Standalone(EmitterDescription::Constant {
-            radiance: properties.rgb(reader, "radiance")?.unwrap_or(Vec3::ONE),
+            radiance: emission(
+                reader,
+                node,
+                &mut properties,
+                "radiance",
+                "a constant emitter's",
+            )?,
         }),
         "point" => {
             let position = properties.point(reader, "position")?;
@@ -47,7 +53,13 @@ pub(super) fn read_emitter(reader: &mut Reader, node: Node) -> Result<Emitter, S
             };
             Emitter::Standalone(EmitterDescription::Point {
                 position,
-                intensity: properties.rgb(reader, "intensity")?.unwrap_or(Vec3::ONE),
+                intensity: emission(
+                    reader,
+                    node,
+                    &mut properties,
+                    "intensity",
+                    "a point light's",
+                )?,
             })
         }
         _ => {
@@ -59,4 +71,27 @@ pub(super) fn read_emitter(reader: &mut Reader, node: Node) -> Result<Emitter, S
     };
     properties.finish(reader);
     Ok(emitter)
+}
+
+/// An emitter's colour property `name` (1 if absent), refused unless every channel is finite
+/// and not negative: a negative light would subtract light, which nothing physical does, and
+/// would give negative pixels rather than an error.
+fn emission(
+    reader: &Reader,
+    node: Node,
+    properties: &mut Properties,
+    name: &str,
+    whose: &str,
+) -> Result<Vec3, SceneError> {
+    let value = properties.rgb(reader, name)?.unwrap_or(Vec3::ONE);
+    if value.is_finite() && value.cmpge(Vec3::ZERO).all() {
+        return Ok(value);
+    }
+    let position = properties
+        .position_of(name)
+        .unwrap_or(reader.position(node));
+    Err(reader.error_at(
+        position,
+        format!("{whose} {name} must be finite and not negative, found {value}"),
+    ))
 }
