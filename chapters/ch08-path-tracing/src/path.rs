@@ -281,6 +281,7 @@ impl PathTracer<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bsdf::test_support::floor_hit;
     use crate::furnace::spheres;
     use ch01_whitted::material::Material as Smooth;
     use ch06_fuzzy_reflections::Material;
@@ -302,19 +303,6 @@ mod tests {
             fuzz: FuzzMethod::Lobe,
         };
         use_tracer(&tracer)
-    }
-
-    /// A hit at the origin of the floor `y = 0`, known to within 1e-6.
-    fn floor_hit() -> SurfaceHit {
-        SurfaceHit {
-            t: 1.0,
-            p: Vec3::ZERO,
-            p_error: Vec3::splat(1e-6),
-            n: Vec3::Y,
-            shading_n: Vec3::Y,
-            uv: glam::Vec2::ZERO,
-            shape: 0,
-        }
     }
 
     /// Extends a path from the floor hit, seen from straight above, `n` times with sample

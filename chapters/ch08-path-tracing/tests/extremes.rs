@@ -3,16 +3,12 @@
 mod support;
 
 use ch01_whitted::material::Material as Smooth;
-use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
-use ch04_depth_of_field::Lens;
 use ch06_fuzzy_reflections::Material;
 use ch06_fuzzy_reflections::furnace::scene_of;
 use ch07_soft_shadows::SoftShadowScene;
+use ch08_path_tracing::PathOptions;
 use ch08_path_tracing::furnace::spheres;
-use ch08_path_tracing::{Method, PathOptions, render_with};
 use common::geometry::{Quad, Shape, Sphere};
-use common::render::RenderSettings;
-use common::sampler::IndependentSampler;
 use glam::Vec3;
 
 fn render_finite(
@@ -20,16 +16,7 @@ fn render_finite(
     options: PathOptions,
     what: &str,
 ) -> f64 {
-    let settings = RenderSettings::new(16, 16, 4);
-    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
-    let out = render_with(
-        scene,
-        Method::new(options),
-        &Lens::PINHOLE,
-        &settings,
-        &IndependentSampler::new(5),
-        &filter,
-    );
+    let out = support::render_pinhole(scene, options, (16, 16, 4), 5);
     assert_eq!(out.stats.nonfinite_samples, 0, "{what}");
     assert!(out.image.pixels.iter().all(|p| p.is_finite()), "{what}");
     common::metrics::mean(&out.image).y

@@ -20,16 +20,14 @@
 //! Both estimators have (almost) no noise: a path is off only if it is still bouncing when
 //! the depth limit ends it, with probability at most `F^(max_depth - 1)`.
 
+mod support;
+
 use ch01_whitted::material::Material as Smooth;
-use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
-use ch04_depth_of_field::Lens;
 use ch06_fuzzy_reflections::Material;
 use ch06_fuzzy_reflections::furnace::scene_of;
 use ch07_soft_shadows::SoftShadowScene;
-use ch08_path_tracing::{Method, PathOptions, render_with};
+use ch08_path_tracing::PathOptions;
 use common::geometry::{Shape, Sphere};
-use common::render::RenderSettings;
-use common::sampler::IndependentSampler;
 use glam::Vec3;
 
 /// The index of the glass.
@@ -56,16 +54,7 @@ fn assert_every_pixel(scene: &SoftShadowScene, expected: f32, cut_off: f64) -> f
         rr_depth: None,
         ..PathOptions::with_depth(MAX_DEPTH)
     };
-    let settings = RenderSettings::new(16, 12, SPP);
-    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
-    let out = render_with(
-        scene,
-        Method::new(options),
-        &Lens::PINHOLE,
-        &settings,
-        &IndependentSampler::new(3),
-        &filter,
-    );
+    let out = support::render_pinhole(scene, options, (16, 12, SPP), 3);
     assert_eq!(out.stats.nonfinite_samples, 0);
     // A path's standard deviation is `expected √(p (1 - p))`; a pixel averages SPP of them.
     let noise = f64::from(expected) * (cut_off * (1.0 - cut_off) / SPP as f64).sqrt();

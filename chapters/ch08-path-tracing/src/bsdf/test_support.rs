@@ -7,12 +7,13 @@ use common::geometry::SurfaceHit;
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2, Vec3};
 
-/// A hit at the origin of a surface with normal +y.
+/// A hit at the origin of a surface with normal +y, known to within 1e-6 (so that a ray
+/// spawned there starts off the surface).
 pub fn floor_hit() -> SurfaceHit {
     SurfaceHit {
         t: 1.0,
         p: Vec3::ZERO,
-        p_error: Vec3::ZERO,
+        p_error: Vec3::splat(1e-6),
         n: Vec3::Y,
         shading_n: Vec3::Y,
         uv: Vec2::ZERO,

@@ -2,11 +2,12 @@
 //! standard error, and the chapter's scene files.
 #![allow(dead_code)]
 
+use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::CameraRays;
 use ch07_soft_shadows::SoftShadowScene;
-use ch08_path_tracing::{Method, PathTracer, SceneLights};
-use common::render::SampleCounters;
+use ch08_path_tracing::{Method, PathOptions, PathTracer, SceneLights, render_with};
+use common::render::{RenderOutput, RenderSettings, SampleCounters};
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 
@@ -15,6 +16,25 @@ pub fn scene_file(name: &str) -> ch08_path_tracing::scene_file::ConvertedScene {
     let path = ch08_path_tracing::agreement::scenes_dir().join(name);
     let loaded = common::scene::load_scene_file(&path, &[]).expect("the scene loads");
     ch08_path_tracing::scene_file::convert(&loaded.scene).expect("the scene converts")
+}
+
+/// `scene` path-traced through a pinhole at `width` x `height` with `spp` samples per pixel
+/// (box filter, independent samples from `seed`), with `options` and the default method.
+pub fn render_pinhole(
+    scene: &SoftShadowScene,
+    options: PathOptions,
+    (width, height, spp): (u32, u32, u64),
+    seed: u64,
+) -> RenderOutput {
+    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
+    render_with(
+        scene,
+        Method::new(options),
+        &Lens::PINHOLE,
+        &RenderSettings::new(width, height, spp),
+        &IndependentSampler::new(seed),
+        &filter,
+    )
 }
 
 /// The mean luminance-free green channel of `n` paths through each film position of
