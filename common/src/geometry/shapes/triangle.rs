@@ -121,11 +121,12 @@ impl Triangle {
         let shear_x = -d.x / d.z;
         let shear_y = -d.y / d.z;
         let scale_z = 1.0 / d.z;
-        let to_ray_space = |p: Vec3| {
-            let v = permute(p - ray.origin);
-            Vec3::new(v.x + shear_x * v.z, v.y + shear_y * v.z, v.z * scale_z)
-        };
-        let [p0, p1, p2] = self.p.map(to_ray_space);
+        // Translated and permuted, then sheared and scaled; the depths before scaling are kept
+        // for the error bound of the shear below.
+        let [v0, v1, v2] = self.p.map(|p| permute(p - ray.origin));
+        let to_ray_space =
+            |v: Vec3| Vec3::new(v.x + shear_x * v.z, v.y + shear_y * v.z, v.z * scale_z);
+        let [p0, p1, p2] = [v0, v1, v2].map(to_ray_space);
 
         let e = [
             edge_function(p1, p2),
@@ -163,8 +164,13 @@ impl Triangle {
         let max_x = max_abs(p0.x, p1.x, p2.x);
         let max_y = max_abs(p0.y, p1.y, p2.y);
         let delta_z = gamma(3) * max_z;
-        let delta_x = gamma(5) * (max_x + max_z);
-        let delta_y = gamma(5) * (max_y + max_z);
+        // The shear `x + shear_x z` rounds relative to the depth *before* scaling (|shear| <= 1).
+        // pbrt-v4 uses the scaled depth, which is the same for a unit direction, but far too
+        // large for a short one (a ray taken into the space of an object scaled up 1e5 times
+        // has a direction 1e-5 long, and every hit was rejected) and too small for a long one.
+        let max_depth = max_abs(v0.z, v1.z, v2.z);
+        let delta_x = gamma(5) * (max_x + max_depth);
+        let delta_y = gamma(5) * (max_y + max_depth);
         let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
         let max_e = max_abs(e[0], e[1], e[2]);
         let delta_t =
@@ -199,6 +205,28 @@ mod tests {
         )
     }
 
+    #[test]
+    fn a_hit_does_not_depend_on_the_length_of_the_direction() {
+        // Rays taken into the space of a scaled object have directions far from unit length.
+        let triangle = Triangle::new(
+            Vec3::new(-1.0, 0.0, -1.0),
+            Vec3::new(1.0, 0.0, -1.0),
+            Vec3::new(0.0, 0.0, 1.0),
+        );
+        let origin = Vec3::new(0.1, 2.0, 0.2);
+        let unit = Vec3::new(0.05, -1.0, -0.1).normalize();
+        for length in [1e-6f32, 1e-3, 1.0, 1e3, 1e6] {
+            let ray = Ray::new(origin, unit * length);
+            let hit = triangle
+                .intersect(&ray)
+                .unwrap_or_else(|| panic!("missed at {length}"));
+            assert!(
+                (hit.t * length - 2.0 / unit.y.abs()).abs() < 1e-5,
+                "{length}: {}",
+                hit.t
+            );
+        }
+    }
     #[test]
     fn hit_has_known_t_p_n_and_barycentrics() {
         let ray = Ray::new(Vec3::new(0.25, 0.5, 5.0), -Vec3::Z);
