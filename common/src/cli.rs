@@ -288,6 +288,29 @@ impl RenderArgs {
         }
         Ok(())
     }
+
+    /// Tells the user what [`write_outputs`](Self::write_outputs) wrote: the file, its size
+    /// and samples, `detail` (what the chapter's options chose, such as ", glass fresnel";
+    /// empty for nothing), the time and the ray rate; and warns when samples were not finite
+    /// (they are left out of the image, and `--stats` counts them).
+    pub fn report_written(&self, rendered: &RenderOutput, detail: &str) {
+        let stats = &rendered.stats;
+        eprintln!(
+            "wrote {} ({}x{}, {} spp{detail}, {:.2} s, {:.0} rays/s)",
+            self.out.display(),
+            stats.width,
+            stats.height,
+            stats.spp,
+            stats.seconds,
+            stats.rays_per_second
+        );
+        if stats.nonfinite_samples > 0 {
+            eprintln!(
+                "warning: {} samples were not finite and were left out",
+                stats.nonfinite_samples
+            );
+        }
+    }
 }
 
 /// Refuses image sizes whose film would not fit in [`MAX_IMAGE_BYTES`].

@@ -105,14 +105,6 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         "seed": command.args.seed,
     });
     command.args.write_outputs(&rendered, extra)?;
-    eprintln!(
-        "wrote {} ({}x{}, {} spp, {:.2} s, {:.0} rays/s)",
-        command.args.out.display(),
-        rendered.stats.width,
-        rendered.stats.height,
-        rendered.stats.spp,
-        rendered.stats.seconds,
-        rendered.stats.rays_per_second
-    );
+    command.args.report_written(&rendered, "");
     Ok(())
 }

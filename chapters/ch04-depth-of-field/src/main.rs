@@ -116,22 +116,12 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         "seed": command.args.seed,
     });
     command.args.write_outputs(&rendered, extra)?;
-    eprintln!(
-        "wrote {} ({}x{}, {} spp, aperture radius {}, focus at {}, {:.2} s, {:.0} rays/s)",
-        command.args.out.display(),
-        rendered.stats.width,
-        rendered.stats.height,
-        rendered.stats.spp,
-        lens.aperture_radius,
-        lens.focus_distance,
-        rendered.stats.seconds,
-        rendered.stats.rays_per_second
+    command.args.report_written(
+        &rendered,
+        &format!(
+            ", aperture radius {}, focus at {}",
+            lens.aperture_radius, lens.focus_distance
+        ),
     );
-    if rendered.stats.nonfinite_samples > 0 {
-        eprintln!(
-            "warning: {} samples were not finite and were left out",
-            rendered.stats.nonfinite_samples
-        );
-    }
     Ok(())
 }

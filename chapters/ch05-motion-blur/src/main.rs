@@ -156,22 +156,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         "seed": command.args.seed,
     });
     command.args.write_outputs(&rendered, extra)?;
-    eprintln!(
-        "wrote {} ({}x{}, {} spp, shutter [{}, {}], {:.2} s, {:.0} rays/s)",
-        command.args.out.display(),
-        rendered.stats.width,
-        rendered.stats.height,
-        rendered.stats.spp,
-        shutter.open,
-        shutter.close,
-        rendered.stats.seconds,
-        rendered.stats.rays_per_second
+    command.args.report_written(
+        &rendered,
+        &format!(", shutter [{}, {}]", shutter.open, shutter.close),
     );
-    if rendered.stats.nonfinite_samples > 0 {
-        eprintln!(
-            "warning: {} samples were not finite and were left out",
-            rendered.stats.nonfinite_samples
-        );
-    }
     Ok(())
 }

@@ -144,21 +144,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         .expect("a JSON object")
         .extend(command.fuzzy.stats());
     command.args.write_outputs(&rendered, extra)?;
-    eprintln!(
-        "wrote {} ({}x{}, {} spp, glass {}, {:.2} s, {:.0} rays/s)",
-        command.args.out.display(),
-        rendered.stats.width,
-        rendered.stats.height,
-        rendered.stats.spp,
-        command.fuzzy.glass.name(),
-        rendered.stats.seconds,
-        rendered.stats.rays_per_second
+    command.args.report_written(
+        &rendered,
+        &format!(", glass {}", command.fuzzy.glass.name()),
     );
-    if rendered.stats.nonfinite_samples > 0 {
-        eprintln!(
-            "warning: {} samples were not finite and were left out",
-            rendered.stats.nonfinite_samples
-        );
-    }
     Ok(())
 }

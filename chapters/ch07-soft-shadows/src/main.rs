@@ -165,21 +165,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         .expect("a JSON object")
         .extend(command.fuzzy.stats());
     command.args.write_outputs(&rendered, extra)?;
-    eprintln!(
-        "wrote {} ({}x{}, {} spp, {} shadow ray(s) per light, {:.2} s, {:.0} rays/s)",
-        command.args.out.display(),
-        rendered.stats.width,
-        rendered.stats.height,
-        rendered.stats.spp,
-        lights.samples,
-        rendered.stats.seconds,
-        rendered.stats.rays_per_second
+    command.args.report_written(
+        &rendered,
+        &format!(", {} shadow ray(s) per light", lights.samples),
     );
-    if rendered.stats.nonfinite_samples > 0 {
-        eprintln!(
-            "warning: {} samples were not finite and were left out",
-            rendered.stats.nonfinite_samples
-        );
-    }
     Ok(())
 }

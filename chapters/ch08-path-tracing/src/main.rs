@@ -165,20 +165,6 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         extra["dimensions_per_path"] = dimensions.to_json();
     }
     command.args.write_outputs(&rendered, extra)?;
-    eprintln!(
-        "wrote {} ({}x{}, {} spp, {:.2} s, {:.0} rays/s)",
-        command.args.out.display(),
-        rendered.stats.width,
-        rendered.stats.height,
-        rendered.stats.spp,
-        rendered.stats.seconds,
-        rendered.stats.rays_per_second
-    );
-    if rendered.stats.nonfinite_samples > 0 {
-        eprintln!(
-            "warning: {} samples were not finite and were left out",
-            rendered.stats.nonfinite_samples
-        );
-    }
+    command.args.report_written(&rendered, "");
     Ok(())
 }
