@@ -89,17 +89,19 @@ impl<'a> SceneLights<'a> {
     /// The lights of `scene`, area lights sampled as `sampling` says.
     pub fn of(scene: &'a SoftShadowScene, sampling: LightSampling) -> Self {
         let world = &scene.scene.world.scene;
-        let has_environment = world.background != Vec3::ZERO;
-        let count = scene.lights.len() + world.lights.len() + usize::from(has_environment);
-        Self {
+        let mut lights = Self {
             area: &scene.lights,
             light_of_shape: &scene.light_of_shape,
             points: &world.lights,
             environment: world.background,
             sampling,
-            count,
-            pick_probability: 1.0 / count.max(1) as f32,
-        }
+            count: 0,
+            pick_probability: 1.0,
+        };
+        lights.count =
+            lights.area.len() + lights.points.len() + usize::from(lights.has_environment());
+        lights.pick_probability = 1.0 / lights.count.max(1) as f32;
+        lights
     }
 
     /// How many lights there are to pick from.
@@ -130,12 +132,7 @@ impl<'a> SceneLights<'a> {
         if n == 0 {
             return None;
         }
-        // One light needs no arithmetic (and the path tracer draws no number for it).
-        let i = if n == 1 {
-            0
-        } else {
-            ((u * n as f32) as usize).min(n - 1)
-        };
+        let i = ((u * n as f32) as usize).min(n - 1);
         Some(if i < self.area.len() {
             LightRef::Area(i)
         } else if i < self.area.len() + self.points.len() {

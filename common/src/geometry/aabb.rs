@@ -154,7 +154,6 @@ impl Aabb {
     /// scalar `f32` operations would, so the answer does not depend on the instruction set.
     fn slab_interval(&self, ray: &SlabRay, t_max: f32) -> Option<(f32, f32)> {
         const EXIT_SLACK: f32 = 1.0 + 2.0 * gamma(3);
-        let ray = &ray.simd;
         let (min, max) = (Vec3A::from(self.min), Vec3A::from(self.max));
         let near = Vec3A::select(ray.negative, max, min);
         let far = Vec3A::select(ray.negative, min, max);
@@ -174,26 +173,20 @@ impl Aabb {
 }
 
 /// A ray prepared for many slab tests: the three divisions are done once, not once per box.
+///
+/// Kept as SIMD vectors: the slab test runs for every BVH node a ray visits, and a SIMD vector
+/// computes all three axes in one instruction per operation, each lane rounding exactly as
+/// `f32` does.
 #[derive(Clone, Copy, Debug)]
 pub struct SlabRay {
     /// The ray's origin.
-    pub origin: Vec3,
+    pub origin: Vec3A,
     /// `1 / dir`, componentwise; `±∞` where `dir` is `±0`.
-    pub inv_dir: Vec3,
+    pub inv_dir: Vec3A,
     /// Whether the ray travels towards smaller coordinates on each axis. Decided from the sign
     /// of `inv_dir`, so `dir = -0` counts as negative, matching `inv_dir = -∞`.
     pub dir_is_negative: [bool; 3],
-    /// The same three as SIMD vectors, for the slab test: it runs for every BVH node a ray
-    /// visits, and a SIMD vector computes all three axes in one instruction per operation,
-    /// each lane rounding exactly as `f32` does.
-    simd: SimdSlabRay,
-}
-
-/// The slab test's inputs as SIMD vectors.
-#[derive(Clone, Copy, Debug)]
-struct SimdSlabRay {
-    origin: Vec3A,
-    inv_dir: Vec3A,
+    /// The same as a SIMD mask, for choosing each axis's near and far side.
     negative: BVec3A,
 }
 
@@ -203,14 +196,10 @@ impl SlabRay {
         let inv_dir = ray.dir.recip();
         let dir_is_negative = [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0];
         Self {
-            origin: ray.origin,
-            inv_dir,
+            origin: ray.origin.into(),
+            inv_dir: inv_dir.into(),
             dir_is_negative,
-            simd: SimdSlabRay {
-                origin: ray.origin.into(),
-                inv_dir: inv_dir.into(),
-                negative: BVec3A::from_array(dir_is_negative),
-            },
+            negative: BVec3A::from_array(dir_is_negative),
         }
     }
 }
