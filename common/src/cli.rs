@@ -289,6 +289,18 @@ impl RenderArgs {
         Ok(())
     }
 
+    /// The scene file to render, if one was given. `-D` sets a parameter of a scene file, so
+    /// it is refused without one. (The option's `requires = "scene"` is not enough: clap lets
+    /// it through when a chapter's `--builtin`, which conflicts with `--scene`, is given.)
+    pub fn scene_file(&self) -> Result<Option<&Path>, CliError> {
+        if self.scene.is_none() && !self.define.is_empty() {
+            return Err(CliError::Invalid(
+                "-D sets a parameter of a scene file; it needs --scene FILE.xml".to_string(),
+            ));
+        }
+        Ok(self.scene.as_deref())
+    }
+
     /// Tells the user what [`write_outputs`](Self::write_outputs) wrote: the file, its size
     /// and samples, `detail` (what the chapter's options chose, such as ", glass fresnel";
     /// empty for nothing), the time and the ray rate; and warns when samples were not finite

@@ -53,29 +53,27 @@ fn main() -> ExitCode {
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    if command.args.scene.is_none() && !command.args.define.is_empty() {
-        anyhow::bail!("-D sets a parameter of a scene file; it needs --scene FILE.xml");
-    }
-    let (mut scene, file_filter, file_sampler, default_spp, scene_name) = match &command.args.scene
-    {
-        Some(path) => {
-            let converted = read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
-            (
-                converted.scene,
-                Some(converted.filter),
-                Some(converted.sampler),
-                converted.spp,
-                path.display().to_string(),
-            )
-        }
-        None => (
-            command.builtin.build(DEFAULT_MAX_DEPTH),
-            None,
-            None,
-            16,
-            command.builtin.name().to_string(),
-        ),
-    };
+    let (mut scene, file_filter, file_sampler, default_spp, scene_name) =
+        match command.args.scene_file()? {
+            Some(path) => {
+                let converted =
+                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
+                (
+                    converted.scene,
+                    Some(converted.filter),
+                    Some(converted.sampler),
+                    converted.spp,
+                    path.display().to_string(),
+                )
+            }
+            None => (
+                command.builtin.build(DEFAULT_MAX_DEPTH),
+                None,
+                None,
+                16,
+                command.builtin.name().to_string(),
+            ),
+        };
     if let Some(max_depth) = command.max_depth {
         scene.max_depth = max_depth;
     }

@@ -56,11 +56,8 @@ fn main() -> ExitCode {
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    if command.args.scene.is_none() && !command.args.define.is_empty() {
-        anyhow::bail!("-D sets a parameter of a scene file; it needs --scene FILE.xml");
-    }
     let (mut scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
-        match &command.args.scene {
+        match command.args.scene_file()? {
             Some(path) => {
                 let converted =
                     read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
