@@ -5,10 +5,13 @@
 //! - passes on the workspace: the solution really solves it.
 //!
 //! Before running any check, the student edition must compile, or every check would fail for
-//! the wrong reason. The edition and its build live under `target/student/`, in fixed places,
-//! so repeated runs reuse the compiled dependencies instead of piling up copies.
+//! the wrong reason. The edition lives under `target/student/`, in a fixed place, and its build
+//! shares the workspace's build directory: the dependencies are compiled once, for the
+//! workspace's tests, and the edition reuses them. The edition's own crates are built with
+//! other settings (see [`SEPARATE_CRATES_CONFIG`]), so cargo files them under other names than
+//! the workspace's, and its binaries go to a target directory of their own.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use anyhow::{Context, Result, bail};
@@ -33,16 +36,20 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
         return Ok(());
     }
 
-    let student_dir = workspace::target_dir(root).join("student");
+    let target_dir = workspace::target_dir(root);
+    let student_dir = target_dir.join("student");
     let edition = student_dir.join("edition");
-    let edition_target = student_dir.join("target");
+    let edition_build = EditionBuild {
+        target_dir: student_dir.join("target"),
+        build_dir: target_dir,
+    };
 
     println!("Writing the student edition to {}", edition.display());
     let files = student_edition::write(root, exercises, &edition, true)?;
     println!("  {files} files, {} exercise(s) stubbed", exercises.len());
-    write_quick_build_config(&edition)?;
+    write_separate_crates_config(&edition)?;
 
-    build_edition(&edition, &edition_target, exercises)?;
+    build_edition(&edition, &edition_build, exercises)?;
 
     println!();
     println!(
@@ -51,7 +58,7 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
     );
     let mut surprises = Vec::new();
     for exercise in exercises {
-        let stub = run_check(&exercise.check, &edition, Some(&edition_target))?;
+        let stub = run_check(&exercise.check, &edition, Some(&edition_build))?;
         let solution = run_check(&exercise.check, root, None)?;
         println!(
             "{:<28} {:<28} {:<28}",
@@ -85,25 +92,49 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
 }
 
 /// Settings for this check's own build of the student edition, written into the edition's
-/// `.cargo/config.toml` (which overrides the manifest's profiles): the checks are small unit
-/// tests, so the dependencies are compiled without optimisation or debug information, which
-/// shortens the check's largest step, a second build of every dependency. The edition handed
-/// to students (`book student`) keeps the workspace's settings.
-const QUICK_BUILD_CONFIG: &str = "\
-# Written by `book check-exercises` for its own build of the student edition.
+/// `.cargo/config.toml` (which overrides the manifest's profiles).
+///
+/// Cargo names a workspace crate's compiled files after its name, version, settings and its
+/// path *relative to the workspace*, which are the same in the edition as in the workspace. In
+/// a shared build directory the two copies of a crate would then be one: a check on the
+/// workspace could run the student's stub. Building the edition's crates without debug
+/// information (the workspace keeps line tables) gives them names of their own. The
+/// dependencies are configured by `[profile.dev.package."*"]`, which this leaves alone, so
+/// they keep the workspace's names and are shared. The edition handed to students
+/// (`book student`) keeps the workspace's settings.
+pub(crate) const SEPARATE_CRATES_CONFIG: &str = "\
+# Written by `book check-exercises` for its own build of the student edition: the workspace's
+# crates get names of their own in the shared build directory; dependencies are shared.
 [profile.dev]
 debug = false
-
-[profile.dev.package.\"*\"]
-opt-level = 0
 ";
 
-fn write_quick_build_config(edition: &Path) -> Result<()> {
+fn write_separate_crates_config(edition: &Path) -> Result<()> {
     let dir = edition.join(".cargo");
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let path = dir.join("config.toml");
-    std::fs::write(&path, QUICK_BUILD_CONFIG)
+    std::fs::write(&path, SEPARATE_CRATES_CONFIG)
         .with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// Where cargo puts the student edition's build.
+struct EditionBuild {
+    /// Final artifacts (binaries), kept apart from the workspace's.
+    target_dir: PathBuf,
+    /// Intermediate artifacts: the workspace's own build directory, so that the dependencies
+    /// compiled for the workspace are reused rather than compiled a second time.
+    build_dir: PathBuf,
+}
+
+impl EditionBuild {
+    /// Points `command`'s cargo at this build. A build directory the caller chose
+    /// (`CARGO_BUILD_BUILD_DIR`) is inherited as it is: the workspace's build used it too.
+    fn apply(&self, command: &mut Command) {
+        command.env("CARGO_TARGET_DIR", &self.target_dir);
+        if std::env::var_os("CARGO_BUILD_BUILD_DIR").is_none() {
+            command.env("CARGO_BUILD_BUILD_DIR", &self.build_dir);
+        }
+    }
 }
 
 /// Compiles, with all their targets, the student edition's packages that hold exercises.
@@ -111,7 +142,7 @@ fn write_quick_build_config(edition: &Path) -> Result<()> {
 /// Only those packages can break: a stub changes a function's body, never its signature, so
 /// nothing that depends on them notices. They and their dependencies are also exactly what the
 /// checks need, so nothing is built that the checks would not build anyway.
-fn build_edition(edition: &Path, target: &Path, exercises: &[Exercise]) -> Result<()> {
+fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -> Result<()> {
     let mut args = vec!["build", "--all-targets"];
     let mut packages: Vec<&str> = exercises.iter().map(|e| e.chapter.as_str()).collect();
     packages.sort_unstable();
@@ -122,15 +153,15 @@ fn build_edition(edition: &Path, target: &Path, exercises: &[Exercise]) -> Resul
     println!(
         "Compiling it: cargo {} (target dir {})",
         args.join(" "),
-        target.display()
+        build.target_dir.display()
     );
-    let status = Command::new("cargo")
+    let mut command = Command::new("cargo");
+    command
         .args(&args)
         .current_dir(edition)
-        .env("CARGO_TARGET_DIR", target)
-        .stdin(Stdio::null())
-        .status()
-        .context("cannot run cargo")?;
+        .stdin(Stdio::null());
+    build.apply(&mut command);
+    let status = command.status().context("cannot run cargo")?;
     if !status.success() {
         bail!(
             "the student edition does not compile (errors above): every stub must leave its \
@@ -141,15 +172,15 @@ fn build_edition(edition: &Path, target: &Path, exercises: &[Exercise]) -> Resul
 }
 
 /// Runs `check` through `sh -c` in `dir`, quietly, keeping its output for the report.
-fn run_check(check: &str, dir: &Path, target: Option<&Path>) -> Result<Outcome> {
+fn run_check(check: &str, dir: &Path, build: Option<&EditionBuild>) -> Result<Outcome> {
     let mut command = Command::new("sh");
     command
         .arg("-c")
         .arg(check)
         .current_dir(dir)
         .stdin(Stdio::null());
-    if let Some(target) = target {
-        command.env("CARGO_TARGET_DIR", target);
+    if let Some(build) = build {
+        build.apply(&mut command);
     }
     let output = command
         .output()
@@ -177,4 +208,34 @@ fn verdict(outcome: &Outcome, should_pass: bool) -> String {
 fn last_lines(text: &str, count: usize) -> String {
     let lines: Vec<&str> = text.lines().collect();
     lines[lines.len().saturating_sub(count)..].join("\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The `debug` setting of `[profile.dev]` in a TOML document (`None` if it sets none).
+    fn dev_debug(document: &str) -> Option<toml::Value> {
+        let value: toml::Table = toml::from_str(document).expect("valid TOML");
+        value.get("profile")?.get("dev")?.get("debug").cloned()
+    }
+
+    /// If the workspace's test builds ever drop their line tables, the edition's crates would
+    /// share the workspace's names in the build directory, and the checks on the workspace
+    /// could run the students' stubs. Then the edition needs another distinguishing setting.
+    #[test]
+    fn the_editions_crates_are_built_with_other_settings_than_the_workspaces() {
+        let manifest = std::fs::read_to_string(workspace::root().join("Cargo.toml")).unwrap();
+        let workspace = dev_debug(&manifest);
+        let edition = dev_debug(SEPARATE_CRATES_CONFIG).expect("the edition sets debug");
+        assert_eq!(edition, toml::Value::Boolean(false));
+        let same = match &workspace {
+            None => false, // the default for dev is full debug information
+            Some(toml::Value::Boolean(on)) => !on,
+            Some(toml::Value::Integer(level)) => *level == 0,
+            Some(toml::Value::String(level)) => level == "none",
+            Some(other) => panic!("unexpected debug setting {other}"),
+        };
+        assert!(!same, "the workspace's [profile.dev] debug is {workspace:?}");
+    }
 }
