@@ -236,6 +236,9 @@ mod tests {
             Some(toml::Value::String(level)) => level == "none",
             Some(other) => panic!("unexpected debug setting {other}"),
         };
-        assert!(!same, "the workspace's [profile.dev] debug is {workspace:?}");
+        assert!(
+            !same,
+            "the workspace's [profile.dev] debug is {workspace:?}"
+        );
     }
 }
