@@ -136,6 +136,13 @@ impl Aabb {
         self.slab_interval(ray, t_max).is_some()
     }
 
+    /// Where the ray enters the box (0 if it starts inside), if it passes through it somewhere
+    /// in `[0, t_max]`: [`hit_by`](Self::hit_by) with the entry kept, for ordering BVH nodes.
+    #[inline]
+    pub fn entry(&self, ray: &SlabRay, t_max: f32) -> Option<f32> {
+        self.slab_interval(ray, t_max).map(|(t_enter, _)| t_enter)
+    }
+
     /// The slab test (Kay and Kajiya 1986), made robust as in pbrt-v4.
     ///
     /// The box is the intersection of three slabs `min[a] <= x[a] <= max[a]`. The ray is inside
@@ -183,23 +190,20 @@ pub struct SlabRay {
     pub origin: Vec3A,
     /// `1 / dir`, componentwise; `±∞` where `dir` is `±0`.
     pub inv_dir: Vec3A,
-    /// Whether the ray travels towards smaller coordinates on each axis. Decided from the sign
-    /// of `inv_dir`, so `dir = -0` counts as negative, matching `inv_dir = -∞`.
-    pub dir_is_negative: [bool; 3],
-    /// The same as a SIMD mask, for choosing each axis's near and far side.
+    /// Whether the ray travels towards smaller coordinates on each axis, as a SIMD mask for
+    /// choosing each axis's near and far side. Decided from the sign of `inv_dir`, so
+    /// `dir = -0` counts as negative, matching `inv_dir = -∞`.
     negative: BVec3A,
 }
 
 impl SlabRay {
     /// Precompute the inverse direction of `ray`.
     pub fn new(ray: &Ray) -> Self {
-        let inv_dir = ray.dir.recip();
-        let dir_is_negative = [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0];
+        let inv_dir = Vec3A::from(ray.dir.recip());
         Self {
             origin: ray.origin.into(),
-            inv_dir: inv_dir.into(),
-            dir_is_negative,
-            negative: BVec3A::from_array(dir_is_negative),
+            inv_dir,
+            negative: inv_dir.cmplt(Vec3A::ZERO),
         }
     }
 }

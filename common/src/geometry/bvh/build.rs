@@ -40,7 +40,6 @@ struct BuildPrimitive {
 /// How to divide a node's primitives: after reordering, the first `mid` go to the first child.
 struct Split {
     mid: usize,
-    axis: usize,
 }
 
 impl Bvh {
@@ -91,7 +90,7 @@ impl Bvh {
                     },
                 });
             }
-            Some(Split { mid, axis }) => {
+            Some(Split { mid }) => {
                 // Reserve the slot; the second child's index is known only after the first
                 // child's subtree has been laid out.
                 self.nodes.push(Node {
@@ -101,10 +100,7 @@ impl Bvh {
                 let (first_half, second_half) = primitives.split_at_mut(mid);
                 self.add_subtree(first_half, depth + 1);
                 let second_child = self.add_subtree(second_half, depth + 1) as u32;
-                self.nodes[index].kind = NodeKind::Interior {
-                    second_child,
-                    split_axis: axis as u8,
-                };
+                self.nodes[index].kind = NodeKind::Interior { second_child };
             }
         }
         index
@@ -172,14 +168,14 @@ fn choose_split(primitives: &mut [BuildPrimitive], bounds: &Aabb, depth: usize) 
         // a split must never leave a child empty.
         return Some(median_split(primitives, axis));
     }
-    Some(Split { mid, axis })
+    Some(Split { mid })
 }
 
 /// Splits at the median centroid along `axis`: both halves non-empty, whatever the centroids.
 fn median_split(primitives: &mut [BuildPrimitive], axis: usize) -> Split {
     let mid = primitives.len() / 2;
     primitives.select_nth_unstable_by(mid, |a, b| a.centroid[axis].total_cmp(&b.centroid[axis]));
-    Split { mid, axis }
+    Split { mid }
 }
 
 /// Moves the items for which `goes_first` holds to the front; returns how many there are.

@@ -41,9 +41,8 @@ enum NodeKind {
     /// The primitives `primitive_indices[first..first + count]`.
     Leaf { first: u32, count: u32 },
     /// Two children: the first is the next node in the array (depth-first order), so only the
-    /// second needs an index. `split_axis` is the axis the primitives were split along, which
-    /// tells the traversal which child is nearer to a ray.
-    Interior { second_child: u32, split_axis: u8 },
+    /// second needs an index.
+    Interior { second_child: u32 },
 }
 
 /// The result of [`Bvh::intersect`]: which primitive was hit first, and where along the ray.

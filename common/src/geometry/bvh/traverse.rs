@@ -57,56 +57,79 @@ impl Bvh {
     /// current `t_max`, nearer subtrees first. `visit_leaf` returns the new `t_max`, or
     /// `Break` to stop.
     ///
-    /// At an interior node the ray's direction decides the order: if it travels towards
-    /// smaller coordinates on the node's split axis, the second child (the one with the larger
-    /// coordinates) is nearer. Visiting it first finds a close hit early, and that hit's smaller
-    /// `t_max` then culls most of the farther subtree.
+    /// At an interior node both children's boxes are tested, and the one the ray enters first
+    /// is visited first: a close hit found early shrinks `t_max`, which then culls most of the
+    /// farther subtree. The farther child waits on the stack with the ray parameter where the
+    /// ray enters its box. When its turn comes, that entry is compared with the `t_max` of the
+    /// moment, which is the box test repeated for free: the box was entered before its exit
+    /// (the first test said so), so it is still reached exactly when its entry is before the
+    /// new `t_max`.
     fn walk<F>(&self, ray: &Ray, mut visit_leaf: F)
     where
         F: FnMut(&[u32], f32) -> ControlFlow<(), f32>,
     {
-        if self.nodes.is_empty() {
+        let Some(root) = self.nodes.first() else {
             return;
-        }
+        };
         let slab = SlabRay::new(ray);
         let mut t_max = ray.t_max;
-        // Each level of the current path defers at most one child, so the depth bounds the stack.
-        let mut deferred = [0u32; MAX_DEPTH];
+        if root.bounds.entry(&slab, t_max).is_none() {
+            return;
+        }
+        // Each level of the current path defers at most one child, so the depth bounds the
+        // stack. Each deferred node is kept with the ray parameter where the ray enters it.
+        let mut deferred = [(0u32, 0.0f32); MAX_DEPTH];
         let mut deferred_count = 0;
         let mut current = 0;
         loop {
-            let node = &self.nodes[current];
-            if node.bounds.hit_by(&slab, t_max) {
-                match node.kind {
-                    NodeKind::Interior {
-                        second_child,
-                        split_axis,
-                    } => {
-                        let first_child = current as u32 + 1;
-                        let (near, far) = if slab.dir_is_negative[split_axis as usize] {
-                            (second_child, first_child)
-                        } else {
-                            (first_child, second_child)
-                        };
-                        deferred[deferred_count] = far;
-                        deferred_count += 1;
-                        current = near as usize;
-                        continue;
-                    }
-                    NodeKind::Leaf { first, count } => {
-                        let range = first as usize..(first + count) as usize;
-                        match visit_leaf(&self.primitive_indices[range], t_max) {
-                            ControlFlow::Continue(new_t_max) => t_max = new_t_max,
-                            ControlFlow::Break(()) => return,
+            match self.nodes[current].kind {
+                NodeKind::Interior { second_child } => {
+                    let (first, second) = (current + 1, second_child as usize);
+                    let enter_first = self.nodes[first].bounds.entry(&slab, t_max);
+                    let enter_second = self.nodes[second].bounds.entry(&slab, t_max);
+                    match (enter_first, enter_second) {
+                        (Some(t_first), Some(t_second)) => {
+                            let (near, far, t_far) = if t_second < t_first {
+                                (second, first, t_first)
+                            } else {
+                                (first, second, t_second)
+                            };
+                            deferred[deferred_count] = (far as u32, t_far);
+                            deferred_count += 1;
+                            current = near;
+                            continue;
                         }
+                        (Some(_), None) => {
+                            current = first;
+                            continue;
+                        }
+                        (None, Some(_)) => {
+                            current = second;
+                            continue;
+                        }
+                        (None, None) => {}
+                    }
+                }
+                NodeKind::Leaf { first, count } => {
+                    let range = first as usize..(first + count) as usize;
+                    match visit_leaf(&self.primitive_indices[range], t_max) {
+                        ControlFlow::Continue(new_t_max) => t_max = new_t_max,
+                        ControlFlow::Break(()) => return,
                     }
                 }
             }
-            if deferred_count == 0 {
-                return;
+            // The latest deferred subtree that the ray still reaches.
+            loop {
+                if deferred_count == 0 {
+                    return;
+                }
+                deferred_count -= 1;
+                let (node, t_enter) = deferred[deferred_count];
+                if t_enter <= t_max {
+                    current = node as usize;
+                    break;
+                }
             }
-            deferred_count -= 1;
-            current = deferred[deferred_count] as usize;
         }
     }
 }
