@@ -222,6 +222,7 @@ const CASES: &[Case] = &[
     case(CH08, &["render", "--out", "{out}", "--light-scale", "2"], "unexpected argument '--light-scale'"),
     case(CH08, &["render", "--out", "{out}", "--mis", "sometimes"], "invalid value 'sometimes' for '--mis"),
     case(CH08, &["render", "--out", "{out}", "--no-nee=yes"], "--no-nee"),
+    case(CH08, &["render", "--out", "{out}", "--no-nee", "--mis", "balance"], "the argument '--no-nee' cannot be used with '--mis <MIS>'"),
     case(CH08, &["render", "--out", "{out}", "--rr-depth", "0"], "`0` is neither a depth from 1 to 1000 nor `off`"),
     case(CH08, &["render", "--out", "{out}", "--rr-depth", "1001"], "`1001` is neither a depth from 1 to 1000 nor `off`"),
     case(CH08, &["render", "--out", "{out}", "--rr-depth", "2.5"], "`2.5` is neither a depth"),

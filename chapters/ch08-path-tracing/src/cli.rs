@@ -10,8 +10,9 @@ pub struct PathArgs {
     /// lights, which no path can hit, then go dark).
     #[arg(long)]
     pub no_nee: bool,
-    /// How light samples and BSDF samples are combined.
-    #[arg(long, value_enum, default_value_t = MisHeuristic::Power)]
+    /// How light samples and BSDF samples are combined. Without next-event estimation there
+    /// are no light samples to combine, so it cannot be given with `--no-nee`.
+    #[arg(long, value_enum, default_value_t = MisHeuristic::Power, conflicts_with = "no_nee")]
     pub mis: MisHeuristic,
     /// The segment from which Russian roulette may end a path, or `off`
     /// [default: the scene file's, or 5].
