@@ -84,17 +84,6 @@ pub fn scaled_whitted_scene(scale: f32, offset: Vec3, size: u32) -> Scene {
 pub fn whitted_scene(params: &WhittedSceneParams) -> Option<Scene> {
     let scale = params.scale;
     let at = |p: Vec3| p * scale + params.offset;
-    let floor = Quad::new(
-        at(Vec3::new(-2.0, 0.0, 2.0)),
-        4.0 * scale * Vec3::X,
-        -4.0 * scale * Vec3::Z,
-    );
-    // A wall standing on the floor, touching it along an edge: light must not leak through.
-    let wall = Quad::new(
-        at(Vec3::new(-2.0, 0.0, -1.0)),
-        4.0 * scale * Vec3::X,
-        2.0 * scale * Vec3::Y,
-    );
     let triangle = Triangle::new(
         at(Vec3::new(0.6, 0.0, 0.2)),
         at(Vec3::new(1.4, 0.0, 0.2)),
@@ -106,13 +95,7 @@ pub fn whitted_scene(params: &WhittedSceneParams) -> Option<Scene> {
     camera.near_clip *= scale;
     let light_position = DEFAULT_LIGHT_POSITION.normalize() * params.light_distance;
     let light_gain = (params.light_distance / DEFAULT_LIGHT_POSITION.length()).powi(2);
-    let scene = SceneBuilder::new()
-        .background(Vec3::new(0.4, 0.55, 0.8))
-        .shape(Shape::Quad(floor), Material::diffuse(Vec3::splat(0.7)))
-        .shape(
-            Shape::Quad(wall),
-            Material::diffuse(Vec3::new(0.7, 0.3, 0.2)),
-        )
+    let scene = sky_floor_and_wall(scale, at)
         .shape(
             Shape::Triangle(triangle),
             Material::two_sided_diffuse(Vec3::new(0.2, 0.6, 0.3)),
@@ -135,6 +118,29 @@ pub fn whitted_scene(params: &WhittedSceneParams) -> Option<Scene> {
         })
         .build(camera, params.max_depth);
     Some(scene)
+}
+
+/// The sky, a floor and a wall standing on it, placed by `at` and sized by `scale`: the start
+/// of every scene the scale tests build. The wall touches the floor along an edge, where light
+/// must not leak through.
+pub fn sky_floor_and_wall(scale: f32, at: impl Fn(Vec3) -> Vec3) -> SceneBuilder {
+    let floor = Quad::new(
+        at(Vec3::new(-2.0, 0.0, 2.0)),
+        4.0 * scale * Vec3::X,
+        -4.0 * scale * Vec3::Z,
+    );
+    let wall = Quad::new(
+        at(Vec3::new(-2.0, 0.0, -1.0)),
+        4.0 * scale * Vec3::X,
+        2.0 * scale * Vec3::Y,
+    );
+    SceneBuilder::new()
+        .background(Vec3::new(0.4, 0.55, 0.8))
+        .shape(Shape::Quad(floor), Material::diffuse(Vec3::splat(0.7)))
+        .shape(
+            Shape::Quad(wall),
+            Material::diffuse(Vec3::new(0.7, 0.3, 0.2)),
+        )
 }
 
 /// A smooth-shaded octahedron (a coarse sphere) of `radius` around `centre`; its lowest vertex

@@ -382,7 +382,6 @@ const MOTION_HEIGHT: u32 = 24;
 fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
     use ch01_whitted::light::PointLight;
     use ch01_whitted::material::Material;
-    use ch01_whitted::scene::SceneBuilder;
     use ch05_motion_blur::world::matrix_of;
     use ch05_motion_blur::{AnimatedTransform, MotionScene, MovingShape, Shutter};
     use common::geometry::Triangle;
@@ -402,23 +401,7 @@ fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
     ])
     .expect("two camera frames are valid keyframes");
 
-    let floor = Quad::new(
-        at(Vec3::new(-2.0, 0.0, 2.0)),
-        4.0 * scale * Vec3::X,
-        -4.0 * scale * Vec3::Z,
-    );
-    let wall = Quad::new(
-        at(Vec3::new(-2.0, 0.0, -1.0)),
-        4.0 * scale * Vec3::X,
-        2.0 * scale * Vec3::Y,
-    );
-    let scene = SceneBuilder::new()
-        .background(Vec3::new(0.4, 0.55, 0.8))
-        .shape(Shape::Quad(floor), Material::diffuse(Vec3::splat(0.7)))
-        .shape(
-            Shape::Quad(wall),
-            Material::diffuse(Vec3::new(0.7, 0.3, 0.2)),
-        )
+    let scene = workbook_tests::sky_floor_and_wall(scale, at)
         .shape(
             Shape::Sphere(Sphere::new(at(Vec3::new(1.2, 0.4, -0.4)), 0.4 * scale)),
             Material::mirror(),
