@@ -102,7 +102,7 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
 /// dependencies are configured by `[profile.dev.package."*"]`, which this leaves alone, so
 /// they keep the workspace's names and are shared. The edition handed to students
 /// (`book student`) keeps the workspace's settings.
-pub(crate) const SEPARATE_CRATES_CONFIG: &str = "\
+const SEPARATE_CRATES_CONFIG: &str = "\
 # Written by `book check-exercises` for its own build of the student edition: the workspace's
 # crates get names of their own in the shared build directory; dependencies are shared.
 [profile.dev]

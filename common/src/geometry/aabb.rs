@@ -123,21 +123,16 @@ impl Aabb {
 
     /// The part `(t_enter, t_exit)` of the ray's `[0, t_max]` that lies inside the box, if any.
     ///
-    /// This is the slab test of [`Aabb::hit_by`], for one-off use; the BVH precomputes the
+    /// This is the slab test of [`Aabb::entry`], for one-off use; the BVH precomputes the
     /// [`SlabRay`] once per ray instead.
     pub fn intersect(&self, ray: &Ray) -> Option<(f32, f32)> {
         self.slab_interval(&SlabRay::new(ray), ray.t_max)
     }
 
-    /// Whether the ray passes through the box somewhere in `[0, t_max]`.
+    /// Where the ray enters the box (0 if it starts inside), if it passes through it somewhere
+    /// in `[0, t_max]`; the BVH orders its nodes by it.
     ///
     /// Conservative: a box the exact ray touches is never reported as missed.
-    pub fn hit_by(&self, ray: &SlabRay, t_max: f32) -> bool {
-        self.slab_interval(ray, t_max).is_some()
-    }
-
-    /// Where the ray enters the box (0 if it starts inside), if it passes through it somewhere
-    /// in `[0, t_max]`: [`hit_by`](Self::hit_by) with the entry kept, for ordering BVH nodes.
     #[inline]
     pub fn entry(&self, ray: &SlabRay, t_max: f32) -> Option<f32> {
         self.slab_interval(ray, t_max).map(|(t_enter, _)| t_enter)
