@@ -6,6 +6,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg32;
 
 use super::build::MAX_DEPTH;
+use super::traverse::SHALLOW_STACK;
 use super::*;
 use crate::Ray;
 
@@ -117,6 +118,30 @@ fn exponentially_spaced_boxes_cannot_make_the_tree_too_deep() {
         .collect();
     let bvh = build_and_check(&boxes);
     assert!(bvh.depth() <= MAX_DEPTH);
+}
+
+/// A tree deeper than the short stack of shallow trees is walked with the long one: every
+/// box along the ray is visited once, whichever end the ray starts from, and nothing
+/// overflows.
+#[test]
+fn deep_trees_are_walked_whole() {
+    let boxes: Vec<Aabb> = (0..120)
+        .map(|k| cube_at(Vec3::X * 1.3f32.powi(k), 0.5))
+        .collect();
+    let bvh = Bvh::build(&boxes);
+    assert!(bvh.depth() > SHALLOW_STACK, "depth {}", bvh.depth());
+    for (origin, dir) in [(-1.0, Vec3::X), (1e15, -Vec3::X)] {
+        let ray = Ray::new(Vec3::new(origin, 0.0, 0.0), dir);
+        let mut visited = vec![0; boxes.len()];
+        assert!(!bvh.any_hit(&ray, |k| {
+            visited[k] += 1;
+            false
+        }));
+        assert!(visited.iter().all(|&n| n == 1), "{visited:?}");
+        let nearest = bvh.intersect(&ray, |k, _| Some((1.3f32.powi(k as i32) - origin).abs()));
+        let expected = if dir.x > 0.0 { 0 } else { 119 };
+        assert_eq!(nearest.map(|hit| hit.primitive), Some(expected));
+    }
 }
 
 #[test]
