@@ -57,6 +57,7 @@ enum ShadowTarget {
 impl LightDirection {
     /// The shadow ray from `receiver` at shutter time `time`: what must be unblocked for the
     /// light to arrive.
+    #[inline]
     pub fn shadow_ray(&self, receiver: &SurfaceHit, time: f32) -> Ray {
         match self.target {
             ShadowTarget::Surface(sample) => sample.shadow_ray(receiver, time),
@@ -127,6 +128,7 @@ impl<'a> SceneLights<'a> {
 
     /// The light picked by `u` in `[0, 1)`: area lights first, then point lights, then the
     /// environment. `None` when there is no light.
+    #[inline]
     pub fn pick(&self, u: f32) -> Option<LightRef> {
         let n = self.count();
         if n == 0 {
@@ -150,6 +152,7 @@ impl<'a> SceneLights<'a> {
 
     /// A direction to `light` from `receiver` with the numbers `u` (a point light uses
     /// none), or `None` when the light offers nothing there (no area, a degenerate sample).
+    #[inline]
     pub fn sample(
         &self,
         light: LightRef,
