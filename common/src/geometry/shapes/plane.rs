@@ -3,6 +3,7 @@
 use glam::Vec3;
 
 use crate::Ray;
+use crate::geometry::float::MACHINE_EPSILON;
 use crate::geometry::interval::{self, Interval, IntervalVec3};
 
 /// The plane through `anchor` spanned by the exact vectors `e1` and `e2`.
@@ -14,49 +15,128 @@ use crate::geometry::interval::{self, Interval, IntervalVec3};
 pub(crate) struct SpannedPlane {
     anchor: Vec3,
     normal: IntervalVec3,
+    /// The normal's lower ends, which the plain-float first look computes with.
+    normal_lo: Vec3,
+    /// `|e1_j e2_k| + |e1_k e2_j|` for each component `i` of `e1 × e2`: the size of the
+    /// numbers the component is made of, which bounds its interval's width even where the two
+    /// products cancel.
+    normal_size: Vec3,
 }
+
+/// A crossing computed in plain floats, with a bound on how far from it the crossing that the
+/// interval arithmetic reports can be (see [`SpannedPlane::rough_crossing`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RoughCrossing {
+    /// The crossing, in plain floats.
+    pub t: f32,
+    /// `|t - t_exact| <= t_error` for the exact crossing, and likewise for the midpoint that
+    /// [`SpannedPlane::interval_crossing`] would return; infinite (or NaN) when the plain
+    /// floats cannot tell.
+    pub t_error: f32,
+}
+
+/// How wide an interval result can be per unit of the magnitudes it is computed from (see
+/// [`SpannedPlane::rough_crossing`]).
+///
+/// The numerator's and the denominator's chains of operations have at most seven steps (the
+/// normal's two products and difference, a product with it, two sums), and each step rounds
+/// by at most half a float and widens by one, a relative `3 ε` per step at most: `21 ε`. The
+/// bound is six times that, so that no second-order term needs counting; it only lets a few
+/// rays close to an edge on to the intervals.
+const WIDTH_PER_MAGNITUDE: f32 = 128.0 * MACHINE_EPSILON;
+
+/// An absolute allowance for steps near zero, where a widening moves by a subnormal float
+/// (`2^-149`) rather than by a relative amount; a few dozen such steps are far below this.
+pub(crate) const TINY: f32 = f32::MIN_POSITIVE;
 
 impl SpannedPlane {
     /// The plane through `anchor` containing the directions `e1` and `e2`.
     pub fn new(anchor: Vec3, e1: Vec3, e2: Vec3) -> Self {
+        let normal = interval::cross(interval::exact_vec(e1), interval::exact_vec(e2));
+        let products = |j: f32, k: f32, j2: f32, k2: f32| (j * k2).abs() + (k * j2).abs();
         Self {
             anchor,
-            normal: interval::cross(interval::exact_vec(e1), interval::exact_vec(e2)),
+            normal,
+            normal_lo: Vec3::new(normal[0].lo, normal[1].lo, normal[2].lo),
+            normal_size: Vec3::new(
+                products(e1.y, e1.z, e2.y, e2.z),
+                products(e1.z, e1.x, e2.z, e2.x),
+                products(e1.x, e1.y, e2.x, e2.y),
+            ),
         }
     }
 
     /// The ray parameter where the ray crosses the plane, if it certainly does so at some
     /// `0 < t < ray.t_max`.
     ///
-    /// `t = dot(anchor - o, N) / dot(d, N)`, evaluated in interval arithmetic: a crossing whose
-    /// interval reaches 0 or below is rejected, and so is one whose denominator might be zero
-    /// (a ray parallel to the plane). The returned `t` is the midpoint of the interval.
+    /// `t = dot(anchor - o, N) / dot(d, N)`, first in plain floats with a bound on its error
+    /// ([`rough_crossing`](Self::rough_crossing)). When that range is all above 0, the
+    /// crossing is certainly ahead and the plain `t` is the answer. Otherwise (a ray starting
+    /// on or very near the plane, as every secondary ray leaving it does, or one nearly
+    /// parallel to it) interval arithmetic decides ([`interval_crossing`](Self::interval_crossing)):
+    /// a crossing whose interval reaches 0 or below is rejected, and so is one whose
+    /// denominator might be zero. Both ways, a crossing counts only if it is certainly ahead,
+    /// and they accept the same crossings; only the `t` they report differs, by less than
+    /// the bound.
     pub fn crossing(&self, ray: &Ray) -> Option<f32> {
-        if self.certainly_not_ahead(ray) {
-            return None;
+        let rough = self.rough_crossing(ray)?;
+        if rough.certainly_ahead() {
+            return (rough.t < ray.t_max).then_some(rough.t);
         }
         self.interval_crossing(ray)
     }
 
-    /// A cheap first look, in plain floats: whether the crossing is certainly not ahead of the
-    /// origin, so that [`interval_crossing`](Self::interval_crossing) would reject it too.
+    /// The crossing in plain floats and a bound on its error, or `None` if the crossing is
+    /// certainly not ahead of the origin, so that [`interval_crossing`](Self::interval_crossing)
+    /// would reject it too.
     ///
     /// It repeats the interval computation operation by operation, in the same order, with the
     /// normal's lower ends. Rounding is monotone, so each plain result lies inside the interval
     /// of the same operation, and so does the plain `t` (when the denominator's interval holds
     /// zero the interval test rejects anyway). A plain `t` that is not positive therefore
     /// means an interval whose lower end is not positive. Most rays tested against a plane
-    /// that is behind them stop here, at a fraction of the interval arithmetic's cost; the
-    /// answer is the same either way.
-    fn certainly_not_ahead(&self, ray: &Ray) -> bool {
-        let n = Vec3::new(self.normal[0].lo, self.normal[1].lo, self.normal[2].lo);
+    /// that is behind them stop here.
+    ///
+    /// The error bound: the plain numerator `n` and denominator `d` lie in their intervals,
+    /// whose widths are at most `w_n = W Σ |anchor - o|_i size_i` and `w_d = W Σ |d|_i size_i`
+    /// ([`WIDTH_PER_MAGNITUDE`] `W`, the normal's `size`, plus [`TINY`] allowances). The
+    /// intervals hold the exact numerator and denominator too. Every quotient of a member of
+    /// the one by a member of the other is then within `(w_n + (|n| + w_n) w_d / d_min) / d_min`
+    /// of `n / d`, where `d_min = |d| - w_d` is the least size of the denominator; the plain
+    /// `t` is `n / d` rounded once, and the interval's ends are rounded and widened by a few
+    /// floats of `t`. So both the exact crossing and the interval's midpoint are within the
+    /// bound of the plain `t`. The bound is doubled, which covers its own rounding; when
+    /// `d_min` is not positive (a ray nearly parallel to the plane) it is infinite.
+    pub fn rough_crossing(&self, ray: &Ray) -> Option<RoughCrossing> {
+        let n = self.normal_lo;
         let dot = |a: Vec3| a.x * n.x + a.y * n.y + a.z * n.z;
-        let t = dot(self.anchor - ray.origin) / dot(ray.dir);
-        t <= 0.0 // false for NaN: then the intervals decide
+        let towards_anchor = self.anchor - ray.origin;
+        let numerator = dot(towards_anchor);
+        let denominator = dot(ray.dir);
+        let t = numerator / denominator;
+        if t <= 0.0 {
+            return None; // false for NaN: then the intervals decide
+        }
+        let towards_anchor = towards_anchor.abs();
+        let numerator_width = WIDTH_PER_MAGNITUDE * towards_anchor.dot(self.normal_size)
+            + TINY * (1.0 + towards_anchor.element_sum());
+        let direction = ray.dir.abs();
+        let denominator_width = WIDTH_PER_MAGNITUDE * direction.dot(self.normal_size)
+            + TINY * (1.0 + direction.element_sum());
+        let least_denominator = denominator.abs() - denominator_width;
+        let t_error = if least_denominator > 0.0 {
+            let spread = (numerator_width
+                + (numerator.abs() + numerator_width) * denominator_width / least_denominator)
+                / least_denominator;
+            2.0 * spread + 16.0 * MACHINE_EPSILON * t + TINY
+        } else {
+            f32::INFINITY
+        };
+        Some(RoughCrossing { t, t_error })
     }
 
     /// The crossing by interval arithmetic alone: what [`crossing`](Self::crossing) returns.
-    fn interval_crossing(&self, ray: &Ray) -> Option<f32> {
+    pub fn interval_crossing(&self, ray: &Ray) -> Option<f32> {
         let towards_anchor = interval::difference(self.anchor, ray.origin);
         let numerator: Interval = interval::dot(towards_anchor, self.normal);
         let denominator = interval::dot_exact(ray.dir, self.normal);
@@ -70,8 +150,17 @@ impl SpannedPlane {
     }
 }
 
+impl RoughCrossing {
+    /// Whether the whole range `t ± t_error`, and so the exact crossing, is ahead of the
+    /// origin. (A difference of two floats rounds to a positive number only if it is
+    /// positive.)
+    pub fn certainly_ahead(&self) -> bool {
+        self.t - self.t_error > 0.0 // false for NaN
+    }
+}
+
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     #[test]
@@ -87,45 +176,120 @@ mod tests {
         assert_eq!(floor.crossing(&Ray { t_max: 2.0, ..down }), None);
     }
 
-    /// The quick test only ever rejects what the intervals reject, so `crossing` is the
-    /// interval computation's answer, bit for bit, for rays in all directions, from near and
-    /// far, on and off the plane.
-    #[test]
-    fn the_quick_rejection_agrees_with_the_intervals() {
+    /// Random planes and rays for checking the plain-float first look against the intervals:
+    /// all directions, near and far, some origins exactly on the plane (where rounding
+    /// decides), some directions within a millionth of the plane (where the crossing is
+    /// ill-conditioned), axis-aligned planes (whose normals have exact zeros) and planes far
+    /// from the origin.
+    pub(crate) fn random_planes_and_rays(
+        count: usize,
+        seed: u64,
+    ) -> impl Iterator<Item = (Vec3, Vec3, Vec3, Ray)> {
         use rand::{RngExt, SeedableRng};
-        let mut rng = rand_pcg::Pcg32::seed_from_u64(8);
-        let mut vec = |scale: f32| {
-            Vec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            ) * scale
-        };
-        let (mut rejected_early, mut rejected) = (0, 0);
-        for i in 0..200_000 {
+        let mut rng = rand_pcg::Pcg32::seed_from_u64(seed);
+        (0..count).map(move |i| {
+            let mut vec = |scale: f32| {
+                Vec3::new(
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                ) * scale
+            };
             let scale = [1e-3, 1.0, 1e3][i % 3];
-            let (anchor, e1, e2) = (vec(scale), vec(1.0), vec(1.0));
-            let plane = SpannedPlane::new(anchor, e1, e2);
-            // Some origins exactly on the plane, where rounding decides.
+            let (e1, e2) = if i % 7 == 0 {
+                (Vec3::X * scale, Vec3::Z * scale)
+            } else {
+                (vec(scale), vec(scale))
+            };
+            let far = if i % 11 == 0 {
+                Vec3::splat(1e5)
+            } else {
+                Vec3::ZERO
+            };
+            let anchor = vec(scale) + far;
             let origin = if i % 5 == 0 {
                 anchor + 0.5 * e1
             } else {
-                vec(scale)
+                vec(3.0 * scale) + far
             };
-            let ray = Ray::new(origin, vec(1.0));
+            let dir = if i % 13 == 0 {
+                (e1 + 1e-6 * e1.cross(e2).normalize() * e1.length()).normalize()
+            } else {
+                vec(1.0)
+            };
+            (anchor, e1, e2, Ray::new(origin, dir))
+        })
+    }
+
+    /// The crossing `t_exact` in double precision, from the same single-precision inputs: as
+    /// good as exact at the scale of the bounds checked against it.
+    fn crossing_in_f64(anchor: Vec3, e1: Vec3, e2: Vec3, ray: &Ray) -> f64 {
+        let n = e1.as_dvec3().cross(e2.as_dvec3());
+        (anchor.as_dvec3() - ray.origin.as_dvec3()).dot(n) / ray.dir.as_dvec3().dot(n)
+    }
+
+    /// The plain-float crossing and its bound against the intervals and against double
+    /// precision: what the plain floats reject the intervals reject; the exact crossing and
+    /// the interval's are within the bound; a crossing the bound calls certainly ahead is
+    /// one the intervals accept; so `crossing` accepts exactly the crossings the intervals
+    /// accept, and reports them within the bound.
+    #[test]
+    fn the_plain_crossing_agrees_with_the_intervals() {
+        let (mut rejected_early, mut rejected, mut plain, mut accepted) = (0, 0, 0, 0);
+        for (anchor, e1, e2, ray) in random_planes_and_rays(200_000, 8) {
+            let plane = SpannedPlane::new(anchor, e1, e2);
             let full = plane.interval_crossing(&ray);
-            if plane.certainly_not_ahead(&ray) {
-                rejected_early += 1;
-                assert_eq!(full, None, "{ray:?} {plane:?}");
+            let crossing = plane.crossing(&ray);
+            assert_eq!(crossing.is_some(), full.is_some(), "{ray:?} {plane:?}");
+            match plane.rough_crossing(&ray) {
+                None => {
+                    rejected_early += 1;
+                    assert_eq!(full, None, "{ray:?} {plane:?}");
+                }
+                Some(rough) => {
+                    if let Some(t) = full {
+                        assert!((t - rough.t).abs() <= rough.t_error, "{t} {rough:?}");
+                    }
+                    let exact = crossing_in_f64(anchor, e1, e2, &ray);
+                    // (An infinite bound holds anything, an infinite exact crossing too.)
+                    let error = (exact - f64::from(rough.t)).abs();
+                    let within = error <= f64::from(rough.t_error) || rough.t_error.is_nan();
+                    assert!(within || exact.is_nan(), "{exact} {rough:?}");
+                    if rough.certainly_ahead() {
+                        plain += 1;
+                        assert!(exact > 0.0 && full.is_some(), "{exact} {rough:?}");
+                        assert_eq!(crossing, Some(rough.t));
+                    }
+                }
             }
-            assert_eq!(plane.crossing(&ray), full);
             rejected += usize::from(full.is_none());
+            accepted += usize::from(full.is_some());
         }
-        // The quick test does its job: it catches most rejections.
+        // The plain floats do their job: they catch most rejections, and they answer for
+        // most crossings (not for the fifth of the rays that start on the plane, nor for the
+        // grazing ones, one in 13).
         assert!(
             rejected_early * 10 > rejected * 8,
             "{rejected_early} of {rejected}"
         );
+        assert!(plain * 10 > accepted * 8, "{plain} of {accepted}");
+    }
+
+    /// The error bound is not a formality: it is a small fraction of `t` (a few hundred
+    /// floats, from the generous allowance per operation).
+    #[test]
+    fn the_error_bound_is_tight_for_an_ordinary_ray() {
+        let floor = SpannedPlane::new(Vec3::ZERO, Vec3::Z, Vec3::X);
+        let ray = Ray::new(Vec3::new(0.3, 2.0, 0.1), Vec3::new(0.2, -1.0, 0.1));
+        let rough = floor.rough_crossing(&ray).unwrap();
+        assert!(rough.t_error < 1e-4 * rough.t, "{rough:?}");
+        assert!(rough.certainly_ahead());
+        // Just above the floor, the crossing is still certainly ahead: the bound scales with
+        // the numbers it is computed from.
+        let just_above = Ray::new(Vec3::new(0.3, 1e-7, 0.1), Vec3::new(0.2, -1.0, 0.1));
+        assert!(floor.rough_crossing(&just_above).unwrap().certainly_ahead());
+        let on_the_floor = Ray::new(Vec3::new(0.3, 0.0, 0.1), Vec3::new(0.2, -1.0, 0.1));
+        assert!(floor.rough_crossing(&on_the_floor).is_none());
     }
 
     #[test]
