@@ -11,6 +11,11 @@
 /// (Rust's `f32::EPSILON` is the full distance, so this is `f32::EPSILON / 2`, 2^-24.)
 pub const MACHINE_EPSILON: f32 = f32::EPSILON * 0.5;
 
+/// An absolute allowance for rounding near zero, added to error bounds that are otherwise
+/// relative: there a rounding or a widening moves by a subnormal float (`2^-149`), not by a
+/// fraction of the value, and a few dozen such steps are far below this.
+pub const TINY: f32 = f32::MIN_POSITIVE;
+
 /// A bound on the relative error after `n` roundings: `n ε / (1 - n ε)`.
 ///
 /// Multiplying `n` values that each carry a factor `(1 ± ε)` gives at most `(1 + ε)^n`, and

@@ -3,7 +3,7 @@
 use glam::Vec3;
 
 use crate::Ray;
-use crate::geometry::float::MACHINE_EPSILON;
+use crate::geometry::float::{MACHINE_EPSILON, TINY};
 use crate::geometry::interval::{self, Interval, IntervalVec3};
 
 /// The plane through `anchor` spanned by the exact vectors `e1` and `e2`.
@@ -26,13 +26,13 @@ pub(crate) struct SpannedPlane {
 /// A crossing computed in plain floats, with a bound on how far from it the crossing that the
 /// interval arithmetic reports can be (see [`SpannedPlane::rough_crossing`]).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct RoughCrossing {
+struct RoughCrossing {
     /// The crossing, in plain floats.
-    pub t: f32,
+    t: f32,
     /// `|t - t_exact| <= t_error` for the exact crossing, and likewise for the midpoint that
     /// [`SpannedPlane::interval_crossing`] would return; infinite (or NaN) when the plain
     /// floats cannot tell.
-    pub t_error: f32,
+    t_error: f32,
 }
 
 /// How wide an interval result can be per unit of the magnitudes it is computed from (see
@@ -41,13 +41,9 @@ pub(crate) struct RoughCrossing {
 /// The numerator's and the denominator's chains of operations have at most seven steps (the
 /// normal's two products and difference, a product with it, two sums), and each step rounds
 /// by at most half a float and widens by one, a relative `3 ε` per step at most: `21 ε`. The
-/// bound is six times that, so that no second-order term needs counting; it only lets a few
-/// rays close to an edge on to the intervals.
+/// bound is six times that, so that no second-order term needs counting; it only sends a few
+/// more crossings on to the intervals.
 const WIDTH_PER_MAGNITUDE: f32 = 128.0 * MACHINE_EPSILON;
-
-/// An absolute allowance for steps near zero, where a widening moves by a subnormal float
-/// (`2^-149`) rather than by a relative amount; a few dozen such steps are far below this.
-pub(crate) const TINY: f32 = f32::MIN_POSITIVE;
 
 impl SpannedPlane {
     /// The plane through `anchor` containing the directions `e1` and `e2`.
@@ -107,7 +103,7 @@ impl SpannedPlane {
     /// floats of `t`. So both the exact crossing and the interval's midpoint are within the
     /// bound of the plain `t`. The bound is doubled, which covers its own rounding; when
     /// `d_min` is not positive (a ray nearly parallel to the plane) it is infinite.
-    pub fn rough_crossing(&self, ray: &Ray) -> Option<RoughCrossing> {
+    fn rough_crossing(&self, ray: &Ray) -> Option<RoughCrossing> {
         let n = self.normal_lo;
         let dot = |a: Vec3| a.x * n.x + a.y * n.y + a.z * n.z;
         let towards_anchor = self.anchor - ray.origin;
@@ -136,7 +132,7 @@ impl SpannedPlane {
     }
 
     /// The crossing by interval arithmetic alone: what [`crossing`](Self::crossing) returns.
-    pub fn interval_crossing(&self, ray: &Ray) -> Option<f32> {
+    fn interval_crossing(&self, ray: &Ray) -> Option<f32> {
         let towards_anchor = interval::difference(self.anchor, ray.origin);
         let numerator: Interval = interval::dot(towards_anchor, self.normal);
         let denominator = interval::dot_exact(ray.dir, self.normal);
@@ -154,13 +150,13 @@ impl RoughCrossing {
     /// Whether the whole range `t ± t_error`, and so the exact crossing, is ahead of the
     /// origin. (A difference of two floats rounds to a positive number only if it is
     /// positive.)
-    pub fn certainly_ahead(&self) -> bool {
+    fn certainly_ahead(&self) -> bool {
         self.t - self.t_error > 0.0 // false for NaN
     }
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
 
     #[test]
@@ -181,7 +177,7 @@ pub(crate) mod tests {
     /// decides), some directions within a millionth of the plane (where the crossing is
     /// ill-conditioned), axis-aligned planes (whose normals have exact zeros) and planes far
     /// from the origin.
-    pub(crate) fn random_planes_and_rays(
+    fn random_planes_and_rays(
         count: usize,
         seed: u64,
     ) -> impl Iterator<Item = (Vec3, Vec3, Vec3, Ray)> {

@@ -7,17 +7,20 @@ use glam::{Vec2, Vec3};
 use super::Crossing;
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
-use crate::geometry::float::{MACHINE_EPSILON, gamma};
+use crate::geometry::float::{MACHINE_EPSILON, TINY, gamma};
 use crate::geometry::hit::SurfaceHit;
 use crate::geometry::interval::{self, Interval};
-use crate::geometry::shapes::plane::TINY;
 
 /// What the plain-float roots can say on their own (see [`Sphere::plain_root`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum PlainRoot {
     /// The root that counts, certainly ahead of the origin, and a bound on its error.
     Found { t: f32, error: f32 },
-    /// Certainly no root ahead: the line misses, or the sphere is behind.
+    /// The ray's line certainly passes farther than the radius from the centre: most rays that
+    /// reach a sphere's box miss the sphere, and this answers them first, in a few
+    /// instructions.
+    LineMisses,
+    /// Certainly no root ahead otherwise: the line misses by less, or the sphere is behind.
     Missed,
     /// The bounds cannot tell: the intervals decide.
     Unsure,
@@ -82,12 +85,12 @@ impl Sphere {
     /// either side of it), a grazing ray (whose two roots nearly meet).
     pub(crate) fn crossing(&self, ray: &Ray) -> Option<Crossing> {
         let has_area = self.radius > 0.0; // false for a NaN radius too
-        if !has_area || self.certainly_missed_by(ray) {
+        if !has_area {
             return None;
         }
         let t = match self.plain_root(ray) {
             PlainRoot::Found { t, .. } => t,
-            PlainRoot::Missed => return None,
+            PlainRoot::LineMisses | PlainRoot::Missed => return None,
             PlainRoot::Unsure => self.interval_root(ray)?,
         };
         self.crossing_at(ray, t)
@@ -163,10 +166,17 @@ impl Sphere {
     ///
     /// With `ε` the unit roundoff, `O = |o|` and the roots `t0 = q / a`, `t1 = c / q`:
     ///
-    /// * `|v|` is off by at most `e_v = 128 ε (O + r)` (see
-    ///   [`certainly_missed_by`](Self::certainly_missed_by)), so the discriminant
-    ///   `4a (r + |v|)(r - |v|)` by at most `4a ((r + |v|) + |r - |v||) e_v` plus `e_v²` and its
-    ///   own few roundings; the root of a discriminant certainly above 0 by that over `√disc`.
+    /// * The line's distance from the centre is `|v|` with `v = o - (d·o / d·d) d`, the part
+    ///   of `o = origin - center` across the direction. Every rounding in computing `v` and its
+    ///   length errs by a few units in the last place of `|o|` (the projection `(d·o / d·d) d`
+    ///   is never longer than `o`), far less than the allowance `e_v = 128 ε (O + r)`. So when
+    ///   the computed `|v|` exceeds `r` by more than `e_v`, the exact `|v|` exceeds `r`: the
+    ///   line certainly misses ([`PlainRoot::LineMisses`]). The interval test rejects such a
+    ///   ray too, since its `|v|` range contains the exact value and a negative `r - |v|`
+    ///   makes the discriminant's lower end negative.
+    /// * Otherwise the discriminant `4a (r + |v|)(r - |v|)` is off by at most
+    ///   `4a ((r + |v|) + |r - |v||) e_v` plus `e_v²` and its own few roundings; the root of a
+    ///   discriminant certainly above 0 by that over `√disc`.
     /// * `b = 2 d·o` is off by a few roundings of `2 Σ |d_i| |o_i|`, `c = |o|² - r²` by a few of
     ///   `O² + r²`, `a = d·d` by a few of itself; `q = -(b ± √disc) / 2` adds two numbers of
     ///   the same sign, so its error is half the sum of theirs.
@@ -183,13 +193,16 @@ impl Sphere {
         let o_length = o.length();
         let a = d.length_squared();
         let b = 2.0 * d.dot(o);
-        let c = o.length_squared() - r * r;
         let along = b / (2.0 * a);
         let v_length = (o - along * d).length();
+        let v_error = 128.0 * EPS * (o_length + r);
+        if v_length > r + v_error {
+            return PlainRoot::LineMisses; // false for NaN: then the bounds below say Unsure
+        }
+        let c = o.length_squared() - r * r;
         let (sum, difference) = (r + v_length, r - v_length);
         let discriminant = 4.0 * a * sum * difference;
 
-        let v_error = 128.0 * EPS * (o_length + r); // 64 f32::EPSILON, as in certainly_missed_by
         let discriminant_error = 2.0
             * (4.0 * a * ((sum + difference.abs()) * v_error + v_error * v_error)
                 + 8.0 * EPS * discriminant.abs());
@@ -248,27 +261,6 @@ impl Sphere {
         } else {
             PlainRoot::Unsure
         }
-    }
-
-    /// Whether the ray's line certainly passes farther than the radius from the centre, found
-    /// in plain floats before any interval is computed: most rays that reach a sphere's box
-    /// miss the sphere, and this answers them in a few instructions.
-    ///
-    /// The line's distance from the centre is `|v|` with `v = o - (d·o / d·d) d`, the part of
-    /// `o = origin - center` across the direction. Every rounding in computing `v` and its
-    /// length errs by a few units in the last place of `|o|` (the projection `(d·o / d·d) d`
-    /// is never longer than `o`), far less than the margin `64 ε (|o| + r)` allowed here. So
-    /// when the computed `|v|` exceeds `r` by more than the margin, the exact `|v|` exceeds
-    /// `r`; the interval test then rejects the ray too, since its `|v|` range contains the
-    /// exact value and a negative `r - |v|` makes the discriminant's lower end negative. NaN
-    /// or infinite values (a zero direction, overflow) compare false: the intervals decide.
-    fn certainly_missed_by(&self, ray: &Ray) -> bool {
-        let o = ray.origin - self.center;
-        let d = ray.dir;
-        let along = d.dot(o) / d.dot(d);
-        let v = o - along * d;
-        let margin = 64.0 * f32::EPSILON * (o.length() + self.radius);
-        v.length() > self.radius + margin
     }
 
     /// The hit record at ray parameter `t`.
@@ -335,7 +327,7 @@ mod tests {
             let closeness = [1.0 + 1e-6 * unit().x, 1.0 + 0.1 * unit().x, 2.0 * unit().x][i % 3];
             let ray = Ray::new(origin, center + across * closeness - origin);
             let full = sphere.interval_crossing(&ray);
-            if sphere.certainly_missed_by(&ray) {
+            if sphere.plain_root(&ray) == PlainRoot::LineMisses {
                 rejected_early += 1;
                 assert_eq!(full, None, "{ray:?} {sphere:?}");
             }
@@ -430,7 +422,7 @@ mod tests {
                         "{sphere:?} {ray:?} {t} {exact:?}"
                     );
                 }
-                PlainRoot::Missed => {
+                PlainRoot::LineMisses | PlainRoot::Missed => {
                     assert!(
                         exact.is_none_or(|(_, far)| far <= 0.0),
                         "{sphere:?} {ray:?} {exact:?}"
