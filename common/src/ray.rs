@@ -32,8 +32,10 @@ impl Ray {
     }
 
     /// The same ray at shutter time `time`.
-    pub fn with_time(self, time: f32) -> Self {
-        Self { time, ..self }
+    #[inline]
+    pub fn with_time(mut self, time: f32) -> Self {
+        self.time = time;
+        self
     }
 
     /// The point at parameter `t`.

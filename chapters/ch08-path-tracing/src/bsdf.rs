@@ -117,7 +117,10 @@ impl Bsdf<'_> {
     }
 
     /// `f(wo, wi) cos θ_i` without the delta parts (0 for a mirror or smooth glass).
-    #[inline]
+    ///
+    /// Always inlined: the light loops call it once per light, and for a matte surface it is
+    /// a match and a dot product, less than the call would cost.
+    #[inline(always)]
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         let hit = self.hit;
         match *self.material {
@@ -152,6 +155,7 @@ impl Bsdf<'_> {
 
 /// The shading normal turned to the side `wo` is on, or `None` for the back of a one-sided
 /// surface (Mitsuba's `diffuse`, `conductor` and `roughconductor` are black from behind).
+#[inline]
 pub fn facing_normal(hit: &SurfaceHit, wo: Vec3, two_sided: bool) -> Option<Vec3> {
     if wo.dot(hit.n) > 0.0 {
         Some(hit.shading_n)

@@ -3,8 +3,8 @@
 //! A sample's dimensions are the numbers it draws: the pixel position (2), the time (1, only
 //! if something moves), the lens point (2, only for an aperture), then per bounce the light
 //! pick, the light point and the BSDF's numbers. Counting them shows that a scene pays only
-//! for what it uses: a static pinhole scene draws no time and no lens numbers, a scene with
-//! one point light no light numbers at all.
+//! for what it uses: a static pinhole scene draws no time and no lens numbers, a scene lit by
+//! point lights alone no light numbers at all.
 //!
 //! [`CountingSampler`] hands every call on to the sampler it wraps, unchanged and in the same
 //! order, so the image is the same bit for bit; it only adds up how many numbers were asked

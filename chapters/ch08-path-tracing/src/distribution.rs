@@ -29,7 +29,8 @@
 pub mod ray_tree;
 
 use crate::bsdf::Bsdf;
-use crate::lights::{LightRef, SceneLights};
+use crate::lights::SceneLights;
+use crate::nee::point_lights;
 use ch01_whitted::material::Material as SmoothMaterial;
 use ch01_whitted::scene::World;
 use ch04_depth_of_field::Lens;
@@ -195,34 +196,20 @@ impl<'a> DistributionTracer<'a> {
     // ANCHOR_END: branches
 
     /// The point lights seen in a glossy or frosted surface: `f cos θ I / d²` through one
-    /// shadow ray each (no random numbers). A smooth surface has no highlight to show.
+    /// shadow ray each (no random numbers), as the path tracer's next event counts them. A
+    /// smooth surface has no highlight to show.
     fn highlights(&self, bsdf: &Bsdf, wo: Vec3, time: f32, counters: &mut SampleCounters) -> Vec3 {
         if bsdf.is_delta() {
             return Vec3::ZERO;
         }
-        let mut sum = Vec3::ZERO;
-        for i in 0..self.lights.points.len() {
-            let Some(light) = self
-                .lights
-                .sample(LightRef::Point(i), bsdf.hit, glam::Vec2::ZERO)
-            else {
-                continue;
-            };
-            let f_cos = bsdf.eval(wo, light.wi);
-            if f_cos == Vec3::ZERO {
-                continue;
-            }
-            counters.rays += 1;
-            if !self
-                .scene
-                .scene
-                .world
-                .occluded(&light.shadow_ray(bsdf.hit, time))
-            {
-                sum += f_cos * light.radiance;
-            }
-        }
-        sum
+        point_lights(
+            &self.scene.scene.world,
+            &self.lights,
+            bsdf,
+            wo,
+            time,
+            counters,
+        )
     }
 }
 

@@ -8,8 +8,10 @@
 //! is now simply one more bounce.
 //!
 //! - [`bsdf`]: every chapter 06 material's sample, `f cos θ` and density, one module each.
-//! - [`lights`]: area lights, point lights and the environment as one list picked uniformly.
-//! - [`mis`]: the balance and the power heuristic; [`nee`]: one light sample's contribution.
+//! - [`lights`]: area lights, point lights and the environment; every point light is
+//!   connected, one of the others picked uniformly.
+//! - [`mis`]: the balance and the power heuristic; [`nee`]: one light sample's contribution
+//!   and the point lights'.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
 //! - [`path`]: the path loop; [`render_with`].
 //! - [`distribution`]: Cook's branching tracer with every effect, for comparison;
@@ -92,7 +94,7 @@ pub fn render_with<S: TimeSampler>(
     };
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
         let ray = camera_rays.generate(world, p_film, sampler);
-        tracer.radiance(ray, sampler, counters)
+        tracer.radiance(&ray, sampler, counters)
     })
 }
 // ANCHOR_END: render_with

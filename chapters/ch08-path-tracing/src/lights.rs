@@ -1,11 +1,19 @@
-//! Every light of a scene as one list to pick from: the area lights (chapter 07), the point
+//! Every light of a scene, for next-event estimation: the area lights (chapter 07), the point
 //! lights (chapter 01) and the constant environment (the scene's background).
 //!
-//! Next-event estimation picks **one light uniformly**, as Mitsuba 3's `path` integrator
-//! does, and divides by the chance `1/N`: one shadow ray per bounce whatever the number of
-//! lights, which keeps a path a path. (Sampling every light would make each bounce cost `N`
-//! shadow rays; picking by power would favour bright lights. Uniform keeps our noise close to
-//! Mitsuba's, which the agreement check compares.)
+//! The two kinds are treated differently. A point light is a delta: no BSDF sample can find
+//! it and there is no point on it to choose, so next-event estimation connects **every**
+//! point light through its own shadow ray, as chapters 01 to 07 do
+//! ([`crate::nee::point_lights`]), and draws no number for it. The lights a ray *can* find,
+//! the area lights and the environment, are *sampled*: one of them is **picked uniformly**
+//! and divided by the chance `1/N`, so a bounce sends one shadow ray to them whatever their
+//! number, which keeps a path a path. (Sampling every one would make each bounce cost `N`
+//! shadow rays; picking by power would favour bright lights.)
+//!
+//! Mitsuba 3's `path` integrator picks uniformly among *all* its emitters, point lights
+//! included. The expected image is the same; ours is less noisy where a scene has point
+//! lights, and a scene without area lights or environment pays for no pick and no light
+//! sample at all.
 
 use ch01_whitted::light::PointLight;
 use ch02_monte_carlo::warps::{sample_uniform_sphere, uniform_sphere_pdf};
@@ -80,9 +88,10 @@ pub struct SceneLights<'a> {
     pub environment: Vec3,
     /// How area lights are sampled (chapter 07).
     pub sampling: LightSampling,
-    /// How many lights there are, counted once: every bounce asks.
+    /// How many lights there are to pick from (area lights and the environment), counted
+    /// once: every bounce asks.
     count: usize,
-    /// `1 / count` (1 without lights), computed once for the same reason.
+    /// `1 / count` (1 without such lights), computed once for the same reason.
     pick_probability: f32,
 }
 
@@ -99,21 +108,29 @@ impl<'a> SceneLights<'a> {
             count: 0,
             pick_probability: 1.0,
         };
-        lights.count =
-            lights.area.len() + lights.points.len() + usize::from(lights.has_environment());
+        lights.count = lights.area.len() + usize::from(lights.has_environment());
         lights.pick_probability = 1.0 / lights.count.max(1) as f32;
         lights
     }
 
-    /// How many lights there are to pick from.
+    /// How many lights there are to pick from: the area lights and the environment (point
+    /// lights are not picked, see the module's introduction).
     pub fn count(&self) -> usize {
         self.count
     }
 
     /// Whether a ray can find a light by hitting it: an area light or the environment (a
-    /// point light it never can). Without, a path's last segment would find nothing.
+    /// point light it never can). Without, a path's last segment would find nothing. These
+    /// are exactly the lights a light sample picks from.
+    #[inline]
     pub fn can_be_hit(&self) -> bool {
-        !self.area.is_empty() || self.has_environment()
+        self.count > 0
+    }
+
+    /// Whether the scene has area lights, which a ray may hit and must then count.
+    #[inline]
+    pub fn has_area_lights(&self) -> bool {
+        !self.area.is_empty()
     }
 
     /// Whether the scene has a (non-black) environment.
@@ -121,13 +138,13 @@ impl<'a> SceneLights<'a> {
         self.environment != Vec3::ZERO
     }
 
-    /// The chance of picking any one light.
+    /// The chance of picking any one of the lights a light sample picks from.
     pub fn pick_probability(&self) -> f32 {
         self.pick_probability
     }
 
-    /// The light picked by `u` in `[0, 1)`: area lights first, then point lights, then the
-    /// environment. `None` when there is no light.
+    /// The light picked by `u` in `[0, 1)` among the area lights and the environment: area
+    /// lights first, then the environment. `None` when there is none of them.
     #[inline]
     pub fn pick(&self, u: f32) -> Option<LightRef> {
         let n = self.count();
@@ -137,8 +154,6 @@ impl<'a> SceneLights<'a> {
         let i = ((u * n as f32) as usize).min(n - 1);
         Some(if i < self.area.len() {
             LightRef::Area(i)
-        } else if i < self.area.len() + self.points.len() {
-            LightRef::Point(i - self.area.len())
         } else {
             LightRef::Environment
         })

@@ -1,11 +1,16 @@
-//! Next-event estimation: at each bounce, one shadow ray to one light.
+//! Next-event estimation: at each bounce, a shadow ray to every point light and one to one
+//! sampled light.
 //!
 //! The light sample estimates `∫ L_e f cos θ dω` by `L_e f cos θ / p_light`, weighted by MIS
 //! against the BSDF sample that could have found the same light. A point light is a delta:
-//! no BSDF sample can find it, so its weight is 1.
+//! no BSDF sample can find it, so its weight is 1, and since there is nothing on it to
+//! sample, [`point_lights`] counts every one of them with certainty.
 
+use crate::bsdf::Bsdf;
+use crate::lights::SceneLights;
 use crate::mis::MisHeuristic;
-
+use ch01_whitted::scene::World;
+use common::render::SampleCounters;
 use glam::Vec3;
 
 // ANCHOR: light_sample_contribution
@@ -17,6 +22,7 @@ use glam::Vec3;
 /// A delta light (`light_pdf` infinite: a point light, where `emitted` is already `I / d²`
 /// and only the pick's `pick_probability` divides) takes weight 1. Anything with no chance,
 /// or carrying nothing, is 0, never NaN.
+#[inline]
 pub fn light_sample_contribution(
     emitted: Vec3,
     f_cos: Vec3,
@@ -36,6 +42,47 @@ pub fn light_sample_contribution(
     // END SOLUTION
 }
 // ANCHOR_END: light_sample_contribution
+
+// ANCHOR: point_lights
+/// The light of every point light at the surface of `bsdf`, seen from `wo`: one shadow ray
+/// each at shutter time `time`, traced only where the light would add something. A point
+/// light is a delta, so no number is drawn and no MIS weight is needed: each one is counted
+/// with probability 1, as chapter 01 lights its matte surfaces.
+#[inline]
+pub fn point_lights<W: World>(
+    world: &W,
+    lights: &SceneLights,
+    bsdf: &Bsdf,
+    wo: Vec3,
+    time: f32,
+    counters: &mut SampleCounters,
+) -> Vec3 {
+    let mut sum = Vec3::ZERO;
+    for light in lights.points {
+        let to_light = light.position - bsdf.hit.p;
+        let d2 = to_light.length_squared();
+        let f_cos = bsdf.eval(wo, to_light / d2.sqrt());
+        // A delta light: its density is infinite and only `I / d²` arrives.
+        let contribution = light_sample_contribution(
+            light.intensity / d2,
+            f_cos,
+            f32::INFINITY,
+            0.0,
+            1.0,
+            MisHeuristic::None,
+        );
+        // `is_finite` also refuses a light on the surface itself (d = 0).
+        if contribution == Vec3::ZERO || !contribution.is_finite() {
+            continue; // behind the surface, or nowhere to come from: no shadow ray
+        }
+        counters.rays += 1;
+        if !world.occluded(&bsdf.hit.spawn_ray_to(light.position, time)) {
+            sum += contribution;
+        }
+    }
+    sum
+}
+// ANCHOR_END: point_lights
 
 #[cfg(test)]
 mod tests {

@@ -11,23 +11,26 @@
 //!
 //! 1. what the surface emits, counted with the MIS weight of the BSDF sample that found it
 //!    (1 after the camera or a delta bounce, or without NEE);
-//! 2. if `depth < max_depth` (the next segment is allowed): one light sample (NEE) at a
-//!    non-delta surface, then one BSDF sample that extends the path;
+//! 2. if `depth < max_depth` (the next segment is allowed), at a non-delta surface,
+//!    next-event estimation: a shadow ray to every point light, and one light sample among
+//!    the lights a ray can find (area lights and the environment); then one BSDF sample that
+//!    extends the path;
 //! 3. from `rr_depth` on, Russian roulette.
 //!
 //! A ray that leaves the scene finds the environment, weighted like an emitter.
 //!
-//! Random numbers, after the camera's: per bounce, the light pick (only with several lights)
-//! and the light point (two; none for a point light) when NEE runs, then the BSDF's (see
-//! [`crate::bsdf`]), then one for the roulette when it is active. A scene pays only for what
-//! it has: without lights there is no light sample, and when no ray can find emission (no
-//! area light, no environment) the last segment, which could only find emission, is not
-//! traced. [`crate::dimensions`] counts the numbers a path draws.
+//! Random numbers, after the camera's: per bounce, the light pick (only with several lights
+//! to pick from) and the light point (two) when NEE samples a light, then the BSDF's (see
+//! [`crate::bsdf`]), then one for the roulette when it is active. Point lights draw none. A
+//! scene pays only for what it has: with point lights alone nothing is picked or sampled, and
+//! when no ray can find emission (no area light, no environment) the last segment, which
+//! could only find emission, is not traced. [`crate::dimensions`] counts the numbers a path
+//! draws.
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
 use crate::mis::MisHeuristic;
-use crate::nee::light_sample_contribution;
+use crate::nee::{light_sample_contribution, point_lights};
 use crate::options::PathOptions;
 use crate::roulette::russian_roulette;
 use ch01_whitted::scene::World;
@@ -37,7 +40,7 @@ use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
 use common::sampler::Sampler;
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// Where the previous bounce was, and how its direction was chosen: what the MIS weight of
 /// light found by that direction needs.
@@ -57,6 +60,35 @@ struct Carried {
     throughput: Vec3,
     /// The product of the radiance scalings `(eta_i / eta_t)²` inside `throughput`.
     eta_scale: f32,
+}
+
+/// A path between two of its segments: what it has gathered, what it carries on, and how its
+/// last direction was chosen.
+#[derive(Clone, Copy, Debug)]
+struct PathState {
+    /// The radiance gathered so far.
+    radiance: Vec3,
+    /// What the next segment's light is multiplied by.
+    carried: Carried,
+    /// The bounce the last direction left from; `None` for the camera ray (no MIS).
+    previous: Option<Previous>,
+}
+
+impl PathState {
+    /// A path about to trace its camera ray: nothing gathered, everything carried.
+    const START: PathState = PathState {
+        radiance: Vec3::ZERO,
+        carried: Carried {
+            throughput: Vec3::ONE,
+            eta_scale: 1.0,
+        },
+        previous: None,
+    };
+
+    /// Adds `light` arriving at the current segment's end, times what the path carries.
+    fn gather(&mut self, light: Vec3) {
+        self.radiance += self.carried.throughput * light;
+    }
 }
 
 /// The path's next segment: its ray, what it carries, and how its direction was chosen.
@@ -82,59 +114,71 @@ pub struct PathTracer<'a> {
 
 impl PathTracer<'_> {
     // ANCHOR: radiance
-    /// The radiance arriving along the camera ray `ray`; every ray of the path keeps its time.
+    /// The radiance arriving along `camera_ray`; every ray of the path keeps its time.
     pub fn radiance<S: Sampler>(
         &self,
-        ray: Ray,
+        camera_ray: &Ray,
         sampler: &mut S,
         counters: &mut SampleCounters,
     ) -> Vec3 {
-        let world = &self.scene.scene.world;
-        let mut ray = ray;
-        let mut radiance = Vec3::ZERO;
-        let mut carried = Carried {
-            throughput: Vec3::ONE,
-            eta_scale: 1.0,
-        };
-        let mut previous: Option<Previous> = None; // the camera ray: no MIS
-        for depth in 1.. {
-            counters.rays += 1;
-            let Some(hit) = world.intersect(&ray) else {
-                if self.lights.has_environment() {
-                    let pdf = self.lights.environment_pdf();
-                    let weight = self.emission_weight(previous, pdf);
-                    radiance += carried.throughput * self.lights.environment * weight;
-                }
-                break;
-            };
-            radiance += carried.throughput * self.emitted(&hit, &ray, previous);
-            if depth >= self.options.max_depth {
-                break; // no segment left for a light sample or a bounce
-            }
-            let bsdf = Bsdf {
-                material: &self.scene.scene.materials[hit.shape as usize],
-                hit: &hit,
-                fuzz: self.fuzz,
-            };
-            let wo = -ray.dir.normalize();
-            if self.options.nee && self.lights.count() > 0 && !bsdf.is_delta() {
-                let light = self.light_sample(&bsdf, wo, ray.time, sampler, counters);
-                radiance += carried.throughput * light;
-            }
-            if depth + 1 >= self.options.max_depth && !self.lights.can_be_hit() {
-                // The next segment would be the last: all it could find is emission, and no
-                // ray can hit a point light. Its direction, ray and numbers are skipped; they
-                // were the sample's last, so the image is the same.
-                break;
-            }
-            let Some(next) = self.extend_path(&bsdf, wo, ray.time, depth, carried, sampler) else {
-                break;
-            };
-            carried = next.carried;
-            previous = Some(next.previous);
-            ray = next.ray;
+        let mut path = PathState::START;
+        let mut depth = 1;
+        let mut next = self.segment(camera_ray, depth, &mut path, sampler, counters);
+        while let Some(ray) = next {
+            depth += 1;
+            next = self.segment(&ray, depth, &mut path, sampler, counters);
         }
-        radiance
+        path.radiance
+    }
+
+    /// Segment `depth` of `path`, along `ray`: the light it finds, the light sampled where it
+    /// ends, and the ray of the next segment (`None` where the path ends).
+    ///
+    /// Kept out of line on purpose: the loop above then holds almost nothing, and a path of
+    /// one or two segments does not pay for setting up a large loop body.
+    #[inline(never)]
+    fn segment<S: Sampler>(
+        &self,
+        ray: &Ray,
+        depth: u32,
+        path: &mut PathState,
+        sampler: &mut S,
+        counters: &mut SampleCounters,
+    ) -> Option<Ray> {
+        counters.rays += 1;
+        let Some(hit) = self.scene.scene.world.intersect(ray) else {
+            if self.lights.has_environment() {
+                let pdf = self.lights.environment_pdf();
+                let weight = self.emission_weight(path.previous, pdf);
+                path.gather(self.lights.environment * weight);
+            }
+            return None;
+        };
+        if self.lights.has_area_lights() {
+            path.gather(self.emitted(&hit, ray, path.previous));
+        }
+        if depth >= self.options.max_depth {
+            return None; // no segment left for a light sample or a bounce
+        }
+        let bsdf = Bsdf {
+            material: &self.scene.scene.materials[hit.shape as usize],
+            hit: &hit,
+            fuzz: self.fuzz,
+        };
+        let wo = -ray.dir.normalize();
+        if self.options.nee && !bsdf.is_delta() {
+            path.gather(self.next_event(&bsdf, wo, ray.time, sampler, counters));
+        }
+        if depth + 1 >= self.options.max_depth && !self.lights.can_be_hit() {
+            // The next segment would be the last: all it could find is emission, and no
+            // ray can hit a point light. Its direction, ray and numbers are skipped; they
+            // were the sample's last, so the image is the same.
+            return None;
+        }
+        let next = self.extend_path(&bsdf, wo, ray.time, depth, path.carried, sampler)?;
+        path.carried = next.carried;
+        path.previous = Some(next.previous);
+        Some(next.ray)
     }
     // ANCHOR_END: radiance
 
@@ -184,6 +228,7 @@ impl PathTracer<'_> {
 
     /// What the surface at `hit` emits back along `ray`, MIS-weighted against the light
     /// sample taken at the previous bounce.
+    #[inline]
     fn emitted(&self, hit: &SurfaceHit, ray: &Ray, previous: Option<Previous>) -> Vec3 {
         let Some(light) = self.lights.area_light_of(hit.shape) else {
             return Vec3::ZERO;
@@ -219,9 +264,35 @@ impl PathTracer<'_> {
         }
     }
 
+    // ANCHOR: next_event
+    /// Next-event estimation at the surface of `bsdf`, seen from `wo`: every point light
+    /// through its own shadow ray (a delta has nothing to sample), and one light sample among
+    /// the lights a ray can find.
+    #[inline]
+    fn next_event<S: Sampler>(
+        &self,
+        bsdf: &Bsdf,
+        wo: Vec3,
+        time: f32,
+        sampler: &mut S,
+        counters: &mut SampleCounters,
+    ) -> Vec3 {
+        let world = &self.scene.scene.world;
+        let mut light = Vec3::ZERO;
+        if !self.lights.points.is_empty() {
+            light += point_lights(world, &self.lights, bsdf, wo, time, counters);
+        }
+        if self.lights.can_be_hit() {
+            light += self.light_sample(bsdf, wo, time, sampler, counters);
+        }
+        light
+    }
+    // ANCHOR_END: next_event
+
     // ANCHOR: light_sample
-    /// One light sample at a non-delta surface: a light picked uniformly, a direction to it,
-    /// and the shadow ray, traced only when the sample carries something.
+    /// One light sample at a non-delta surface: a light picked uniformly among the area
+    /// lights and the environment, a direction to it, and the shadow ray, traced only when
+    /// the sample carries something.
     fn light_sample<S: Sampler>(
         &self,
         bsdf: &Bsdf,
@@ -238,20 +309,11 @@ impl PathTracer<'_> {
         let Some(light) = self.lights.pick(u_pick) else {
             return Vec3::ZERO;
         };
-        let u = match light {
-            crate::lights::LightRef::Point(_) => Vec2::ZERO,
-            _ => sampler.get_2d(),
-        };
-        let Some(sample) = self.lights.sample(light, bsdf.hit, u) else {
+        let Some(sample) = self.lights.sample(light, bsdf.hit, sampler.get_2d()) else {
             return Vec3::ZERO;
         };
         let f_cos = bsdf.eval(wo, sample.wi);
-        // A point light's weight is 1 whatever the BSDF's density, so it is not computed.
-        let bsdf_pdf = if sample.pdf.is_finite() {
-            bsdf.pdf(wo, sample.wi)
-        } else {
-            0.0
-        };
+        let bsdf_pdf = bsdf.pdf(wo, sample.wi);
         let contribution = light_sample_contribution(
             sample.radiance,
             f_cos,
@@ -431,7 +493,7 @@ mod tests {
             let mut counters = SampleCounters::default();
             for i in 0..256 {
                 sampler.start_pixel_sample(UVec2::ZERO, i);
-                let l = tracer.radiance(ray, &mut sampler, &mut counters);
+                let l = tracer.radiance(&ray, &mut sampler, &mut counters);
                 assert!((l - Vec3::ONE).abs().max_element() < 1e-4, "{l}");
             }
             assert!(counters.rays > 256, "the paths bounced");

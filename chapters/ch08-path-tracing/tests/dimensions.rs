@@ -3,11 +3,14 @@
 //! The scenes look at one big matte plane that fills the view, so every camera ray hits it
 //! and every bounce off it leaves the scene: each path's count is then known exactly.
 //!
-//! At `max_depth` 2 a path is the camera ray and one light sample at the plane. With one
-//! point light that sample draws nothing (no pick among one light, no point on a point), and
-//! the BSDF direction that would extend the path is not drawn either: its segment would be
-//! the last, and could only find emission, which a scene of point lights has none of. So a
-//! static pinhole path draws exactly the 2 numbers of its pixel position.
+//! At `max_depth` 2 a path is the camera ray and next-event estimation at the plane. Point
+//! lights draw nothing there, however many (each gets its shadow ray, with no pick and no
+//! point on it to choose), and the BSDF direction that would extend the path is not drawn
+//! either: its segment would be the last, and could only find emission, which a scene of
+//! point lights has none of. So a static pinhole path draws exactly the 2 numbers of its
+//! pixel position. The lights a ray can find (the sky, a lamp) are sampled: a point on them
+//! (2), a pick among them when there are several (1), and then the BSDF direction (2), since
+//! the last segment may find them.
 
 use ch01_whitted::camera::{CameraFrame, PinholeCamera};
 use ch01_whitted::light::PointLight;
@@ -62,6 +65,22 @@ fn static_scene(lights: usize) -> SoftShadowScene {
     scene(plane(lights), Vec::new(), Shutter::INSTANT)
 }
 
+/// The plane under a sky of radiance 0.5, with (`lamp`) or without a small area light above
+/// it, out of the camera's view.
+fn sky_scene(lamp: bool) -> SoftShadowScene {
+    let mut builder = plane(0).background(Vec3::splat(0.5));
+    if lamp {
+        // X x Z = -Y: the lamp faces down, towards the plane's lower edge.
+        builder = builder.shape(
+            Shape::Quad(Quad::new(Vec3::new(-0.5, 2.5, 0.5), Vec3::X, Vec3::Z)),
+            Material::diffuse(Vec3::ZERO),
+        );
+    }
+    let base = scene(builder, Vec::new(), Shutter::INSTANT);
+    let lamps: &[(usize, Vec3)] = if lamp { &[(1, Vec3::splat(4.0))] } else { &[] };
+    SoftShadowScene::new(base.scene, lamps).expect("a valid lamp")
+}
+
 /// A small matte sphere in front of the plane, sliding sideways over the shutter.
 fn sliding_sphere() -> (MovingShape, Material) {
     let motion = AnimatedTransform::new(&[
@@ -102,9 +121,10 @@ fn thin_lens() -> Lens {
 }
 
 #[test]
-fn a_static_pinhole_path_to_one_point_light_draws_only_its_pixel() {
-    // Pixel 2, light sample 0 (one light: no pick; a point: no point on it), no BSDF numbers.
+fn a_static_pinhole_path_to_point_lights_draws_only_its_pixel() {
+    // Pixel 2; the point lights 0 (no pick, no point on a point), no BSDF numbers.
     assert_exactly(dimensions(&static_scene(1), &Lens::PINHOLE, 2), 2);
+    assert_exactly(dimensions(&static_scene(3), &Lens::PINHOLE, 2), 2);
 }
 
 #[test]
@@ -121,18 +141,20 @@ fn motion_adds_exactly_one() {
 }
 
 #[test]
-fn only_several_lights_draw_a_pick() {
-    // Pixel 2, the light pick 1.
-    assert_exactly(dimensions(&static_scene(2), &Lens::PINHOLE, 2), 3);
+fn only_several_sampled_lights_draw_a_pick() {
+    // The sky alone: pixel 2, a direction to the sky 2, the BSDF's 2 (the last segment may
+    // find the sky). With a lamp as well: the pick between the two, 1 more.
+    assert_exactly(dimensions(&sky_scene(false), &Lens::PINHOLE, 2), 6);
+    assert_exactly(dimensions(&sky_scene(true), &Lens::PINHOLE, 2), 7);
 }
 
 #[test]
 fn a_scene_without_lights_draws_no_light_numbers() {
     assert_exactly(dimensions(&static_scene(0), &Lens::PINHOLE, 2), 2);
     // One bounce more: pixel 2, then the BSDF's 2 at the plane; the bounce leaves the scene.
-    // Two lights would add their pick at the plane (1): 5.
+    // Point lights add nothing to it.
     assert_exactly(dimensions(&static_scene(0), &Lens::PINHOLE, 3), 4);
-    assert_exactly(dimensions(&static_scene(2), &Lens::PINHOLE, 3), 5);
+    assert_exactly(dimensions(&static_scene(2), &Lens::PINHOLE, 3), 4);
 }
 
 #[test]

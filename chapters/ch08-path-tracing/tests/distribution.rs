@@ -86,7 +86,7 @@ fn path(
         options,
         fuzz: method.fuzz,
     };
-    move |ray, sampler, counters| tracer.radiance(*ray, sampler, counters)
+    move |ray, sampler, counters| tracer.radiance(ray, sampler, counters)
 }
 
 #[test]

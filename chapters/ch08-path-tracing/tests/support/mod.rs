@@ -62,7 +62,7 @@ pub fn estimate(
             sampler.start_pixel_sample(UVec2::new(p as u32, 0), i);
             let ray = rays.generate(world, p_film, &mut sampler);
             let mut counters = SampleCounters::default();
-            let l = tracer.radiance(ray, &mut sampler, &mut counters);
+            let l = tracer.radiance(&ray, &mut sampler, &mut counters);
             assert!(l.is_finite(), "radiance {l} at {p_film}");
             let x = f64::from(l.y);
             sum += x;
