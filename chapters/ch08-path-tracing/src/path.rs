@@ -165,7 +165,14 @@ impl PathTracer<'_> {
             hit: &hit,
             fuzz: self.fuzz,
         };
-        let wo = -ray.dir.normalize();
+        // Every ray of a path has a unit direction (the camera's and the BSDF's are built
+        // unit), so `wo` needs no normalising; every test render checks it.
+        debug_assert!(
+            (ray.dir.length_squared() - 1.0).abs() < 1e-4,
+            "a path ray of length {}",
+            ray.dir.length()
+        );
+        let wo = -ray.dir;
         if self.options.nee && !bsdf.is_delta() {
             path.gather(self.next_event(&bsdf, wo, ray.time, sampler, counters));
         }
