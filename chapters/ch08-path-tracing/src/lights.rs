@@ -25,13 +25,11 @@ use common::Ray;
 use common::geometry::SurfaceHit;
 use glam::{Vec2, Vec3};
 
-/// One light of the list.
+/// One of the lights a light sample picks from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LightRef {
     /// An area light, by its index in the scene's list.
     Area(usize),
-    /// A point light, by its index.
-    Point(usize),
     /// The constant environment.
     Environment,
 }
@@ -41,10 +39,9 @@ pub enum LightRef {
 pub struct LightDirection {
     /// The unit direction from the receiver to the light.
     pub wi: Vec3,
-    /// The radiance arriving along `wi` if nothing blocks it (for a point light: `I / d²`).
+    /// The radiance arriving along `wi` if nothing blocks it.
     pub radiance: Vec3,
-    /// The density per unit solid angle of `wi`, the pick's `1/N` included; `f32::INFINITY`
-    /// for a point light, which no BSDF sample can find.
+    /// The density per unit solid angle of `wi`, the pick's `1/N` included.
     pub pdf: f32,
     /// Where the shadow ray goes; [`shadow_ray`](Self::shadow_ray) builds it.
     target: ShadowTarget,
@@ -56,8 +53,6 @@ pub struct LightDirection {
 enum ShadowTarget {
     /// A point on an area light: the ray is offset at both ends and stops short of it.
     Surface(LightSample),
-    /// A point light's position: the ray stops short of it.
-    Point(Vec3),
     /// The environment, in a direction: nothing ends the ray.
     Direction(Vec3),
 }
@@ -69,7 +64,6 @@ impl LightDirection {
     pub fn shadow_ray(&self, receiver: &SurfaceHit, time: f32) -> Ray {
         match self.target {
             ShadowTarget::Surface(sample) => sample.shadow_ray(receiver, time),
-            ShadowTarget::Point(position) => receiver.spawn_ray_to(position, time),
             ShadowTarget::Direction(wi) => receiver.spawn_ray(wi, time),
         }
     }
@@ -165,8 +159,8 @@ impl<'a> SceneLights<'a> {
         self.area.get(index as usize)
     }
 
-    /// A direction to `light` from `receiver` with the numbers `u` (a point light uses
-    /// none), or `None` when the light offers nothing there (no area, a degenerate sample).
+    /// A direction to `light` from `receiver` with the numbers `u`, or `None` when the light
+    /// offers nothing there (no area, a degenerate sample).
     #[inline]
     pub fn sample(
         &self,
@@ -191,17 +185,6 @@ impl<'a> SceneLights<'a> {
                     radiance: light.emitted(sample.n, -wi),
                     pdf: pick * pdf,
                     target: ShadowTarget::Surface(sample),
-                }
-            }
-            LightRef::Point(i) => {
-                let light = &self.points[i];
-                let to_light = light.position - x;
-                let d2 = to_light.length_squared();
-                LightDirection {
-                    wi: to_light / d2.sqrt(),
-                    radiance: light.intensity / d2,
-                    pdf: f32::INFINITY,
-                    target: ShadowTarget::Point(light.position),
                 }
             }
             LightRef::Environment => {
