@@ -7,9 +7,10 @@
 //! The two tracers do the same work only where the scene asks for the same work:
 //! - `direct`: the box with its mirror and glass spheres made matte, at `max_depth` 2. Both
 //!   trace one camera ray and one shadow ray to the one light per sample, and the path tracer
-//!   draws no number but the pixel's (see `tests/dimensions.rs`). The ratio of the two times
-//!   is the overhead of the path tracer's generality: the lens, the shutter, the light list,
-//!   the MIS bookkeeping.
+//!   draws no number but the pixel's (see `tests/dimensions.rs`); `tests/point_lights.rs`
+//!   checks that the two compute the same image. The ratio of the two times is the overhead
+//!   of the path tracer's generality: the camera's checks for a lens and a shutter, the BSDF's
+//!   match over every material, the path's state kept between segments.
 //! - `full`: the box as it is, at `max_depth` 8. Whitted's tracer follows both rays at glass
 //!   and stops at matte surfaces; the path tracer follows one ray and bounces on, so the
 //!   times differ by design. It is reported so that the difference is seen, not hidden.
