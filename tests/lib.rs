@@ -6,11 +6,11 @@
 
 pub mod binaries;
 
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::{Scene, SceneBuilder};
 use common::geometry::{Quad, Shape, Sphere, Triangle, TriangleMesh};
+use common::scene::CameraFrame;
+use common::scene::Material;
+use common::scene::PointLight;
+use common::scene::{Camera, FilmSettings, Scene, SceneBuilder};
 use glam::Vec3;
 
 /// The knobs of [`whitted_scene`]: where it is, how it is seen and lit, and its optics.
@@ -91,7 +91,7 @@ pub fn whitted_scene(params: &WhittedSceneParams) -> Option<Scene> {
     );
     let camera_offset = DEFAULT_CAMERA_OFFSET.normalize() * params.camera_distance;
     let frame = CameraFrame::look_at(at(TARGET + camera_offset), at(TARGET), Vec3::Y)?;
-    let mut camera = PinholeCamera::new(frame, params.fov_degrees, params.width, params.height);
+    let mut camera = Camera::pinhole(frame, params.fov_degrees);
     camera.near_clip *= scale;
     let light_position = DEFAULT_LIGHT_POSITION.normalize() * params.light_distance;
     let light_gain = (params.light_distance / DEFAULT_LIGHT_POSITION.length()).powi(2);
@@ -116,7 +116,11 @@ pub fn whitted_scene(params: &WhittedSceneParams) -> Option<Scene> {
             position: at(light_position),
             intensity: Vec3::splat(15.0 * scale * scale * light_gain),
         })
-        .build(camera, params.max_depth);
+        .build(
+            camera,
+            FilmSettings::new(params.width, params.height),
+            params.max_depth,
+        );
     Some(scene)
 }
 
@@ -135,7 +139,7 @@ pub fn sky_floor_and_wall(scale: f32, at: impl Fn(Vec3) -> Vec3) -> SceneBuilder
         2.0 * scale * Vec3::Y,
     );
     SceneBuilder::new()
-        .background(Vec3::new(0.4, 0.55, 0.8))
+        .environment(Vec3::new(0.4, 0.55, 0.8))
         .shape(Shape::Quad(floor), Material::diffuse(Vec3::splat(0.7)))
         .shape(
             Shape::Quad(wall),

@@ -7,7 +7,8 @@
 use crate::film::PixelSum;
 use crate::output::{self, OutputError};
 use crate::render::{Budget, RenderOutput, RenderSettings, StopFlag};
-use crate::scene::{SceneDescription, SceneError, load_scene_file};
+use crate::scene::{Capabilities, Scene};
+use crate::scene_file::{SceneError, load_scene_file};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::OnceLock;
@@ -126,27 +127,33 @@ fn describe_interrupt(written: Option<&Path>, spp: u64, requested_spp: Option<u6
 }
 
 /// A scene file read for a chapter's `render`: loaded with the `-D` overrides, the loader's
-/// warnings printed, turned into the chapter's scene by its `convert` (whose refusal is
-/// prefixed with the file's name), and the notes that `notes` finds in the result printed:
-/// the light the chapter's method leaves out, the settings it ignores.
-pub fn read_scene_file<T>(
+/// warnings printed, checked against what the chapter renders (a refusal is prefixed with the
+/// file's name), and the notes of the check printed: the light the chapter's method leaves
+/// out, the settings it ignores, the materials it renders its own way.
+pub fn read_scene_file(
     path: &Path,
     defines: &[(String, String)],
-    convert: impl FnOnce(&SceneDescription) -> Result<T, String>,
-    notes: impl FnOnce(&T) -> &[String],
-) -> Result<T, CliError> {
+    capabilities: &Capabilities,
+) -> Result<Scene, CliError> {
     let loaded = load_scene_file(path, defines)?;
     for warning in &loaded.warnings {
         eprintln!("{warning}");
     }
-    let converted = convert(&loaded.scene).map_err(|message| CliError::Unrenderable {
-        file: path.to_path_buf(),
-        message,
-    })?;
-    for note in notes(&converted) {
-        eprintln!("note: {note}");
+    let notes = capabilities
+        .check(&loaded.scene)
+        .map_err(|message| CliError::Unrenderable {
+            file: path.to_path_buf(),
+            message,
+        })?;
+    for note in &notes {
+        print_note(note);
     }
-    Ok(converted)
+    Ok(loaded.scene)
+}
+
+/// Prints a note about a render on standard error: what the method leaves out or changes.
+pub fn print_note(note: &str) {
+    eprintln!("note: {note}");
 }
 
 /// The stop flag of the process's renders, set by Ctrl-C (SIGINT).

@@ -17,6 +17,7 @@ pub mod ray;
 pub mod render;
 pub mod sampler;
 pub mod scene;
+pub mod scene_file;
 pub mod test_support;
 
 pub use glam::{DVec3, UVec2, Vec2, Vec3};

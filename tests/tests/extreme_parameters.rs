@@ -172,12 +172,12 @@ proptest! {
         (width, height) in (1u32..=6, 1u32..=5),
         seed in any::<u64>(),
     ) {
-        use ch06_fuzzy_reflections::material::RoughGlass;
-        use ch06_fuzzy_reflections::{Material, PointLights, TraceOptions, render_with};
+        use ch06_fuzzy_reflections::{PointLights, TraceOptions, render_with};
+        use common::scene::Material;
         let mut scene = builtin.build(max_depth, exponent);
-        for material in &mut scene.materials {
-            if let Material::RoughGlass(glass) = material {
-                *glass = RoughGlass { int_ior: ior, ..*glass };
+        for surface in &mut scene.scene.surfaces {
+            if let Material::RoughGlass(glass) = &mut surface.material {
+                glass.int_ior = ior;
             }
         }
         let options = TraceOptions { glass, fuzz, below };
@@ -259,24 +259,22 @@ proptest! {
         spp in 1u64..=4,
         seed in any::<u64>(),
     ) {
-        use ch01_whitted::material::Material as Smooth;
         use ch05_motion_blur::MotionScene;
-        use ch06_fuzzy_reflections::{FuzzyScene, Material};
-        use ch07_soft_shadows::SoftShadowScene;
+        use common::scene::Material;
         use ch08_path_tracing::{Method, PathOptions, render_with};
         let scene = whitted_scene(&params);
         prop_assume!(scene.is_some(), "the camera is at its target");
-        let mut scene = FuzzyScene::smooth(MotionScene::still(scene.unwrap()));
+        let mut scene = scene.unwrap();
         if let Some(exponent) = exponent {
-            for material in &mut scene.materials {
-                *material = match *material {
-                    Material::Smooth(Smooth::Mirror { reflectance }) => Material::glossy(reflectance, exponent),
-                    Material::Smooth(Smooth::Dielectric { int_ior, .. }) => Material::rough_glass(int_ior, exponent),
+            for surface in &mut scene.surfaces {
+                surface.material = match surface.material {
+                    Material::Mirror { reflectance } => Material::glossy(reflectance, exponent),
+                    Material::Dielectric { int_ior, .. } => Material::rough_glass(int_ior, exponent),
                     other => other,
                 };
             }
         }
-        let scene = SoftShadowScene::without_lights(scene);
+        let scene = MotionScene::still(scene);
         let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth: params.max_depth });
         let lens = Lens::new(radius, focus).unwrap();
         let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();

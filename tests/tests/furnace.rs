@@ -14,19 +14,17 @@
 //! weighted by multiple importance sampling. Their estimates are noisy; the tolerance is
 //! measured from the spread of the pixels (see [`assert_as_bright_as_the_sky`]).
 
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::{Scene, SceneBuilder};
 use ch01_whitted::{PixelPattern, render};
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::lens::Lens;
 use ch05_motion_blur::MotionScene;
-use ch06_fuzzy_reflections::{FuzzyScene, Material as FuzzyMaterial, TraceOptions};
+use ch06_fuzzy_reflections::TraceOptions;
+use ch07_soft_shadows::LightOptions;
 use ch07_soft_shadows::scenes::{Builder, matte};
-use ch07_soft_shadows::{LightOptions, SoftShadowScene};
 use ch08_path_tracing::{Method, MisHeuristic, PathOptions};
 use common::geometry::{Quad, Shape, Sphere};
 use common::render::{RenderOutput, RenderSettings};
+use common::scene::{Camera, CameraFrame, FilmSettings, Material, Scene, SceneBuilder};
 use glam::Vec3;
 use workbook_tests::octahedron;
 
@@ -35,13 +33,10 @@ const SKY: f32 = 1.0;
 const ROUNDING: f32 = 1e-5;
 const SIZE: u32 = 24;
 
-fn camera(origin: Vec3, target: Vec3, fov: f32) -> PinholeCamera {
-    PinholeCamera::new(
-        CameraFrame::look_at(origin, target, Vec3::Y).unwrap(),
-        fov,
-        SIZE,
-        SIZE,
-    )
+/// A pinhole at `origin` looking at `target`, and the square film of the tests.
+fn camera(origin: Vec3, target: Vec3, fov: f32) -> (Camera, FilmSettings) {
+    let frame = CameraFrame::look_at(origin, target, Vec3::Y).unwrap();
+    (Camera::pinhole(frame, fov), FilmSettings::new(SIZE, SIZE))
 }
 
 /// One object at a time, so that the rays leaving it see only the sky: Whitted's tracer
@@ -70,17 +65,15 @@ const OBJECTS: [Object; 7] = [
 
 /// `object` alone under the sky, filling most of the view.
 fn in_the_furnace(object: Object, max_depth: u32) -> Scene {
-    let builder = SceneBuilder::new().background(Vec3::splat(SKY));
+    let builder = SceneBuilder::new().environment(Vec3::splat(SKY));
     let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0));
     let builder = match object {
         Object::GlassSphere(ior) => builder.shape(sphere, Material::glass(ior)),
         Object::MirrorSphere => builder.shape(sphere, Material::mirror()),
         Object::GlassOctahedron => builder.mesh(&octahedron(Vec3::ZERO, 1.2), Material::glass(1.5)),
     };
-    builder.build(
-        camera(Vec3::new(0.3, 0.5, 4.0), Vec3::ZERO, 40.0),
-        max_depth,
-    )
+    let (camera, film) = camera(Vec3::new(0.3, 0.5, 4.0), Vec3::ZERO, 40.0);
+    builder.build(camera, film, max_depth)
 }
 
 /// A glass slab (two parallel quads, facing out) and, beside it, a mirror floor, both seen
@@ -100,12 +93,13 @@ fn grazing_views(max_depth: u32) -> Scene {
     let grazing = 0.5f32.to_radians();
     let origin = Vec3::new(0.0, 0.2, 10.0);
     let target = origin + Vec3::new(0.0, -grazing.tan(), -1.0);
+    let (camera, film) = camera(origin, target, 20.0);
     SceneBuilder::new()
-        .background(Vec3::splat(SKY))
+        .environment(Vec3::splat(SKY))
         .shape(Shape::Quad(slab_top), Material::glass(1.5))
         .shape(Shape::Quad(slab_bottom), Material::glass(1.5))
         .shape(Shape::Quad(mirror), Material::mirror())
-        .build(camera(origin, target, 20.0), max_depth)
+        .build(camera, film, max_depth)
 }
 
 /// Checks that no pixel is brighter than the sky, and returns the darkest one.
@@ -200,7 +194,7 @@ const BOX: f32 = 3.0;
 /// from every direction, through area-light sampling (a light sample) as much as through
 /// rays that hit a wall (a BSDF sample), so an object that absorbs nothing looks exactly as
 /// bright as the walls.
-fn in_a_glowing_box(object: Shape, material: FuzzyMaterial, max_depth: u32) -> SoftShadowScene {
+fn in_a_glowing_box(object: Shape, material: Material, max_depth: u32) -> MotionScene {
     let (min, d) = (Vec3::splat(-BOX), 2.0 * BOX);
     let (dx, dy, dz) = (d * Vec3::X, d * Vec3::Y, d * Vec3::Z);
     let max = Vec3::splat(BOX);
@@ -214,7 +208,7 @@ fn in_a_glowing_box(object: Shape, material: FuzzyMaterial, max_depth: u32) -> S
         Quad::new(min, dz, dx),
     ];
     let frame = CameraFrame::look_at(Vec3::new(0.3, 0.5, 2.6), Vec3::ZERO, Vec3::Y).unwrap();
-    let camera = PinholeCamera::new(frame, 60.0, SIZE, SIZE);
+    let camera = (Camera::pinhole(frame, 60.0), FilmSettings::new(SIZE, SIZE));
     walls
         .into_iter()
         .fold(Builder::new(), |builder, wall| {
@@ -226,21 +220,13 @@ fn in_a_glowing_box(object: Shape, material: FuzzyMaterial, max_depth: u32) -> S
 
 /// The objects of the glowing box, and whether they absorb nothing: a white lobe loses the
 /// directions that fall below its surface (they are dropped).
-fn box_objects() -> [(&'static str, FuzzyMaterial, bool); 5] {
+fn box_objects() -> [(&'static str, Material, bool); 5] {
     [
         ("white matte", matte(Vec3::ONE), true),
-        ("mirror", Material::mirror().into(), true),
-        ("glass", Material::glass(1.5).into(), true),
-        (
-            "white glossy",
-            FuzzyMaterial::glossy(Vec3::ONE, 20.0),
-            false,
-        ),
-        (
-            "frosted glass",
-            FuzzyMaterial::rough_glass(1.5, 50.0),
-            false,
-        ),
+        ("mirror", Material::mirror(), true),
+        ("glass", Material::glass(1.5), true),
+        ("white glossy", Material::glossy(Vec3::ONE, 20.0), false),
+        ("frosted glass", Material::rough_glass(1.5, 50.0), false),
     ]
 }
 
@@ -280,7 +266,7 @@ fn assert_as_bright_as_the_sky(what: &str, out: &RenderOutput, absorbs_nothing: 
 const NOISY_SPP: u64 = 64;
 
 /// Chapter 08's render of `scene`: random pixel positions, a box filter.
-fn path_traced(scene: &SoftShadowScene, options: PathOptions) -> RenderOutput {
+fn path_traced(scene: &MotionScene, options: PathOptions) -> RenderOutput {
     let sampler = PixelSampler::new(PixelSamplerKind::Random, NOISY_SPP, 3).unwrap();
     let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
     ch08_path_tracing::render_with(
@@ -301,8 +287,7 @@ fn path_traced(scene: &SoftShadowScene, options: PathOptions) -> RenderOutput {
 #[test]
 fn closed_glass_and_mirrors_look_like_the_sky_to_the_path_tracer() {
     for object in OBJECTS {
-        let world = MotionScene::still(in_the_furnace(object, 64));
-        let scene = SoftShadowScene::without_lights(FuzzyScene::smooth(world));
+        let scene = MotionScene::still(in_the_furnace(object, 64));
         let exact = PathOptions {
             rr_depth: None,
             ..PathOptions::with_depth(64)

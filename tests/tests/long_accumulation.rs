@@ -154,12 +154,12 @@ const FURNACE_SIDE: u32 = 4;
 /// Chapter 08's path tracer on its own white furnace (a white matte and a glass ball under a
 /// sky of radiance 1, depth 1000, Mitsuba's roulette): every pixel's expected value is 1.
 fn path_traced_furnace(spp: u64) -> Image {
-    use ch01_whitted::material::Material as Smooth;
     use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
-    use ch06_fuzzy_reflections::Material;
+
     use ch08_path_tracing::{Method, PathOptions, furnace, render_with};
-    let white = Material::from(Smooth::diffuse(Vec3::ONE));
-    let glass = Material::from(Smooth::glass(1.5));
+    use common::scene::Material as Smooth;
+    let white = Smooth::diffuse(Vec3::ONE);
+    let glass = Smooth::glass(1.5);
     let scene = furnace::spheres(&[white, glass], 1000);
     let sampler = PixelSampler::new(PixelSamplerKind::Random, spp, spp).unwrap();
     let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();

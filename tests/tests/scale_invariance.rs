@@ -13,16 +13,17 @@
 //! Rendering in camera-relative coordinates would fix it.
 
 use ch01_whitted::PixelPattern;
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::lens::Lens;
-use ch06_fuzzy_reflections::{Material as FuzzyMaterial, TraceOptions};
+use ch05_motion_blur::MotionScene;
+use ch06_fuzzy_reflections::TraceOptions;
+use ch07_soft_shadows::LightOptions;
 use ch07_soft_shadows::scenes::{Builder, matte};
-use ch07_soft_shadows::{LightOptions, SoftShadowScene};
 use ch08_path_tracing::{Method, PathOptions};
 use common::geometry::{Quad, Shape, Sphere};
 use common::image::Image;
 use common::render::{RenderOutput, RenderSettings};
+use common::scene::{Camera, CameraFrame, FilmSettings, Material};
 use glam::Vec3;
 use workbook_tests::{WhittedSceneParams, scaled_whitted_scene};
 
@@ -134,22 +135,17 @@ fn thin_lens_images_do_not_depend_on_scene_scale() {
 /// numbers of a sample do not depend on the scale, so the spread rays are the same rays,
 /// scaled: any difference is a self-hit or a leak of the rays spawned off rough surfaces.
 fn fuzzy_at(scale: f32) -> Image {
-    use ch01_whitted::material::Material as Smooth;
-    use ch05_motion_blur::MotionScene;
-    use ch06_fuzzy_reflections::{FuzzyScene, Material, PointLights, TraceOptions, render_with};
-    let whitted = MotionScene::still(scaled_whitted_scene(scale, Vec3::ZERO, SIZE));
-    let materials = whitted
-        .scene
-        .materials
-        .iter()
-        .map(|&m| match m {
-            Smooth::Mirror { reflectance } => Material::glossy(reflectance, 200.0),
-            Smooth::Dielectric { int_ior, .. } => Material::rough_glass(int_ior, 50.0),
-            other => other.into(),
-        })
-        .collect();
-    let scene = FuzzyScene::new(whitted, materials).unwrap();
-    assert!(scene.has_fuzzy_materials());
+    use ch06_fuzzy_reflections::{PointLights, render_with};
+    let mut whitted = scaled_whitted_scene(scale, Vec3::ZERO, SIZE);
+    for surface in &mut whitted.surfaces {
+        surface.material = match surface.material {
+            Material::Mirror { reflectance } => Material::glossy(reflectance, 200.0),
+            Material::Dielectric { int_ior, .. } => Material::rough_glass(int_ior, 50.0),
+            other => other,
+        };
+    }
+    let scene = MotionScene::still(whitted);
+    assert!(scene.scene.surfaces.iter().any(|s| s.material.is_fuzzy()));
     let sampler = PixelSampler::new(PixelSamplerKind::Stratified, 16, 0).unwrap();
     let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
     let settings = RenderSettings::new(SIZE, SIZE, 16);
@@ -179,7 +175,7 @@ fn fuzzy_images_do_not_depend_on_scene_scale() {
 /// Area lights keep their radiance: what they give a point depends only on the solid angle
 /// they cover there, which does not change with scale. The point light's intensity grows with
 /// `scale^2`, as in [`scaled_whitted_scene`].
-fn area_lit_scene(scale: f32, offset: Vec3) -> SoftShadowScene {
+fn area_lit_scene(scale: f32, offset: Vec3) -> MotionScene {
     let at = |p: Vec3| p * scale + offset;
     let quad = |corner: Vec3, e1: Vec3, e2: Vec3| {
         Shape::Quad(Quad::new(at(corner), e1 * scale, e2 * scale))
@@ -187,7 +183,7 @@ fn area_lit_scene(scale: f32, offset: Vec3) -> SoftShadowScene {
     let sphere = |centre: Vec3, radius: f32| Shape::Sphere(Sphere::new(at(centre), radius * scale));
     let eye = at(Vec3::new(0.0, 1.4, 4.0));
     let frame = CameraFrame::look_at(eye, at(Vec3::new(0.0, 0.6, 0.0)), Vec3::Y).unwrap();
-    let mut camera = PinholeCamera::new(frame, 50.0, NOISY_SIZE, NOISY_SIZE);
+    let mut camera = Camera::pinhole(frame, 50.0);
     camera.near_clip *= scale;
     Builder::new()
         .shape(
@@ -209,11 +205,11 @@ fn area_lit_scene(scale: f32, offset: Vec3) -> SoftShadowScene {
         )
         .shape(
             sphere(Vec3::new(-0.1, 0.3, 0.6), 0.3),
-            FuzzyMaterial::glossy(Vec3::splat(0.9), 200.0),
+            Material::glossy(Vec3::splat(0.9), 200.0),
         )
         .shape(
             sphere(Vec3::new(0.8, 0.3, 0.8), 0.3),
-            FuzzyMaterial::rough_glass(1.5, 500.0),
+            Material::rough_glass(1.5, 500.0),
         )
         .area_light(
             quad(Vec3::new(-0.4, 2.2, 0.0), 0.8 * Vec3::X, 0.8 * Vec3::Z),
@@ -227,7 +223,7 @@ fn area_lit_scene(scale: f32, offset: Vec3) -> SoftShadowScene {
             at(Vec3::new(-1.5, 2.0, 2.0)),
             Vec3::splat(4.0 * scale * scale),
         )
-        .build(camera, 6)
+        .build((camera, FilmSettings::new(NOISY_SIZE, NOISY_SIZE)), 6)
 }
 
 /// Side of the noisy images, in pixels: four by four blocks of [`BLOCK`].
@@ -380,11 +376,9 @@ const MOTION_HEIGHT: u32 = 24;
 /// Every position, size and translation is multiplied by `scale`; the point light's intensity
 /// grows with `scale^2`, as in [`scaled_whitted_scene`]. Times do not scale.
 fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
-    use ch01_whitted::light::PointLight;
-    use ch01_whitted::material::Material;
-    use ch05_motion_blur::world::matrix_of;
-    use ch05_motion_blur::{AnimatedTransform, MotionScene, MovingShape, Shutter};
+    use ch05_motion_blur::AnimatedTransform;
     use common::geometry::Triangle;
+    use common::scene::PointLight;
     use glam::{Mat4, Quat};
 
     let at = |p: Vec3| p * scale + offset;
@@ -393,15 +387,15 @@ fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
     };
     let camera_at_open = look(Vec3::new(-0.2, 1.2, 3.6), Vec3::new(0.0, 0.5, 0.0));
     let camera_at_close = look(Vec3::new(0.3, 1.3, 3.5), Vec3::new(0.2, 0.5, 0.0));
-    let mut camera = PinholeCamera::new(camera_at_open, 50.0, MOTION_WIDTH, MOTION_HEIGHT);
+    let mut camera = Camera::pinhole(camera_at_open, 50.0);
     camera.near_clip *= scale;
-    let camera_motion = AnimatedTransform::new(&[
-        (0.0, matrix_of(&camera_at_open)),
-        (1.0, matrix_of(&camera_at_close)),
-    ])
-    .expect("two camera frames are valid keyframes");
+    camera.keyframes = vec![
+        (0.0, camera_at_open.to_matrix()),
+        (1.0, camera_at_close.to_matrix()),
+    ];
+    camera.shutter_close = 1.0;
 
-    let scene = workbook_tests::sky_floor_and_wall(scale, at)
+    let still = workbook_tests::sky_floor_and_wall(scale, at)
         .shape(
             Shape::Sphere(Sphere::new(at(Vec3::new(1.2, 0.4, -0.4)), 0.4 * scale)),
             Material::mirror(),
@@ -409,13 +403,12 @@ fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
         .light(PointLight {
             position: at(Vec3::new(-1.0, 3.0, 2.5)),
             intensity: Vec3::splat(20.0 * scale * scale),
-        })
-        .build(camera, 5);
+        });
 
     let ball_radius = 0.35;
-    let sliding_ball = MovingShape::new(
+    let sliding_ball = (
         Shape::Sphere(Sphere::new(Vec3::ZERO, ball_radius * scale)),
-        AnimatedTransform::new(&[
+        vec![
             (
                 0.0,
                 Mat4::from_translation(at(Vec3::new(-1.3, ball_radius, 0.5))),
@@ -424,11 +417,10 @@ fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
                 1.0,
                 Mat4::from_translation(at(Vec3::new(-0.3, ball_radius, 0.5))),
             ),
-        ])
-        .expect("two translations are valid keyframes"),
+        ],
     );
     // Sized for scale 1 in its own space; the scale in its keyframes sizes it with the scene.
-    let spinning_panel = MovingShape::new(
+    let spinning_panel = (
         Shape::Quad(Quad::new(
             Vec3::new(-0.35, -0.35, 0.0),
             0.7 * Vec3::X,
@@ -441,7 +433,11 @@ fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
             1.0,
             Mat4::from_translation(at(Vec3::new(0.5, 0.45, -0.2)))
                 * Mat4::from_scale(Vec3::splat(scale)),
-        ),
+        )
+        .keyframes()
+        .iter()
+        .map(|keyframe| (keyframe.time, keyframe.matrix))
+        .collect(),
     );
     // Sized by its keyframes: a unit-sized triangle, scaled, turned and moved.
     let rigidly_placed = |angle: f32, position: Vec3| {
@@ -451,34 +447,38 @@ fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
             at(position),
         )
     };
-    let rising_triangle = MovingShape::new(
+    let rising_triangle = (
         Shape::Triangle(Triangle::new(
             Vec3::new(-0.3, 0.0, 0.0),
             Vec3::new(0.3, 0.0, 0.0),
             Vec3::new(0.0, 0.5, 0.0),
         )),
-        AnimatedTransform::new(&[
+        vec![
             (0.0, rigidly_placed(0.0, Vec3::new(0.2, 0.05, 1.0))),
             (1.0, rigidly_placed(0.6, Vec3::new(0.5, 0.4, 1.0))),
-        ])
-        .expect("two scaled rigid placements are valid keyframes"),
-    );
-    MotionScene::new(
-        scene,
-        vec![
-            (sliding_ball, Material::diffuse(Vec3::new(0.9, 0.5, 0.1))),
-            (
-                spinning_panel,
-                Material::two_sided_diffuse(Vec3::new(0.2, 0.4, 0.8)),
-            ),
-            (
-                rising_triangle,
-                Material::two_sided_diffuse(Vec3::new(0.2, 0.7, 0.3)),
-            ),
         ],
-        Some(camera_motion),
-        Shutter::new(0.0, 1.0).expect("a valid interval"),
-    )
+    );
+    let (ball, ball_keyframes) = sliding_ball;
+    let (panel, panel_keyframes) = spinning_panel;
+    let (triangle, triangle_keyframes) = rising_triangle;
+    let scene = still
+        .moving(
+            ball,
+            ball_keyframes,
+            Material::diffuse(Vec3::new(0.9, 0.5, 0.1)),
+        )
+        .moving(
+            panel,
+            panel_keyframes,
+            Material::two_sided_diffuse(Vec3::new(0.2, 0.4, 0.8)),
+        )
+        .moving(
+            triangle,
+            triangle_keyframes,
+            Material::two_sided_diffuse(Vec3::new(0.2, 0.7, 0.3)),
+        )
+        .build(camera, FilmSettings::new(MOTION_WIDTH, MOTION_HEIGHT), 5);
+    MotionScene::new(scene).expect("valid motions")
 }
 
 /// Chapter 05: each sample draws its pixel position, then its time, stratified over the

@@ -7,12 +7,11 @@
 //! or through glass. Mitsuba's stored renders of them sit in `scenes/mitsuba/`; the tests and
 //! the book compare our render with them (see `common::metrics::agreement`).
 
-use crate::scene_file::convert;
-use crate::{PixelPattern, render};
+use crate::{CAPABILITIES, PixelPattern, render};
 use common::image::Image;
 use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
 use common::render::RenderSettings;
-use common::scene::load_scene_file;
+use common::scene_file::load_scene_file;
 use std::path::{Path, PathBuf};
 
 /// The scenes compared, with what each one checks.
@@ -44,10 +43,12 @@ pub fn scenes_dir() -> PathBuf {
 /// integrates the same pixel area, with less noise.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
     let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let converted = convert(&loaded.scene).map_err(|e| format!("{}: {e}", path.display()))?;
-    let camera = &converted.scene.camera;
-    let settings = RenderSettings::new(camera.width, camera.height, AGREEMENT_SPP);
-    let rendered = render(&converted.scene, &settings, PixelPattern::Grid, 0)
+    let scene = loaded.scene;
+    CAPABILITIES
+        .check(&scene)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
+    let rendered = render(&scene, &settings, PixelPattern::Grid, 0)
         .expect("64 is a square, so the grid exists");
     Ok(rendered.image)
 }

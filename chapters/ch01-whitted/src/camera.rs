@@ -5,41 +5,8 @@
 //! horizontal; film position `(0, 0)` is the top-left corner of the image.
 
 use common::Ray;
+use common::scene::{Camera, CameraFrame};
 use glam::{Vec2, Vec3};
-
-/// Where the camera is and which way it looks.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CameraFrame {
-    /// The eye point.
-    pub origin: Vec3,
-    /// Unit vector to the image's left.
-    pub left: Vec3,
-    /// Unit vector up in the image.
-    pub up: Vec3,
-    /// Unit viewing direction.
-    pub forward: Vec3,
-}
-
-impl CameraFrame {
-    /// A camera at `origin` looking at `target`, with `up` roughly up. `None` if the view
-    /// direction is zero or parallel to `up`, where no frame exists.
-    pub fn look_at(origin: Vec3, target: Vec3, up: Vec3) -> Option<Self> {
-        let forward = (target - origin).try_normalize()?;
-        let left = up.cross(forward).try_normalize()?;
-        let up = forward.cross(left);
-        Some(Self {
-            origin,
-            left,
-            up,
-            forward,
-        })
-    }
-
-    /// A camera-space direction in world space.
-    pub fn to_world(&self, v: Vec3) -> Vec3 {
-        v.x * self.left + v.y * self.up + v.z * self.forward
-    }
-}
 
 // ANCHOR: pinhole
 /// An ideal pinhole: every ray starts at the eye and passes through a point of the film.
@@ -66,6 +33,15 @@ impl PinholeCamera {
             width,
             height,
             near_clip: 0.01,
+        }
+    }
+
+    /// The pinhole of the scene's `camera` (its frame at rest, its field of view and near
+    /// clip) on a `width x height` film.
+    pub fn of(camera: &Camera, width: u32, height: u32) -> Self {
+        Self {
+            near_clip: camera.near_clip,
+            ..Self::new(camera.frame, camera.fov_x_degrees, width, height)
         }
     }
 
@@ -132,11 +108,5 @@ mod tests {
         assert!(top.dir.y > 0.0);
         // The vertical half-extent is tan(45°) / aspect = 0.5.
         assert_relative_eq!(top.dir.y / -top.dir.z, 0.5, epsilon = 1e-6);
-    }
-
-    #[test]
-    fn no_frame_when_looking_along_up() {
-        assert!(CameraFrame::look_at(Vec3::ZERO, Vec3::Y, Vec3::Y).is_none());
-        assert!(CameraFrame::look_at(Vec3::ZERO, Vec3::ZERO, Vec3::Y).is_none());
     }
 }

@@ -152,13 +152,13 @@ struct Window {
 
 /// Renders only `window` of the full-size image, with `spp` samples per pixel.
 fn render_window(
-    scene: &crate::scene::Scene,
+    scene: &common::scene::Scene,
     quality: &Quality,
     window: Window,
     sampler: &GridSampler,
     spp: u64,
 ) -> Image {
-    let camera = scene.camera.with_size(quality.width, quality.height);
+    let camera = crate::camera::PinholeCamera::of(&scene.camera, quality.width, quality.height);
     let offset = Vec2::new(window.x as f32, window.y as f32);
     let settings = RenderSettings {
         progress: true,

@@ -8,8 +8,9 @@
 //!
 //! - [`optics`]: reflection, Snell's law, the Fresnel equations.
 //! - [`camera`]: the pinhole camera.
-//! - [`material`], [`light`], [`scene`], [`scenes`]: what the world is made of;
-//!   [`scene_file`]: the same from a Mitsuba 3 XML file.
+//! - [`scene`]: the two questions the tracer asks of the world (the world itself is the
+//!   workbook's scene model, `common::scene`); [`scenes`]: the chapter's built-in scenes;
+//!   [`CAPABILITIES`]: what of a scene file the chapter renders.
 //! - [`tracer`]: the recursive tracer.
 //! - [`pixel`]: where in its pixel a ray goes (the centre, or a regular grid).
 //! - [`figures`]: the chapter's figures for the book; [`agreement`]: the scenes on which it is
@@ -20,20 +21,26 @@
 pub mod agreement;
 pub mod camera;
 pub mod figures;
-pub mod light;
-pub mod material;
 pub mod optics;
 pub mod pixel;
 pub mod scene;
-pub mod scene_file;
 pub mod scenes;
 pub mod tracer;
 
+use camera::PinholeCamera;
 use common::film::PixelBoxFilter;
 use common::render::{self, RenderOutput, RenderSettings};
 use common::sampler::Sampler;
+use common::scene::{Capabilities, Chapter, Scene};
 use pixel::{CentreSampler, GridSampler};
-use scene::Scene;
+
+/// What chapter 01 renders of a scene: point lights, matte surfaces, mirrors and glass seen
+/// through a pinhole, and nothing of the later chapters. It leaves out indirect light and the
+/// environment's light on matte surfaces, and averages each pixel's own samples.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::WHITTED,
+    approximates: &[],
+};
 
 /// Where the samples of a pixel go.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -73,7 +80,7 @@ pub fn render_with<S: Sampler>(
     settings: &RenderSettings,
     sampler: &S,
 ) -> RenderOutput {
-    let camera = scene.camera.with_size(settings.width, settings.height);
+    let camera = PinholeCamera::of(&scene.camera, settings.width, settings.height);
     render::render(
         settings,
         sampler,

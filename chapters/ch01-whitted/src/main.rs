@@ -1,8 +1,7 @@
 //! `ch01-whitted`: render the chapter's scenes, or write its figures.
 
-use ch01_whitted::scene_file::convert;
 use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
-use ch01_whitted::{PixelPattern, figures, render};
+use ch01_whitted::{CAPABILITIES, PixelPattern, figures, render};
 use clap::{Parser, Subcommand};
 use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
 use common::render::Budget;
@@ -58,8 +57,9 @@ fn main() -> ExitCode {
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (mut scene, default_spp, scene_name) = match command.args.scene_file()? {
         Some(path) => {
-            let converted = read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
-            (converted.scene, converted.spp, path.display().to_string())
+            let scene = read_scene_file(path, &command.args.define, &CAPABILITIES)?;
+            let spp = u64::from(scene.sampler.sample_count.max(1));
+            (scene, spp, path.display().to_string())
         }
         None => (
             command.builtin.build(DEFAULT_MAX_DEPTH),
@@ -72,7 +72,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     }
     let settings = command
         .args
-        .settings((scene.camera.width, scene.camera.height), default_spp)?;
+        .settings((scene.film.width, scene.film.height), default_spp)?;
     let pixel = command.pixel.unwrap_or_else(|| {
         // A scene file that asks for several samples per pixel expects them spread over the
         // pixel, as Mitsuba spreads them; Whitted's own choice is the centre.

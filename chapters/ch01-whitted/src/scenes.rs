@@ -1,10 +1,7 @@
 //! The chapter's built-in scenes.
 
-use crate::camera::{CameraFrame, PinholeCamera};
-use crate::light::PointLight;
-use crate::material::Material;
-use crate::scene::{Scene, SceneBuilder};
 use common::geometry::{Quad, Shape, Sphere};
+use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, Scene, SceneBuilder};
 use glam::Vec3;
 
 /// The scenes `render --builtin NAME` knows.
@@ -43,7 +40,7 @@ impl Builtin {
 pub const DEFAULT_MAX_DEPTH: u32 = 12;
 
 fn spheres(max_depth: u32) -> Scene {
-    let mut builder = SceneBuilder::new().background(Vec3::new(0.45, 0.6, 0.85));
+    let mut builder = SceneBuilder::new().environment(Vec3::new(0.45, 0.6, 0.85));
     // An 8 x 8 checkerboard of 1 x 1 tiles on the plane y = 0: hard edges to alias, and a
     // pattern to see distorted through the glass.
     let tiles = 8;
@@ -83,7 +80,11 @@ fn spheres(max_depth: u32) -> Scene {
         });
     let frame = CameraFrame::look_at(Vec3::new(0.0, 1.6, 5.2), Vec3::new(0.0, 0.7, 0.0), Vec3::Y)
         .expect("the camera looks along a valid direction");
-    scene.build(PinholeCamera::new(frame, 50.0, 320, 240), max_depth)
+    scene.build(
+        Camera::pinhole(frame, 50.0),
+        FilmSettings::new(320, 240),
+        max_depth,
+    )
 }
 
 fn cornell(max_depth: u32) -> Scene {
@@ -129,5 +130,9 @@ fn cornell(max_depth: u32) -> Scene {
         });
     let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 3.9), Vec3::ZERO, Vec3::Y)
         .expect("the camera looks along a valid direction");
-    scene.build(PinholeCamera::new(frame, 40.0, 256, 256), max_depth)
+    scene.build(
+        Camera::pinhole(frame, 40.0),
+        FilmSettings::new(256, 256),
+        max_depth,
+    )
 }

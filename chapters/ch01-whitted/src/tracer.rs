@@ -6,12 +6,12 @@
 //! traced the same way, recursively, until the depth limit. Every ray is deterministic, so one
 //! ray per pixel gives the final image, with every edge jagged and every shadow hard.
 
-use crate::material::Material;
 use crate::optics::{fresnel_dielectric, reflect, refract};
 use crate::scene::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
+use common::scene::Material;
 use glam::Vec3;
 use std::f32::consts::FRAC_1_PI;
 
@@ -22,13 +22,13 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
     counters.rays += 1;
     let scene = world.scene();
     let Some(hit) = world.intersect(ray) else {
-        return scene.background;
+        return scene.environment;
     };
     if depth >= scene.max_depth {
         // No segment left to carry light here: surfaces do not glow by themselves.
         return Vec3::ZERO;
     }
-    match scene.materials[hit.shape as usize] {
+    match scene.surface(hit.shape).material {
         Material::Diffuse { albedo, two_sided } => {
             direct_light(world, ray, &hit, albedo, two_sided, counters)
         }
@@ -53,6 +53,8 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
         Material::Dielectric { int_ior, ext_ior } => {
             dielectric(world, ray, &hit, int_ior, ext_ior, depth, counters)
         }
+        // Chapter 06's materials; the capability check keeps them from this chapter.
+        Material::Glossy(_) | Material::RoughGlass(_) => Vec3::ZERO,
     }
 }
 // ANCHOR_END: trace
@@ -78,7 +80,7 @@ pub fn direct_light<W: World>(
         return Vec3::ZERO; // the back of a one-sided surface is black
     };
     let mut radiance = Vec3::ZERO;
-    for light in &world.scene().lights {
+    for light in &world.scene().point_lights {
         let to_light = light.position - hit.p;
         let distance_squared = to_light.length_squared();
         let cos_theta = normal.dot(to_light) / distance_squared.sqrt();

@@ -1,10 +1,10 @@
 //! Rendering Mitsuba 3 XML scene files, and refusing what chapter 01 cannot render.
 
-use ch01_whitted::scene_file::convert;
 use ch01_whitted::scenes::Builtin;
-use ch01_whitted::{PixelPattern, render};
+use ch01_whitted::{CAPABILITIES, PixelPattern, render};
 use common::render::RenderSettings;
-use common::scene::{load_scene_file, parse_scene};
+use common::scene::Scene;
+use common::scene_file::{load_scene_file, parse_scene};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -12,6 +12,11 @@ fn scene_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(name)
+}
+
+/// The notes chapter 01 prints for `scene`, or its refusal.
+fn convert(scene: &Scene) -> Result<Vec<String>, String> {
+    CAPABILITIES.check(scene)
 }
 
 fn run(args: &[&str]) -> Output {
@@ -25,9 +30,9 @@ fn run(args: &[&str]) -> Output {
 fn the_cornell_file_renders_like_the_builtin_cornell_box() {
     let loaded = load_scene_file(&scene_path("cornell-point.xml"), &[]).unwrap();
     assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
-    let converted = convert(&loaded.scene).unwrap();
+    convert(&loaded.scene).unwrap();
     let settings = RenderSettings::new(64, 64, 1);
-    let from_file = render(&converted.scene, &settings, PixelPattern::Centre, 0)
+    let from_file = render(&loaded.scene, &settings, PixelPattern::Centre, 0)
         .unwrap()
         .image;
     let builtin = render(
@@ -95,7 +100,28 @@ fn scene_defaults_and_overrides_reach_the_render() {
         json["pixel"], "grid",
         "a scene file's 4 samples spread over the pixel"
     );
+    // `max_depth` 2 asks for direct light only, which Whitted's method computes exactly: no
+    // light is left out, so there is nothing to note.
     let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !stderr.contains("leaves out indirect light"),
+        "a note about light that is not missing: {stderr}"
+    );
+    // A file that asks for indirect light (the Cornell box's `max_depth` 12) gets the note.
+    let cornell = scene_path("cornell-point.xml");
+    let out = run(&[
+        "render",
+        "--scene",
+        cornell.to_str().unwrap(),
+        "-D",
+        "width=8",
+        "-D",
+        "height=8",
+        "--out",
+        image.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
     assert!(
         stderr.contains("leaves out indirect light"),
         "the note about missing light: {stderr}"
@@ -131,7 +157,7 @@ fn features_of_later_chapters_are_refused_with_their_chapter() {
                 r#"<shape type="sphere"><emitter type="area"><rgb name="radiance" value="1"/></emitter></shape>"#,
             ),
             // The refusal points at the shape in the file (line 7 of `scene_with`'s text).
-            "shape 1 (line 7, column 5) is an area light: lights with an area (and their soft shadows) come in chapter 07",
+            "line 7, column 5: an area light (shape 1); soft shadows from lights with an area come in chapter 07 (ch07-soft-shadows)",
         ),
         (
             scene_with(
@@ -143,20 +169,6 @@ fn features_of_later_chapters_are_refused_with_their_chapter() {
         (
             scene_with("", r#"<shape type="sphere"><bsdf type="phong"/></shape>"#),
             "chapter 06",
-        ),
-        (
-            scene_with(
-                "",
-                r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Au"/></bsdf></shape>"#,
-            ),
-            "perfect mirror",
-        ),
-        (
-            scene_with(
-                "",
-                r#"<shape type="obj"><string name="filename" value="bunny.obj"/></shape>"#,
-            ),
-            "cannot read the mesh bunny.obj",
         ),
     ];
     for (text, expected) in cases {
@@ -185,8 +197,7 @@ fn features_of_later_chapters_are_refused_with_their_chapter() {
     );
 }
 
-/// Motion (the workbook's `<animation>` extension) is chapter 05's; chapters 01, 03 and 04
-/// convert through this function, so this one refusal covers them all.
+/// Motion (the workbook's `<animation>` extension) is chapter 05's.
 #[test]
 fn moving_shapes_and_cameras_are_refused_with_chapter_05() {
     let keyframes = r#"<animation name="to_world">
@@ -201,8 +212,11 @@ fn moving_shapes_and_cameras_are_refused_with_chapter_05() {
 </scene>"#
     );
     for (text, expected) in [
-        (moving_shape, "shape 1 (line 7, column 5) moves"),
-        (moving_sensor, "the sensor moves"),
+        (
+            moving_shape,
+            "line 7, column 5: a shape that moves (shape 1)",
+        ),
+        (moving_sensor, "line 2, column 5: a camera that moves"),
     ] {
         let loaded =
             parse_scene(&text, Path::new("test.xml"), &[]).expect("the file itself is valid");
@@ -214,6 +228,30 @@ fn moving_shapes_and_cameras_are_refused_with_chapter_05() {
             "expected `{expected}` in: {error}"
         );
         assert!(error.contains("chapter 05 (ch05-motion-blur)"), "{error}");
+    }
+}
+
+/// What no chapter renders is refused by the loader itself, before any chapter's check.
+#[test]
+fn what_no_chapter_renders_is_refused_while_loading() {
+    for (body, expected) in [
+        (
+            r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Au"/></bsdf></shape>"#,
+            "perfect mirror",
+        ),
+        (
+            r#"<shape type="obj"><string name="filename" value="bunny.obj"/></shape>"#,
+            "cannot read the mesh bunny.obj",
+        ),
+    ] {
+        let error = parse_scene(&scene_with("", body), Path::new("test.xml"), &[])
+            .err()
+            .unwrap_or_else(|| panic!("accepted: {body}"))
+            .to_string();
+        assert!(
+            error.contains(expected),
+            "expected `{expected}` in: {error}"
+        );
     }
 }
 

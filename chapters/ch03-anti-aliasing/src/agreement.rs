@@ -9,11 +9,11 @@
 //! `common::metrics::MITSUBA_JIT_VARIANT`).
 
 use crate::render_with;
-use crate::scene_file::convert;
+use crate::scene_file::{filter_of, sampler_of};
 use common::image::Image;
 use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_JIT_VARIANT};
 use common::render::{Budget, RenderSettings};
-use common::scene::load_scene_file;
+use common::scene_file::load_scene_file;
 use std::path::{Path, PathBuf};
 
 /// The scenes compared, with what each one checks.
@@ -39,11 +39,14 @@ pub fn scenes_dir() -> PathBuf {
 /// and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
     let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let converted = convert(&loaded.scene).map_err(|e| format!("{}: {e}", path.display()))?;
-    let camera = &converted.scene.camera;
-    let settings = RenderSettings::new(camera.width, camera.height, AGREEMENT_SPP);
+    let scene = loaded.scene;
+    let in_file = |e: String| format!("{}: {e}", path.display());
+    crate::CAPABILITIES.check(&scene).map_err(in_file)?;
+    let filter = filter_of(scene.film.filter).map_err(in_file)?;
+    let (kind, _) = sampler_of(&scene.sampler.type_name);
+    let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
     let sampler = crate::cli::AntiAliasingArgs::default()
-        .pixel_sampler(converted.sampler, &Budget::Samples(AGREEMENT_SPP), 0)
+        .pixel_sampler(kind, &Budget::Samples(AGREEMENT_SPP), 0)
         .map_err(|e| e.to_string())?;
-    Ok(render_with(&converted.scene, &settings, &sampler, &converted.filter).image)
+    Ok(render_with(&scene, &settings, &sampler, &filter).image)
 }

@@ -7,7 +7,6 @@ use crate::filters::{FilterKind, ReconstructionFilter};
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
 use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use anyhow::Context;
-use ch01_whitted::scene::Scene;
 use common::cli::prepare_output_dir;
 use common::film::Filter;
 use common::image::Image;
@@ -18,6 +17,7 @@ use common::output::figures::{
     Axes, Series, SeriesStyle, comparison_grid, crop, line_plot, scatter_plot,
 };
 use common::render::RenderSettings;
+use common::scene::Scene;
 use glam::{UVec2, Vec2};
 use std::path::Path;
 
@@ -128,7 +128,7 @@ fn render_window(
     kind: PixelSamplerKind,
     spp: u64,
 ) -> Image {
-    let camera = scene.camera.with_size(full.0, full.1);
+    let camera = ch01_whitted::camera::PinholeCamera::of(&scene.camera, full.0, full.1);
     let offset = window.min.as_vec2();
     let settings = RenderSettings::new(window.size.x, window.size.y, spp);
     let sampler = PixelSampler::new(kind, spp, 0).expect("every figure asks for samples");

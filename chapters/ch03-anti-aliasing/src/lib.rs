@@ -29,10 +29,17 @@ pub mod scenes;
 pub use filters::{FilterKind, ReconstructionFilter};
 pub use pixel_samplers::{PixelSampler, PixelSamplerKind};
 
-use ch01_whitted::scene::Scene;
+use ch01_whitted::camera::PinholeCamera;
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
 use common::sampler::Sampler;
+use common::scene::{Capabilities, Chapter, Scene};
+
+/// What chapter 03 renders of a scene: chapter 01's, with the film's reconstruction filter.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::ANTI_ALIASING,
+    approximates: &[],
+};
 
 // ANCHOR: render_with
 /// Renders a chapter 01 `scene` with Whitted's tracer: pixel positions from `sampler`, each
@@ -43,7 +50,7 @@ pub fn render_with<S: Sampler>(
     sampler: &S,
     filter: &dyn Filter,
 ) -> RenderOutput {
-    let camera = scene.camera.with_size(settings.width, settings.height);
+    let camera = PinholeCamera::of(&scene.camera, settings.width, settings.height);
     render::render(settings, sampler, filter, |p_film, _sampler, counters| {
         ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film), 1, counters)
     })

@@ -2,11 +2,11 @@
 //! chapter's figures.
 
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
-use ch03_anti_aliasing::scene_file::convert;
+use ch03_anti_aliasing::scene_file::{filter_of, sampler_of};
 use ch03_anti_aliasing::scenes::{Builtin, DEFAULT_MAX_DEPTH};
-use ch03_anti_aliasing::{figures, render_with};
+use ch03_anti_aliasing::{CAPABILITIES, figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
+use common::cli::{FiguresArgs, RenderArgs, print_note, read_scene_file, report_error};
 use std::process::ExitCode;
 
 /// Chapter 03 of the workbook: anti-aliasing.
@@ -56,13 +56,23 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (mut scene, file_filter, file_sampler, default_spp, scene_name) =
         match command.args.scene_file()? {
             Some(path) => {
-                let converted =
-                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
+                let scene = read_scene_file(path, &command.args.define, &CAPABILITIES)?;
+                let filter = filter_of(scene.film.filter).map_err(|message| {
+                    common::cli::CliError::Unrenderable {
+                        file: path.to_path_buf(),
+                        message,
+                    }
+                })?;
+                let (sampler, note) = sampler_of(&scene.sampler.type_name);
+                if let Some(note) = note {
+                    print_note(&note);
+                }
+                let spp = u64::from(scene.sampler.sample_count.max(1));
                 (
-                    converted.scene,
-                    Some(converted.filter),
-                    Some(converted.sampler),
-                    converted.spp,
+                    scene,
+                    Some(filter),
+                    Some(sampler),
+                    spp,
                     path.display().to_string(),
                 )
             }
@@ -81,7 +91,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
     let settings = command
         .args
-        .settings((scene.camera.width, scene.camera.height), default_spp)?;
+        .settings((scene.film.width, scene.film.height), default_spp)?;
     let sampler =
         command
             .anti_aliasing

@@ -1,47 +1,13 @@
-//! Scenes from Mitsuba 3 XML files: chapter 01's conversion, plus the film's filter.
+//! What a scene file says about anti-aliasing: its `<rfilter>` and its `<sampler>`.
 //!
 //! Chapter 01 renders everything Whitted's method can and averages each pixel's own samples.
-//! This chapter renders the same scenes but honours the file's `<rfilter>`: the only thing a
-//! scene file says about anti-aliasing besides its sample count.
+//! This chapter renders the same scenes but honours the film's filter, and picks the pixel
+//! sampler closest to the file's.
 
 use crate::filters::{FilterKind, ReconstructionFilter};
 use crate::pixel_samplers::PixelSamplerKind;
-use ch01_whitted::scene::Scene;
-use common::scene::{self, SceneDescription};
 
-/// A scene ready for Whitted's tracer with the filter its file asks for.
-pub struct ConvertedScene {
-    /// The scene.
-    pub scene: Scene,
-    /// The film's reconstruction filter.
-    pub filter: ReconstructionFilter,
-    /// Samples per pixel the file asks for.
-    pub spp: u64,
-    /// The pixel sampler closest to the file's `<sampler>` type.
-    pub sampler: PixelSamplerKind,
-    /// Light the method leaves out, and settings it ignores.
-    pub notes: Vec<String>,
-}
-
-/// Converts a description with chapter 01's rules, except that the film's filter is ours to
-/// use rather than a setting to note and ignore.
-pub fn convert(description: &SceneDescription) -> Result<ConvertedScene, String> {
-    let filter = filter_of(description.sensor.film.filter)?;
-    let mut boxed = description.clone();
-    // Chapter 01 would note that it ignores any filter but the box; this chapter does not.
-    boxed.sensor.film.filter = scene::ReconstructionFilter::Box;
-    let converted = ch01_whitted::scene_file::convert(&boxed)?;
-    let mut notes = converted.notes;
-    let (sampler, note) = sampler_of(&description.sensor.sampler.type_name);
-    notes.extend(note);
-    Ok(ConvertedScene {
-        scene: converted.scene,
-        filter,
-        spp: converted.spp,
-        sampler,
-        notes,
-    })
-}
+use common::scene::FilmFilter;
 
 /// The chapter's pixel sampler for a Mitsuba `<sampler>` type, and a note when it is only the
 /// closest one: Mitsuba's `independent` is our random sampler and its `stratified` our
@@ -65,14 +31,14 @@ pub fn sampler_of(type_name: &str) -> (PixelSamplerKind, Option<String>) {
 }
 
 /// The chapter's filter for a file's `<rfilter>`, with Mitsuba's parameters.
-pub fn filter_of(filter: scene::ReconstructionFilter) -> Result<ReconstructionFilter, String> {
+pub fn filter_of(filter: FilmFilter) -> Result<ReconstructionFilter, String> {
     let in_file = |e: String| format!("the film's rfilter: {e}");
     match filter {
-        scene::ReconstructionFilter::Box => ReconstructionFilter::new(FilterKind::Box, None),
-        scene::ReconstructionFilter::Tent { radius } => {
+        FilmFilter::Box => ReconstructionFilter::new(FilterKind::Box, None),
+        FilmFilter::Tent { radius } => {
             ReconstructionFilter::new(FilterKind::Tent, Some(radius)).map_err(in_file)
         }
-        scene::ReconstructionFilter::Gaussian { stddev } => {
+        FilmFilter::Gaussian { stddev } => {
             ReconstructionFilter::new(FilterKind::Gaussian, Some(4.0 * stddev)).map_err(in_file)
         }
     }
@@ -81,11 +47,12 @@ pub fn filter_of(filter: scene::ReconstructionFilter) -> Result<ReconstructionFi
 #[cfg(test)]
 mod tests {
     use super::*;
-    use common::scene::parse_scene;
+    use common::scene::Scene;
+    use common::scene_file::parse_scene;
     use std::path::Path;
 
     /// A one-sphere scene whose film has the filter `rfilter` (XML) or none (Mitsuba's default).
-    fn scene_with(rfilter: &str) -> SceneDescription {
+    fn scene_with(rfilter: &str) -> Scene {
         let text = format!(
             r#"<scene version="3.0.0">
                 <integrator type="direct"/>
@@ -123,18 +90,14 @@ mod tests {
             ("", FilterKind::Gaussian, 2.0),
         ];
         for (rfilter, kind, radius) in cases {
-            let converted = convert(&scene_with(rfilter)).unwrap();
-            assert_eq!(converted.filter.kind(), kind, "{rfilter}");
-            assert_eq!(converted.filter.half_width(), radius, "{rfilter}");
-            assert_eq!(converted.spp, 9);
-            assert_eq!(
-                (converted.scene.camera.width, converted.scene.camera.height),
-                (8, 6)
-            );
+            let scene = scene_with(rfilter);
+            let filter = filter_of(scene.film.filter).unwrap();
+            assert_eq!(filter.kind(), kind, "{rfilter}");
+            assert_eq!(filter.half_width(), radius, "{rfilter}");
+            let notes = crate::CAPABILITIES.check(&scene).unwrap();
             assert!(
-                converted.notes.iter().all(|n| !n.contains("filter")),
-                "chapter 03 uses the filter, it does not note it away: {:?}",
-                converted.notes
+                notes.iter().all(|n| !n.contains("filter")),
+                "chapter 03 uses the filter, it does not note it away: {notes:?}"
             );
         }
     }
@@ -143,7 +106,7 @@ mod tests {
     fn an_unusable_filter_radius_is_refused_naming_the_rfilter() {
         let scene =
             scene_with(r#"<rfilter type="tent"><float name="radius" value="40"/></rfilter>"#);
-        let err = convert(&scene).err().expect("radius 40 is refused");
+        let err = filter_of(scene.film.filter).expect_err("radius 40 is refused");
         assert!(err.contains("rfilter") && err.contains("40"), "{err}");
     }
 }

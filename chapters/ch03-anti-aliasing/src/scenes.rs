@@ -6,11 +6,10 @@
 //! pixel. One sample at the pixel centre turns the first into staircases and broken bars, and
 //! the second into moiré: false, large patterns near the horizon.
 
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::{Checkerboard, Material};
-use ch01_whitted::scene::{Scene, SceneBuilder};
 use common::geometry::{Quad, Shape, Sphere};
+use common::scene::{
+    Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
+};
 use glam::{Vec2, Vec3};
 
 /// Enough recursion for these scenes: they have no mirrors or glass.
@@ -61,7 +60,7 @@ fn edges(max_depth: u32) -> Scene {
     // The image is 3.6 units wide at z = 0; at 320 pixels a pixel is about 0.011 units, so the
     // bars are about 4, 1 and 1/3 pixels wide there, all tilted a few degrees from the
     // horizontal: the angle that gives the longest, most visible stairs.
-    let mut builder = SceneBuilder::new().background(Vec3::new(0.95, 0.93, 0.88));
+    let mut builder = SceneBuilder::new().environment(Vec3::new(0.95, 0.93, 0.88));
     for (i, (width, degrees)) in [(0.045, 4.0), (0.011, 6.0), (0.004, 8.0)]
         .into_iter()
         .enumerate()
@@ -82,7 +81,11 @@ fn edges(max_depth: u32) -> Scene {
         });
     let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y)
         .expect("the camera looks along a valid direction");
-    builder.build(PinholeCamera::new(frame, 40.0, 320, 240), max_depth)
+    builder.build(
+        Camera::pinhole(frame, 40.0),
+        FilmSettings::new(320, 240),
+        max_depth,
+    )
 }
 
 /// Half the side of the checkerboard plane: far enough that it meets the sky a few hundredths of
@@ -103,7 +106,7 @@ fn checkerboard(max_depth: u32) -> Scene {
         Vec3::new(side, 0.0, 0.0),
     );
     let scene = SceneBuilder::new()
-        .background(Vec3::new(0.55, 0.7, 0.95))
+        .environment(Vec3::new(0.55, 0.7, 0.95))
         .shape(
             Shape::Quad(floor),
             Material::CheckeredDiffuse {
@@ -123,5 +126,9 @@ fn checkerboard(max_depth: u32) -> Scene {
         Vec3::Y,
     )
     .expect("the camera looks along a valid direction");
-    scene.build(PinholeCamera::new(frame, 60.0, 320, 240), max_depth)
+    scene.build(
+        Camera::pinhole(frame, 60.0),
+        FilmSettings::new(320, 240),
+        max_depth,
+    )
 }

@@ -5,11 +5,12 @@
 //! (a disc sampled with the concentric map, focused on a plane) must give the same blur.
 
 use crate::render_with;
-use crate::scene_file::convert;
+use crate::scene_file::lens_of;
+use ch03_anti_aliasing::scene_file::{filter_of, sampler_of};
 use common::image::Image;
 use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
 use common::render::{Budget, RenderSettings};
-use common::scene::load_scene_file;
+use common::scene_file::load_scene_file;
 use std::path::{Path, PathBuf};
 
 /// The scenes compared, with what each one checks.
@@ -28,18 +29,16 @@ pub fn scenes_dir() -> PathBuf {
 /// lens, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
     let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let converted = convert(&loaded.scene).map_err(|e| format!("{}: {e}", path.display()))?;
-    let camera = &converted.scene.camera;
-    let settings = RenderSettings::new(camera.width, camera.height, AGREEMENT_SPP);
+    let scene = loaded.scene;
+    let in_file = |e: String| format!("{}: {e}", path.display());
+    crate::CAPABILITIES.check(&scene).map_err(in_file)?;
+    let lens = lens_of(&scene.camera).map_err(in_file)?;
+    let filter = filter_of(scene.film.filter).map_err(in_file)?;
+    let (sampler_kind, _) = sampler_of(&scene.sampler.type_name);
+    let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
     let sampler = ch03_anti_aliasing::cli::AntiAliasingArgs::default()
-        .pixel_sampler(converted.sampler, &Budget::Samples(AGREEMENT_SPP), 0)
+        .pixel_sampler(sampler_kind, &Budget::Samples(AGREEMENT_SPP), 0)
         .map_err(|e| e.to_string())?;
-    let rendered = render_with(
-        &converted.scene,
-        &converted.lens,
-        &settings,
-        &sampler,
-        &converted.filter,
-    );
+    let rendered = render_with(&scene, &lens, &settings, &sampler, &filter);
     Ok(rendered.image)
 }

@@ -121,7 +121,7 @@ mod tests {
     use super::*;
     use crate::lens::{Lens, image_distance};
     use approx::assert_relative_eq;
-    use ch01_whitted::camera::CameraFrame;
+    use common::scene::CameraFrame;
     use glam::Vec3;
 
     #[test]

@@ -11,8 +11,7 @@ use crate::render_with;
 use crate::scenes::{BOKEH_SPHERE_DEPTHS, BOKEH_WALL_DEPTH, Builtin, DEFAULT_DEPTH};
 use crate::thin_lens::ThinLensCamera;
 use anyhow::Context;
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::scene::Scene;
+use ch01_whitted::camera::PinholeCamera;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use common::cli::prepare_output_dir;
 use common::geometry::Sphere;
@@ -25,6 +24,8 @@ use common::output::figures::{
 };
 use common::render::RenderSettings;
 use common::sampler::{IndependentSampler, Sampler};
+use common::scene::CameraFrame;
+use common::scene::Scene;
 use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
 
@@ -206,7 +207,10 @@ fn render_window(
     side: u32,
     spp: u64,
 ) -> Image {
-    let camera = ThinLensCamera::new(scene.camera, lens).with_size(quality.width, quality.height);
+    let camera = ThinLensCamera::new(
+        PinholeCamera::of(&scene.camera, quality.width, quality.height),
+        lens,
+    );
     let side = side.min(quality.width).min(quality.height);
     let start = |c: f32, size: u32| {
         (c - side as f32 / 2.0)
@@ -233,7 +237,7 @@ fn render_window(
 
 /// A hole of the far wall, as the camera of `scene` sees it at `width x height`.
 fn highlight_on_film(scene: &Scene, quality: &Quality) -> Vec2 {
-    let camera = scene.camera.with_size(quality.width, quality.height);
+    let camera = PinholeCamera::of(&scene.camera, quality.width, quality.height);
     // The hole at x = -1.2 on the upper row (see `scenes`), near the middle of the picture.
     let wall_z = 7.0 - BOKEH_WALL_DEPTH;
     project(&camera, Vec3::new(-1.12, 2.68, wall_z)).expect("the wall is in front")
@@ -473,7 +477,7 @@ mod tests {
     #[test]
     fn projection_inverts_the_pinhole_ray() {
         let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
-        let camera = scene.camera;
+        let camera = PinholeCamera::of(&scene.camera, scene.film.width, scene.film.height);
         let p_film = Vec2::new(100.5, 37.25);
         let ray = camera.generate_ray(p_film);
         let back = project(&camera, ray.at(5.0)).unwrap();

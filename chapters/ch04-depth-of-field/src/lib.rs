@@ -10,7 +10,8 @@
 //!   drawn; the naive disc warp, kept to show what it does wrong.
 //! - [`thin_lens`]: the thin-lens camera, Mitsuba's `thinlens` sensor.
 //! - [`circle_of_confusion`]: how large a point at another depth appears.
-//! - [`scenes`], [`scene_file`]: what to look at.
+//! - [`scenes`]: what to look at; [`scene_file`]: the lens a scene file asks for;
+//!   [`CAPABILITIES`]: what of a scene the chapter renders.
 //! - [`figures`]: the chapter's figures for the book.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -29,11 +30,18 @@ pub use aperture::{Aperture, LensWarp};
 pub use lens::Lens;
 pub use thin_lens::ThinLensCamera;
 
-use ch01_whitted::scene::Scene;
+use ch01_whitted::camera::PinholeCamera;
 use ch01_whitted::tracer;
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
 use common::sampler::Sampler;
+use common::scene::{Capabilities, Chapter, Scene};
+
+/// What chapter 04 renders of a scene: chapter 03's, through a lens with an aperture.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::DEPTH_OF_FIELD,
+    approximates: &[],
+};
 
 // ANCHOR: render_with
 /// Renders `scene` through `lens`: pixel positions from `sampler` (its first dimension), then
@@ -46,8 +54,8 @@ pub fn render_with<S: Sampler>(
     sampler: &S,
     filter: &dyn Filter,
 ) -> RenderOutput {
-    let camera =
-        ThinLensCamera::new(scene.camera, *lens).with_size(settings.width, settings.height);
+    let pinhole = PinholeCamera::of(&scene.camera, settings.width, settings.height);
+    let camera = ThinLensCamera::new(pinhole, *lens);
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
         let ray = camera.generate_ray(p_film, sampler);
         tracer::trace(scene, &ray, 1, counters)

@@ -1,13 +1,14 @@
 //! `ch04-depth-of-field`: render through a thin lens, or write the chapter's figures.
 
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
+use ch03_anti_aliasing::scene_file::{filter_of, sampler_of};
 use ch04_depth_of_field::Aperture;
 use ch04_depth_of_field::cli::LensArgs;
-use ch04_depth_of_field::scene_file::convert;
+use ch04_depth_of_field::scene_file::lens_of;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
-use ch04_depth_of_field::{figures, render_with};
+use ch04_depth_of_field::{CAPABILITIES, figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
+use common::cli::{FiguresArgs, RenderArgs, print_note, read_scene_file, report_error};
 use std::process::ExitCode;
 
 /// Chapter 04 of the workbook: depth of field.
@@ -59,14 +60,24 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (mut scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match command.args.scene_file()? {
             Some(path) => {
-                let converted =
-                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
+                let scene = read_scene_file(path, &command.args.define, &CAPABILITIES)?;
+                let unrenderable = |message| common::cli::CliError::Unrenderable {
+                    file: path.to_path_buf(),
+                    message,
+                };
+                let lens = lens_of(&scene.camera).map_err(unrenderable)?;
+                let filter = filter_of(scene.film.filter).map_err(unrenderable)?;
+                let (sampler, note) = sampler_of(&scene.sampler.type_name);
+                if let Some(note) = note {
+                    print_note(&note);
+                }
+                let spp = u64::from(scene.sampler.sample_count.max(1));
                 (
-                    converted.scene,
-                    converted.lens,
-                    Some(converted.filter),
-                    Some(converted.sampler),
-                    converted.spp,
+                    scene,
+                    lens,
+                    Some(filter),
+                    Some(sampler),
+                    spp,
                     path.display().to_string(),
                 )
             }
@@ -87,7 +98,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
     let settings = command
         .args
-        .settings((scene.camera.width, scene.camera.height), default_spp)?;
+        .settings((scene.film.width, scene.film.height), default_spp)?;
     let sampler =
         command
             .anti_aliasing

@@ -7,12 +7,12 @@
 //! small holes in a dark far wall: city lights through a curtain, costing no light sampling.
 
 use crate::lens::Lens;
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::{Scene, SceneBuilder};
 use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH};
 use common::geometry::{Quad, Shape, Sphere};
+use common::scene::CameraFrame;
+use common::scene::Material;
+use common::scene::PointLight;
+use common::scene::{Camera, FilmSettings, Scene, SceneBuilder};
 use glam::Vec3;
 
 /// The scenes `render --builtin NAME` knows.
@@ -80,7 +80,7 @@ const HOLE_SIZE: f32 = 0.16;
 /// depth about `7 - z`.
 fn bokeh(max_depth: u32) -> Scene {
     let camera_z = 7.0;
-    let mut builder = SceneBuilder::new().background(HOLE_RADIANCE);
+    let mut builder = SceneBuilder::new().environment(HOLE_RADIANCE);
     // A checkerboard floor from the camera to the wall: its lines show the blur growing with
     // distance from the focal plane.
     let wall_z = camera_z - BOKEH_WALL_DEPTH;
@@ -125,7 +125,11 @@ fn bokeh(max_depth: u32) -> Scene {
         Vec3::Y,
     )
     .expect("the camera looks along a valid direction");
-    scene.build(PinholeCamera::new(frame, 40.0, 360, 240), max_depth)
+    scene.build(
+        Camera::pinhole(frame, 40.0),
+        FilmSettings::new(360, 240),
+        max_depth,
+    )
 }
 
 /// A dark wall facing the camera at `z = wall_z`, tall and wide enough to fill the view behind

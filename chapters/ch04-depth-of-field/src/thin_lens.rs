@@ -91,8 +91,8 @@ impl ThinLensCamera {
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
-    use ch01_whitted::camera::CameraFrame;
     use common::sampler::IndependentSampler;
+    use common::scene::CameraFrame;
     use glam::UVec2;
 
     fn pinhole() -> PinholeCamera {

@@ -96,7 +96,8 @@ fn a_scene_file_with_a_bad_lens_is_refused() {
             "--out",
             png.to_str().unwrap(),
         ],
-        "focus distance",
+        // The loader refuses it, naming the sensor's parameter.
+        "focus_distance must be a finite positive distance",
     );
     assert!(!png.exists());
 }

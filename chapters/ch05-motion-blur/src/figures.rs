@@ -7,6 +7,7 @@ use crate::time_sampling::{StratifiedTime, TimeSampler};
 use crate::world::MotionScene;
 use crate::{Shutter, render_with};
 use anyhow::Context;
+use ch01_whitted::camera::PinholeCamera;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use common::cli::prepare_output_dir;
@@ -281,7 +282,7 @@ struct CostRow {
 /// has to intersect because their box could not rule them out.
 fn bvh_cost(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let base = swarm(quality.swarm_rows, 4.0, DEFAULT_SHUTTER);
-    let (width, height) = (base.scene.camera.width, base.scene.camera.height);
+    let (width, height) = (base.scene.film.width, base.scene.film.height);
     let mut world = base;
     let mut rows = Vec::new();
     for stretches in [1usize, 2, 4, 8, 16, 32] {
@@ -299,7 +300,7 @@ fn bvh_cost(out: &Path, quality: &Quality) -> anyhow::Result<()> {
             &box_filter(),
         );
         // The camera rays again, counted: how many moving spheres each must intersect.
-        let camera = world.scene.camera;
+        let camera = PinholeCamera::of(&world.scene.camera, width, height);
         let mut tests = 0u64;
         let mut rays = 0u64;
         let mut sampler = IndependentSampler::new(1);

@@ -14,7 +14,8 @@
 //!   shutter.
 //! - [`world`]: the scene in motion, traced by chapter 01's tracer through its `World` trait.
 //! - [`time_sampling`]: independent and stratified time samples.
-//! - [`scenes`], [`scene_file`]: what to look at; [`figures`]: the chapter's figures.
+//! - [`scenes`]: what to look at; [`scene_file`]: a scene file's motion; [`figures`]: the
+//!   chapter's figures; [`CAPABILITIES`]: what of a scene the chapter renders.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -39,7 +40,14 @@ use ch01_whitted::tracer;
 use ch04_depth_of_field::{Lens, ThinLensCamera};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
+use common::scene::{Capabilities, Chapter};
 use common::{Ray, Vec2};
+
+/// What chapter 05 renders of a scene: chapter 04's, with shapes and a camera that move.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::MOTION_BLUR,
+    approximates: &[],
+};
 
 // ANCHOR: render_with
 /// Camera rays over a shutter interval: the time a sample draws, the camera where it is at

@@ -4,12 +4,12 @@
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::cli::LensArgs;
-use ch05_motion_blur::scene_file::convert;
+use ch05_motion_blur::scene_file::{motion_for_render, read_with_camera_side};
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
-use ch05_motion_blur::{Shutter, StratifiedTime, TimeSampling, figures, render_with};
+use ch05_motion_blur::{CAPABILITIES, Shutter, StratifiedTime, TimeSampling, figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
+use common::cli::{CliError, FiguresArgs, RenderArgs, report_error};
 use common::render::Budget;
 use std::process::ExitCode;
 
@@ -84,14 +84,18 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (world, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match command.args.scene_file()? {
             Some(path) => {
-                let converted =
-                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
+                let (scene, side) =
+                    read_with_camera_side(path, &command.args.define, &CAPABILITIES)?;
+                let world = motion_for_render(scene).map_err(|message| CliError::Unrenderable {
+                    file: path.to_path_buf(),
+                    message,
+                })?;
                 (
-                    converted.world,
-                    converted.lens,
-                    Some(converted.filter),
-                    Some(converted.sampler),
-                    converted.spp,
+                    world,
+                    side.lens,
+                    Some(side.filter),
+                    Some(side.sampler),
+                    side.spp,
                     path.display().to_string(),
                 )
             }
@@ -116,10 +120,10 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     }
     let filter = command.anti_aliasing.filter(file_filter)?;
     let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
-    let camera = world.scene.camera;
+    let film = world.scene.film;
     let settings = command
         .args
-        .settings((camera.width, camera.height), default_spp)?;
+        .settings((film.width, film.height), default_spp)?;
     let pixel_sampler =
         command
             .anti_aliasing

@@ -9,15 +9,13 @@
 //!   slides sideways and turns a little.
 
 use crate::animated_transform::AnimatedTransform;
-use crate::moving::MovingShape;
 use crate::shutter::Shutter;
-use crate::world::{MotionScene, matrix_of};
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::{Checkerboard, Material};
-use ch01_whitted::scene::SceneBuilder;
+use crate::world::MotionScene;
 use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH};
 use common::geometry::{Quad, Shape, Sphere};
+use common::scene::{
+    Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
+};
 use glam::{Mat4, Vec2, Vec3};
 
 /// The scenes `render --builtin NAME` knows.
@@ -48,13 +46,20 @@ impl Builtin {
     /// Every built-in scene.
     pub const ALL: [Builtin; 3] = [Builtin::Street, Builtin::Spinner, Builtin::Pan];
 
-    /// Builds the scene, seen through `shutter`.
+    /// The scene, seen through `shutter`.
+    pub fn scene(self, max_depth: u32, shutter: Shutter) -> Scene {
+        let mut scene = match self {
+            Builtin::Street => street(max_depth),
+            Builtin::Spinner => spinner(max_depth),
+            Builtin::Pan => pan(max_depth),
+        };
+        with_shutter(&mut scene, shutter);
+        scene
+    }
+
+    /// The scene, seen through `shutter`, made ready for tracing.
     pub fn build(self, max_depth: u32, shutter: Shutter) -> MotionScene {
-        match self {
-            Builtin::Street => street(max_depth, shutter),
-            Builtin::Spinner => spinner(max_depth, shutter),
-            Builtin::Pan => pan(max_depth, shutter),
-        }
+        MotionScene::still(self.scene(max_depth, shutter))
     }
 
     /// The name used on the command line.
@@ -93,26 +98,42 @@ pub fn cube_faces(h: f32) -> [Shape; 6] {
     ]
 }
 
-/// A sphere of `radius` sliding from `from` to `to` over the shutter's default interval.
-fn sliding_sphere(radius: f32, from: Vec3, to: Vec3) -> MovingShape {
-    MovingShape::new(
+/// Sets the shutter through which `scene` is seen.
+fn with_shutter(scene: &mut Scene, shutter: Shutter) {
+    scene.camera.shutter_open = shutter.open;
+    scene.camera.shutter_close = shutter.close;
+}
+
+/// `builder` with a sphere of `radius` sliding from `from` to `to` over the shutter's default
+/// interval.
+fn sliding_sphere(
+    builder: SceneBuilder,
+    radius: f32,
+    from: Vec3,
+    to: Vec3,
+    material: Material,
+) -> SceneBuilder {
+    let keyframes = vec![
+        (DEFAULT_SHUTTER.open, Mat4::from_translation(from)),
+        (DEFAULT_SHUTTER.close, Mat4::from_translation(to)),
+    ];
+    builder.moving(
         Shape::Sphere(Sphere::new(Vec3::ZERO, radius)),
-        AnimatedTransform::new(&[
-            (DEFAULT_SHUTTER.open, Mat4::from_translation(from)),
-            (DEFAULT_SHUTTER.close, Mat4::from_translation(to)),
-        ])
-        .expect("two translations are valid keyframes"),
+        keyframes,
+        material,
     )
 }
 
-/// The faces of a cube of half-size `h` spinning by `turns` about `axis`, placed by `place`.
+/// `builder` with the faces of a cube of half-size `h` spinning by `turns` about `axis`,
+/// placed by `place`.
 fn spinning_cube(
+    mut builder: SceneBuilder,
     h: f32,
     axis: Vec3,
     turns: f32,
     place: Mat4,
     material: Material,
-) -> Vec<(MovingShape, Material)> {
+) -> SceneBuilder {
     let motion = AnimatedTransform::spin(
         axis.normalize(),
         turns,
@@ -120,16 +141,21 @@ fn spinning_cube(
         DEFAULT_SHUTTER.close,
         place,
     );
-    cube_faces(h)
-        .into_iter()
-        .map(|face| (MovingShape::new(face, motion.clone()), material))
-        .collect()
+    let keyframes: Vec<(f32, Mat4)> = motion
+        .keyframes()
+        .iter()
+        .map(|keyframe| (keyframe.time, keyframe.matrix))
+        .collect();
+    for face in cube_faces(h) {
+        builder = builder.moving(face, keyframes.clone(), material);
+    }
+    builder
 }
 
 /// Where the fast sphere of `street` starts and ends: far outside the frame on both sides.
 pub const FAST_SPHERE_PATH: (Vec3, Vec3) = (Vec3::new(-4.0, 0.6, 1.6), Vec3::new(4.0, 0.6, 1.6));
 
-fn street(max_depth: u32, shutter: Shutter) -> MotionScene {
+fn street(max_depth: u32) -> Scene {
     let floor = Shape::Quad(Quad::new(
         Vec3::new(-8.0, 0.0, -8.0),
         14.0 * Vec3::Z,
@@ -141,7 +167,7 @@ fn street(max_depth: u32, shutter: Shutter) -> MotionScene {
         3.5 * Vec3::Y,
     ));
     let scene = SceneBuilder::new()
-        .background(Vec3::new(0.45, 0.6, 0.85))
+        .environment(Vec3::new(0.45, 0.6, 0.85))
         .shape(
             floor,
             checkered(Vec3::new(0.8, 0.8, 0.75), Vec3::new(0.15, 0.15, 0.18), 8.0),
@@ -162,30 +188,38 @@ fn street(max_depth: u32, shutter: Shutter) -> MotionScene {
         });
     let frame = CameraFrame::look_at(Vec3::new(0.0, 2.0, 7.0), Vec3::new(0.0, 0.7, 0.0), Vec3::Y)
         .expect("the camera looks along a valid direction");
-    let scene = scene.build(PinholeCamera::new(frame, 50.0, 320, 200), max_depth);
-    let mut moving = vec![
-        (
-            sliding_sphere(0.6, FAST_SPHERE_PATH.0, FAST_SPHERE_PATH.1),
-            Material::diffuse(Vec3::new(0.95, 0.3, 0.1)),
-        ),
-        (
-            sliding_sphere(0.6, Vec3::new(-2.2, 0.6, -1.0), Vec3::new(-1.7, 0.6, -1.0)),
-            Material::diffuse(Vec3::new(0.2, 0.45, 0.85)),
-        ),
-    ];
-    moving.extend(spinning_cube(
+    let scene = sliding_sphere(
+        scene,
+        0.6,
+        FAST_SPHERE_PATH.0,
+        FAST_SPHERE_PATH.1,
+        Material::diffuse(Vec3::new(0.95, 0.3, 0.1)),
+    );
+    let scene = sliding_sphere(
+        scene,
+        0.6,
+        Vec3::new(-2.2, 0.6, -1.0),
+        Vec3::new(-1.7, 0.6, -1.0),
+        Material::diffuse(Vec3::new(0.2, 0.45, 0.85)),
+    );
+    let scene = spinning_cube(
+        scene,
         0.55,
         Vec3::Y,
         SPIN_TURNS,
         Mat4::from_translation(Vec3::new(1.9, 0.55, -0.8)),
         checkered(Vec3::new(0.95, 0.8, 0.2), Vec3::new(0.1, 0.35, 0.15), 1.0),
-    ));
-    MotionScene::new(scene, moving, None, shutter)
+    );
+    scene.build(
+        Camera::pinhole(frame, 50.0),
+        FilmSettings::new(320, 200),
+        max_depth,
+    )
 }
 
-fn spinner(max_depth: u32, shutter: Shutter) -> MotionScene {
+fn spinner(max_depth: u32) -> Scene {
     let scene = SceneBuilder::new()
-        .background(Vec3::new(0.05, 0.05, 0.07))
+        .environment(Vec3::new(0.05, 0.05, 0.07))
         .light(PointLight {
             position: Vec3::new(-2.0, 3.0, 5.0),
             intensity: Vec3::splat(70.0),
@@ -196,28 +230,31 @@ fn spinner(max_depth: u32, shutter: Shutter) -> MotionScene {
         });
     let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y)
         .expect("the camera looks along a valid direction");
-    let scene = scene.build(PinholeCamera::new(frame, 40.0, 200, 200), max_depth);
-    let moving = spinning_cube(
+    spinning_cube(
+        scene,
         0.7,
         Vec3::new(0.3, 1.0, 0.2),
         SPIN_TURNS,
         Mat4::IDENTITY,
         checkered(Vec3::new(0.9, 0.85, 0.8), Vec3::new(0.7, 0.1, 0.1), 1.0),
-    );
-    MotionScene::new(scene, moving, None, shutter)
+    )
+    .build(
+        Camera::pinhole(frame, 40.0),
+        FilmSettings::new(200, 200),
+        max_depth,
+    )
 }
 
-fn pan(max_depth: u32, shutter: Shutter) -> MotionScene {
-    let scene = WhittedBuiltin::Spheres.build(max_depth);
+fn pan(max_depth: u32) -> Scene {
+    let mut scene = WhittedBuiltin::Spheres.build(max_depth);
     let start = scene.camera.frame;
     let end = CameraFrame::look_at(Vec3::new(0.8, 1.6, 5.0), Vec3::new(0.4, 0.7, 0.0), Vec3::Y)
         .expect("the camera looks along a valid direction");
-    let motion = AnimatedTransform::new(&[
-        (DEFAULT_SHUTTER.open, matrix_of(&start)),
-        (DEFAULT_SHUTTER.close, matrix_of(&end)),
-    ])
-    .expect("two camera frames are valid keyframes");
-    MotionScene::new(scene, Vec::new(), Some(motion), shutter)
+    scene.camera.keyframes = vec![
+        (DEFAULT_SHUTTER.open, start.to_matrix()),
+        (DEFAULT_SHUTTER.close, end.to_matrix()),
+    ];
+    scene
 }
 
 /// The scene of the motion-bounds measurements: `rows x rows` small spheres on a floor, each
@@ -231,7 +268,7 @@ pub fn swarm(rows: u32, travel: f32, shutter: Shutter) -> MotionScene {
         24.0 * Vec3::X,
     ));
     let scene = SceneBuilder::new()
-        .background(Vec3::new(0.45, 0.6, 0.85))
+        .environment(Vec3::new(0.45, 0.6, 0.85))
         .shape(floor, Material::diffuse(Vec3::splat(0.6)))
         .light(PointLight {
             position: Vec3::new(-3.0, 8.0, 6.0),
@@ -239,10 +276,9 @@ pub fn swarm(rows: u32, travel: f32, shutter: Shutter) -> MotionScene {
         });
     let frame = CameraFrame::look_at(Vec3::new(0.0, 5.0, 9.0), Vec3::new(0.0, 0.0, -3.0), Vec3::Y)
         .expect("the camera looks along a valid direction");
-    let scene = scene.build(PinholeCamera::new(frame, 60.0, 240, 160), DEFAULT_MAX_DEPTH);
+    let mut scene = scene;
     let spacing = 16.0 / rows as f32;
     let radius = 0.35 * spacing;
-    let mut moving = Vec::new();
     for row in 0..rows {
         let direction = if row % 2 == 0 { 1.0 } else { -1.0 };
         for column in 0..rows {
@@ -254,11 +290,14 @@ pub fn swarm(rows: u32, travel: f32, shutter: Shutter) -> MotionScene {
             let end = start + Vec3::new(direction * travel, 0.0, 0.0);
             let hue = (row * rows + column) as f32 / (rows * rows) as f32;
             let albedo = Vec3::new(0.2 + 0.7 * hue, 0.5, 0.9 - 0.7 * hue);
-            moving.push((
-                sliding_sphere(radius, start, end),
-                Material::diffuse(albedo),
-            ));
+            scene = sliding_sphere(scene, radius, start, end, Material::diffuse(albedo));
         }
     }
-    MotionScene::new(scene, moving, None, shutter)
+    let mut scene = scene.build(
+        Camera::pinhole(frame, 60.0),
+        FilmSettings::new(240, 160),
+        DEFAULT_MAX_DEPTH,
+    );
+    with_shutter(&mut scene, shutter);
+    MotionScene::still(scene)
 }

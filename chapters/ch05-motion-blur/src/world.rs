@@ -1,66 +1,88 @@
-//! A scene in motion: chapter 01's static scene, moving shapes, a camera that may move, and
-//! the shutter interval the motion is seen through.
+//! A scene in motion: the scene model's moving shapes and moving camera, made ready to be
+//! traced at any time of the shutter interval.
 //!
-//! It implements chapter 01's [`World`], so chapter 01's tracer traces it unchanged: the
-//! nearest hit is the nearer of the static BVH's and the moving objects', and a shadow ray is
-//! blocked by either, each at the ray's time. A scene with no moving shapes asks the static
-//! BVH only, at chapter 01's cost.
+//! The scene says how things move (keyframes); this chapter says how to find them at a
+//! time: transforms interpolated between keyframes, moving shapes behind a BVH per stretch of
+//! the shutter. [`MotionScene`] implements chapter 01's [`World`], so chapter 01's tracer
+//! traces it unchanged: the nearest hit is the nearer of the still BVH's and the moving
+//! objects', and a shadow ray is blocked by either, each at the ray's time. A scene with no
+//! moving shapes asks the still BVH only, at chapter 01's cost.
 
 use crate::animated_transform::AnimatedTransform;
 use crate::moving::{MovingObjects, MovingShape};
 use crate::shutter::Shutter;
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::{Scene, World};
+use ch01_whitted::camera::PinholeCamera;
+use ch01_whitted::scene::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
-use glam::Mat4;
+use common::scene::{CameraFrame, Scene};
 
 /// How many stretches of the shutter get their own BVH over the moving shapes by default.
 pub const DEFAULT_STRETCHES: usize = 8;
 
-/// Everything a motion-blurred render needs to know about the world.
+/// A scene with its motion made ready for tracing.
 pub struct MotionScene {
-    /// The static shapes, the lights, the background, the camera at rest (or at the shutter's
-    /// opening) and the materials: static shapes' first, then one per moving shape.
+    /// The scene: shapes (still and moving), surfaces, lights, camera, shutter.
     pub scene: Scene,
     /// The moving shapes, bounded for [`shutter`](Self::shutter).
     pub moving: MovingObjects,
     /// The camera's motion (camera to world, Mitsuba's columns: left, up, forward, origin);
-    /// `None` for a camera that stays where `scene.camera` is.
+    /// `None` for a camera that stays where the scene's camera is.
     pub camera_motion: Option<AnimatedTransform>,
     /// The shutter interval.
     pub shutter: Shutter,
 }
 
 impl MotionScene {
-    /// `scene` with `moving` shapes (each with its material) added, seen through `shutter`.
-    pub fn new(
-        mut scene: Scene,
-        moving: Vec<(MovingShape, Material)>,
-        camera_motion: Option<AnimatedTransform>,
-        shutter: Shutter,
-    ) -> Self {
-        let first_index = scene.materials.len() as u32;
-        let (shapes, materials): (Vec<MovingShape>, Vec<Material>) = moving.into_iter().unzip();
-        scene.materials.extend(materials);
-        Self {
-            scene,
-            moving: MovingObjects::new(shapes, first_index, shutter, DEFAULT_STRETCHES),
+    /// `scene` made ready for tracing over its shutter interval, or why its motion cannot be
+    /// followed (keyframes half a turn apart, a shutter that closes before it opens), naming
+    /// the shape.
+    pub fn new(scene: Scene) -> Result<Self, String> {
+        let camera = &scene.camera;
+        let shutter = Shutter::new(camera.shutter_open, camera.shutter_close).map_err(|e| {
+            format!(
+                "the camera's shutter from {} to {}: {e}",
+                camera.shutter_open, camera.shutter_close
+            )
+        })?;
+        let first_index = scene.geometry.shapes().len();
+        let mut moving = Vec::with_capacity(scene.moving.len());
+        for (j, animated) in scene.moving.iter().enumerate() {
+            let surface = &scene.surfaces[first_index + j];
+            let motion = AnimatedTransform::new(&animated.keyframes).map_err(|e| {
+                let at = surface.origin.map(|p| format!("{p}: ")).unwrap_or_default();
+                format!("{at}shape {}: {e}", first_index + j + 1)
+            })?;
+            moving.push(MovingShape::new(animated.shape, motion));
+        }
+        let camera_motion = if camera.keyframes.is_empty() {
+            None
+        } else {
+            Some(
+                AnimatedTransform::new(&camera.keyframes)
+                    .map_err(|e| format!("the camera's motion: {e}"))?,
+            )
+        };
+        Ok(Self {
+            moving: MovingObjects::new(moving, first_index as u32, shutter, DEFAULT_STRETCHES),
             camera_motion,
             shutter,
-        }
+            scene,
+        })
     }
 
-    /// A scene without motion.
+    /// A scene built in code, whose motions are valid by construction (a scene without any
+    /// motion, say).
     pub fn still(scene: Scene) -> Self {
-        Self::new(scene, Vec::new(), None, Shutter::INSTANT)
+        Self::new(scene).expect("a scene built in code has valid motions")
     }
 
     /// The same scene seen through another shutter, its motion bounds cut into `stretches`.
     pub fn with_shutter(mut self, shutter: Shutter, stretches: usize) -> Self {
         self.moving = self.moving.rebuilt(shutter, stretches);
         self.shutter = shutter;
+        self.scene.camera.shutter_open = shutter.open;
+        self.scene.camera.shutter_close = shutter.close;
         self
     }
 
@@ -76,35 +98,15 @@ impl MotionScene {
 
     /// The pinhole camera at `time`, on a film of `width x height`.
     pub fn camera_at(&self, time: f32, width: u32, height: u32) -> PinholeCamera {
-        let camera = self.scene.camera.with_size(width, height);
+        let camera = PinholeCamera::of(&self.scene.camera, width, height);
         match &self.camera_motion {
             None => camera,
             Some(motion) => PinholeCamera {
-                frame: frame_of(&motion.at(time)),
+                frame: CameraFrame::from_matrix(&motion.at(time)),
                 ..camera
             },
         }
     }
-}
-
-/// The camera frame of a camera-to-world matrix (columns left, up, forward, origin).
-pub fn frame_of(m: &Mat4) -> CameraFrame {
-    CameraFrame {
-        origin: m.w_axis.truncate(),
-        left: m.x_axis.truncate().normalize(),
-        up: m.y_axis.truncate().normalize(),
-        forward: m.z_axis.truncate().normalize(),
-    }
-}
-
-/// The camera-to-world matrix of a frame: the inverse of [`frame_of`].
-pub fn matrix_of(frame: &CameraFrame) -> Mat4 {
-    Mat4::from_cols(
-        frame.left.extend(0.0),
-        frame.up.extend(0.0),
-        frame.forward.extend(0.0),
-        frame.origin.extend(1.0),
-    )
 }
 
 // ANCHOR: world

@@ -8,7 +8,7 @@ use ch04_depth_of_field::scenes::{Builtin as DofBuiltin, DEFAULT_DEPTH as DOF_DE
 use ch04_depth_of_field::{Lens, render_with as dof_render_with};
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::MotionScene;
-use ch05_motion_blur::{AnimatedTransform, MovingShape, Shutter, StratifiedTime, render_with};
+use ch05_motion_blur::{AnimatedTransform, Shutter, StratifiedTime, render_with};
 use common::film::PixelBoxFilter;
 use common::geometry::{Shape, Sphere};
 use common::image::Image;
@@ -16,7 +16,7 @@ use common::metrics::rmse;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
 use glam::{Mat4, Vec3};
-use support::{Counting, frozen_at, mirror_only_scene};
+use support::{Counting, frozen_at, keyframes_of, mirror_only_scene, with_moving, with_shutter};
 
 fn assert_all_finite(image: &Image) {
     assert!(
@@ -29,12 +29,11 @@ fn assert_all_finite(image: &Image) {
 fn a_scene_without_motion_is_chapter_04s_image_bit_for_bit_and_draws_no_time() {
     let settings = RenderSettings::new(40, 24, 4);
     for lens in [Lens::PINHOLE, Lens::new(0.2, 5.0).unwrap()] {
-        let ours = MotionScene::new(
+        let ours = MotionScene::new(with_shutter(
             DofBuiltin::Bokeh.build(DOF_DEPTH),
-            Vec::new(),
-            None,
             Shutter::new(0.0, 1.0).unwrap(),
-        );
+        ))
+        .unwrap();
         let sampler = Counting::new(5);
         let image = render_with(&ours, &lens, &settings, &sampler, &PixelBoxFilter).image;
         assert_eq!(sampler.times(), 0, "a still scene draws no time");
@@ -117,27 +116,36 @@ fn motion_across_the_frame_and_spins_past_a_full_turn_stay_finite() {
 #[test]
 fn absurdly_fast_and_far_motion_stays_finite() {
     // A sphere crossing 2e6 units within the shutter, and one spinning 1000 turns.
-    let base = Builtin::Spinner.build(DEFAULT_DEPTH, DEFAULT_SHUTTER).scene;
-    let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5));
-    let streak = MovingShape::new(
-        sphere,
-        AnimatedTransform::new(&[
-            (0.0, Mat4::from_translation(Vec3::new(-1e6, 0.0, 0.0))),
-            (1.0, Mat4::from_translation(Vec3::new(1e6, 0.0, 0.0))),
-        ])
-        .unwrap(),
-    );
-    let spin = MovingShape::new(
-        Shape::Sphere(Sphere::new(Vec3::new(0.8, 0.0, 0.0), 0.3)),
-        AnimatedTransform::spin(Vec3::Z, 1000.0, 0.0, 1.0, Mat4::IDENTITY),
-    );
-    let material = ch01_whitted::material::Material::diffuse(Vec3::splat(0.7));
-    let world = MotionScene::new(
+    // The spinner's lights, environment and camera, without its cube: only the two shapes
+    // below move, and the centre of the image shows the spinning sphere's ring alone.
+    let mut base = Builtin::Spinner.scene(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+    base.moving.clear();
+    base.surfaces.truncate(base.geometry.shapes().len());
+    let material = common::scene::Material::diffuse(Vec3::splat(0.7));
+    let streak = vec![
+        (0.0, Mat4::from_translation(Vec3::new(-1e6, 0.0, 0.0))),
+        (1.0, Mat4::from_translation(Vec3::new(1e6, 0.0, 0.0))),
+    ];
+    let spin = keyframes_of(&AnimatedTransform::spin(
+        Vec3::Z,
+        1000.0,
+        0.0,
+        1.0,
+        Mat4::IDENTITY,
+    ));
+    let scene = with_moving(
         base,
-        vec![(streak, material), (spin, material)],
-        None,
-        Shutter::new(0.0, 1.0).unwrap(),
+        Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5)),
+        streak,
+        material,
     );
+    let scene = with_moving(
+        scene,
+        Shape::Sphere(Sphere::new(Vec3::new(0.8, 0.0, 0.0), 0.3)),
+        spin,
+        material,
+    );
+    let world = MotionScene::new(with_shutter(scene, Shutter::new(0.0, 1.0).unwrap())).unwrap();
     let out = render_with(
         &world,
         &Lens::PINHOLE,
@@ -201,14 +209,11 @@ fn a_moving_object_seen_only_in_a_mirror_is_blurred_there() {
 
 #[test]
 fn the_rays_time_reaches_the_shadow_test() {
-    use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-    use ch01_whitted::light::PointLight;
-    use ch01_whitted::material::Material;
-    use ch01_whitted::scene::SceneBuilder;
     use ch01_whitted::tracer::trace;
     use common::Ray;
     use common::geometry::Quad;
     use common::render::SampleCounters;
+    use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder};
     // A floor lit from straight above; a sphere passes between during the first half of the
     // shutter only, out of the camera ray's way.
     let floor = Shape::Quad(Quad::new(
@@ -221,25 +226,20 @@ fn the_rays_time_reaches_the_shadow_test() {
         .light(PointLight {
             position: Vec3::new(0.0, 4.0, 0.0),
             intensity: Vec3::splat(10.0),
-        });
+        })
+        .moving(
+            Shape::Sphere(Sphere::new(Vec3::ZERO, 0.3)),
+            vec![
+                (0.0, Mat4::from_translation(Vec3::new(0.0, 2.0, 0.0))),
+                (0.5, Mat4::from_translation(Vec3::new(0.0, 2.0, 0.0))),
+                (0.6, Mat4::from_translation(Vec3::new(-3.0, 2.0, 0.0))),
+                (1.0, Mat4::from_translation(Vec3::new(-3.0, 2.0, 0.0))),
+            ],
+            Material::diffuse(Vec3::ONE),
+        );
     let frame = CameraFrame::look_at(Vec3::new(0.0, 3.0, 3.0), Vec3::ZERO, Vec3::Y).unwrap();
-    let scene = scene.build(PinholeCamera::new(frame, 40.0, 8, 8), 4);
-    let occluder = MovingShape::new(
-        Shape::Sphere(Sphere::new(Vec3::ZERO, 0.3)),
-        AnimatedTransform::new(&[
-            (0.0, Mat4::from_translation(Vec3::new(0.0, 2.0, 0.0))),
-            (0.5, Mat4::from_translation(Vec3::new(0.0, 2.0, 0.0))),
-            (0.6, Mat4::from_translation(Vec3::new(-3.0, 2.0, 0.0))),
-            (1.0, Mat4::from_translation(Vec3::new(-3.0, 2.0, 0.0))),
-        ])
-        .unwrap(),
-    );
-    let world = MotionScene::new(
-        scene,
-        vec![(occluder, Material::diffuse(Vec3::ONE))],
-        None,
-        Shutter::new(0.0, 1.0).unwrap(),
-    );
+    let scene = scene.build(Camera::pinhole(frame, 40.0), FilmSettings::new(8, 8), 4);
+    let world = MotionScene::new(with_shutter(scene, Shutter::new(0.0, 1.0).unwrap())).unwrap();
     // A camera ray to the floor's centre, which misses the sphere at every time.
     let ray = Ray::new(
         Vec3::new(0.0, 3.0, 3.0),

@@ -2,22 +2,19 @@
 
 mod support;
 
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::SceneBuilder;
 use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::MotionScene;
-use ch05_motion_blur::{AnimatedTransform, MovingShape, Shutter, StratifiedTime, render_with};
+use ch05_motion_blur::{Shutter, StratifiedTime, render_with};
 use common::film::PixelBoxFilter;
 use common::geometry::{Shape, Sphere};
 use common::metrics::rmse;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
+use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder};
 use glam::{Mat4, Vec3};
-use support::{average, frozen_at};
+use support::{average, frozen_at, with_shutter};
 
 /// Motion blur *is* the average over the shutter interval: a blurred render must agree with the
 /// mean of still renders at evenly spaced times as well as two blurred renders with different
@@ -69,26 +66,22 @@ fn a_blurred_render_is_the_average_of_still_renders_over_the_shutter() {
 
 /// A sphere sliding across a black background past the centre of an 8 x 8 image.
 fn sliding_edge() -> MotionScene {
-    let scene = SceneBuilder::new().light(PointLight {
-        position: Vec3::new(0.0, 0.0, 6.0),
-        intensity: Vec3::splat(20.0),
-    });
+    let scene = SceneBuilder::new()
+        .light(PointLight {
+            position: Vec3::new(0.0, 0.0, 6.0),
+            intensity: Vec3::splat(20.0),
+        })
+        .moving(
+            Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5)),
+            vec![
+                (0.0, Mat4::from_translation(Vec3::new(-1.5, 0.0, 0.0))),
+                (1.0, Mat4::from_translation(Vec3::new(1.5, 0.0, 0.0))),
+            ],
+            Material::diffuse(Vec3::splat(0.8)),
+        );
     let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y).unwrap();
-    let scene = scene.build(PinholeCamera::new(frame, 30.0, 8, 8), 2);
-    let sphere = MovingShape::new(
-        Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5)),
-        AnimatedTransform::new(&[
-            (0.0, Mat4::from_translation(Vec3::new(-1.5, 0.0, 0.0))),
-            (1.0, Mat4::from_translation(Vec3::new(1.5, 0.0, 0.0))),
-        ])
-        .unwrap(),
-    );
-    MotionScene::new(
-        scene,
-        vec![(sphere, Material::diffuse(Vec3::splat(0.8)))],
-        None,
-        DEFAULT_SHUTTER,
-    )
+    let scene = scene.build(Camera::pinhole(frame, 30.0), FilmSettings::new(8, 8), 2);
+    MotionScene::new(with_shutter(scene, DEFAULT_SHUTTER)).unwrap()
 }
 
 /// The sample variance of a pixel's value over renders with different seeds.

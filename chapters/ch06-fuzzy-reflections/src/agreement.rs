@@ -7,12 +7,10 @@
 //! materials are not compared here: Mitsuba's are microfacet models, this chapter's are
 //! `cos^n` lobes of about the same width, and the book shows how far apart they are.
 
-use crate::scene_file::convert;
 use crate::{GlassStrategy, PointLights, TraceOptions, render_with};
+use ch05_motion_blur::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
-use common::render::{Budget, RenderSettings};
-use common::scene::load_scene_file;
+use common::metrics::{AgreementScene, MITSUBA_VARIANT};
 use std::path::{Path, PathBuf};
 
 /// The scenes compared, with what each one checks.
@@ -27,28 +25,22 @@ pub fn scenes_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
 }
 
-/// Our render of a scene file at [`AGREEMENT_SPP`] samples per pixel, choosing the ray at
+/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, choosing the ray at
 /// glass by `glass`, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file_with(path: &Path, glass: GlassStrategy) -> Result<Image, String> {
-    let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let converted = convert(&loaded.scene).map_err(|e| format!("{}: {e}", path.display()))?;
-    let camera = &converted.scene.world.scene.camera;
-    let settings = RenderSettings::new(camera.width, camera.height, AGREEMENT_SPP);
-    let sampler = ch03_anti_aliasing::cli::AntiAliasingArgs::default()
-        .pixel_sampler(converted.sampler, &Budget::Samples(AGREEMENT_SPP), 0)
-        .map_err(|e| e.to_string())?;
+    let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
     let options = TraceOptions {
         glass,
         ..TraceOptions::default()
     };
     let rendered = render_with(
-        &converted.scene,
+        &world,
         &PointLights,
         options,
-        &converted.lens,
+        &side.lens,
         &settings,
         &sampler,
-        &converted.filter,
+        &side.filter,
     );
     Ok(rendered.image)
 }

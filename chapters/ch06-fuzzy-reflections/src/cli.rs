@@ -1,9 +1,8 @@
 //! The chapter's `render` options, which chapter 07 flattens into its own `render`: the lobe
 //! exponent, the choices at glass and at the surface, and the depth limit.
 
-use crate::material::check_exponent;
-use crate::scene::FuzzyScene;
 use crate::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
+use common::scene::{Scene, check_exponent};
 
 /// How fuzzy surfaces and glass are traced.
 #[derive(clap::Args, Clone, Debug)]
@@ -46,13 +45,13 @@ impl FuzzyArgs {
     }
 
     /// `scene` with `--exponent` and `--max-depth` applied where given.
-    pub fn apply(&self, scene: FuzzyScene) -> anyhow::Result<FuzzyScene> {
+    pub fn apply(&self, scene: Scene) -> anyhow::Result<Scene> {
         let mut scene = match self.exponent()? {
             Some(exponent) => scene.with_exponent(exponent),
             None => scene,
         };
         if let Some(max_depth) = self.max_depth {
-            scene.world.scene.max_depth = max_depth;
+            scene.max_depth = max_depth;
         }
         Ok(scene)
     }

@@ -9,16 +9,14 @@ use crate::furnace::{incoming, mean_radiance, white_floor};
 use crate::fuzz::FuzzMethod;
 use crate::glass_choice::GlassStrategy;
 use crate::lighting::PointLights;
-use crate::material::Material;
 use crate::render_with;
-use crate::scene::FuzzyScene;
 use crate::scenes::{Builtin, DEFAULT_DEPTH};
 use crate::tracer::TraceOptions;
 use anyhow::Context;
-use ch01_whitted::material::Material as SmoothMaterial;
 use ch01_whitted::optics::reflect;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
 use common::cli::prepare_output_dir;
 use common::image::Image;
 use common::metrics::{
@@ -31,6 +29,7 @@ use common::output::figures::{
 use common::output::write_text;
 use common::render::{Budget, RenderOutput, RenderSettings};
 use common::sampler::{IndependentSampler, Sampler};
+use common::scene::Material;
 use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
 
@@ -107,7 +106,7 @@ fn box_filter() -> ReconstructionFilter {
 
 /// Renders `scene` with stratified pixel positions, box-filtered.
 fn render(
-    scene: &FuzzyScene,
+    scene: &MotionScene,
     options: TraceOptions,
     settings: &RenderSettings,
     seed: u64,
@@ -162,10 +161,9 @@ fn roughness_series(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         ));
     }
     let mut mirror = Builtin::Floor.build(DEFAULT_DEPTH, 1.0);
-    mirror.materials[0] = SmoothMaterial::Mirror {
+    mirror.scene.surfaces[0].material = Material::Mirror {
         reflectance: Vec3::splat(0.8),
-    }
-    .into();
+    };
     reflection.push((
         "perfect mirror (chapter 01)".to_string(),
         render(&mirror, options, &settings, 0).image,
@@ -181,9 +179,9 @@ fn roughness_series(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         ));
     }
     let mut smooth = Builtin::Frosted.build(DEFAULT_DEPTH, 1.0);
-    for material in &mut smooth.materials {
-        if matches!(material, Material::RoughGlass(_)) {
-            *material = SmoothMaterial::glass(1.5).into();
+    for surface in &mut smooth.scene.surfaces {
+        if matches!(surface.material, Material::RoughGlass(_)) {
+            surface.material = Material::glass(1.5);
         }
     }
     refraction.push((

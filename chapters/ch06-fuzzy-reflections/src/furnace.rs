@@ -7,17 +7,13 @@
 //! it.
 
 use crate::lighting::PointLights;
-use crate::material::Material;
-use crate::scene::FuzzyScene;
 use crate::tracer::{TraceOptions, Tracer};
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::material::Material as SmoothMaterial;
-use ch01_whitted::scene::SceneBuilder;
 use ch05_motion_blur::MotionScene;
 use common::Ray;
 use common::geometry::{Quad, Shape};
 use common::render::SampleCounters;
 use common::sampler::{IndependentSampler, Sampler};
+use common::scene::{Camera, CameraFrame, FilmSettings, Material, SceneBuilder};
 use glam::{UVec2, Vec3};
 
 /// A scene of `shapes` with their `materials` in a world of uniform radiance `background`, no
@@ -28,24 +24,18 @@ pub fn scene_of(
     eye: Vec3,
     target: Vec3,
     max_depth: u32,
-) -> FuzzyScene {
-    let mut builder = SceneBuilder::new().background(background);
-    let mut materials = Vec::new();
+) -> MotionScene {
+    let mut builder = SceneBuilder::new().environment(background);
     for (shape, material) in shapes {
-        builder = builder.shape(shape, SmoothMaterial::diffuse(Vec3::ZERO));
-        materials.push(material);
+        builder = builder.shape(shape, material);
     }
     let frame = CameraFrame::look_at(eye, target, Vec3::Y).expect("a valid camera");
-    let camera = PinholeCamera::new(frame, 40.0, 64, 48);
-    FuzzyScene::new(
-        MotionScene::still(builder.build(camera, max_depth)),
-        materials,
-    )
-    .expect("one material per shape")
+    let camera = Camera::pinhole(frame, 40.0);
+    MotionScene::still(builder.build(camera, FilmSettings::new(64, 48), max_depth))
 }
 
 /// A white glossy floor of `exponent` at y = 0, 2000 wide, in the furnace.
-pub fn white_floor(exponent: f32) -> FuzzyScene {
+pub fn white_floor(exponent: f32) -> MotionScene {
     let floor = Quad::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
     scene_of(
         vec![(Shape::Quad(floor), Material::glossy(Vec3::ONE, exponent))],
@@ -67,9 +57,9 @@ pub fn incoming(degrees: f32) -> Ray {
 /// The mean of the radiance along `ray` (its green channel) over `n` samples traced with
 /// `options`, and the standard error of that mean. Panics on a non-finite sample: in the
 /// furnace there is no excuse for one.
-pub fn mean_radiance(scene: &FuzzyScene, options: TraceOptions, ray: &Ray, n: u64) -> (f64, f64) {
+pub fn mean_radiance(world: &MotionScene, options: TraceOptions, ray: &Ray, n: u64) -> (f64, f64) {
     let tracer = Tracer {
-        scene,
+        world,
         lighting: &PointLights,
         options,
     };

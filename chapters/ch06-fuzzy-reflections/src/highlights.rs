@@ -43,7 +43,7 @@ pub fn point_light_highlights<W: World>(
         return Vec3::ZERO; // a mirror's lobe is a single direction: no highlight
     }
     let mut radiance = Vec3::ZERO;
-    for light in &world.scene().lights {
+    for light in &world.scene().point_lights {
         let to_light = light.position - hit.p;
         let distance_squared = to_light.length_squared();
         let l = to_light / distance_squared.sqrt();

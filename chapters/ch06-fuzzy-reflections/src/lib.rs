@@ -9,11 +9,11 @@
 //! - [`glass_choice`]: following both rays at glass, or one chosen at random with its weight.
 //! - [`fuzz`]: spreading a direction: the empirical disc, and the `cos^n` lobe.
 //! - [`below_surface`]: what to do with a spread ray that points into the surface.
-//! - [`material`], [`scene`]: the chapter's materials on chapter 05's scenes.
 //! - [`highlights`]: the point lights seen in a fuzzy mirror.
 //! - [`lighting`]: the hook through which chapter 07 adds lights with an area.
 //! - [`tracer`]: the recursive tracer with random choices.
-//! - [`scenes`], [`scene_file`]: what to look at; [`figures`]: the chapter's figures.
+//! - [`scenes`]: what to look at; [`figures`]: the chapter's figures; [`CAPABILITIES`]: what
+//!   of a scene the chapter renders (rough materials of a scene file as `cos^n` lobes).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -26,9 +26,6 @@ pub mod fuzz;
 pub mod glass_choice;
 pub mod highlights;
 pub mod lighting;
-pub mod material;
-pub mod scene;
-pub mod scene_file;
 pub mod scenes;
 pub mod tracer;
 
@@ -36,22 +33,33 @@ pub use below_surface::BelowSurface;
 pub use fuzz::FuzzMethod;
 pub use glass_choice::GlassStrategy;
 pub use lighting::{Lighting, PointLights};
-pub use material::Material;
-pub use scene::FuzzyScene;
 pub use tracer::{TraceOptions, Tracer};
 
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::{CameraRays, TimeSampler};
+use ch05_motion_blur::{CameraRays, MotionScene, TimeSampler};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
+use common::scene::{Capabilities, Chapter, Feature};
+
+// ANCHOR: capabilities
+/// How chapter 06 renders a scene file's microfacet roughness.
+pub const MICROFACET_AS_LOBE: &str = "rendered as a cos^n lobe of exponent n = 2/alpha^2 - 2: about as wide as Mitsuba's microfacet lobe, not the same shape";
+
+/// What chapter 06 renders of a scene: chapter 05's, with glossy and frosted materials; a
+/// scene file's rough materials become `cos^n` lobes of about the same width.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::FUZZY_REFLECTIONS,
+    approximates: &[(Feature::MicrofacetMaterial, MICROFACET_AS_LOBE)],
+};
+// ANCHOR_END: capabilities
 
 // ANCHOR: render_with
-/// Renders `scene`, lit by `lighting`, through `lens`. Each sample draws, in order: the pixel
+/// Renders `world`, lit by `lighting`, through `lens`. Each sample draws, in order: the pixel
 /// position (in the render loop), the time and the lens point (chapter 05's camera rays, each
 /// only when the scene needs it), then the numbers of each bounce. A scene of smooth
 /// materials traced with [`GlassStrategy::Both`] is chapter 05's render, bit for bit.
 pub fn render_with<L: Lighting, S: TimeSampler>(
-    scene: &FuzzyScene,
+    world: &MotionScene,
     lighting: &L,
     options: TraceOptions,
     lens: &Lens,
@@ -59,14 +67,14 @@ pub fn render_with<L: Lighting, S: TimeSampler>(
     sampler: &S,
     filter: &dyn Filter,
 ) -> RenderOutput {
-    let camera_rays = CameraRays::new(&scene.world, lens, settings.width, settings.height);
+    let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     let tracer = Tracer {
-        scene,
+        world,
         lighting,
         options,
     };
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
-        let ray = camera_rays.generate(&scene.world, p_film, sampler);
+        let ray = camera_rays.generate(world, p_film, sampler);
         tracer.trace(&ray, 1, sampler, counters)
     })
 }

@@ -4,13 +4,13 @@
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::cli::LensArgs;
+use ch05_motion_blur::scene_file::{motion_for_render, read_with_camera_side};
 use ch05_motion_blur::{Shutter, StratifiedTime, TimeSampling};
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
-use ch06_fuzzy_reflections::scene_file::convert;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
-use ch06_fuzzy_reflections::{PointLights, figures, render_with};
+use ch06_fuzzy_reflections::{CAPABILITIES, PointLights, figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
+use common::cli::{FiguresArgs, RenderArgs, report_error};
 use common::render::Budget;
 use std::process::ExitCode;
 
@@ -61,14 +61,14 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match command.args.scene_file()? {
             Some(path) => {
-                let converted =
-                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
+                let (scene, side) =
+                    read_with_camera_side(path, &command.args.define, &CAPABILITIES)?;
                 (
-                    converted.scene,
-                    converted.lens,
-                    Some(converted.filter),
-                    Some(converted.sampler),
-                    converted.spp,
+                    scene,
+                    side.lens,
+                    Some(side.filter),
+                    Some(side.sampler),
+                    side.spp,
                     path.display().to_string(),
                 )
             }
@@ -76,7 +76,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
                 // Built with its own exponent; --exponent replaces it below, as in a file.
                 command
                     .builtin
-                    .build(DEFAULT_DEPTH, command.builtin.default_exponent()),
+                    .scene(DEFAULT_DEPTH, command.builtin.default_exponent()),
                 Lens::PINHOLE,
                 None,
                 None,
@@ -85,26 +85,27 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             ),
         };
     let scene = command.fuzzy.apply(scene)?;
+    let world = motion_for_render(scene).map_err(|e| anyhow::anyhow!("{scene_name}: {e}"))?;
     let lens = command.lens.lens_or_pinhole(scene_lens)?;
     let filter = command.anti_aliasing.filter(file_filter)?;
     let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
-    let camera = scene.world.scene.camera;
+    let film = world.scene.film;
     let settings = command
         .args
-        .settings((camera.width, camera.height), default_spp)?;
+        .settings((film.width, film.height), default_spp)?;
     let pixel_sampler =
         command
             .anti_aliasing
             .pixel_sampler(sampler_kind, &settings.budget, command.args.seed)?;
     command.args.check_outputs()?;
     let options = command.fuzzy.options();
-    let shutter: Shutter = scene.world.shutter;
-    let time_sampling = TimeSampling::by_default(scene.world.moves(), &settings.budget);
+    let shutter: Shutter = world.shutter;
+    let time_sampling = TimeSampling::by_default(world.moves(), &settings.budget);
     let rendered = match (time_sampling, settings.budget) {
         (TimeSampling::Stratified, Budget::Samples(spp)) => {
             let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
             render_with(
-                &scene,
+                &world,
                 &PointLights,
                 options,
                 &lens,
@@ -114,7 +115,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             )
         }
         _ => render_with(
-            &scene,
+            &world,
             &PointLights,
             options,
             &lens,
@@ -125,7 +126,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     };
     let mut extra = serde_json::json!({
         "scene": scene_name,
-        "max_depth": scene.world.scene.max_depth,
+        "max_depth": world.scene.max_depth,
         "sampler": sampler_kind.name(),
         "filter": filter.kind().name(),
         "filter_radius": filter.half_width(),

@@ -10,14 +10,11 @@
 //! - `panes`: four smooth glass panes and a glass ball in front of a checkered wall: every
 //!   ray splits at eight or more surfaces, where following both rays explodes.
 
-use crate::material::Material;
-use crate::scene::FuzzyScene;
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::{Checkerboard, Material as SmoothMaterial};
-use ch01_whitted::scene::SceneBuilder;
 use ch05_motion_blur::MotionScene;
 use common::geometry::{Quad, Shape, Sphere};
+use common::scene::{
+    Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
+};
 use glam::{Vec2, Vec3};
 
 /// The scenes `render --builtin NAME` knows.
@@ -45,8 +42,13 @@ impl Builtin {
         Builtin::Panes,
     ];
 
-    /// Builds the scene with lobes of `exponent`.
-    pub fn build(self, max_depth: u32, exponent: f32) -> FuzzyScene {
+    /// The scene with lobes of `exponent`, made ready for tracing.
+    pub fn build(self, max_depth: u32, exponent: f32) -> MotionScene {
+        MotionScene::still(self.scene(max_depth, exponent))
+    }
+
+    /// The scene with lobes of `exponent`.
+    pub fn scene(self, max_depth: u32, exponent: f32) -> Scene {
         match self {
             Builtin::Floor => floor(max_depth, exponent),
             Builtin::Frosted => frosted(max_depth, exponent),
@@ -76,29 +78,20 @@ impl Builtin {
     }
 }
 
-/// Shapes with materials, collected in matching order, then built into a still scene.
+/// Shapes with materials and point lights, built into a still scene.
 struct Builder {
-    smooth: SceneBuilder,
-    materials: Vec<Material>,
+    scene: SceneBuilder,
 }
 
 impl Builder {
     fn new(background: Vec3) -> Self {
         Self {
-            smooth: SceneBuilder::new().background(background),
-            materials: Vec::new(),
+            scene: SceneBuilder::new().environment(background),
         }
     }
 
     fn shape(mut self, shape: Shape, material: Material) -> Self {
-        // Chapter 01's scene keeps a material per shape too; the fuzzy ones stand in as
-        // black matte there, which this chapter's tracer never reads.
-        let stand_in = match material {
-            Material::Smooth(smooth) => smooth,
-            _ => SmoothMaterial::diffuse(Vec3::ZERO),
-        };
-        self.smooth = self.smooth.shape(shape, stand_in);
-        self.materials.push(material);
+        self.scene = self.scene.shape(shape, material);
         self
     }
 
@@ -109,25 +102,24 @@ impl Builder {
     }
 
     fn light(mut self, position: Vec3, intensity: Vec3) -> Self {
-        self.smooth = self.smooth.light(PointLight {
+        self.scene = self.scene.light(PointLight {
             position,
             intensity,
         });
         self
     }
 
-    fn build(self, camera: PinholeCamera, max_depth: u32) -> FuzzyScene {
-        let world = MotionScene::still(self.smooth.build(camera, max_depth));
-        FuzzyScene::new(world, self.materials).expect("one material per shape")
+    fn build(self, (camera, film): (Camera, FilmSettings), max_depth: u32) -> Scene {
+        self.scene.build(camera, film, max_depth)
     }
 }
 
 fn matte(albedo: Vec3) -> Material {
-    SmoothMaterial::diffuse(albedo).into()
+    Material::diffuse(albedo)
 }
 
 fn checkered(colour0: Vec3, colour1: Vec3, scale: Vec2) -> Material {
-    SmoothMaterial::CheckeredDiffuse {
+    Material::CheckeredDiffuse {
         checkerboard: Checkerboard {
             colour0,
             colour1,
@@ -135,7 +127,6 @@ fn checkered(colour0: Vec3, colour1: Vec3, scale: Vec2) -> Material {
         },
         two_sided: false,
     }
-    .into()
 }
 
 fn quad(corner: Vec3, e1: Vec3, e2: Vec3) -> Shape {
@@ -160,10 +151,13 @@ pub fn box_faces(min: Vec3, max: Vec3) -> [Shape; 6] {
     ]
 }
 
-fn camera(origin: Vec3, target: Vec3, fov_x_degrees: f32) -> PinholeCamera {
+fn camera(origin: Vec3, target: Vec3, fov_x_degrees: f32) -> (Camera, FilmSettings) {
     let frame = CameraFrame::look_at(origin, target, Vec3::Y)
         .expect("the camera looks along a valid direction");
-    PinholeCamera::new(frame, fov_x_degrees, 320, 240)
+    (
+        Camera::pinhole(frame, fov_x_degrees),
+        FilmSettings::new(320, 240),
+    )
 }
 
 /// A checkered wall facing +z at depth `z`, `width` wide and `height` high, standing on y = 0.
@@ -179,7 +173,7 @@ const WALL_LIGHT: Vec3 = Vec3::new(0.85, 0.85, 0.8);
 const WALL_DARK: Vec3 = Vec3::new(0.15, 0.2, 0.35);
 const SKY: Vec3 = Vec3::new(0.35, 0.45, 0.6);
 
-fn floor(max_depth: u32, exponent: f32) -> FuzzyScene {
+fn floor(max_depth: u32, exponent: f32) -> Scene {
     Builder::new(SKY)
         // The floor, facing up: e1 x e2 = z x x = +y.
         .shape(
@@ -194,10 +188,7 @@ fn floor(max_depth: u32, exponent: f32) -> FuzzyScene {
             sphere(Vec3::new(-1.6, 0.5, -0.8), 0.5),
             matte(Vec3::new(0.8, 0.15, 0.1)),
         )
-        .shape(
-            sphere(Vec3::new(-0.3, 0.7, -1.4), 0.7),
-            SmoothMaterial::mirror().into(),
-        )
+        .shape(sphere(Vec3::new(-0.3, 0.7, -1.4), 0.7), Material::mirror())
         .shape(
             sphere(Vec3::new(0.9, 0.45, -0.2), 0.45),
             matte(Vec3::new(0.15, 0.6, 0.2)),
@@ -215,7 +206,7 @@ fn floor(max_depth: u32, exponent: f32) -> FuzzyScene {
         )
 }
 
-fn frosted(max_depth: u32, exponent: f32) -> FuzzyScene {
+fn frosted(max_depth: u32, exponent: f32) -> Scene {
     Builder::new(SKY)
         .shape(
             quad(Vec3::new(-8.0, 0.0, -8.0), 16.0 * Vec3::Z, 16.0 * Vec3::X),
@@ -246,7 +237,7 @@ fn frosted(max_depth: u32, exponent: f32) -> FuzzyScene {
         )
 }
 
-fn plates(max_depth: u32, exponent: f32) -> FuzzyScene {
+fn plates(max_depth: u32, exponent: f32) -> Scene {
     let plate = Material::glossy(Vec3::new(0.9, 0.85, 0.7), exponent);
     Builder::new(SKY)
         .shape(
@@ -277,8 +268,8 @@ fn plates(max_depth: u32, exponent: f32) -> FuzzyScene {
         )
 }
 
-fn panes(max_depth: u32) -> FuzzyScene {
-    let glass: Material = SmoothMaterial::glass(1.5).into();
+fn panes(max_depth: u32) -> Scene {
+    let glass = Material::glass(1.5);
     let mut builder = Builder::new(SKY)
         .shape(
             quad(Vec3::new(-8.0, 0.0, -8.0), 16.0 * Vec3::Z, 16.0 * Vec3::X),

@@ -20,15 +20,14 @@ use crate::fuzz::FuzzMethod;
 use crate::glass_choice::{GlassStrategy, choose_fresnel, choose_half};
 use crate::highlights::{Lobe, point_light_highlights};
 use crate::lighting::Lighting;
-use crate::material::{Glossy, Material};
-use crate::scene::FuzzyScene;
-use ch01_whitted::material::Material as SmoothMaterial;
 use ch01_whitted::optics::{fresnel_dielectric, reflect, refract};
 use ch01_whitted::scene::World;
+use ch05_motion_blur::MotionScene;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
 use common::sampler::Sampler;
+use common::scene::{Glossy, Material};
 use glam::Vec3;
 
 /// The render's choices at mirrors and glass.
@@ -56,8 +55,8 @@ impl Default for TraceOptions {
 /// What one call of the tracer needs besides the ray: the scene, its lights, the options.
 #[derive(Clone, Copy)]
 pub struct Tracer<'a, L: Lighting> {
-    /// The scene.
-    pub scene: &'a FuzzyScene,
+    /// The scene, with its motion.
+    pub world: &'a MotionScene,
     /// How surfaces are lit directly.
     pub lighting: &'a L,
     /// Choices at mirrors and glass.
@@ -76,22 +75,22 @@ impl<L: Lighting> Tracer<'_, L> {
         counters: &mut SampleCounters,
     ) -> Vec3 {
         counters.rays += 1;
-        let world = &self.scene.world;
+        let world = self.world;
         let Some(hit) = world.intersect(ray) else {
-            return world.scene.background;
+            return world.scene.environment;
         };
         let emitted = self.lighting.emitted(&hit, ray);
         if depth >= world.scene.max_depth {
             return emitted; // no segment left to carry reflected light
         }
-        let scattered = match self.scene.materials[hit.shape as usize] {
-            Material::Smooth(SmoothMaterial::Diffuse { albedo, two_sided }) => self
+        let scattered = match world.scene.surface(hit.shape).material {
+            Material::Diffuse { albedo, two_sided } => self
                 .lighting
                 .matte(world, ray, &hit, albedo, two_sided, sampler, counters),
-            Material::Smooth(SmoothMaterial::CheckeredDiffuse {
+            Material::CheckeredDiffuse {
                 checkerboard,
                 two_sided,
-            }) => self.lighting.matte(
+            } => self.lighting.matte(
                 world,
                 ray,
                 &hit,
@@ -100,14 +99,14 @@ impl<L: Lighting> Tracer<'_, L> {
                 sampler,
                 counters,
             ),
-            Material::Smooth(SmoothMaterial::Mirror { reflectance }) => {
+            Material::Mirror { reflectance } => {
                 if !hit.front_face(ray.dir) {
                     return emitted; // mirrors reflect on their front side only
                 }
                 let reflected = hit.spawn_ray(reflect(ray.dir, hit.n), ray.time);
                 reflectance * self.trace(&reflected, depth + 1, sampler, counters)
             }
-            Material::Smooth(SmoothMaterial::Dielectric { int_ior, ext_ior }) => self.glass(
+            Material::Dielectric { int_ior, ext_ior } => self.glass(
                 ray,
                 &hit,
                 int_ior,
@@ -159,7 +158,7 @@ impl<L: Lighting> Tracer<'_, L> {
             side: normal,
             method: self.options.fuzz,
         };
-        let highlights = point_light_highlights(&self.scene.world, hit, &lobe, ray.time, counters);
+        let highlights = point_light_highlights(self.world, hit, &lobe, ray.time, counters);
         let spread = self.spread(ray, hit, &lobe, depth, sampler, counters);
         glossy.reflectance * (highlights + spread)
     }
@@ -230,7 +229,7 @@ impl<L: Lighting> Tracer<'_, L> {
         });
         // The light of one branch, highlights of the point lights included.
         let branch = |lobe: &Lobe, sampler: &mut S, counters: &mut SampleCounters| {
-            point_light_highlights(&self.scene.world, hit, lobe, ray.time, counters)
+            point_light_highlights(self.world, hit, lobe, ray.time, counters)
                 + self.spread(ray, hit, lobe, depth, sampler, counters)
         };
         match self.options.glass {

@@ -7,11 +7,12 @@
 //! lobe's share below the surface (the model's own loss at grazing angles), resampling and
 //! reflecting keep everything.
 
-use ch01_whitted::material::Material as SmoothMaterial;
 use ch06_fuzzy_reflections::furnace::{incoming, mean_radiance, scene_of, white_floor};
-use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, Material, TraceOptions};
+use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
 use common::Ray;
 use common::geometry::{Quad, Shape, Sphere};
+use common::scene::Material;
+use common::scene::Material as SmoothMaterial;
 use glam::Vec3;
 
 const EXPONENTS: [f32; 7] = [0.0, 1.0, 10.0, 100.0, 1e3, 1e4, 1e6];
@@ -113,7 +114,7 @@ fn a_white_glossy_sphere_in_the_furnace_at_every_impact_parameter() {
 fn glass_smooth_or_frosted_in_the_furnace_keeps_at_most_what_it_receives() {
     let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0));
     let materials = [
-        Material::from(SmoothMaterial::glass(1.5)),
+        SmoothMaterial::glass(1.5),
         Material::rough_glass(1.5, 0.0),
         Material::rough_glass(1.5, 10.0),
         Material::rough_glass(1.5, 1e6),
@@ -145,7 +146,14 @@ fn glass_smooth_or_frosted_in_the_furnace_keeps_at_most_what_it_receives() {
                         mean <= 1.0 + 5.0 * se + 1e-4,
                         "{material:?} offset {offset} {glass:?}/{below:?}: {mean} (se {se})"
                     );
-                    if matches!(material, Material::Smooth(_)) || below == BelowSurface::Reflect {
+                    if matches!(
+                        material,
+                        Material::Diffuse { .. }
+                            | Material::CheckeredDiffuse { .. }
+                            | Material::Mirror { .. }
+                            | Material::Dielectric { .. }
+                    ) || below == BelowSurface::Reflect
+                    {
                         // Nothing is dropped: all the light comes out again, up to what the
                         // depth limit cuts off inside.
                         assert!(

@@ -4,19 +4,19 @@
 
 mod support;
 
-use ch01_whitted::material::Material as SmoothMaterial;
 use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::render_with as chapter05_render;
 use ch06_fuzzy_reflections::furnace::{mean_radiance, scene_of};
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
-use ch06_fuzzy_reflections::{
-    BelowSurface, FuzzMethod, FuzzyScene, GlassStrategy, Material, TraceOptions,
-};
+use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
 use common::Ray;
 use common::film::PixelBoxFilter;
 use common::geometry::{Quad, Shape};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
+use common::scene::Material;
+use common::scene::Material as SmoothMaterial;
 use glam::{Vec2, Vec3};
 use support::{assert_finite, render};
 
@@ -49,7 +49,7 @@ fn every_scene_with_every_option_and_extreme_exponents_is_finite() {
 #[test]
 fn a_smooth_scene_traced_both_ways_is_chapter_05s_image_bit_for_bit() {
     let scene = Builtin::Panes.build(DEFAULT_DEPTH, 1.0);
-    assert!(!scene.has_fuzzy_materials());
+    assert!(!scene.scene.surfaces.iter().any(|s| s.material.is_fuzzy()));
     let options = TraceOptions {
         glass: GlassStrategy::Both,
         ..TraceOptions::default()
@@ -57,7 +57,7 @@ fn a_smooth_scene_traced_both_ways_is_chapter_05s_image_bit_for_bit() {
     let ours = render(&scene, options, 24, 18, 3, 5);
     let settings = RenderSettings::new(24, 18, 3);
     let theirs = chapter05_render(
-        &scene.world,
+        &scene,
         &Lens::PINHOLE,
         &settings,
         &IndependentSampler::new(5),
@@ -72,22 +72,19 @@ fn a_smooth_scene_traced_both_ways_is_chapter_05s_image_bit_for_bit() {
 /// The low lamp is left out: a mirror cannot show a point light's reflection at all (no ray
 /// hits a point), while a lobe of any finite exponent shows it as a highlight whose energy
 /// stays the same as the lobe narrows: a speck that the mirror image lacks however large `n`.
-fn floor_scene(floor: Material) -> FuzzyScene {
+fn floor_scene(floor: Material) -> MotionScene {
     let mut scene = Builtin::Floor.build(DEFAULT_DEPTH, 1.0);
-    scene.materials[0] = floor;
-    scene.world.scene.lights.truncate(1);
+    scene.scene.surfaces[0].material = floor;
+    scene.scene.point_lights.truncate(1);
     scene
 }
 
 #[test]
 fn a_lobe_of_exponent_1e6_reflects_the_mirror_image() {
     let glossy = floor_scene(Material::glossy(Vec3::splat(0.8), 1e6));
-    let mirror = floor_scene(
-        SmoothMaterial::Mirror {
-            reflectance: Vec3::splat(0.8),
-        }
-        .into(),
-    );
+    let mirror = floor_scene(SmoothMaterial::Mirror {
+        reflectance: Vec3::splat(0.8),
+    });
     let (w, h) = (64, 48);
     let a = render(&glossy, TraceOptions::default(), w, h, 8, 2).image;
     let b = render(&mirror, TraceOptions::default(), w, h, 8, 2).image;
@@ -125,9 +122,9 @@ fn a_lobe_of_exponent_1e6_reflects_the_mirror_image() {
 
 /// A checkered wall seen through a pane of `pane` (or no pane), lit from between them, so
 /// that the pane casts no shadow on what is seen through it.
-fn pane_scene(pane: Option<Material>) -> FuzzyScene {
+fn pane_scene(pane: Option<Material>) -> MotionScene {
     let checker = SmoothMaterial::CheckeredDiffuse {
-        checkerboard: ch01_whitted::material::Checkerboard {
+        checkerboard: common::scene::Checkerboard {
             colour0: Vec3::splat(0.8),
             colour1: Vec3::new(0.2, 0.3, 0.6),
             scale: Vec2::splat(6.0),
@@ -139,7 +136,7 @@ fn pane_scene(pane: Option<Material>) -> FuzzyScene {
         6.0 * Vec3::X,
         6.0 * Vec3::Y,
     ));
-    let mut shapes = vec![(wall, Material::from(checker))];
+    let mut shapes = vec![(wall, checker)];
     if let Some(pane) = pane {
         for face in ch06_fuzzy_reflections::scenes::box_faces(
             Vec3::new(-2.0, -2.0, 1.9),
@@ -155,14 +152,10 @@ fn pane_scene(pane: Option<Material>) -> FuzzyScene {
         Vec3::ZERO,
         DEFAULT_DEPTH,
     );
-    scene
-        .world
-        .scene
-        .lights
-        .push(ch01_whitted::light::PointLight {
-            position: Vec3::new(0.0, 0.5, 0.0),
-            intensity: Vec3::splat(4.0),
-        });
+    scene.scene.point_lights.push(common::scene::PointLight {
+        position: Vec3::new(0.0, 0.5, 0.0),
+        intensity: Vec3::splat(4.0),
+    });
     scene
 }
 
@@ -170,19 +163,21 @@ fn pane_scene(pane: Option<Material>) -> FuzzyScene {
 fn glass_of_index_one_vanishes_however_frosted() {
     let without = render(&pane_scene(None), TraceOptions::default(), 48, 36, 4, 3).image;
     for pane in [
-        Material::from(SmoothMaterial::Dielectric {
+        SmoothMaterial::Dielectric {
             int_ior: 1.0,
             ext_ior: 1.0,
-        }),
-        Material::RoughGlass(ch06_fuzzy_reflections::material::RoughGlass {
+        },
+        Material::RoughGlass(common::scene::RoughGlass {
             int_ior: 1.0,
             ext_ior: 1.0,
             exponent: 0.0,
+            stands_in_for: None,
         }),
-        Material::RoughGlass(ch06_fuzzy_reflections::material::RoughGlass {
+        Material::RoughGlass(common::scene::RoughGlass {
             int_ior: 1.33,
             ext_ior: 1.33,
             exponent: 10.0,
+            stands_in_for: None,
         }),
     ] {
         // `Half` vanishes only on average: it refracts half the time with weight 2 (F = 0)
@@ -234,7 +229,7 @@ fn rays_at_and_around_the_critical_angle_stay_finite() {
     let top = Quad::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
     let bottom = Quad::new(Vec3::new(-1e3, -1.0, -1e3), 2e3 * Vec3::X, 2e3 * Vec3::Z);
     for material in [
-        Material::from(SmoothMaterial::glass(1.5)),
+        SmoothMaterial::glass(1.5),
         Material::rough_glass(1.5, 0.0),
         Material::rough_glass(1.5, 100.0),
         Material::rough_glass(1.5, 1e6),

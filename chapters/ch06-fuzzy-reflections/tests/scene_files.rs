@@ -1,10 +1,11 @@
 //! Scene files: the chapter's own render, rough materials converted (with the note that says
 //! how), and broken or unknown materials refused with the shape they belong to.
 
-use ch06_fuzzy_reflections::Material;
+use ch06_fuzzy_reflections::CAPABILITIES;
 use ch06_fuzzy_reflections::agreement::scenes_dir;
-use ch06_fuzzy_reflections::scene_file::convert;
-use common::scene::{load_scene_file, parse_scene};
+use common::scene::Material;
+use common::scene::Scene;
+use common::scene_file::{load_scene_file, parse_scene};
 use common::test_support::{assert_refused, run_binary};
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch06-fuzzy-reflections");
@@ -48,35 +49,30 @@ fn every_shipped_scene_renders() {
 #[test]
 fn rough_materials_become_lobes_with_a_note() {
     let loaded = load_scene_file(&scenes_dir().join("rough-metal.xml"), &[]).unwrap();
-    let converted = convert(&loaded.scene).unwrap();
-    let Material::Glossy(floor) = converted.scene.materials[0] else {
-        panic!("the floor is glossy: {:?}", converted.scene.materials[0]);
+    let notes = CAPABILITIES.check(&loaded.scene).unwrap();
+    let Material::Glossy(floor) = loaded.scene.surfaces[0].material else {
+        panic!("the floor is glossy: {:?}", loaded.scene.surfaces[0]);
     };
     approx::assert_relative_eq!(floor.exponent, 198.0, max_relative = 1e-4);
     assert!(
-        converted
-            .notes
-            .iter()
-            .any(|n| n.contains("n = 2/alpha^2 - 2"))
+        notes.iter().any(|n| n.contains("n = 2/alpha^2 - 2")),
+        "{notes:?}"
     );
     // The frosted pane is a cube: six faces, each frosted glass.
     let loaded = load_scene_file(&scenes_dir().join("frosted-glass.xml"), &[]).unwrap();
-    let converted = convert(&loaded.scene).unwrap();
-    let frosted = converted
+    let frosted = loaded
         .scene
-        .materials
+        .surfaces
         .iter()
-        .filter(|m| matches!(m, Material::RoughGlass(_)))
+        .filter(|s| matches!(s.material, Material::RoughGlass(_)))
         .count();
     assert_eq!(frosted, 6);
-    assert_eq!(
-        converted.scene.materials.len(),
-        converted.scene.world.scene.materials.len()
-    );
+    assert_eq!(loaded.scene.surfaces.len(), loaded.scene.shape_count());
 }
 
-/// The scene file with `bsdf` as the material of its only shape, converted.
-fn convert_with(bsdf: &str) -> Result<ch06_fuzzy_reflections::scene_file::ConvertedScene, String> {
+/// The scene file with `bsdf` as the material of its only shape, loaded and checked against
+/// this chapter.
+fn convert_with(bsdf: &str) -> Result<Scene, String> {
     let xml = format!(
         r#"<scene version="3.0.0">
              <sensor type="perspective"><float name="fov" value="40"/><film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film></sensor>
@@ -85,26 +81,28 @@ fn convert_with(bsdf: &str) -> Result<ch06_fuzzy_reflections::scene_file::Conver
     );
     let loaded =
         parse_scene(&xml, std::path::Path::new("test.xml"), &[]).map_err(|e| e.to_string())?;
-    convert(&loaded.scene)
+    CAPABILITIES.check(&loaded.scene)?;
+    Ok(loaded.scene)
 }
 
 #[test]
 fn every_rough_material_is_read_and_wrong_ones_are_refused() {
-    let glossy =
-        convert_with(r#"<bsdf type="phong"><float name="exponent" value="50"/></bsdf>"#).unwrap();
-    assert!(matches!(glossy.scene.materials[0], Material::Glossy(g) if g.exponent == 50.0));
-    let two_sided = convert_with(
+    let material = |bsdf: &str| convert_with(bsdf).unwrap().surfaces[0].material;
+    let glossy = material(r#"<bsdf type="phong"><float name="exponent" value="50"/></bsdf>"#);
+    assert!(matches!(glossy, Material::Glossy(g) if g.exponent == 50.0));
+    let two_sided = material(
         r#"<bsdf type="twosided"><bsdf type="roughconductor"><float name="alpha" value="0.2"/></bsdf></bsdf>"#,
-    )
-    .unwrap();
-    assert!(matches!(two_sided.scene.materials[0], Material::Glossy(g) if g.two_sided));
-    let glass = convert_with(
+    );
+    assert!(matches!(two_sided, Material::Glossy(g) if g.two_sided));
+    let glass = material(
         r#"<bsdf type="roughdielectric"><string name="int_ior" value="water"/><float name="alpha" value="0.05"/></bsdf>"#,
-    )
-    .unwrap();
-    assert!(matches!(glass.scene.materials[0], Material::RoughGlass(g) if g.int_ior == 1.333));
+    );
+    assert!(matches!(glass, Material::RoughGlass(g) if g.int_ior == 1.333));
     for (bsdf, expected) in [
-        (r#"<bsdf type="plastic"/>"#, "not one this chapter renders"),
+        (
+            r#"<bsdf type="plastic"/>"#,
+            "is not one the workbook renders",
+        ),
         (
             r#"<bsdf type="roughconductor"><string name="material" value="Au"/></bsdf>"#,
             "measured metal data",
@@ -134,7 +132,8 @@ fn every_rough_material_is_read_and_wrong_ones_are_refused() {
             .err()
             .unwrap_or_else(|| panic!("{bsdf} was accepted"));
         assert!(message.contains(expected), "{bsdf}: {message}");
-        assert!(message.contains("shape 1"), "{bsdf}: {message}");
+        // The refusal points at the element in the file, on the shape's line.
+        assert!(message.contains("test.xml:3:"), "{bsdf}: {message}");
     }
 }
 

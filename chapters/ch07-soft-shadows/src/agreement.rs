@@ -6,13 +6,11 @@
 //! penumbrae. Mitsuba combines a light sample with a BSDF sample by multiple importance
 //! sampling; we send one shadow ray per light, so the noise differs a little, the mean not.
 
-use crate::scene_file::convert;
 use crate::{LightOptions, render_with};
+use ch05_motion_blur::scene_file::for_agreement;
 use ch06_fuzzy_reflections::TraceOptions;
 use common::image::Image;
-use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
-use common::render::{Budget, RenderSettings};
-use common::scene::load_scene_file;
+use common::metrics::{AgreementScene, MITSUBA_VARIANT};
 use std::path::{Path, PathBuf};
 
 /// The scenes compared, with what each one checks.
@@ -44,24 +42,18 @@ pub fn scenes_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
 }
 
-/// Our render of a scene file at [`AGREEMENT_SPP`] samples per pixel, with the file's lens,
+/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, with the file's lens,
 /// pixel sampler and filter, one shadow ray per light per hit.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let converted = convert(&loaded.scene).map_err(|e| format!("{}: {e}", path.display()))?;
-    let camera = &converted.scene.scene.world.scene.camera;
-    let settings = RenderSettings::new(camera.width, camera.height, AGREEMENT_SPP);
-    let sampler = ch03_anti_aliasing::cli::AntiAliasingArgs::default()
-        .pixel_sampler(converted.sampler, &Budget::Samples(AGREEMENT_SPP), 0)
-        .map_err(|e| e.to_string())?;
+    let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
     let rendered = render_with(
-        &converted.scene,
+        &world,
         LightOptions::default(),
         TraceOptions::default(),
-        &converted.lens,
+        &side.lens,
         &settings,
         &sampler,
-        &converted.filter,
+        &side.filter,
     );
     Ok(rendered.image)
 }

@@ -4,10 +4,11 @@
 
 use crate::sample_stream::SampleStream;
 use crate::scenes::{Builder, Builtin, DEFAULT_DEPTH, camera, floor, matte};
-use crate::{DiscWarp, LightOptions, LightStrata, SoftShadowScene, Strategy, render_with};
+use crate::{DiscWarp, LightOptions, LightStrata, Strategy, render_with};
 use anyhow::Context;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::TraceOptions;
 use common::cli::prepare_output_dir;
 use common::geometry::{Disc, Quad, Shape, Sphere, Triangle};
@@ -82,7 +83,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
 
 /// Renders `scene` at `width x height` with stratified pixel positions, box-filtered.
 fn render(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     lights: LightOptions,
     size: (u32, u32),
     spp: u64,
@@ -197,7 +198,7 @@ fn samples_per_light(out: &Path, q: &Quality) -> anyhow::Result<()> {
 }
 
 /// A floor with two balls under a small sphere light 3 above it.
-fn sphere_light_scene(radius: f32) -> SoftShadowScene {
+fn sphere_light_scene(radius: f32) -> MotionScene {
     let light = Sphere::new(Vec3::new(0.3, 3.0, 0.3), radius);
     Builder::new()
         .shape(floor(6.0), matte(Vec3::splat(0.7)))
@@ -241,7 +242,7 @@ fn sphere_strategies(out: &Path, q: &Quality) -> anyhow::Result<()> {
 
 /// A disc light of radius 1 only 1.4 above a floor with a ball and a block: close enough that
 /// the middle of the light and its rim light the floor very differently.
-fn disc_light_scene() -> SoftShadowScene {
+fn disc_light_scene() -> MotionScene {
     let disc = Disc::new(Vec3::new(0.0, 1.4, 0.0), -Vec3::Y, 1.0);
     Builder::new()
         .shape(floor(6.0), matte(Vec3::splat(0.7)))

@@ -21,9 +21,11 @@
 //! - [`mod@reference`]: exact irradiance from polygons, discs and spheres, for the tests.
 //! - [`sample_stream`], [`light_options`]: the sample's numbers for the shadow rays, and how
 //!   many rays each light gets.
-//! - [`lighting`], [`scene`]: chapter 06's tracer lit by area lights; [`render_with`].
-//! - [`scenes`], [`scene_file`], [`agreement`]: what to look at, and the check against
-//!   Mitsuba 3; [`cli`]: the light options of `render`; [`figures`]: the chapter's figures.
+//! - [`lighting`], [`scene`]: chapter 06's tracer lit by a scene's area lights;
+//!   [`render_with`].
+//! - [`scenes`], [`agreement`], [`CAPABILITIES`]: what to look at, the check against
+//!   Mitsuba 3, what of a scene the chapter renders; [`cli`]: the light options of `render`;
+//!   [`figures`]: the chapter's figures.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -41,7 +43,6 @@ pub mod lighting;
 pub mod reference;
 pub mod sample_stream;
 pub mod scene;
-pub mod scene_file;
 pub mod scenes;
 pub mod solid_angle;
 
@@ -55,21 +56,29 @@ pub use light_options::{LightOptions, LightStrata};
 pub use light_sample::{LightSample, LightSampling, Strategy};
 pub use light_samples::light_samples;
 pub use lighting::AreaLighting;
-pub use scene::SoftShadowScene;
+pub use scene::AreaLights;
 
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::TimeSampler;
+use ch05_motion_blur::{MotionScene, TimeSampler};
+use ch06_fuzzy_reflections::MICROFACET_AS_LOBE;
 use ch06_fuzzy_reflections::TraceOptions;
 use common::film::Filter;
 use common::render::{RenderOutput, RenderSettings};
+use common::scene::{Capabilities, Chapter, Feature};
+
+/// What chapter 07 renders of a scene: chapter 06's, lit by area lights too.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::SOFT_SHADOWS,
+    approximates: &[(Feature::MicrofacetMaterial, MICROFACET_AS_LOBE)],
+};
 
 // ANCHOR: render_with
-/// Renders `scene` through `lens` with chapter 06's tracer, its lights sampled as `lights`
-/// says. Each sample draws, in order: the pixel position, the time and the lens point (each
-/// only when needed), then per bounce the glass and lobe numbers and, at a matte hit, the
+/// Renders `world` through `lens` with chapter 06's tracer, its area lights sampled as
+/// `lights` says. Each sample draws, in order: the pixel position, the time and the lens point
+/// (each only when needed), then per bounce the glass and lobe numbers and, at a matte hit, the
 /// points on each area light. Without area lights this is chapter 06's render, bit for bit.
 pub fn render_with<S: TimeSampler>(
-    scene: &SoftShadowScene,
+    world: &MotionScene,
     lights: LightOptions,
     options: TraceOptions,
     lens: &Lens,
@@ -77,15 +86,8 @@ pub fn render_with<S: TimeSampler>(
     sampler: &S,
     filter: &dyn Filter,
 ) -> RenderOutput {
-    let lighting = scene.lighting(lights);
-    ch06_fuzzy_reflections::render_with(
-        &scene.scene,
-        &lighting,
-        options,
-        lens,
-        settings,
-        sampler,
-        filter,
-    )
+    let area_lights = AreaLights::of(&world.scene);
+    let lighting = area_lights.lighting(lights);
+    ch06_fuzzy_reflections::render_with(world, &lighting, options, lens, settings, sampler, filter)
 }
 // ANCHOR_END: render_with

@@ -4,15 +4,15 @@
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::cli::LensArgs;
+use ch05_motion_blur::scene_file::{motion_for_render, read_with_camera_side};
 use ch05_motion_blur::{StratifiedTime, TimeSampling};
 use ch06_fuzzy_reflections::cli::{FuzzyArgs, parse_number};
 use ch07_soft_shadows::cli::LightArgs;
-use ch07_soft_shadows::scene::SoftShadowScene;
-use ch07_soft_shadows::scene_file::convert;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+use ch07_soft_shadows::{AreaLights, CAPABILITIES};
 use ch07_soft_shadows::{figures, render_with};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
+use common::cli::{FiguresArgs, RenderArgs, report_error};
 use common::render::Budget;
 use std::process::ExitCode;
 
@@ -81,19 +81,19 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (scene, scene_lens, file_filter, file_sampler, default_spp, scene_name) =
         match command.args.scene_file()? {
             Some(path) => {
-                let converted =
-                    read_scene_file(path, &command.args.define, convert, |c| &c.notes[..])?;
+                let (scene, side) =
+                    read_with_camera_side(path, &command.args.define, &CAPABILITIES)?;
                 (
-                    converted.scene,
-                    converted.lens,
-                    Some(converted.filter),
-                    Some(converted.sampler),
-                    converted.spp,
+                    scene,
+                    side.lens,
+                    Some(side.filter),
+                    Some(side.sampler),
+                    side.spp,
                     path.display().to_string(),
                 )
             }
             None => (
-                command.builtin.build(DEFAULT_DEPTH, light_scale),
+                command.builtin.build(DEFAULT_DEPTH, light_scale).scene,
                 Lens::PINHOLE,
                 None,
                 None,
@@ -101,18 +101,16 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
                 command.builtin.name().to_string(),
             ),
         };
-    let scene = SoftShadowScene {
-        scene: command.fuzzy.apply(scene.scene)?,
-        ..scene
-    };
+    let scene = command.fuzzy.apply(scene)?;
+    let world = motion_for_render(scene).map_err(|e| anyhow::anyhow!("{scene_name}: {e}"))?;
+    let world = &world;
     let lens = command.lens.lens_or_pinhole(scene_lens)?;
     let filter = command.anti_aliasing.filter(file_filter)?;
     let sampler_kind = command.anti_aliasing.sampler_kind(file_sampler);
-    let world = &scene.scene.world;
-    let camera = world.scene.camera;
+    let film = world.scene.film;
     let settings = command
         .args
-        .settings((camera.width, camera.height), default_spp)?;
+        .settings((film.width, film.height), default_spp)?;
     let pixel_sampler =
         command
             .anti_aliasing
@@ -125,10 +123,10 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let rendered = match (time_sampling, settings.budget) {
         (TimeSampling::Stratified, Budget::Samples(spp)) => {
             let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
-            render_with(&scene, lights, options, &lens, &settings, &sampler, &filter)
+            render_with(world, lights, options, &lens, &settings, &sampler, &filter)
         }
         _ => render_with(
-            &scene,
+            world,
             lights,
             options,
             &lens,
@@ -139,14 +137,14 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     };
     let mut extra = serde_json::json!({
         "scene": scene_name,
-        "area_lights": scene.lights.len(),
-        "point_lights": scene.scene.world.scene.lights.len(),
+        "area_lights": AreaLights::of(&world.scene).lights.len(),
+        "point_lights": world.scene.point_lights.len(),
         "light_scale": command.args.scene.is_none().then_some(light_scale),
         "light_samples": lights.samples,
         "light_strata": lights.strata.name(),
         "light_sampling": lights.sampling.strategy.name(),
         "disc_warp": lights.sampling.disc_warp.name(),
-        "max_depth": scene.scene.world.scene.max_depth,
+        "max_depth": world.scene.max_depth,
         "sampler": sampler_kind.name(),
         "filter": filter.kind().name(),
         "filter_radius": filter.half_width(),

@@ -12,15 +12,10 @@
 //! - `glossy`: chapter 06's glossy floor reflecting a sphere light and a panel, with a mirror
 //!   ball: the lights reach the floor's reflection only through the rays it traces.
 
-use crate::scene::SoftShadowScene;
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::Material as SmoothMaterial;
-use ch01_whitted::scene::SceneBuilder;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::scenes::box_faces;
-use ch06_fuzzy_reflections::{FuzzyScene, Material};
 use common::geometry::{Disc, Quad, Shape, Sphere, Triangle};
+use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder};
 use glam::Vec3;
 
 /// The scenes `render --builtin NAME` knows.
@@ -55,7 +50,7 @@ impl Builtin {
     ];
 
     /// Builds the scene with every area light scaled by `light_scale` (power kept).
-    pub fn build(self, max_depth: u32, light_scale: f32) -> SoftShadowScene {
+    pub fn build(self, max_depth: u32, light_scale: f32) -> MotionScene {
         match self {
             Builtin::Small => panel(SMALL_PANEL * light_scale, max_depth),
             Builtin::Large => panel(10.0 * SMALL_PANEL * light_scale, max_depth),
@@ -77,33 +72,22 @@ impl Builtin {
     }
 }
 
-/// Shapes with materials and lights, collected in matching order.
+/// Shapes with materials, area lights and point lights.
 pub struct Builder {
-    smooth: SceneBuilder,
-    materials: Vec<Material>,
-    emitters: Vec<(usize, Vec3)>,
+    scene: SceneBuilder,
 }
 
 impl Builder {
     /// An empty scene with a black background.
     pub fn new() -> Self {
         Self {
-            smooth: SceneBuilder::new(),
-            materials: Vec::new(),
-            emitters: Vec::new(),
+            scene: SceneBuilder::new(),
         }
     }
 
     /// Adds a shape made of `material`.
     pub fn shape(mut self, shape: Shape, material: Material) -> Self {
-        // Chapter 01's scene keeps a material per shape too; fuzzy ones stand in as black
-        // matte there, which chapter 06's tracer never reads.
-        let stand_in = match material {
-            Material::Smooth(smooth) => smooth,
-            _ => SmoothMaterial::diffuse(Vec3::ZERO),
-        };
-        self.smooth = self.smooth.shape(shape, stand_in);
-        self.materials.push(material);
+        self.scene = self.scene.shape(shape, material);
         self
     }
 
@@ -117,13 +101,13 @@ impl Builder {
     /// Adds an area light: `shape` glowing with `radiance` on its front side, its surface
     /// black (a lamp that reflects nothing).
     pub fn area_light(mut self, shape: Shape, radiance: Vec3) -> Self {
-        self.emitters.push((self.materials.len(), radiance));
-        self.shape(shape, matte(Vec3::ZERO))
+        self.scene = self.scene.area_light(shape, matte(Vec3::ZERO), radiance);
+        self
     }
 
     /// Adds a point light.
     pub fn point_light(mut self, position: Vec3, intensity: Vec3) -> Self {
-        self.smooth = self.smooth.light(PointLight {
+        self.scene = self.scene.light(PointLight {
             position,
             intensity,
         });
@@ -131,10 +115,8 @@ impl Builder {
     }
 
     /// Builds the BVH and the scene.
-    pub fn build(self, camera: PinholeCamera, max_depth: u32) -> SoftShadowScene {
-        let world = MotionScene::still(self.smooth.build(camera, max_depth));
-        let scene = FuzzyScene::new(world, self.materials).expect("one material per shape");
-        SoftShadowScene::new(scene, &self.emitters).expect("the built-in lights are valid")
+    pub fn build(self, (camera, film): (Camera, FilmSettings), max_depth: u32) -> MotionScene {
+        MotionScene::still(self.scene.build(camera, film, max_depth))
     }
 }
 
@@ -146,14 +128,17 @@ impl Default for Builder {
 
 /// A matte material of `albedo`.
 pub fn matte(albedo: Vec3) -> Material {
-    SmoothMaterial::diffuse(albedo).into()
+    Material::diffuse(albedo)
 }
 
 /// The camera of the built-in scenes: 320 x 240, looking from `origin` at `target`.
-pub fn camera(origin: Vec3, target: Vec3, fov_x_degrees: f32) -> PinholeCamera {
+pub fn camera(origin: Vec3, target: Vec3, fov_x_degrees: f32) -> (Camera, FilmSettings) {
     let frame = CameraFrame::look_at(origin, target, Vec3::Y)
         .expect("the camera looks along a valid direction");
-    PinholeCamera::new(frame, fov_x_degrees, 320, 240)
+    (
+        Camera::pinhole(frame, fov_x_degrees),
+        FilmSettings::new(320, 240),
+    )
 }
 
 /// The square panel of side `side` centred at `center`, facing down (`e1 × e2 = x × z = -y`).
@@ -187,7 +172,7 @@ const RED: Vec3 = Vec3::new(0.8, 0.2, 0.15);
 const BLUE: Vec3 = Vec3::new(0.2, 0.35, 0.8);
 
 /// The lecture's scene: a panel of side `side` at height 3 over a ball and a block.
-fn panel(side: f32, max_depth: u32) -> SoftShadowScene {
+fn panel(side: f32, max_depth: u32) -> MotionScene {
     let radiance = Vec3::splat(RADIANCE_AREA / (side * side));
     Builder::new()
         .shape(floor(8.0), matte(FLOOR))
@@ -213,7 +198,7 @@ fn panel(side: f32, max_depth: u32) -> SoftShadowScene {
 }
 
 /// One light of each shape, each over its own ball, all of the same power.
-fn shapes(scale: f32, max_depth: u32) -> SoftShadowScene {
+fn shapes(scale: f32, max_depth: u32) -> MotionScene {
     let s = scale;
     let h = 2.2;
     let radiance = |area: f32| Vec3::new(1.0, 0.95, 0.85) * (0.5 * RADIANCE_AREA / area);
@@ -250,7 +235,7 @@ fn shapes(scale: f32, max_depth: u32) -> SoftShadowScene {
 }
 
 /// Red, green and blue discs and a dim white point light over one ball.
-fn several(scale: f32, max_depth: u32) -> SoftShadowScene {
+fn several(scale: f32, max_depth: u32) -> MotionScene {
     let radius = 0.4 * scale;
     let area = std::f32::consts::PI * radius * radius;
     let mut builder = Builder::new()
@@ -281,7 +266,7 @@ fn several(scale: f32, max_depth: u32) -> SoftShadowScene {
 }
 
 /// Chapter 06's glossy floor reflecting a sphere light and a panel; a mirror ball.
-fn glossy(scale: f32, max_depth: u32) -> SoftShadowScene {
+fn glossy(scale: f32, max_depth: u32) -> MotionScene {
     let ball = Sphere::new(Vec3::new(1.2, 1.2, -1.5), 0.25 * scale);
     let side = 1.2 * scale;
     Builder::new()
@@ -295,10 +280,7 @@ fn glossy(scale: f32, max_depth: u32) -> SoftShadowScene {
             matte(Vec3::splat(0.6)),
         )
         .shape(sphere(Vec3::new(-1.3, 0.5, -0.6), 0.5), matte(RED))
-        .shape(
-            sphere(Vec3::new(0.1, 0.6, -1.0), 0.6),
-            SmoothMaterial::mirror().into(),
-        )
+        .shape(sphere(Vec3::new(0.1, 0.6, -1.0), 0.6), Material::mirror())
         .shape(sphere(Vec3::new(1.5, 0.4, 0.2), 0.4), matte(BLUE))
         .area_light(
             Shape::Sphere(ball),

@@ -8,7 +8,7 @@ use ch04_depth_of_field::Lens;
 use ch06_fuzzy_reflections::scenes::Builtin as FuzzyBuiltin;
 use ch06_fuzzy_reflections::{PointLights, TraceOptions};
 use ch07_soft_shadows::scenes::{Builder, Builtin, camera, floor, matte};
-use ch07_soft_shadows::{DiscWarp, LightOptions, LightStrata, SoftShadowScene, Strategy};
+use ch07_soft_shadows::{DiscWarp, LightOptions, LightStrata, Strategy};
 use common::Ray;
 use common::film::PixelBoxFilter;
 use common::geometry::{Quad, Shape, Sphere};
@@ -53,7 +53,7 @@ fn without_area_lights_the_render_is_chapter_06s_bit_for_bit() {
             &IndependentSampler::new(3),
             &PixelBoxFilter,
         );
-        let scene = SoftShadowScene::without_lights(build());
+        let scene = build();
         for options in [
             LightOptions::default(),
             LightOptions::with_samples(16).with_strata(LightStrata::Independent),

@@ -1,19 +1,37 @@
-//! The chapter's scene files convert, with their lights where the file puts them: one light
-//! per piece of a shape (six for a cube, one per triangle of a mesh), each with the file's
+//! The chapter's scene files load with their lights where the file puts them: one light per
+//! piece of a shape (six for a cube, one per triangle of a mesh), each with the file's
 //! radiance; what the chapter cannot render is refused with the shape's position.
 
 use ch07_soft_shadows::light::LightShape;
-use ch07_soft_shadows::scene_file::convert;
-use common::scene::{load_scene_file, parse_scene};
+use ch07_soft_shadows::{AreaLights, CAPABILITIES};
+use common::scene::Scene;
+use common::scene_file::{load_scene_file, parse_scene};
 use glam::Vec3;
 use std::path::Path;
 
-fn converted(name: &str) -> ch07_soft_shadows::scene_file::ConvertedScene {
+/// A scene file as this chapter sees it: the scene, its area lights, the notes of the check.
+struct Converted {
+    scene: Scene,
+    lights: AreaLights,
+    notes: Vec<String>,
+}
+
+/// `scene` checked against this chapter, with its lights.
+fn convert(scene: Scene) -> Result<Converted, String> {
+    let notes = CAPABILITIES.check(&scene)?;
+    Ok(Converted {
+        lights: AreaLights::of(&scene),
+        scene,
+        notes,
+    })
+}
+
+fn converted(name: &str) -> Converted {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(name);
     let loaded = load_scene_file(&path, &[]).unwrap();
-    convert(&loaded.scene).unwrap_or_else(|e| panic!("{name}: {e}"))
+    convert(loaded.scene).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
 #[test]
@@ -25,13 +43,13 @@ fn every_shipped_scene_converts_with_its_lights() {
         ("several-lights.xml", 6 + 2),
     ];
     for (name, lights) in cases {
-        let scene = converted(name).scene;
-        assert_eq!(scene.lights.len(), lights, "{name}");
+        let file = converted(name);
+        assert_eq!(file.lights.lights.len(), lights, "{name}");
         // Every light is a shape of the world, and the table points back at it.
-        let shapes = scene.scene.world.scene.geometry.shapes();
-        for (shape, entry) in shapes.iter().zip(&scene.light_of_shape) {
+        let shapes = file.scene.geometry.shapes();
+        for (shape, entry) in shapes.iter().zip(&file.lights.light_of_shape) {
             if let Some(index) = entry {
-                let light = scene.lights[*index as usize];
+                let light = file.lights.lights[*index as usize];
                 assert_eq!(
                     light.shape,
                     ch07_soft_shadows::scene::light_shape(shape),
@@ -51,7 +69,8 @@ fn every_shipped_scene_converts_with_its_lights() {
 
 #[test]
 fn a_cube_light_is_six_parallelograms_and_a_mesh_one_triangle_per_face() {
-    let scene = converted("several-lights.xml").scene;
+    let file = converted("several-lights.xml");
+    let scene = &file.lights;
     let kinds: Vec<_> = scene
         .lights
         .iter()
@@ -77,12 +96,12 @@ fn a_cube_light_is_six_parallelograms_and_a_mesh_one_triangle_per_face() {
         };
         assert!((t.p[1] - t.p[0]).cross(t.p[2] - t.p[0]).y < 0.0);
     }
-    assert_eq!(scene.scene.world.scene.lights.len(), 1, "the point light");
+    assert_eq!(file.scene.point_lights.len(), 1, "the point light");
 }
 
-fn convert_text(text: &str) -> Result<ch07_soft_shadows::scene_file::ConvertedScene, String> {
+fn convert_text(text: &str) -> Result<Converted, String> {
     let loaded = parse_scene(text, Path::new("test.xml"), &[]).map_err(|e| e.to_string())?;
-    convert(&loaded.scene)
+    convert(loaded.scene)
 }
 
 const SENSOR: &str = r#"<sensor type="perspective"><float name="fov" value="40"/>
@@ -101,14 +120,14 @@ fn a_scene_without_lights_is_chapter_06s_and_the_integrator_notes_follow_the_dep
         )
     };
     let dark = convert_text(&text("", "")).unwrap();
-    assert!(dark.scene.lights.is_empty());
-    assert_eq!(dark.scene.light_of_shape, vec![None, None]);
+    assert!(dark.lights.lights.is_empty());
+    assert_eq!(dark.lights.light_of_shape, vec![None, None]);
     let lit = convert_text(&text(
         r#"<integrator type="path"><integer name="max_depth" value="8"/></integrator>"#,
         r#"<emitter type="area"><rgb name="radiance" value="2, 2, 2"/></emitter>"#,
     ))
     .unwrap();
-    assert_eq!(lit.scene.light_of_shape, vec![None, Some(0)]);
+    assert_eq!(lit.lights.light_of_shape, vec![None, Some(0)]);
     assert!(
         lit.notes.iter().any(|n| n.contains("indirect")),
         "{:?}",
@@ -133,8 +152,9 @@ fn a_sphere_light_turned_inside_out_is_refused() {
         <emitter type="area"><rgb name="radiance" value="1, 1, 1"/></emitter></shape></scene>"#
     );
     let error = convert_text(&text).err().unwrap();
+    // The loader refuses it where the shape is written (line 4 of the text).
     assert!(
-        error.contains("flip_normals") && error.contains("shape 1"),
+        error.contains("flip_normals") && error.contains("test.xml:4:"),
         "{error}"
     );
 }

@@ -5,11 +5,12 @@
 
 mod support;
 
+use ch05_motion_blur::MotionScene;
 use ch07_soft_shadows::reference::{
     disc_on_axis_irradiance, polygon_irradiance, sphere_irradiance,
 };
 use ch07_soft_shadows::scenes::{Builder, camera, floor, matte};
-use ch07_soft_shadows::{DiscWarp, LightOptions, LightStrata, SoftShadowScene, Strategy};
+use ch07_soft_shadows::{DiscWarp, LightOptions, LightStrata, Strategy};
 use common::Ray;
 use common::geometry::{Disc, Quad, Shape, Sphere, Triangle};
 use glam::Vec3;
@@ -17,7 +18,7 @@ use std::f32::consts::FRAC_1_PI;
 use support::{ALBEDO, mean_radiance, panel, relative_rmse, render, scene_with_light};
 
 /// A floor of albedo [`ALBEDO`] lit by `light` alone.
-fn floor_under(light: Shape, radiance: Vec3) -> SoftShadowScene {
+fn floor_under(light: Shape, radiance: Vec3) -> MotionScene {
     Builder::new()
         .shape(floor(6.0), matte(Vec3::splat(ALBEDO)))
         .area_light(light, radiance)
@@ -30,7 +31,7 @@ fn down_at(x: f32, z: f32, height: f32) -> Ray {
 }
 
 fn assert_unbiased(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     ray: &Ray,
     irradiance: Vec3,
     options: LightOptions,

@@ -15,16 +15,14 @@
 //!   and stops at matte surfaces; the path tracer follows one ray and bounces on, so the
 //!   times differ by design. It is reported so that the difference is seen, not hidden.
 
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::Scene;
 use ch01_whitted::scenes::Builtin;
 use ch05_motion_blur::MotionScene;
-use ch06_fuzzy_reflections::FuzzyScene;
-use ch07_soft_shadows::SoftShadowScene;
 use ch08_path_tracing::{Method, PathOptions};
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
+use common::scene::Material;
+use common::scene::Scene;
 use divan::Bencher;
 use divan::counter::ItemsCount;
 use glam::Vec3;
@@ -49,12 +47,12 @@ fn settings() -> RenderSettings {
 fn cornell(max_depth: u32, matte: bool) -> Scene {
     let mut scene = Builtin::Cornell.build(max_depth);
     if matte {
-        for material in &mut scene.materials {
+        for surface in &mut scene.surfaces {
             if matches!(
-                material,
+                surface.material,
                 Material::Mirror { .. } | Material::Dielectric { .. }
             ) {
-                *material = Material::diffuse(Vec3::splat(0.73));
+                surface.material = Material::diffuse(Vec3::splat(0.73));
             }
         }
     }
@@ -62,8 +60,8 @@ fn cornell(max_depth: u32, matte: bool) -> Scene {
 }
 
 /// The same scene as chapter 08 renders it: no motion, no area lights, smooth materials.
-fn for_path_tracer(scene: Scene) -> SoftShadowScene {
-    SoftShadowScene::without_lights(FuzzyScene::smooth(MotionScene::still(scene)))
+fn for_path_tracer(scene: Scene) -> MotionScene {
+    MotionScene::still(scene)
 }
 
 fn whitted(bencher: Bencher, max_depth: u32, matte: bool) {

@@ -5,12 +5,11 @@
 //! point light and the environment. Both renderers pick one light uniformly and combine light
 //! and BSDF samples with the power heuristic, so even the noise should be alike.
 
-use crate::scene_file::convert;
+use crate::scene_file::path_options;
 use crate::{Method, render_with};
+use ch05_motion_blur::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
-use common::render::{Budget, RenderSettings};
-use common::scene::load_scene_file;
+use common::metrics::{AgreementScene, MITSUBA_VARIANT};
 use std::path::{Path, PathBuf};
 
 /// The scenes compared, with what each one checks.
@@ -32,24 +31,18 @@ pub fn scenes_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
 }
 
-/// Our render of a scene file at [`AGREEMENT_SPP`] samples per pixel, with the file's
+/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, with the file's
 /// integrator settings.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let scene = convert(&loaded.scene).map_err(|e| format!("{}: {e}", path.display()))?;
-    let converted = &scene.converted;
-    let camera = &converted.scene.scene.world.scene.camera;
-    let settings = RenderSettings::new(camera.width, camera.height, AGREEMENT_SPP);
-    let sampler = ch03_anti_aliasing::cli::AntiAliasingArgs::default()
-        .pixel_sampler(converted.sampler, &Budget::Samples(AGREEMENT_SPP), 0)
-        .map_err(|e| e.to_string())?;
+    let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    let options = path_options(&world.scene);
     let rendered = render_with(
-        &converted.scene,
-        Method::new(scene.options),
-        &converted.lens,
+        &world,
+        Method::new(options),
+        &side.lens,
         &settings,
         &sampler,
-        &converted.filter,
+        &side.filter,
     );
     Ok(rendered.image)
 }

@@ -17,10 +17,10 @@ pub mod glossy;
 pub mod mirror;
 pub mod rough_glass;
 
-use ch01_whitted::material::Material as SmoothMaterial;
-use ch06_fuzzy_reflections::{FuzzMethod, Material};
+use ch06_fuzzy_reflections::FuzzMethod;
 use common::geometry::SurfaceHit;
 use common::sampler::Sampler;
+use common::scene::Material;
 use glam::Vec3;
 
 /// A sampled direction and what it carries.
@@ -62,10 +62,8 @@ impl Bsdf<'_> {
     /// help it, so the path tracer sends none.
     pub fn is_delta(&self) -> bool {
         match self.material {
-            Material::Smooth(SmoothMaterial::Mirror { .. } | SmoothMaterial::Dielectric { .. }) => {
-                true
-            }
-            Material::Smooth(_) => false,
+            Material::Mirror { .. } | Material::Dielectric { .. } => true,
+            Material::Diffuse { .. } | Material::CheckeredDiffuse { .. } => false,
             Material::Glossy(g) => !g.exponent.is_finite(),
             Material::RoughGlass(g) => !g.exponent.is_finite(),
         }
@@ -77,23 +75,21 @@ impl Bsdf<'_> {
     pub fn sample<S: Sampler>(&self, wo: Vec3, sampler: &mut S) -> Option<BsdfSample> {
         let hit = self.hit;
         match *self.material {
-            Material::Smooth(SmoothMaterial::Diffuse { albedo, two_sided }) => {
+            Material::Diffuse { albedo, two_sided } => {
                 diffuse::sample(hit, wo, albedo, two_sided, sampler.get_2d())
             }
-            Material::Smooth(SmoothMaterial::CheckeredDiffuse {
+            Material::CheckeredDiffuse {
                 checkerboard,
                 two_sided,
-            }) => diffuse::sample(
+            } => diffuse::sample(
                 hit,
                 wo,
                 checkerboard.eval(hit.uv),
                 two_sided,
                 sampler.get_2d(),
             ),
-            Material::Smooth(SmoothMaterial::Mirror { reflectance }) => {
-                mirror::sample(hit, wo, reflectance)
-            }
-            Material::Smooth(SmoothMaterial::Dielectric { int_ior, ext_ior }) => {
+            Material::Mirror { reflectance } => mirror::sample(hit, wo, reflectance),
+            Material::Dielectric { int_ior, ext_ior } => {
                 dielectric::sample(hit, wo, int_ior, ext_ior, sampler.get_1d())
             }
             Material::Glossy(g) => {
@@ -124,14 +120,14 @@ impl Bsdf<'_> {
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         let hit = self.hit;
         match *self.material {
-            Material::Smooth(SmoothMaterial::Diffuse { albedo, two_sided }) => {
+            Material::Diffuse { albedo, two_sided } => {
                 diffuse::eval(hit, wo, wi, albedo, two_sided)
             }
-            Material::Smooth(SmoothMaterial::CheckeredDiffuse {
+            Material::CheckeredDiffuse {
                 checkerboard,
                 two_sided,
-            }) => diffuse::eval(hit, wo, wi, checkerboard.eval(hit.uv), two_sided),
-            Material::Smooth(_) => Vec3::ZERO,
+            } => diffuse::eval(hit, wo, wi, checkerboard.eval(hit.uv), two_sided),
+            Material::Mirror { .. } | Material::Dielectric { .. } => Vec3::ZERO,
             Material::Glossy(g) => glossy::eval(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => rough_glass::eval(hit, wo, wi, &g, self.fuzz),
         }
@@ -142,11 +138,10 @@ impl Bsdf<'_> {
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         let hit = self.hit;
         match *self.material {
-            Material::Smooth(
-                SmoothMaterial::Diffuse { two_sided, .. }
-                | SmoothMaterial::CheckeredDiffuse { two_sided, .. },
-            ) => diffuse::pdf(hit, wo, wi, two_sided),
-            Material::Smooth(_) => 0.0,
+            Material::Diffuse { two_sided, .. } | Material::CheckeredDiffuse { two_sided, .. } => {
+                diffuse::pdf(hit, wo, wi, two_sided)
+            }
+            Material::Mirror { .. } | Material::Dielectric { .. } => 0.0,
             Material::Glossy(g) => glossy::pdf(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => rough_glass::pdf(hit, wo, wi, &g, self.fuzz),
         }
@@ -178,15 +173,15 @@ pub(crate) mod test_support;
 #[cfg(test)]
 mod tests {
     use super::test_support::check_consistent;
-    use ch01_whitted::material::Material as Smooth;
-    use ch06_fuzzy_reflections::Material;
+    use common::scene::Material as Smooth;
+    use common::scene::Material;
     use glam::Vec3;
 
     #[test]
     fn sampling_eval_and_pdf_describe_the_same_material() {
         let materials = [
-            Material::from(Smooth::diffuse(Vec3::splat(0.8))),
-            Material::from(Smooth::two_sided_diffuse(Vec3::splat(0.5))),
+            Smooth::diffuse(Vec3::splat(0.8)),
+            Smooth::two_sided_diffuse(Vec3::splat(0.5)),
             Material::glossy(Vec3::splat(0.9), 0.0),
             Material::glossy(Vec3::splat(0.9), 50.0),
             Material::rough_glass(1.5, 10.0),
@@ -210,9 +205,9 @@ mod tests {
     #[test]
     fn smooth_glass_splits_by_fresnel() {
         // Normal incidence on glass of 1.5: F = 0.04.
-        let (_, deltas) = check_consistent(&Material::from(Smooth::glass(1.5)), Vec3::Y, 20_000);
+        let (_, deltas) = check_consistent(&Smooth::glass(1.5), Vec3::Y, 20_000);
         assert_eq!(deltas, 1.0);
-        let (weight, _) = check_consistent(&Material::from(Smooth::glass(1.5)), Vec3::Y, 20_000);
+        let (weight, _) = check_consistent(&Smooth::glass(1.5), Vec3::Y, 20_000);
         // E[weight] = F + (1 - F) / 1.5² = 0.04 + 0.96 / 2.25.
         let expected = 0.04 + 0.96 / 2.25;
         assert!((weight.x - expected).abs() < 0.01, "{weight} vs {expected}");

@@ -14,8 +14,8 @@
 
 use crate::{Method, render_with};
 use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::TimeSampler;
-use ch07_soft_shadows::SoftShadowScene;
 use common::film::Filter;
 use common::render::{RenderOutput, RenderSettings};
 use common::sampler::Sampler;
@@ -179,7 +179,7 @@ impl<S> Drop for CountingSampler<'_, S> {
 /// [`CountingSampler`].
 pub fn render_counted<S: TimeSampler>(
     count: bool,
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     method: Method,
     lens: &Lens,
     settings: &RenderSettings,

@@ -31,16 +31,17 @@ pub mod ray_tree;
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
 use crate::nee::point_lights;
-use ch01_whitted::material::Material as SmoothMaterial;
 use ch01_whitted::scene::World;
 use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::{CameraRays, TimeSampler};
-use ch06_fuzzy_reflections::{FuzzMethod, Lighting, Material};
-use ch07_soft_shadows::{AreaLighting, LightOptions, SoftShadowScene};
+use ch06_fuzzy_reflections::{FuzzMethod, Lighting};
+use ch07_soft_shadows::{AreaLighting, AreaLights, LightOptions};
 use common::Ray;
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings, SampleCounters};
 use common::sampler::Sampler;
+use common::scene::Material;
 use glam::Vec3;
 
 /// How many samples each effect takes at every hit, and how deep the tree may grow.
@@ -83,7 +84,7 @@ impl DistributionOptions {
 #[derive(Clone, Copy)]
 pub struct DistributionTracer<'a> {
     /// The scene.
-    pub scene: &'a SoftShadowScene,
+    pub world: &'a MotionScene,
     /// Chapter 07's lights for matte surfaces, with `light_samples` rays per light.
     pub lighting: AreaLighting<'a>,
     /// The same lights as one list: the point lights' highlights on glossy surfaces.
@@ -97,12 +98,16 @@ pub struct DistributionTracer<'a> {
 impl<'a> DistributionTracer<'a> {
     /// The tracer for `scene`, lights sampled as chapter 07's defaults (spheres by solid
     /// angle), lobes `cos^n`.
-    pub fn new(scene: &'a SoftShadowScene, options: DistributionOptions) -> Self {
+    pub fn new(
+        world: &'a MotionScene,
+        area_lights: &'a AreaLights,
+        options: DistributionOptions,
+    ) -> Self {
         let light_options = LightOptions::with_samples(options.light_samples.max(1));
         Self {
-            scene,
-            lighting: scene.lighting(light_options),
-            lights: SceneLights::of(scene, light_options.sampling),
+            world,
+            lighting: area_lights.lighting(light_options),
+            lights: SceneLights::of(world, area_lights, light_options.sampling),
             options,
             fuzz: FuzzMethod::Lobe,
         }
@@ -130,9 +135,9 @@ impl<'a> DistributionTracer<'a> {
         counters: &mut SampleCounters,
     ) -> Vec3 {
         counters.rays += 1;
-        let world = &self.scene.scene.world;
+        let world = self.world;
         let Some(hit) = world.intersect(ray) else {
-            return world.scene.background;
+            return world.scene.environment;
         };
         let mut radiance = if count_emission {
             self.lighting.emitted(&hit, ray)
@@ -143,7 +148,7 @@ impl<'a> DistributionTracer<'a> {
             return radiance; // no segment left to carry reflected light
         }
         let bsdf = Bsdf {
-            material: &self.scene.scene.materials[hit.shape as usize],
+            material: &self.world.scene.surface(hit.shape).material,
             hit: &hit,
             fuzz: self.fuzz,
         };
@@ -202,27 +207,18 @@ impl<'a> DistributionTracer<'a> {
         if bsdf.is_delta() {
             return Vec3::ZERO;
         }
-        point_lights(
-            &self.scene.scene.world,
-            &self.lights,
-            bsdf,
-            wo,
-            time,
-            counters,
-        )
+        point_lights(self.world, &self.lights, bsdf, wo, time, counters)
     }
 }
 
 /// The albedo and sidedness of a matte material (its checkerboard read at the hit).
 fn matte(bsdf: &Bsdf) -> Option<(Vec3, bool)> {
     match *bsdf.material {
-        Material::Smooth(SmoothMaterial::Diffuse { albedo, two_sided }) => {
-            Some((albedo, two_sided))
-        }
-        Material::Smooth(SmoothMaterial::CheckeredDiffuse {
+        Material::Diffuse { albedo, two_sided } => Some((albedo, two_sided)),
+        Material::CheckeredDiffuse {
             checkerboard,
             two_sided,
-        }) => Some((checkerboard.eval(bsdf.hit.uv), two_sided)),
+        } => Some((checkerboard.eval(bsdf.hit.uv), two_sided)),
         _ => None,
     }
 }
@@ -231,27 +227,27 @@ fn matte(bsdf: &Bsdf) -> Option<(Vec3, bool)> {
 /// is not glass): `k` copies of it would trace the same ray `k` times.
 fn single_direction(bsdf: &Bsdf) -> bool {
     match *bsdf.material {
-        Material::Smooth(SmoothMaterial::Mirror { .. }) => true,
+        Material::Mirror { .. } => true,
         Material::Glossy(g) => !g.exponent.is_finite(),
         _ => false,
     }
 }
 
 // ANCHOR: render_distribution
-/// Renders `scene` through `lens` by distribution ray tracing. Each sample draws, in order:
+/// Renders `world` through `lens` by distribution ray tracing. Each sample draws, in order:
 /// the pixel position, the time and the lens point (each only when needed), then the tree's
 /// numbers depth first.
 pub fn render_distribution<S: TimeSampler>(
-    scene: &SoftShadowScene,
+    world: &MotionScene,
     options: DistributionOptions,
     lens: &Lens,
     settings: &RenderSettings,
     sampler: &S,
     filter: &dyn Filter,
 ) -> RenderOutput {
-    let world = &scene.scene.world;
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
-    let tracer = DistributionTracer::new(scene, options);
+    let area_lights = AreaLights::of(&world.scene);
+    let tracer = DistributionTracer::new(world, &area_lights, options);
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
         let ray = camera_rays.generate(world, p_film, sampler);
         tracer.radiance(&ray, sampler, counters)

@@ -18,12 +18,12 @@ use crate::distribution::ray_tree::{depth_shares, rays_per_camera_ray, render_sm
 use crate::distribution::{DistributionOptions, render_distribution};
 use crate::mis::MisHeuristic;
 use crate::options::PathOptions;
-use crate::scene_file::{ConvertedScene, convert};
+use crate::scene_file::path_options;
 use crate::{Method, render_with};
 use anyhow::Context;
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
-use ch07_soft_shadows::SoftShadowScene;
+use ch05_motion_blur::MotionScene;
 use common::image::Image;
 use common::metrics::{
     Technique, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence, write_convergence_csv,
@@ -82,7 +82,7 @@ fn box_filter() -> ReconstructionFilter {
 
 /// Path-traces `scene` with `options` under `budget`, independent samples, box filter.
 fn path_trace(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     options: PathOptions,
     size: (u32, u32),
     budget: Budget,
@@ -104,7 +104,7 @@ fn path_trace(
 
 /// Renders `scene` with `options` at `spp`, independent samples, box filter.
 pub fn render(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     options: PathOptions,
     size: (u32, u32),
     spp: u64,
@@ -113,11 +113,22 @@ pub fn render(
     path_trace(scene, options, size, Budget::Samples(spp), seed).image
 }
 
-/// A chapter scene file, converted.
-fn load(name: &str) -> anyhow::Result<ConvertedScene> {
+/// A chapter scene file, made ready for the path tracer, with its path options.
+struct SceneFile {
+    world: MotionScene,
+    options: crate::PathOptions,
+}
+
+/// The chapter scene file `name`, loaded.
+fn load(name: &str) -> anyhow::Result<SceneFile> {
     let file = scenes_dir().join(name);
-    let loaded = common::scene::load_scene_file(&file, &[])?;
-    convert(&loaded.scene).map_err(anyhow::Error::msg)
+    let loaded = common::scene_file::load_scene_file(&file, &[])?;
+    crate::CAPABILITIES
+        .check(&loaded.scene)
+        .map_err(anyhow::Error::msg)?;
+    let options = path_options(&loaded.scene);
+    let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
+    Ok(SceneFile { world, options })
 }
 
 /// Sizes and sample counts: thumbnails for `quick`.
@@ -128,12 +139,12 @@ struct Quality {
 }
 
 impl Quality {
-    fn size(&self, scene: &SoftShadowScene, quick_size: (u32, u32)) -> (u32, u32) {
-        let camera = scene.scene.world.scene.camera;
+    fn size(&self, scene: &MotionScene, quick_size: (u32, u32)) -> (u32, u32) {
+        let film = scene.scene.film;
         if self.quick {
             quick_size
         } else {
-            (camera.width, camera.height)
+            (film.width, film.height)
         }
     }
 }
@@ -182,7 +193,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
 /// depth carries, on the Cornell box.
 fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let file = load("cornell-box.xml")?;
-    let scene = &file.converted.scene;
+    let scene = &file.world;
     let size = (16, 16);
     let deepest = if quality.quick { 4 } else { 6 };
     let mut csv = String::from("branching,indirect_diffuse,max_depth,rays_per_camera_ray\n");
@@ -254,7 +265,7 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let depth = 4;
     let file = load("cornell-box.xml")?;
-    let scene = &file.converted.scene;
+    let scene = &file.world;
     let size = quality.size(scene, (32, 32));
     let pt_options = PathOptions::with_depth(depth);
     let reference = render(scene, pt_options, size, quality.reference_spp, 99);
@@ -329,7 +340,7 @@ fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 /// roulette on and off with their times, and error against time.
 fn cornell_techniques(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let file = load("cornell-box.xml")?;
-    let scene = &file.converted.scene;
+    let scene = &file.world;
     let size = quality.size(scene, (32, 32));
     let reference = render(scene, file.options, size, quality.reference_spp, 99);
     let techniques = techniques(file.options);
@@ -384,7 +395,7 @@ fn cornell_techniques(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 /// alone, and both combined by the balance and the power heuristic, at equal samples.
 fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let file = load("glossy-plates.xml")?;
-    let scene = &file.converted.scene;
+    let scene = &file.world;
     let size = quality.size(scene, (96, 64));
     let direct = PathOptions {
         rr_depth: None,

@@ -16,7 +16,8 @@
 //! - [`path`]: the path loop; [`render_with`].
 //! - [`distribution`]: Cook's branching tracer with every effect, for comparison;
 //!   [`render_distribution`].
-//! - [`scene_file`], [`agreement`]: scene files and the check against Mitsuba 3's `path`;
+//! - [`scene_file`], [`agreement`], [`CAPABILITIES`]: the path options of a scene file, the
+//!   check against Mitsuba 3's `path`, what of a scene the chapter renders;
 //!   [`furnace`]: the white furnace; [`cli`]: the options of `render`; [`figures`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -44,11 +45,13 @@ pub use options::PathOptions;
 pub use path::PathTracer;
 
 use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::{CameraRays, TimeSampler};
 use ch06_fuzzy_reflections::FuzzMethod;
-use ch07_soft_shadows::{LightSampling, SoftShadowScene};
+use ch07_soft_shadows::{AreaLights, LightSampling};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
+use common::scene::{Capabilities, Chapter, Feature};
 
 /// Everything about a path-traced render besides the scene and the image settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -72,23 +75,33 @@ impl Method {
     }
 }
 
+/// What chapter 08 renders of a scene: everything the workbook knows, indirect light and the
+/// environment's light on matte surfaces included.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::PATH_TRACING,
+    approximates: &[(
+        Feature::MicrofacetMaterial,
+        ch06_fuzzy_reflections::MICROFACET_AS_LOBE,
+    )],
+};
+
 // ANCHOR: render_with
-/// Path-traces `scene` through `lens`. Each sample draws, in order: the pixel position, the
+/// Path-traces `world` through `lens`. Each sample draws, in order: the pixel position, the
 /// time and the lens point (chapter 05's camera rays, each only when needed), then the numbers
 /// of each bounce (see [`path`]). The same seed gives the same image on any number of threads.
 pub fn render_with<S: TimeSampler>(
-    scene: &SoftShadowScene,
+    world: &MotionScene,
     method: Method,
     lens: &Lens,
     settings: &RenderSettings,
     sampler: &S,
     filter: &dyn Filter,
 ) -> RenderOutput {
-    let world = &scene.scene.world;
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
+    let area_lights = AreaLights::of(&world.scene);
     let tracer = PathTracer {
-        scene,
-        lights: SceneLights::of(scene, method.light_sampling),
+        world,
+        lights: SceneLights::of(world, &area_lights, method.light_sampling),
         options: method.options,
         fuzz: method.fuzz,
     };

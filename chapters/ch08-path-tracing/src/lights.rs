@@ -15,14 +15,15 @@
 //! lights, and a scene without area lights or environment pays for no pick and no light
 //! sample at all.
 
-use ch01_whitted::light::PointLight;
 use ch02_monte_carlo::warps::{sample_uniform_sphere, uniform_sphere_pdf};
+use ch05_motion_blur::MotionScene;
 use ch07_soft_shadows::light::LightShape;
 use ch07_soft_shadows::light_sample::LightSample;
 use ch07_soft_shadows::solid_angle::{pdf_area_to_solid_angle, sphere_solid_angle_pdf};
-use ch07_soft_shadows::{AreaLight, LightSampling, SoftShadowScene, Strategy};
+use ch07_soft_shadows::{AreaLight, AreaLights, LightSampling, Strategy};
 use common::Ray;
 use common::geometry::SurfaceHit;
+use common::scene::PointLight;
 use glam::{Vec2, Vec3};
 
 /// One of the lights a light sample picks from.
@@ -90,14 +91,18 @@ pub struct SceneLights<'a> {
 }
 
 impl<'a> SceneLights<'a> {
-    /// The lights of `scene`, area lights sampled as `sampling` says.
-    pub fn of(scene: &'a SoftShadowScene, sampling: LightSampling) -> Self {
-        let world = &scene.scene.world.scene;
+    /// The lights of `world`, its area lights `area_lights` sampled as `sampling` says.
+    pub fn of(
+        world: &'a MotionScene,
+        area_lights: &'a AreaLights,
+        sampling: LightSampling,
+    ) -> Self {
+        let scene = &world.scene;
         let mut lights = Self {
-            area: &scene.lights,
-            light_of_shape: &scene.light_of_shape,
-            points: &world.lights,
-            environment: world.background,
+            area: &area_lights.lights,
+            light_of_shape: &area_lights.light_of_shape,
+            points: &scene.point_lights,
+            environment: scene.environment,
             sampling,
             count: 0,
             pick_probability: 1.0,

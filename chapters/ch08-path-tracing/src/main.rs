@@ -3,17 +3,18 @@
 use anyhow::Context;
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::cli::LensArgs;
+use ch05_motion_blur::scene_file::{motion_for_render, read_with_camera_side};
 use ch05_motion_blur::{StratifiedTime, TimeSampling};
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
-use ch07_soft_shadows::SoftShadowScene;
+use ch07_soft_shadows::AreaLights;
 use ch07_soft_shadows::cli::LightArgs;
 use ch08_path_tracing::cli::PathArgs;
 use ch08_path_tracing::dimensions::render_counted;
-use ch08_path_tracing::scene_file::convert;
-use ch08_path_tracing::{Method, figures};
+use ch08_path_tracing::scene_file::path_options;
+use ch08_path_tracing::{CAPABILITIES, Method, figures};
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
+use common::cli::{FiguresArgs, RenderArgs, report_error};
 use common::render::Budget;
 use std::process::ExitCode;
 
@@ -93,29 +94,20 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             "render needs a scene: --scene FILE.xml (see chapters/ch08-path-tracing/scenes/)"
         );
     };
-    let scene = read_scene_file(path, &command.args.define, convert, |s| {
-        &s.converted.notes[..]
-    })?;
-    let file_options = scene.options;
-    let converted = scene.converted;
-    let fuzzy_scene = command.fuzzy.apply(converted.scene.scene)?;
-    let max_depth = fuzzy_scene.world.scene.max_depth;
-    let scene = SoftShadowScene {
-        scene: fuzzy_scene,
-        ..converted.scene
-    };
+    let (scene, side) = read_with_camera_side(path, &command.args.define, &CAPABILITIES)?;
+    let file_options = path_options(&scene);
+    let scene = command.fuzzy.apply(scene)?;
     let options = ch08_path_tracing::PathOptions {
-        max_depth,
+        max_depth: scene.max_depth,
         ..command.path.options(file_options)
     };
-    let lens = command.lens.lens_or_pinhole(converted.lens)?;
-    let filter = command.anti_aliasing.filter(Some(converted.filter))?;
-    let sampler_kind = command.anti_aliasing.sampler_kind(Some(converted.sampler));
-    let world = &scene.scene.world;
-    let camera = world.scene.camera;
-    let settings = command
-        .args
-        .settings((camera.width, camera.height), converted.spp)?;
+    let world = motion_for_render(scene).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    let world = &world;
+    let lens = command.lens.lens_or_pinhole(side.lens)?;
+    let filter = command.anti_aliasing.filter(Some(side.filter))?;
+    let sampler_kind = command.anti_aliasing.sampler_kind(Some(side.sampler));
+    let film = world.scene.film;
+    let settings = command.args.settings((film.width, film.height), side.spp)?;
     let pixel_sampler =
         command
             .anti_aliasing
@@ -132,11 +124,11 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (rendered, dimensions) = match (time_sampling, settings.budget) {
         (TimeSampling::Stratified, Budget::Samples(spp)) => {
             let sampler = StratifiedTime::new(pixel_sampler, spp, command.args.seed);
-            render_counted(count, &scene, method, &lens, &settings, &sampler, &filter)
+            render_counted(count, world, method, &lens, &settings, &sampler, &filter)
         }
         _ => render_counted(
             count,
-            &scene,
+            world,
             method,
             &lens,
             &settings,
@@ -150,8 +142,8 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         "mis": options.mis.name(),
         "rr_depth": options.rr_depth,
         "max_depth": options.max_depth,
-        "area_lights": scene.lights.len(),
-        "point_lights": world.scene.lights.len(),
+        "area_lights": AreaLights::of(&world.scene).lights.len(),
+        "point_lights": world.scene.point_lights.len(),
         "sampler": sampler_kind.name(),
         "filter": filter.kind().name(),
         "aperture_radius": lens.aperture_radius,

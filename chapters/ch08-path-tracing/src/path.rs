@@ -34,8 +34,8 @@ use crate::nee::{light_sample_contribution, point_lights};
 use crate::options::PathOptions;
 use crate::roulette::russian_roulette;
 use ch01_whitted::scene::World;
+use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
-use ch07_soft_shadows::SoftShadowScene;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
@@ -99,11 +99,11 @@ struct NextSegment {
     previous: Previous,
 }
 
-/// A path tracer over a chapter 07 scene.
+/// A path tracer over a scene.
 #[derive(Clone, Copy)]
 pub struct PathTracer<'a> {
-    /// The scene: shapes, materials, area and point lights, environment, camera.
-    pub scene: &'a SoftShadowScene,
+    /// The scene with its motion: shapes, surfaces, point lights, environment, camera.
+    pub world: &'a MotionScene,
     /// Its lights as one list.
     pub lights: SceneLights<'a>,
     /// NEE, MIS, roulette, depth.
@@ -146,7 +146,7 @@ impl PathTracer<'_> {
         counters: &mut SampleCounters,
     ) -> Option<Ray> {
         counters.rays += 1;
-        let Some(hit) = self.scene.scene.world.intersect(ray) else {
+        let Some(hit) = self.world.intersect(ray) else {
             if self.lights.has_environment() {
                 let pdf = self.lights.environment_pdf();
                 let weight = self.emission_weight(path.previous, pdf);
@@ -161,7 +161,7 @@ impl PathTracer<'_> {
             return None; // no segment left for a light sample or a bounce
         }
         let bsdf = Bsdf {
-            material: &self.scene.scene.materials[hit.shape as usize],
+            material: &self.world.scene.surface(hit.shape).material,
             hit: &hit,
             fuzz: self.fuzz,
         };
@@ -284,7 +284,7 @@ impl PathTracer<'_> {
         sampler: &mut S,
         counters: &mut SampleCounters,
     ) -> Vec3 {
-        let world = &self.scene.scene.world;
+        let world = self.world;
         let mut light = Vec3::ZERO;
         if !self.lights.points.is_empty() {
             light += point_lights(world, &self.lights, bsdf, wo, time, counters);
@@ -333,12 +333,7 @@ impl PathTracer<'_> {
             return Vec3::ZERO; // nothing to carry: no shadow ray
         }
         counters.rays += 1;
-        if self
-            .scene
-            .scene
-            .world
-            .occluded(&sample.shadow_ray(bsdf.hit, time))
-        {
+        if self.world.occluded(&sample.shadow_ray(bsdf.hit, time)) {
             Vec3::ZERO
         } else {
             contribution
@@ -352,10 +347,10 @@ mod tests {
     use super::*;
     use crate::bsdf::test_support::floor_hit;
     use crate::furnace::spheres;
-    use ch01_whitted::material::Material as Smooth;
-    use ch06_fuzzy_reflections::Material;
-    use ch07_soft_shadows::LightSampling;
+    use ch07_soft_shadows::{AreaLights, LightSampling};
     use common::sampler::IndependentSampler;
+    use common::scene::Material as Smooth;
+    use common::scene::Material;
     use glam::UVec2;
 
     /// A tracer over a furnace scene (one sphere of `material` in a sky of radiance 1).
@@ -364,10 +359,11 @@ mod tests {
         options: PathOptions,
         use_tracer: impl FnOnce(&PathTracer) -> R,
     ) -> R {
-        let scene = spheres(&[material], options.max_depth);
+        let world = spheres(&[material], options.max_depth);
+        let area_lights = AreaLights::of(&world.scene);
         let tracer = PathTracer {
-            scene: &scene,
-            lights: SceneLights::of(&scene, LightSampling::solid_angle()),
+            world: &world,
+            lights: SceneLights::of(&world, &area_lights, LightSampling::solid_angle()),
             options,
             fuzz: FuzzMethod::Lobe,
         };
@@ -400,7 +396,7 @@ mod tests {
 
     #[test]
     fn exercise_extend_path_multiplies_the_throughput_and_keeps_the_density() {
-        let grey = Material::from(Smooth::diffuse(Vec3::new(0.5, 0.25, 1.0)));
+        let grey = Smooth::diffuse(Vec3::new(0.5, 0.25, 1.0));
         let options = PathOptions {
             rr_depth: None,
             ..PathOptions::with_depth(8)
@@ -436,7 +432,7 @@ mod tests {
 
     #[test]
     fn exercise_extend_path_plays_an_unbiased_roulette_on_the_unscaled_throughput() {
-        let white = Material::from(Smooth::diffuse(Vec3::ONE));
+        let white = Smooth::diffuse(Vec3::ONE);
         let options = PathOptions {
             rr_depth: Some(3),
             ..PathOptions::with_depth(8)
@@ -472,7 +468,7 @@ mod tests {
 
     #[test]
     fn exercise_extend_path_ends_paths_that_carry_nothing() {
-        let black = Material::from(Smooth::diffuse(Vec3::ZERO));
+        let black = Smooth::diffuse(Vec3::ZERO);
         let carried = Carried {
             throughput: Vec3::ONE,
             eta_scale: 1.0,
@@ -486,15 +482,15 @@ mod tests {
     fn exercise_extend_path_lets_the_furnace_return_one() {
         // The whole loop through `extend_path`: a white matte sphere under a sky of 1 sends
         // back exactly 1 whatever the bounces (mean of 256 paths through the centre pixel).
-        let white = Material::from(Smooth::diffuse(Vec3::ONE));
+        let white = Smooth::diffuse(Vec3::ONE);
         let options = PathOptions {
             nee: false,
             rr_depth: None,
             ..PathOptions::with_depth(64)
         };
         with_tracer(white, options, |tracer| {
-            let world = &tracer.scene.scene.world;
-            let camera = world.scene.camera;
+            let world = tracer.world;
+            let camera = ch01_whitted::camera::PinholeCamera::of(&world.scene.camera, 64, 48);
             let ray = camera.generate_ray(glam::Vec2::new(32.5, 24.5));
             let mut sampler = IndependentSampler::new(5);
             let mut counters = SampleCounters::default();

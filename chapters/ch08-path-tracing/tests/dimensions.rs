@@ -12,20 +12,17 @@
 //! (2), a pick among them when there are several (1), and then the BSDF direction (2), since
 //! the last segment may find them.
 
-use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::SceneBuilder;
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::{AnimatedTransform, MotionScene, MovingShape, Shutter};
-use ch06_fuzzy_reflections::FuzzyScene;
-use ch07_soft_shadows::SoftShadowScene;
+use ch05_motion_blur::{MotionScene, Shutter};
 use ch08_path_tracing::dimensions::{DimensionStats, render_counted};
 use ch08_path_tracing::{Method, PathOptions};
 use common::film::PixelBoxFilter;
 use common::geometry::{Quad, Shape, Sphere};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
+use common::scene::{
+    AreaEmitter, Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder,
+};
 use glam::{Mat4, Vec3};
 
 /// The plane, seen by a camera 5 units in front of it, lit by `lights` point lights.
@@ -48,27 +45,30 @@ fn plane(lights: usize) -> SceneBuilder {
     builder
 }
 
-/// `builder`'s scene as chapter 08 renders it, with `moving` shapes, seen over `shutter`.
-fn scene(
-    builder: SceneBuilder,
-    moving: Vec<(MovingShape, Material)>,
-    shutter: Shutter,
-) -> SoftShadowScene {
+/// `builder`'s scene as chapter 08 renders it, seen over `shutter`.
+fn scene(builder: SceneBuilder, shutter: Shutter) -> MotionScene {
     let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y)
         .expect("a valid camera direction");
-    let still = builder.build(PinholeCamera::new(frame, 40.0, 8, 8), 2);
-    let world = MotionScene::new(still, moving, None, shutter);
-    SoftShadowScene::without_lights(FuzzyScene::smooth(world))
+    let mut camera = Camera::pinhole(frame, 40.0);
+    camera.shutter_open = shutter.open;
+    camera.shutter_close = shutter.close;
+    MotionScene::new(builder.build(camera, FilmSettings::new(8, 8), 2)).expect("valid motion")
 }
 
-fn static_scene(lights: usize) -> SoftShadowScene {
-    scene(plane(lights), Vec::new(), Shutter::INSTANT)
+/// `world` with shape number `shape` glowing with `radiance`.
+fn with_lamp(mut world: MotionScene, shape: usize, radiance: Vec3) -> MotionScene {
+    world.scene.surfaces[shape].emitter = Some(AreaEmitter { radiance });
+    world
+}
+
+fn static_scene(lights: usize) -> MotionScene {
+    scene(plane(lights), Shutter::INSTANT)
 }
 
 /// The plane under a sky of radiance 0.5, with (`lamp`) or without a small area light above
 /// it, out of the camera's view.
-fn sky_scene(lamp: bool) -> SoftShadowScene {
-    let mut builder = plane(0).background(Vec3::splat(0.5));
+fn sky_scene(lamp: bool) -> MotionScene {
+    let mut builder = plane(0).environment(Vec3::splat(0.5));
     if lamp {
         // X x Z = -Y: the lamp faces down, towards the plane's lower edge.
         builder = builder.shape(
@@ -76,27 +76,27 @@ fn sky_scene(lamp: bool) -> SoftShadowScene {
             Material::diffuse(Vec3::ZERO),
         );
     }
-    let base = scene(builder, Vec::new(), Shutter::INSTANT);
-    let lamps: &[(usize, Vec3)] = if lamp { &[(1, Vec3::splat(4.0))] } else { &[] };
-    SoftShadowScene::new(base.scene, lamps).expect("a valid lamp")
+    let base = scene(builder, Shutter::INSTANT);
+    if lamp {
+        with_lamp(base, 1, Vec3::splat(4.0))
+    } else {
+        base
+    }
 }
 
-/// A small matte sphere in front of the plane, sliding sideways over the shutter.
-fn sliding_sphere() -> (MovingShape, Material) {
-    let motion = AnimatedTransform::new(&[
+/// `builder` with a small matte sphere in front of the plane, sliding sideways over the
+/// shutter.
+fn with_sliding_sphere(builder: SceneBuilder) -> SceneBuilder {
+    let keyframes = vec![
         (0.0, Mat4::IDENTITY),
         (1.0, Mat4::from_translation(0.5 * Vec3::X)),
-    ])
-    .expect("valid keyframes");
+    ];
     let sphere = Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, 1.0), 0.3));
-    (
-        MovingShape::new(sphere, motion),
-        Material::diffuse(Vec3::splat(0.5)),
-    )
+    builder.moving(sphere, keyframes, Material::diffuse(Vec3::splat(0.5)))
 }
 
 /// Renders 8 x 8 pixels at 2 samples and returns the dimensions per path.
-fn dimensions(scene: &SoftShadowScene, lens: &Lens, max_depth: u32) -> DimensionStats {
+fn dimensions(scene: &MotionScene, lens: &Lens, max_depth: u32) -> DimensionStats {
     let (_, stats) = render_counted(
         true,
         scene,
@@ -135,7 +135,7 @@ fn a_lens_adds_exactly_two() {
 #[test]
 fn motion_adds_exactly_one() {
     let shutter = Shutter::new(0.0, 1.0).expect("a valid shutter");
-    let moving = scene(plane(1), vec![sliding_sphere()], shutter);
+    let moving = scene(with_sliding_sphere(plane(1)), shutter);
     assert_exactly(dimensions(&moving, &Lens::PINHOLE, 2), 3);
     assert_exactly(dimensions(&moving, &thin_lens(), 2), 5);
 }
@@ -170,9 +170,9 @@ fn counting_leaves_the_image_bit_identical() {
             Shape::Quad(Quad::new(Vec3::new(0.5, 1.0, 2.0), Vec3::X, -Vec3::Z)),
             Material::diffuse(Vec3::ZERO),
         );
-    let base = scene(builder, vec![sliding_sphere()], shutter);
+    let base = scene(with_sliding_sphere(builder), shutter);
     let lamp = 2; // the third still shape
-    let scene = SoftShadowScene::new(base.scene, &[(lamp, Vec3::splat(4.0))]).expect("a lamp");
+    let scene = with_lamp(base, lamp, Vec3::splat(4.0));
     let render = |count| {
         render_counted(
             count,

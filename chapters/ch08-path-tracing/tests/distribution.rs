@@ -9,9 +9,10 @@ mod support;
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::CameraRays;
+use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::{TraceOptions, Tracer};
-use ch07_soft_shadows::{LightOptions, SoftShadowScene};
-use ch08_path_tracing::scene_file::ConvertedScene;
+use ch07_soft_shadows::AreaLights;
+use ch07_soft_shadows::LightOptions;
 use ch08_path_tracing::{
     DistributionOptions, DistributionTracer, Method, PathOptions, render_distribution,
 };
@@ -22,15 +23,15 @@ use glam::{UVec2, Vec2, Vec3};
 
 /// The mean green channel of `n` samples through each of `pixels`, and its standard error.
 fn estimate(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     pixels: &[Vec2],
     n: u64,
     seed: u64,
     radiance: impl Fn(&Ray, &mut IndependentSampler, &mut SampleCounters) -> Vec3,
 ) -> (f64, f64) {
-    let world = &scene.scene.world;
-    let camera = world.scene.camera;
-    let rays = CameraRays::new(world, &Lens::PINHOLE, camera.width, camera.height);
+    let world = scene;
+    let film = world.scene.film;
+    let rays = CameraRays::new(world, &Lens::PINHOLE, film.width, film.height);
     let mut sampler = IndependentSampler::new(seed);
     let (mut sum, mut sum2, mut count) = (0.0f64, 0.0f64, 0u64);
     for (p, &p_film) in pixels.iter().enumerate() {
@@ -51,9 +52,9 @@ fn estimate(
 }
 
 /// A scene file of the chapter with `max_depth` segments (for every tracer).
-fn scene_at_depth(name: &str, max_depth: u32) -> ConvertedScene {
+fn scene_at_depth(name: &str, max_depth: u32) -> support::SceneFile {
     let mut scene = support::scene_file(name);
-    scene.converted.scene.scene.world.scene.max_depth = max_depth;
+    scene.world.scene.max_depth = max_depth;
     scene
 }
 
@@ -68,21 +69,24 @@ fn assert_agree(what: &str, a: (f64, f64), b: (f64, f64)) {
 }
 
 fn distribution(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     options: DistributionOptions,
 ) -> impl Fn(&Ray, &mut IndependentSampler, &mut SampleCounters) -> Vec3 {
-    let tracer = DistributionTracer::new(scene, options);
+    // Leaked: the tracer borrows the lights, and the closure outlives this function.
+    let area_lights = Box::leak(Box::new(AreaLights::of(&scene.scene)));
+    let tracer = DistributionTracer::new(scene, area_lights, options);
     move |ray, sampler, counters| tracer.radiance(ray, sampler, counters)
 }
 
 fn path(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     options: PathOptions,
 ) -> impl Fn(&Ray, &mut IndependentSampler, &mut SampleCounters) -> Vec3 {
     let method = Method::new(options);
+    let area_lights = Box::leak(Box::new(AreaLights::of(&scene.scene)));
     let tracer = ch08_path_tracing::PathTracer {
-        scene,
-        lights: ch08_path_tracing::SceneLights::of(scene, method.light_sampling),
+        world: scene,
+        lights: ch08_path_tracing::SceneLights::of(scene, area_lights, method.light_sampling),
         options,
         fuzz: method.fuzz,
     };
@@ -101,12 +105,13 @@ fn one_sample_per_effect_is_chapter_07s_tracer() {
         ("glossy-plates.xml", 3, 6, 800),
     ] {
         let file = scene_at_depth(name, depth);
-        let scene = &file.converted.scene;
-        let camera = scene.scene.world.scene.camera;
-        let pixels = support::grid(camera.width, camera.height, k);
-        let lighting = scene.lighting(LightOptions::default());
+        let scene = &file.world;
+        let film = scene.scene.film;
+        let pixels = support::grid(film.width, film.height, k);
+        let area_lights = AreaLights::of(&scene.scene);
+        let lighting = area_lights.lighting(LightOptions::default());
         let chapter_07 = Tracer {
-            scene: &scene.scene,
+            world: scene,
             lighting: &lighting,
             options: TraceOptions::default(),
         };
@@ -130,9 +135,9 @@ fn branching_with_indirect_diffuse_is_the_path_tracer() {
     // path tracer does: colour bleeding, light under the glass and all.
     let depth = 4;
     let file = scene_at_depth("cornell-box.xml", depth);
-    let scene = &file.converted.scene;
-    let camera = scene.scene.world.scene.camera;
-    let pixels = support::grid(camera.width, camera.height, 5);
+    let scene = &file.world;
+    let film = scene.scene.film;
+    let pixels = support::grid(film.width, film.height, 5);
     let options = DistributionOptions::branching(2, depth, true);
     let ours = estimate(scene, &pixels, 1200, 3, distribution(scene, options));
     let pt = PathOptions {
@@ -150,9 +155,9 @@ fn without_indirect_diffuse_on_a_scene_without_it_is_the_path_tracer() {
     // its light and BSDF samples combined. Both are the same light.
     let depth = 2;
     let file = scene_at_depth("glossy-plates.xml", depth);
-    let scene = &file.converted.scene;
-    let camera = scene.scene.world.scene.camera;
-    let pixels = support::grid(camera.width, camera.height, 8);
+    let scene = &file.world;
+    let film = scene.scene.film;
+    let pixels = support::grid(film.width, film.height, 8);
     let options = DistributionOptions::branching(3, depth, false);
     let ours = estimate(scene, &pixels, 400, 5, distribution(scene, options));
     let theirs = estimate(
@@ -168,7 +173,7 @@ fn without_indirect_diffuse_on_a_scene_without_it_is_the_path_tracer() {
 #[test]
 fn the_same_seed_gives_the_same_finite_image_on_any_number_of_threads() {
     let file = scene_at_depth("cornell-box.xml", 4);
-    let scene = &file.converted.scene;
+    let scene = &file.world;
     let options = DistributionOptions::branching(2, 4, true);
     let filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter");
     let render = |threads| {

@@ -2,20 +2,17 @@
 
 mod support;
 
-use ch01_whitted::material::Material as Smooth;
-use ch06_fuzzy_reflections::Material;
+use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::furnace::scene_of;
-use ch07_soft_shadows::SoftShadowScene;
 use ch08_path_tracing::PathOptions;
 use ch08_path_tracing::furnace::spheres;
 use common::geometry::{Quad, Shape, Sphere};
+use common::scene::AreaEmitter;
+use common::scene::Material as Smooth;
+use common::scene::Material;
 use glam::Vec3;
 
-fn render_finite(
-    scene: &ch07_soft_shadows::SoftShadowScene,
-    options: PathOptions,
-    what: &str,
-) -> f64 {
+fn render_finite(scene: &ch05_motion_blur::MotionScene, options: PathOptions, what: &str) -> f64 {
     let out = support::render_pinhole(scene, options, (16, 16, 4), 5);
     assert_eq!(out.stats.nonfinite_samples, 0, "{what}");
     assert!(out.image.pixels.iter().all(|p| p.is_finite()), "{what}");
@@ -25,7 +22,7 @@ fn render_finite(
 #[test]
 fn the_cornell_box_is_finite_at_depth_1_and_1000_with_and_without_roulette() {
     let scene = support::scene_file("cornell-box.xml");
-    let s = &scene.converted.scene;
+    let s = &scene.world;
     let one = render_finite(
         s,
         PathOptions {
@@ -58,7 +55,7 @@ fn the_cornell_box_is_finite_at_depth_1_and_1000_with_and_without_roulette() {
 
 #[test]
 fn an_all_glass_world_and_a_light_through_glass_stay_finite() {
-    let glass = Material::from(Smooth::glass(1.5));
+    let glass = Smooth::glass(1.5);
     let rough = Material::rough_glass(1.5, 5.0);
     render_finite(
         &spheres(&[glass, rough, glass], 1000),
@@ -70,7 +67,7 @@ fn an_all_glass_world_and_a_light_through_glass_stay_finite() {
     );
     let scene = support::scene_file("point-and-sky.xml");
     render_finite(
-        &scene.converted.scene,
+        &scene.world,
         PathOptions {
             max_depth: 1000,
             ..scene.options
@@ -81,9 +78,9 @@ fn an_all_glass_world_and_a_light_through_glass_stay_finite() {
 
 #[test]
 fn a_black_world_stays_black() {
-    let black = Material::from(Smooth::diffuse(Vec3::ZERO));
+    let black = Smooth::diffuse(Vec3::ZERO);
     let mut scene = spheres(&[black], 8);
-    scene.scene.world.scene.background = Vec3::ZERO;
+    scene.scene.environment = Vec3::ZERO;
     assert_eq!(
         render_finite(&scene, PathOptions::with_depth(8), "black"),
         0.0
@@ -94,28 +91,28 @@ fn a_black_world_stays_black() {
 /// in a black world: the camera sees the light only through the glass, and the floor
 /// gets its focused light (a caustic) only from paths that bounce through the glass to it,
 /// since every light sample from behind the ball is blocked.
-fn a_small_light_behind_glass() -> SoftShadowScene {
+fn a_small_light_behind_glass() -> MotionScene {
     let floor = Quad::new(
         Vec3::new(-50.0, -1.0, -50.0),
         100.0 * Vec3::Z,
         100.0 * Vec3::X,
     );
     let shapes = vec![
-        (
-            Shape::Quad(floor),
-            Material::from(Smooth::diffuse(Vec3::splat(0.5))),
-        ),
+        (Shape::Quad(floor), Smooth::diffuse(Vec3::splat(0.5))),
         (
             Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)),
-            Material::from(Smooth::glass(1.5)),
+            Smooth::glass(1.5),
         ),
         (
             Shape::Sphere(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 0.01)),
-            Material::from(Smooth::diffuse(Vec3::ZERO)),
+            Smooth::diffuse(Vec3::ZERO),
         ),
     ];
-    let scene = scene_of(shapes, Vec3::ZERO, Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, 12);
-    SoftShadowScene::new(scene, &[(2, Vec3::splat(1e4))]).unwrap()
+    let mut world = scene_of(shapes, Vec3::ZERO, Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, 12);
+    world.scene.surfaces[2].emitter = Some(AreaEmitter {
+        radiance: Vec3::splat(1e4),
+    });
+    world
 }
 
 #[test]

@@ -7,10 +7,10 @@
 
 mod support;
 
-use ch01_whitted::material::Material as Smooth;
-use ch06_fuzzy_reflections::Material;
 use ch08_path_tracing::furnace::spheres;
 use ch08_path_tracing::{Method, MisHeuristic, PathOptions};
+use common::scene::Material as Smooth;
+use common::scene::Material;
 use glam::{Vec2, Vec3};
 
 /// The image centre of the furnace camera (64 x 48), which sees the spheres.
@@ -58,7 +58,7 @@ fn assert_one(materials: &[Material], max_depth: u32, n: u64) {
 
 #[test]
 fn a_white_matte_sphere_gives_one_at_every_depth_from_two() {
-    let white = Material::from(Smooth::diffuse(Vec3::ONE));
+    let white = Smooth::diffuse(Vec3::ONE);
     for depth in [2, 3, 8, 1000] {
         assert_one(&[white], depth, 400);
     }
@@ -66,7 +66,7 @@ fn a_white_matte_sphere_gives_one_at_every_depth_from_two() {
 
 #[test]
 fn depth_one_sees_only_the_sky() {
-    let scene = spheres(&[Material::from(Smooth::diffuse(Vec3::ONE))], 1);
+    let scene = spheres(&[Smooth::diffuse(Vec3::ONE)], 1);
     let method = Method::new(PathOptions::with_depth(1));
     let (sphere, _) = support::estimate(&scene, method, &[CENTRE], 50, 1);
     assert_eq!(sphere, 0.0);
@@ -76,8 +76,8 @@ fn depth_one_sees_only_the_sky() {
 
 #[test]
 fn touching_spheres_glass_and_glossy_give_one_with_enough_bounces() {
-    let white = Material::from(Smooth::diffuse(Vec3::ONE));
-    let glass = Material::from(Smooth::glass(1.5));
+    let white = Smooth::diffuse(Vec3::ONE);
+    let glass = Smooth::glass(1.5);
     let glossy = Material::glossy(Vec3::ONE, 20.0);
     assert_one(&[white, white, white], 1000, 300);
     assert_one(&[glass, glossy, white], 1000, 300);

@@ -4,37 +4,35 @@
 //! renders from the same pixel positions: no noise to average, nothing picked, nothing
 //! left out.
 
-use ch01_whitted::light::PointLight;
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::Scene;
 use ch01_whitted::scenes::Builtin;
 use ch05_motion_blur::MotionScene;
-use ch06_fuzzy_reflections::FuzzyScene;
-use ch07_soft_shadows::SoftShadowScene;
 use ch08_path_tracing::{Method, PathOptions};
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
+use common::scene::Material;
+use common::scene::PointLight;
+use common::scene::Scene;
 use glam::Vec3;
 
 /// Chapter 01's Cornell box with its spheres made matte and two more point lights of other
 /// colours: three lights, some of them hidden from some points.
 fn matte_box_under_three_lights() -> Scene {
     let mut scene = Builtin::Cornell.build(2);
-    for material in &mut scene.materials {
+    for surface in &mut scene.surfaces {
         if matches!(
-            material,
+            surface.material,
             Material::Mirror { .. } | Material::Dielectric { .. }
         ) {
-            *material = Material::diffuse(Vec3::splat(0.6));
+            surface.material = Material::diffuse(Vec3::splat(0.6));
         }
     }
-    let first = scene.lights[0];
-    scene.lights.push(PointLight {
+    let first = scene.point_lights[0];
+    scene.point_lights.push(PointLight {
         position: first.position + Vec3::new(0.4, -0.3, 0.2) * first.position.length().max(1.0),
         intensity: first.intensity * Vec3::new(0.2, 0.5, 1.0),
     });
-    scene.lights.push(PointLight {
+    scene.point_lights.push(PointLight {
         position: first.position * 0.5,
         intensity: first.intensity * Vec3::new(1.0, 0.3, 0.1),
     });
@@ -47,7 +45,7 @@ fn point_lights_alone_give_chapter_03s_direct_light() {
     let settings = RenderSettings::new(32, 32, 2);
     let sampler = IndependentSampler::new(7);
     let whitted = ch03_anti_aliasing::render_with(&scene, &settings, &sampler, &PixelBoxFilter);
-    let still = SoftShadowScene::without_lights(FuzzyScene::smooth(MotionScene::still(scene)));
+    let still = MotionScene::still(scene);
     let path = ch08_path_tracing::render_with(
         &still,
         Method::new(PathOptions::with_depth(2)),

@@ -22,12 +22,12 @@
 
 mod support;
 
-use ch01_whitted::material::Material as Smooth;
-use ch06_fuzzy_reflections::Material;
+use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::furnace::scene_of;
-use ch07_soft_shadows::SoftShadowScene;
 use ch08_path_tracing::PathOptions;
 use common::geometry::{Shape, Sphere};
+use common::scene::Material as Smooth;
+use common::scene::Material;
 use glam::Vec3;
 
 /// The index of the glass.
@@ -41,7 +41,7 @@ const SPP: u64 = 4;
 fn glass_sphere() -> (Shape, Material) {
     (
         Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)),
-        Material::from(Smooth::glass(IOR)),
+        Smooth::glass(IOR),
     )
 }
 
@@ -49,7 +49,7 @@ fn glass_sphere() -> (Shape, Material) {
 /// five standard errors of the estimator plus the film's rounding, when a path is 0 instead
 /// with probability `cut_off` at most (the depth limit ended it); returns the pixels' largest
 /// distance from `expected`.
-fn assert_every_pixel(scene: &SoftShadowScene, expected: f32, cut_off: f64) -> f32 {
+fn assert_every_pixel(scene: &MotionScene, expected: f32, cut_off: f64) -> f32 {
     let options = PathOptions {
         rr_depth: None,
         ..PathOptions::with_depth(MAX_DEPTH)
@@ -78,13 +78,13 @@ fn assert_every_pixel(scene: &SoftShadowScene, expected: f32, cut_off: f64) -> f
 
 #[test]
 fn inside_glass_in_a_world_of_radiance_1_the_radiance_is_eta_squared() {
-    let scene = SoftShadowScene::without_lights(scene_of(
+    let scene = scene_of(
         vec![glass_sphere()],
         Vec3::ONE,
         Vec3::ZERO,
         -Vec3::Z,
         MAX_DEPTH,
-    ));
+    );
     // Normal incidence: F = ((1.5 - 1) / (1.5 + 1))² = 0.04, and a path is cut off if it is
     // reflected at every one of its MAX_DEPTH - 1 bounces.
     assert_every_pixel(&scene, IOR * IOR, 0.04f64.powi(MAX_DEPTH as i32 - 1));
@@ -94,19 +94,18 @@ fn inside_glass_in_a_world_of_radiance_1_the_radiance_is_eta_squared() {
 fn outside_glass_around_an_emitter_of_eta_squared_the_world_looks_uniform() {
     let emitter = (
         Shape::Sphere(Sphere::new(Vec3::ZERO, 0.7)),
-        Material::from(Smooth::diffuse(Vec3::ZERO)),
+        Smooth::diffuse(Vec3::ZERO),
     );
-    let scene = SoftShadowScene::new(
-        scene_of(
-            vec![glass_sphere(), emitter],
-            Vec3::ONE,
-            Vec3::new(0.0, 0.0, 5.0),
-            Vec3::ZERO,
-            MAX_DEPTH,
-        ),
-        &[(1, Vec3::splat(IOR * IOR))],
-    )
-    .unwrap();
+    let mut scene = scene_of(
+        vec![glass_sphere(), emitter],
+        Vec3::ONE,
+        Vec3::new(0.0, 0.0, 5.0),
+        Vec3::ZERO,
+        MAX_DEPTH,
+    );
+    scene.scene.surfaces[1].emitter = Some(common::scene::AreaEmitter {
+        radiance: Vec3::splat(IOR * IOR),
+    });
     // Every path ends by its third segment (the world, or the black emitter): none is cut off.
     assert_every_pixel(&scene, 1.0, 0.0);
 }

@@ -6,15 +6,14 @@
 
 mod support;
 
-use ch01_whitted::material::Material as Smooth;
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
-use ch06_fuzzy_reflections::Material;
 use ch08_path_tracing::furnace::spheres;
 use ch08_path_tracing::roulette::{MAX_SURVIVAL, russian_roulette};
 use ch08_path_tracing::{Method, PathOptions, render_with};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
+use common::scene::Material as Smooth;
 use glam::{Vec2, Vec3};
 
 /// The step between the uniform numbers a sampler hands out (`common::sampler::unit_f32`).
@@ -105,8 +104,8 @@ fn roulette_from_the_start() -> PathOptions {
 fn roulette_at_throughput_one_keeps_the_white_furnace_at_one() {
     // White spheres and glass keep the throughput (radiance scaling removed) at 1: every
     // bounce plays at q = 0.95 and multiplies by 1 / 0.95.
-    let white = Material::from(Smooth::diffuse(Vec3::ONE));
-    let glass = Material::from(Smooth::glass(1.5));
+    let white = Smooth::diffuse(Vec3::ONE);
+    let glass = Smooth::glass(1.5);
     for materials in [[white, white, white], [glass, white, glass]] {
         let scene = spheres(&materials, 1000);
         let method = Method::new(roulette_from_the_start());
@@ -124,10 +123,7 @@ fn roulette_at_throughput_near_zero_is_unbiased_and_finite() {
     // A dark convex sphere in the furnace sends back exactly its albedo; after the first
     // bounce the path survives with q = 0.02 and carries 50 times more.
     let albedo = 0.02;
-    let dark = spheres(
-        &[Material::from(Smooth::diffuse(Vec3::splat(albedo)))],
-        1000,
-    );
+    let dark = spheres(&[Smooth::diffuse(Vec3::splat(albedo))], 1000);
     let method = Method::new(roulette_from_the_start());
     let (mean, se) = support::estimate(&dark, method, &PIXELS, 10_000, 12);
     eprintln!("albedo {albedo}, roulette from 1: {mean:.5} ± {se:.5}");
@@ -137,7 +133,7 @@ fn roulette_at_throughput_near_zero_is_unbiased_and_finite() {
     );
     // Far darker, touching spheres: throughputs of 1e-6, 1e-12 ... 1e-40 and their survivors.
     for albedo in [1e-6, 1e-20] {
-        let materials = [Material::from(Smooth::diffuse(Vec3::splat(albedo))); 3];
+        let materials = [Smooth::diffuse(Vec3::splat(albedo)); 3];
         let out = render_with(
             &spheres(&materials, 1000),
             method,

@@ -15,7 +15,7 @@ fn snapshot_of(file: &str, options: impl Fn(PathOptions) -> PathOptions) -> Stri
     let settings = RenderSettings::new(24, 24, 8);
     let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
     let out = render_with(
-        &scene.converted.scene,
+        &scene.world,
         Method::new(options(scene.options)),
         &Lens::PINHOLE,
         &settings,

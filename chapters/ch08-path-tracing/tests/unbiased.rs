@@ -12,15 +12,14 @@ use ch08_path_tracing::{Method, MisHeuristic, PathOptions};
 #[test]
 fn nee_mis_and_roulette_variants_agree() {
     let scene = support::scene_file("cornell-box.xml");
-    let world = &scene.converted.scene.scene.world.scene;
-    let pixels = support::grid(world.camera.width, world.camera.height, 6);
+    let world = &scene.world.scene;
+    let pixels = support::grid(world.film.width, world.film.height, 6);
     let base = PathOptions {
         max_depth: 5,
         ..scene.options
     };
     let n = 1500;
-    let (reference, se_ref) =
-        support::estimate(&scene.converted.scene, Method::new(base), &pixels, n, 1);
+    let (reference, se_ref) = support::estimate(&scene.world, Method::new(base), &pixels, n, 1);
     for options in [
         PathOptions { nee: false, ..base },
         PathOptions {
@@ -40,8 +39,7 @@ fn nee_mis_and_roulette_variants_agree() {
             ..base
         },
     ] {
-        let (mean, se) =
-            support::estimate(&scene.converted.scene, Method::new(options), &pixels, n, 2);
+        let (mean, se) = support::estimate(&scene.world, Method::new(options), &pixels, n, 2);
         let tolerance = 5.0 * (se * se + se_ref * se_ref).sqrt();
         assert!(
             (mean - reference).abs() <= tolerance,

@@ -1,248 +1,147 @@
-//! `<sensor>` with its `<film>` and `<sampler>`, and the field-of-view conversion.
+//! The camera as data: where it is, what it sees, its lens, its shutter and its motion.
+//!
+//! The conventions are Mitsuba 3's: camera space looks down +z with +y up and **+x to the
+//! image's left**; the field of view is horizontal. How a ray leaves the camera is the
+//! chapters' business: chapter 01's pinhole, chapter 04's thin lens, chapter 05's shutter.
 
-use glam::Mat4;
-use roxmltree::Node;
+use glam::{Mat4, Vec3};
 
-use super::description::{
-    CameraModel, FilmDescription, ReconstructionFilter, SamplerDescription, Sensor,
-};
-use super::error::SceneError;
-use super::properties::Properties;
-use super::reader::Reader;
+/// Where the camera is and which way it looks.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraFrame {
+    /// The eye point.
+    pub origin: Vec3,
+    /// Unit vector to the image's left.
+    pub left: Vec3,
+    /// Unit vector up in the image.
+    pub up: Vec3,
+    /// Unit viewing direction.
+    pub forward: Vec3,
+}
 
-/// Reads a `perspective` or `thinlens` sensor.
-pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, SceneError> {
-    let type_name = reader.required_attribute(node, "type")?;
-    if type_name != "perspective" && type_name != "thinlens" {
-        return Err(reader.error(
-            node,
-            format!("unknown sensor type \"{type_name}\": expected perspective or thinlens"),
-        ));
+impl CameraFrame {
+    /// A camera at `origin` looking at `target`, with `up` roughly up. `None` if the view
+    /// direction is zero or parallel to `up`, where no frame exists.
+    pub fn look_at(origin: Vec3, target: Vec3, up: Vec3) -> Option<Self> {
+        let forward = (target - origin).try_normalize()?;
+        let left = up.cross(forward).try_normalize()?;
+        let up = forward.cross(left);
+        Some(Self {
+            origin,
+            left,
+            up,
+            forward,
+        })
     }
-    let mut properties = Properties::read(reader, node, format!("{type_name} sensor"))?;
-    let mut film = None;
-    let mut sampler = None;
-    for &object in &properties.objects {
-        match object.tag_name().name() {
-            "film" if film.is_none() => film = Some(read_film(reader, object)?),
-            "sampler" if sampler.is_none() => sampler = Some(read_sampler(reader, object)?),
-            tag => {
-                return Err(reader.error(
-                    object,
-                    format!(
-                        "<{tag}> is not allowed here: a sensor holds one <film> and one <sampler>"
-                    ),
-                ));
-            }
+
+    /// The frame of a camera-to-world matrix (Mitsuba's columns: left, up, forward, origin).
+    pub fn from_matrix(m: &Mat4) -> Self {
+        Self {
+            origin: m.w_axis.truncate(),
+            left: m.x_axis.truncate().normalize(),
+            up: m.y_axis.truncate().normalize(),
+            forward: m.z_axis.truncate().normalize(),
         }
     }
-    let film = film.unwrap_or_else(default_film);
-    let sampler = sampler.unwrap_or(SamplerDescription {
-        type_name: "independent".to_string(),
-        sample_count: 4,
-        seed: 0,
-    });
 
-    let fov = properties.float(reader, "fov")?.ok_or_else(|| {
-        reader.error(
-            node,
-            "the sensor needs <float name=\"fov\" value=\"...\"/> in degrees",
+    /// The camera-to-world matrix of the frame: the inverse of [`from_matrix`](Self::from_matrix).
+    pub fn to_matrix(&self) -> Mat4 {
+        Mat4::from_cols(
+            self.left.extend(0.0),
+            self.up.extend(0.0),
+            self.forward.extend(0.0),
+            self.origin.extend(1.0),
         )
-    })?;
-    if !(fov > 0.0 && fov < 180.0) {
-        let position = properties
-            .position_of("fov")
-            .unwrap_or(reader.position(node));
-        return Err(reader.error_at(
-            position,
-            format!("fov must be between 0 and 180 degrees, found {fov}"),
-        ));
     }
-    let fov_axis = properties
-        .string(reader, "fov_axis")?
-        .unwrap_or_else(|| "x".to_string());
-    let aspect = film.width as f32 / film.height as f32;
-    let fov_x_degrees = horizontal_fov(fov, &fov_axis, aspect).ok_or_else(|| {
-        let position = properties
-            .position_of("fov_axis")
-            .unwrap_or(reader.position(node));
-        reader.error_at(
-            position,
-            format!("unknown fov_axis \"{fov_axis}\": expected x, y, diagonal, smaller or larger"),
-        )
-    })?;
 
-    let model = if type_name == "thinlens" {
-        let mut required = |name: &str| {
-            properties.float(reader, name)?.ok_or_else(|| {
-                reader.error(
-                    node,
-                    format!("a thinlens sensor needs <float name=\"{name}\">"),
-                )
-            })
-        };
-        CameraModel::ThinLens {
-            aperture_radius: required("aperture_radius")?,
-            focus_distance: required("focus_distance")?,
-        }
-    } else {
-        CameraModel::Perspective
-    };
-    let (to_world, to_world_keyframes) = properties.transform_or_animation(reader, "to_world")?;
-    let sensor = Sensor {
-        model,
-        fov_x_degrees,
-        near_clip: properties.float(reader, "near_clip")?.unwrap_or(0.01),
-        far_clip: properties.float(reader, "far_clip")?.unwrap_or(10_000.0),
-        shutter_open: properties.float(reader, "shutter_open")?.unwrap_or(0.0),
-        shutter_close: properties.float(reader, "shutter_close")?.unwrap_or(0.0),
-        to_world: to_world.unwrap_or(Mat4::IDENTITY),
-        to_world_keyframes,
-        film,
-        sampler,
-    };
-    properties.finish(reader);
-    Ok(sensor)
-}
-
-/// The horizontal field of view in degrees for `fov` degrees along `fov_axis`, as Mitsuba 3
-/// converts it; `aspect` is width / height. `None` for an unknown axis name.
-pub fn horizontal_fov(fov: f32, fov_axis: &str, aspect: f32) -> Option<f32> {
-    let half_tan = (0.5 * fov.to_radians()).tan();
-    let from_half_tan = |t: f32| 2.0 * t.atan().to_degrees();
-    let axis = match fov_axis {
-        "smaller" if aspect > 1.0 => "y",
-        "smaller" => "x",
-        "larger" if aspect > 1.0 => "x",
-        "larger" => "y",
-        other => other,
-    };
-    match axis {
-        "x" => Some(fov),
-        "y" => Some(from_half_tan(half_tan * aspect)),
-        // tan(fov/2) is half the diagonal at distance 1; the width is diagonal * W / sqrt(W²+H²).
-        "diagonal" => Some(from_half_tan(
-            half_tan / (1.0 + 1.0 / (aspect * aspect)).sqrt(),
-        )),
-        _ => None,
+    /// A camera-space direction in world space.
+    pub fn to_world(&self, v: Vec3) -> Vec3 {
+        v.x * self.left + v.y * self.up + v.z * self.forward
     }
 }
 
-/// Mitsuba 3's `hdrfilm` defaults.
-fn default_film() -> FilmDescription {
-    FilmDescription {
-        width: 768,
-        height: 576,
-        filter: ReconstructionFilter::Gaussian { stddev: 0.5 },
-        pixel_format: "rgb".to_string(),
-        component_format: "float16".to_string(),
-    }
+/// Pinhole or thin lens.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CameraModel {
+    /// Mitsuba's `perspective`: every ray through one point.
+    Pinhole,
+    /// Mitsuba's `thinlens`: a lens of radius `aperture_radius` in the camera's z = 0 plane,
+    /// focused on the plane `z = focus_distance` (chapter 04). Radius 0 is a pinhole.
+    ThinLens {
+        /// Radius of the lens disc in camera space.
+        aperture_radius: f32,
+        /// Distance along the camera's +z axis of the plane in focus.
+        focus_distance: f32,
+    },
 }
 
-/// Reads an `hdrfilm` with its optional `rfilter`.
-fn read_film(reader: &mut Reader, node: Node) -> Result<FilmDescription, SceneError> {
-    let type_name = reader.required_attribute(node, "type")?;
-    if type_name != "hdrfilm" {
-        return Err(reader.error(
-            node,
-            format!("unknown film type \"{type_name}\": expected hdrfilm"),
-        ));
-    }
-    let mut properties = Properties::read(reader, node, "hdrfilm".to_string())?;
-    let mut film = default_film();
-    for name in ["width", "height"] {
-        if let Some(size) = properties.integer(reader, name)? {
-            let position = properties
-                .position_of(name)
-                .unwrap_or(reader.position(node));
-            let size = u32::try_from(size)
-                .ok()
-                .filter(|&size| size > 0)
-                .ok_or_else(|| {
-                    reader.error_at(
-                        position,
-                        format!("film {name} must be a positive integer, found {size}"),
-                    )
-                })?;
-            *(if name == "width" {
-                &mut film.width
-            } else {
-                &mut film.height
-            }) = size;
+/// A camera: its place (and motion), its field of view, its lens and its shutter.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    /// Position and orientation; for a moving camera, at its first keyframe.
+    pub frame: CameraFrame,
+    /// The horizontal field of view in degrees.
+    pub fov_x_degrees: f32,
+    /// Rays start this far along the camera axis (Mitsuba's `near_clip`, default 0.01).
+    pub near_clip: f32,
+    /// Pinhole or thin lens.
+    pub model: CameraModel,
+    /// Start of the shutter interval.
+    pub shutter_open: f32,
+    /// End of the shutter interval; equal to `shutter_open` for an instant.
+    pub shutter_close: f32,
+    /// A moving camera's `(time, camera to world)` keyframes (chapter 05); empty for a camera
+    /// that stays at `frame`.
+    pub keyframes: Vec<(f32, Mat4)>,
+}
+
+impl Camera {
+    /// A still pinhole camera at `frame` with a horizontal field of view of `fov_x_degrees`,
+    /// and a shutter that opens and closes at time 0.
+    pub fn pinhole(frame: CameraFrame, fov_x_degrees: f32) -> Self {
+        Self {
+            frame,
+            fov_x_degrees,
+            near_clip: 0.01,
+            model: CameraModel::Pinhole,
+            shutter_open: 0.0,
+            shutter_close: 0.0,
+            keyframes: Vec::new(),
         }
     }
-    if let Some(format) = properties.string(reader, "pixel_format")? {
-        film.pixel_format = format;
-    }
-    if let Some(format) = properties.string(reader, "component_format")? {
-        film.component_format = format;
-    }
-    for &object in &properties.objects {
-        if object.tag_name().name() != "rfilter" {
-            let tag = object.tag_name().name();
-            return Err(reader.error(object, format!("<{tag}> is not allowed inside <film>")));
+
+    /// The aperture's radius: 0 for a pinhole.
+    pub fn aperture_radius(&self) -> f32 {
+        match self.model {
+            CameraModel::Pinhole => 0.0,
+            CameraModel::ThinLens {
+                aperture_radius, ..
+            } => aperture_radius,
         }
-        film.filter = read_filter(reader, object)?;
     }
-    properties.finish(reader);
-    Ok(film)
+
+    /// Whether the camera moves.
+    pub fn moves(&self) -> bool {
+        !self.keyframes.is_empty()
+    }
 }
 
-/// Reads an `rfilter`: box, tent or gaussian.
-fn read_filter(reader: &mut Reader, node: Node) -> Result<ReconstructionFilter, SceneError> {
-    let type_name = reader.required_attribute(node, "type")?;
-    let mut properties = Properties::read(reader, node, format!("{type_name} rfilter"))?;
-    let filter = match type_name.as_str() {
-        "box" => ReconstructionFilter::Box,
-        "tent" => ReconstructionFilter::Tent {
-            radius: properties.float(reader, "radius")?.unwrap_or(1.0),
-        },
-        "gaussian" => ReconstructionFilter::Gaussian {
-            stddev: properties.float(reader, "stddev")?.unwrap_or(0.5),
-        },
-        _ => {
-            return Err(reader.error(
-                node,
-                format!("unknown rfilter type \"{type_name}\": expected box, tent or gaussian"),
-            ));
-        }
-    };
-    if let Some(object) = properties.objects.first() {
-        return Err(reader.error(*object, "an rfilter cannot contain objects"));
-    }
-    properties.finish(reader);
-    Ok(filter)
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// Reads a sampler of any type: only `sample_count` and `seed` are interpreted.
-fn read_sampler(reader: &mut Reader, node: Node) -> Result<SamplerDescription, SceneError> {
-    let type_name = reader.required_attribute(node, "type")?;
-    let mut properties = Properties::read(reader, node, format!("{type_name} sampler"))?;
-    let mut count_or_seed = |name: &str, default: u32, minimum: u32| {
-        let Some(value) = properties.integer(reader, name)? else {
-            return Ok(default);
-        };
-        let position = properties
-            .position_of(name)
-            .unwrap_or(reader.position(node));
-        u32::try_from(value)
-            .ok()
-            .filter(|&value| value >= minimum)
-            .ok_or_else(|| {
-                reader.error_at(
-                    position,
-                    format!("{name} must be an integer of at least {minimum}, found {value}"),
-                )
-            })
-    };
-    let sampler = SamplerDescription {
-        sample_count: count_or_seed("sample_count", 4, 1)?,
-        seed: count_or_seed("seed", 0, 0)?,
-        type_name,
-    };
-    if let Some(object) = properties.objects.first() {
-        return Err(reader.error(*object, "a sampler cannot contain objects"));
+    #[test]
+    fn no_frame_when_looking_along_up() {
+        assert!(CameraFrame::look_at(Vec3::ZERO, Vec3::Y, Vec3::Y).is_none());
+        assert!(CameraFrame::look_at(Vec3::ZERO, Vec3::ZERO, Vec3::Y).is_none());
     }
-    properties.finish(reader);
-    Ok(sampler)
+
+    #[test]
+    fn a_frame_survives_its_matrix() {
+        let frame = CameraFrame::look_at(Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO, Vec3::Y).unwrap();
+        let back = CameraFrame::from_matrix(&frame.to_matrix());
+        assert!((back.origin - frame.origin).length() < 1e-6);
+        assert!((back.forward - frame.forward).length() < 1e-6);
+        assert!((back.left - frame.left).length() < 1e-6);
+    }
 }

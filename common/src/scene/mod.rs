@@ -1,91 +1,126 @@
-//! Scene files in the XML format of Mitsuba 3, read into a neutral [`SceneDescription`].
+//! The scene model: one plain-data scene that every chapter renders.
 //!
-//! The workbook's scenes can be written as files that Mitsuba 3 also renders, so every image can
-//! be checked against an independent renderer. This module reads the subset of the format the
-//! chapters need and says *what the file says*, resolved: `$name` parameters substituted (from
-//! `<default>`s and the caller's overrides, as Mitsuba's `-D name=value`), `<ref>`s followed,
-//! defaults filled in with Mitsuba's values, and each `<transform>` composed into one matrix.
-//! It makes no rendering decision: each chapter turns the description into its own scene.
+//! The lecture has one integral and a better estimator of it in each chapter; the workbook has
+//! one scene and a method per chapter over it. A [`Scene`] says what is there, with every
+//! parameter, and nothing about how to sample it: the shapes with their BVH, what each shape
+//! is made of and whether it glows ([`Surface`]), the point lights and the environment, the
+//! camera with its lens and shutter, the film and the sampler's settings, the depth limit.
+//! The scene-file loader ([`crate::scene_file`]) fills it from a Mitsuba 3 XML file, the
+//! chapters' built-in scenes fill it with a [`SceneBuilder`], and each chapter adds the
+//! functions that sample it and a tracer that reads it.
 //!
-//! Every problem is a [`SceneError`] naming the file, line and column; things that are merely
-//! ignored (an unknown property name, say) become [`SceneWarning`]s returned with the scene, so
-//! the library never prints. No input makes it panic.
+//! A chapter says which features of a scene it can render in its [`Capabilities`]; one shared
+//! check ([`Capabilities::check`]) refuses the rest, naming the file position of the element
+//! and the chapter that brings the feature, and writes the notes about light the chapter
+//! leaves out.
 //!
-//! The subset:
-//! - `integrator`: `path` (`max_depth`, `rr_depth`), `direct`; other types are kept raw.
-//! - `sensor`: `perspective`, `thinlens`, with `to_world`, an `hdrfilm` (with `rfilter`) and a
-//!   sampler of any type.
-//! - `shape`: `sphere`, `rectangle`, `disk`, `cube`, `obj`, each with a `bsdf` (inline or
-//!   `<ref>`), an optional `area` emitter and `flip_normals`.
-//! - `bsdf`: `diffuse`, `conductor`, `dielectric`, `twosided`; other types are kept raw.
-//! - `emitter`: `area` (in a shape), `point`, `constant`.
-//! - `transform`: `lookat`, `translate`, `rotate`, `scale`, `matrix`.
-//! - `animation` (the workbook's extension, in Mitsuba 0.6's syntax, for chapter 05's motion
-//!   blur): `<animation name="to_world">` with `<transform time="...">` keyframes, in a shape
-//!   or a sensor.
+//! Shapes are numbered as a hit reports them ([`SurfaceHit::shape`](crate::geometry::SurfaceHit)):
+//! the still shapes of [`Scene::geometry`] first, then the [`Scene::moving`] ones, and
+//! [`Scene::surfaces`] is indexed the same way.
 
-mod animation;
+mod builder;
 mod camera;
-mod description;
-mod document;
-mod error;
-mod integrator;
-mod lights;
-mod materials;
-mod obj;
-mod properties;
-mod reader;
-mod shapes;
-mod to_geometry;
-mod transform;
-mod values;
+mod capabilities;
+mod light;
+mod material;
+mod settings;
 
-#[cfg(test)]
-mod tests;
-
-use std::path::Path;
-
-pub use camera::horizontal_fov;
-pub use description::{
-    AreaEmitter, Bsdf, CameraModel, EmitterDescription, FilmDescription, Integrator, PropertyValue,
-    ReconstructionFilter, SamplerDescription, SceneDescription, Sensor, ShapeDescription,
-    ShapeGeometry,
+pub use builder::SceneBuilder;
+pub use camera::{Camera, CameraFrame, CameraModel};
+pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
+pub use light::{AreaEmitter, PointLight};
+pub use material::{
+    Checkerboard, Glossy, Material, Microfacet, MicrofacetDistribution, RoughGlass, check_exponent,
 };
-pub use error::{SceneError, SceneWarning, TextPosition};
-pub use materials::{named_ior, named_ior_names};
-pub use obj::{load_obj, parse_obj};
-pub use to_geometry::world_shapes;
+pub use settings::{FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition};
 
-/// A scene read from a file, with what the loader ignored.
+use crate::geometry::{Geometry, Shape};
+use glam::{Mat4, Vec3};
+
+/// The recursion limit used for Mitsuba's "unlimited" `max_depth` (-1): mirrors facing each
+/// other would otherwise recurse without end.
+pub const UNLIMITED_DEPTH: u32 = 100;
+
+/// Everything a render needs to know about the world, as data.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// The shapes that stand still, in world space, with their BVH.
+    pub geometry: Geometry,
+    /// The shapes that move, each in its own space with its keyframes; shape number
+    /// `geometry.shapes().len() + j` is `moving[j]`.
+    pub moving: Vec<AnimatedShape>,
+    /// What each shape is made of and whether it glows, still shapes first, then moving ones.
+    pub surfaces: Vec<Surface>,
+    /// The point lights.
+    pub point_lights: Vec<PointLight>,
+    /// Radiance of every ray that leaves the scene (Mitsuba's `constant` emitter); black for a
+    /// closed room or a scene without an environment.
+    pub environment: Vec3,
+    /// Where the camera is, its lens, its shutter and its motion.
+    pub camera: Camera,
+    /// The image the camera records.
+    pub film: FilmSettings,
+    /// Samples per pixel and the seed, as the file asks.
+    pub sampler: SamplerSettings,
+    /// The light transport the file asks for.
+    pub integrator: Integrator,
+    /// The longest path, counted in segments *including* the camera ray, as Mitsuba's
+    /// `max_depth`: 1 sees only what the camera ray hits, 2 adds direct light (the shadow ray
+    /// is the second segment), each further step one more bounce.
+    pub max_depth: u32,
+    /// Where the scene's parts are written in its file, for messages; empty for built-in
+    /// scenes.
+    pub origins: Origins,
+}
+
+/// What the surface of one shape is made of, whether it glows, and where it was written.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Surface {
+    /// How it scatters light.
+    pub material: Material,
+    /// The light it emits from its front side, if it is an area light.
+    pub emitter: Option<AreaEmitter>,
+    /// Where the `<shape>` element starts in the scene file (`None` for built-in scenes).
+    pub origin: Option<TextPosition>,
+}
+
+/// A shape that moves: `keyframes` map its own space to world space over time.
 #[derive(Clone, Debug, PartialEq)]
-pub struct LoadedScene {
-    /// What the file describes.
-    pub scene: SceneDescription,
-    /// Things that were ignored, each with its line; the caller decides whether to print them.
-    pub warnings: Vec<SceneWarning>,
+pub struct AnimatedShape {
+    /// The shape in its own space.
+    pub shape: Shape,
+    /// `(time, object to world)` pairs: at least two, strictly increasing times, each matrix
+    /// invertible. How the transform goes between them is chapter 05's business.
+    pub keyframes: Vec<(f32, Mat4)>,
 }
 
-/// Reads the scene file at `path`. `overrides` set `$name` parameters, winning over the file's
-/// `<default>`s; a name the file does not declare is allowed, as in Mitsuba 3.
-pub fn load_scene_file(
-    path: &Path,
-    overrides: &[(String, String)],
-) -> Result<LoadedScene, SceneError> {
-    let text = std::fs::read_to_string(path).map_err(|error| SceneError {
-        file: path.to_path_buf(),
-        line: 0,
-        column: 0,
-        message: format!("cannot read the scene file: {error}"),
-    })?;
-    parse_scene(&text, path, overrides)
-}
+impl Scene {
+    /// How many shapes the scene has, still and moving.
+    pub fn shape_count(&self) -> usize {
+        self.surfaces.len()
+    }
 
-/// Parses the text of a scene file. `file` names it in messages, and relative paths inside it
-/// (an OBJ's `filename`) are resolved against its directory.
-pub fn parse_scene(
-    text: &str,
-    file: &Path,
-    overrides: &[(String, String)],
-) -> Result<LoadedScene, SceneError> {
-    document::parse_document(text, file, overrides)
+    /// The surface of shape number `shape`, as a hit reports it.
+    #[inline]
+    pub fn surface(&self, shape: u32) -> &Surface {
+        &self.surfaces[shape as usize]
+    }
+
+    /// Whether any shape moves.
+    pub fn has_moving_shapes(&self) -> bool {
+        !self.moving.is_empty()
+    }
+
+    /// Whether any shape glows.
+    pub fn has_area_lights(&self) -> bool {
+        self.surfaces.iter().any(|s| s.emitter.is_some())
+    }
+
+    /// The same scene with every lobe's exponent set to `exponent` (smooth materials stay).
+    pub fn with_exponent(mut self, exponent: f32) -> Self {
+        for surface in &mut self.surfaces {
+            surface.material = surface.material.with_exponent(exponent);
+        }
+        self
+    }
 }

@@ -1,13 +1,12 @@
 //! Helpers shared by the chapter's tests.
 #![allow(dead_code)]
 
-use ch01_whitted::material::Material;
-use ch01_whitted::scene::{Scene, SceneBuilder};
-use ch05_motion_blur::TimeSampler;
 use ch05_motion_blur::world::MotionScene;
+use ch05_motion_blur::{AnimatedTransform, Shutter, TimeSampler};
 use common::geometry::{Quad, Shape, Sphere};
 use common::image::Image;
 use common::sampler::{IndependentSampler, Sampler};
+use common::scene::{AnimatedShape, Material, Scene, SceneBuilder, Surface};
 use glam::{Mat4, UVec2, Vec2, Vec3};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -58,24 +57,68 @@ impl TimeSampler for Counting {
 /// shapes in a static scene: what a still photograph at `time` shows.
 pub fn frozen_at(world: &MotionScene, time: f32) -> Scene {
     let still = &world.scene;
-    let mut builder = SceneBuilder::new().background(still.background);
+    let mut builder = SceneBuilder::new().environment(still.environment);
     for (index, shape) in still.geometry.shapes().iter().enumerate() {
-        builder = builder.shape(*shape, still.materials[index]);
+        builder = builder.surface(*shape, still.surfaces[index]);
     }
     let first_moving = still.geometry.shapes().len();
     for (index, moving) in world.moving.shapes().iter().enumerate() {
         let m = moving.motion.at(time);
         let placed = place(&moving.shape, &m);
-        builder = builder.shape(placed, still.materials[first_moving + index]);
+        builder = builder.surface(placed, still.surfaces[first_moving + index]);
     }
-    for light in &still.lights {
+    for light in &still.point_lights {
         builder = builder.light(*light);
     }
-    let mut camera = still.camera;
+    // The camera where it is at `time`, no longer moving, with a shutter of one instant.
+    let mut camera = still.camera.clone();
     if world.camera_motion.is_some() {
-        camera = world.camera_at(time, camera.width, camera.height);
+        camera.frame = world
+            .camera_at(time, still.film.width, still.film.height)
+            .frame;
     }
-    builder.build(camera, still.max_depth)
+    camera.keyframes.clear();
+    camera.shutter_open = Shutter::INSTANT.open;
+    camera.shutter_close = Shutter::INSTANT.close;
+    Scene {
+        sampler: still.sampler.clone(),
+        integrator: still.integrator,
+        origins: still.origins,
+        ..builder.build(camera, still.film, still.max_depth)
+    }
+}
+
+/// The `(time, matrix)` keyframes of `motion`, as the scene model keeps them.
+pub fn keyframes_of(motion: &AnimatedTransform) -> Vec<(f32, Mat4)> {
+    motion
+        .keyframes()
+        .iter()
+        .map(|keyframe| (keyframe.time, keyframe.matrix))
+        .collect()
+}
+
+/// `scene` with one more moving shape made of `material`, numbered after all its shapes (as
+/// [`SceneBuilder::moving`] numbers it, for a scene that is already built).
+pub fn with_moving(
+    mut scene: Scene,
+    shape: Shape,
+    keyframes: Vec<(f32, Mat4)>,
+    material: Material,
+) -> Scene {
+    scene.moving.push(AnimatedShape { shape, keyframes });
+    scene.surfaces.push(Surface {
+        material,
+        emitter: None,
+        origin: None,
+    });
+    scene
+}
+
+/// `scene` seen through `shutter`.
+pub fn with_shutter(mut scene: Scene, shutter: Shutter) -> Scene {
+    scene.camera.shutter_open = shutter.open;
+    scene.camera.shutter_close = shutter.close;
+    scene
 }
 
 /// A shape moved by a rigid transform (with uniform scale).
@@ -98,9 +141,7 @@ fn place(shape: &Shape, m: &Mat4) -> Shape {
 /// mirror, so the sphere appears in the image by reflection alone, and its shadow falls on a
 /// floor that the camera sees in the mirror too.
 pub fn mirror_only_scene() -> MotionScene {
-    use ch01_whitted::camera::{CameraFrame, PinholeCamera};
-    use ch01_whitted::light::PointLight;
-    use ch05_motion_blur::{AnimatedTransform, MovingShape, Shutter};
+    use common::scene::{Camera, CameraFrame, FilmSettings, PointLight};
     // Camera at z = 4 looking down -z at a mirror at z = 0; the sphere sits behind the camera
     // (z = 6), out of its view.
     let mirror = Shape::Quad(Quad::new(
@@ -109,28 +150,23 @@ pub fn mirror_only_scene() -> MotionScene {
         4.0 * Vec3::Y,
     ));
     let scene = SceneBuilder::new()
-        .background(Vec3::splat(0.1))
+        .environment(Vec3::splat(0.1))
         .shape(mirror, Material::mirror())
         .light(PointLight {
             position: Vec3::new(0.0, 3.0, 3.0),
             intensity: Vec3::splat(80.0),
-        });
+        })
+        .moving(
+            Shape::Sphere(Sphere::new(Vec3::ZERO, 1.2)),
+            vec![
+                (0.0, Mat4::from_translation(Vec3::new(-2.0, 0.0, 7.0))),
+                (1.0, Mat4::from_translation(Vec3::new(2.0, 0.0, 7.0))),
+            ],
+            Material::diffuse(Vec3::new(0.9, 0.6, 0.2)),
+        );
     let frame = CameraFrame::look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap();
-    let scene = scene.build(PinholeCamera::new(frame, 50.0, 32, 16), 4);
-    let sphere = MovingShape::new(
-        Shape::Sphere(Sphere::new(Vec3::ZERO, 1.2)),
-        AnimatedTransform::new(&[
-            (0.0, Mat4::from_translation(Vec3::new(-2.0, 0.0, 7.0))),
-            (1.0, Mat4::from_translation(Vec3::new(2.0, 0.0, 7.0))),
-        ])
-        .unwrap(),
-    );
-    MotionScene::new(
-        scene,
-        vec![(sphere, Material::diffuse(Vec3::new(0.9, 0.6, 0.2)))],
-        None,
-        Shutter::new(0.0, 1.0).unwrap(),
-    )
+    let scene = scene.build(Camera::pinhole(frame, 50.0), FilmSettings::new(32, 16), 4);
+    MotionScene::new(with_shutter(scene, Shutter::new(0.0, 1.0).unwrap())).unwrap()
 }
 
 /// The per-pixel mean of images.

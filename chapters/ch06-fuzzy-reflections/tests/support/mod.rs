@@ -2,7 +2,8 @@
 #![allow(dead_code)]
 
 use ch04_depth_of_field::Lens;
-use ch06_fuzzy_reflections::{FuzzyScene, PointLights, TraceOptions, render_with};
+use ch05_motion_blur::MotionScene;
+use ch06_fuzzy_reflections::{PointLights, TraceOptions, render_with};
 use common::film::PixelBoxFilter;
 use common::image::Image;
 use common::render::{RenderOutput, RenderSettings};
@@ -10,7 +11,7 @@ use common::sampler::IndependentSampler;
 
 /// Renders `scene` at `width x height` with `spp` independent samples, box-filtered.
 pub fn render(
-    scene: &FuzzyScene,
+    scene: &MotionScene,
     options: TraceOptions,
     width: u32,
     height: u32,

@@ -3,20 +3,22 @@
 #![allow(dead_code)]
 
 use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::{TraceOptions, Tracer};
 use ch07_soft_shadows::scenes::{Builder, camera, floor, matte};
-use ch07_soft_shadows::{LightOptions, SoftShadowScene, render_with};
+use ch07_soft_shadows::{AreaLights, LightOptions, render_with};
 use common::Ray;
 use common::film::PixelBoxFilter;
 use common::geometry::{Quad, Shape, Sphere};
 use common::image::Image;
 use common::render::{RenderOutput, RenderSettings, SampleCounters};
 use common::sampler::{IndependentSampler, Sampler};
+use common::scene::FilmSettings;
 use glam::{UVec2, Vec3};
 
 /// Renders `scene` at `width x height` with `spp` independent samples, box-filtered.
 pub fn render(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     lights: LightOptions,
     width: u32,
     height: u32,
@@ -50,15 +52,16 @@ pub fn assert_finite(out: &RenderOutput, what: &str) {
 /// The mean and standard error (green channel) of the radiance along `ray` over `n` samples,
 /// each with its own stream.
 pub fn mean_radiance(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     lights: LightOptions,
     ray: &Ray,
     n: u64,
     seed: u64,
 ) -> (f64, f64) {
-    let lighting = scene.lighting(lights);
+    let area_lights = AreaLights::of(&scene.scene);
+    let lighting = area_lights.lighting(lights);
     let tracer = Tracer {
-        scene: &scene.scene,
+        world: scene,
         lighting: &lighting,
         options: TraceOptions::default(),
     };
@@ -92,7 +95,7 @@ pub fn scene_with_light(
     scale: f32,
     light: Option<(Shape, Vec3)>,
     point: Option<Vec3>,
-) -> SoftShadowScene {
+) -> MotionScene {
     let s = scale;
     let mut builder = Builder::new()
         .shape(scaled_floor(s), matte(Vec3::splat(ALBEDO)))
@@ -111,15 +114,14 @@ pub fn scene_with_light(
     if let Some(intensity) = point {
         builder = builder.point_light(s * Vec3::new(0.0, 2.0, 0.0), intensity * s * s);
     }
-    let mut camera = camera(
+    let (mut camera, _) = camera(
         s * Vec3::new(0.0, 1.8, 3.5),
         s * Vec3::new(0.0, 0.3, 0.0),
         50.0,
     );
-    camera = camera.with_size(64, 48);
     // Rays start at the near clip plane, 0.01 by default: it scales with the scene.
     camera.near_clip *= s;
-    builder.build(camera, 12)
+    builder.build((camera, FilmSettings::new(64, 48)), 12)
 }
 
 fn scaled_floor(s: f32) -> Shape {

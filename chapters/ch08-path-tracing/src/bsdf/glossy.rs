@@ -7,8 +7,8 @@
 use super::{BsdfSample, facing_normal};
 use ch01_whitted::optics::reflect;
 use ch06_fuzzy_reflections::FuzzMethod;
-use ch06_fuzzy_reflections::material::Glossy;
 use common::geometry::SurfaceHit;
+use common::scene::Glossy;
 use glam::{Vec2, Vec3};
 
 /// A direction of the lobe around the mirror direction; the mirror direction itself for an

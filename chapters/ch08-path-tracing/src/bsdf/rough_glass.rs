@@ -9,9 +9,9 @@ use super::BsdfSample;
 use super::dielectric::side;
 use ch01_whitted::optics::{fresnel_dielectric, reflect, refract};
 use ch06_fuzzy_reflections::FuzzMethod;
-use ch06_fuzzy_reflections::material::RoughGlass;
 use ch06_fuzzy_reflections::tracer::transmission_exponent;
 use common::geometry::SurfaceHit;
+use common::scene::RoughGlass;
 use glam::{Vec2, Vec3};
 
 /// The two lobes seen from `wo`.

@@ -2,9 +2,10 @@
 //! `pdf` describe the same material.
 
 use super::Bsdf;
-use ch06_fuzzy_reflections::{FuzzMethod, Material};
+use ch06_fuzzy_reflections::FuzzMethod;
 use common::geometry::SurfaceHit;
 use common::sampler::{IndependentSampler, Sampler};
+use common::scene::Material;
 use glam::{UVec2, Vec2, Vec3};
 
 /// A hit at the origin of a surface with normal +y, known to within 1e-6 (so that a ray

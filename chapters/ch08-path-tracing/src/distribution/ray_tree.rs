@@ -11,13 +11,13 @@
 use super::{DistributionOptions, render_distribution};
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
-use ch07_soft_shadows::SoftShadowScene;
+use ch05_motion_blur::MotionScene;
 use common::render::{RenderOutput, RenderSettings};
 use common::sampler::IndependentSampler;
 
 /// A render of `scene` at `size` and `spp`, pinhole, box filter, independent samples.
 pub fn render_small(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     options: DistributionOptions,
     size: (u32, u32),
     spp: u64,
@@ -51,7 +51,7 @@ pub fn mean_radiance(output: &RenderOutput) -> f64 {
 /// For `d = 1 ..= max_depth`: the share of the image's mean radiance carried by rays of depth
 /// `d` (segment `d` of their branch), from renders that differ only in `max_depth`.
 pub fn depth_shares(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     options: DistributionOptions,
     size: (u32, u32),
     spp: u64,

@@ -5,12 +5,13 @@
 
 use crate::chart::{Chart, Lobe};
 use crate::check::{Case, floor_hit};
-use ch01_whitted::material::Material as Smooth;
 use ch01_whitted::optics::{reflect, refract};
-use ch06_fuzzy_reflections::material::Glossy;
+use ch06_fuzzy_reflections::FuzzMethod;
 use ch06_fuzzy_reflections::tracer::transmission_exponent;
-use ch06_fuzzy_reflections::{FuzzMethod, Material};
 use ch08_path_tracing::bsdf::dielectric::side;
+use common::scene::Glossy;
+use common::scene::Material as Smooth;
+use common::scene::Material;
 use glam::Vec3;
 
 /// Matte cases.
@@ -57,12 +58,12 @@ pub fn diffuse() -> [Case; DIFFUSE] {
     };
     [
         matte(
-            Smooth::diffuse(Vec3::splat(0.8)).into(),
+            Smooth::diffuse(Vec3::splat(0.8)),
             at(60.0, true),
             "diffuse, 60°",
         ),
         matte(
-            Smooth::two_sided_diffuse(Vec3::splat(0.5)).into(),
+            Smooth::two_sided_diffuse(Vec3::splat(0.5)),
             at(30.0, false),
             "two-sided diffuse from below, 30°",
         ),
@@ -75,6 +76,7 @@ fn glossy_case(fuzz: FuzzMethod, exponent: f32, two_sided: bool, wo: Vec3, name:
         reflectance: Vec3::splat(0.9),
         exponent,
         two_sided,
+        stands_in_for: None,
     });
     let normal = facing(wo);
     let lobe = Lobe {

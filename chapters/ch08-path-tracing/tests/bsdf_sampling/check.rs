@@ -5,10 +5,11 @@
 use crate::chart::Chart;
 use ch02_monte_carlo::chi2::{Chi2Result, chi2_test_density};
 use ch02_monte_carlo::warps::WarpPoint;
-use ch06_fuzzy_reflections::{FuzzMethod, Material};
+use ch06_fuzzy_reflections::FuzzMethod;
 use ch08_path_tracing::{Bsdf, BsdfSample};
 use common::geometry::SurfaceHit;
 use common::sampler::{IndependentSampler, Sampler};
+use common::scene::Material;
 use glam::{UVec2, Vec2, Vec3};
 
 /// Samples per test: enough that a lobe sampled at exponent `n + 1` but claimed at `n` fails

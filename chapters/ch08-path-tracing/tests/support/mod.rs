@@ -5,23 +5,38 @@
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::CameraRays;
-use ch07_soft_shadows::SoftShadowScene;
+use ch05_motion_blur::MotionScene;
+use ch07_soft_shadows::AreaLights;
 use ch08_path_tracing::{Method, PathOptions, PathTracer, SceneLights, render_with};
 use common::render::{RenderOutput, RenderSettings, SampleCounters};
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 
-/// A scene file of the chapter, converted, with its options.
-pub fn scene_file(name: &str) -> ch08_path_tracing::scene_file::ConvertedScene {
+/// A scene file of the chapter, made ready for tracing, with its path options.
+pub struct SceneFile {
+    /// The scene with its motion.
+    pub world: MotionScene,
+    /// The path tracer's options from the file's integrator.
+    pub options: PathOptions,
+}
+
+/// The chapter's scene file `name`.
+pub fn scene_file(name: &str) -> SceneFile {
     let path = ch08_path_tracing::agreement::scenes_dir().join(name);
-    let loaded = common::scene::load_scene_file(&path, &[]).expect("the scene loads");
-    ch08_path_tracing::scene_file::convert(&loaded.scene).expect("the scene converts")
+    let loaded = common::scene_file::load_scene_file(&path, &[]).expect("the scene loads");
+    ch08_path_tracing::CAPABILITIES
+        .check(&loaded.scene)
+        .expect("the chapter renders it");
+    SceneFile {
+        options: ch08_path_tracing::scene_file::path_options(&loaded.scene),
+        world: MotionScene::new(loaded.scene).expect("its motion is valid"),
+    }
 }
 
 /// `scene` path-traced through a pinhole at `width` x `height` with `spp` samples per pixel
 /// (box filter, independent samples from `seed`), with `options` and the default method.
 pub fn render_pinhole(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     options: PathOptions,
     (width, height, spp): (u32, u32, u64),
     seed: u64,
@@ -40,18 +55,19 @@ pub fn render_pinhole(
 /// The mean luminance-free green channel of `n` paths through each film position of
 /// `pixels`, and the standard error of that mean. Panics on a non-finite sample.
 pub fn estimate(
-    scene: &SoftShadowScene,
+    scene: &MotionScene,
     method: Method,
     pixels: &[Vec2],
     n: u64,
     seed: u64,
 ) -> (f64, f64) {
-    let world = &scene.scene.world;
-    let camera = world.scene.camera;
-    let rays = CameraRays::new(world, &Lens::PINHOLE, camera.width, camera.height);
+    let world = scene;
+    let film = world.scene.film;
+    let rays = CameraRays::new(world, &Lens::PINHOLE, film.width, film.height);
+    let area_lights = AreaLights::of(&world.scene);
     let tracer = PathTracer {
-        scene,
-        lights: SceneLights::of(scene, method.light_sampling),
+        world,
+        lights: SceneLights::of(world, &area_lights, method.light_sampling),
         options: method.options,
         fuzz: method.fuzz,
     };

@@ -3,21 +3,7 @@
 use std::fmt;
 use std::path::PathBuf;
 
-/// A place in a scene file: 1-based line and column, as an editor shows them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct TextPosition {
-    /// The line, counted from 1 (0: not known).
-    pub line: u32,
-    /// The column in characters, counted from 1 (0: not known).
-    pub column: u32,
-}
-
-impl fmt::Display for TextPosition {
-    /// `line 12, column 5`, for messages about an element that has already been read.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}, column {}", self.line, self.column)
-    }
-}
+pub use crate::scene::TextPosition;
 
 /// The scene file cannot be turned into a scene description.
 ///

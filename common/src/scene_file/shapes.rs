@@ -3,7 +3,7 @@
 use glam::{Mat4, Vec3};
 use roxmltree::Node;
 
-use super::description::{Bsdf, ShapeDescription, ShapeGeometry};
+use super::description::{ShapeDescription, ShapeGeometry, mitsuba_default_material};
 use super::error::SceneError;
 use super::lights::{Emitter, read_emitter};
 use super::materials::nested_bsdfs;
@@ -65,9 +65,9 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
         .objects
         .iter()
         .partition(|object| object.tag_name().name() == "emitter");
-    let bsdf = match nested_bsdfs(reader, &bsdf_nodes, node)?.as_slice() {
-        [] => Bsdf::mitsuba_default(),
-        [bsdf] => bsdf.clone(),
+    let material = match nested_bsdfs(reader, &bsdf_nodes, node)?.as_slice() {
+        [] => mitsuba_default_material(),
+        [material] => *material,
         [_, ..] => {
             return Err(reader.error(bsdf_nodes[1], "a shape has at most one bsdf"));
         }
@@ -93,7 +93,7 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
         geometry,
         to_world,
         to_world_keyframes,
-        bsdf,
+        material,
         emitter,
         flip_normals,
         position: reader.position(node),

@@ -6,9 +6,9 @@ use std::path::Path;
 
 use roxmltree::{Document, Node};
 
-use super::description::Bsdf;
 use super::error::{SceneError, SceneWarning, TextPosition};
 use super::values::substitute;
+use crate::scene::Material;
 
 /// Reads attributes with `$name` substitution and turns problems into located errors.
 pub(super) struct Reader<'a, 'input> {
@@ -17,7 +17,7 @@ pub(super) struct Reader<'a, 'input> {
     document: &'a Document<'input>,
     parameters: HashMap<String, String>,
     /// BSDFs with an `id`, by id, for `<ref>`.
-    pub bsdfs_by_id: HashMap<String, Bsdf>,
+    pub bsdfs_by_id: HashMap<String, Material>,
     /// Ignored things worth telling the user about.
     pub warnings: Vec<SceneWarning>,
 }

@@ -3,13 +3,14 @@
 mod animation;
 mod broken_files;
 mod cornell;
+mod model;
 mod never_panics;
 mod transforms;
 mod warnings;
 
 use std::path::Path;
 
-use super::{LoadedScene, SceneError, parse_scene};
+use super::{LoadedDescription, SceneError, parse_description};
 
 /// Wraps `body` in a scene with a minimal sensor. The body starts on **line 2**, so a broken
 /// element on the body's first line is reported on line 2.
@@ -20,7 +21,7 @@ fn scene_with(body: &str) -> String {
     )
 }
 
-/// Parses `text` as if it came from `test.xml`.
-fn parse(text: &str) -> Result<LoadedScene, SceneError> {
-    parse_scene(text, Path::new("test.xml"), &[])
+/// Parses what `text` describes as if it came from `test.xml`.
+fn parse(text: &str) -> Result<LoadedDescription, SceneError> {
+    parse_description(text, Path::new("test.xml"), &[])
 }

@@ -19,16 +19,14 @@ fn unknown_property_is_a_warning_with_its_line() {
 }
 
 #[test]
-fn a_bsdf_outside_mitsuba_is_kept_with_a_warning() {
+fn the_workbooks_phong_is_a_glossy_lobe() {
     let text = scene_with(
         "<shape type=\"cube\"><bsdf type=\"phong\"><float name=\"exponent\" value=\"20\"/></bsdf></shape>",
     );
     let loaded = parse(&text).expect("loads");
-    assert!(matches!(
-        &loaded.scene.shapes[0].bsdf,
-        super::super::Bsdf::Other { type_name, properties }
-            if type_name == "phong" && properties.len() == 1
-    ));
-    assert_eq!(loaded.warnings.len(), 1);
-    assert!(loaded.warnings[0].message.contains("phong"));
+    assert_eq!(
+        loaded.scene.shapes[0].material,
+        crate::scene::Material::glossy(glam::Vec3::ONE, 20.0)
+    );
+    assert_eq!(loaded.warnings, vec![]);
 }

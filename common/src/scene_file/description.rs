@@ -10,12 +10,15 @@ use std::path::PathBuf;
 use glam::{Mat4, Vec3};
 
 use super::TextPosition;
+use crate::scene::{AreaEmitter, CameraModel, FilmFilter, Material};
 
 /// Everything a scene file describes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneDescription {
     /// How light transport is computed (`path` when the file names no integrator, as in Mitsuba).
     pub integrator: Integrator,
+    /// Where the `<integrator>` element is; `None` when the file has none.
+    pub integrator_position: Option<TextPosition>,
     /// The camera with its film and sampler.
     pub sensor: Sensor,
     /// Every shape, in file order, each with its material and optional area light.
@@ -25,10 +28,6 @@ pub struct SceneDescription {
 }
 
 /// The integrator, the light transport algorithm.
-///
-/// The two Mitsuba 3 integrators of the subset are parsed into their own variants. Any other
-/// type (a chapter's own integrator, say) is kept with its raw properties in `Other`, so a later
-/// chapter can give it a meaning; the loader warns that Mitsuba 3 would not know it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Integrator {
     /// Mitsuba's `path`: unidirectional path tracing.
@@ -40,16 +39,9 @@ pub enum Integrator {
     },
     /// Mitsuba's `direct`: one light and one BSDF sample per hit.
     Direct,
-    /// A type that is not part of the Mitsuba 3 subset, kept for a later chapter.
-    Other {
-        /// The `type` attribute.
-        type_name: String,
-        /// The properties as written, in file order.
-        properties: Vec<(String, PropertyValue)>,
-    },
 }
 
-/// A property's value as written in the file, for plugins kept as `Other`.
+/// A property's value as written in the file.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PropertyValue {
     /// `<float>`.
@@ -72,23 +64,11 @@ pub enum PropertyValue {
     Animation(Vec<(f32, Mat4)>),
 }
 
-/// The camera model of a sensor.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum CameraModel {
-    /// Mitsuba's `perspective`: a pinhole camera.
-    Perspective,
-    /// Mitsuba's `thinlens`: a thin lens focused on the plane `z = focus_distance`.
-    ThinLens {
-        /// Radius of the lens disc in camera space (required).
-        aperture_radius: f32,
-        /// Distance along the camera's +z axis of the plane in focus (required).
-        focus_distance: f32,
-    },
-}
-
 /// A camera: where it is, what it sees, and how its image is sampled and stored.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Sensor {
+    /// Where the `<sensor>` element is.
+    pub position: TextPosition,
     /// Pinhole or thin lens.
     pub model: CameraModel,
     /// The horizontal field of view in degrees, already converted from the file's `fov` and
@@ -123,28 +103,13 @@ pub struct FilmDescription {
     /// Height in pixels (default 576).
     pub height: u32,
     /// The reconstruction filter (`gaussian` by default, as in Mitsuba).
-    pub filter: ReconstructionFilter,
+    pub filter: FilmFilter,
+    /// Where the `<rfilter>` element is; `None` when Mitsuba's default applies.
+    pub filter_position: Option<TextPosition>,
     /// Mitsuba's `pixel_format` (default "rgb"); recorded, not interpreted.
     pub pixel_format: String,
     /// Mitsuba's `component_format` (default "float16"); recorded, not interpreted.
     pub component_format: String,
-}
-
-/// The filter that spreads a sample over nearby pixels.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ReconstructionFilter {
-    /// One pixel wide: a pixel is the mean of its own samples.
-    Box,
-    /// A tent of the given radius in pixels (default 1).
-    Tent {
-        /// Radius in pixels.
-        radius: f32,
-    },
-    /// A Gaussian of the given standard deviation in pixels (default 0.5).
-    Gaussian {
-        /// Standard deviation in pixels.
-        stddev: f32,
-    },
 }
 
 /// The sampler: any type is accepted and recorded; chapters pick their own strategies.
@@ -175,7 +140,7 @@ pub struct ShapeDescription {
     /// chapters refuse it.
     pub to_world_keyframes: Vec<(f32, Mat4)>,
     /// The material: inline, referenced, or Mitsuba's default diffuse 0.5.
-    pub bsdf: Bsdf,
+    pub material: Material,
     /// The area light, when the shape glows.
     pub emitter: Option<AreaEmitter>,
     /// Whether the normals point the other way.
@@ -183,6 +148,11 @@ pub struct ShapeDescription {
     /// Where the `<shape>` element starts in its file, so that a chapter refusing the shape
     /// can point at it.
     pub position: TextPosition,
+}
+
+/// What Mitsuba 3 gives a shape without a BSDF: diffuse with reflectance 0.5.
+pub fn mitsuba_default_material() -> Material {
+    Material::diffuse(Vec3::splat(0.5))
 }
 
 /// The geometry of a shape, in Mitsuba 3's object space.
@@ -212,56 +182,6 @@ pub enum ShapeGeometry {
     },
 }
 
-/// A material. Mitsuba 3's BSDFs of the subset get their own variants; any other type is kept
-/// with its raw properties in `Other` for a later chapter (a `phong` lobe, say).
-#[derive(Clone, Debug, PartialEq)]
-pub enum Bsdf {
-    /// Lambertian reflection, reflectance / pi, one-sided.
-    Diffuse {
-        /// Albedo (default 0.5).
-        reflectance: Vec3,
-    },
-    /// A metal. `material = "none"` is a perfect mirror.
-    Conductor {
-        /// Mitsuba's named metal, "none" by default; recorded, not interpreted.
-        material: String,
-        /// A factor on the reflection (default 1).
-        specular_reflectance: Vec3,
-    },
-    /// Glass: Fresnel reflection and refraction.
-    Dielectric {
-        /// Index of refraction inside (default 1.5046, BK7).
-        int_ior: f32,
-        /// Index of refraction outside (default 1.000277, air).
-        ext_ior: f32,
-    },
-    /// The wrapped BSDF on both sides of the surface.
-    TwoSided(Box<Bsdf>),
-    /// A type outside the Mitsuba 3 subset, kept for a later chapter.
-    Other {
-        /// The `type` attribute.
-        type_name: String,
-        /// The properties as written, in file order.
-        properties: Vec<(String, PropertyValue)>,
-    },
-}
-
-impl Bsdf {
-    /// What Mitsuba 3 gives a shape without a BSDF: diffuse with reflectance 0.5.
-    pub fn mitsuba_default() -> Self {
-        Bsdf::Diffuse {
-            reflectance: Vec3::splat(0.5),
-        }
-    }
-}
-
-/// The `area` emitter of a shape: it emits on the side the normal points to.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AreaEmitter {
-    /// Emitted radiance.
-    pub radiance: Vec3,
-}
-
 /// A light that is not a shape.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum EmitterDescription {
@@ -276,5 +196,7 @@ pub enum EmitterDescription {
     Constant {
         /// Radiance (default 1).
         radiance: Vec3,
+        /// Where the `<emitter>` element is.
+        position: TextPosition,
     },
 }

@@ -207,14 +207,30 @@ impl<'a, 'input> Properties<'a, 'input> {
         Ok((self.transform(reader, name)?, Vec::new()))
     }
 
-    /// Takes every property as written, for plugins kept as `Other` (so none is warned about).
-    pub fn take_raw(&mut self) -> Vec<(String, PropertyValue)> {
-        self.list.drain(..).map(|p| (p.name, p.value)).collect()
+    /// The properties the plugin did not ask for.
+    fn unused(&self) -> impl Iterator<Item = &Property> {
+        self.list.iter().filter(|p| !p.used)
+    }
+
+    /// Refuses the first property the plugin did not ask for: for the workbook's own
+    /// materials, whose look a misspelt property (`alhpa`) would silently change.
+    pub fn finish_strict(self, reader: &mut Reader) -> Result<(), SceneError> {
+        match self.unused().next() {
+            Some(property) => Err(reader.error_at(
+                property.position,
+                format!(
+                    "the {} has no property `{}`: a misspelt property would silently change \
+                     the material",
+                    self.plugin, property.name
+                ),
+            )),
+            None => Ok(()),
+        }
     }
 
     /// Warns about every property the plugin did not ask for.
     pub fn finish(self, reader: &mut Reader) {
-        for property in self.list.iter().filter(|p| !p.used) {
+        for property in self.unused() {
             let (name, plugin) = (&property.name, &self.plugin);
             let message = format!("unknown property \"{name}\" of the {plugin}, ignored");
             reader.warn_at(property.position, message);

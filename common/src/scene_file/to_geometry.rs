@@ -136,14 +136,14 @@ fn uniform_scale(m: Mat4) -> Option<f32> {
 mod tests {
     use super::*;
     use crate::Ray;
-    use crate::scene::Bsdf;
+    use crate::scene_file::description::mitsuba_default_material;
 
     fn description(geometry: ShapeGeometry, to_world: Mat4) -> ShapeDescription {
         ShapeDescription {
             geometry,
             to_world,
             to_world_keyframes: Vec::new(),
-            bsdf: Bsdf::mitsuba_default(),
+            material: mitsuba_default_material(),
             emitter: None,
             flip_normals: false,
             position: Default::default(),

@@ -3,10 +3,11 @@
 use glam::Vec3;
 use roxmltree::Node;
 
-use super::description::{AreaEmitter, EmitterDescription};
+use super::description::EmitterDescription;
 use super::error::SceneError;
 use super::properties::Properties;
 use super::reader::Reader;
+use crate::scene::AreaEmitter;
 
 /// An `<emitter>` is either attached to a shape (area) or stands alone (point, constant).
 pub(super) enum Emitter {
@@ -36,6 +37,7 @@ pub(super) fn read_emitter(reader: &mut Reader, node: Node) -> Result<Emitter, S
                 "radiance",
                 "a constant emitter's",
             )?,
+            position: reader.position(node),
         }),
         "point" => {
             let position = properties.point(reader, "position")?;

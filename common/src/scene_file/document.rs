@@ -5,7 +5,7 @@ use std::path::Path;
 
 use roxmltree::{Document, Node};
 
-use super::LoadedScene;
+use super::LoadedDescription;
 use super::camera::read_sensor;
 use super::description::SceneDescription;
 use super::error::{SceneError, TextPosition};
@@ -20,7 +20,7 @@ pub(super) fn parse_document(
     text: &str,
     file: &Path,
     overrides: &[(String, String)],
-) -> Result<LoadedScene, SceneError> {
+) -> Result<LoadedDescription, SceneError> {
     let document = Document::parse(text).map_err(|error| {
         let position = error.pos();
         SceneError {
@@ -42,6 +42,7 @@ pub(super) fn parse_document(
     }
 
     let mut integrator = None;
+    let mut integrator_position = None;
     let mut sensor = None;
     let mut shapes = Vec::new();
     let mut emitters = Vec::new();
@@ -51,6 +52,7 @@ pub(super) fn parse_document(
             "default" => {}
             "integrator" if integrator.is_none() => {
                 integrator = Some(read_integrator(&mut reader, child)?);
+                integrator_position = Some(reader.position(child));
             }
             "sensor" if sensor.is_none() => sensor = Some(read_sensor(&mut reader, child)?),
             "integrator" | "sensor" => {
@@ -93,9 +95,10 @@ pub(super) fn parse_document(
             "the scene has no <sensor>: add <sensor type=\"perspective\"> with a fov",
         )
     })?;
-    Ok(LoadedScene {
+    Ok(LoadedDescription {
         scene: SceneDescription {
             integrator: integrator.unwrap_or_else(default_integrator),
+            integrator_position,
             sensor,
             shapes,
             emitters,

@@ -1,4 +1,4 @@
-//! `<integrator>`: `path` and `direct`, or a chapter's own type kept as `Other`.
+//! `<integrator>`: `path` and `direct`.
 
 use roxmltree::Node;
 
@@ -54,17 +54,13 @@ pub(super) fn read_integrator(reader: &mut Reader, node: Node) -> Result<Integra
         },
         "direct" => Integrator::Direct,
         _ => {
-            reader.warn_at(
-                reader.position(node),
+            return Err(reader.error(
+                node,
                 format!(
-                    "integrator type \"{type_name}\" is not one of Mitsuba 3's (path, direct): \
-                     kept as is for a chapter that knows it"
+                    "the integrator type \"{type_name}\" is not one the workbook renders: it \
+                     knows Mitsuba's path and direct"
                 ),
-            );
-            Integrator::Other {
-                type_name,
-                properties: properties.take_raw(),
-            }
+            ));
         }
     };
     properties.finish(reader);

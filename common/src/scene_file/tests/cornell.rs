@@ -9,8 +9,8 @@ use super::super::*;
 /// The example scene, kept as a fixture file.
 const CORNELL: &str = include_str!("../../../tests/scenes/cornell.xml");
 
-fn load(overrides: &[(String, String)]) -> LoadedScene {
-    parse_scene(CORNELL, Path::new("cornell.xml"), overrides).expect("cornell.xml loads")
+fn load(overrides: &[(String, String)]) -> LoadedDescription {
+    parse_description(CORNELL, Path::new("cornell.xml"), overrides).expect("cornell.xml loads")
 }
 
 #[test]
@@ -34,10 +34,10 @@ fn integrator_is_path_with_max_depth_8_and_no_roulette() {
 #[test]
 fn sensor_has_the_files_film_sampler_and_fov() {
     let sensor = load(&[]).scene.sensor;
-    assert_eq!(sensor.model, CameraModel::Perspective);
+    assert_eq!(sensor.model, crate::scene::CameraModel::Pinhole);
     assert_eq!(sensor.fov_x_degrees, 40.0);
     assert_eq!((sensor.film.width, sensor.film.height), (256, 256));
-    assert_eq!(sensor.film.filter, ReconstructionFilter::Box);
+    assert_eq!(sensor.film.filter, crate::scene::FilmFilter::Box);
     assert_eq!(sensor.film.component_format, "float32");
     assert_eq!(sensor.sampler.type_name, "independent");
     assert_eq!(sensor.sampler.sample_count, 64);
@@ -59,12 +59,7 @@ fn ceiling_light_has_the_files_radiance_and_a_black_bsdf() {
     assert_eq!(lights.len(), 1);
     let light = lights[0];
     assert_eq!(light.emitter.unwrap().radiance, Vec3::new(17.0, 12.0, 4.0));
-    assert_eq!(
-        light.bsdf,
-        Bsdf::Diffuse {
-            reflectance: Vec3::ZERO
-        }
-    );
+    assert_eq!(light.material, crate::scene::Material::diffuse(Vec3::ZERO));
     assert_eq!(light.geometry, ShapeGeometry::Rectangle);
 }
 
@@ -84,15 +79,14 @@ fn spheres_are_a_mirror_and_glass_with_the_files_iors() {
         }
     );
     assert_eq!(
-        spheres[0].bsdf,
-        Bsdf::Conductor {
-            material: "none".to_string(),
-            specular_reflectance: Vec3::ONE
+        spheres[0].material,
+        crate::scene::Material::Mirror {
+            reflectance: Vec3::ONE
         }
     );
     assert_eq!(
-        spheres[1].bsdf,
-        Bsdf::Dielectric {
+        spheres[1].material,
+        crate::scene::Material::Dielectric {
             int_ior: 1.5,
             ext_ior: 1.0
         }
@@ -102,10 +96,8 @@ fn spheres_are_a_mirror_and_glass_with_the_files_iors() {
 #[test]
 fn walls_use_the_referenced_colours() {
     let shapes = load(&[]).scene.shapes;
-    let red = Bsdf::Diffuse {
-        reflectance: Vec3::new(0.65, 0.05, 0.05),
-    };
-    assert_eq!(shapes[3].bsdf, red);
+    let red = crate::scene::Material::diffuse(Vec3::new(0.65, 0.05, 0.05));
+    assert_eq!(shapes[3].material, red);
 }
 
 #[test]
@@ -114,5 +106,12 @@ fn loading_from_a_file_reads_the_same_scene() {
     let path = directory.path().join("cornell.xml");
     std::fs::write(&path, CORNELL).expect("write fixture");
     let from_file = load_scene_file(&path, &[]).expect("loads from disk");
-    assert_eq!(from_file, load(&[]));
+    let from_text = parse_scene(CORNELL, Path::new("cornell.xml"), &[]).expect("loads");
+    assert_eq!(from_file.warnings, from_text.warnings);
+    assert_eq!(from_file.scene.surfaces, from_text.scene.surfaces);
+    assert_eq!(
+        from_file.scene.geometry.shapes(),
+        from_text.scene.geometry.shapes()
+    );
+    assert_eq!(from_file.scene.camera, from_text.scene.camera);
 }

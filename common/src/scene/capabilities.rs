@@ -1,0 +1,492 @@
+//! What a chapter can render, and one check that refuses the rest.
+//!
+//! Every chapter renders the same [`Scene`], but each knows only the features the chapters up
+//! to it have brought: chapter 01 knows point lights and smooth materials, chapter 04 adds a
+//! lens with an aperture, chapter 07 area lights, and so on. A chapter's [`Capabilities`] name
+//! the chapter (so it renders every [`Feature`] that it or a chapter before it brings) and the
+//! features it renders in a way of its own; [`Capabilities::check`] finds every feature a
+//! scene uses ([`Scene::features`]) and
+//!
+//! - refuses a feature the chapter cannot render, naming where the scene file writes it and
+//!   the chapter that brings it ("line 32, column 5: an area light (shape 3); soft shadows
+//!   from lights with an area come in chapter 07 (ch07-soft-shadows); ...");
+//! - notes light the chapter leaves out (indirect light before chapter 08), and settings it
+//!   ignores (a film's filter in chapter 01), each from the same declaration.
+
+use super::{Camera, CameraModel, FilmFilter, Integrator, Material, Scene, TextPosition};
+use std::fmt;
+
+/// A chapter of the workbook, named in messages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Chapter {
+    /// Its number, 1 to 8.
+    pub number: u32,
+    /// Its package, such as `ch07-soft-shadows`.
+    pub package: &'static str,
+}
+
+impl fmt::Display for Chapter {
+    /// `chapter 07 (ch07-soft-shadows)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "chapter {:02} ({})", self.number, self.package)
+    }
+}
+
+impl Chapter {
+    /// Whitted ray tracing.
+    pub const WHITTED: Chapter = Chapter {
+        number: 1,
+        package: "ch01-whitted",
+    };
+    /// Anti-aliasing.
+    pub const ANTI_ALIASING: Chapter = Chapter {
+        number: 3,
+        package: "ch03-anti-aliasing",
+    };
+    /// Depth of field.
+    pub const DEPTH_OF_FIELD: Chapter = Chapter {
+        number: 4,
+        package: "ch04-depth-of-field",
+    };
+    /// Motion blur.
+    pub const MOTION_BLUR: Chapter = Chapter {
+        number: 5,
+        package: "ch05-motion-blur",
+    };
+    /// Fuzzy reflections and refractions.
+    pub const FUZZY_REFLECTIONS: Chapter = Chapter {
+        number: 6,
+        package: "ch06-fuzzy-reflections",
+    };
+    /// Soft shadows.
+    pub const SOFT_SHADOWS: Chapter = Chapter {
+        number: 7,
+        package: "ch07-soft-shadows",
+    };
+    /// The path tracer.
+    pub const PATH_TRACING: Chapter = Chapter {
+        number: 8,
+        package: "ch08-path-tracing",
+    };
+}
+
+/// Something a scene may use that not every chapter renders.
+///
+/// What every chapter renders (point lights, matte surfaces, mirrors, glass, a pinhole, an
+/// environment seen directly) is not a feature.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Feature {
+    /// A reconstruction filter wider than a pixel's box.
+    FilmFilter,
+    /// A lens with an aperture.
+    Aperture,
+    /// A shape that moves.
+    MovingShape,
+    /// A camera that moves.
+    MovingCamera,
+    /// A glossy or frosted material: a `cos^n` lobe.
+    FuzzyMaterial,
+    /// A lobe that stands in for a scene file's microfacet roughness (`roughconductor`,
+    /// `roughdielectric`): the same chapter renders it, in a way of its own.
+    MicrofacetMaterial,
+    /// A shape that glows.
+    AreaLight,
+    /// A glowing shape that moves.
+    MovingAreaLight,
+    /// Light that reaches a matte surface from other surfaces, asked for by a `path`
+    /// integrator of more than two segments.
+    IndirectLight,
+    /// The environment lighting matte surfaces (not only seen directly or in mirrors).
+    EnvironmentLight,
+}
+
+/// What a chapter that does not render a feature does with a scene that uses it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum WhenMissing {
+    /// The scene is refused.
+    Refuse,
+    /// The scene is rendered without the feature, with this note.
+    Note(&'static str),
+}
+
+impl Feature {
+    /// The chapter that brings the feature; `None` for what no chapter renders.
+    pub fn brought_by(self) -> Option<Chapter> {
+        match self {
+            Feature::FilmFilter => Some(Chapter::ANTI_ALIASING),
+            Feature::Aperture => Some(Chapter::DEPTH_OF_FIELD),
+            Feature::MovingShape | Feature::MovingCamera => Some(Chapter::MOTION_BLUR),
+            Feature::FuzzyMaterial | Feature::MicrofacetMaterial => {
+                Some(Chapter::FUZZY_REFLECTIONS)
+            }
+            Feature::AreaLight => Some(Chapter::SOFT_SHADOWS),
+            Feature::IndirectLight | Feature::EnvironmentLight => Some(Chapter::PATH_TRACING),
+            Feature::MovingAreaLight => None,
+        }
+    }
+
+    /// What the feature is, as a message names it.
+    fn what(self) -> &'static str {
+        match self {
+            Feature::FilmFilter => "a reconstruction filter",
+            Feature::Aperture => "a lens with an aperture",
+            Feature::MovingShape => "a shape that moves",
+            Feature::MovingCamera => "a camera that moves",
+            Feature::FuzzyMaterial => "a glossy or frosted material",
+            Feature::MicrofacetMaterial => "a microfacet roughness",
+            Feature::AreaLight => "an area light",
+            Feature::MovingAreaLight => "an area light that moves",
+            Feature::IndirectLight => "indirect light",
+            Feature::EnvironmentLight => "an environment",
+        }
+    }
+
+    /// The lesson the feature belongs to, as in "soft shadows come in chapter 07".
+    fn lesson(self) -> &'static str {
+        match self {
+            Feature::FilmFilter => "reconstruction filters come",
+            Feature::Aperture => "depth of field comes",
+            Feature::MovingShape | Feature::MovingCamera => "motion blur comes",
+            Feature::FuzzyMaterial | Feature::MicrofacetMaterial => {
+                "fuzzy reflections and refractions come"
+            }
+            Feature::AreaLight => "soft shadows from lights with an area come",
+            Feature::MovingAreaLight => "no chapter samples lights that move",
+            Feature::IndirectLight => "indirect light comes",
+            Feature::EnvironmentLight => "the environment lights matte surfaces",
+        }
+    }
+
+    fn when_missing(self) -> WhenMissing {
+        match self {
+            Feature::FilmFilter => WhenMissing::Note(
+                "the film's reconstruction filter is ignored: this chapter averages each pixel's own samples (a box filter)",
+            ),
+            Feature::IndirectLight => WhenMissing::Note(
+                "this chapter leaves out indirect light (light that reaches a matte surface from other surfaces), which Mitsuba's path integrator includes",
+            ),
+            Feature::EnvironmentLight => WhenMissing::Note(
+                "the constant environment is seen directly and in mirrors and glass, but it does not light matte surfaces here",
+            ),
+            _ => WhenMissing::Refuse,
+        }
+    }
+}
+
+/// One use of a feature in a scene: where it is written, and what it is there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FeatureUse {
+    /// The feature.
+    pub feature: Feature,
+    /// Where the scene file writes it; `None` for a built-in scene.
+    pub origin: Option<TextPosition>,
+    /// What it is in this scene, such as "shape 3 (a sphere)"; may be empty.
+    pub detail: String,
+}
+
+impl FeatureUse {
+    /// `line 32, column 5: an area light (shape 3)`.
+    fn describe(&self) -> String {
+        let mut text = String::new();
+        if let Some(origin) = self.origin {
+            text.push_str(&format!("{origin}: "));
+        }
+        text.push_str(self.feature.what());
+        if !self.detail.is_empty() {
+            text.push_str(&format!(" ({})", self.detail));
+        }
+        text
+    }
+}
+
+/// What a chapter renders: every feature it or a chapter before it brings, some of them in a
+/// way of its own, each of those with its note.
+#[derive(Clone, Copy, Debug)]
+pub struct Capabilities {
+    /// The chapter.
+    pub chapter: Chapter,
+    /// Features it renders in a way of its own, with the note that says how.
+    pub approximates: &'static [(Feature, &'static str)],
+}
+
+impl Capabilities {
+    /// Whether the chapter renders `feature`: whether it or a chapter before it brings it.
+    pub fn renders(&self, feature: Feature) -> bool {
+        feature
+            .brought_by()
+            .is_some_and(|chapter| chapter.number <= self.chapter.number)
+    }
+
+    /// Checks that the chapter can render `scene`: the notes to print (light left out,
+    /// settings ignored, approximations), or a refusal naming where the first feature it
+    /// cannot render is written and the chapter that brings it.
+    pub fn check(&self, scene: &Scene) -> Result<Vec<String>, String> {
+        let mut notes: Vec<String> = Vec::new();
+        let mut note = |text: String| {
+            if !notes.contains(&text) {
+                notes.push(text);
+            }
+        };
+        for usage in scene.features() {
+            let feature = usage.feature;
+            if self.renders(feature) {
+                if let Some((_, how)) = self.approximates.iter().find(|(f, _)| *f == feature) {
+                    note(format!("{}: {how}", usage.describe()));
+                }
+                continue;
+            }
+            let brought_by = match feature.brought_by() {
+                Some(chapter) => format!(" in {chapter}"),
+                None => String::new(),
+            };
+            match feature.when_missing() {
+                WhenMissing::Note(text) => {
+                    note(format!("{text}; {}{brought_by}", feature.lesson()))
+                }
+                WhenMissing::Refuse => {
+                    return Err(format!(
+                        "{}; {}{brought_by}; {} renders {}",
+                        usage.describe(),
+                        feature.lesson(),
+                        self.chapter,
+                        self.known()
+                    ));
+                }
+            }
+        }
+        Ok(notes)
+    }
+
+    /// What the chapter renders, in words, for a refusal.
+    fn known(&self) -> String {
+        let mut known = vec!["point lights, matte surfaces, mirrors and glass"];
+        for (feature, words) in [
+            (Feature::FilmFilter, "reconstruction filters"),
+            (Feature::Aperture, "lenses"),
+            (Feature::MovingShape, "motion"),
+            (Feature::FuzzyMaterial, "glossy and frosted materials"),
+            (Feature::AreaLight, "area lights"),
+            (Feature::IndirectLight, "indirect light"),
+        ] {
+            if self.renders(feature) {
+                known.push(words);
+            }
+        }
+        match known.split_last() {
+            Some((last, [])) => (*last).to_string(),
+            Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+            None => String::new(),
+        }
+    }
+}
+
+impl Scene {
+    /// Every use of a [`Feature`] in the scene, in the order the file writes them: the
+    /// integrator, the sensor (lens, motion, filter), the shapes, the environment.
+    pub fn features(&self) -> Vec<FeatureUse> {
+        let mut uses = Vec::new();
+        let mut add = |feature, origin, detail: String| {
+            uses.push(FeatureUse {
+                feature,
+                origin,
+                detail,
+            })
+        };
+        if matches!(self.integrator, Integrator::Path { .. }) && self.max_depth > 2 {
+            add(
+                Feature::IndirectLight,
+                self.origins.integrator,
+                "the path integrator's max_depth".to_string(),
+            );
+        }
+        let Camera {
+            model, keyframes, ..
+        } = &self.camera;
+        if let CameraModel::ThinLens {
+            aperture_radius, ..
+        } = *model
+            && aperture_radius > 0.0
+        {
+            add(
+                Feature::Aperture,
+                self.origins.sensor,
+                format!("aperture radius {aperture_radius}"),
+            );
+        }
+        if !keyframes.is_empty() {
+            add(
+                Feature::MovingCamera,
+                self.origins.sensor,
+                "an <animation> of the sensor's to_world".to_string(),
+            );
+        }
+        if self.film.filter != FilmFilter::Box {
+            add(
+                Feature::FilmFilter,
+                self.origins.filter.or(self.origins.sensor),
+                format!("{:?}", self.film.filter).to_lowercase(),
+            );
+        }
+        let still = self.geometry.shapes().len();
+        for (index, surface) in self.surfaces.iter().enumerate() {
+            let name = format!("shape {}", index + 1);
+            let moves = index >= still;
+            if moves {
+                add(Feature::MovingShape, surface.origin, name.clone());
+            }
+            if surface.emitter.is_some() {
+                let feature = if moves {
+                    Feature::MovingAreaLight
+                } else {
+                    Feature::AreaLight
+                };
+                add(feature, surface.origin, name.clone());
+            }
+            if let Some((detail, stands_in)) = fuzzy_detail(&surface.material) {
+                let feature = if stands_in {
+                    Feature::MicrofacetMaterial
+                } else {
+                    Feature::FuzzyMaterial
+                };
+                add(feature, surface.origin, format!("{name}: {detail}"));
+            }
+        }
+        if self.environment != glam::Vec3::ZERO {
+            add(
+                Feature::EnvironmentLight,
+                self.origins.environment,
+                String::new(),
+            );
+        }
+        uses
+    }
+}
+
+/// What a fuzzy material is, for messages, and whether it stands in for a microfacet
+/// roughness; `None` for a smooth one.
+fn fuzzy_detail(material: &Material) -> Option<(String, bool)> {
+    let (kind, exponent, stands_in_for) = match material {
+        Material::Glossy(g) => ("roughconductor", g.exponent, g.stands_in_for),
+        Material::RoughGlass(g) => ("roughdielectric", g.exponent, g.stands_in_for),
+        _ => return None,
+    };
+    Some(match stands_in_for {
+        Some(microfacet) => (
+            format!(
+                "{kind} with alpha {} as a cos^n lobe of exponent {exponent:.1}",
+                microfacet.alpha
+            ),
+            true,
+        ),
+        None => (format!("a cos^n lobe of exponent {exponent}"), false),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::{Shape, Sphere};
+    use crate::scene::{CameraFrame, FilmSettings, SceneBuilder};
+    use glam::{Mat4, Vec3};
+
+    const WHITTED: Capabilities = Capabilities {
+        chapter: Chapter::WHITTED,
+        approximates: &[],
+    };
+
+    const SOFT_SHADOWS: Capabilities = Capabilities {
+        chapter: Chapter::SOFT_SHADOWS,
+        approximates: &[(Feature::MicrofacetMaterial, "rendered as a lobe")],
+    };
+
+    fn sphere() -> Shape {
+        Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0))
+    }
+
+    fn scene(builder: SceneBuilder) -> Scene {
+        let frame = CameraFrame::look_at(Vec3::Z * 5.0, Vec3::ZERO, Vec3::Y).unwrap();
+        builder.build(
+            crate::scene::Camera::pinhole(frame, 40.0),
+            FilmSettings::new(4, 4),
+            2,
+        )
+    }
+
+    #[test]
+    fn a_feature_of_a_later_chapter_is_refused_with_where_and_who() {
+        let mut lit = scene(SceneBuilder::new().area_light(
+            sphere(),
+            Material::diffuse(Vec3::ONE),
+            Vec3::ONE,
+        ));
+        lit.surfaces[0].origin = Some(TextPosition {
+            line: 32,
+            column: 5,
+        });
+        let refusal = WHITTED.check(&lit).unwrap_err();
+        assert!(
+            refusal.starts_with("line 32, column 5: an area light (shape 1); soft shadows")
+                && refusal.contains("chapter 07 (ch07-soft-shadows)")
+                && refusal.contains("chapter 01 (ch01-whitted) renders point lights"),
+            "{refusal}"
+        );
+        assert_eq!(SOFT_SHADOWS.check(&lit), Ok(Vec::new()));
+    }
+
+    #[test]
+    fn light_left_out_is_noted_and_approximations_say_how() {
+        let rough = Material::Glossy(crate::scene::Glossy {
+            stands_in_for: Some(crate::scene::Microfacet {
+                distribution: crate::scene::MicrofacetDistribution::Beckmann,
+                alpha: 0.5,
+            }),
+            ..match Material::glossy(Vec3::ONE, 6.0) {
+                Material::Glossy(g) => g,
+                _ => unreachable!(),
+            }
+        });
+        let mut glossy = scene(
+            SceneBuilder::new()
+                .shape(sphere(), Material::glossy(Vec3::ONE, 10.0))
+                .shape(sphere(), rough)
+                .environment(Vec3::ONE),
+        );
+        glossy.max_depth = 8;
+        let notes = SOFT_SHADOWS.check(&glossy).unwrap();
+        assert_eq!(notes.len(), 3, "{notes:?}");
+        assert!(notes[0].contains("leaves out indirect light") && notes[0].contains("chapter 08"));
+        // The lobe of shape 1 is the chapter's own; shape 2's stands in for a roughness.
+        assert!(
+            notes[1].contains("(shape 2: roughconductor with alpha 0.5 as a cos^n lobe of exponent 6.0): rendered as a lobe"),
+            "{notes:?}"
+        );
+        assert!(notes[2].contains("does not light matte surfaces"));
+        // Direct light only: nothing indirect to leave out.
+        glossy.max_depth = 2;
+        assert_eq!(SOFT_SHADOWS.check(&glossy).unwrap().len(), 2);
+        let refusal = WHITTED.check(&glossy).unwrap_err();
+        assert!(
+            refusal.contains("a glossy or frosted material (shape 1")
+                && refusal.contains("chapter 06"),
+            "{refusal}"
+        );
+    }
+
+    #[test]
+    fn a_moving_light_is_refused_by_every_chapter() {
+        let keyframes = vec![
+            (0.0, Mat4::IDENTITY),
+            (1.0, Mat4::from_translation(Vec3::X)),
+        ];
+        let mut moving =
+            scene(SceneBuilder::new().moving(sphere(), keyframes, Material::diffuse(Vec3::ONE)));
+        moving.surfaces[0].emitter = Some(crate::scene::AreaEmitter {
+            radiance: Vec3::ONE,
+        });
+        let refusal = SOFT_SHADOWS.check(&moving).unwrap_err();
+        assert!(
+            refusal.contains("an area light that moves (shape 1); no chapter samples"),
+            "{refusal}"
+        );
+    }
+}

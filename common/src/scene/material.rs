@@ -1,0 +1,275 @@
+//! What a surface is made of: every material the workbook renders, as parameters.
+//!
+//! Chapter 01 renders the smooth ones (matte, mirror, glass); chapter 06 adds the fuzzy ones,
+//! whose reflection is spread by a `cos^n` lobe. How each is traced or sampled is the chapters'
+//! business; here they are only data.
+
+use glam::{Vec2, Vec3};
+
+/// How a surface scatters light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Material {
+    /// Matte: reflects `albedo / pi` of the incident irradiance into every direction.
+    Diffuse {
+        /// Share of the incident light reflected, per colour channel.
+        albedo: Vec3,
+        /// Whether the back face reflects too. Mitsuba's `diffuse` is one-sided (black
+        /// from behind); its `twosided` wrapper makes both sides reflect.
+        two_sided: bool,
+    },
+    /// Matte with a checkerboard albedo: Whitted's 1980 floor.
+    CheckeredDiffuse {
+        /// The albedo at each point of the surface.
+        checkerboard: Checkerboard,
+        /// Whether the back face reflects too.
+        two_sided: bool,
+    },
+    /// A perfect mirror reflecting `reflectance` of the light.
+    Mirror {
+        /// Share reflected, per colour channel.
+        reflectance: Vec3,
+    },
+    /// Smooth glass, water, diamond: reflects by the Fresnel equations, refracts the rest.
+    Dielectric {
+        /// Index of refraction on the side the normal points away from (inside).
+        int_ior: f32,
+        /// Index of refraction on the side the normal points to (outside).
+        ext_ior: f32,
+    },
+    /// A fuzzy mirror: the share `reflectance` of the light arriving from directions spread
+    /// by a `cos^n` lobe around the mirror direction (chapter 06).
+    Glossy(Glossy),
+    /// Frosted glass: smooth glass's Fresnel split into a reflected and a refracted ray, each
+    /// spread by a `cos^n` lobe around its ideal direction (chapter 06).
+    RoughGlass(RoughGlass),
+}
+
+/// A fuzzy mirror's parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Glossy {
+    /// Share of the light reflected, per colour channel.
+    pub reflectance: Vec3,
+    /// The lobe's exponent `n`: 0 is a hemisphere around the mirror direction, large is sharp.
+    pub exponent: f32,
+    /// Whether the back face reflects too (Mitsuba's `twosided`); else it is black.
+    pub two_sided: bool,
+    /// The microfacet roughness of a scene file's `roughconductor` this lobe stands in for.
+    pub stands_in_for: Option<Microfacet>,
+}
+
+/// Frosted glass's parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoughGlass {
+    /// Index of refraction inside (where the normal points away from).
+    pub int_ior: f32,
+    /// Index of refraction outside.
+    pub ext_ior: f32,
+    /// The exponent of both lobes.
+    pub exponent: f32,
+    /// The microfacet roughness of a scene file's `roughdielectric` these lobes stand in for.
+    pub stands_in_for: Option<Microfacet>,
+}
+
+/// A microfacet roughness as Mitsuba 3's rough BSDFs give it: a surface of tiny mirror
+/// facets whose slopes are spread by a width `alpha`.
+///
+/// The workbook renders it as a `cos^n` lobe of about the same width, `n = 2 / alpha² - 2`
+/// (the correspondence for the Beckmann distribution: Walter et al. 2007, "Microfacet models
+/// for refraction through rough surfaces"), not as Mitsuba's microfacet model: the lobes'
+/// shapes, their brightness at grazing angles and their Fresnel colouring differ.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Microfacet {
+    /// The slopes' distribution.
+    pub distribution: MicrofacetDistribution,
+    /// The width of the slopes' distribution.
+    pub alpha: f32,
+}
+
+/// Mitsuba 3's two microfacet distributions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MicrofacetDistribution {
+    /// Beckmann's Gaussian slopes.
+    Beckmann,
+    /// GGX (Trowbridge–Reitz), with longer tails.
+    Ggx,
+}
+
+impl Microfacet {
+    /// The `cos^n` exponent whose lobe is about as wide as this roughness:
+    /// `n = 2 / alpha² - 2`, never below 0 (alpha above 1 is rougher than any lobe).
+    pub fn lobe_exponent(&self) -> f32 {
+        (2.0 / (self.alpha * self.alpha) - 2.0).max(0.0)
+    }
+}
+
+impl Material {
+    /// A one-sided matte surface.
+    pub fn diffuse(albedo: Vec3) -> Self {
+        Material::Diffuse {
+            albedo,
+            two_sided: false,
+        }
+    }
+
+    /// A matte surface that reflects on both sides.
+    pub fn two_sided_diffuse(albedo: Vec3) -> Self {
+        Material::Diffuse {
+            albedo,
+            two_sided: true,
+        }
+    }
+
+    /// A perfect mirror of reflectance 1.
+    pub fn mirror() -> Self {
+        Material::Mirror {
+            reflectance: Vec3::ONE,
+        }
+    }
+
+    /// Glass-like material of index `ior` in air.
+    pub fn glass(ior: f32) -> Self {
+        Material::Dielectric {
+            int_ior: ior,
+            ext_ior: 1.0,
+        }
+    }
+
+    /// A one-sided fuzzy mirror.
+    pub fn glossy(reflectance: Vec3, exponent: f32) -> Self {
+        Material::Glossy(Glossy {
+            reflectance,
+            exponent,
+            two_sided: false,
+            stands_in_for: None,
+        })
+    }
+
+    /// Frosted glass of index `ior` in air.
+    pub fn rough_glass(ior: f32, exponent: f32) -> Self {
+        Material::RoughGlass(RoughGlass {
+            int_ior: ior,
+            ext_ior: 1.0,
+            exponent,
+            stands_in_for: None,
+        })
+    }
+
+    /// Whether the material scatters with a lobe (chapter 06's materials).
+    pub fn is_fuzzy(&self) -> bool {
+        matches!(self, Material::Glossy(_) | Material::RoughGlass(_))
+    }
+
+    /// The same material with its lobe exponent replaced by `exponent` (smooth materials stay
+    /// as they are); the lobe then stands in for no microfacet roughness.
+    pub fn with_exponent(self, exponent: f32) -> Self {
+        match self {
+            Material::Glossy(g) => Material::Glossy(Glossy {
+                exponent,
+                stands_in_for: None,
+                ..g
+            }),
+            Material::RoughGlass(g) => Material::RoughGlass(RoughGlass {
+                exponent,
+                stands_in_for: None,
+                ..g
+            }),
+            smooth => smooth,
+        }
+    }
+}
+
+/// Checks a lobe exponent: finite and not negative.
+pub fn check_exponent(exponent: f32) -> Result<f32, String> {
+    if exponent.is_finite() && exponent >= 0.0 {
+        Ok(exponent)
+    } else {
+        Err(format!(
+            "the lobe exponent must be a finite number >= 0 (0 is a hemisphere, 1e6 almost a mirror), not {exponent}"
+        ))
+    }
+}
+
+/// Mitsuba 3's `checkerboard` texture: two colours alternating over the surface parameters.
+///
+/// With `uv' = scale * uv`, a point is in colour 0 where the fractional parts of `u'` and `v'`
+/// are on the same side of 1/2, else in colour 1: one period of `uv'` holds 2 x 2 squares.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Checkerboard {
+    /// Mitsuba's `color0`.
+    pub colour0: Vec3,
+    /// Mitsuba's `color1`.
+    pub colour1: Vec3,
+    /// Periods per unit of `u` and `v` (Mitsuba's `to_uv` scale).
+    pub scale: Vec2,
+}
+
+impl Checkerboard {
+    /// The colour at surface parameters `uv`.
+    pub fn eval(&self, uv: Vec2) -> Vec3 {
+        let scaled = self.scale * uv;
+        let upper_half = |t: f32| t - t.floor() > 0.5;
+        if upper_half(scaled.x) == upper_half(scaled.y) {
+            self.colour0
+        } else {
+            self.colour1
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checkerboard_follows_mitsubas_convention() {
+        let board = Checkerboard {
+            colour0: Vec3::X,
+            colour1: Vec3::Y,
+            scale: Vec2::splat(2.0),
+        };
+        // uv' = (0.5, 0.5): both fractions at 1/2, not above: colour 0.
+        assert_eq!(board.eval(Vec2::new(0.25, 0.25)), Vec3::X);
+        assert_eq!(board.eval(Vec2::new(0.1, 0.1)), Vec3::X);
+        assert_eq!(board.eval(Vec2::new(0.4, 0.1)), Vec3::Y); // uv' = (0.8, 0.2)
+        assert_eq!(board.eval(Vec2::new(0.1, 0.4)), Vec3::Y);
+        assert_eq!(board.eval(Vec2::new(0.4, 0.4)), Vec3::X);
+        assert_eq!(board.eval(Vec2::new(0.6, 0.1)), Vec3::X); // next period
+        assert_eq!(board.eval(Vec2::new(-0.1, 0.1)), Vec3::Y); // uv' = (-0.2, 0.2)
+    }
+
+    #[test]
+    fn exponents_must_be_finite_and_not_negative() {
+        assert_eq!(check_exponent(0.0), Ok(0.0));
+        assert_eq!(check_exponent(1e6), Ok(1e6));
+        for bad in [-1.0, f32::NAN, f32::INFINITY] {
+            let message = check_exponent(bad).unwrap_err();
+            assert!(message.contains("lobe exponent"), "{message}");
+        }
+    }
+
+    #[test]
+    fn only_lobed_materials_are_fuzzy() {
+        assert!(!Material::mirror().is_fuzzy());
+        assert!(Material::glossy(Vec3::ONE, 10.0).is_fuzzy());
+        assert!(Material::rough_glass(1.5, 10.0).is_fuzzy());
+        assert_eq!(
+            Material::glossy(Vec3::ONE, 10.0).with_exponent(3.0),
+            Material::glossy(Vec3::ONE, 3.0)
+        );
+    }
+
+    #[test]
+    fn beckmann_roughness_maps_to_lobe_exponents() {
+        let exponent = |alpha| {
+            Microfacet {
+                distribution: MicrofacetDistribution::Beckmann,
+                alpha,
+            }
+            .lobe_exponent()
+        };
+        approx::assert_relative_eq!(exponent(0.1), 198.0, max_relative = 1e-5);
+        approx::assert_relative_eq!(exponent(1e-3), 2e6 - 2.0, max_relative = 1e-5);
+        assert_eq!(exponent(1.0), 0.0);
+        assert_eq!(exponent(3.0), 0.0);
+    }
+}

@@ -1,0 +1,132 @@
+//! What the loader makes of a file: the scene model, its shapes in order, its materials, and
+//! the refusals of what no chapter renders.
+
+use std::path::Path;
+
+use glam::Vec3;
+
+use super::super::parse_scene;
+use super::scene_with;
+use crate::scene::{Integrator, Material, MicrofacetDistribution, Scene};
+
+const CORNELL: &str = include_str!("../../../tests/scenes/cornell.xml");
+
+fn scene(text: &str) -> Result<Scene, String> {
+    parse_scene(text, Path::new("test.xml"), &[])
+        .map(|loaded| loaded.scene)
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn cornell_box_becomes_eight_surfaces_one_of_which_glows() {
+    let scene = parse_scene(CORNELL, Path::new("cornell.xml"), &[])
+        .expect("loads")
+        .scene;
+    assert_eq!(scene.shape_count(), 8);
+    assert_eq!(scene.geometry.shapes().len(), 8);
+    let lights: Vec<_> = scene
+        .surfaces
+        .iter()
+        .filter(|s| s.emitter.is_some())
+        .collect();
+    assert_eq!(lights.len(), 1);
+    assert_eq!(lights[0].material, Material::diffuse(Vec3::ZERO));
+    assert!(lights[0].origin.is_some_and(|p| p.line > 0));
+    assert_eq!(scene.integrator, Integrator::Path { rr_depth: 1000 });
+    assert_eq!(scene.max_depth, 8);
+    assert_eq!((scene.film.width, scene.film.height), (256, 256));
+    assert_eq!(scene.sampler.sample_count, 64);
+    assert!(scene.origins.sensor.is_some() && scene.origins.integrator.is_some());
+}
+
+#[test]
+fn still_shapes_come_first_then_moving_ones_each_piece_with_its_surface() {
+    let text = scene_with(
+        r#"<shape type="cube"><animation name="to_world">
+             <transform time="0"/><transform time="1"><translate x="1"/></transform>
+           </animation><bsdf type="conductor"/></shape>
+           <shape type="cube"><bsdf type="dielectric"/></shape>"#,
+    );
+    let scene = scene(&text).unwrap();
+    assert_eq!(scene.geometry.shapes().len(), 6, "the still cube's faces");
+    assert_eq!(scene.moving.len(), 6, "the moving cube's faces");
+    assert!(matches!(
+        scene.surfaces[0].material,
+        Material::Dielectric { .. }
+    ));
+    assert_eq!(scene.surfaces[6].material, Material::mirror());
+    assert_eq!(scene.surfaces[6].origin.unwrap().line, 2);
+    assert_eq!(scene.moving[0].keyframes.len(), 2);
+}
+
+#[test]
+fn rough_materials_become_lobes_that_remember_their_roughness() {
+    let rough = scene(&scene_with(
+        r#"<shape type="sphere"><bsdf type="twosided"><bsdf type="roughconductor">
+             <float name="alpha" value="0.1"/><string name="distribution" value="ggx"/>
+           </bsdf></bsdf></shape>
+           <shape type="sphere"><bsdf type="roughdielectric"><string name="int_ior" value="water"/>
+             <float name="alpha" value="0.05"/></bsdf></shape>"#,
+    ))
+    .unwrap();
+    let Material::Glossy(glossy) = rough.surfaces[0].material else {
+        panic!("{:?}", rough.surfaces[0]);
+    };
+    assert!(glossy.two_sided);
+    approx::assert_relative_eq!(glossy.exponent, 198.0, max_relative = 1e-4);
+    let microfacet = glossy.stands_in_for.unwrap();
+    assert_eq!(microfacet.distribution, MicrofacetDistribution::Ggx);
+    assert!(matches!(rough.surfaces[1].material, Material::RoughGlass(g) if g.int_ior == 1.333));
+}
+
+#[test]
+fn what_no_chapter_renders_is_refused_where_it_is_written() {
+    for (body, expected) in [
+        (
+            r#"<shape type="sphere"><bsdf type="plastic"/></shape>"#,
+            "test.xml:2:22: the bsdf type \"plastic\" is not one the workbook renders",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Au"/></bsdf></shape>"#,
+            "perfect mirror",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="roughconductor"><float name="alpha" value="-0.1"/></bsdf></shape>"#,
+            "alpha must be a positive number",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="roughconductor"><string name="distribution" value="phong"/></bsdf></shape>"#,
+            "unknown microfacet distribution",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="phong"><float name="exponent" value="-3"/></bsdf></shape>"#,
+            "lobe exponent",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="roughconductor"><float name="alpah" value="0.1"/></bsdf></shape>"#,
+            "test.xml:2:50: the roughconductor bsdf has no property `alpah`",
+        ),
+        (
+            r#"<shape type="sphere"><boolean name="flip_normals" value="true"/></shape>"#,
+            "test.xml:2:1: a sphere with flip_normals",
+        ),
+        (
+            r#"<shape type="sphere"><transform name="to_world"><scale x="2"/></transform></shape>"#,
+            "ellipsoid",
+        ),
+        (
+            r#"<integrator type="volpath"/>"#,
+            "the integrator type \"volpath\"",
+        ),
+    ] {
+        let error = scene(&scene_with(body)).expect_err(body);
+        assert!(error.contains(expected), "{body}: {error}");
+    }
+    let backwards = r#"<scene version="3.0.0"><sensor type="perspective"><float name="fov" value="40"/>
+        <float name="shutter_open" value="1"/><float name="shutter_close" value="0.5"/></sensor></scene>"#;
+    let error = scene(backwards).unwrap_err();
+    assert!(
+        error.contains("shutter_close 0.5 is before its shutter_open 1"),
+        "{error}"
+    );
+}

@@ -1,0 +1,181 @@
+//! The last step of loading: a file's description made into the scene model.
+//!
+//! Shapes are placed in world space ([`world_shapes`]), a moving shape in its own space with
+//! its keyframes; every piece of a shape (a cube's six faces, a mesh's triangles) gets the
+//! shape's surface; the still shapes come first, in file order, then the moving ones. What the
+//! file asks that no chapter can render, or that makes no sense, is refused here, pointing at
+//! the element.
+
+use std::path::Path;
+
+use super::description::{EmitterDescription, Integrator, SceneDescription, ShapeGeometry};
+use super::error::{SceneError, TextPosition};
+use super::to_geometry::world_shapes;
+use crate::scene::{
+    AnimatedShape, Camera, CameraFrame, CameraModel, FilmSettings, Integrator as Transport,
+    Origins, PointLight, SamplerSettings, Scene, SceneBuilder, Surface, UNLIMITED_DEPTH,
+};
+use glam::{Mat4, Vec3};
+
+/// The scene model of `description`, read from `file`.
+pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Scene, SceneError> {
+    let error = |position: TextPosition, message: String| SceneError {
+        file: file.to_path_buf(),
+        line: position.line,
+        column: position.column,
+        message,
+    };
+    let sensor = &description.sensor;
+    if let CameraModel::ThinLens {
+        aperture_radius,
+        focus_distance,
+    } = sensor.model
+    {
+        if !(aperture_radius.is_finite() && aperture_radius >= 0.0) {
+            return Err(error(
+                sensor.position,
+                format!(
+                    "the thinlens sensor's aperture_radius must be a finite number of at least 0, found {aperture_radius}"
+                ),
+            ));
+        }
+        if !(focus_distance.is_finite() && focus_distance > 0.0) {
+            return Err(error(
+                sensor.position,
+                format!(
+                    "the thinlens sensor's focus_distance must be a finite positive distance, found {focus_distance}"
+                ),
+            ));
+        }
+    }
+    let (open, close) = (sensor.shutter_open, sensor.shutter_close);
+    if !(open.is_finite() && close.is_finite() && (close - open).is_finite()) {
+        return Err(error(
+            sensor.position,
+            format!("the sensor's shutter_open {open} and shutter_close {close} must be finite"),
+        ));
+    }
+    if close < open {
+        return Err(error(
+            sensor.position,
+            format!(
+                "the sensor's shutter_close {close} is before its shutter_open {open}: the shutter must open before it closes"
+            ),
+        ));
+    }
+
+    let mut builder = SceneBuilder::new();
+    for shape in &description.shapes {
+        let position = shape.position;
+        let kind = match shape.geometry {
+            ShapeGeometry::Sphere { .. } => "sphere",
+            ShapeGeometry::Rectangle => "rectangle",
+            ShapeGeometry::Disk => "disk",
+            ShapeGeometry::Cube => "cube",
+            ShapeGeometry::Obj { .. } => "obj",
+        };
+        if shape.flip_normals && kind == "sphere" {
+            return Err(error(
+                position,
+                "a sphere with flip_normals: the workbook's spheres have outward normals".into(),
+            ));
+        }
+        let surface = Surface {
+            material: shape.material,
+            emitter: shape.emitter,
+            origin: Some(position),
+        };
+        let keyframes = &shape.to_world_keyframes;
+        let placed = if keyframes.is_empty() {
+            shape.clone()
+        } else {
+            // In its own space: the keyframes place it.
+            super::ShapeDescription {
+                to_world: Mat4::IDENTITY,
+                to_world_keyframes: Vec::new(),
+                ..shape.clone()
+            }
+        };
+        let pieces = world_shapes(&placed)
+            .map_err(|message| error(position, format!("the {kind} shape: {message}")))?;
+        for piece in pieces {
+            builder = if keyframes.is_empty() {
+                builder.surface(piece, surface)
+            } else {
+                let animated = AnimatedShape {
+                    shape: piece,
+                    keyframes: keyframes.clone(),
+                };
+                builder.moving_surface(animated, surface)
+            };
+        }
+    }
+    let mut environment = Vec3::ZERO;
+    let mut environment_position = None;
+    for emitter in &description.emitters {
+        match *emitter {
+            EmitterDescription::Point {
+                position,
+                intensity,
+            } => {
+                builder = builder.light(PointLight {
+                    position,
+                    intensity,
+                });
+            }
+            EmitterDescription::Constant { radiance, position } => {
+                environment += radiance;
+                environment_position.get_or_insert(position);
+            }
+        }
+    }
+    let (integrator, max_depth) = match description.integrator {
+        Integrator::Path {
+            max_depth,
+            rr_depth,
+        } => (
+            Transport::Path {
+                rr_depth: rr_depth.max(1) as u32,
+            },
+            if max_depth < 0 {
+                UNLIMITED_DEPTH
+            } else {
+                max_depth.max(1) as u32
+            },
+        ),
+        // Mitsuba's `direct`: the camera ray and one segment to the lights.
+        Integrator::Direct => (Transport::Direct, 2),
+    };
+    let camera = Camera {
+        frame: CameraFrame::from_matrix(&sensor.to_world),
+        fov_x_degrees: sensor.fov_x_degrees,
+        near_clip: sensor.near_clip,
+        model: sensor.model,
+        shutter_open: open,
+        shutter_close: close,
+        keyframes: sensor.to_world_keyframes.clone(),
+    };
+    let film = FilmSettings {
+        width: sensor.film.width,
+        height: sensor.film.height,
+        filter: sensor.film.filter,
+    };
+    let scene = builder
+        .environment(environment)
+        .build(camera, film, max_depth);
+    Ok(Scene {
+        integrator,
+        sampler: SamplerSettings {
+            type_name: sensor.sampler.type_name.clone(),
+            sample_count: sensor.sampler.sample_count,
+            seed: sensor.sampler.seed,
+        },
+        origins: Origins {
+            integrator: description.integrator_position,
+            sensor: Some(sensor.position),
+            filter: sensor.film.filter_position,
+            environment: environment_position,
+        },
+        ..scene
+    })
+}
