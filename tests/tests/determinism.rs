@@ -179,9 +179,9 @@ fn chapter_06_is_thread_independent_with_every_choice_at_glass_and_stray_ray_pol
 fn chapter_07_is_thread_independent_with_every_light_option() {
     use ch07_soft_shadows::disc_warp::DiscWarp;
     use ch07_soft_shadows::light_options::{LightOptions, LightStrata};
-    use ch07_soft_shadows::light_sample::{LightSampling, Strategy};
     use ch07_soft_shadows::render_with;
     use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+    use ch07_soft_shadows::strategy::{LightSampling, Strategy};
     let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
     for builtin in Builtin::ALL {
         let scene = builtin.build(DEFAULT_DEPTH, 1.0);

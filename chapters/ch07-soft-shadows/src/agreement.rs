@@ -31,6 +31,11 @@ pub const AGREEMENT_SCENES: &[AgreementScene] = &[
         variant: MITSUBA_VARIANT,
     },
     AgreementScene {
+        name: "affine-lights",
+        checks: "a disk squashed into an ellipse, a disk scaled in its plane only, a sheared rectangle",
+        variant: MITSUBA_VARIANT,
+    },
+    AgreementScene {
         name: "several-lights",
         checks: "a cube light (six parallelograms), a triangle mesh light and a point light",
         variant: MITSUBA_VARIANT,

@@ -69,7 +69,7 @@ pub fn sample_triangle_light(triangle: &Triangle, u: Vec2) -> Option<LightSample
 
 /// The point of the disc light at `offset` from its centre, in the disc's own coordinates
 /// (along its [`tangent`](Disc::tangent) and [`bitangent`](Disc::bitangent), in scene units),
-/// claimed uniform by area: density `1 / (π r²)`. `None` if the disc has no area.
+/// claimed uniform by area: density `1 / A`. `None` if the disc has no area.
 ///
 /// Like `Disc`'s hit points, `center + a tangent + b bitangent` lies on the disc's exact plane
 /// up to the roundings of the sum.
@@ -90,24 +90,25 @@ pub fn disc_light_sample_at(disc: &Disc, offset: Vec2) -> Option<LightSample> {
 /// The square root is what makes it uniform: the share of the disc's area within radius `r`
 /// is `r² / R²`, so that is the share of samples that must land there, `P(radius ≤ r) = ξ2`
 /// for `r = R √ξ2`. The density is then `1 / (π R²)` everywhere; `None` if the disc has no
-/// area.
+/// area. An ellipse (a disc under a non-uniform scale) is the same map stretched along its
+/// two semi-axes, [`Disc::radii`]: a linear map keeps a uniform density uniform.
 pub fn sample_disc_light_polar(disc: &Disc, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION
-    let r = disc.radius() * u.y.sqrt();
+    let r = disc.radii() * u.y.sqrt();
     let (sin, cos) = (TAU * u.x).sin_cos();
-    disc_light_sample_at(disc, Vec2::new(r * cos, r * sin))
+    disc_light_sample_at(disc, Vec2::new(r.x * cos, r.y * sin))
     // END SOLUTION
 }
 // ANCHOR_END: disc_light_point
 
-/// A point of the disc light by `warp`, *claimed* uniform by area (density `1 / (π R²)`):
+/// A point of the disc light by `warp`, *claimed* uniform by area (density `1 / A`):
 /// true for [`DiscWarp::Concentric`] and [`DiscWarp::Polar`], false for [`DiscWarp::Naive`],
 /// whose points crowd the centre. `None` if the disc has no area.
 pub fn sample_disc_light(disc: &Disc, u: Vec2, warp: DiscWarp) -> Option<LightSample> {
     match warp {
         DiscWarp::Polar => sample_disc_light_polar(disc, u),
         DiscWarp::Concentric | DiscWarp::Naive => {
-            disc_light_sample_at(disc, disc.radius() * warp.sample(u))
+            disc_light_sample_at(disc, disc.radii() * warp.sample(u))
         }
     }
 }

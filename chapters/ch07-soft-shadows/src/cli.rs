@@ -2,7 +2,7 @@
 
 use crate::disc_warp::DiscWarp;
 use crate::light_options::{LightOptions, LightStrata, MAX_LIGHT_SAMPLES};
-use crate::light_sample::{LightSampling, Strategy};
+use crate::strategy::{LightSampling, Strategy};
 
 /// How area lights are sampled: `--light-samples`, `--light-strata`, `--light-sampling`,
 /// `--disc-warp`.

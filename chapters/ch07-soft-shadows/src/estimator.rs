@@ -29,7 +29,8 @@
 use glam::{DVec3, Vec2, Vec3};
 
 use crate::light::AreaLight;
-use crate::light_sample::{LightSample, LightSampling};
+use crate::light_sample::LightSample;
+use crate::strategy::LightSampling;
 
 // ANCHOR: area_light_contribution
 /// One sample's term of the area estimator, without visibility: for the point `sample` on

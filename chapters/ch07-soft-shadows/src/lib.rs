@@ -12,7 +12,8 @@
 //!
 //! - [`light`]: area lights of finite size, one-sided (Mitsuba 3's `area` emitter).
 //! - [`disc_warp`]: which of chapter 02's disc warps puts points on a disc light.
-//! - [`light_sample`]: a sampled point with its density and its shadow ray.
+//! - [`light_sample`]: a sampled point with its density and its shadow ray; [`strategy`]: by
+//!   area or by solid angle, and the one function that picks a light's sampler.
 //! - [`area_sampling`]: points uniform by area on parallelograms, triangles, discs, spheres.
 //! - [`solid_angle`]: a sphere sampled by the cone of directions it subtends, and the change of
 //!   density between area and solid angle.
@@ -45,6 +46,7 @@ pub mod sample_stream;
 pub mod scene;
 pub mod scenes;
 pub mod solid_angle;
+pub mod strategy;
 
 #[cfg(test)]
 pub(crate) mod test_support;
@@ -53,10 +55,11 @@ pub use disc_warp::DiscWarp;
 pub use estimator::{estimate_irradiance, light_sample_contribution, matte_reflected_radiance};
 pub use light::{AreaLight, LightShape};
 pub use light_options::{LightOptions, LightStrata};
-pub use light_sample::{LightSample, LightSampling, Strategy};
+pub use light_sample::LightSample;
 pub use light_samples::light_samples;
 pub use lighting::AreaLighting;
 pub use scene::AreaLights;
+pub use strategy::{LightSampling, Strategy};
 
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::{MotionScene, TimeSampler};

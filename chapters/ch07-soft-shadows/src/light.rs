@@ -39,7 +39,9 @@ impl LightShape {
         let area = match self {
             LightShape::Parallelogram(q) => q.area(),
             LightShape::Triangle(t) => t.area(),
-            LightShape::Disc(d) if d.radius() > 0.0 && d.normal() != Vec3::ZERO => d.area(),
+            LightShape::Disc(d) if d.radii().min_element() > 0.0 && d.normal() != Vec3::ZERO => {
+                d.area()
+            }
             LightShape::Sphere(s) if s.radius > 0.0 => s.area(),
             LightShape::Disc(_) | LightShape::Sphere(_) => 0.0,
         };

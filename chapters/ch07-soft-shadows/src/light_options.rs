@@ -8,9 +8,9 @@
 //! receiver cannot be. The default is the lecture's, one ray per light per pixel sample.
 
 use crate::disc_warp::DiscWarp;
-use crate::light_sample::{LightSampling, Strategy};
 use crate::light_samples::light_samples;
 use crate::sample_stream::SampleStream;
+use crate::strategy::{LightSampling, Strategy};
 use common::sampler::Sampler;
 use glam::Vec2;
 

@@ -17,8 +17,6 @@ use common::Ray;
 use common::geometry::SurfaceHit;
 use glam::{Vec2, Vec3};
 
-use crate::disc_warp::DiscWarp;
-
 /// A point on a light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightSample {
@@ -71,79 +69,12 @@ impl LightSample {
     }
 }
 
-/// How points are chosen on a sphere light.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
-pub enum Strategy {
-    /// Uniformly over the light's whole surface. Simple, and for a sphere wasteful: the half
-    /// facing away from the receiver gets half the samples and contributes nothing.
-    Area,
-    /// Uniformly over the cone of directions the sphere subtends from the receiver: every
-    /// sample lands on the visible side. Applies to spheres; planar lights, which have no
-    /// simple solid-angle sampler here, are sampled by area. A receiver on or inside the
-    /// sphere sees no cone and falls back to area sampling too.
-    #[default]
-    SolidAngle,
-}
-
-/// Everything that decides how a light is sampled.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct LightSampling {
-    /// By area or by solid angle (spheres only).
-    pub strategy: Strategy,
-    /// The warp that puts points on disc lights.
-    pub disc_warp: DiscWarp,
-}
-
-impl LightSampling {
-    /// Uniform by area everywhere, discs by `disc_warp`.
-    pub fn area(disc_warp: DiscWarp) -> Self {
-        Self {
-            strategy: Strategy::Area,
-            disc_warp,
-        }
-    }
-
-    /// Spheres by solid angle, everything else by area with the concentric disc.
-    pub fn solid_angle() -> Self {
-        Self {
-            strategy: Strategy::SolidAngle,
-            disc_warp: DiscWarp::Concentric,
-        }
-    }
-}
-
-impl Strategy {
-    /// Both strategies, by area first.
-    pub const ALL: [Strategy; 2] = [Strategy::Area, Strategy::SolidAngle];
-
-    /// The name used on the command line and in figures.
-    pub fn name(self) -> &'static str {
-        match self {
-            Strategy::Area => "area",
-            Strategy::SolidAngle => "solid-angle",
-        }
-    }
-}
-
-impl crate::light::AreaLight {
-    /// A point of the light for the receiver at `x`, from the uniform `u` in `[0, 1)^2`, chosen
-    /// as `sampling` says: a sphere by solid angle (its cone seen from `x`) or by area,
-    /// everything else by area (discs with `sampling.disc_warp`). `None` when the light has no
-    /// area, or subtends too small a cone to describe in `f32`.
-    pub fn sample(&self, x: Vec3, u: Vec2, sampling: LightSampling) -> Option<LightSample> {
-        match (self.shape, sampling.strategy) {
-            (crate::light::LightShape::Sphere(sphere), Strategy::SolidAngle) => {
-                crate::solid_angle::sample_sphere_solid_angle(&sphere, x, u)
-            }
-            (shape, _) => shape.sample_area(u, sampling.disc_warp),
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::disc_warp::DiscWarp;
     use crate::light::{AreaLight, LightShape};
+    use crate::strategy::LightSampling;
     use crate::test_support::uniform_points;
     use common::geometry::{Disc, Quad, Shape, Sphere};
 

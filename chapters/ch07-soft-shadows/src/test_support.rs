@@ -10,7 +10,8 @@ use rand_pcg::Pcg32;
 
 use crate::estimator::light_sample_contribution;
 use crate::light::AreaLight;
-use crate::light_sample::{LightSample, LightSampling};
+use crate::light_sample::LightSample;
+use crate::strategy::LightSampling;
 
 /// Samples per chi-square test, and its grid in the plane.
 pub const CHI2_SAMPLES: usize = 200_000;

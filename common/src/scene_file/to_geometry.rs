@@ -10,14 +10,15 @@ use crate::geometry::{Disc, Quad, Shape, Sphere};
 use glam::{Mat4, Vec3};
 
 /// The world-space shapes of one description: one for a sphere, rectangle or disc, six
-/// parallelograms for a cube, one triangle per face of an OBJ mesh. A sphere or disc under a
-/// transform that does not keep it round, or a mesh that cannot be read, is refused with a
-/// message saying why.
+/// parallelograms for a cube, one triangle per face of an OBJ mesh. Any linear map makes a
+/// rectangle a parallelogram and a disc an ellipse, as in Mitsuba; a sphere under a transform
+/// that does not keep it round, or a mesh that cannot be read, is refused with a message
+/// saying why.
 pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
     let m = shape.to_world;
     match &shape.geometry {
         ShapeGeometry::Sphere { center, radius } => {
-            let scale = uniform_scale(m).ok_or("a sphere under a non-uniform scale is an ellipsoid, which the renderer has no shape for")?;
+            let scale = uniform_scale(m).ok_or("a sphere under a non-uniform scale is an ellipsoid, which Mitsuba 3 refuses too (its to_world may not scale a sphere unevenly)")?;
             Ok(vec![Shape::Sphere(Sphere::new(
                 m.transform_point3(*center),
                 radius * scale,
@@ -25,16 +26,27 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
         }
         ShapeGeometry::Rectangle => Ok(vec![square_face(m, Mat4::IDENTITY, shape.flip_normals)]),
         ShapeGeometry::Disk => {
-            let scale = uniform_scale(m).ok_or("a disk under a non-uniform scale is an ellipse, which the renderer has no shape for")?;
             let mut normal = world_normal(m, Vec3::Z);
+            if !normal.is_finite() {
+                return Err("its to_world flattens the disk to a line (a scale of 0)".into());
+            }
             if shape.flip_normals {
                 normal = -normal;
             }
-            Ok(vec![Shape::Disc(Disc::new(
-                m.transform_point3(Vec3::ZERO),
-                normal,
-                scale,
-            ))])
+            let center = m.transform_point3(Vec3::ZERO);
+            if let Some(scale) = uniform_scale(m) {
+                return Ok(vec![Shape::Disc(Disc::new(center, normal, scale))]);
+            }
+            // Under any other linear map the unit circle becomes an ellipse, as in Mitsuba.
+            let (axis_t, axis_b) =
+                principal_axes(m.transform_vector3(Vec3::X), m.transform_vector3(Vec3::Y));
+            let (rt, rb) = (axis_t.length(), axis_b.length());
+            Ok(vec![Shape::Disc(if (rt - rb).abs() <= 1e-6 * rt {
+                // Round after all (say `<scale x="0.4" y="0.4"/>`, whose z does not matter).
+                Disc::new(center, normal, rt)
+            } else {
+                Disc::ellipse(center, normal, axis_t, axis_b)
+            })])
         }
         ShapeGeometry::Cube => {
             // The six faces of [-1, 1]^3, each the unit rectangle moved onto the face with its
@@ -110,6 +122,15 @@ fn square_face(to_world: Mat4, face: Mat4, flip: bool) -> Shape {
         std::mem::swap(&mut e1, &mut e2);
     }
     Shape::Quad(Quad::new(corner, e1, e2))
+}
+
+/// The principal semi-axes of the ellipse `{cos θ a + sin θ b}`: two perpendicular vectors,
+/// the longest and the shortest radius, found by turning `(a, b)` by the angle that
+/// diagonalises their Gram matrix, `tan 2θ = 2 a·b / (a·a − b·b)`.
+fn principal_axes(a: Vec3, b: Vec3) -> (Vec3, Vec3) {
+    let theta = 0.5 * (2.0 * a.dot(b)).atan2(a.dot(a) - b.dot(b));
+    let (sin, cos) = theta.sin_cos();
+    (cos * a + sin * b, cos * b - sin * a)
 }
 
 /// A normal mapped by the inverse transpose of `m`.
@@ -236,7 +257,7 @@ mod tests {
     }
 
     #[test]
-    fn spheres_and_discs_need_uniform_scales() {
+    fn spheres_need_uniform_scales_and_discs_become_ellipses() {
         let sphere = ShapeGeometry::Sphere {
             center: Vec3::X,
             radius: 0.5,
@@ -259,10 +280,31 @@ mod tests {
                 .unwrap_err()
                 .contains("ellipsoid")
         );
+        // A disk under the same squash is an ellipse, 1 along x and 2 along y.
+        let shapes = world_shapes(&description(ShapeGeometry::Disk, squash)).unwrap();
+        let Shape::Disc(ellipse) = shapes[0] else {
+            panic!("{shapes:?}");
+        };
+        assert!(!ellipse.is_circle());
+        assert!((ellipse.area() - 2.0 * std::f32::consts::PI).abs() < 1e-5);
+        let down = |x: f32, y: f32| Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z);
+        assert!(ellipse.intersect(&down(0.0, 1.9)).is_some());
+        assert!(ellipse.intersect(&down(1.1, 0.0)).is_none());
+        // Sheared, then scaled in its plane but not along z: still a disc's shapes.
+        let shear = Mat4::from_cols_array(&[
+            1.0, 0.0, 0.0, 0.0, 0.8, 0.5, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+        ]);
+        let sheared = world_shapes(&description(ShapeGeometry::Disk, shear)).unwrap();
+        let Shape::Disc(sheared) = sheared[0] else {
+            unreachable!()
+        };
+        // |det| of the map in the plane: the area is π times it.
         assert!(
-            world_shapes(&description(ShapeGeometry::Disk, squash))
-                .unwrap_err()
-                .contains("ellipse")
+            (sheared.area() - 0.5 * std::f32::consts::PI).abs() < 1e-5,
+            "{sheared:?}"
         );
+        let round = Mat4::from_scale(Vec3::new(0.4, 0.4, 1.0));
+        let round = world_shapes(&description(ShapeGeometry::Disk, round)).unwrap();
+        assert!(matches!(round[0], Shape::Disc(d) if d.is_circle() && d.radii().x == 0.4));
     }
 }

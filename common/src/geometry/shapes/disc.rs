@@ -1,4 +1,5 @@
-//! The disc: a flat circle, the shape of spot-light apertures and lens-like area lights.
+//! The disc: a flat circle, the shape of spot-light apertures and lens-like area lights, or,
+//! under a scene file's non-uniform scale, a flat ellipse.
 
 use std::f32::consts::{PI, TAU};
 
@@ -11,16 +12,19 @@ use crate::geometry::aabb::Aabb;
 use crate::geometry::float::gamma;
 use crate::geometry::hit::SurfaceHit;
 
-/// The disc of `radius` around `center` in the plane perpendicular to `normal`.
+/// The disc around `center` in the plane perpendicular to `normal`: a circle of one radius, or
+/// an ellipse whose semi-axes lie along [`tangent`](Self::tangent) and
+/// [`bitangent`](Self::bitangent) with the lengths [`radii`](Self::radii).
 ///
 /// Its normal is the given one (normalised) and its surface parameters are
-/// `uv = (r / radius, φ / 2π)`, with `φ` measured around the normal from
-/// [`tangent`](Self::tangent) towards [`bitangent`](Self::bitangent).
+/// `uv = (ρ, φ / 2π)`, where the point is `center + ρ (r_t cos φ tangent + r_b sin φ bitangent)`:
+/// `ρ` is the distance from the centre as a share of the rim's, as in Mitsuba's `disk`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Disc {
     center: Vec3,
     normal: Vec3,
-    radius: f32,
+    /// The semi-axes' lengths along the tangent and the bitangent; equal for a circle.
+    radii: Vec2,
     tangent: Vec3,
     bitangent: Vec3,
     plane: SpannedPlane,
@@ -41,11 +45,36 @@ impl Disc {
         Self {
             center,
             normal,
-            radius,
+            radii: Vec2::splat(radius),
             tangent,
             bitangent,
             // The disc lies exactly in the plane spanned by its tangents; the stored unit normal
             // is a rounded version of their cross product.
+            plane: SpannedPlane::new(center, tangent, bitangent),
+        }
+    }
+
+    /// The ellipse around `center` whose semi-axes are the perpendicular vectors `axis_t` and
+    /// `axis_b`, facing `normal` (any length; it should be perpendicular to both axes).
+    ///
+    /// What a scene file's `disk` becomes under a scale that is not the same along its two
+    /// axes: the image of the unit circle under any linear map is such an ellipse, its
+    /// semi-axes the map's principal directions. Axes that are not perpendicular, or a zero
+    /// normal, give an ellipse that is never hit.
+    pub fn ellipse(center: Vec3, normal: Vec3, axis_t: Vec3, axis_b: Vec3) -> Self {
+        let normal = normal.normalize_or_zero();
+        let radii = Vec2::new(axis_t.length(), axis_b.length());
+        let tangent = axis_t.normalize_or_zero();
+        // Right-handed about the normal, whichever way `axis_b` points: the ellipse is
+        // symmetric.
+        let bitangent = normal.cross(tangent);
+        let perpendicular = axis_t.dot(axis_b).abs() <= 1e-4 * radii.x * radii.y;
+        Self {
+            center,
+            normal,
+            radii: if perpendicular { radii } else { Vec2::ZERO },
+            tangent,
+            bitangent,
             plane: SpannedPlane::new(center, tangent, bitangent),
         }
     }
@@ -60,9 +89,15 @@ impl Disc {
         self.normal
     }
 
-    /// The radius.
-    pub fn radius(&self) -> f32 {
-        self.radius
+    /// The semi-axes' lengths along the [`tangent`](Self::tangent) and the
+    /// [`bitangent`](Self::bitangent): the radius twice for a circle.
+    pub fn radii(&self) -> Vec2 {
+        self.radii
+    }
+
+    /// Whether the disc is a circle (both semi-axes of one length).
+    pub fn is_circle(&self) -> bool {
+        self.radii.x == self.radii.y
     }
 
     /// The in-plane direction where `φ = 0`.
@@ -82,18 +117,23 @@ impl Disc {
 
     /// A box certainly containing the disc.
     ///
-    /// Along axis `i` the disc reaches `radius · √(tangent_i² + bitangent_i²)` from its centre
-    /// (so a floor disc is a flat box); that is grown a little for its own rounding.
+    /// Along axis `i` the disc reaches `√((r_t tangent_i)² + (r_b bitangent_i)²)` from its
+    /// centre (so a floor disc is a flat box); that is grown a little for its own rounding.
     pub fn bounds(&self) -> Aabb {
         let t = self.tangent;
         let b = self.bitangent;
-        let reach = self.radius.abs() * (t * t + b * b).sqrt() * (1.0 + gamma(5));
+        let reach = if self.is_circle() {
+            self.radii.x.abs() * (t * t + b * b).sqrt()
+        } else {
+            let (t, b) = (self.radii.x * t, self.radii.y * b);
+            (t * t + b * b).sqrt()
+        } * (1.0 + gamma(5));
         Aabb::from_points(self.center - reach, self.center + reach).rounded_outward()
     }
 
-    /// The area `π r²`.
+    /// The area `π r_t r_b` (`π r²` for a circle).
     pub fn area(&self) -> f32 {
-        PI * self.radius * self.radius
+        PI * self.radii.x * self.radii.y
     }
 
     /// The hit with `0 < t < ray.t_max`, seen from either side.
@@ -108,7 +148,8 @@ impl Disc {
 
     /// The crossing behind [`intersect`](Self::intersect), with `(a, b)`.
     pub(crate) fn crossing(&self, ray: &Ray) -> Option<Crossing> {
-        let has_area = self.radius > 0.0 && self.normal != Vec3::ZERO; // false for a NaN radius
+        // False for a NaN radius too.
+        let has_area = self.radii.min_element() > 0.0 && self.normal != Vec3::ZERO;
         if !has_area {
             return None;
         }
@@ -116,23 +157,36 @@ impl Disc {
         let from_center = ray.at(t) - self.center;
         let a = from_center.dot(self.tangent);
         let b = from_center.dot(self.bitangent);
-        let r = a.hypot(b);
-        if r > self.radius {
+        // The distance from the centre as a share of the rim's.
+        let rho = if self.is_circle() {
+            let r = a.hypot(b);
+            if r > self.radii.x {
+                return None;
+            }
+            r / self.radii.x
+        } else {
+            (a / self.radii.x).hypot(b / self.radii.y)
+        };
+        if rho > 1.0 {
             return None;
         }
         Some(Crossing {
             t,
-            coords: [a, b, r],
+            coords: [a, b, rho],
         })
     }
 
     /// The hit record of a crossing.
     pub(crate) fn surface_hit(&self, crossing: Crossing) -> SurfaceHit {
-        let [a, b, r] = crossing.coords;
+        let [a, b, rho] = crossing.coords;
         let p = self.point_at(a, b);
         let p_error =
             gamma(3) * (self.center.abs() + (a * self.tangent).abs() + (b * self.bitangent).abs());
-        let phi = b.atan2(a);
+        let phi = if self.is_circle() {
+            b.atan2(a)
+        } else {
+            (b / self.radii.y).atan2(a / self.radii.x)
+        };
         let phi = if phi < 0.0 { phi + TAU } else { phi };
         SurfaceHit {
             t: crossing.t,
@@ -140,7 +194,7 @@ impl Disc {
             p_error,
             n: self.normal,
             shading_n: self.normal,
-            uv: Vec2::new(r / self.radius, phi / TAU),
+            uv: Vec2::new(rho, phi / TAU),
             shape: 0,
         }
     }
@@ -239,5 +293,50 @@ mod tests {
             assert!(b.contains(disc.point_at(2.0 * phi.cos(), 2.0 * phi.sin())));
         }
         assert_relative_eq!(disc.area(), 4.0 * PI);
+    }
+
+    /// An ellipse on the floor, 3 along x and 1 along z.
+    fn floor_ellipse() -> Disc {
+        Disc::ellipse(Vec3::new(1.0, 0.5, -1.0), Vec3::Y, 3.0 * Vec3::X, Vec3::Z)
+    }
+
+    #[test]
+    fn an_ellipse_is_hit_inside_its_rim_along_both_axes() {
+        let ellipse = floor_ellipse();
+        let down = |x: f32, z: f32| Ray::new(ellipse.center() + Vec3::new(x, 2.0, z), -Vec3::Y);
+        for (x, z, inside) in [
+            (2.9, 0.0, true),
+            (3.1, 0.0, false),
+            (0.0, 0.9, true),
+            (0.0, 1.1, false),
+            // (2, 0.7): (2/3)² + 0.7² = 0.93 inside; (2, 0.8): 1.08 outside.
+            (2.0, 0.7, true),
+            (2.0, 0.8, false),
+        ] {
+            assert_eq!(
+                ellipse.intersect(&down(x, z)).is_some(),
+                inside,
+                "({x}, {z})"
+            );
+        }
+        let hit = ellipse.intersect(&down(1.5, 0.0)).unwrap();
+        assert_eq!(hit.n, Vec3::Y);
+        assert_relative_eq!(hit.uv.x, 0.5, epsilon = 1e-6);
+    }
+
+    #[test]
+    fn an_ellipse_has_area_pi_ab_and_bounds_around_its_rim() {
+        let ellipse = floor_ellipse();
+        assert!(!ellipse.is_circle());
+        assert_relative_eq!(ellipse.area(), 3.0 * PI, max_relative = 1e-6);
+        let b = ellipse.bounds();
+        assert!(b.diagonal().y < 1e-6);
+        assert_relative_eq!(b.diagonal().x, 6.0, max_relative = 1e-5);
+        assert_relative_eq!(b.diagonal().z, 2.0, max_relative = 1e-5);
+        let (t, s) = (ellipse.tangent(), ellipse.bitangent());
+        assert_relative_eq!(t.cross(s), ellipse.normal(), epsilon = 1e-6);
+        // Axes that are not perpendicular describe no ellipse: never hit.
+        let skew = Disc::ellipse(Vec3::ZERO, Vec3::Y, Vec3::X, Vec3::X + Vec3::Z);
+        assert!(skew.intersect(&Ray::new(Vec3::Y, -Vec3::Y)).is_none());
     }
 }

@@ -65,7 +65,16 @@ fn random_scene(rng: &mut Pcg32, count: usize) -> Vec<Shape> {
                     let e1 = normal.any_orthonormal_vector() * size;
                     Quad::new(at, e1, normal.cross(e1)).into()
                 }
-                6 => Disc::new(at, random_axis(rng), size).into(),
+                6 => {
+                    let normal = random_axis(rng);
+                    if rng.random::<bool>() {
+                        Disc::new(at, normal, size).into()
+                    } else {
+                        let tangent = normal.any_orthonormal_vector();
+                        let axis_b = 0.3 * size * normal.cross(tangent);
+                        Disc::ellipse(at, normal, size * tangent, axis_b).into()
+                    }
+                }
                 _ => match rng.random_range(0..3) {
                     // Degenerate: a point, a segment, a sphere of radius zero.
                     0 => Triangle::new(at, at, at).into(),

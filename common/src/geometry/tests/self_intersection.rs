@@ -54,6 +54,17 @@ fn shapes_under_test(placement: &Placement) -> Vec<(&'static str, Shape)> {
             )
             .into(),
         ),
+        ("ellipse", {
+            let normal = Vec3::new(-0.6, 0.7, 0.2).normalize();
+            let tangent = normal.any_orthonormal_vector();
+            Disc::ellipse(
+                at(-0.1, 0.2, 0.3),
+                normal,
+                1.3 * placement.scale * tangent,
+                0.35 * placement.scale * normal.cross(tangent),
+            )
+            .into()
+        }),
     ]
 }
 
@@ -71,9 +82,9 @@ fn random_point_on(shape: &Shape, rng: &mut Pcg32) -> Vec3 {
         }
         Shape::Quad(q) => q.point_at(rng.random(), rng.random()),
         Shape::Disc(d) => {
-            let r = d.radius() * rng.random::<f32>().sqrt();
+            let r = d.radii() * rng.random::<f32>().sqrt();
             let phi = rng.random_range(0.0..std::f32::consts::TAU);
-            d.point_at(r * phi.cos(), r * phi.sin())
+            d.point_at(r.x * phi.cos(), r.y * phi.sin())
         }
     }
 }

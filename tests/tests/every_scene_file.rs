@@ -1,0 +1,61 @@
+//! Every chapter's `render --scene` on every scene file shipped in the workspace: each one
+//! renders, or is refused with the line and column of the element that needs a later chapter,
+//! and that chapter's name. A refusal that names no position, or no chapter, fails.
+
+use std::path::{Path, PathBuf};
+use workbook_tests::binaries::{RENDERING_CHAPTERS, run_chapter};
+
+/// Every `.xml` scene under `chapters/*/scenes/` and the suite's own good scenes.
+fn shipped_scene_files() -> Vec<PathBuf> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut dirs: Vec<PathBuf> = std::fs::read_dir(root.join("chapters"))
+        .expect("the chapters directory")
+        .map(|entry| entry.expect("an entry").path().join("scenes"))
+        .collect();
+    dirs.push(root.join("common/tests/scenes"));
+    dirs.push(root.join("tests/scenes"));
+    let mut files: Vec<PathBuf> = dirs
+        .iter()
+        .filter_map(|dir| std::fs::read_dir(dir).ok())
+        .flatten()
+        .map(|entry| entry.expect("an entry").path())
+        .filter(|path| path.extension().is_some_and(|e| e == "xml"))
+        .collect();
+    files.sort();
+    files
+}
+
+#[test]
+fn every_chapter_renders_or_refuses_every_shipped_scene_with_its_line_and_chapter() {
+    let files = shipped_scene_files();
+    assert!(files.len() >= 20, "only {} scene files found", files.len());
+    let out_dir = tempfile::tempdir().unwrap();
+    let out = out_dir.path().join("out.pfm");
+    let out = out.to_str().unwrap();
+    let mut problems = Vec::new();
+    let mut rendered = 0;
+    for chapter in RENDERING_CHAPTERS {
+        for file in &files {
+            let scene = file.to_str().unwrap();
+            let args = [
+                "render", "--scene", scene, "--spp", "1", "--width", "8", "--height", "6", "--out",
+                out,
+            ];
+            let run = run_chapter(chapter, &args);
+            let stderr = String::from_utf8_lossy(&run.stderr);
+            if run.status.success() {
+                rendered += 1;
+                continue;
+            }
+            // A refusal: "FILE: line L, column C: WHAT; LESSON in chapter NN (package); ..."
+            let names_position = stderr.contains(": line ") && stderr.contains(", column ");
+            let names_chapter = stderr.contains("in chapter 0");
+            if !(names_position && names_chapter) || stderr.contains("panicked") {
+                problems.push(format!("{chapter} {}: {stderr}", file.display()));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    // Chapter 08 renders every one of them.
+    assert!(rendered >= files.len(), "only {rendered} renders");
+}
