@@ -6,7 +6,7 @@
 
 pub mod binaries;
 
-use common::geometry::{Quad, Shape, Sphere, Triangle, TriangleMesh};
+use common::geometry::{Parallelogram, Shape, Sphere, Triangle, TriangleMesh};
 use common::scene::CameraFrame;
 use common::scene::Material;
 use common::scene::PointLight;
@@ -59,7 +59,7 @@ const DEFAULT_CAMERA_OFFSET: Vec3 = Vec3::new(0.0, 0.8, 3.5);
 /// The light's position (relative to the origin) at the default distance.
 const DEFAULT_LIGHT_POSITION: Vec3 = Vec3::new(1.0, 3.0, 2.0);
 
-/// A small Whitted scene with every shape kind (quad floor and wall, spheres, a triangle, a
+/// A small Whitted scene with every shape kind (parallelogram floor and wall, spheres, a triangle, a
 /// smooth-shaded mesh standing on the floor), a mirror, glass and shadows, scaled by `scale`
 /// and moved by `offset`.
 ///
@@ -128,21 +128,24 @@ pub fn whitted_scene(params: &WhittedSceneParams) -> Option<Scene> {
 /// of every scene the scale tests build. The wall touches the floor along an edge, where light
 /// must not leak through.
 pub fn sky_floor_and_wall(scale: f32, at: impl Fn(Vec3) -> Vec3) -> SceneBuilder {
-    let floor = Quad::new(
+    let floor = Parallelogram::new(
         at(Vec3::new(-2.0, 0.0, 2.0)),
         4.0 * scale * Vec3::X,
         -4.0 * scale * Vec3::Z,
     );
-    let wall = Quad::new(
+    let wall = Parallelogram::new(
         at(Vec3::new(-2.0, 0.0, -1.0)),
         4.0 * scale * Vec3::X,
         2.0 * scale * Vec3::Y,
     );
     SceneBuilder::new()
         .environment(Vec3::new(0.4, 0.55, 0.8))
-        .shape(Shape::Quad(floor), Material::diffuse(Vec3::splat(0.7)))
         .shape(
-            Shape::Quad(wall),
+            Shape::Parallelogram(floor),
+            Material::diffuse(Vec3::splat(0.7)),
+        )
+        .shape(
+            Shape::Parallelogram(wall),
             Material::diffuse(Vec3::new(0.7, 0.3, 0.2)),
         )
 }

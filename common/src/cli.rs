@@ -475,3 +475,59 @@ mod tests {
         assert!(check_writable(Path::new(&trailing)).is_err());
     }
 }
+
+/// What a chapter binary's `--help` says: its name, what it is, and what its two commands do.
+#[derive(Clone, Copy, Debug)]
+pub struct ChapterBinary {
+    /// The binary's (and package's) name, such as `ch07-soft-shadows`.
+    pub name: &'static str,
+    /// One line on the chapter (its package description).
+    pub about: &'static str,
+    /// What `render` renders.
+    pub render: &'static str,
+}
+
+/// The command line of a chapter binary: `render` with the chapter's own options `R`, and
+/// `figures`.
+#[derive(clap::Parser, Debug)]
+#[command(version)]
+struct ChapterCli<R: clap::Args> {
+    #[command(subcommand)]
+    command: ChapterCommand<R>,
+}
+
+#[derive(clap::Subcommand, Debug)]
+enum ChapterCommand<R: clap::Args> {
+    /// Render an image.
+    Render(Box<R>),
+    /// Write the chapter's comparison images, plots, tables and error-against-time data.
+    Figures(FiguresArgs),
+}
+
+impl ChapterBinary {
+    /// The whole of a chapter binary's `main`: parses the command line (clap prints help and
+    /// refuses bad flags), runs `render` with the chapter's options or `figures` with the
+    /// output directory and the quick flag, and prints an error with its chain of causes,
+    /// exiting non-zero.
+    pub fn run<R: clap::Args + std::fmt::Debug>(
+        &self,
+        render: impl FnOnce(R) -> anyhow::Result<()>,
+        figures: impl FnOnce(&Path, bool) -> anyhow::Result<()>,
+    ) -> ExitCode {
+        use clap::{CommandFactory, FromArgMatches};
+        let command = ChapterCli::<R>::command()
+            .name(self.name)
+            .about(self.about)
+            .mut_subcommand("render", |render| render.about(self.render));
+        let cli = ChapterCli::<R>::from_arg_matches(&command.get_matches())
+            .unwrap_or_else(|error| error.exit());
+        let result = match cli.command {
+            ChapterCommand::Render(options) => render(*options),
+            ChapterCommand::Figures(args) => figures(&args.out, args.quick),
+        };
+        match result {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => report_error(error.as_ref()),
+        }
+    }
+}

@@ -22,7 +22,7 @@ use ch06_fuzzy_reflections::TraceOptions;
 use ch07_soft_shadows::LightOptions;
 use ch07_soft_shadows::scenes::{Builder, matte};
 use ch08_path_tracing::{Method, MisHeuristic, PathOptions};
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::render::{RenderOutput, RenderSettings};
 use common::scene::{Camera, CameraFrame, FilmSettings, Material, Scene, SceneBuilder};
 use glam::Vec3;
@@ -76,29 +76,29 @@ fn in_the_furnace(object: Object, max_depth: u32) -> Scene {
     builder.build(camera, film, max_depth)
 }
 
-/// A glass slab (two parallel quads, facing out) and, beside it, a mirror floor, both seen
+/// A glass slab (two parallel parallelograms, facing out) and, beside it, a mirror floor, both seen
 /// from half a degree above their planes.
 fn grazing_views(max_depth: u32) -> Scene {
-    let slab_top = Quad::new(
+    let slab_top = Parallelogram::new(
         Vec3::new(-50.0, 0.0, 50.0),
         50.0 * Vec3::X,
         -100.0 * Vec3::Z,
     );
-    let slab_bottom = Quad::new(
+    let slab_bottom = Parallelogram::new(
         Vec3::new(-50.0, -0.3, -50.0),
         50.0 * Vec3::X,
         100.0 * Vec3::Z,
     );
-    let mirror = Quad::new(Vec3::new(0.0, 0.0, 50.0), 50.0 * Vec3::X, -100.0 * Vec3::Z);
+    let mirror = Parallelogram::new(Vec3::new(0.0, 0.0, 50.0), 50.0 * Vec3::X, -100.0 * Vec3::Z);
     let grazing = 0.5f32.to_radians();
     let origin = Vec3::new(0.0, 0.2, 10.0);
     let target = origin + Vec3::new(0.0, -grazing.tan(), -1.0);
     let (camera, film) = camera(origin, target, 20.0);
     SceneBuilder::new()
         .environment(Vec3::splat(SKY))
-        .shape(Shape::Quad(slab_top), Material::glass(1.5))
-        .shape(Shape::Quad(slab_bottom), Material::glass(1.5))
-        .shape(Shape::Quad(mirror), Material::mirror())
+        .shape(Shape::Parallelogram(slab_top), Material::glass(1.5))
+        .shape(Shape::Parallelogram(slab_bottom), Material::glass(1.5))
+        .shape(Shape::Parallelogram(mirror), Material::mirror())
         .build(camera, film, max_depth)
 }
 
@@ -200,19 +200,19 @@ fn in_a_glowing_box(object: Shape, material: Material, max_depth: u32) -> Motion
     let max = Vec3::splat(BOX);
     // Each wall's normal, e1 x e2, points into the box.
     let walls = [
-        Quad::new(Vec3::new(min.x, min.y, max.z), dy, dx),
-        Quad::new(min, dx, dy),
-        Quad::new(Vec3::new(max.x, min.y, min.z), dz, dy),
-        Quad::new(min, dy, dz),
-        Quad::new(Vec3::new(min.x, max.y, min.z), dx, dz),
-        Quad::new(min, dz, dx),
+        Parallelogram::new(Vec3::new(min.x, min.y, max.z), dy, dx),
+        Parallelogram::new(min, dx, dy),
+        Parallelogram::new(Vec3::new(max.x, min.y, min.z), dz, dy),
+        Parallelogram::new(min, dy, dz),
+        Parallelogram::new(Vec3::new(min.x, max.y, min.z), dx, dz),
+        Parallelogram::new(min, dz, dx),
     ];
     let frame = CameraFrame::look_at(Vec3::new(0.3, 0.5, 2.6), Vec3::ZERO, Vec3::Y).unwrap();
     let camera = (Camera::pinhole(frame, 60.0), FilmSettings::new(SIZE, SIZE));
     walls
         .into_iter()
         .fold(Builder::new(), |builder, wall| {
-            builder.area_light(Shape::Quad(wall), Vec3::splat(SKY))
+            builder.area_light(Shape::Parallelogram(wall), Vec3::splat(SKY))
         })
         .shape(object, material)
         .build(camera, max_depth)

@@ -1,6 +1,6 @@
 //! The same scene at scale 1e-4, 1 and 1e5 gives the same image with every chapter's camera:
 //! robust ray spawning leaves no shadow acne, no light leaks and no self-intersections, on
-//! spheres, quads, triangles and meshes, (chapter 05) on shapes moving while the shutter is
+//! spheres, parallelograms, triangles and meshes, (chapter 05) on shapes moving while the shutter is
 //! open, and (chapters 07 and 08) no shadow ray to an area light and no path bounce goes
 //! astray.
 //!
@@ -20,7 +20,7 @@ use ch06_fuzzy_reflections::TraceOptions;
 use ch07_soft_shadows::LightOptions;
 use ch07_soft_shadows::scenes::{Builder, matte};
 use ch08_path_tracing::{Method, PathOptions};
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
 use common::render::{RenderOutput, RenderSettings};
 use common::scene::{Camera, CameraFrame, FilmSettings, Material};
@@ -178,7 +178,7 @@ fn fuzzy_images_do_not_depend_on_scene_scale() {
 fn area_lit_scene(scale: f32, offset: Vec3) -> MotionScene {
     let at = |p: Vec3| p * scale + offset;
     let quad = |corner: Vec3, e1: Vec3, e2: Vec3| {
-        Shape::Quad(Quad::new(at(corner), e1 * scale, e2 * scale))
+        Shape::Parallelogram(Parallelogram::new(at(corner), e1 * scale, e2 * scale))
     };
     let sphere = |centre: Vec3, radius: f32| Shape::Sphere(Sphere::new(at(centre), radius * scale));
     let eye = at(Vec3::new(0.0, 1.4, 4.0));
@@ -421,7 +421,7 @@ fn motion_scene(scale: f32, offset: Vec3) -> ch05_motion_blur::MotionScene {
     );
     // Sized for scale 1 in its own space; the scale in its keyframes sizes it with the scene.
     let spinning_panel = (
-        Shape::Quad(Quad::new(
+        Shape::Parallelogram(Parallelogram::new(
             Vec3::new(-0.35, -0.35, 0.0),
             0.7 * Vec3::X,
             0.7 * Vec3::Y,

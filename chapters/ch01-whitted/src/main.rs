@@ -2,26 +2,9 @@
 
 use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch01_whitted::{CAPABILITIES, PixelPattern, figures, render};
-use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, read_scene_file, report_error};
+use common::cli::{ChapterBinary, RenderArgs, read_scene_file};
 use common::render::Budget;
 use std::process::ExitCode;
-
-/// Chapter 01 of the workbook: Whitted ray tracing.
-#[derive(Parser, Debug)]
-#[command(name = "ch01-whitted", version, about)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Render a scene to an image.
-    Render(RenderCommand),
-    /// Write the chapter's comparison images, plots and error-against-time data.
-    Figures(FiguresArgs),
-}
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -43,15 +26,12 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command {
-        Command::Render(command) => run_render(command),
-        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    let binary = ChapterBinary {
+        name: "ch01-whitted",
+        about: env!("CARGO_PKG_DESCRIPTION"),
+        render: "Render a scene to an image.",
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(error) => report_error(error.as_ref()),
-    }
+    binary.run(run_render, figures::write_all)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {

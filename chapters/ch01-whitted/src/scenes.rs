@@ -1,6 +1,6 @@
 //! The chapter's built-in scenes.
 
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, Scene, SceneBuilder};
 use glam::Vec3;
 
@@ -53,8 +53,8 @@ fn spheres(max_depth: u32) -> Scene {
                 Vec3::new(0.8, 0.15, 0.1)
             };
             // e1 x e2 = (0, 0, 1) x (1, 0, 0) = +y: the tiles face up.
-            let tile = Quad::new(corner, Vec3::Z, Vec3::X);
-            builder = builder.shape(Shape::Quad(tile), Material::diffuse(albedo));
+            let tile = Parallelogram::new(corner, Vec3::Z, Vec3::X);
+            builder = builder.shape(Shape::Parallelogram(tile), Material::diffuse(albedo));
         }
     }
     let scene = builder
@@ -92,7 +92,8 @@ fn cornell(max_depth: u32) -> Scene {
     let red = Material::diffuse(Vec3::new(0.65, 0.05, 0.05));
     let green = Material::diffuse(Vec3::new(0.12, 0.45, 0.15));
     // Each wall is a parallelogram whose normal e1 x e2 faces into the room.
-    let wall = |corner: Vec3, e1: Vec3, e2: Vec3| Shape::Quad(Quad::new(corner, e1, e2));
+    let wall =
+        |corner: Vec3, e1: Vec3, e2: Vec3| Shape::Parallelogram(Parallelogram::new(corner, e1, e2));
     let scene = SceneBuilder::new()
         .shape(
             wall(Vec3::new(-1.0, -1.0, 1.0), 2.0 * Vec3::X, -2.0 * Vec3::Z),

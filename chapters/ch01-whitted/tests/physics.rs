@@ -5,7 +5,7 @@ use ch01_whitted::scenes::Builtin;
 use ch01_whitted::tracer::trace;
 use ch01_whitted::{PixelPattern, render};
 use common::Ray;
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
 use common::render::{RenderSettings, SampleCounters};
 use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, Scene, SceneBuilder};
@@ -51,10 +51,10 @@ fn a_matte_floor_under_a_point_light_has_the_analytic_radiance() {
     let albedo = Vec3::new(0.8, 0.5, 0.2);
     let intensity = Vec3::splat(10.0);
     let light = Vec3::new(1.0, 2.0, 0.5);
-    let floor = Quad::new(Vec3::new(-5.0, 0.0, 5.0), 10.0 * Vec3::X, -10.0 * Vec3::Z);
+    let floor = Parallelogram::new(Vec3::new(-5.0, 0.0, 5.0), 10.0 * Vec3::X, -10.0 * Vec3::Z);
     let scene = build(
         SceneBuilder::new()
-            .shape(Shape::Quad(floor), Material::diffuse(albedo))
+            .shape(Shape::Parallelogram(floor), Material::diffuse(albedo))
             .light(PointLight {
                 position: light,
                 intensity,
@@ -176,7 +176,7 @@ fn grazing_views_of_glass_and_floors_stay_finite() {
         SceneBuilder::new()
             .environment(Vec3::splat(0.5))
             .shape(
-                Shape::Quad(Quad::new(
+                Shape::Parallelogram(Parallelogram::new(
                     Vec3::new(-50.0, 0.0, 50.0),
                     100.0 * Vec3::X,
                     -100.0 * Vec3::Z,

@@ -97,19 +97,19 @@ fn warp_scatter_plots(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let disks = vec![
         (
             "naive: r = ξ2 (wrong)".to_string(),
-            warped(&Warp::DiskNaive, &points).1,
+            warped(&Warp::DiscNaive, &points).1,
         ),
         (
             "polar: r = √ξ2".to_string(),
-            warped(&Warp::DiskPolar, &points).1,
+            warped(&Warp::DiscPolar, &points).1,
         ),
         (
             "concentric".to_string(),
-            warped(&Warp::DiskConcentric, &points).1,
+            warped(&Warp::DiscConcentric, &points).1,
         ),
     ];
     scatter_plot(
-        &out.join("warps_disk.png"),
+        &out.join("warps_disc.png"),
         "The same points warped onto the unit disc",
         &disks,
         disc,

@@ -33,7 +33,7 @@ enum Command {
 
 #[derive(clap::Args, Debug)]
 struct SamplesArgs {
-    /// The warp: parallelogram, triangle, disk-naive, disk-polar, disk-concentric, sphere,
+    /// The warp: parallelogram, triangle, disc-naive, disc-polar, disc-concentric, sphere,
     /// hemisphere, cosine-hemisphere, cos-lobe, spherical-cap.
     #[arg(long)]
     warp: String,
@@ -57,7 +57,7 @@ fn main() -> ExitCode {
         Command::Samples(args) => write_samples(&args),
         Command::Render { .. } => Err(anyhow::anyhow!(
             "chapter 02 renders no scene: it studies estimators, random numbers and warps. \
-             Try `figures --out DIR` or `samples --warp disk-polar --n 1000 --out FILE.csv`."
+             Try `figures --out DIR` or `samples --warp disc-polar --n 1000 --out FILE.csv`."
         )),
     };
     match result {

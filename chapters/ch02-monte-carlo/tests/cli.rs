@@ -17,7 +17,7 @@ fn assert_refused(args: &[&str], expected: &str) {
 fn samples_are_written_as_csv_with_their_density() {
     let dir = tempfile::tempdir().unwrap();
     for (warp, header, columns, extra) in [
-        ("disk-polar", "x,y,pdf", 3, None),
+        ("disc-polar", "x,y,pdf", 3, None),
         ("triangle", "x,y,pdf", 3, None),
         ("cosine-hemisphere", "x,y,z,pdf", 4, None),
         ("cos-lobe", "x,y,z,pdf", 4, Some("1000000")),
@@ -92,11 +92,11 @@ fn bad_input_is_refused_with_a_clear_message() {
             "teapot",
         ),
         (
-            &["samples", "--warp", "disk-polar", "--n", "0", "--out", csv],
+            &["samples", "--warp", "disc-polar", "--n", "0", "--out", csv],
             "--n",
         ),
         (
-            &["samples", "--warp", "disk-polar", "--n", "-2", "--out", csv],
+            &["samples", "--warp", "disc-polar", "--n", "-2", "--out", csv],
             "-2",
         ),
         (
@@ -131,7 +131,7 @@ fn bad_input_is_refused_with_a_clear_message() {
             &[
                 "samples",
                 "--warp",
-                "disk-polar",
+                "disc-polar",
                 "--n",
                 "5",
                 "--exponent",
@@ -141,7 +141,7 @@ fn bad_input_is_refused_with_a_clear_message() {
             ],
             "exponent",
         ),
-        (&["samples", "--warp", "disk-polar", "--n", "5"], "--out"),
+        (&["samples", "--warp", "disc-polar", "--n", "5"], "--out"),
         (&["render", "--out", csv], "renders no scene"),
     ];
     for (args, expected) in cases {

@@ -5,25 +5,8 @@ use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch03_anti_aliasing::scene_file::{filter_of, sampler_of};
 use ch03_anti_aliasing::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch03_anti_aliasing::{CAPABILITIES, figures, render_with};
-use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, print_note, read_scene_file, report_error};
+use common::cli::{ChapterBinary, RenderArgs, print_note, read_scene_file};
 use std::process::ExitCode;
-
-/// Chapter 03 of the workbook: anti-aliasing.
-#[derive(Parser, Debug)]
-#[command(name = "ch03-anti-aliasing", version, about)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Render a scene to an image.
-    Render(RenderCommand),
-    /// Write the chapter's comparison images, plots and error-against-time data.
-    Figures(FiguresArgs),
-}
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -41,15 +24,12 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command {
-        Command::Render(command) => run_render(command),
-        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    let binary = ChapterBinary {
+        name: "ch03-anti-aliasing",
+        about: env!("CARGO_PKG_DESCRIPTION"),
+        render: "Render a scene to an image.",
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(error) => report_error(error.as_ref()),
-    }
+    binary.run(run_render, figures::write_all)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {

@@ -6,7 +6,7 @@
 //! pixel. One sample at the pixel centre turns the first into staircases and broken bars, and
 //! the second into moiré: false, large patterns near the horizon.
 
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{
     Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
 };
@@ -52,7 +52,11 @@ fn bar(centre: Vec3, length: f32, width: f32, degrees: f32) -> Shape {
     let along = Vec3::new(cos, sin, 0.0) * length;
     let across = Vec3::new(-sin, cos, 0.0) * width;
     // along x across points along +z, towards the camera.
-    Shape::Quad(Quad::new(centre - 0.5 * (along + across), along, across))
+    Shape::Parallelogram(Parallelogram::new(
+        centre - 0.5 * (along + across),
+        along,
+        across,
+    ))
 }
 
 fn edges(max_depth: u32) -> Scene {
@@ -100,7 +104,7 @@ fn checkerboard(max_depth: u32) -> Scene {
         colour1: Vec3::splat(0.08),
         scale: Vec2::splat(side / 2.0),
     };
-    let floor = Quad::new(
+    let floor = Parallelogram::new(
         Vec3::new(-PLANE_HALF_SIDE, 0.0, -PLANE_HALF_SIDE),
         Vec3::new(0.0, 0.0, side),
         Vec3::new(side, 0.0, 0.0),
@@ -108,7 +112,7 @@ fn checkerboard(max_depth: u32) -> Scene {
     let scene = SceneBuilder::new()
         .environment(Vec3::new(0.55, 0.7, 0.95))
         .shape(
-            Shape::Quad(floor),
+            Shape::Parallelogram(floor),
             Material::CheckeredDiffuse {
                 checkerboard: checks,
                 two_sided: false,

@@ -13,8 +13,8 @@
 //! density beside it.
 
 use ch02_monte_carlo::warps::{
-    disk_naive_pdf, sample_disk_naive, sample_uniform_disk_concentric, sample_uniform_disk_polar,
-    uniform_disk_pdf,
+    disc_naive_pdf, sample_disc_naive, sample_uniform_disc_concentric, sample_uniform_disc_polar,
+    uniform_disc_pdf,
 };
 use glam::Vec2;
 use std::f32::consts::TAU;
@@ -90,9 +90,9 @@ impl LensWarp {
     /// The point of the unit disc this warp makes of `u`.
     pub fn sample(self, u: Vec2) -> Vec2 {
         match self {
-            LensWarp::Concentric => sample_uniform_disk_concentric(u),
-            LensWarp::Polar => sample_uniform_disk_polar(u),
-            LensWarp::Naive => sample_disk_naive(u),
+            LensWarp::Concentric => sample_uniform_disc_concentric(u),
+            LensWarp::Polar => sample_uniform_disc_polar(u),
+            LensWarp::Naive => sample_disc_naive(u),
         }
     }
 
@@ -102,12 +102,12 @@ impl LensWarp {
         match self {
             LensWarp::Concentric | LensWarp::Polar => {
                 if p.length_squared() <= 1.0 {
-                    uniform_disk_pdf()
+                    uniform_disc_pdf()
                 } else {
                     0.0
                 }
             }
-            LensWarp::Naive => disk_naive_pdf(p),
+            LensWarp::Naive => disc_naive_pdf(p),
         }
     }
 }

@@ -96,7 +96,7 @@ impl Lens {
     // ANCHOR: lens_point
     /// The point of the lens, in the camera's `z = 0` plane, that the lens sample `u` picks:
     /// the unit-size aperture scaled by the aperture radius (Mitsuba: `aperture_radius *
-    /// square_to_uniform_disk_concentric(u)`).
+    /// square_to_uniform_disc_concentric(u)`).
     pub fn sample_point(&self, u: Vec2) -> Vec2 {
         self.aperture_radius * sample_aperture(self.aperture, self.warp, u)
     }

@@ -7,25 +7,8 @@ use ch04_depth_of_field::cli::LensArgs;
 use ch04_depth_of_field::scene_file::lens_of;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{CAPABILITIES, figures, render_with};
-use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, print_note, read_scene_file, report_error};
+use common::cli::{ChapterBinary, RenderArgs, print_note, read_scene_file};
 use std::process::ExitCode;
-
-/// Chapter 04 of the workbook: depth of field.
-#[derive(Parser, Debug)]
-#[command(name = "ch04-depth-of-field", version, about)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Render a scene through a thin lens.
-    Render(Box<RenderCommand>),
-    /// Write the chapter's comparison images, plots and error-against-time data.
-    Figures(FiguresArgs),
-}
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -45,15 +28,12 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command {
-        Command::Render(command) => run_render(*command),
-        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    let binary = ChapterBinary {
+        name: "ch04-depth-of-field",
+        about: env!("CARGO_PKG_DESCRIPTION"),
+        render: "Render a scene through a thin lens.",
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(error) => report_error(error.as_ref()),
-    }
+    binary.run(run_render, figures::write_all)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {

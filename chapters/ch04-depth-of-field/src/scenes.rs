@@ -8,7 +8,7 @@
 
 use crate::lens::Lens;
 use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH};
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::CameraFrame;
 use common::scene::Material;
 use common::scene::PointLight;
@@ -93,7 +93,7 @@ fn bokeh(max_depth: u32) -> Scene {
                 Vec3::new(0.12, 0.12, 0.14)
             };
             builder = builder.shape(
-                Shape::Quad(Quad::new(corner, Vec3::Z, Vec3::X)),
+                Shape::Parallelogram(Parallelogram::new(corner, Vec3::Z, Vec3::X)),
                 Material::diffuse(albedo),
             );
         }
@@ -136,13 +136,13 @@ fn bokeh(max_depth: u32) -> Scene {
 /// the scene, with a row of small square holes in it at two heights.
 fn far_wall_with_holes(mut builder: SceneBuilder, wall_z: f32) -> SceneBuilder {
     let dark = Material::diffuse(Vec3::splat(0.05));
-    // Quads facing +z (towards the camera): e1 x e2 = X x Y = +Z.
+    // Parallelograms facing +z (towards the camera): e1 x e2 = X x Y = +Z.
     let panel = |builder: SceneBuilder, x0: f32, x1: f32, y0: f32, y1: f32| {
         if x1 <= x0 || y1 <= y0 {
             return builder;
         }
         builder.shape(
-            Shape::Quad(Quad::new(
+            Shape::Parallelogram(Parallelogram::new(
                 Vec3::new(x0, y0, wall_z),
                 (x1 - x0) * Vec3::X,
                 (y1 - y0) * Vec3::Y,

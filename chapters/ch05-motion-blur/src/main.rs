@@ -8,26 +8,9 @@ use ch05_motion_blur::scene_file::{motion_for_render, read_with_camera_side};
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
 use ch05_motion_blur::{CAPABILITIES, Shutter, StratifiedTime, TimeSampling, figures, render_with};
-use clap::{Parser, Subcommand};
-use common::cli::{CliError, FiguresArgs, RenderArgs, report_error};
+use common::cli::{ChapterBinary, CliError, RenderArgs};
 use common::render::Budget;
 use std::process::ExitCode;
-
-/// Chapter 05 of the workbook: motion blur.
-#[derive(Parser, Debug)]
-#[command(name = "ch05-motion-blur", version, about)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Render a scene in motion over the shutter interval.
-    Render(Box<RenderCommand>),
-    /// Write the chapter's comparison images, plots, tables and error-against-time data.
-    Figures(FiguresArgs),
-}
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -69,15 +52,12 @@ fn parse_number(text: &str) -> Result<f32, String> {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command {
-        Command::Render(command) => run_render(*command),
-        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    let binary = ChapterBinary {
+        name: "ch05-motion-blur",
+        about: env!("CARGO_PKG_DESCRIPTION"),
+        render: "Render a scene in motion over the shutter interval.",
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(error) => report_error(error.as_ref()),
-    }
+    binary.run(run_render, figures::write_all)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {

@@ -12,7 +12,7 @@ use crate::animated_transform::AnimatedTransform;
 use crate::shutter::Shutter;
 use crate::world::MotionScene;
 use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH};
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{
     Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
 };
@@ -86,7 +86,8 @@ fn checkered(colour0: Vec3, colour1: Vec3, scale: f32) -> Material {
 
 /// The six faces of the cube `[-h, h]^3`, normals out.
 pub fn cube_faces(h: f32) -> [Shape; 6] {
-    let quad = |corner: Vec3, e1: Vec3, e2: Vec3| Shape::Quad(Quad::new(corner, e1, e2));
+    let quad =
+        |corner: Vec3, e1: Vec3, e2: Vec3| Shape::Parallelogram(Parallelogram::new(corner, e1, e2));
     let s = 2.0 * h;
     [
         quad(Vec3::new(-h, -h, h), s * Vec3::X, s * Vec3::Y), // +z
@@ -156,12 +157,12 @@ fn spinning_cube(
 pub const FAST_SPHERE_PATH: (Vec3, Vec3) = (Vec3::new(-4.0, 0.6, 1.6), Vec3::new(4.0, 0.6, 1.6));
 
 fn street(max_depth: u32) -> Scene {
-    let floor = Shape::Quad(Quad::new(
+    let floor = Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-8.0, 0.0, -8.0),
         14.0 * Vec3::Z,
         16.0 * Vec3::X,
     ));
-    let mirror = Shape::Quad(Quad::new(
+    let mirror = Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-5.0, 0.0, -4.0),
         10.0 * Vec3::X,
         3.5 * Vec3::Y,
@@ -262,7 +263,7 @@ fn pan(max_depth: u32) -> Scene {
 /// directions). With a long travel, every sphere's box over the whole shutter covers most of
 /// its row, and a ray must test all of the row's spheres.
 pub fn swarm(rows: u32, travel: f32, shutter: Shutter) -> MotionScene {
-    let floor = Shape::Quad(Quad::new(
+    let floor = Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-12.0, 0.0, -14.0),
         20.0 * Vec3::Z,
         24.0 * Vec3::X,

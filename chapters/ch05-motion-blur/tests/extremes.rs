@@ -211,12 +211,12 @@ fn a_moving_object_seen_only_in_a_mirror_is_blurred_there() {
 fn the_rays_time_reaches_the_shadow_test() {
     use ch01_whitted::tracer::trace;
     use common::Ray;
-    use common::geometry::Quad;
+    use common::geometry::Parallelogram;
     use common::render::SampleCounters;
     use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder};
     // A floor lit from straight above; a sphere passes between during the first half of the
     // shutter only, out of the camera ray's way.
-    let floor = Shape::Quad(Quad::new(
+    let floor = Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-5.0, 0.0, -5.0),
         10.0 * Vec3::Z,
         10.0 * Vec3::X,

@@ -10,7 +10,7 @@ use crate::lighting::PointLights;
 use crate::tracer::{TraceOptions, Tracer};
 use ch05_motion_blur::MotionScene;
 use common::Ray;
-use common::geometry::{Quad, Shape};
+use common::geometry::{Parallelogram, Shape};
 use common::render::SampleCounters;
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::{Camera, CameraFrame, FilmSettings, Material, SceneBuilder};
@@ -36,9 +36,12 @@ pub fn scene_of(
 
 /// A white glossy floor of `exponent` at y = 0, 2000 wide, in the furnace.
 pub fn white_floor(exponent: f32) -> MotionScene {
-    let floor = Quad::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
+    let floor = Parallelogram::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
     scene_of(
-        vec![(Shape::Quad(floor), Material::glossy(Vec3::ONE, exponent))],
+        vec![(
+            Shape::Parallelogram(floor),
+            Material::glossy(Vec3::ONE, exponent),
+        )],
         Vec3::ONE,
         Vec3::new(0.0, 2.0, 5.0),
         Vec3::ZERO,

@@ -24,7 +24,7 @@
 //! which is its proper weight `f_r cos θ / pdf`. The disc is then a different, empirical lobe,
 //! which [`disc_radius_for_exponent`] sizes to spread as wide as the `cos^n` one.
 
-use ch02_monte_carlo::warps::{sample_cos_lobe, sample_uniform_disk_concentric};
+use ch02_monte_carlo::warps::{sample_cos_lobe, sample_uniform_disc_concentric};
 use glam::{Vec2, Vec3};
 
 /// How a fuzzy surface spreads its directions.
@@ -107,7 +107,7 @@ pub fn lobe_around_pdf(cos_alpha: f32, exponent: f32) -> f32 {
 /// near the rim are favoured over a `cos^n` lobe's.
 pub fn sample_disc_perturbation(center: Vec3, radius: f32, u: Vec2) -> Vec3 {
     let (a, b) = center.any_orthonormal_pair();
-    let p = radius * sample_uniform_disk_concentric(u);
+    let p = radius * sample_uniform_disc_concentric(u);
     (center + p.x * a + p.y * b).normalize()
 }
 // ANCHOR_END: disc_perturbation

@@ -9,26 +9,9 @@ use ch05_motion_blur::{Shutter, StratifiedTime, TimeSampling};
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
 use ch06_fuzzy_reflections::{CAPABILITIES, PointLights, figures, render_with};
-use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::cli::{ChapterBinary, RenderArgs};
 use common::render::Budget;
 use std::process::ExitCode;
-
-/// Chapter 06 of the workbook: fuzzy reflections and refractions.
-#[derive(Parser, Debug)]
-#[command(name = "ch06-fuzzy-reflections", version, about)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Render a scene with glossy and frosted surfaces.
-    Render(Box<RenderCommand>),
-    /// Write the chapter's comparison images, plots, tables and error-against-time data.
-    Figures(FiguresArgs),
-}
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -46,15 +29,12 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command {
-        Command::Render(command) => run_render(*command),
-        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    let binary = ChapterBinary {
+        name: "ch06-fuzzy-reflections",
+        about: env!("CARGO_PKG_DESCRIPTION"),
+        render: "Render a scene with glossy and frosted surfaces.",
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(error) => report_error(error.as_ref()),
-    }
+    binary.run(run_render, figures::write_all)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {

@@ -11,7 +11,7 @@
 //!   ray splits at eight or more surfaces, where following both rays explodes.
 
 use ch05_motion_blur::MotionScene;
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{
     Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
 };
@@ -130,7 +130,7 @@ fn checkered(colour0: Vec3, colour1: Vec3, scale: Vec2) -> Material {
 }
 
 fn quad(corner: Vec3, e1: Vec3, e2: Vec3) -> Shape {
-    Shape::Quad(Quad::new(corner, e1, e2))
+    Shape::Parallelogram(Parallelogram::new(corner, e1, e2))
 }
 
 fn sphere(center: Vec3, radius: f32) -> Shape {

@@ -10,7 +10,7 @@
 use ch06_fuzzy_reflections::furnace::{incoming, mean_radiance, scene_of, white_floor};
 use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
 use common::Ray;
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::Material;
 use common::scene::Material as SmoothMaterial;
 use glam::Vec3;
@@ -171,12 +171,12 @@ fn glass_smooth_or_frosted_in_the_furnace_keeps_at_most_what_it_receives() {
 fn inter_reflections_between_rough_plates_never_create_energy() {
     // Two white glossy plates facing each other one unit apart, open to the furnace at their
     // ends: a ray at a grazing angle bounces between them many times before it escapes.
-    let bottom = Quad::new(
+    let bottom = Parallelogram::new(
         Vec3::new(-50.0, 0.0, -50.0),
         100.0 * Vec3::Z,
         100.0 * Vec3::X,
     );
-    let top = Quad::new(
+    let top = Parallelogram::new(
         Vec3::new(-50.0, 1.0, -50.0),
         100.0 * Vec3::X,
         100.0 * Vec3::Z,
@@ -186,8 +186,8 @@ fn inter_reflections_between_rough_plates_never_create_energy() {
             let material = Material::glossy(Vec3::ONE, exponent);
             let scene = scene_of(
                 vec![
-                    (Shape::Quad(bottom), material),
-                    (Shape::Quad(top), material),
+                    (Shape::Parallelogram(bottom), material),
+                    (Shape::Parallelogram(top), material),
                 ],
                 Vec3::ONE,
                 Vec3::new(0.0, 0.5, 5.0),

@@ -12,7 +12,7 @@ use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
 use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
 use common::Ray;
 use common::film::PixelBoxFilter;
-use common::geometry::{Quad, Shape};
+use common::geometry::{Parallelogram, Shape};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
 use common::scene::Material;
@@ -131,7 +131,7 @@ fn pane_scene(pane: Option<Material>) -> MotionScene {
         },
         two_sided: false,
     };
-    let wall = Shape::Quad(Quad::new(
+    let wall = Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-3.0, -3.0, -3.0),
         6.0 * Vec3::X,
         6.0 * Vec3::Y,
@@ -226,8 +226,8 @@ fn rays_at_and_around_the_critical_angle_stay_finite() {
     // Inside a slab of glass, rays meet its top face at the critical angle and at the
     // neighbouring floats on either side; and from outside, rays graze it.
     let critical = (1.0f32 / 1.5).asin();
-    let top = Quad::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
-    let bottom = Quad::new(Vec3::new(-1e3, -1.0, -1e3), 2e3 * Vec3::X, 2e3 * Vec3::Z);
+    let top = Parallelogram::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
+    let bottom = Parallelogram::new(Vec3::new(-1e3, -1.0, -1e3), 2e3 * Vec3::X, 2e3 * Vec3::Z);
     for material in [
         SmoothMaterial::glass(1.5),
         Material::rough_glass(1.5, 0.0),
@@ -236,8 +236,8 @@ fn rays_at_and_around_the_critical_angle_stay_finite() {
     ] {
         let scene = scene_of(
             vec![
-                (Shape::Quad(top), material),
-                (Shape::Quad(bottom), material),
+                (Shape::Parallelogram(top), material),
+                (Shape::Parallelogram(bottom), material),
             ],
             Vec3::ONE,
             Vec3::new(0.0, 2.0, 5.0),

@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 /// The scenes compared, with what each one checks.
 pub const AGREEMENT_SCENES: &[AgreementScene] = &[
     AgreementScene {
-        name: "quad-light",
+        name: "rectangle-light",
         checks: "a rectangle light over spheres: area sampling, one-sided emission, penumbrae",
         variant: MITSUBA_VARIANT,
     },

@@ -21,28 +21,28 @@ use ch02_monte_carlo::warps::{
     parallelogram_pdf, sample_parallelogram, sample_triangle_barycentric, sample_uniform_sphere,
     triangle_pdf,
 };
-use common::geometry::{Disc, Quad, Sphere, Triangle, gamma};
+use common::geometry::{Disc, Parallelogram, Sphere, Triangle, gamma};
 use glam::{Vec2, Vec3};
 
 use crate::disc_warp::DiscWarp;
 use crate::light::LightShape;
 use crate::light_sample::LightSample;
 
-/// The error bound of the parallelogram point `corner + u.x e1 + u.y e2` (as `Quad`'s hit
+/// The error bound of the parallelogram point `corner + u.x e1 + u.y e2` (as `Parallelogram`'s hit
 /// points): the sum is on the exact plane up to its own three roundings.
-pub fn parallelogram_point_error(quad: &Quad, u: Vec2) -> Vec3 {
+pub fn parallelogram_point_error(quad: &Parallelogram, u: Vec2) -> Vec3 {
     gamma(3) * (quad.corner().abs() + (u.x * quad.e1()).abs() + (u.y * quad.e2()).abs())
 }
 
 // ANCHOR: parallelogram_light_point
-/// A point of the parallelogram light `quad`, uniform by area: `corner + ξ1 e1 + ξ2 e2`, with
+/// A point of the parallelogram light `parallelogram`, uniform by area: `corner + ξ1 e1 + ξ2 e2`, with
 /// the density `1 / |e1 × e2|` per unit area, or `None` if the light has no area.
 ///
 /// Chapter 02's warp is used with the corner at the origin, `(0, e1, e2)`, so that the edges
 /// enter unrounded; the corner is added last. Far from the origin, `corner + e1` would round
 /// and the difference `(corner + e1) - corner` would no longer be `e1`.
 #[inline]
-pub fn sample_parallelogram_light(quad: &Quad, u: Vec2) -> Option<LightSample> {
+pub fn sample_parallelogram_light(quad: &Parallelogram, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION
     let p = quad.corner() + sample_parallelogram(u, Vec3::ZERO, quad.e1(), quad.e2());
     let pdf = parallelogram_pdf(quad.area());

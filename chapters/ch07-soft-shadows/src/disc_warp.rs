@@ -8,8 +8,8 @@
 //! shadow edge comes out wrong and the irradiance below the light too bright.
 
 use ch02_monte_carlo::warps::{
-    disk_naive_pdf, sample_disk_naive, sample_uniform_disk_concentric, sample_uniform_disk_polar,
-    uniform_disk_pdf,
+    disc_naive_pdf, sample_disc_naive, sample_uniform_disc_concentric, sample_uniform_disc_polar,
+    uniform_disc_pdf,
 };
 use glam::Vec2;
 
@@ -43,9 +43,9 @@ impl DiscWarp {
     /// The point of the unit disc this warp makes of `u`.
     pub fn sample(self, u: Vec2) -> Vec2 {
         match self {
-            DiscWarp::Concentric => sample_uniform_disk_concentric(u),
-            DiscWarp::Polar => sample_uniform_disk_polar(u),
-            DiscWarp::Naive => sample_disk_naive(u),
+            DiscWarp::Concentric => sample_uniform_disc_concentric(u),
+            DiscWarp::Polar => sample_uniform_disc_polar(u),
+            DiscWarp::Naive => sample_disc_naive(u),
         }
     }
 
@@ -56,12 +56,12 @@ impl DiscWarp {
         match self {
             DiscWarp::Concentric | DiscWarp::Polar => {
                 if p.length_squared() <= 1.0 {
-                    uniform_disk_pdf()
+                    uniform_disc_pdf()
                 } else {
                     0.0
                 }
             }
-            DiscWarp::Naive => disk_naive_pdf(p),
+            DiscWarp::Naive => disc_naive_pdf(p),
         }
     }
 

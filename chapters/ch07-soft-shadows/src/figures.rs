@@ -11,7 +11,7 @@ use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::TraceOptions;
 use common::cli::prepare_output_dir;
-use common::geometry::{Disc, Quad, Shape, Sphere, Triangle};
+use common::geometry::{Disc, Parallelogram, Shape, Sphere, Triangle};
 use common::image::Image;
 use common::metrics::{
     Technique, mean, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence,
@@ -319,7 +319,7 @@ fn light_points(out: &Path) -> anyhow::Result<()> {
     let n = 256;
     let stratified = crate::light_samples(n, true, &mut SampleStream(&mut sampler));
     let independent = crate::light_samples(n, false, &mut SampleStream(&mut sampler));
-    let quad = Quad::new(
+    let quad = Parallelogram::new(
         Vec3::new(-0.9, 0.0, -0.6),
         Vec3::new(1.8, 0.0, 0.0),
         Vec3::new(0.6, 0.0, 1.2),

@@ -16,14 +16,14 @@
 
 use std::f32::consts::PI;
 
-use common::geometry::{Disc, Quad, Sphere, Triangle};
+use common::geometry::{Disc, Parallelogram, Sphere, Triangle};
 use glam::Vec3;
 
 /// The shape of an area light: one of `common`'s shapes that has a surface to sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LightShape {
     /// A parallelogram `corner + u e1 + v e2`, emitting towards `e1 × e2`.
-    Parallelogram(Quad),
+    Parallelogram(Parallelogram),
     /// A triangle, emitting towards `(p1 - p0) × (p2 - p0)` (counter-clockwise from the front).
     Triangle(Triangle),
     /// A disc, emitting towards its normal.
@@ -53,8 +53,8 @@ impl LightShape {
     }
 }
 
-impl From<Quad> for LightShape {
-    fn from(q: Quad) -> Self {
+impl From<Parallelogram> for LightShape {
+    fn from(q: Parallelogram) -> Self {
         LightShape::Parallelogram(q)
     }
 }
@@ -125,8 +125,8 @@ mod tests {
 
     #[test]
     fn planar_lights_shine_on_their_front_side_only() {
-        let light = AreaLight::new(Quad::new(Vec3::ZERO, Vec3::X, Vec3::Z), Vec3::ONE);
-        // X × Z = -Y: the quad faces down.
+        let light = AreaLight::new(Parallelogram::new(Vec3::ZERO, Vec3::X, Vec3::Z), Vec3::ONE);
+        // X × Z = -Y: the parallelogram faces down.
         assert_eq!(
             light.emitted(-Vec3::Y, Vec3::new(0.3, -1.0, 0.2)),
             Vec3::ONE
@@ -149,7 +149,7 @@ mod tests {
     #[test]
     fn degenerate_shapes_have_no_area() {
         let shapes: [LightShape; 6] = [
-            Quad::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X).into(),
+            Parallelogram::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X).into(),
             Triangle::new(Vec3::ZERO, Vec3::X, Vec3::X).into(),
             Triangle::new(Vec3::ZERO, Vec3::X, Vec3::NAN).into(),
             Disc::new(Vec3::ZERO, Vec3::Y, 0.0).into(),

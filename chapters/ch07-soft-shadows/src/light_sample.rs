@@ -76,11 +76,11 @@ mod tests {
     use crate::light::{AreaLight, LightShape};
     use crate::strategy::LightSampling;
     use crate::test_support::uniform_points;
-    use common::geometry::{Disc, Quad, Shape, Sphere};
+    use common::geometry::{Disc, Parallelogram, Shape, Sphere};
 
     /// The floor `y = 0` as a shape and a receiver hit on it at `(x, 0, z)`, found by a ray.
     fn floor_hit(scale: f32, offset: Vec3, at: Vec2) -> (Shape, SurfaceHit) {
-        let floor = Quad::new(
+        let floor = Parallelogram::new(
             offset + scale * Vec3::new(-5.0, 0.0, -5.0),
             scale * 10.0 * Vec3::Z,
             scale * 10.0 * Vec3::X,
@@ -100,7 +100,7 @@ mod tests {
             let lights: [(Shape, LightShape); 3] = [
                 {
                     // A ceiling panel facing down, and a panel standing on the floor.
-                    let q = Quad::new(
+                    let q = Parallelogram::new(
                         offset + scale * Vec3::new(-0.5, 1.0, -0.5),
                         scale * Vec3::X,
                         scale * Vec3::Z,

@@ -11,26 +11,9 @@ use ch07_soft_shadows::cli::LightArgs;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
 use ch07_soft_shadows::{AreaLights, CAPABILITIES};
 use ch07_soft_shadows::{figures, render_with};
-use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::cli::{ChapterBinary, RenderArgs};
 use common::render::Budget;
 use std::process::ExitCode;
-
-/// Chapter 07 of the workbook: soft shadows from area lights.
-#[derive(Parser, Debug)]
-#[command(name = "ch07-soft-shadows", version, about)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Render a scene lit by area lights.
-    Render(Box<RenderCommand>),
-    /// Write the chapter's comparison images, plots, tables and error-against-time data.
-    Figures(FiguresArgs),
-}
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -65,15 +48,12 @@ fn check_light_scale(scale: f32) -> anyhow::Result<f32> {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command {
-        Command::Render(command) => run_render(*command),
-        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    let binary = ChapterBinary {
+        name: "ch07-soft-shadows",
+        about: env!("CARGO_PKG_DESCRIPTION"),
+        render: "Render a scene lit by area lights.",
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(error) => report_error(error.as_ref()),
-    }
+    binary.run(run_render, figures::write_all)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {

@@ -25,7 +25,7 @@ pub fn light_shape(shape: &Shape) -> LightShape {
     match *shape {
         Shape::Sphere(s) => LightShape::Sphere(s),
         Shape::Triangle(t) => LightShape::Triangle(t),
-        Shape::Quad(q) => LightShape::Parallelogram(q),
+        Shape::Parallelogram(q) => LightShape::Parallelogram(q),
         Shape::Disc(d) => LightShape::Disc(d),
     }
 }

@@ -14,7 +14,7 @@
 
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::scenes::box_faces;
-use common::geometry::{Disc, Quad, Shape, Sphere, Triangle};
+use common::geometry::{Disc, Parallelogram, Shape, Sphere, Triangle};
 use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder};
 use glam::Vec3;
 
@@ -144,7 +144,7 @@ pub fn camera(origin: Vec3, target: Vec3, fov_x_degrees: f32) -> (Camera, FilmSe
 /// The square panel of side `side` centred at `center`, facing down (`e1 × e2 = x × z = -y`).
 pub fn ceiling_panel(center: Vec3, side: f32) -> Shape {
     let half = 0.5 * side;
-    Shape::Quad(Quad::new(
+    Shape::Parallelogram(Parallelogram::new(
         center - Vec3::new(half, 0.0, half),
         side * Vec3::X,
         side * Vec3::Z,
@@ -153,7 +153,7 @@ pub fn ceiling_panel(center: Vec3, side: f32) -> Shape {
 
 /// A floor `2 half` wide at `y = 0`, facing up.
 pub fn floor(half: f32) -> Shape {
-    Shape::Quad(Quad::new(
+    Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-half, 0.0, -half),
         2.0 * half * Vec3::Z,
         2.0 * half * Vec3::X,
@@ -177,7 +177,7 @@ fn panel(side: f32, max_depth: u32) -> MotionScene {
     Builder::new()
         .shape(floor(8.0), matte(FLOOR))
         .shape(
-            Shape::Quad(Quad::new(
+            Shape::Parallelogram(Parallelogram::new(
                 Vec3::new(-8.0, 0.0, -2.5),
                 16.0 * Vec3::X,
                 6.0 * Vec3::Y,
@@ -205,7 +205,7 @@ fn shapes(scale: f32, max_depth: u32) -> MotionScene {
     // A parallelogram tilted towards the camera, a triangle, a disc, a sphere: each 0.6 across.
     let e1 = 0.6 * s * Vec3::X;
     let e2 = 0.6 * s * Vec3::new(0.3, 0.2, 1.0).normalize();
-    let parallelogram = Quad::new(Vec3::new(-3.0, h, -0.3) - 0.5 * (e1 + e2), e1, e2);
+    let parallelogram = Parallelogram::new(Vec3::new(-3.0, h, -0.3) - 0.5 * (e1 + e2), e1, e2);
     let triangle = Triangle::new(
         Vec3::new(-1.0, h, -0.35 * s),
         Vec3::new(-1.0 + 0.35 * s, h, 0.3 * s),
@@ -223,7 +223,10 @@ fn shapes(scale: f32, max_depth: u32) -> MotionScene {
         builder = builder.shape(sphere(Vec3::new(x, 0.45, 0.0), 0.45), matte(colour));
     }
     builder
-        .area_light(Shape::Quad(parallelogram), radiance(parallelogram.area()))
+        .area_light(
+            Shape::Parallelogram(parallelogram),
+            radiance(parallelogram.area()),
+        )
         .area_light(Shape::Triangle(triangle), radiance(triangle.area()))
         .area_light(Shape::Disc(disc), radiance(disc.area()))
         // A sphere of the same power shines with a quarter of a panel's radiance per area.
@@ -272,7 +275,7 @@ fn glossy(scale: f32, max_depth: u32) -> MotionScene {
     Builder::new()
         .shape(floor(8.0), Material::glossy(Vec3::splat(0.8), 200.0))
         .shape(
-            Shape::Quad(Quad::new(
+            Shape::Parallelogram(Parallelogram::new(
                 Vec3::new(-8.0, 0.0, -3.0),
                 16.0 * Vec3::X,
                 6.0 * Vec3::Y,

@@ -65,7 +65,7 @@ fn a_small_render_writes_its_image_and_stats() {
 fn a_scene_file_renders_with_its_lights() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("quad.exr");
-    let file = scene("quad-light.xml");
+    let file = scene("rectangle-light.xml");
     let run = run_binary(
         BINARY,
         &[
@@ -93,7 +93,7 @@ fn bad_input_is_refused_and_nothing_is_written() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("never.png");
     let out_arg = out.to_str().unwrap();
-    let quad = scene("quad-light.xml");
+    let quad = scene("rectangle-light.xml");
     let cases: &[(&[&str], &str)] = &[
         (&["--light-samples", "0"], "--light-samples"),
         (&["--light-samples", "5000"], "--light-samples"),

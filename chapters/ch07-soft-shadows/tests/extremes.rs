@@ -11,7 +11,7 @@ use ch07_soft_shadows::scenes::{Builder, Builtin, camera, floor, matte};
 use ch07_soft_shadows::{DiscWarp, LightOptions, LightStrata, Strategy};
 use common::Ray;
 use common::film::PixelBoxFilter;
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
 use glam::Vec3;
@@ -117,7 +117,11 @@ fn a_light_touching_its_receiver_stays_finite() {
             Vec3::splat(5.0),
         ),
         (
-            Shape::Quad(Quad::new(Vec3::new(-1.5, 0.0, -0.5), Vec3::X, Vec3::Y)),
+            Shape::Parallelogram(Parallelogram::new(
+                Vec3::new(-1.5, 0.0, -0.5),
+                Vec3::X,
+                Vec3::Y,
+            )),
             Vec3::splat(5.0),
         ),
     ];
@@ -150,7 +154,7 @@ fn a_huge_light_lights_like_the_sky() {
         assert_finite(&render(&scene, options, 16, 12, 2, 0), "huge sphere");
     }
     // A panel 1000 wide, 1 above the floor: area sampling is hopelessly noisy, but finite.
-    let panel = Shape::Quad(Quad::new(
+    let panel = Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-500.0, 1.0, -500.0),
         1000.0 * Vec3::X,
         1000.0 * Vec3::Z,

@@ -37,7 +37,7 @@ fn converted(name: &str) -> Converted {
 #[test]
 fn every_shipped_scene_converts_with_its_lights() {
     let cases = [
-        ("quad-light.xml", 1),
+        ("rectangle-light.xml", 1),
         ("disc-light.xml", 1),
         ("sphere-light.xml", 1),
         ("several-lights.xml", 6 + 2),

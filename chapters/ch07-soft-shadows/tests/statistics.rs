@@ -12,7 +12,7 @@ use ch07_soft_shadows::reference::{
 use ch07_soft_shadows::scenes::{Builder, camera, floor, matte};
 use ch07_soft_shadows::{DiscWarp, LightOptions, LightStrata, Strategy};
 use common::Ray;
-use common::geometry::{Disc, Quad, Shape, Sphere, Triangle};
+use common::geometry::{Disc, Parallelogram, Shape, Sphere, Triangle};
 use glam::Vec3;
 use std::f32::consts::FRAC_1_PI;
 use support::{ALBEDO, mean_radiance, panel, relative_rmse, render, scene_with_light};
@@ -74,7 +74,7 @@ fn the_floor_under_each_light_shape_has_its_exact_brightness() {
     let radiance = Vec3::splat(3.0);
     let x = Vec3::new(0.7, 0.0, 0.4);
     // A panel and a triangle (Lambert's formula), off their axis.
-    let quad = Quad::new(Vec3::new(-0.5, 2.0, -0.5), Vec3::X, Vec3::Z);
+    let quad = Parallelogram::new(Vec3::new(-0.5, 2.0, -0.5), Vec3::X, Vec3::Z);
     let corners = [
         quad.corner(),
         quad.corner() + quad.e1(),
@@ -92,7 +92,7 @@ fn the_floor_under_each_light_shape_has_its_exact_brightness() {
     let to_sphere = sphere.center - x;
     let cases = [
         (
-            Shape::Quad(quad),
+            Shape::Parallelogram(quad),
             x,
             polygon_irradiance(x, Vec3::Y, &corners, radiance),
         ),
@@ -148,7 +148,7 @@ fn stratified_light_samples_beat_independent_ones_in_a_penumbra() {
     let (independent_mean, independent) = variance(LightStrata::Independent);
     let (stratified_mean, stratified) = variance(LightStrata::Stratified);
     // In the penumbra: the light is partly hidden.
-    let Shape::Quad(q) = light else {
+    let Shape::Parallelogram(q) = light else {
         unreachable!()
     };
     let corners = [

@@ -113,9 +113,6 @@ impl Bsdf<'_> {
     }
 
     /// `f(wo, wi) cos θ_i` without the delta parts (0 for a mirror or smooth glass).
-    ///
-    /// Always inlined: the light loops call it once per light, and for a matte surface it is
-    /// a match and a dot product, less than the call would cost.
     #[inline(always)]
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         let hit = self.hit;

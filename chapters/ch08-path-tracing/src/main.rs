@@ -13,26 +13,9 @@ use ch08_path_tracing::cli::PathArgs;
 use ch08_path_tracing::dimensions::render_counted;
 use ch08_path_tracing::scene_file::path_options;
 use ch08_path_tracing::{CAPABILITIES, Method, figures};
-use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, RenderArgs, report_error};
+use common::cli::{ChapterBinary, RenderArgs};
 use common::render::Budget;
 use std::process::ExitCode;
-
-/// Chapter 08 of the workbook: the path tracer.
-#[derive(Parser, Debug)]
-#[command(name = "ch08-path-tracing", version, about)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Path-trace a scene file (--scene FILE.xml).
-    Render(Box<RenderCommand>),
-    /// Write the chapter's comparison images and error-against-time data.
-    Figures(FiguresArgs),
-}
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -51,15 +34,12 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command {
-        Command::Render(command) => run_render(*command),
-        Command::Figures(args) => figures::write_all(&args.out, args.quick),
+    let binary = ChapterBinary {
+        name: "ch08-path-tracing",
+        about: env!("CARGO_PKG_DESCRIPTION"),
+        render: "Path-trace a scene file (--scene FILE.xml).",
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(error) => report_error(error.as_ref()),
-    }
+    binary.run(run_render, figures::write_all)
 }
 
 /// The options of chapters 06 and 07 that mean something for a path: a path follows one ray

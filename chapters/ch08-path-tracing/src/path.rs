@@ -133,9 +133,6 @@ impl PathTracer<'_> {
 
     /// Segment `depth` of `path`, along `ray`: the light it finds, the light sampled where it
     /// ends, and the ray of the next segment (`None` where the path ends).
-    ///
-    /// Kept out of line on purpose: the loop above then holds almost nothing, and a path of
-    /// one or two segments does not pay for setting up a large loop body.
     #[inline(never)]
     fn segment<S: Sampler>(
         &self,

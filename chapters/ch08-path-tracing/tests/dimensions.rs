@@ -17,7 +17,7 @@ use ch05_motion_blur::{MotionScene, Shutter};
 use ch08_path_tracing::dimensions::{DimensionStats, render_counted};
 use ch08_path_tracing::{Method, PathOptions};
 use common::film::PixelBoxFilter;
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
 use common::scene::{
@@ -29,7 +29,7 @@ use glam::{Mat4, Vec3};
 fn plane(lights: usize) -> SceneBuilder {
     let mut builder = SceneBuilder::new().shape(
         // X x Y = +Z: the plane faces the camera.
-        Shape::Quad(Quad::new(
+        Shape::Parallelogram(Parallelogram::new(
             Vec3::new(-10.0, -10.0, 0.0),
             20.0 * Vec3::X,
             20.0 * Vec3::Y,
@@ -72,7 +72,11 @@ fn sky_scene(lamp: bool) -> MotionScene {
     if lamp {
         // X x Z = -Y: the lamp faces down, towards the plane's lower edge.
         builder = builder.shape(
-            Shape::Quad(Quad::new(Vec3::new(-0.5, 2.5, 0.5), Vec3::X, Vec3::Z)),
+            Shape::Parallelogram(Parallelogram::new(
+                Vec3::new(-0.5, 2.5, 0.5),
+                Vec3::X,
+                Vec3::Z,
+            )),
             Material::diffuse(Vec3::ZERO),
         );
     }
@@ -167,7 +171,11 @@ fn counting_leaves_the_image_bit_identical() {
             Material::glass(1.5),
         )
         .shape(
-            Shape::Quad(Quad::new(Vec3::new(0.5, 1.0, 2.0), Vec3::X, -Vec3::Z)),
+            Shape::Parallelogram(Parallelogram::new(
+                Vec3::new(0.5, 1.0, 2.0),
+                Vec3::X,
+                -Vec3::Z,
+            )),
             Material::diffuse(Vec3::ZERO),
         );
     let base = scene(with_sliding_sphere(builder), shutter);

@@ -6,7 +6,7 @@ use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::furnace::scene_of;
 use ch08_path_tracing::PathOptions;
 use ch08_path_tracing::furnace::spheres;
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::AreaEmitter;
 use common::scene::Material as Smooth;
 use common::scene::Material;
@@ -92,13 +92,16 @@ fn a_black_world_stays_black() {
 /// gets its focused light (a caustic) only from paths that bounce through the glass to it,
 /// since every light sample from behind the ball is blocked.
 fn a_small_light_behind_glass() -> MotionScene {
-    let floor = Quad::new(
+    let floor = Parallelogram::new(
         Vec3::new(-50.0, -1.0, -50.0),
         100.0 * Vec3::Z,
         100.0 * Vec3::X,
     );
     let shapes = vec![
-        (Shape::Quad(floor), Smooth::diffuse(Vec3::splat(0.5))),
+        (
+            Shape::Parallelogram(floor),
+            Smooth::diffuse(Vec3::splat(0.5)),
+        ),
         (
             Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)),
             Smooth::glass(1.5),

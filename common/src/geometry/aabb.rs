@@ -9,7 +9,7 @@ use crate::Ray;
 ///
 /// A box with `min > max` on some axis contains nothing; [`Aabb::empty`] is the one with
 /// `min = +∞` and `max = -∞`, which every [`union`](Aabb::union) replaces. Flat boxes
-/// (`min == max` on an axis, such as the box of a floor quad) and single points are fine.
+/// (`min == max` on an axis, such as the box of a floor parallelogram) and single points are fine.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb {
     /// The corner with the smallest coordinates.

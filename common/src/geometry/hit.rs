@@ -31,7 +31,7 @@ pub struct SurfaceHit {
 
 impl SurfaceHit {
     /// Whether a ray travelling along `dir` arrives on the side `n` points to
-    /// (`dot(dir, n) < 0`): outside a sphere, in front of a quad.
+    /// (`dot(dir, n) < 0`): outside a sphere, in front of a parallelogram.
     pub fn front_face(&self, dir: Vec3) -> bool {
         dir.dot(self.n) < 0.0
     }

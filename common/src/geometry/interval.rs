@@ -6,7 +6,7 @@
 //! values inside the operands lies inside that widened interval, because `f32` rounding moves
 //! a value by at most half a step.
 //!
-//! The spheres, quads and discs compute their hit distance `t` this way whenever it is close to
+//! The spheres, parallelograms and discs compute their hit distance `t` this way whenever it is close to
 //! 0 or otherwise delicate. They accept a hit only if the *whole* interval is positive, so a
 //! secondary ray that starts on the surface can never re-hit it at a `t` that is only positive
 //! because of rounding. (Most crossings are far from 0; for them, plain floats with an error

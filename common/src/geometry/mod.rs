@@ -18,7 +18,7 @@
 //! 2. starts secondary rays from an origin pushed off the surface by exactly that bound
 //!    ([`offset_ray_origin`], [`SurfaceHit::spawn_ray`]);
 //! 3. accepts a hit only when its `t` is positive beyond its own rounding error (interval
-//!    arithmetic in `interval.rs` for spheres, quads and discs; pbrt's error bound for the
+//!    arithmetic in `interval.rs` for spheres, parallelograms and discs; pbrt's error bound for the
 //!    watertight triangle test).
 //!
 //! No constant in any of it depends on the scene's size or position.
@@ -40,5 +40,5 @@ pub use bvh::{Bvh, BvhHit, MAX_PRIMITIVES_PER_LEAF};
 pub use float::{MACHINE_EPSILON, gamma, next_float_down, next_float_up};
 pub use hit::SurfaceHit;
 pub use scene_geometry::Geometry;
-pub use shapes::{Crossing, Disc, MeshError, Quad, Shape, Sphere, Triangle, TriangleMesh};
+pub use shapes::{Crossing, Disc, MeshError, Parallelogram, Shape, Sphere, Triangle, TriangleMesh};
 pub use spawn::{SHADOW_EPSILON, offset_ray_origin};

@@ -168,7 +168,7 @@ pub enum ShapeGeometry {
     /// The square [-1, 1]^2 in the xy-plane, normal +z.
     Rectangle,
     /// The unit disc in the xy-plane, normal +z.
-    Disk,
+    Disc,
     /// The cube [-1, 1]^3.
     Cube,
     /// A Wavefront OBJ mesh, not loaded yet.

@@ -32,7 +32,7 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
             }
         }
         "rectangle" => ShapeGeometry::Rectangle,
-        "disk" => ShapeGeometry::Disk,
+        "disk" => ShapeGeometry::Disc,
         "cube" => ShapeGeometry::Cube,
         "obj" => {
             let filename = properties.string(reader, "filename")?.ok_or_else(|| {

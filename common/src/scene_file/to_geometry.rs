@@ -6,7 +6,7 @@
 //! the inverse transpose, which is what keeps them perpendicular under non-uniform scaling.
 
 use super::{ShapeDescription, ShapeGeometry};
-use crate::geometry::{Disc, Quad, Shape, Sphere};
+use crate::geometry::{Disc, Parallelogram, Shape, Sphere};
 use glam::{Mat4, Vec3};
 
 /// The world-space shapes of one description: one for a sphere, rectangle or disc, six
@@ -25,7 +25,7 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
             ))])
         }
         ShapeGeometry::Rectangle => Ok(vec![square_face(m, Mat4::IDENTITY, shape.flip_normals)]),
-        ShapeGeometry::Disk => {
+        ShapeGeometry::Disc => {
             let mut normal = world_normal(m, Vec3::Z);
             if !normal.is_finite() {
                 return Err("its to_world flattens the disk to a line (a scale of 0)".into());
@@ -121,7 +121,7 @@ fn square_face(to_world: Mat4, face: Mat4, flip: bool) -> Shape {
     if e1.cross(e2).dot(want) < 0.0 {
         std::mem::swap(&mut e1, &mut e2);
     }
-    Shape::Quad(Quad::new(corner, e1, e2))
+    Shape::Parallelogram(Parallelogram::new(corner, e1, e2))
 }
 
 /// The principal semi-axes of the ellipse `{cos θ a + sin θ b}`: two perpendicular vectors,
@@ -281,7 +281,7 @@ mod tests {
                 .contains("ellipsoid")
         );
         // A disk under the same squash is an ellipse, 1 along x and 2 along y.
-        let shapes = world_shapes(&description(ShapeGeometry::Disk, squash)).unwrap();
+        let shapes = world_shapes(&description(ShapeGeometry::Disc, squash)).unwrap();
         let Shape::Disc(ellipse) = shapes[0] else {
             panic!("{shapes:?}");
         };
@@ -294,7 +294,7 @@ mod tests {
         let shear = Mat4::from_cols_array(&[
             1.0, 0.0, 0.0, 0.0, 0.8, 0.5, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
         ]);
-        let sheared = world_shapes(&description(ShapeGeometry::Disk, shear)).unwrap();
+        let sheared = world_shapes(&description(ShapeGeometry::Disc, shear)).unwrap();
         let Shape::Disc(sheared) = sheared[0] else {
             unreachable!()
         };
@@ -304,7 +304,7 @@ mod tests {
             "{sheared:?}"
         );
         let round = Mat4::from_scale(Vec3::new(0.4, 0.4, 1.0));
-        let round = world_shapes(&description(ShapeGeometry::Disk, round)).unwrap();
+        let round = world_shapes(&description(ShapeGeometry::Disc, round)).unwrap();
         assert!(matches!(round[0], Shape::Disc(d) if d.is_circle() && d.radii().x == 0.4));
     }
 }

@@ -70,7 +70,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
         let kind = match shape.geometry {
             ShapeGeometry::Sphere { .. } => "sphere",
             ShapeGeometry::Rectangle => "rectangle",
-            ShapeGeometry::Disk => "disk",
+            ShapeGeometry::Disc => "disk",
             ShapeGeometry::Cube => "cube",
             ShapeGeometry::Obj { .. } => "obj",
         };

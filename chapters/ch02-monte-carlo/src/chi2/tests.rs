@@ -2,10 +2,10 @@
 //! correct warp are uniform, as they must be if the test is calibrated.
 
 use super::*;
-use crate::warps::disk::polar_to_cartesian;
+use crate::warps::disc::polar_to_cartesian;
 use crate::warps::{
     cos_lobe_pdf, cosine_hemisphere_pdf, sample_cos_lobe, sample_uniform_hemisphere,
-    uniform_disk_pdf,
+    uniform_disc_pdf,
 };
 use approx::assert_relative_eq;
 use std::time::Instant;
@@ -66,10 +66,10 @@ fn every_correct_warp_passes() {
 
 #[test]
 fn the_naive_disc_fails_its_uniform_claim() {
-    let result = chi2_test(&Warp::DiskNaive, SAMPLES, 0, PLANE_RESOLUTION);
+    let result = chi2_test(&Warp::DiscNaive, SAMPLES, 0, PLANE_RESOLUTION);
     assert!(result.p_value < 1e-12, "{result:?}");
     // Fewer samples are enough: the clustering is no subtle effect.
-    let result = chi2_test(&Warp::DiskNaive, 10_000, 0, (8, 8));
+    let result = chi2_test(&Warp::DiscNaive, 10_000, 0, (8, 8));
     assert!(result.p_value < 1e-12, "{result:?}");
 }
 
@@ -83,11 +83,11 @@ fn broken(
 }
 
 fn unit_disc() -> Domain {
-    Warp::DiskPolar.domain()
+    Warp::DiscPolar.domain()
 }
 
 fn uniform_disc(point: WarpPoint) -> f32 {
-    Warp::DiskPolar.pdf(point)
+    Warp::DiscPolar.pdf(point)
 }
 
 #[test]
@@ -160,7 +160,7 @@ fn points_outside_the_grid_or_off_the_sphere_are_impossible() {
     let outside = broken(
         unit_disc(),
         |u| WarpPoint::Plane(2.0 * u),
-        |_| uniform_disk_pdf(),
+        |_| uniform_disc_pdf(),
     );
     assert!(outside.impossible_samples > 0 && outside.p_value == 0.0);
     let too_long = broken(
@@ -200,7 +200,7 @@ fn p_values_of_a_correct_warp_are_uniform() {
     // [0, 1]: about a tenth fall below 0.1 and about half below 0.5.
     let runs = 200;
     let p_values: Vec<f64> = (0..runs)
-        .map(|seed| chi2_test(&Warp::DiskConcentric, 5_000, seed, (8, 8)).p_value)
+        .map(|seed| chi2_test(&Warp::DiscConcentric, 5_000, seed, (8, 8)).p_value)
         .collect();
     let below = |level: f64| p_values.iter().filter(|&&p| p < level).count();
     // Binomial(200, 0.1) has mean 20 and standard deviation 4.2; (200, 0.5) 100 and 7.1.

@@ -19,7 +19,7 @@ use std::f32::consts::TAU;
 
 use glam::{Vec2, Vec3};
 
-use super::disk::azimuth;
+use super::disc::azimuth;
 use super::sphere::{one_minus_cos_theta, spherical_direction};
 
 /// A uniform direction of the cap of directions within `θ_max` of +z, for

@@ -9,10 +9,10 @@ use glam::{Vec2, Vec3};
 
 use super::{
     cos_lobe_pdf, cosine_hemisphere_pdf, parallelogram_pdf, sample_cos_lobe,
-    sample_cosine_hemisphere, sample_disk_naive, sample_parallelogram, sample_spherical_cap,
-    sample_triangle, sample_uniform_disk_concentric, sample_uniform_disk_polar,
+    sample_cosine_hemisphere, sample_disc_naive, sample_parallelogram, sample_spherical_cap,
+    sample_triangle, sample_uniform_disc_concentric, sample_uniform_disc_polar,
     sample_uniform_hemisphere, sample_uniform_sphere, spherical_cap_pdf, triangle_pdf,
-    uniform_disk_pdf, uniform_hemisphere_pdf, uniform_sphere_pdf,
+    uniform_disc_pdf, uniform_hemisphere_pdf, uniform_sphere_pdf,
 };
 
 /// The exponent of `cos-lobe` when none is given.
@@ -30,11 +30,11 @@ pub enum Warp {
     /// The triangle `(0, 0), (1, 0), (0, 1)` by the fold.
     Triangle,
     /// The unit disc by `r = ξ2`: not uniform, yet claimed uniform (see [`Warp::pdf`]).
-    DiskNaive,
+    DiscNaive,
     /// The unit disc by `r = √ξ2`.
-    DiskPolar,
+    DiscPolar,
     /// The unit disc by Shirley and Chiu's concentric map.
-    DiskConcentric,
+    DiscConcentric,
     /// Uniform directions on the sphere.
     Sphere,
     /// Uniform directions on the hemisphere around +z.
@@ -82,9 +82,9 @@ impl Warp {
     pub const NAMES: [&'static str; 10] = [
         "parallelogram",
         "triangle",
-        "disk-naive",
-        "disk-polar",
-        "disk-concentric",
+        "disc-naive",
+        "disc-polar",
+        "disc-concentric",
         "sphere",
         "hemisphere",
         "cosine-hemisphere",
@@ -97,9 +97,9 @@ impl Warp {
         match self {
             Warp::Parallelogram => "parallelogram",
             Warp::Triangle => "triangle",
-            Warp::DiskNaive => "disk-naive",
-            Warp::DiskPolar => "disk-polar",
-            Warp::DiskConcentric => "disk-concentric",
+            Warp::DiscNaive => "disc-naive",
+            Warp::DiscPolar => "disc-polar",
+            Warp::DiscConcentric => "disc-concentric",
             Warp::Sphere => "sphere",
             Warp::Hemisphere => "hemisphere",
             Warp::CosineHemisphere => "cosine-hemisphere",
@@ -116,9 +116,9 @@ impl Warp {
         let warp = match name {
             "parallelogram" => Warp::Parallelogram,
             "triangle" => Warp::Triangle,
-            "disk-naive" => Warp::DiskNaive,
-            "disk-polar" => Warp::DiskPolar,
-            "disk-concentric" => Warp::DiskConcentric,
+            "disc-naive" => Warp::DiscNaive,
+            "disc-polar" => Warp::DiscPolar,
+            "disc-concentric" => Warp::DiscConcentric,
             "sphere" => Warp::Sphere,
             "hemisphere" => Warp::Hemisphere,
             "cosine-hemisphere" => Warp::CosineHemisphere,
@@ -151,15 +151,15 @@ impl Warp {
 
     /// Every warp, for tests that run them all: the lobe at several exponents (the uniform
     /// hemisphere, the cosine, a broad and a narrow glossy lobe), the default cap and one
-    /// larger than a hemisphere. Includes [`Warp::DiskNaive`], which fails its density; see
+    /// larger than a hemisphere. Includes [`Warp::DiscNaive`], which fails its density; see
     /// [`Warp::delivers_claimed_density`].
     pub fn all_for_tests() -> Vec<Warp> {
         let mut warps = vec![
             Warp::Parallelogram,
             Warp::Triangle,
-            Warp::DiskNaive,
-            Warp::DiskPolar,
-            Warp::DiskConcentric,
+            Warp::DiscNaive,
+            Warp::DiscPolar,
+            Warp::DiscConcentric,
             Warp::Sphere,
             Warp::Hemisphere,
             Warp::CosineHemisphere,
@@ -173,9 +173,9 @@ impl Warp {
     }
 
     /// Whether the warp's samples really have the density [`Warp::pdf`] claims: true for all
-    /// but [`Warp::DiskNaive`].
+    /// but [`Warp::DiscNaive`].
     pub fn delivers_claimed_density(&self) -> bool {
-        !matches!(self, Warp::DiskNaive)
+        !matches!(self, Warp::DiscNaive)
     }
 
     /// Where the warp's samples land.
@@ -185,7 +185,7 @@ impl Warp {
                 min: Vec2::ZERO,
                 max: Vec2::ONE,
             },
-            Warp::DiskNaive | Warp::DiskPolar | Warp::DiskConcentric => Domain::Plane {
+            Warp::DiscNaive | Warp::DiscPolar | Warp::DiscConcentric => Domain::Plane {
                 min: Vec2::splat(-1.0),
                 max: Vec2::ONE,
             },
@@ -203,9 +203,9 @@ impl Warp {
         match *self {
             Warp::Parallelogram => WarpPoint::Plane(sample_parallelogram(u, p0, p1, p2)),
             Warp::Triangle => WarpPoint::Plane(sample_triangle(u, p0, p1, p2)),
-            Warp::DiskNaive => WarpPoint::Plane(sample_disk_naive(u)),
-            Warp::DiskPolar => WarpPoint::Plane(sample_uniform_disk_polar(u)),
-            Warp::DiskConcentric => WarpPoint::Plane(sample_uniform_disk_concentric(u)),
+            Warp::DiscNaive => WarpPoint::Plane(sample_disc_naive(u)),
+            Warp::DiscPolar => WarpPoint::Plane(sample_uniform_disc_polar(u)),
+            Warp::DiscConcentric => WarpPoint::Plane(sample_uniform_disc_concentric(u)),
             Warp::Sphere => WarpPoint::Direction(sample_uniform_sphere(u)),
             Warp::Hemisphere => WarpPoint::Direction(sample_uniform_hemisphere(u)),
             Warp::CosineHemisphere => WarpPoint::Direction(sample_cosine_hemisphere(u)),
@@ -219,8 +219,8 @@ impl Warp {
     /// The density the warp *claims* at `point`, per unit area or solid angle, with 0 outside
     /// the shape it samples (and for a point of the wrong kind, a direction for a planar warp).
     ///
-    /// For [`Warp::DiskNaive`] this is the uniform density `1 / π`, not its true density
-    /// [`super::disk_naive_pdf`]: the naive warp is offered as a uniform disc, and the
+    /// For [`Warp::DiscNaive`] this is the uniform density `1 / π`, not its true density
+    /// [`super::disc_naive_pdf`]: the naive warp is offered as a uniform disc, and the
     /// chi-square test holds it to that claim and rejects it. Its true density stays available
     /// for plots that show where the samples really go.
     pub fn pdf(&self, point: WarpPoint) -> f32 {
@@ -229,10 +229,10 @@ impl Warp {
                 parallelogram_pdf(1.0)
             }
             (Warp::Triangle, WarpPoint::Plane(p)) if in_unit_triangle(p) => triangle_pdf(0.5),
-            (Warp::DiskNaive | Warp::DiskPolar | Warp::DiskConcentric, WarpPoint::Plane(p))
+            (Warp::DiscNaive | Warp::DiscPolar | Warp::DiscConcentric, WarpPoint::Plane(p))
                 if p.length_squared() <= 1.0 =>
             {
-                uniform_disk_pdf()
+                uniform_disc_pdf()
             }
             (Warp::Sphere, WarpPoint::Direction(_)) => uniform_sphere_pdf(),
             (Warp::Hemisphere, WarpPoint::Direction(d)) if d.z >= 0.0 => uniform_hemisphere_pdf(),
@@ -291,7 +291,7 @@ mod tests {
     fn bad_names_and_exponents_are_explained() {
         let unknown = Warp::from_name("disc", None).unwrap_err();
         assert!(
-            unknown.contains("`disc`") && unknown.contains("disk-concentric"),
+            unknown.contains("`disc`") && unknown.contains("disc-concentric"),
             "{unknown}"
         );
         for exponent in [-1.0, f32::NAN, f32::INFINITY] {
@@ -342,6 +342,6 @@ mod tests {
     #[test]
     fn points_of_the_wrong_kind_have_no_density() {
         assert_eq!(Warp::Sphere.pdf(WarpPoint::Plane(Vec2::ZERO)), 0.0);
-        assert_eq!(Warp::DiskPolar.pdf(WarpPoint::Direction(Vec3::Z)), 0.0);
+        assert_eq!(Warp::DiscPolar.pdf(WarpPoint::Direction(Vec3::Z)), 0.0);
     }
 }

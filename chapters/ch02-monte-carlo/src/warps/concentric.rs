@@ -1,6 +1,6 @@
 //! Shirley and Chiu's concentric map: a uniform disc with little distortion.
 //!
-//! The polar map of [`super::disk`] is uniform but distorts badly: the bottom edge of the
+//! The polar map of [`super::disc`] is uniform but distorts badly: the bottom edge of the
 //! square collapses into the centre and its left and right edges are glued along a seam, so a
 //! nicely stratified set of `u` (chapter 03) arrives as long thin slivers. Shirley and Chiu
 //! (1997) map concentric *squares* to concentric *circles* instead.
@@ -17,16 +17,16 @@ use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
 use glam::Vec2;
 
-use super::disk::polar_to_cartesian;
+use super::disc::polar_to_cartesian;
 
-// ANCHOR: disk_concentric
+// ANCHOR: disc_concentric
 /// A uniform point of the unit disc by Shirley and Chiu's concentric map; density
-/// [`super::uniform_disk_pdf`].
+/// [`super::uniform_disc_pdf`].
 ///
 /// The centre of the square, `u = (1/2, 1/2)`, would divide 0 by 0 for its angle; it goes to
 /// the centre of the disc explicitly.
 #[inline]
-pub fn sample_uniform_disk_concentric(u: Vec2) -> Vec2 {
+pub fn sample_uniform_disc_concentric(u: Vec2) -> Vec2 {
     let offset = 2.0 * u - Vec2::ONE;
     if offset == Vec2::ZERO {
         return Vec2::ZERO;
@@ -41,15 +41,15 @@ pub fn sample_uniform_disk_concentric(u: Vec2) -> Vec2 {
     // A negative r points the other way: it covers the left (or bottom) wedge.
     polar_to_cartesian(r, theta)
 }
-// ANCHOR_END: disk_concentric
+// ANCHOR_END: disc_concentric
 
-/// The `u` that [`sample_uniform_disk_concentric`] maps to `p` (pbrt-v4's
+/// The `u` that [`sample_uniform_disc_concentric`] maps to `p` (pbrt-v4's
 /// `InvertUniformDiskConcentricSample`).
 ///
 /// Find the wedge from which of `|x|`, `|y|` is larger, undo the sign trick of the forward map
 /// (a point of the left wedge came from a negative `r` with an angle near 0, not near π), and
 /// solve the linear angle formula for the other coordinate.
-pub fn invert_uniform_disk_concentric(p: Vec2) -> Vec2 {
+pub fn invert_uniform_disc_concentric(p: Vec2) -> Vec2 {
     let r = p.length();
     let phi = p.y.atan2(p.x); // in (-π, π]
     let offset = if p.x.abs() > p.y.abs() {
@@ -80,14 +80,14 @@ mod tests {
 
     #[test]
     fn the_centre_goes_to_the_centre_without_nan() {
-        assert_eq!(sample_uniform_disk_concentric(Vec2::splat(0.5)), Vec2::ZERO);
-        assert_eq!(invert_uniform_disk_concentric(Vec2::ZERO), Vec2::splat(0.5));
+        assert_eq!(sample_uniform_disc_concentric(Vec2::splat(0.5)), Vec2::ZERO);
+        assert_eq!(invert_uniform_disc_concentric(Vec2::ZERO), Vec2::splat(0.5));
     }
 
     #[test]
     fn edge_values_stay_in_the_disc() {
         for u in edge_points() {
-            let p = sample_uniform_disk_concentric(u);
+            let p = sample_uniform_disc_concentric(u);
             assert!(p.is_finite() && p.length() <= 1.0 + 1e-6, "u = {u}: {p}");
         }
     }
@@ -103,7 +103,7 @@ mod tests {
                 Vec2::new(s, 0.6),
                 Vec2::new(s, -0.6),
             ] {
-                let p = sample_uniform_disk_concentric((offset + Vec2::ONE) / 2.0);
+                let p = sample_uniform_disc_concentric((offset + Vec2::ONE) / 2.0);
                 assert_relative_eq!(p.length(), 0.6, epsilon = 1e-6);
             }
         }
@@ -113,8 +113,8 @@ mod tests {
     fn inverse_round_trips() {
         // The whole square, including the wedges' diagonals and the axes.
         for u in interior_grid(41) {
-            let p = sample_uniform_disk_concentric(u);
-            assert_relative_eq!(invert_uniform_disk_concentric(p), u, epsilon = 2e-5);
+            let p = sample_uniform_disc_concentric(u);
+            assert_relative_eq!(invert_uniform_disc_concentric(p), u, epsilon = 2e-5);
         }
         for p in [
             Vec2::new(0.3, -0.4),
@@ -122,8 +122,8 @@ mod tests {
             Vec2::new(-0.2, -0.7),
             Vec2::new(0.0, 0.7),
         ] {
-            let u = invert_uniform_disk_concentric(p);
-            assert_relative_eq!(sample_uniform_disk_concentric(u), p, epsilon = 1e-6);
+            let u = invert_uniform_disc_concentric(p);
+            assert_relative_eq!(sample_uniform_disc_concentric(u), p, epsilon = 1e-6);
         }
     }
 }

@@ -29,7 +29,7 @@ use super::concentric;
 #[inline]
 pub fn sample_cosine_hemisphere(u: Vec2) -> Vec3 {
     // BEGIN SOLUTION
-    let d = concentric::sample_uniform_disk_concentric(u);
+    let d = concentric::sample_uniform_disc_concentric(u);
     let z = (1.0 - d.length_squared()).max(0.0).sqrt();
     Vec3::new(d.x, d.y, z)
     // END SOLUTION
@@ -45,7 +45,7 @@ pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
 /// The `u` that [`sample_cosine_hemisphere`] maps to `d`: drop `d` straight down onto the
 /// disc and invert the concentric map there.
 pub fn invert_cosine_hemisphere(d: Vec3) -> Vec2 {
-    concentric::invert_uniform_disk_concentric(d.truncate())
+    concentric::invert_uniform_disc_concentric(d.truncate())
 }
 
 #[cfg(test)]

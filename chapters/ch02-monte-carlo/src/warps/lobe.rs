@@ -28,7 +28,7 @@ use std::f32::consts::{FRAC_1_PI, TAU};
 
 use glam::{Vec2, Vec3};
 
-use super::disk::azimuth;
+use super::disc::azimuth;
 use super::sphere::{one_minus_cos_theta, spherical_direction};
 
 // ANCHOR: cos_lobe

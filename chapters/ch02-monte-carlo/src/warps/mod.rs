@@ -24,7 +24,7 @@
 //!   Jacobian is the density we want (Malley's cosine-weighted hemisphere).
 //!
 //! Conventions, the same in every file:
-//! - Functions carry pbrt-v4's names (`SampleUniformDiskPolar` is [`sample_uniform_disk_polar`]),
+//! - Functions carry pbrt-v4's names (`SampleUniformDiskPolar` is [`sample_uniform_disc_polar`]),
 //!   each with its density beside it and, where the warp is one-to-one, its inverse.
 //! - In the polar and spherical warps `u.x = ξ1` drives the azimuth, `φ = 2π ξ1`, and
 //!   `u.y = ξ2` the radius or the polar angle: the lecture's `Polar2Cartesian(R v, 2π u)` with
@@ -45,7 +45,7 @@ pub mod cap;
 pub mod catalogue;
 pub mod concentric;
 pub mod cosine;
-pub mod disk;
+pub mod disc;
 pub mod lobe;
 pub mod parallelogram;
 pub mod sphere;
@@ -56,11 +56,11 @@ pub(crate) mod test_support;
 
 pub use cap::{invert_spherical_cap, sample_spherical_cap, spherical_cap_pdf};
 pub use catalogue::{Domain, Warp, WarpPoint};
-pub use concentric::{invert_uniform_disk_concentric, sample_uniform_disk_concentric};
+pub use concentric::{invert_uniform_disc_concentric, sample_uniform_disc_concentric};
 pub use cosine::{cosine_hemisphere_pdf, invert_cosine_hemisphere, sample_cosine_hemisphere};
-pub use disk::{
-    disk_naive_pdf, invert_disk_naive, invert_uniform_disk_polar, sample_disk_naive,
-    sample_uniform_disk_polar, uniform_disk_pdf,
+pub use disc::{
+    disc_naive_pdf, invert_disc_naive, invert_uniform_disc_polar, sample_disc_naive,
+    sample_uniform_disc_polar, uniform_disc_pdf,
 };
 pub use lobe::{cos_lobe_pdf, invert_cos_lobe, sample_cos_lobe};
 pub use parallelogram::{invert_parallelogram, parallelogram_pdf, sample_parallelogram};

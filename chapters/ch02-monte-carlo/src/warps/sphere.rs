@@ -15,7 +15,7 @@ use std::f32::consts::{FRAC_1_PI, TAU};
 
 use glam::{Vec2, Vec3};
 
-use super::disk::azimuth;
+use super::disc::azimuth;
 
 /// The unit direction with polar angle `θ` from +z and azimuth `φ` from +x, given by `sin θ`
 /// and `cos θ` (pbrt-v4's `SphericalDirection`).

@@ -3,7 +3,7 @@
 
 use ch05_motion_blur::world::MotionScene;
 use ch05_motion_blur::{AnimatedTransform, Shutter, TimeSampler};
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::{AnimatedShape, Material, Scene, SceneBuilder, Surface};
@@ -128,7 +128,7 @@ fn place(shape: &Shape, m: &Mat4) -> Shape {
             let scale = m.transform_vector3(Vec3::X).length();
             Shape::Sphere(Sphere::new(m.transform_point3(s.center), s.radius * scale))
         }
-        Shape::Quad(q) => Shape::Quad(Quad::new(
+        Shape::Parallelogram(q) => Shape::Parallelogram(Parallelogram::new(
             m.transform_point3(q.corner()),
             m.transform_vector3(q.e1()),
             m.transform_vector3(q.e2()),
@@ -144,7 +144,7 @@ pub fn mirror_only_scene() -> MotionScene {
     use common::scene::{Camera, CameraFrame, FilmSettings, PointLight};
     // Camera at z = 4 looking down -z at a mirror at z = 0; the sphere sits behind the camera
     // (z = 6), out of its view.
-    let mirror = Shape::Quad(Quad::new(
+    let mirror = Shape::Parallelogram(Parallelogram::new(
         Vec3::new(-3.0, -2.0, 0.0),
         6.0 * Vec3::X,
         4.0 * Vec3::Y,

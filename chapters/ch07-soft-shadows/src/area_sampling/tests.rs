@@ -5,15 +5,15 @@ use std::f32::consts::PI;
 
 use approx::assert_relative_eq;
 use ch02_monte_carlo::chi2::chi2_test_density;
-use ch02_monte_carlo::warps::{Domain, WarpPoint, invert_parallelogram, sample_uniform_disk_polar};
+use ch02_monte_carlo::warps::{Domain, WarpPoint, invert_parallelogram, sample_uniform_disc_polar};
 
 use super::*;
 use crate::test_support::{
     CHI2_SAMPLES, PlaneFrame, bounds_in, chi2_on_plane, passes, uniform_points,
 };
 
-fn slanted_quad() -> Quad {
-    Quad::new(
+fn slanted_quad() -> Parallelogram {
+    Parallelogram::new(
         Vec3::new(1.0, 2.0, -1.0),
         Vec3::new(2.0, 0.5, 0.0),
         Vec3::new(0.6, 0.3, 1.5),
@@ -24,8 +24,8 @@ fn slanted_disc() -> Disc {
     Disc::new(Vec3::new(-1.0, 3.0, 2.0), Vec3::new(0.3, -1.0, 0.2), 1.5)
 }
 
-/// The edge coordinates of `p` in the quad, in `f64`.
-fn quad_coordinates(quad: &Quad, p: Vec3) -> Vec2 {
+/// The edge coordinates of `p` in the parallelogram, in `f64`.
+fn quad_coordinates(quad: &Parallelogram, p: Vec3) -> Vec2 {
     let frame = PlaneFrame::new(quad.corner(), quad.normal());
     let q = |v: Vec3| frame.coordinates(v);
     invert_parallelogram(
@@ -75,8 +75,8 @@ fn exercise_parallelogram_light_point_is_uniform() {
 #[test]
 fn exercise_parallelogram_light_point_has_none_without_area() {
     for quad in [
-        Quad::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X),
-        Quad::new(Vec3::ZERO, Vec3::ZERO, Vec3::Z),
+        Parallelogram::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X),
+        Parallelogram::new(Vec3::ZERO, Vec3::ZERO, Vec3::Z),
     ] {
         assert_eq!(sample_parallelogram_light(&quad, Vec2::splat(0.5)), None);
     }
@@ -104,7 +104,7 @@ fn exercise_disc_light_point_follows_the_lectures_parametrisation() {
     assert_relative_eq!(s.p, disc.point_at(0.0, 0.8 * 1.5), epsilon = 1e-5);
     for u in uniform_points(100, 3) {
         let s = sample_disc_light_polar(&disc, u).unwrap();
-        let q = 1.5 * sample_uniform_disk_polar(u);
+        let q = 1.5 * sample_uniform_disc_polar(u);
         assert_relative_eq!(s.p, disc.point_at(q.x, q.y), epsilon = 1e-5);
     }
 }
@@ -274,7 +274,7 @@ fn sampled_points_are_within_their_error_bounds_at_every_scale() {
     for scale in [1e-4f32, 1.0, 1e5] {
         let at = |v: Vec3| v * scale;
         let shapes: [LightShape; 4] = [
-            Quad::new(
+            Parallelogram::new(
                 at(Vec3::new(3.0, 7.0, -2.0)),
                 at(Vec3::new(0.3, 0.1, 0.0)),
                 at(Vec3::new(0.05, 0.2, 0.4)),

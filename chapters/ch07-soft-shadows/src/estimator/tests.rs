@@ -4,7 +4,7 @@
 use std::f32::consts::PI;
 
 use approx::assert_relative_eq;
-use common::geometry::{Disc, Quad, Sphere, Triangle};
+use common::geometry::{Disc, Parallelogram, Sphere, Triangle};
 use rand::SeedableRng;
 use rand_pcg::Pcg32;
 
@@ -34,11 +34,11 @@ fn measure(
 }
 
 /// A square panel of side 1 at height 1 above the origin, facing down, shifted sideways.
-fn ceiling_panel() -> Quad {
-    Quad::new(Vec3::new(-0.2, 1.0, -0.7), Vec3::X, Vec3::Z)
+fn ceiling_panel() -> Parallelogram {
+    Parallelogram::new(Vec3::new(-0.2, 1.0, -0.7), Vec3::X, Vec3::Z)
 }
 
-fn quad_vertices(q: &Quad) -> [Vec3; 4] {
+fn quad_vertices(q: &Parallelogram) -> [Vec3; 4] {
     [
         q.corner(),
         q.corner() + q.e1(),
@@ -392,7 +392,7 @@ fn estimate_all(light: &AreaLight, x: Vec3, n: Vec3, count: usize) -> Vec<Vec3> 
 fn lights_without_area_give_zero() {
     let shapes: [LightShape; 5] = [
         Disc::new(Vec3::Y, -Vec3::Y, 0.0).into(),
-        Quad::new(Vec3::Y, Vec3::X, 2.0 * Vec3::X).into(),
+        Parallelogram::new(Vec3::Y, Vec3::X, 2.0 * Vec3::X).into(),
         Triangle::new(Vec3::Y, Vec3::X, Vec3::X).into(),
         Sphere::new(Vec3::Y, 0.0).into(),
         Sphere::new(Vec3::Y, -1.0).into(),
@@ -409,7 +409,7 @@ fn lights_without_area_give_zero() {
 fn receivers_behind_a_one_sided_light_get_nothing() {
     // Every planar light facing up, the receiver below it facing up.
     let shapes: [LightShape; 3] = [
-        Quad::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).into(),
+        Parallelogram::new(Vec3::new(-0.5, 1.0, -0.5), Vec3::Z, Vec3::X).into(),
         Triangle::new(
             Vec3::new(-0.5, 1.0, 0.0),
             Vec3::new(0.0, 1.0, 0.5),
@@ -431,7 +431,7 @@ fn receivers_behind_a_one_sided_light_get_nothing() {
 
 #[test]
 fn receivers_on_the_light_or_touching_it_stay_finite() {
-    let quad = Quad::new(Vec3::ZERO, Vec3::Z, Vec3::X); // the floor square, facing up
+    let quad = Parallelogram::new(Vec3::ZERO, Vec3::Z, Vec3::X); // the floor square, facing up
     let light = AreaLight::new(quad, Vec3::ONE);
     for x in [
         Vec3::new(0.5, 0.0, 0.5),
@@ -443,7 +443,7 @@ fn receivers_on_the_light_or_touching_it_stay_finite() {
         }
     }
     // A panel standing on the floor, seen from a point of its bottom edge: edge-on, nothing.
-    let standing = AreaLight::new(Quad::new(Vec3::ZERO, Vec3::X, Vec3::Y), Vec3::ONE);
+    let standing = AreaLight::new(Parallelogram::new(Vec3::ZERO, Vec3::X, Vec3::Y), Vec3::ONE);
     for e in estimate_all(&standing, Vec3::new(0.5, 0.0, 0.0), Vec3::Y, 1000) {
         assert_eq!(e, Vec3::ZERO);
     }
@@ -565,7 +565,7 @@ fn the_estimate_does_not_depend_on_the_scenes_scale() {
     let shapes = |s: f32| -> [LightShape; 4] {
         let o = s * Vec3::new(3.0, -2.0, 7.0);
         [
-            Quad::new(o + s * Vec3::new(-0.2, 1.0, -0.7), s * Vec3::X, s * Vec3::Z).into(),
+            Parallelogram::new(o + s * Vec3::new(-0.2, 1.0, -0.7), s * Vec3::X, s * Vec3::Z).into(),
             Triangle::new(
                 o + s * Vec3::new(-0.5, 1.0, 0.0),
                 o + s * Vec3::new(0.2, 0.8, -1.0),
@@ -613,7 +613,7 @@ fn the_estimate_does_not_depend_on_the_scenes_scale() {
 #[test]
 fn grazing_receivers_match_lamberts_formula() {
     // A panel far to the side, its bottom edge just above the receiver's horizon.
-    let quad = Quad::new(Vec3::new(10.0, 0.01, -0.5), Vec3::Z, Vec3::Y);
+    let quad = Parallelogram::new(Vec3::new(10.0, 0.01, -0.5), Vec3::Z, Vec3::Y);
     // Z × Y = -X: it faces the receiver at the origin.
     let light = AreaLight::new(quad, L);
     let reference = polygon_irradiance(Vec3::ZERO, Vec3::Y, &quad_vertices(&quad), L).x as f64;
@@ -625,7 +625,10 @@ fn grazing_receivers_match_lamberts_formula() {
         "grazing",
     );
     // Exactly edge-on to the receiver's plane, and a receiver normal along the panel.
-    let flat = AreaLight::new(Quad::new(Vec3::new(10.0, 0.0, -0.5), Vec3::Z, Vec3::X), L);
+    let flat = AreaLight::new(
+        Parallelogram::new(Vec3::new(10.0, 0.0, -0.5), Vec3::Z, Vec3::X),
+        L,
+    );
     for e in estimate_all(&flat, Vec3::ZERO, Vec3::Y, 1000) {
         assert_eq!(e, Vec3::ZERO);
     }
@@ -646,7 +649,7 @@ fn no_configuration_gives_nan_or_infinity() {
         .map(|c| c * scale);
         for c in centres {
             let shapes: [LightShape; 4] = [
-                Quad::new(c, scale * Vec3::X, scale * Vec3::Z).into(),
+                Parallelogram::new(c, scale * Vec3::X, scale * Vec3::Z).into(),
                 Triangle::new(c, c + scale * Vec3::X, c + scale * Vec3::Z).into(),
                 Disc::new(c, Vec3::new(0.0, -1.0, 0.1), scale).into(),
                 Sphere::new(c, scale).into(),

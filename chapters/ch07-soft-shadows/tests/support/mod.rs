@@ -9,7 +9,7 @@ use ch07_soft_shadows::scenes::{Builder, camera, floor, matte};
 use ch07_soft_shadows::{AreaLights, LightOptions, render_with};
 use common::Ray;
 use common::film::PixelBoxFilter;
-use common::geometry::{Quad, Shape, Sphere};
+use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
 use common::render::{RenderOutput, RenderSettings, SampleCounters};
 use common::sampler::{IndependentSampler, Sampler};
@@ -126,7 +126,9 @@ pub fn scene_with_light(
 
 fn scaled_floor(s: f32) -> Shape {
     match floor(4.0) {
-        Shape::Quad(q) => Shape::Quad(Quad::new(s * q.corner(), s * q.e1(), s * q.e2())),
+        Shape::Parallelogram(q) => {
+            Shape::Parallelogram(Parallelogram::new(s * q.corner(), s * q.e1(), s * q.e2()))
+        }
         other => other,
     }
 }

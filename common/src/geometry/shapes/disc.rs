@@ -138,7 +138,7 @@ impl Disc {
 
     /// The hit with `0 < t < ray.t_max`, seen from either side.
     ///
-    /// Like [`Quad::intersect`](super::Quad::intersect): a robust plane crossing, then in-plane
+    /// Like [`Parallelogram::intersect`](super::Parallelogram::intersect): a robust plane crossing, then in-plane
     /// coordinates `(a, b)` along the tangents, then `p = center + a tangent + b bitangent` with
     /// the error bound `γ(3) (|center| + |a tangent| + |b bitangent|)`.
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {

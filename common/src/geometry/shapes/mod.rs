@@ -6,14 +6,14 @@
 
 mod disc;
 mod mesh;
+mod parallelogram;
 mod plane;
-mod quad;
 mod sphere;
 mod triangle;
 
 pub use disc::Disc;
 pub use mesh::{MeshError, TriangleMesh};
-pub use quad::Quad;
+pub use parallelogram::Parallelogram;
 pub use sphere::Sphere;
 pub use triangle::Triangle;
 
@@ -32,7 +32,7 @@ use crate::geometry::hit::SurfaceHit;
 pub struct Crossing {
     /// The ray parameter of the crossing, `0 < t < ray.t_max`.
     pub t: f32,
-    /// The shape's own coordinates of the point, which its record is built from: a quad's
+    /// The shape's own coordinates of the point, which its record is built from: a parallelogram's
     /// `(u, v)`, a disc's offsets along its tangents, a triangle's barycentrics, the offset
     /// of a sphere's point from its centre.
     pub(crate) coords: [f32; 3],
@@ -44,7 +44,7 @@ pub struct Crossing {
 /// and a `Vec<Shape>` keeps the shapes contiguous in memory.
 ///
 /// The geometric normal each shape reports: outward for spheres, `normalize(e1 × e2)` for
-/// quads, `(p1 - p0) × (p2 - p0)` (normalised) for triangles and the given normal for discs.
+/// parallelograms, `(p1 - p0) × (p2 - p0)` (normalised) for triangles and the given normal for discs.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shape {
     /// A sphere.
@@ -52,7 +52,7 @@ pub enum Shape {
     /// A triangle.
     Triangle(Triangle),
     /// A parallelogram.
-    Quad(Quad),
+    Parallelogram(Parallelogram),
     /// A flat disc.
     Disc(Disc),
 }
@@ -71,7 +71,7 @@ impl Shape {
         match self {
             Shape::Sphere(s) => s.crossing(ray),
             Shape::Triangle(s) => s.checked_crossing(ray),
-            Shape::Quad(s) => s.crossing(ray),
+            Shape::Parallelogram(s) => s.crossing(ray),
             Shape::Disc(s) => s.crossing(ray),
         }
     }
@@ -81,7 +81,7 @@ impl Shape {
         match self {
             Shape::Sphere(s) => s.surface_hit(crossing),
             Shape::Triangle(s) => s.surface_hit(crossing),
-            Shape::Quad(s) => s.surface_hit(crossing),
+            Shape::Parallelogram(s) => s.surface_hit(crossing),
             Shape::Disc(s) => s.surface_hit(crossing),
         }
     }
@@ -91,7 +91,7 @@ impl Shape {
         match self {
             Shape::Sphere(s) => s.bounds(),
             Shape::Triangle(s) => s.bounds(),
-            Shape::Quad(s) => s.bounds(),
+            Shape::Parallelogram(s) => s.bounds(),
             Shape::Disc(s) => s.bounds(),
         }
     }
@@ -101,7 +101,7 @@ impl Shape {
         match self {
             Shape::Sphere(s) => s.area(),
             Shape::Triangle(s) => s.area(),
-            Shape::Quad(s) => s.area(),
+            Shape::Parallelogram(s) => s.area(),
             Shape::Disc(s) => s.area(),
         }
     }
@@ -119,9 +119,9 @@ impl From<Triangle> for Shape {
     }
 }
 
-impl From<Quad> for Shape {
-    fn from(s: Quad) -> Self {
-        Shape::Quad(s)
+impl From<Parallelogram> for Shape {
+    fn from(s: Parallelogram) -> Self {
+        Shape::Parallelogram(s)
     }
 }
 

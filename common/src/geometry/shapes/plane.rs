@@ -1,4 +1,4 @@
-//! The robust ray–plane step shared by quads and discs.
+//! The robust ray–plane step shared by parallelograms and discs.
 
 use glam::Vec3;
 

@@ -6,7 +6,7 @@ use rand_pcg::Pcg32;
 
 use super::support::{random_unit_vector, rng};
 use crate::Ray;
-use crate::geometry::{Disc, Geometry, Quad, Shape, Sphere, SurfaceHit, Triangle};
+use crate::geometry::{Disc, Geometry, Parallelogram, Shape, Sphere, SurfaceHit, Triangle};
 
 /// The nearest hit found by testing every shape in order.
 fn brute_force_nearest(shapes: &[Shape], ray: &Ray) -> Option<SurfaceHit> {
@@ -53,7 +53,7 @@ fn random_scene(rng: &mut Pcg32, count: usize) -> Vec<Shape> {
                     let [a, b] = [0, 1].map(|_| at + size * random_unit_vector(rng));
                     Triangle::new(at, a, b).into()
                 }
-                4 => Quad::new(
+                4 => Parallelogram::new(
                     at,
                     size * random_unit_vector(rng),
                     size * random_unit_vector(rng),
@@ -63,7 +63,7 @@ fn random_scene(rng: &mut Pcg32, count: usize) -> Vec<Shape> {
                     // Axis-aligned, so its box is flat.
                     let normal = random_axis(rng);
                     let e1 = normal.any_orthonormal_vector() * size;
-                    Quad::new(at, e1, normal.cross(e1)).into()
+                    Parallelogram::new(at, e1, normal.cross(e1)).into()
                 }
                 6 => {
                     let normal = random_axis(rng);
@@ -97,7 +97,7 @@ fn concentric_scene(rng: &mut Pcg32, count: usize) -> Vec<Shape> {
                 1 => Disc::new(c, random_unit_vector(rng), size).into(),
                 2 => {
                     let [e1, e2] = [0, 1].map(|_| size * random_unit_vector(rng));
-                    Quad::new(c - 0.5 * (e1 + e2), e1, e2).into()
+                    Parallelogram::new(c - 0.5 * (e1 + e2), e1, e2).into()
                 }
                 _ => {
                     // Vertices c ± v and c + w with |w| <= |v| per axis: the box is c ± |v|.

@@ -10,10 +10,10 @@ use rand::RngExt;
 
 use super::support::{Placement, log_uniform, rng};
 use crate::Ray;
-use crate::geometry::{Geometry, Quad, Shape, Triangle};
+use crate::geometry::{Geometry, Parallelogram, Shape, Triangle};
 
 /// A unit floor (y = 0, facing +y) and wall (x = 0, facing +x) meeting along the z axis, as
-/// two quads or as four triangles.
+/// two parallelograms or as four triangles.
 fn floor_and_wall(placement: &Placement, as_triangles: bool) -> Geometry {
     let at = |x: f32, y: f32, z: f32| placement.point(Vec3::new(x, y, z));
     let floor = [
@@ -37,7 +37,7 @@ fn floor_and_wall(placement: &Placement, as_triangles: bool) -> Geometry {
     } else {
         [floor, wall]
             .iter()
-            .map(|[a, b, _, d]| Quad::new(*a, *b - *a, *d - *a).into())
+            .map(|[a, b, _, d]| Parallelogram::new(*a, *b - *a, *d - *a).into())
             .collect()
     };
     Geometry::new(shapes)

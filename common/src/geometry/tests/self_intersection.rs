@@ -11,7 +11,7 @@ use rand_pcg::Pcg32;
 
 use super::support::{Placement, log_uniform, random_direction_on_side, random_unit_vector, rng};
 use crate::Ray;
-use crate::geometry::{Disc, Quad, Shape, Sphere, SurfaceHit, Triangle};
+use crate::geometry::{Disc, Parallelogram, Shape, Sphere, SurfaceHit, Triangle};
 
 /// One of each shape kind, deliberately not aligned with the axes, plus an axis-aligned floor;
 /// all within distance 2 of `placement.point(Vec3::ZERO)`.
@@ -29,7 +29,7 @@ fn shapes_under_test(placement: &Placement) -> Vec<(&'static str, Shape)> {
         ),
         (
             "quad",
-            Quad::new(
+            Parallelogram::new(
                 at(-0.7, -0.5, 0.1),
                 along(1.3, 0.2, -0.4),
                 along(0.1, 1.1, 0.6),
@@ -38,7 +38,7 @@ fn shapes_under_test(placement: &Placement) -> Vec<(&'static str, Shape)> {
         ),
         (
             "floor quad",
-            Quad::new(
+            Parallelogram::new(
                 at(-0.5, 0.25, -0.5),
                 along(0.0, 0.0, 1.0),
                 along(1.0, 0.0, 0.0),
@@ -80,7 +80,7 @@ fn random_point_on(shape: &Shape, rng: &mut Pcg32) -> Vec3 {
             let [p0, p1, p2] = t.p;
             p0 + b1 * (p1 - p0) + b2 * (p2 - p0)
         }
-        Shape::Quad(q) => q.point_at(rng.random(), rng.random()),
+        Shape::Parallelogram(q) => q.point_at(rng.random(), rng.random()),
         Shape::Disc(d) => {
             let r = d.radii() * rng.random::<f32>().sqrt();
             let phi = rng.random_range(0.0..std::f32::consts::TAU);

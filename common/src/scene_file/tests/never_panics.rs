@@ -12,7 +12,7 @@ use super::super::{parse_description, parse_obj, parse_scene, world_shapes};
 
 const CORNELL: &str = include_str!("../../../tests/scenes/cornell.xml");
 
-/// A small OBJ mesh with normals, negative indices and a quad.
+/// A small OBJ mesh with normals, negative indices and a parallelogram.
 const OBJ: &str =
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\nf -4 -3 -2\n";
 

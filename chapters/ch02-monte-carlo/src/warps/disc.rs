@@ -26,7 +26,7 @@ pub fn azimuth(p: Vec2) -> f32 {
     if phi < 0.0 { phi + TAU } else { phi }
 }
 
-// ANCHOR: disk_naive
+// ANCHOR: disc_naive
 /// The obvious first try, and *not* uniform: radius `r = ξ2`, angle `φ = 2π ξ1`.
 ///
 /// Every ring `[r, r + dr]` gets the same share `dr` of the samples, because `r` is uniform.
@@ -35,26 +35,26 @@ pub fn azimuth(p: Vec2) -> f32 {
 /// `p(x) = p_r(r) p_φ(φ) / r = 1 / (2π r)`, the `1 / r` coming from the polar area element
 /// `r dr dφ`. Samples cluster at the centre, where the density is even infinite.
 ///
-/// As a warp *of that density* it is perfectly correct; [`disk_naive_pdf`] is its density.
-pub fn sample_disk_naive(u: Vec2) -> Vec2 {
+/// As a warp *of that density* it is perfectly correct; [`disc_naive_pdf`] is its density.
+pub fn sample_disc_naive(u: Vec2) -> Vec2 {
     polar_to_cartesian(u.y, TAU * u.x)
 }
-// ANCHOR_END: disk_naive
+// ANCHOR_END: disc_naive
 
-/// The true density of [`sample_disk_naive`] per unit area: `1 / (2π r)` at distance `r` from
+/// The true density of [`sample_disc_naive`] per unit area: `1 / (2π r)` at distance `r` from
 /// the centre (infinite at the centre itself), and 0 outside the unit disc. It integrates to
 /// 1: `∫∫ 1 / (2π r) r dr dφ = 1`.
-pub fn disk_naive_pdf(p: Vec2) -> f32 {
+pub fn disc_naive_pdf(p: Vec2) -> f32 {
     let r = p.length();
     if r > 1.0 { 0.0 } else { 1.0 / (TAU * r) }
 }
 
-/// The `u` that [`sample_disk_naive`] maps to `p`: `(φ / 2π, r)`.
-pub fn invert_disk_naive(p: Vec2) -> Vec2 {
+/// The `u` that [`sample_disc_naive`] maps to `p`: `(φ / 2π, r)`.
+pub fn invert_disc_naive(p: Vec2) -> Vec2 {
     Vec2::new(azimuth(p) / TAU, p.length())
 }
 
-// ANCHOR: disk_polar
+// ANCHOR: disc_polar
 /// A uniform point of the unit disc: the lecture's `Polar2Cartesian(√ξ2, 2π ξ1)`.
 ///
 /// Why the square root: for a uniform point the chance of landing within distance `r` of the
@@ -66,24 +66,24 @@ pub fn invert_disk_naive(p: Vec2) -> Vec2 {
 /// Check: `r` has density `F'(r) = 2r` and `φ` density `1 / 2π`, so `(r, φ)` has `r / π` per
 /// unit of `dr dφ`; the area element is `r dr dφ`, so the density per unit area is `1 / π`, the
 /// same everywhere.
-pub fn sample_uniform_disk_polar(u: Vec2) -> Vec2 {
+pub fn sample_uniform_disc_polar(u: Vec2) -> Vec2 {
     // BEGIN SOLUTION
     let r = u.y.sqrt();
     let phi = TAU * u.x;
     polar_to_cartesian(r, phi)
     // END SOLUTION
 }
-// ANCHOR_END: disk_polar
+// ANCHOR_END: disc_polar
 
 /// The density of a uniform point of the unit disc per unit area, `1 / π` (inside the disc),
-/// for [`sample_uniform_disk_polar`] and [`super::sample_uniform_disk_concentric`].
-pub fn uniform_disk_pdf() -> f32 {
+/// for [`sample_uniform_disc_polar`] and [`super::sample_uniform_disc_concentric`].
+pub fn uniform_disc_pdf() -> f32 {
     FRAC_1_PI
 }
 
-/// The `u` that [`sample_uniform_disk_polar`] maps to `p`: `(φ / 2π, r²)`, undoing the square
+/// The `u` that [`sample_uniform_disc_polar`] maps to `p`: `(φ / 2π, r²)`, undoing the square
 /// root with a square.
-pub fn invert_uniform_disk_polar(p: Vec2) -> Vec2 {
+pub fn invert_uniform_disc_polar(p: Vec2) -> Vec2 {
     Vec2::new(azimuth(p) / TAU, p.length_squared())
 }
 
@@ -98,23 +98,23 @@ mod tests {
     use approx::assert_relative_eq;
 
     #[test]
-    fn exercise_disk_polar_stays_in_the_disc() {
+    fn exercise_disc_polar_stays_in_the_disc() {
         for u in edge_points().into_iter().chain(interior_grid(30)) {
-            let p = sample_uniform_disk_polar(u);
+            let p = sample_uniform_disc_polar(u);
             assert!(p.is_finite() && p.length() <= 1.0 + 1e-6, "u = {u}: {p}");
         }
     }
 
     #[test]
-    fn exercise_disk_polar_follows_the_lectures_parametrisation() {
+    fn exercise_disc_polar_follows_the_lectures_parametrisation() {
         // ξ1 is the angle: a quarter turn points up the y axis. ξ2 is the squared radius.
-        let p = sample_uniform_disk_polar(Vec2::new(0.25, 0.64));
+        let p = sample_uniform_disc_polar(Vec2::new(0.25, 0.64));
         assert_relative_eq!(p, Vec2::new(0.0, 0.8), epsilon = 1e-6);
     }
 
     #[test]
-    fn exercise_disk_polar_is_uniform() {
-        let result = chi2_test(&Warp::DiskPolar, 200_000, 2, (16, 16));
+    fn exercise_disc_polar_is_uniform() {
+        let result = chi2_test(&Warp::DiscPolar, 200_000, 2, (16, 16));
         assert!(
             result.p_value > significance_level(1, 0.01),
             "the polar disc fails the chi-square test: {result:?}"
@@ -122,12 +122,12 @@ mod tests {
     }
 
     #[test]
-    fn exercise_disk_polar_puts_a_quarter_of_the_samples_within_half_the_radius() {
+    fn exercise_disc_polar_puts_a_quarter_of_the_samples_within_half_the_radius() {
         // A quarter of the area lies within r = 1/2; the naive map would put half there.
         let n = 100;
         let inner = midpoint_grid(n)
             .into_iter()
-            .filter(|&u| sample_uniform_disk_polar(u).length() < 0.5)
+            .filter(|&u| sample_uniform_disc_polar(u).length() < 0.5)
             .count();
         assert_relative_eq!(inner as f64 / (n * n) as f64, 0.25, epsilon = 0.005);
     }
@@ -137,13 +137,13 @@ mod tests {
         // Its true density integrates to 1 over the disc. The 1/r singularity is integrable;
         // the midpoint rule never evaluates the centre itself.
         let integral =
-            integrate_over_rectangle(disk_naive_pdf, Vec2::splat(-1.0), Vec2::splat(1.0), 2000);
+            integrate_over_rectangle(disc_naive_pdf, Vec2::splat(-1.0), Vec2::splat(1.0), 2000);
         assert_relative_eq!(integral, 1.0, epsilon = 2e-3);
         // Half of its samples fall within half the radius: that is the clustering.
         let n = 100;
         let inner = midpoint_grid(n)
             .into_iter()
-            .filter(|&u| sample_disk_naive(u).length() < 0.5)
+            .filter(|&u| sample_disc_naive(u).length() < 0.5)
             .count();
         assert_relative_eq!(inner as f64 / (n * n) as f64, 0.5, epsilon = 0.005);
     }
@@ -152,11 +152,11 @@ mod tests {
     fn inverses_round_trip() {
         for u in interior_grid(20) {
             assert_relative_eq!(
-                invert_uniform_disk_polar(sample_uniform_disk_polar(u)),
+                invert_uniform_disc_polar(sample_uniform_disc_polar(u)),
                 u,
                 epsilon = 1e-5
             );
-            assert_relative_eq!(invert_disk_naive(sample_disk_naive(u)), u, epsilon = 1e-5);
+            assert_relative_eq!(invert_disc_naive(sample_disc_naive(u)), u, epsilon = 1e-5);
         }
         for p in [
             Vec2::new(0.3, -0.4),
@@ -164,18 +164,18 @@ mod tests {
             Vec2::new(0.0, 0.7),
         ] {
             assert_relative_eq!(
-                sample_uniform_disk_polar(invert_uniform_disk_polar(p)),
+                sample_uniform_disc_polar(invert_uniform_disc_polar(p)),
                 p,
                 epsilon = 1e-6
             );
-            assert_relative_eq!(sample_disk_naive(invert_disk_naive(p)), p, epsilon = 1e-6);
+            assert_relative_eq!(sample_disc_naive(invert_disc_naive(p)), p, epsilon = 1e-6);
         }
     }
 
     #[test]
     fn naive_edge_values_stay_in_the_disc() {
         for u in edge_points() {
-            let p = sample_disk_naive(u);
+            let p = sample_disc_naive(u);
             assert!(p.is_finite() && p.length() <= 1.0 + 1e-6, "u = {u}: {p}");
         }
     }

@@ -1,4 +1,4 @@
-//! The quad: a parallelogram, the usual shape of walls, floors and area lights.
+//! The parallelogram: a parallelogram, the usual shape of walls, floors and area lights.
 
 use glam::{Vec2, Vec3};
 
@@ -12,10 +12,10 @@ use crate::geometry::hit::SurfaceHit;
 /// The parallelogram `corner + u e1 + v e2` for `u, v` in `[0, 1]`.
 ///
 /// Its normal is `normalize(e1 × e2)` and its surface parameters are `uv = (u, v)`. The fields
-/// are private because the quad caches what its intersection test needs; read them back with
+/// are private because the parallelogram caches what its intersection test needs; read them back with
 /// [`corner`](Self::corner), [`e1`](Self::e1) and [`e2`](Self::e2).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Quad {
+pub struct Parallelogram {
     corner: Vec3,
     e1: Vec3,
     e2: Vec3,
@@ -27,10 +27,10 @@ pub struct Quad {
     dual_v: Vec3,
 }
 
-impl Quad {
+impl Parallelogram {
     /// The parallelogram with one corner at `corner` and edges `e1` and `e2` leaving it.
     ///
-    /// Parallel (or zero) edges give a degenerate quad that is never hit.
+    /// Parallel (or zero) edges give a degenerate parallelogram that is never hit.
     pub fn new(corner: Vec3, e1: Vec3, e2: Vec3) -> Self {
         let n = e1.cross(e2);
         let n_squared = n.length_squared();
@@ -61,7 +61,7 @@ impl Quad {
         self.e2
     }
 
-    /// The unit normal `normalize(e1 × e2)` (zero for a degenerate quad).
+    /// The unit normal `normalize(e1 × e2)` (zero for a degenerate parallelogram).
     pub fn normal(&self) -> Vec3 {
         self.normal
     }
@@ -71,7 +71,7 @@ impl Quad {
         self.corner + u * self.e1 + v * self.e2
     }
 
-    /// A box certainly containing the quad: the four computed corners, grown by their rounding
+    /// A box certainly containing the parallelogram: the four computed corners, grown by their rounding
     /// error.
     pub fn bounds(&self) -> Aabb {
         let corners = [
@@ -145,8 +145,8 @@ mod tests {
     use super::*;
 
     /// The unit square in the floor plane y = 0, facing up (z × x = y).
-    fn floor() -> Quad {
-        Quad::new(Vec3::ZERO, Vec3::Z, Vec3::X)
+    fn floor() -> Parallelogram {
+        Parallelogram::new(Vec3::ZERO, Vec3::Z, Vec3::X)
     }
 
     #[test]
@@ -163,7 +163,7 @@ mod tests {
 
     #[test]
     fn hit_on_a_slanted_parallelogram() {
-        let quad = Quad::new(
+        let quad = Parallelogram::new(
             Vec3::new(1.0, 2.0, 3.0),
             Vec3::new(2.0, 0.0, 1.0),
             Vec3::new(0.5, 1.5, -0.5),
@@ -238,8 +238,8 @@ mod tests {
     fn degenerate_quads_are_never_hit() {
         let ray = Ray::new(Vec3::new(0.5, 2.0, 0.5), -Vec3::Y);
         for quad in [
-            Quad::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X),
-            Quad::new(Vec3::ZERO, Vec3::ZERO, Vec3::Z),
+            Parallelogram::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X),
+            Parallelogram::new(Vec3::ZERO, Vec3::ZERO, Vec3::Z),
         ] {
             assert_eq!(quad.intersect(&ray), None);
             assert_eq!(quad.area(), 0.0);
@@ -248,7 +248,7 @@ mod tests {
 
     #[test]
     fn bounds_contain_all_corners_and_area_is_the_cross_product() {
-        let quad = Quad::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(2.0, 0.0, 1.0), Vec3::Y);
+        let quad = Parallelogram::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(2.0, 0.0, 1.0), Vec3::Y);
         let b = quad.bounds();
         for (u, v) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)] {
             assert!(b.contains(quad.point_at(u, v)));
