@@ -138,6 +138,6 @@ mod tests {
             })
         );
         assert_eq!(scene.surface(2).material, Material::mirror());
-        assert!(scene.has_moving_shapes() && scene.has_area_lights());
+        assert_eq!(scene.moving.len(), 1);
     }
 }

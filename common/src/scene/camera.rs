@@ -109,21 +109,6 @@ impl Camera {
             keyframes: Vec::new(),
         }
     }
-
-    /// The aperture's radius: 0 for a pinhole.
-    pub fn aperture_radius(&self) -> f32 {
-        match self.model {
-            CameraModel::Pinhole => 0.0,
-            CameraModel::ThinLens {
-                aperture_radius, ..
-            } => aperture_radius,
-        }
-    }
-
-    /// Whether the camera moves.
-    pub fn moves(&self) -> bool {
-        !self.keyframes.is_empty()
-    }
 }
 
 #[cfg(test)]

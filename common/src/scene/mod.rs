@@ -106,16 +106,6 @@ impl Scene {
         &self.surfaces[shape as usize]
     }
 
-    /// Whether any shape moves.
-    pub fn has_moving_shapes(&self) -> bool {
-        !self.moving.is_empty()
-    }
-
-    /// Whether any shape glows.
-    pub fn has_area_lights(&self) -> bool {
-        self.surfaces.iter().any(|s| s.emitter.is_some())
-    }
-
     /// The same scene with every lobe's exponent set to `exponent` (smooth materials stay).
     pub fn with_exponent(mut self, exponent: f32) -> Self {
         for surface in &mut self.surfaces {
