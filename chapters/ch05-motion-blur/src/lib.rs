@@ -24,6 +24,7 @@ pub mod figures;
 pub mod motion_bounds;
 pub mod moving;
 pub mod object_space;
+pub mod render_setup;
 pub mod scene_file;
 pub mod scenes;
 pub mod shutter;

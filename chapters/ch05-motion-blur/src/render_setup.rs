@@ -1,0 +1,124 @@
+//! What every `render` from chapter 05 on does before it traces: take the scene (a file,
+//! checked against the chapter's capabilities, or a built-in one), let the chapter adjust it,
+//! make its motion ready, and settle the lens, filter, pixel sampler and render settings from
+//! the file and the command line. A chapter's `main.rs` then holds only its own options and
+//! what its tracer does with them.
+
+use crate::scene_file::{motion_for_render, read_with_camera_side};
+use crate::world::MotionScene;
+use ch03_anti_aliasing::cli::AntiAliasingArgs;
+use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind, ReconstructionFilter};
+use ch04_depth_of_field::Lens;
+use ch04_depth_of_field::cli::LensArgs;
+use common::cli::{CliError, RenderArgs};
+use common::render::RenderSettings;
+use common::scene::{Capabilities, Scene};
+
+/// The options every `render` from chapter 05 on shares: the pixel sampler and filter
+/// (chapter 03), the lens (chapter 04), and the scene, budget and outputs (`common`).
+#[derive(clap::Args, Debug)]
+pub struct CameraArgs {
+    // Doc comments on flattened options would become clap's help text, so these say it here:
+    // the pixel sampler and filter, the lens, and the scene, budget, outputs.
+    #[allow(missing_docs)]
+    #[command(flatten)]
+    pub anti_aliasing: AntiAliasingArgs,
+    #[allow(missing_docs)]
+    #[command(flatten)]
+    pub lens: LensArgs,
+    #[allow(missing_docs)]
+    #[command(flatten)]
+    pub args: RenderArgs,
+}
+
+/// A render's scene in motion and everything about its camera side, settled.
+pub struct RenderSetup {
+    /// The scene, its motion ready.
+    pub world: MotionScene,
+    /// The scene file's path, or the built-in scene's name.
+    pub name: String,
+    /// The lens: the command line's, else the file's.
+    pub lens: Lens,
+    /// The reconstruction filter: the command line's, else the file's.
+    pub filter: ReconstructionFilter,
+    /// The pixel sampler's kind: the command line's, else the closest to the file's.
+    pub sampler_kind: PixelSamplerKind,
+    /// The pixel sampler itself.
+    pub pixel_sampler: PixelSampler,
+    /// Size, budget, threads.
+    pub settings: RenderSettings,
+}
+
+impl CameraArgs {
+    /// The render's setup: the `--scene` file (read with `-D`, checked against `capabilities`,
+    /// its notes printed) or `builtin`'s scene and name (with a pinhole, Mitsuba's defaults for
+    /// the rest and 16 samples per pixel); then `adjust` (the chapter's options on the scene),
+    /// the motion made ready, `adjust_world` (the chapter's options on the motion).
+    pub fn setup(
+        &self,
+        capabilities: &Capabilities,
+        builtin: impl FnOnce() -> anyhow::Result<(Scene, String)>,
+        adjust: impl FnOnce(Scene) -> anyhow::Result<Scene>,
+        adjust_world: impl FnOnce(MotionScene) -> anyhow::Result<MotionScene>,
+    ) -> anyhow::Result<RenderSetup> {
+        let (scene, side, name) = match self.args.scene_file()? {
+            Some(path) => {
+                let (scene, side) = read_with_camera_side(path, &self.args.define, capabilities)?;
+                (scene, Some(side), path.display().to_string())
+            }
+            None => {
+                let (scene, name) = builtin()?;
+                (scene, None, name)
+            }
+        };
+        let world =
+            motion_for_render(adjust(scene)?).map_err(|message| CliError::Unrenderable {
+                file: name.clone().into(),
+                message,
+            })?;
+        let world = adjust_world(world)?;
+        let lens = self
+            .lens
+            .lens_or_pinhole(side.as_ref().map_or(Lens::PINHOLE, |side| side.lens))?;
+        let filter = self
+            .anti_aliasing
+            .filter(side.as_ref().map(|side| side.filter))?;
+        let sampler_kind = self
+            .anti_aliasing
+            .sampler_kind(side.as_ref().map(|side| side.sampler));
+        let film = world.scene.film;
+        let default_spp = side.as_ref().map_or(16, |side| side.spp);
+        let settings = self.args.settings((film.width, film.height), default_spp)?;
+        let pixel_sampler =
+            self.anti_aliasing
+                .pixel_sampler(sampler_kind, &settings.budget, self.args.seed)?;
+        Ok(RenderSetup {
+            world,
+            name,
+            lens,
+            filter,
+            sampler_kind,
+            pixel_sampler,
+            settings,
+        })
+    }
+}
+
+impl RenderSetup {
+    /// What every render's statistics record of its setup; a chapter adds its own entries.
+    pub fn stats(&self, seed: u64) -> serde_json::Value {
+        let shutter = self.world.shutter;
+        serde_json::json!({
+            "scene": self.name,
+            "max_depth": self.world.scene.max_depth,
+            "sampler": self.sampler_kind.name(),
+            "filter": self.filter.kind().name(),
+            "filter_radius": self.filter.half_width(),
+            "aperture_radius": self.lens.aperture_radius,
+            "focus_distance": self.lens.focus_distance,
+            "shutter_open": shutter.open,
+            "shutter_close": shutter.close,
+            "seed": seed,
+        })
+    }
+}
