@@ -151,6 +151,14 @@ pub fn read_scene_file(
     Ok(loaded.scene)
 }
 
+/// Any number, including NaN and infinities, for options whose own rule (finite, positive, in
+/// a range) is checked where they are used, with the reason there.
+pub fn parse_number(text: &str) -> Result<f32, String> {
+    text.trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number"))
+}
+
 /// Prints a note about a render on standard error: what the method leaves out or changes.
 pub fn print_note(note: &str) {
     eprintln!("note: {note}");

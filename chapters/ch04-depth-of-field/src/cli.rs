@@ -5,6 +5,7 @@
 
 use crate::aperture::{Aperture, LensWarp};
 use crate::lens::Lens;
+use common::cli::parse_number;
 
 /// The shapes `--aperture` accepts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -119,13 +120,6 @@ impl LensArgs {
         };
         self.lens(scene_lens)
     }
-}
-
-/// Any number; each option's own rule is checked where the lens is built, with the reason.
-fn parse_number(text: &str) -> Result<f32, String> {
-    text.trim()
-        .parse()
-        .map_err(|_| format!("`{text}` is not a number"))
 }
 
 fn parse_blades(text: &str) -> Result<u32, String> {

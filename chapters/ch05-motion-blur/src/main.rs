@@ -6,7 +6,7 @@ use ch05_motion_blur::render_setup::{CameraArgs, RenderSetup};
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
 use ch05_motion_blur::{CAPABILITIES, Shutter, StratifiedTime, TimeSampling, figures, render_with};
-use common::cli::ChapterBinary;
+use common::cli::{ChapterBinary, parse_number};
 use common::render::Budget;
 use std::process::ExitCode;
 
@@ -35,14 +35,6 @@ struct RenderCommand {
     stretches: u32,
     #[command(flatten)]
     camera: CameraArgs,
-}
-
-/// Any number, including NaN and infinities: each option's own rule is checked where it is
-/// used, with the reason.
-fn parse_number(text: &str) -> Result<f32, String> {
-    text.trim()
-        .parse()
-        .map_err(|_| format!("`{text}` is not a number"))
 }
 
 fn main() -> ExitCode {

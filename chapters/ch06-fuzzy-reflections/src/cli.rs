@@ -2,6 +2,7 @@
 //! exponent, the choices at glass and at the surface, and the depth limit.
 
 use crate::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
+use common::cli::parse_number;
 use common::scene::{Scene, check_exponent};
 
 /// How fuzzy surfaces and glass are traced.
@@ -65,12 +66,4 @@ impl FuzzyArgs {
         stats.insert("exponent".into(), self.exponent.into());
         stats
     }
-}
-
-/// Any number, including NaN and infinities: each option's own rule is checked where it is
-/// used, with the reason.
-pub fn parse_number(text: &str) -> Result<f32, String> {
-    text.trim()
-        .parse()
-        .map_err(|_| format!("`{text}` is not a number"))
 }

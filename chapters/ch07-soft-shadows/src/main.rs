@@ -3,12 +3,12 @@
 
 use ch05_motion_blur::render_setup::{CameraArgs, RenderSetup};
 use ch05_motion_blur::{StratifiedTime, TimeSampling};
-use ch06_fuzzy_reflections::cli::{FuzzyArgs, parse_number};
+use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch07_soft_shadows::cli::LightArgs;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
 use ch07_soft_shadows::{AreaLights, CAPABILITIES};
 use ch07_soft_shadows::{figures, render_with};
-use common::cli::ChapterBinary;
+use common::cli::{ChapterBinary, parse_number};
 use common::render::Budget;
 use std::process::ExitCode;
 
