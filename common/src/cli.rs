@@ -45,6 +45,11 @@ pub struct RenderArgs {
     /// Image height in pixels [default: the scene's].
     #[arg(long, allow_negative_numbers = true, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
     pub height: Option<u32>,
+    /// Longest path in segments, counting the camera ray (Mitsuba's max_depth): 1 shows only
+    /// what the camera sees of the lights, 2 adds direct light, each step more one more bounce
+    /// [default: the scene file's, or the built-in scene's].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub max_depth: Option<u32>,
     /// Seed of every random number of the render.
     #[arg(long, default_value_t = 0, allow_negative_numbers = true)]
     pub seed: u64,
@@ -316,6 +321,14 @@ impl RenderArgs {
         Ok(self.scene.as_deref())
     }
 
+    /// `scene` with the longest path `--max-depth` asks for, if it asks.
+    pub fn with_max_depth(&self, mut scene: Scene) -> Scene {
+        if let Some(max_depth) = self.max_depth {
+            scene.max_depth = max_depth;
+        }
+        scene
+    }
+
     /// Tells the user what [`write_outputs`](Self::write_outputs) wrote: the file, its size
     /// and samples, `detail` (what the chapter's options chose, such as ", glass fresnel";
     /// empty for nothing), the time and the ray rate; and warns when samples were not finite
@@ -482,6 +495,19 @@ mod tests {
         let trailing = format!("{}/img.png/", dir.path().display());
         assert!(check_writable(Path::new(&trailing)).is_err());
     }
+}
+
+/// The [`ChapterBinary`] of the package it is written in: the package's name and description
+/// (from its `Cargo.toml`), and what its `render` renders.
+#[macro_export]
+macro_rules! chapter_binary {
+    ($render:expr) => {
+        $crate::cli::ChapterBinary {
+            name: env!("CARGO_PKG_NAME"),
+            about: env!("CARGO_PKG_DESCRIPTION"),
+            render: $render,
+        }
+    };
 }
 
 /// What a chapter binary's `--help` says: its name, what it is, and what its two commands do.

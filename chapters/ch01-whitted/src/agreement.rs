@@ -9,34 +9,34 @@
 
 use crate::{CAPABILITIES, PixelPattern, render};
 use common::image::Image;
-use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
+use common::metrics::{AGREEMENT_SPP, AgreementScene, AgreementSet, MITSUBA_VARIANT};
 use common::render::RenderSettings;
 use common::scene_file::load_scene_file;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-/// The scenes compared, with what each one checks.
-pub const AGREEMENT_SCENES: &[AgreementScene] = &[
-    AgreementScene {
-        name: "matte-spheres",
-        checks: "camera, one-sided diffuse, point light, shadows",
-        variant: MITSUBA_VARIANT,
-    },
-    AgreementScene {
-        name: "glass-mirror",
-        checks: "perfect mirror, dielectric (Fresnel, refraction), max_depth",
-        variant: MITSUBA_VARIANT,
-    },
-    AgreementScene {
-        name: "meshes",
-        checks: "OBJ meshes: file normals, recomputed smooth normals, face_normals",
-        variant: MITSUBA_VARIANT,
-    },
-];
-
-/// The chapter's scene directory.
-pub fn scenes_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
-}
+/// The chapter's scene files compared with Mitsuba 3, with what each one checks.
+pub const AGREEMENT: AgreementSet = AgreementSet {
+    label: "ours (Whitted)",
+    scenes_dir: concat!(env!("CARGO_MANIFEST_DIR"), "/scenes"),
+    scenes: &[
+        AgreementScene {
+            name: "matte-spheres",
+            checks: "camera, one-sided diffuse, point light, shadows",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "glass-mirror",
+            checks: "perfect mirror, dielectric (Fresnel, refraction), max_depth",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "meshes",
+            checks: "OBJ meshes: file normals, recomputed smooth normals, face_normals",
+            variant: MITSUBA_VARIANT,
+        },
+    ],
+    render: render_scene_file,
+};
 
 /// Our render of a scene file at [`AGREEMENT_SPP`] samples per pixel, at the size the file
 /// asks for. Mitsuba spreads its samples at random over each pixel; a regular 8x8 grid

@@ -1,17 +1,15 @@
 //! The chapter's figures: what recursion adds, what one ray per pixel misses, Fresnel's
 //! curves, how the ray tree grows, and error against time.
 
-use crate::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
+use crate::agreement::AGREEMENT;
 use crate::optics::fresnel_dielectric;
 use crate::pixel::{CentreSampler, GridSampler};
 use crate::scenes::Builtin;
 use crate::{PixelPattern, render, render_with};
-use anyhow::Context;
-use common::cli::prepare_output_dir;
+use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::image::Image;
 use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_agreement_figures,
-    write_convergence_csv,
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
 };
 use common::output::figures::{
     Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
@@ -22,54 +20,47 @@ use std::path::Path;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
 struct Quality {
-    width: u32,
-    height: u32,
+    /// One ray per pixel for the gallery; the reference of the error-against-time runs has
+    /// 16 times the largest budget.
+    render: RenderQuality,
     /// Supersampling grid side of the reference images.
     reference_grid: u64,
-    /// Sample counts of the error-against-time runs.
-    budgets: &'static [u64],
 }
 
 impl Quality {
-    fn new(quick: bool) -> Self {
-        if quick {
-            Quality {
-                width: 96,
-                height: 72,
-                reference_grid: 12,
-                budgets: &[1, 4, 16],
-            }
-        } else {
-            Quality {
-                width: 480,
-                height: 360,
-                reference_grid: 16,
-                budgets: &[1, 4, 16, 64],
-            }
-        }
-    }
-
-    fn settings(&self, spp: u64) -> RenderSettings {
-        RenderSettings {
-            progress: true,
-            ..RenderSettings::new(self.width, self.height, spp)
+    fn at(level: Level) -> Self {
+        let budgets: &'static [u64] = level.pick(&[1, 4, 16], &[1, 4, 16, 64]);
+        let render = RenderQuality {
+            width: level.pick(96, 480),
+            height: level.pick(72, 360),
+            spp: 1,
+            budgets,
+            reference_spp: 16 * budgets.last().copied().unwrap_or(1),
+        };
+        Quality {
+            render,
+            reference_grid: level.pick(12, 16),
         }
     }
 }
 
 /// Writes every figure of the chapter into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    prepare_output_dir(out)?;
-    let quality = Quality::new(quick);
-    recursion_depth(out, &quality).context("the recursion-depth figure")?;
-    aliasing(out, &quality).context("the aliasing figure")?;
-    pixel_samples(out).context("the pixel-sample plot")?;
-    fresnel_curves(out).context("the Fresnel plot")?;
-    ray_tree(out, quick).context("the ray-tree plot")?;
-    convergence(out, &quality).context("the error-against-time figures")?;
-    mitsuba_agreement(out).context("the comparison with Mitsuba 3")?;
-    eprintln!("ch01 figures written to {}", out.display());
-    Ok(())
+    let mut figures = FigureSet::start("ch01", out, quick)?;
+    let level = figures.level();
+    let quality = Quality::at(level);
+    figures.make("the recursion-depth figure", |out| {
+        recursion_depth(out, &quality)
+    })?;
+    figures.make("the aliasing figure", |out| aliasing(out, &quality))?;
+    figures.make("the pixel-sample plot", pixel_samples)?;
+    figures.make("the Fresnel plot", fresnel_curves)?;
+    figures.make("the ray-tree plot", |out| ray_tree(out, level))?;
+    figures.make("the error-against-time figures", |out| {
+        convergence(out, &quality)
+    })?;
+    figures.agreement(&AGREEMENT)?;
+    figures.finish()
 }
 
 fn centre_render(builtin: Builtin, max_depth: u32, settings: &RenderSettings) -> Image {
@@ -80,7 +71,7 @@ fn centre_render(builtin: Builtin, max_depth: u32, settings: &RenderSettings) ->
 /// The same scene at recursion depths 1, 2, 5 and 10: each level adds one more generation of
 /// reflected and refracted rays.
 fn recursion_depth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let settings = quality.settings(1);
+    let settings = quality.render.settings(1);
     let cells: Vec<(String, Image)> = [1u32, 2, 5, 10]
         .into_iter()
         .map(|depth| {
@@ -103,7 +94,7 @@ fn recursion_depth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 /// One ray through each pixel centre against supersampling, enlarged around edges.
 fn aliasing(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
-    let full = render(&scene, &quality.settings(1), PixelPattern::Centre, 0)
+    let full = render(&scene, &quality.render.settings(1), PixelPattern::Centre, 0)
         .expect("centre sampling always renders");
     comparison_grid(
         &out.join("render.png"),
@@ -114,10 +105,10 @@ fn aliasing(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     // A window on the glass sphere's silhouette, the checkerboard seen through it and the
     // shadow edges, rendered alone so that a dense reference stays cheap.
     let window = Window {
-        x: quality.width * 5 / 8,
-        y: quality.height * 3 / 8,
-        width: quality.width / 4,
-        height: quality.height / 4,
+        x: quality.render.width * 5 / 8,
+        y: quality.render.height * 3 / 8,
+        width: quality.render.width / 4,
+        height: quality.render.height / 4,
     };
     let reference_spp = quality.reference_grid * quality.reference_grid;
     let cells: Vec<(String, Image)> = [
@@ -158,7 +149,11 @@ fn render_window(
     sampler: &GridSampler,
     spp: u64,
 ) -> Image {
-    let camera = crate::camera::PinholeCamera::of(&scene.camera, quality.width, quality.height);
+    let camera = crate::camera::PinholeCamera::of(
+        &scene.camera,
+        quality.render.width,
+        quality.render.height,
+    );
     let offset = Vec2::new(window.x as f32, window.y as f32);
     let settings = RenderSettings {
         progress: true,
@@ -260,8 +255,8 @@ fn fresnel_curves(out: &Path) -> anyhow::Result<()> {
 }
 
 /// Rays per pixel against the depth limit: with glass every hit spawns two rays.
-fn ray_tree(out: &Path, quick: bool) -> anyhow::Result<()> {
-    let (width, height) = if quick { (32, 24) } else { (128, 96) };
+fn ray_tree(out: &Path, level: Level) -> anyhow::Result<()> {
+    let (width, height) = level.pick((32, 24), (128, 96));
     let settings = RenderSettings::new(width, height, 1);
     let mut series = Vec::new();
     for builtin in Builtin::ALL {
@@ -300,11 +295,11 @@ fn ray_tree(out: &Path, quick: bool) -> anyhow::Result<()> {
 /// Error against time: more rays at the pixel centre buy nothing; a grid converges.
 fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
-    let (width, height) = (quality.width / 3, quality.height / 3);
+    let (width, height) = (quality.render.width / 3, quality.render.height / 3);
     let settings = |spp| RenderSettings::new(width, height, spp);
     // Four times as many grid cells per side as the densest technique: its own error is
     // far below the differences being measured.
-    let reference_spp = 16 * quality.budgets.last().copied().unwrap_or(1);
+    let reference_spp = quality.render.reference_spp;
     let reference = render(&scene, &settings(reference_spp), PixelPattern::Grid, 0)
         .expect("a square")
         .image;
@@ -326,7 +321,7 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
             }),
         },
     ];
-    let records = run_convergence(&techniques, quality.budgets, &reference);
+    let records = run_convergence(&techniques, quality.render.budgets, &reference);
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
     plot_error_vs_time(
         &out.join("convergence.png"),
@@ -339,18 +334,4 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &records,
     )?;
     Ok(())
-}
-
-/// Ours next to Mitsuba 3 on the scenes where Whitted's method is exact, with the numbers.
-/// The renders are small (128 x 96) in every quality: they are compared with stored Mitsuba
-/// renders of that size.
-fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
-    write_agreement_figures(
-        out,
-        "ours (Whitted)",
-        &scenes_dir(),
-        AGREEMENT_SCENES,
-        &render_scene_file,
-    )
-    .map_err(anyhow::Error::msg)
 }

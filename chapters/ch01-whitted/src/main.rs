@@ -2,7 +2,7 @@
 
 use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch01_whitted::{CAPABILITIES, PixelPattern, figures, render};
-use common::cli::{ChapterBinary, RenderArgs, read_scene_file};
+use common::cli::{RenderArgs, read_scene_file};
 use common::render::Budget;
 use std::process::ExitCode;
 
@@ -11,11 +11,6 @@ struct RenderCommand {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Spheres, conflicts_with = "scene")]
     builtin: Builtin,
-    /// Longest path in segments, counting the camera ray (Mitsuba's max_depth): 1 shows only
-    /// the background, 2 adds direct light, each step more one more mirror or glass bounce
-    /// [default: the scene file's, or 12].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    max_depth: Option<u32>,
     /// Where the samples of a pixel go. Whitted's tracer is deterministic: several samples at
     /// the centre give the same image as one; `grid` supersamples (with a square --spp).
     /// [default: centre; for a scene file asking for a square number of samples, grid]
@@ -26,16 +21,12 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = ChapterBinary {
-        name: "ch01-whitted",
-        about: env!("CARGO_PKG_DESCRIPTION"),
-        render: "Render a scene to an image.",
-    };
+    let binary = common::chapter_binary!("Render a scene to an image.");
     binary.run(run_render, figures::write_all)
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let (mut scene, default_spp, scene_name) = match command.args.scene_file()? {
+    let (scene, default_spp, scene_name) = match command.args.scene_file()? {
         Some(path) => {
             let scene = read_scene_file(path, &command.args.define, &CAPABILITIES)?;
             let spp = u64::from(scene.sampler.sample_count.max(1));
@@ -47,9 +38,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             command.builtin.name().to_string(),
         ),
     };
-    if let Some(max_depth) = command.max_depth {
-        scene.max_depth = max_depth;
-    }
+    let scene = command.args.with_max_depth(scene);
     let settings = command
         .args
         .settings((scene.film.width, scene.film.height), default_spp)?;

@@ -10,8 +10,7 @@ use crate::rng::{
     randu_plane_index, serial_chi2_3d, uniformity_chi2,
 };
 use crate::warps::{Domain, Warp, WarpPoint};
-use anyhow::Context;
-use common::cli::prepare_output_dir;
+use common::figure_set::{FigureSet, Level};
 use common::output::figures::{histogram_vs_pdf, scatter_plot};
 use common::output::write_text;
 use common::sampler::unit_f32;
@@ -31,40 +30,35 @@ struct Quality {
 }
 
 impl Quality {
-    fn new(quick: bool) -> Self {
-        if quick {
-            Quality {
-                scatter_points: 1_000,
-                histogram_points: 50_000,
-                chi2_samples: 100_000,
-                repetitions: 20,
-                generator_numbers: 1_000_000,
-            }
-        } else {
-            Quality {
-                scatter_points: 3_000,
-                histogram_points: 1_000_000,
-                chi2_samples: 1_000_000,
-                repetitions: 300,
-                generator_numbers: 50_000_000,
-            }
+    fn at(level: Level) -> Self {
+        Quality {
+            scatter_points: level.pick(1_000, 3_000),
+            histogram_points: level.pick(50_000, 1_000_000),
+            chi2_samples: level.pick(100_000, 1_000_000),
+            repetitions: level.pick(20, 300),
+            generator_numbers: level.pick(1_000_000, 50_000_000),
         }
     }
 }
 
 /// Writes every figure of the chapter into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    prepare_output_dir(out)?;
-    let quality = Quality::new(quick);
-    warp_scatter_plots(out, &quality).context("the warp scatter plots")?;
-    stratification(out).context("the stratified sample sets")?;
-    histograms(out, &quality).context("the histogram-against-density maps")?;
-    randu_planes(out, &quality).context("the RANDU plot")?;
-    generators(out, &quality).context("the generator table")?;
-    chi2_table(out, &quality).context("the chi-square table")?;
-    estimators(out, &quality).context("the error-against-n and -time figures")?;
-    eprintln!("ch02 figures written to {}", out.display());
-    Ok(())
+    let mut figures = FigureSet::start("ch02", out, quick)?;
+    let quality = Quality::at(figures.level());
+    figures.make("the warp scatter plots", |out| {
+        warp_scatter_plots(out, &quality)
+    })?;
+    figures.make("the stratified sample sets", stratification)?;
+    figures.make("the histogram-against-density maps", |out| {
+        histograms(out, &quality)
+    })?;
+    figures.make("the RANDU plot", |out| randu_planes(out, &quality))?;
+    figures.make("the generator table", |out| generators(out, &quality))?;
+    figures.make("the chi-square table", |out| chi2_table(out, &quality))?;
+    figures.make("the error-against-n and -time figures", |out| {
+        estimators(out, &quality)
+    })?;
+    figures.finish()
 }
 
 /// `n` uniform points of the unit square from a fixed seed.

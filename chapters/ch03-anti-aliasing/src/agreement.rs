@@ -9,44 +9,33 @@
 //! `common::metrics::MITSUBA_JIT_VARIANT`).
 
 use crate::render_with;
-use crate::scene_file::{filter_of, sampler_of};
+use crate::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_JIT_VARIANT};
-use common::render::{Budget, RenderSettings};
-use common::scene_file::load_scene_file;
-use std::path::{Path, PathBuf};
+use common::metrics::{AgreementScene, AgreementSet, MITSUBA_JIT_VARIANT};
+use std::path::Path;
 
-/// The scenes compared, with what each one checks.
-pub const AGREEMENT_SCENES: &[AgreementScene] = &[
-    AgreementScene {
-        name: "tent-spheres",
-        checks: "stratified pixel samples, tent filter of radius 1.5",
-        variant: MITSUBA_JIT_VARIANT,
-    },
-    AgreementScene {
-        name: "gaussian-bars",
-        checks: "independent pixel samples, Gaussian filter of standard deviation 1/4",
-        variant: MITSUBA_JIT_VARIANT,
-    },
-];
+/// The chapter's scene files compared with Mitsuba 3, with what each one checks.
+pub const AGREEMENT: AgreementSet = AgreementSet {
+    label: "ours",
+    scenes_dir: concat!(env!("CARGO_MANIFEST_DIR"), "/scenes"),
+    scenes: &[
+        AgreementScene {
+            name: "tent-spheres",
+            checks: "stratified pixel samples, tent filter of radius 1.5",
+            variant: MITSUBA_JIT_VARIANT,
+        },
+        AgreementScene {
+            name: "gaussian-bars",
+            checks: "independent pixel samples, Gaussian filter of standard deviation 1/4",
+            variant: MITSUBA_JIT_VARIANT,
+        },
+    ],
+    render: render_scene_file,
+};
 
-/// The chapter's scene directory.
-pub fn scenes_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
-}
-
-/// Our render of a scene file at [`AGREEMENT_SPP`] samples per pixel, with the pixel sampler
+/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, with the pixel sampler
 /// and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let scene = loaded.scene;
-    let in_file = |e: String| format!("{}: {e}", path.display());
-    crate::CAPABILITIES.check(&scene).map_err(in_file)?;
-    let filter = filter_of(scene.film.filter).map_err(in_file)?;
-    let (kind, _) = sampler_of(&scene.sampler.type_name);
-    let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
-    let sampler = crate::cli::AntiAliasingArgs::default()
-        .pixel_sampler(kind, &Budget::Samples(AGREEMENT_SPP), 0)
-        .map_err(|e| e.to_string())?;
-    Ok(render_with(&scene, &settings, &sampler, &filter).image)
+    let (scene, film, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    Ok(render_with(&scene, &settings, &sampler, &film.filter).image)
 }

@@ -6,7 +6,31 @@
 
 use crate::filters::{FilterKind, ReconstructionFilter, check_radius};
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
-use common::render::Budget;
+use crate::scene_file::FilmSide;
+use common::cli::RenderArgs;
+use common::render::{Budget, RenderSettings};
+
+/// The film side of a render, settled from the command line and the scene file.
+#[derive(Clone, Debug)]
+pub struct FilmSetup {
+    /// The reconstruction filter.
+    pub filter: ReconstructionFilter,
+    /// The pixel sampler's kind.
+    pub sampler_kind: PixelSamplerKind,
+    /// The pixel sampler itself.
+    pub pixel_sampler: PixelSampler,
+    /// Size, budget, threads.
+    pub settings: RenderSettings,
+}
+
+impl FilmSetup {
+    /// Adds the film side to a render's statistics (a JSON object).
+    pub fn record_stats(&self, stats: &mut serde_json::Value) {
+        stats["sampler"] = self.sampler_kind.name().into();
+        stats["filter"] = self.filter.kind().name().into();
+        stats["filter_radius"] = self.filter.half_width().into();
+    }
+}
 
 /// `--sampler`, `--filter` and `--filter-radius`.
 #[derive(clap::Args, Clone, Debug, Default)]
@@ -25,6 +49,27 @@ pub struct AntiAliasingArgs {
 }
 
 impl AntiAliasingArgs {
+    /// The film side of a render of `size`: the filter and the pixel sampler (the flags, else
+    /// the scene file's `film`, else the box and stratified), and the render's settings from
+    /// `args` (the sample count: the flag, else the file's, else 16).
+    pub fn film_setup(
+        &self,
+        film: Option<&FilmSide>,
+        args: &RenderArgs,
+        size: (u32, u32),
+    ) -> anyhow::Result<FilmSetup> {
+        let filter = self.filter(film.map(|film| film.filter))?;
+        let sampler_kind = self.sampler_kind(film.map(|film| film.sampler));
+        let settings = args.settings(size, film.map_or(16, |film| film.spp))?;
+        let pixel_sampler = self.pixel_sampler(sampler_kind, &settings.budget, args.seed)?;
+        Ok(FilmSetup {
+            filter,
+            sampler_kind,
+            pixel_sampler,
+            settings,
+        })
+    }
+
     /// The sampler asked for: the flag, else the scene file's, else stratified.
     pub fn sampler_kind(&self, from_file: Option<PixelSamplerKind>) -> PixelSamplerKind {
         self.sampler

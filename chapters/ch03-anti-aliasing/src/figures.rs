@@ -6,8 +6,7 @@ use crate::coverage::{HalfPlane, coverage_mse};
 use crate::filters::{FilterKind, ReconstructionFilter};
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
 use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH};
-use anyhow::Context;
-use common::cli::prepare_output_dir;
+use common::figure_set::{FigureSet, Level};
 use common::film::Filter;
 use common::image::Image;
 use common::metrics::{
@@ -39,44 +38,33 @@ struct Quality {
 }
 
 impl Quality {
-    fn new(quick: bool) -> Self {
-        if quick {
-            Quality {
-                width: 80,
-                height: 60,
-                spp_steps: &[1, 4, 16],
-                reference_spp: 256,
-                convergence_size: (32, 24),
-                budgets: &[1, 4, 16],
-                repetitions: 200,
-            }
-        } else {
-            Quality {
-                width: 320,
-                height: 240,
-                spp_steps: &[1, 4, 16, 64],
-                reference_spp: 1024,
-                convergence_size: (80, 60),
-                budgets: &[1, 4, 16, 64, 256],
-                repetitions: 2000,
-            }
+    fn at(level: Level) -> Self {
+        Quality {
+            width: level.pick(80, 320),
+            height: level.pick(60, 240),
+            spp_steps: level.pick(&[1, 4, 16], &[1, 4, 16, 64]),
+            reference_spp: level.pick(256, 1024),
+            convergence_size: level.pick((32, 24), (80, 60)),
+            budgets: level.pick(&[1, 4, 16], &[1, 4, 16, 64, 256]),
+            repetitions: level.pick(200, 2000),
         }
     }
 }
 
 /// Writes every figure of the chapter into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    prepare_output_dir(out)?;
-    let quality = Quality::new(quick);
-    samplers(out, &quality).context("the sampler comparison")?;
-    filters(out, &quality).context("the filter comparison")?;
-    pixel_samples(out).context("the sample-position plots")?;
-    filter_profiles(out).context("the filter profiles")?;
-    edge_pixel(out, &quality).context("the edge-pixel error plot")?;
-    convergence(out, &quality).context("the error-against-time figures")?;
-    mitsuba_agreement(out).context("the comparison with Mitsuba 3")?;
-    eprintln!("ch03 figures written to {}", out.display());
-    Ok(())
+    let mut figures = FigureSet::start("ch03", out, quick)?;
+    let quality = Quality::at(figures.level());
+    figures.make("the sampler comparison", |out| samplers(out, &quality))?;
+    figures.make("the filter comparison", |out| filters(out, &quality))?;
+    figures.make("the sample-position plots", pixel_samples)?;
+    figures.make("the filter profiles", filter_profiles)?;
+    figures.make("the edge-pixel error plot", |out| edge_pixel(out, &quality))?;
+    figures.make("the error-against-time figures", |out| {
+        convergence(out, &quality)
+    })?;
+    figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.finish()
 }
 
 /// A rectangle of the image, in pixels.
@@ -333,17 +321,4 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &records,
     )?;
     Ok(())
-}
-
-/// Ours next to Mitsuba 3 on the chapter's scene files, with the numbers. The renders are at
-/// the files' own small sizes in every quality: they are compared with stored Mitsuba renders.
-fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
-    common::metrics::write_agreement_figures(
-        out,
-        "ours",
-        &crate::agreement::scenes_dir(),
-        crate::agreement::AGREEMENT_SCENES,
-        &crate::agreement::render_scene_file,
-    )
-    .map_err(anyhow::Error::msg)
 }

@@ -5,9 +5,73 @@
 //! sampler closest to the file's.
 
 use crate::filters::{FilterKind, ReconstructionFilter};
-use crate::pixel_samplers::PixelSamplerKind;
+use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
+use common::cli::{CliError, print_note, read_scene_file};
+use common::metrics::AGREEMENT_SPP;
+use common::render::RenderSettings;
+use common::scene::{Capabilities, FilmFilter, Scene};
+use common::scene_file::load_scene_file;
+use std::path::Path;
 
-use common::scene::FilmFilter;
+/// What this chapter reads from a scene file's film and sampler.
+#[derive(Clone, Debug)]
+pub struct FilmSide {
+    /// The film's reconstruction filter.
+    pub filter: ReconstructionFilter,
+    /// The pixel sampler closest to the file's `<sampler>` type.
+    pub sampler: PixelSamplerKind,
+    /// Samples per pixel the file asks for.
+    pub spp: u64,
+    /// What the choices change, to print.
+    pub notes: Vec<String>,
+}
+
+/// The film side of `scene`, or why its filter makes no sense.
+pub fn film_side(scene: &Scene) -> Result<FilmSide, String> {
+    let filter = filter_of(scene.film.filter)?;
+    let (sampler, note) = sampler_of(&scene.sampler.type_name);
+    Ok(FilmSide {
+        filter,
+        sampler,
+        spp: u64::from(scene.sampler.sample_count.max(1)),
+        notes: note.into_iter().collect(),
+    })
+}
+
+/// A scene file for a chapter's `render`: read with the `-D` overrides and checked against
+/// the chapter's `capabilities` ([`read_scene_file`]), its film side read; every note printed.
+pub fn read_with_film_side(
+    path: &Path,
+    defines: &[(String, String)],
+    capabilities: &Capabilities,
+) -> Result<(Scene, FilmSide), CliError> {
+    let scene = read_scene_file(path, defines, capabilities)?;
+    let film = film_side(&scene).map_err(|message| CliError::Unrenderable {
+        file: path.to_path_buf(),
+        message,
+    })?;
+    for note in &film.notes {
+        print_note(note);
+    }
+    Ok((scene, film))
+}
+
+/// A scene file as a chapter checks it against Mitsuba 3: loaded, checked against the
+/// chapter's `capabilities`, with its film side, the settings of a render at
+/// [`AGREEMENT_SPP`] samples per pixel at the file's size, and the file's pixel sampler for
+/// that count. Errors name the file.
+pub fn for_agreement(
+    path: &Path,
+    capabilities: &Capabilities,
+) -> Result<(Scene, FilmSide, RenderSettings, PixelSampler), String> {
+    let in_file = |e: String| format!("{}: {e}", path.display());
+    let scene = load_scene_file(path, &[]).map_err(|e| e.to_string())?.scene;
+    capabilities.check(&scene).map_err(in_file)?;
+    let film = film_side(&scene).map_err(in_file)?;
+    let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
+    let sampler = PixelSampler::new(film.sampler, AGREEMENT_SPP, 0).map_err(|e| e.to_string())?;
+    Ok((scene, film, settings, sampler))
+}
 
 /// The chapter's pixel sampler for a Mitsuba `<sampler>` type, and a note when it is only the
 /// closest one: Mitsuba's `independent` is our random sampler and its `stratified` our
@@ -47,9 +111,7 @@ pub fn filter_of(filter: FilmFilter) -> Result<ReconstructionFilter, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use common::scene::Scene;
     use common::scene_file::parse_scene;
-    use std::path::Path;
 
     /// A one-sphere scene whose film has the filter `rfilter` (XML) or none (Mitsuba's default).
     fn scene_with(rfilter: &str) -> Scene {

@@ -2,10 +2,9 @@
 //! `ch03_anti_aliasing::agreement`): our render at the same sample count must be as unbiased as
 //! Mitsuba's own second render against Mitsuba's reference, and no noisier.
 
-use ch03_anti_aliasing::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
-use common::metrics::check_stored_agreement;
+use ch03_anti_aliasing::agreement::AGREEMENT;
 
 #[test]
 fn renders_agree_with_the_stored_mitsuba_renders() {
-    check_stored_agreement(&scenes_dir(), AGREEMENT_SCENES, &render_scene_file).unwrap();
+    AGREEMENT.check_stored().unwrap();
 }

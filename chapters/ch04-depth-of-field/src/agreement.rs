@@ -6,39 +6,27 @@
 
 use crate::render_with;
 use crate::scene_file::lens_of;
-use ch03_anti_aliasing::scene_file::{filter_of, sampler_of};
+use ch03_anti_aliasing::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AGREEMENT_SPP, AgreementScene, MITSUBA_VARIANT};
-use common::render::{Budget, RenderSettings};
-use common::scene_file::load_scene_file;
-use std::path::{Path, PathBuf};
+use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
+use std::path::Path;
 
-/// The scenes compared, with what each one checks.
-pub const AGREEMENT_SCENES: &[AgreementScene] = &[AgreementScene {
-    name: "thinlens-spheres",
-    checks: "thin lens: aperture radius, focus plane, concentric disc samples",
-    variant: MITSUBA_VARIANT,
-}];
+/// The chapter's scene files compared with Mitsuba 3, with what each one checks.
+pub const AGREEMENT: AgreementSet = AgreementSet {
+    label: "ours (thin lens)",
+    scenes_dir: concat!(env!("CARGO_MANIFEST_DIR"), "/scenes"),
+    scenes: &[AgreementScene {
+        name: "thinlens-spheres",
+        checks: "thin lens: aperture radius, focus plane, concentric disc samples",
+        variant: MITSUBA_VARIANT,
+    }],
+    render: render_scene_file,
+};
 
-/// The chapter's scene directory.
-pub fn scenes_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
-}
-
-/// Our render of a scene file at [`AGREEMENT_SPP`] samples per pixel, through the file's
+/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, through the file's
 /// lens, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let scene = loaded.scene;
-    let in_file = |e: String| format!("{}: {e}", path.display());
-    crate::CAPABILITIES.check(&scene).map_err(in_file)?;
-    let lens = lens_of(&scene.camera).map_err(in_file)?;
-    let filter = filter_of(scene.film.filter).map_err(in_file)?;
-    let (sampler_kind, _) = sampler_of(&scene.sampler.type_name);
-    let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
-    let sampler = ch03_anti_aliasing::cli::AntiAliasingArgs::default()
-        .pixel_sampler(sampler_kind, &Budget::Samples(AGREEMENT_SPP), 0)
-        .map_err(|e| e.to_string())?;
-    let rendered = render_with(&scene, &lens, &settings, &sampler, &filter);
-    Ok(rendered.image)
+    let (scene, film, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    let lens = lens_of(&scene.camera).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(render_with(&scene, &lens, &settings, &sampler, &film.filter).image)
 }

@@ -10,10 +10,9 @@ use crate::lens::Lens;
 use crate::render_with;
 use crate::scenes::{BOKEH_SPHERE_DEPTHS, BOKEH_WALL_DEPTH, Builtin, DEFAULT_DEPTH};
 use crate::thin_lens::ThinLensCamera;
-use anyhow::Context;
 use ch01_whitted::camera::PinholeCamera;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
-use common::cli::prepare_output_dir;
+use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::geometry::Sphere;
 use common::image::Image;
 use common::metrics::{
@@ -39,14 +38,7 @@ pub const APERTURE_SERIES: [(f32, &str); 4] = [
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
 struct Quality {
-    width: u32,
-    height: u32,
-    /// Samples per pixel of the gallery images.
-    spp: u64,
-    /// Sample counts of the error-against-time runs.
-    budgets: &'static [u64],
-    /// Samples per pixel of the converged reference they are measured against.
-    reference_spp: u64,
+    render: RenderQuality,
     /// Samples per pixel of the enlarged details.
     detail_spp: u64,
     /// Points in each lens scatter plot.
@@ -54,54 +46,45 @@ struct Quality {
 }
 
 impl Quality {
-    fn new(quick: bool) -> Self {
-        if quick {
-            Quality {
-                width: 120,
-                height: 80,
-                spp: 16,
-                budgets: &[1, 4, 16],
-                reference_spp: 256,
-                detail_spp: 64,
-                lens_points: 512,
-            }
-        } else {
-            Quality {
-                width: 300,
-                height: 200,
-                spp: 32,
-                budgets: &[1, 4, 16, 64, 256],
-                reference_spp: 2048,
-                detail_spp: 512,
-                lens_points: 2048,
-            }
-        }
-    }
-
-    fn settings(&self, spp: u64) -> RenderSettings {
-        RenderSettings {
-            progress: true,
-            ..RenderSettings::new(self.width, self.height, spp)
+    fn at(level: Level) -> Self {
+        let render = RenderQuality {
+            width: level.pick(120, 300),
+            height: level.pick(80, 200),
+            spp: level.pick(16, 32),
+            budgets: level.pick(&[1, 4, 16], &[1, 4, 16, 64, 256]),
+            reference_spp: level.pick(256, 2048),
+        };
+        Quality {
+            render,
+            detail_spp: level.pick(64, 512),
+            lens_points: level.pick(512, 2048),
         }
     }
 }
 
 /// Writes every figure of the chapter into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    prepare_output_dir(out)?;
-    let quality = Quality::new(quick);
+    let mut figures = FigureSet::start("ch04", out, quick)?;
+    let quality = Quality::at(figures.level());
     let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
     let gallery = Gallery::new(&scene, &quality);
-    aperture_series(out, &gallery).context("the aperture series")?;
-    focus_depths(out, &gallery).context("the focus figure")?;
-    naive_against_correct(out, &quality, &gallery).context("the naive-warp figure")?;
-    bokeh_shapes(out, &quality, &gallery).context("the bokeh-shape figure")?;
-    lens_samples(out, &quality).context("the lens-sample plot")?;
-    circle_of_confusion_plot(out, &quality).context("the circle-of-confusion plot")?;
-    convergence(out, &quality, &scene).context("the error-against-time figures")?;
-    mitsuba_agreement(out).context("the comparison with Mitsuba 3")?;
-    eprintln!("ch04 figures written to {}", out.display());
-    Ok(())
+    figures.make("the aperture series", |out| aperture_series(out, &gallery))?;
+    figures.make("the focus figure", |out| focus_depths(out, &gallery))?;
+    figures.make("the naive-warp figure", |out| {
+        naive_against_correct(out, &quality, &gallery)
+    })?;
+    figures.make("the bokeh-shape figure", |out| {
+        bokeh_shapes(out, &quality, &gallery)
+    })?;
+    figures.make("the lens-sample plot", |out| lens_samples(out, &quality))?;
+    figures.make("the circle-of-confusion plot", |out| {
+        circle_of_confusion_plot(out, &quality)
+    })?;
+    figures.make("the error-against-time figures", |out| {
+        convergence(out, &quality, &scene)
+    })?;
+    figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.finish()
 }
 
 /// The gallery renders of the bokeh scene, each rendered once however many figures show it.
@@ -115,7 +98,7 @@ impl<'a> Gallery<'a> {
     fn new(scene: &'a Scene, quality: &Quality) -> Self {
         Self {
             scene,
-            settings: quality.settings(quality.spp),
+            settings: quality.render.gallery(),
             rendered: Default::default(),
         }
     }
@@ -208,18 +191,18 @@ fn render_window(
     spp: u64,
 ) -> Image {
     let camera = ThinLensCamera::new(
-        PinholeCamera::of(&scene.camera, quality.width, quality.height),
+        PinholeCamera::of(&scene.camera, quality.render.width, quality.render.height),
         lens,
     );
-    let side = side.min(quality.width).min(quality.height);
+    let side = side.min(quality.render.width).min(quality.render.height);
     let start = |c: f32, size: u32| {
         (c - side as f32 / 2.0)
             .clamp(0.0, (size - side) as f32)
             .floor()
     };
     let offset = Vec2::new(
-        start(centre.x, quality.width),
-        start(centre.y, quality.height),
+        start(centre.x, quality.render.width),
+        start(centre.y, quality.render.height),
     );
     let settings = RenderSettings {
         progress: true,
@@ -237,7 +220,7 @@ fn render_window(
 
 /// A hole of the far wall, as the camera of `scene` sees it at `width x height`.
 fn highlight_on_film(scene: &Scene, quality: &Quality) -> Vec2 {
-    let camera = PinholeCamera::of(&scene.camera, quality.width, quality.height);
+    let camera = PinholeCamera::of(&scene.camera, quality.render.width, quality.render.height);
     // The hole at x = -1.2 on the upper row (see `scenes`), near the middle of the picture.
     let wall_z = 7.0 - BOKEH_WALL_DEPTH;
     project(&camera, Vec3::new(-1.12, 2.68, wall_z)).expect("the wall is in front")
@@ -263,7 +246,7 @@ fn naive_against_correct(out: &Path, quality: &Quality, gallery: &Gallery) -> an
         .collect();
     comparison_grid(&out.join("naive_vs_correct.png"), &images, 2, 1)?;
     let centre = highlight_on_film(scene, quality);
-    let side = quality.height / 4;
+    let side = quality.render.height / 4;
     let crops: Vec<(String, Image)> = warps
         .iter()
         .map(|&(warp, _)| {
@@ -301,7 +284,7 @@ fn bokeh_shapes(out: &Path, quality: &Quality, gallery: &Gallery) -> anyhow::Res
         ),
     ];
     let centre = highlight_on_film(scene, quality);
-    let side = quality.height / 4;
+    let side = quality.render.height / 4;
     let mut full = Vec::new();
     let mut crops = Vec::new();
     for (aperture, label) in shapes {
@@ -364,7 +347,7 @@ fn circle_of_confusion_plot(out: &Path, quality: &Quality) -> anyhow::Result<()>
     let pinhole = PinholeCamera::new(frame, 40.0, 360, 240);
     let focus = BOKEH_SPHERE_DEPTHS[1];
     let depths: Vec<f32> = (0..=200).map(|i| 1.0 + 19.0 * i as f32 / 200.0).collect();
-    let measured_depths: &[f32] = if quality.width < 200 {
+    let measured_depths: &[f32] = if quality.render.width < 200 {
         &[2.0, 5.0, 10.0, 18.0]
     } else {
         &[1.5, 2.5, 4.0, 5.5, 7.0, 9.0, 12.0, 16.0, 20.0]
@@ -420,7 +403,7 @@ fn circle_of_confusion_plot(out: &Path, quality: &Quality) -> anyhow::Result<()>
 /// Error against time for the three disc warps: the uniform ones converge, the naive one
 /// converges to the wrong image.
 fn convergence(out: &Path, quality: &Quality, scene: &Scene) -> anyhow::Result<()> {
-    let (width, height) = (quality.width / 5, quality.height / 5);
+    let (width, height) = (quality.render.width / 5, quality.render.height / 5);
     let settings = |spp| RenderSettings::new(width, height, spp);
     let lens = disc(0.12, BOKEH_SPHERE_DEPTHS[0]);
     // Random pixel samples: each technique differs only in its lens warp.
@@ -437,12 +420,12 @@ fn convergence(out: &Path, quality: &Quality, scene: &Scene) -> anyhow::Result<(
         )
         .image
     };
-    let reference = render_random(LensWarp::Concentric, quality.reference_spp, 1_000);
+    let reference = render_random(LensWarp::Concentric, quality.render.reference_spp, 1_000);
     let techniques: Vec<Technique> = LensWarp::ALL
         .iter()
         .map(|&warp| Technique::new(warp.name(), move |spp| render_random(warp, spp, 0)))
         .collect();
-    let records = run_convergence(&techniques, quality.budgets, &reference);
+    let records = run_convergence(&techniques, quality.render.budgets, &reference);
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
     plot_error_vs_time(
         &out.join("convergence.png"),
@@ -455,19 +438,6 @@ fn convergence(out: &Path, quality: &Quality, scene: &Scene) -> anyhow::Result<(
         &records,
     )?;
     Ok(())
-}
-
-/// Ours next to Mitsuba 3 on the chapter's scene files, with the numbers. The renders are at
-/// the files' own small sizes in every quality: they are compared with stored Mitsuba renders.
-fn mitsuba_agreement(out: &Path) -> anyhow::Result<()> {
-    common::metrics::write_agreement_figures(
-        out,
-        "ours (thin lens)",
-        &crate::agreement::scenes_dir(),
-        crate::agreement::AGREEMENT_SCENES,
-        &crate::agreement::render_scene_file,
-    )
-    .map_err(anyhow::Error::msg)
 }
 
 #[cfg(test)]

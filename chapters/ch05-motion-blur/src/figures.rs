@@ -6,11 +6,10 @@ use crate::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER, swarm};
 use crate::time_sampling::{StratifiedTime, TimeSampler};
 use crate::world::MotionScene;
 use crate::{Shutter, render_with};
-use anyhow::Context;
 use ch01_whitted::camera::PinholeCamera;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
-use common::cli::prepare_output_dir;
+use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::image::Image;
 use common::metrics::{
     Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
@@ -24,65 +23,29 @@ use std::path::Path;
 use std::time::Instant;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
-struct Quality {
-    width: u32,
-    height: u32,
-    /// Samples per pixel of the gallery images.
-    spp: u64,
-    /// Sample counts of the error-against-time runs.
-    budgets: &'static [u64],
-    /// Samples per pixel of the converged reference they are measured against.
-    reference_spp: u64,
-    /// Spheres per row of the motion-bounds scene.
-    swarm_rows: u32,
-    /// Samples per pixel of the motion-bounds timing renders.
-    swarm_spp: u64,
-}
-
-impl Quality {
-    fn new(quick: bool) -> Self {
-        if quick {
-            Quality {
-                width: 128,
-                height: 80,
-                spp: 16,
-                budgets: &[1, 4, 16],
-                reference_spp: 256,
-                swarm_rows: 10,
-                swarm_spp: 2,
-            }
-        } else {
-            Quality {
-                width: 320,
-                height: 200,
-                spp: 32,
-                budgets: &[1, 4, 16, 64, 256],
-                reference_spp: 1024,
-                swarm_rows: 20,
-                swarm_spp: 4,
-            }
-        }
-    }
-
-    fn settings(&self, spp: u64) -> RenderSettings {
-        RenderSettings {
-            progress: true,
-            ..RenderSettings::new(self.width, self.height, spp)
-        }
+fn quality(level: Level) -> RenderQuality {
+    RenderQuality {
+        width: level.pick(128, 320),
+        height: level.pick(80, 200),
+        spp: level.pick(16, 32),
+        budgets: level.pick(&[1, 4, 16], &[1, 4, 16, 64, 256]),
+        reference_spp: level.pick(256, 1024),
     }
 }
 
 /// Writes every figure of the chapter into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    prepare_output_dir(out)?;
-    let quality = Quality::new(quick);
-    gallery(out, &quality).context("the gallery of motions")?;
-    shutter_lengths(out, &quality).context("the shutter series")?;
-    time_samples(out).context("the time-sample plot")?;
-    convergence(out, &quality).context("the error-against-time figures")?;
-    bvh_cost(out, &quality).context("the motion-bounds table")?;
-    eprintln!("ch05 figures written to {}", out.display());
-    Ok(())
+    let mut figures = FigureSet::start("ch05", out, quick)?;
+    let level = figures.level();
+    let quality = quality(level);
+    figures.make("the gallery of motions", |out| gallery(out, &quality))?;
+    figures.make("the shutter series", |out| shutter_lengths(out, &quality))?;
+    figures.make("the time-sample plot", time_samples)?;
+    figures.make("the error-against-time figures", |out| {
+        convergence(out, &quality)
+    })?;
+    figures.make("the motion-bounds table", |out| bvh_cost(out, level))?;
+    figures.finish()
 }
 
 /// Renders `world` with stratified pixel positions and stratified time, box-filtered.
@@ -106,8 +69,8 @@ fn shutter(open: f32, close: f32) -> Shutter {
 }
 
 /// The four kinds of motion, each against the still image.
-fn gallery(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let settings = quality.settings(quality.spp);
+fn gallery(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
+    let settings = quality.gallery();
     let street_still = Builtin::Street.build(DEFAULT_DEPTH, shutter(0.0, 0.0));
     let street = Builtin::Street.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
     let spinner = Builtin::Spinner.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
@@ -153,8 +116,8 @@ fn gallery(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 
 /// The same motion seen through shutters from an instant to the whole motion, centred on the
 /// middle of the motion.
-fn shutter_lengths(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let settings = quality.settings(quality.spp);
+fn shutter_lengths(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
+    let settings = quality.gallery();
     let cells: Vec<(String, Image)> = [0.0, 0.05, 0.2, 0.5, 1.0]
         .iter()
         .map(|&length: &f32| {
@@ -227,7 +190,7 @@ fn time_samples(out: &Path) -> anyhow::Result<()> {
 }
 
 /// Error against time for independent and stratified time on the street scene.
-fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let (width, height) = (quality.width / 4, quality.height / 4);
     let world = Builtin::Street.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
     // Random pixel positions in both: the techniques differ only in how time is drawn.
@@ -280,8 +243,10 @@ struct CostRow {
 /// Measures the BVH over moving spheres with the shutter cut into 1 (one box for the whole
 /// sweep), 2, 4, ... stretches: build time, render speed and how many spheres a camera ray
 /// has to intersect because their box could not rule them out.
-fn bvh_cost(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let base = swarm(quality.swarm_rows, 4.0, DEFAULT_SHUTTER);
+fn bvh_cost(out: &Path, level: Level) -> anyhow::Result<()> {
+    // Spheres per row of the swarm, and samples per pixel of the timing renders.
+    let (swarm_rows, swarm_spp) = level.pick((10, 2), (20, 4));
+    let base = swarm(swarm_rows, 4.0, DEFAULT_SHUTTER);
     let (width, height) = (base.scene.film.width, base.scene.film.height);
     let mut world = base;
     let mut rows = Vec::new();
@@ -289,14 +254,14 @@ fn bvh_cost(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         let start = Instant::now();
         world = world.with_shutter(DEFAULT_SHUTTER, stretches);
         let build_seconds = start.elapsed().as_secs_f64();
-        let settings = RenderSettings::new(width, height, quality.swarm_spp);
-        let pixels = PixelSampler::new(PixelSamplerKind::Random, quality.swarm_spp, 0)
-            .expect("a positive count");
+        let settings = RenderSettings::new(width, height, swarm_spp);
+        let pixels =
+            PixelSampler::new(PixelSamplerKind::Random, swarm_spp, 0).expect("a positive count");
         let rendered = render_with(
             &world,
             &Lens::PINHOLE,
             &settings,
-            &StratifiedTime::new(pixels, quality.swarm_spp, 0),
+            &StratifiedTime::new(pixels, swarm_spp, 0),
             &box_filter(),
         );
         // The camera rays again, counted: how many moving spheres each must intersect.
@@ -352,7 +317,7 @@ fn bvh_cost(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &out.join("bvh_tests.png"),
         &format!(
             "{} moving spheres: spheres intersected per camera ray",
-            quality.swarm_rows * quality.swarm_rows
+            swarm_rows * swarm_rows
         ),
         "sphere tests per camera ray",
         &bars(|row| row.tests_per_ray),
@@ -365,7 +330,7 @@ fn bvh_cost(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &bars(|row| row.rays_per_second),
         false,
     )?;
-    let swarm_settings = RenderSettings::new(width, height, quality.swarm_spp.max(8));
+    let swarm_settings = RenderSettings::new(width, height, swarm_spp.max(8));
     comparison_grid(
         &out.join("swarm.png"),
         &[(

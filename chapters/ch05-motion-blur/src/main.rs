@@ -2,12 +2,11 @@
 //! chapter's figures.
 
 use ch05_motion_blur::MotionScene;
-use ch05_motion_blur::render_setup::{CameraArgs, RenderSetup};
+use ch05_motion_blur::render_setup::CameraArgs;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
-use ch05_motion_blur::{CAPABILITIES, Shutter, StratifiedTime, TimeSampling, figures, render_with};
-use common::cli::{ChapterBinary, parse_number};
-use common::render::Budget;
+use ch05_motion_blur::{CAPABILITIES, Shutter, TimeSampling, figures, render_with};
+use common::cli::parse_number;
 use std::process::ExitCode;
 
 #[derive(clap::Args, Debug)]
@@ -15,10 +14,6 @@ struct RenderCommand {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Street, conflicts_with = "scene")]
     builtin: Builtin,
-    /// Longest path in segments, counting the camera ray (Mitsuba's max_depth)
-    /// [default: the scene file's, or 12].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    max_depth: Option<u32>,
     /// When the shutter opens [default: the scene file's shutter_open, or 0].
     #[arg(long, value_name = "T0", allow_hyphen_values = true, value_parser = parse_number)]
     shutter_open: Option<f32>,
@@ -38,11 +33,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = ChapterBinary {
-        name: "ch05-motion-blur",
-        about: env!("CARGO_PKG_DESCRIPTION"),
-        render: "Render a scene in motion over the shutter interval.",
-    };
+    let binary = common::chapter_binary!("Render a scene in motion over the shutter interval.");
     binary.run(run_render, figures::write_all)
 }
 
@@ -57,39 +48,20 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
             command.shutter_close.unwrap_or(world.shutter.close),
         )
         .map_err(|e| anyhow::anyhow!("--shutter-open and --shutter-close: {e}"))?;
-        let mut world = world.with_shutter(shutter, command.stretches as usize);
-        if let Some(max_depth) = command.max_depth {
-            world.scene.max_depth = max_depth;
-        }
-        Ok(world)
+        Ok(world.with_shutter(shutter, command.stretches as usize))
     };
     let setup = command
         .camera
         .setup(&CAPABILITIES, builtin, Ok, adjust_world)?;
-    let RenderSetup {
-        world,
-        lens,
-        filter,
-        pixel_sampler,
-        settings,
-        ..
-    } = &setup;
+    let time_sampling = command.time_sampling;
+    let sampler = setup
+        .sampler(time_sampling)
+        .map_err(|e| anyhow::anyhow!("--time-sampling {}: {e}", time_sampling.name()))?;
     let args = &command.camera.args;
-    let rendered = match (command.time_sampling, settings.budget) {
-        (TimeSampling::Independent, _) => {
-            args.check_outputs()?;
-            render_with(world, lens, settings, pixel_sampler, filter)
-        }
-        (TimeSampling::Stratified, Budget::Samples(spp)) => {
-            args.check_outputs()?;
-            let sampler = StratifiedTime::new(pixel_sampler.clone(), spp, args.seed);
-            render_with(world, lens, settings, &sampler, filter)
-        }
-        (TimeSampling::Stratified, Budget::Seconds(_)) => anyhow::bail!(
-            "--time-sampling stratified cuts the shutter into one stratum per sample, so it needs --spp, not --time (use --time-sampling independent with --time)"
-        ),
-    };
-    let mut extra = setup.stats(args.seed);
+    args.check_outputs()?;
+    let world = &setup.world;
+    let rendered = render_with(world, &setup.lens, &setup.settings, &sampler, &setup.filter);
+    let mut extra = setup.stats();
     extra["time_sampling"] = command.time_sampling.name().into();
     extra["stretches"] = world.moving.stretches().into();
     args.write_outputs(&rendered, extra)?;

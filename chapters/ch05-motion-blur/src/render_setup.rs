@@ -5,6 +5,7 @@
 //! what its tracer does with them.
 
 use crate::scene_file::{motion_for_render, read_with_camera_side};
+use crate::time_sampling::{StratifiedTime, TimeSampling};
 use crate::world::MotionScene;
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind, ReconstructionFilter};
@@ -47,13 +48,16 @@ pub struct RenderSetup {
     pub pixel_sampler: PixelSampler,
     /// Size, budget, threads.
     pub settings: RenderSettings,
+    /// The seed of every random number of the render.
+    pub seed: u64,
 }
 
 impl CameraArgs {
     /// The render's setup: the `--scene` file (read with `-D`, checked against `capabilities`,
     /// its notes printed) or `builtin`'s scene and name (with a pinhole, Mitsuba's defaults for
     /// the rest and 16 samples per pixel); then `adjust` (the chapter's options on the scene),
-    /// the motion made ready, `adjust_world` (the chapter's options on the motion).
+    /// `--max-depth`, the motion made ready, `adjust_world` (the chapter's options on the
+    /// motion).
     pub fn setup(
         &self,
         capabilities: &Capabilities,
@@ -71,42 +75,52 @@ impl CameraArgs {
                 (scene, None, name)
             }
         };
-        let world =
-            motion_for_render(adjust(scene)?).map_err(|message| CliError::Unrenderable {
-                file: name.clone().into(),
-                message,
-            })?;
+        let scene = self.args.with_max_depth(adjust(scene)?);
+        let world = motion_for_render(scene).map_err(|message| CliError::Unrenderable {
+            file: name.clone().into(),
+            message,
+        })?;
         let world = adjust_world(world)?;
         let lens = self
             .lens
             .lens_or_pinhole(side.as_ref().map_or(Lens::PINHOLE, |side| side.lens))?;
-        let filter = self
-            .anti_aliasing
-            .filter(side.as_ref().map(|side| side.filter))?;
-        let sampler_kind = self
-            .anti_aliasing
-            .sampler_kind(side.as_ref().map(|side| side.sampler));
         let film = world.scene.film;
-        let default_spp = side.as_ref().map_or(16, |side| side.spp);
-        let settings = self.args.settings((film.width, film.height), default_spp)?;
-        let pixel_sampler =
-            self.anti_aliasing
-                .pixel_sampler(sampler_kind, &settings.budget, self.args.seed)?;
+        let film = self.anti_aliasing.film_setup(
+            side.as_ref().map(|side| &side.film),
+            &self.args,
+            (film.width, film.height),
+        )?;
         Ok(RenderSetup {
             world,
             name,
             lens,
-            filter,
-            sampler_kind,
-            pixel_sampler,
-            settings,
+            filter: film.filter,
+            sampler_kind: film.sampler_kind,
+            pixel_sampler: film.pixel_sampler,
+            settings: film.settings,
+            seed: self.args.seed,
         })
     }
 }
 
 impl RenderSetup {
+    /// The time sampling of a render that offers no choice: stratified when the scene moves
+    /// and the budget is a sample count ([`TimeSampling::by_default`]).
+    pub fn default_time_sampling(&self) -> TimeSampling {
+        TimeSampling::by_default(self.world.moves(), &self.settings.budget)
+    }
+
+    /// The render's sampler: the pixel sampler, drawing the shutter time as `time_sampling`
+    /// says.
+    pub fn sampler(
+        &self,
+        time_sampling: TimeSampling,
+    ) -> Result<StratifiedTime<PixelSampler>, String> {
+        time_sampling.sampler(self.pixel_sampler.clone(), &self.settings.budget, self.seed)
+    }
+
     /// What every render's statistics record of its setup; a chapter adds its own entries.
-    pub fn stats(&self, seed: u64) -> serde_json::Value {
+    pub fn stats(&self) -> serde_json::Value {
         let shutter = self.world.shutter;
         serde_json::json!({
             "scene": self.name,
@@ -118,7 +132,7 @@ impl RenderSetup {
             "focus_distance": self.lens.focus_distance,
             "shutter_open": shutter.open,
             "shutter_close": shutter.close,
-            "seed": seed,
+            "seed": self.seed,
         })
     }
 }

@@ -9,12 +9,10 @@
 
 use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
-use ch03_anti_aliasing::cli::AntiAliasingArgs;
-use common::cli::{CliError, print_note, read_scene_file};
-use common::metrics::AGREEMENT_SPP;
-use common::render::{Budget, RenderSettings};
+use ch03_anti_aliasing::scene_file::{FilmSide, film_side, read_with_film_side};
+use common::cli::{CliError, print_note};
+use common::render::RenderSettings;
 use common::scene::{Capabilities, Scene};
-use common::scene_file::load_scene_file;
 use std::path::Path;
 
 // ANCHOR: motion_of
@@ -34,34 +32,21 @@ pub fn motion_of(scene: Scene) -> Result<(MotionScene, Option<String>), String> 
 // ANCHOR_END: motion_of
 
 /// What chapters 03 to 05 read from a scene file for the camera's side of a render: the
-/// lens, the film's filter, the pixel sampler closest to the file's and its sample count.
-/// Later chapters render the same camera rays, so they read the same.
+/// lens (chapter 04), and the film's filter and the pixel sampler (chapter 03). Later chapters
+/// render the same camera rays, so they read the same.
 #[derive(Clone, Debug)]
 pub struct CameraSide {
-    /// The lens of the file's sensor (chapter 04).
+    /// The lens of the file's sensor.
     pub lens: ch04_depth_of_field::Lens,
-    /// The film's reconstruction filter (chapter 03).
-    pub filter: ch03_anti_aliasing::ReconstructionFilter,
-    /// The pixel sampler closest to the file's `<sampler>` type (chapter 03).
-    pub sampler: ch03_anti_aliasing::PixelSamplerKind,
-    /// Samples per pixel the file asks for.
-    pub spp: u64,
-    /// What the choices leave out or change, to print.
-    pub notes: Vec<String>,
+    /// The film's filter, the pixel sampler and its sample count.
+    pub film: FilmSide,
 }
 
 /// The camera side of `scene`, or why a part of it makes no sense.
 pub fn camera_side(scene: &Scene) -> Result<CameraSide, String> {
     let lens = ch04_depth_of_field::scene_file::lens_of(&scene.camera)?;
-    let filter = ch03_anti_aliasing::scene_file::filter_of(scene.film.filter)?;
-    let (sampler, note) = ch03_anti_aliasing::scene_file::sampler_of(&scene.sampler.type_name);
-    Ok(CameraSide {
-        lens,
-        filter,
-        sampler,
-        spp: u64::from(scene.sampler.sample_count.max(1)),
-        notes: note.into_iter().collect(),
-    })
+    let film = film_side(scene)?;
+    Ok(CameraSide { lens, film })
 }
 
 /// A scene file for a chapter's `render`: loaded with the `-D` overrides, checked against the
@@ -71,35 +56,29 @@ pub fn read_with_camera_side(
     defines: &[(String, String)],
     capabilities: &Capabilities,
 ) -> Result<(Scene, CameraSide), CliError> {
-    let scene = read_scene_file(path, defines, capabilities)?;
-    let side = camera_side(&scene).map_err(|message| CliError::Unrenderable {
-        file: path.to_path_buf(),
-        message,
+    let (scene, film) = read_with_film_side(path, defines, capabilities)?;
+    let lens = ch04_depth_of_field::scene_file::lens_of(&scene.camera).map_err(|message| {
+        CliError::Unrenderable {
+            file: path.to_path_buf(),
+            message,
+        }
     })?;
-    for note in &side.notes {
-        print_note(note);
-    }
-    Ok((scene, side))
+    Ok((scene, CameraSide { lens, film }))
 }
 
-/// A scene file as a chapter checks it against Mitsuba 3: loaded, checked against the
-/// chapter's `capabilities`, its motion made ready, and the settings and pixel sampler of a
-/// render at [`AGREEMENT_SPP`] samples per pixel at the file's size; errors name the file.
+/// A scene file as a chapter checks it against Mitsuba 3 (chapter 03's
+/// [`for_agreement`](ch03_anti_aliasing::scene_file::for_agreement)), with its lens, and its
+/// motion made ready; errors name the file.
 pub fn for_agreement(
     path: &Path,
     capabilities: &Capabilities,
 ) -> Result<(MotionScene, CameraSide, RenderSettings, PixelSampler), String> {
     let in_file = |e: String| format!("{}: {e}", path.display());
-    let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    capabilities.check(&loaded.scene).map_err(in_file)?;
-    let side = camera_side(&loaded.scene).map_err(in_file)?;
-    let (world, _) = motion_of(loaded.scene).map_err(in_file)?;
-    let film = world.scene.film;
-    let settings = RenderSettings::new(film.width, film.height, AGREEMENT_SPP);
-    let sampler = AntiAliasingArgs::default()
-        .pixel_sampler(side.sampler, &Budget::Samples(AGREEMENT_SPP), 0)
-        .map_err(|e| e.to_string())?;
-    Ok((world, side, settings, sampler))
+    let (scene, film, settings, sampler) =
+        ch03_anti_aliasing::scene_file::for_agreement(path, capabilities)?;
+    let lens = ch04_depth_of_field::scene_file::lens_of(&scene.camera).map_err(in_file)?;
+    let (world, _) = motion_of(scene).map_err(in_file)?;
+    Ok((world, CameraSide { lens, film }, settings, sampler))
 }
 
 /// [`motion_of`] for a chapter's `render`: the note, if any, printed.

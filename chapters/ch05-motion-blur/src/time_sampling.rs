@@ -55,6 +55,26 @@ impl TimeSampling {
             TimeSampling::Stratified => "stratified",
         }
     }
+
+    /// `inner` drawing its times this way in a render of `budget`: stratified over the `spp`
+    /// samples of a pixel, or independent, which is stratified time with one stratum, the
+    /// whole shutter. Stratified time needs a sample count to lay out its strata.
+    pub fn sampler<S: Sampler>(
+        self,
+        inner: S,
+        budget: &Budget,
+        seed: u64,
+    ) -> Result<StratifiedTime<S>, String> {
+        match (self, budget) {
+            (TimeSampling::Independent, _) => Ok(StratifiedTime::new(inner, 1, seed)),
+            (TimeSampling::Stratified, Budget::Samples(spp)) => {
+                Ok(StratifiedTime::new(inner, *spp, seed))
+            }
+            (TimeSampling::Stratified, Budget::Seconds(_)) => Err(
+                "stratified time cuts the shutter into one stratum per sample, so it needs a sample count (--spp), not --time".to_string(),
+            ),
+        }
+    }
 }
 
 /// The largest `f32` below 1.
@@ -110,7 +130,8 @@ pub fn permutation_element(i: u32, n: u32, key: u32) -> u32 {
 }
 
 /// Wraps a sampler and stratifies its time dimension over the `strata` samples of a pixel;
-/// every other dimension comes from the inner sampler unchanged.
+/// every other dimension comes from the inner sampler unchanged. With one stratum the time is
+/// the inner sampler's own number, as independent time draws it.
 ///
 /// Samples `strata .. 2 strata` (a longer render) get a fresh permutation, so every run of
 /// `strata` consecutive samples covers every stratum once.
@@ -143,6 +164,11 @@ impl<S: Sampler> Sampler for StratifiedTime<S> {
     #[inline]
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
         self.inner.start_pixel_sample(pixel, sample_index);
+        if self.strata == 1 {
+            // One stratum: every sample's, with no permutation to draw.
+            self.stratum = 0;
+            return;
+        }
         let pixel_key = (u64::from(pixel.y) << 32) | u64::from(pixel.x);
         let round = sample_index / self.strata;
         let key = mix(mix(self.seed ^ 0x7469_6d65) ^ mix(pixel_key) ^ round) as u32;
@@ -239,5 +265,26 @@ mod tests {
         }
         assert_ne!(orders[0], orders[1]);
         assert_ne!(orders[1], orders[2]);
+    }
+
+    #[test]
+    fn one_stratum_is_independent_time() {
+        let budget = Budget::Samples(16);
+        let mut one = TimeSampling::Independent
+            .sampler(IndependentSampler::new(5), &budget, 5)
+            .unwrap();
+        let mut inner = IndependentSampler::new(5);
+        for (pixel, index) in [(UVec2::new(0, 0), 0), (UVec2::new(7, 3), 11)] {
+            one.start_pixel_sample(pixel, index);
+            inner.start_pixel_sample(pixel, index);
+            assert_eq!(one.get_pixel_2d(), inner.get_pixel_2d());
+            assert_eq!(one.get_time_1d(), inner.get_1d());
+            assert_eq!(one.get_2d(), inner.get_2d());
+        }
+        let stratified = TimeSampling::Stratified.sampler(IndependentSampler::new(5), &budget, 5);
+        assert_eq!(stratified.unwrap().strata, 16);
+        let timed =
+            TimeSampling::Stratified.sampler(IndependentSampler::new(5), &Budget::Seconds(1.0), 5);
+        assert!(timed.unwrap_err().contains("--spp"));
     }
 }

@@ -10,20 +10,20 @@
 use crate::{GlassStrategy, PointLights, TraceOptions, render_with};
 use ch05_motion_blur::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AgreementScene, MITSUBA_VARIANT};
-use std::path::{Path, PathBuf};
+use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
+use std::path::Path;
 
-/// The scenes compared, with what each one checks.
-pub const AGREEMENT_SCENES: &[AgreementScene] = &[AgreementScene {
-    name: "glass-panes",
-    checks: "smooth glass with one ray chosen by the Fresnel term",
-    variant: MITSUBA_VARIANT,
-}];
-
-/// The chapter's scene directory.
-pub fn scenes_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
-}
+/// The chapter's scene files compared with Mitsuba 3, with what each one checks.
+pub const AGREEMENT: AgreementSet = AgreementSet {
+    label: "chapter 06",
+    scenes_dir: concat!(env!("CARGO_MANIFEST_DIR"), "/scenes"),
+    scenes: &[AgreementScene {
+        name: "glass-panes",
+        checks: "smooth glass with one ray chosen by the Fresnel term",
+        variant: MITSUBA_VARIANT,
+    }],
+    render: render_scene_file,
+};
 
 /// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, choosing the ray at
 /// glass by `glass`, with the pixel sampler and the filter the file asks for.
@@ -40,7 +40,7 @@ pub fn render_scene_file_with(path: &Path, glass: GlassStrategy) -> Result<Image
         &side.lens,
         &settings,
         &sampler,
-        &side.filter,
+        &side.film.filter,
     );
     Ok(rendered.image)
 }

@@ -21,10 +21,6 @@ pub struct FuzzyArgs {
     /// What to do with a spread ray that points below the surface.
     #[arg(long, value_enum, default_value_t = BelowSurface::Drop)]
     pub below_surface: BelowSurface,
-    /// Longest path in segments, counting the camera ray (Mitsuba's max_depth)
-    /// [default: the scene file's, or 12].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
-    pub max_depth: Option<u32>,
 }
 
 impl FuzzyArgs {
@@ -45,25 +41,19 @@ impl FuzzyArgs {
             .map_err(|e| anyhow::anyhow!("--exponent: {e}"))
     }
 
-    /// `scene` with `--exponent` and `--max-depth` applied where given.
+    /// `scene` with `--exponent` applied where given.
     pub fn apply(&self, scene: Scene) -> anyhow::Result<Scene> {
-        let mut scene = match self.exponent()? {
+        Ok(match self.exponent()? {
             Some(exponent) => scene.with_exponent(exponent),
             None => scene,
-        };
-        if let Some(max_depth) = self.max_depth {
-            scene.max_depth = max_depth;
-        }
-        Ok(scene)
+        })
     }
 
-    /// The options as the render's statistics record them, to add to its other entries.
-    pub fn stats(&self) -> serde_json::Map<String, serde_json::Value> {
-        let mut stats = serde_json::Map::new();
-        stats.insert("glass".into(), self.glass.name().into());
-        stats.insert("fuzz".into(), self.fuzz.name().into());
-        stats.insert("below_surface".into(), self.below_surface.name().into());
-        stats.insert("exponent".into(), self.exponent.into());
-        stats
+    /// Adds the options to a render's statistics (a JSON object).
+    pub fn record_stats(&self, stats: &mut serde_json::Value) {
+        stats["glass"] = self.glass.name().into();
+        stats["fuzz"] = self.fuzz.name().into();
+        stats["below_surface"] = self.below_surface.name().into();
+        stats["exponent"] = self.exponent.into();
     }
 }

@@ -3,7 +3,7 @@
 //! directions go), lobe samples, the ray count of "trace both" against the depth, the three
 //! glass strategies at equal time, error against time, and the agreement with Mitsuba 3.
 
-use crate::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
+use crate::agreement::AGREEMENT;
 use crate::below_surface::BelowSurface;
 use crate::furnace::{incoming, mean_radiance, white_floor};
 use crate::fuzz::FuzzMethod;
@@ -12,16 +12,14 @@ use crate::lighting::PointLights;
 use crate::render_with;
 use crate::scenes::{Builtin, DEFAULT_DEPTH};
 use crate::tracer::TraceOptions;
-use anyhow::Context;
 use ch01_whitted::optics::reflect;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
-use common::cli::prepare_output_dir;
+use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::image::Image;
 use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_agreement_figures,
-    write_convergence_csv,
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
 };
 use common::output::figures::{
     Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
@@ -34,70 +32,41 @@ use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
-struct Quality {
-    width: u32,
-    height: u32,
-    /// Samples per pixel of the gallery images.
-    spp: u64,
-    /// Sample counts of the error-against-time runs.
-    budgets: &'static [u64],
-    /// Samples per pixel of the converged reference they are measured against.
-    reference_spp: u64,
-    /// Seconds each glass strategy gets in the equal-time comparison.
-    equal_seconds: f64,
-    /// Rays traced per point of the furnace curves.
-    furnace_samples: u64,
-}
-
-impl Quality {
-    fn new(quick: bool) -> Self {
-        if quick {
-            Quality {
-                width: 96,
-                height: 72,
-                spp: 8,
-                budgets: &[1, 4, 16],
-                reference_spp: 256,
-                equal_seconds: 0.2,
-                furnace_samples: 500,
-            }
-        } else {
-            Quality {
-                width: 320,
-                height: 240,
-                spp: 64,
-                budgets: &[1, 4, 16, 64],
-                reference_spp: 2048,
-                equal_seconds: 2.0,
-                furnace_samples: 20_000,
-            }
-        }
+fn quality(level: Level) -> RenderQuality {
+    RenderQuality {
+        width: level.pick(96, 320),
+        height: level.pick(72, 240),
+        spp: level.pick(8, 64),
+        budgets: level.pick(&[1, 4, 16], &[1, 4, 16, 64]),
+        reference_spp: level.pick(256, 2048),
     }
 }
 
 /// Writes every figure of the chapter into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    prepare_output_dir(out)?;
-    let quality = Quality::new(quick);
-    roughness_series(out, &quality).context("the roughness series")?;
-    disc_against_lobe(out, &quality).context("the disc against the lobe")?;
-    below_surface(out, &quality).context("the below-surface comparison")?;
-    inter_reflections(out, &quality).context("the plates")?;
-    lobe_samples(out).context("the lobe-sample plots")?;
-    ray_growth(out, &quality).context("the ray-count growth")?;
-    equal_time(out, &quality).context("the equal-time comparison")?;
-    convergence(out, &quality).context("the error-against-time figures")?;
-    write_agreement_figures(
-        out,
-        "chapter 06",
-        &scenes_dir(),
-        AGREEMENT_SCENES,
-        &render_scene_file,
-    )
-    .map_err(anyhow::Error::msg)
-    .context("the comparison with Mitsuba 3")?;
-    eprintln!("ch06 figures written to {}", out.display());
-    Ok(())
+    let mut figures = FigureSet::start("ch06", out, quick)?;
+    let level = figures.level();
+    let quality = quality(level);
+    figures.make("the roughness series", |out| {
+        roughness_series(out, &quality)
+    })?;
+    figures.make("the disc against the lobe", |out| {
+        disc_against_lobe(out, &quality)
+    })?;
+    figures.make("the below-surface comparison", |out| {
+        below_surface(out, &quality, level)
+    })?;
+    figures.make("the plates", |out| inter_reflections(out, &quality))?;
+    figures.make("the lobe-sample plots", lobe_samples)?;
+    figures.make("the ray-count growth", |out| ray_growth(out, &quality))?;
+    figures.make("the equal-time comparison", |out| {
+        equal_time(out, &quality, level)
+    })?;
+    figures.make("the error-against-time figures", |out| {
+        convergence(out, &quality)
+    })?;
+    figures.agreement(&AGREEMENT)?;
+    figures.finish()
 }
 
 fn box_filter() -> ReconstructionFilter {
@@ -132,13 +101,6 @@ fn render(
     )
 }
 
-fn gallery_settings(quality: &Quality) -> RenderSettings {
-    RenderSettings {
-        progress: true,
-        ..RenderSettings::new(quality.width, quality.height, quality.spp)
-    }
-}
-
 /// The exponent as a caption: "n = 1e6" rather than "n = 1000000".
 fn exponent_label(exponent: f32) -> String {
     if exponent >= 1e4 {
@@ -149,8 +111,8 @@ fn exponent_label(exponent: f32) -> String {
 }
 
 /// The glossy floor and the frosted pane from rough to smooth.
-fn roughness_series(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let settings = gallery_settings(quality);
+fn roughness_series(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
+    let settings = quality.gallery();
     let options = TraceOptions::default();
     let mut reflection = Vec::new();
     for exponent in [1.0f32, 10.0, 100.0, 1e3, 1e6] {
@@ -193,8 +155,8 @@ fn roughness_series(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 }
 
 /// The empirical disc and the `cos^n` lobe, sized to the same spread.
-fn disc_against_lobe(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let settings = gallery_settings(quality);
+fn disc_against_lobe(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
+    let settings = quality.gallery();
     let mut cells = Vec::new();
     for exponent in [10.0f32, 300.0] {
         let scene = Builtin::Floor.build(DEFAULT_DEPTH, exponent);
@@ -219,8 +181,10 @@ fn disc_against_lobe(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 
 /// The three below-surface policies: in the plates scene at a low exponent, in the furnace
 /// (reflected energy against the angle of incidence), and in a table.
-fn below_surface(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let settings = gallery_settings(quality);
+fn below_surface(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::Result<()> {
+    // Rays traced per point of the furnace curves.
+    let furnace_samples = level.pick(500, 20_000);
+    let settings = quality.gallery();
     let scene = Builtin::Floor.build(DEFAULT_DEPTH, 3.0);
     let cells: Vec<(String, Image)> = BelowSurface::ALL
         .iter()
@@ -254,7 +218,7 @@ fn below_surface(out: &Path, quality: &Quality) -> anyhow::Result<()> {
             let mut points = Vec::new();
             for &degrees in &angles {
                 let (albedo, se) =
-                    mean_radiance(&floor, options, &incoming(degrees), quality.furnace_samples);
+                    mean_radiance(&floor, options, &incoming(degrees), furnace_samples);
                 csv.push_str(&format!(
                     "{exponent},lobe,{},{degrees},{albedo},{se}\n",
                     below.name()
@@ -287,8 +251,8 @@ fn below_surface(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 }
 
 /// Two glossy plates facing each other: reflections of reflections, blurring as they repeat.
-fn inter_reflections(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let settings = gallery_settings(quality);
+fn inter_reflections(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
+    let settings = quality.gallery();
     let cells: Vec<(String, Image)> = [1e5f32, 1e3, 100.0]
         .iter()
         .map(|&exponent| {
@@ -374,7 +338,7 @@ fn lobe_samples(out: &Path) -> anyhow::Result<()> {
 }
 
 /// Rays per camera ray against the depth limit, for each glass strategy, in the panes scene.
-fn ray_growth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+fn ray_growth(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let (width, height) = (quality.width / 4, quality.height / 4);
     let spp = 2;
     let depths: Vec<u32> = (1..=14).collect();
@@ -423,10 +387,11 @@ fn ray_growth(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 /// The panes scene with each glass strategy, given the same time. Tracing both rays goes
 /// first: a timed render always finishes one sample per pixel, and if that takes longer than
 /// the budget, the others get as long as it took.
-fn equal_time(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+fn equal_time(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::Result<()> {
     let scene = Builtin::Panes.build(DEFAULT_DEPTH, 1e6);
     let mut cells = Vec::new();
-    let mut seconds = quality.equal_seconds;
+    // Seconds each glass strategy gets.
+    let mut seconds = level.pick(0.2, 2.0);
     for glass in GlassStrategy::ALL {
         let settings = RenderSettings {
             budget: Budget::Seconds(seconds),
@@ -453,7 +418,7 @@ fn equal_time(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 }
 
 /// Error against time of the three glass strategies, on smooth panes and on a frosted pane.
-fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let (width, height) = (quality.width / 4, quality.height / 4);
     for (builtin, exponent, name) in [
         (Builtin::Panes, 1e6, "convergence"),

@@ -1,13 +1,10 @@
 //! `ch06-fuzzy-reflections`: render a scene with rough mirrors and frosted glass, or write the
 //! chapter's figures.
 
-use ch05_motion_blur::render_setup::{CameraArgs, RenderSetup};
-use ch05_motion_blur::{StratifiedTime, TimeSampling};
+use ch05_motion_blur::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
 use ch06_fuzzy_reflections::{CAPABILITIES, PointLights, figures, render_with};
-use common::cli::ChapterBinary;
-use common::render::Budget;
 use std::process::ExitCode;
 
 #[derive(clap::Args, Debug)]
@@ -22,11 +19,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = ChapterBinary {
-        name: "ch06-fuzzy-reflections",
-        about: env!("CARGO_PKG_DESCRIPTION"),
-        render: "Render a scene with glossy and frosted surfaces.",
-    };
+    let binary = common::chapter_binary!("Render a scene with glossy and frosted surfaces.");
     binary.run(run_render, figures::write_all)
 }
 
@@ -44,47 +37,21 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         |scene| command.fuzzy.apply(scene),
         Ok,
     )?;
-    let RenderSetup {
-        world,
-        lens,
-        filter,
-        pixel_sampler,
-        settings,
-        ..
-    } = &setup;
     let args = &command.camera.args;
     args.check_outputs()?;
-    let options = command.fuzzy.options();
-    let time_sampling = TimeSampling::by_default(world.moves(), &settings.budget);
-    let rendered = match (time_sampling, settings.budget) {
-        (TimeSampling::Stratified, Budget::Samples(spp)) => {
-            let sampler = StratifiedTime::new(pixel_sampler.clone(), spp, args.seed);
-            render_with(
-                world,
-                &PointLights,
-                options,
-                lens,
-                settings,
-                &sampler,
-                filter,
-            )
-        }
-        _ => render_with(
-            world,
-            &PointLights,
-            options,
-            lens,
-            settings,
-            pixel_sampler,
-            filter,
-        ),
-    };
-    let mut extra = setup.stats(args.seed);
+    let time_sampling = setup.default_time_sampling();
+    let rendered = render_with(
+        &setup.world,
+        &PointLights,
+        command.fuzzy.options(),
+        &setup.lens,
+        &setup.settings,
+        &setup.sampler(time_sampling).map_err(anyhow::Error::msg)?,
+        &setup.filter,
+    );
+    let mut extra = setup.stats();
     extra["time_sampling"] = time_sampling.name().into();
-    extra
-        .as_object_mut()
-        .expect("a JSON object")
-        .extend(command.fuzzy.stats());
+    command.fuzzy.record_stats(&mut extra);
     args.write_outputs(&rendered, extra)?;
     args.report_written(
         &rendered,

@@ -5,23 +5,21 @@
 //! Mitsuba makes itself (by the Fresnel term): the other two are noisier by design.
 
 use ch06_fuzzy_reflections::GlassStrategy;
-use ch06_fuzzy_reflections::agreement::{
-    AGREEMENT_SCENES, render_scene_file, render_scene_file_with, scenes_dir,
-};
-use common::metrics::{BIAS_SLACK, ReferenceRenders, check_stored_agreement, stored_renders_dir};
+use ch06_fuzzy_reflections::agreement::{AGREEMENT, render_scene_file_with};
+use common::metrics::{BIAS_SLACK, ReferenceRenders};
 
 #[test]
 fn renders_agree_with_the_stored_mitsuba_renders() {
-    check_stored_agreement(&scenes_dir(), AGREEMENT_SCENES, &render_scene_file).unwrap();
+    AGREEMENT.check_stored().unwrap();
 }
 
 #[test]
 fn every_choice_at_glass_is_unbiased_against_mitsuba() {
-    for scene in AGREEMENT_SCENES {
-        let renders = ReferenceRenders::load(&stored_renders_dir(&scenes_dir()), scene.name)
+    for scene in AGREEMENT.scenes {
+        let renders = ReferenceRenders::load(&AGREEMENT.stored_renders_dir(), scene.name)
             .expect("the stored renders");
         for glass in GlassStrategy::ALL {
-            let ours = render_scene_file_with(&scene.file(&scenes_dir()), glass).unwrap();
+            let ours = render_scene_file_with(&AGREEMENT.file(scene), glass).unwrap();
             let agreement = renders.agreement(&ours);
             assert!(
                 agreement.unbiased(BIAS_SLACK),

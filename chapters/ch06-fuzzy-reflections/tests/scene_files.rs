@@ -2,7 +2,7 @@
 //! how), and broken or unknown materials refused with the shape they belong to.
 
 use ch06_fuzzy_reflections::CAPABILITIES;
-use ch06_fuzzy_reflections::agreement::scenes_dir;
+use ch06_fuzzy_reflections::agreement::AGREEMENT;
 use common::scene::Material;
 use common::scene::Scene;
 use common::scene_file::{load_scene_file, parse_scene};
@@ -19,7 +19,7 @@ fn every_shipped_scene_renders() {
         "phong-plates",
         "glass-panes",
     ] {
-        let scene = scenes_dir().join(format!("{name}.xml"));
+        let scene = AGREEMENT.scenes_dir().join(format!("{name}.xml"));
         let out = dir.path().join(format!("{name}.exr"));
         let run = run_binary(
             BINARY,
@@ -48,7 +48,7 @@ fn every_shipped_scene_renders() {
 
 #[test]
 fn rough_materials_become_lobes_with_a_note() {
-    let loaded = load_scene_file(&scenes_dir().join("rough-metal.xml"), &[]).unwrap();
+    let loaded = load_scene_file(&AGREEMENT.scenes_dir().join("rough-metal.xml"), &[]).unwrap();
     let notes = CAPABILITIES.check(&loaded.scene).unwrap();
     let Material::Glossy(floor) = loaded.scene.surfaces[0].material else {
         panic!("the floor is glossy: {:?}", loaded.scene.surfaces[0]);
@@ -59,7 +59,7 @@ fn rough_materials_become_lobes_with_a_note() {
         "{notes:?}"
     );
     // The frosted pane is a cube: six faces, each frosted glass.
-    let loaded = load_scene_file(&scenes_dir().join("frosted-glass.xml"), &[]).unwrap();
+    let loaded = load_scene_file(&AGREEMENT.scenes_dir().join("frosted-glass.xml"), &[]).unwrap();
     let frosted = loaded
         .scene
         .surfaces

@@ -10,42 +10,42 @@ use crate::{LightOptions, render_with};
 use ch05_motion_blur::scene_file::for_agreement;
 use ch06_fuzzy_reflections::TraceOptions;
 use common::image::Image;
-use common::metrics::{AgreementScene, MITSUBA_VARIANT};
-use std::path::{Path, PathBuf};
+use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
+use std::path::Path;
 
-/// The scenes compared, with what each one checks.
-pub const AGREEMENT_SCENES: &[AgreementScene] = &[
-    AgreementScene {
-        name: "rectangle-light",
-        checks: "a rectangle light over spheres: area sampling, one-sided emission, penumbrae",
-        variant: MITSUBA_VARIANT,
-    },
-    AgreementScene {
-        name: "disc-light",
-        checks: "a disk light, tilted: the concentric disc, the light's cosine",
-        variant: MITSUBA_VARIANT,
-    },
-    AgreementScene {
-        name: "sphere-light",
-        checks: "a sphere light: the cone sampled by solid angle, seen directly",
-        variant: MITSUBA_VARIANT,
-    },
-    AgreementScene {
-        name: "affine-lights",
-        checks: "a disk squashed into an ellipse, a disk scaled in its plane only, a sheared rectangle",
-        variant: MITSUBA_VARIANT,
-    },
-    AgreementScene {
-        name: "several-lights",
-        checks: "a cube light (six parallelograms), a triangle mesh light and a point light",
-        variant: MITSUBA_VARIANT,
-    },
-];
-
-/// The chapter's scene directory.
-pub fn scenes_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
-}
+/// The chapter's scene files compared with Mitsuba 3, with what each one checks.
+pub const AGREEMENT: AgreementSet = AgreementSet {
+    label: "chapter 07",
+    scenes_dir: concat!(env!("CARGO_MANIFEST_DIR"), "/scenes"),
+    scenes: &[
+        AgreementScene {
+            name: "rectangle-light",
+            checks: "a rectangle light over spheres: area sampling, one-sided emission, penumbrae",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "disc-light",
+            checks: "a disk light, tilted: the concentric disc, the light's cosine",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "sphere-light",
+            checks: "a sphere light: the cone sampled by solid angle, seen directly",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "affine-lights",
+            checks: "a disk squashed into an ellipse, a disk scaled in its plane only, a sheared rectangle",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "several-lights",
+            checks: "a cube light (six parallelograms), a triangle mesh light and a point light",
+            variant: MITSUBA_VARIANT,
+        },
+    ],
+    render: render_scene_file,
+};
 
 /// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, with the file's lens,
 /// pixel sampler and filter, one shadow ray per light per hit.
@@ -58,7 +58,7 @@ pub fn render_scene_file(path: &Path) -> Result<Image, String> {
         &side.lens,
         &settings,
         &sampler,
-        &side.filter,
+        &side.film.filter,
     );
     Ok(rendered.image)
 }

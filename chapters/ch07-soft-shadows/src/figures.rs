@@ -5,12 +5,11 @@
 use crate::sample_stream::SampleStream;
 use crate::scenes::{Builder, Builtin, DEFAULT_DEPTH, camera, floor, matte};
 use crate::{DiscWarp, LightOptions, LightStrata, Strategy, render_with};
-use anyhow::Context;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::TraceOptions;
-use common::cli::prepare_output_dir;
+use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::geometry::{Disc, Parallelogram, Shape, Sphere, Triangle};
 use common::image::Image;
 use common::metrics::{
@@ -25,60 +24,32 @@ use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
-struct Quality {
-    width: u32,
-    height: u32,
-    /// Samples per pixel of the gallery images.
-    spp: u64,
-    /// Sample counts of the error-against-time runs.
-    budgets: &'static [u64],
-    /// Samples per pixel of the references they are measured against.
-    reference_spp: u64,
-}
-
-impl Quality {
-    fn new(quick: bool) -> Self {
-        if quick {
-            Quality {
-                width: 96,
-                height: 72,
-                spp: 8,
-                budgets: &[1, 4],
-                reference_spp: 64,
-            }
-        } else {
-            Quality {
-                width: 320,
-                height: 240,
-                spp: 32,
-                budgets: &[1, 4, 16, 32],
-                reference_spp: 128,
-            }
-        }
+fn quality(level: Level) -> RenderQuality {
+    RenderQuality {
+        width: level.pick(96, 320),
+        height: level.pick(72, 240),
+        spp: level.pick(8, 32),
+        budgets: level.pick(&[1, 4], &[1, 4, 16, 32]),
+        reference_spp: level.pick(64, 128),
     }
 }
 
 /// Writes every figure of the chapter into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    prepare_output_dir(out)?;
-    let quality = Quality::new(quick);
-    gallery(out, &quality).context("the gallery of lights")?;
-    samples_per_light(out, &quality).context("the shadow rays per light")?;
-    sphere_strategies(out, &quality).context("the sphere light's strategies")?;
-    disc_warps(out, &quality).context("the disc warps")?;
-    light_points(out).context("the light-sample plots")?;
-    convergence(out, &quality).context("the error-against-time figures")?;
-    common::metrics::write_agreement_figures(
-        out,
-        "chapter 07",
-        &crate::agreement::scenes_dir(),
-        crate::agreement::AGREEMENT_SCENES,
-        &crate::agreement::render_scene_file,
-    )
-    .map_err(anyhow::Error::msg)
-    .context("the comparison with Mitsuba 3")?;
-    eprintln!("ch07 figures written to {}", out.display());
-    Ok(())
+    let mut figures = FigureSet::start("ch07", out, quick)?;
+    let q = quality(figures.level());
+    figures.make("the gallery of lights", |out| gallery(out, &q))?;
+    figures.make("the shadow rays per light", |out| {
+        samples_per_light(out, &q)
+    })?;
+    figures.make("the sphere light's strategies", |out| {
+        sphere_strategies(out, &q)
+    })?;
+    figures.make("the disc warps", |out| disc_warps(out, &q))?;
+    figures.make("the light-sample plots", light_points)?;
+    figures.make("the error-against-time figures", |out| convergence(out, &q))?;
+    figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.finish()
 }
 
 /// Renders `scene` at `width x height` with stratified pixel positions, box-filtered.
@@ -106,7 +77,7 @@ fn render(
 }
 
 /// The lecture's pair, and the other built-in scenes.
-fn gallery(out: &Path, q: &Quality) -> anyhow::Result<()> {
+fn gallery(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     let size = (q.width, q.height);
     let lights = LightOptions::with_samples(4);
     let pair = vec![
@@ -175,7 +146,7 @@ fn gallery(out: &Path, q: &Quality) -> anyhow::Result<()> {
 }
 
 /// The large light at 1, 4 and 16 shadow rays per light and hit, the same pixel samples.
-fn samples_per_light(out: &Path, q: &Quality) -> anyhow::Result<()> {
+fn samples_per_light(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     let scene = Builtin::Large.build(DEFAULT_DEPTH, 1.0);
     let spp = (q.spp / 4).max(1);
     let cells: Vec<(String, Image)> = [1u32, 4, 16]
@@ -218,7 +189,7 @@ fn sphere_light_scene(radius: f32) -> MotionScene {
 }
 
 /// Area against solid-angle sampling of a sphere light, same samples.
-fn sphere_strategies(out: &Path, q: &Quality) -> anyhow::Result<()> {
+fn sphere_strategies(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     let scene = sphere_light_scene(0.3);
     let spp = (q.spp / 2).max(1);
     let cells: Vec<(String, Image)> = [Strategy::Area, Strategy::SolidAngle]
@@ -264,7 +235,7 @@ fn disc_light_scene() -> MotionScene {
 
 /// The three disc warps on a close disc light against a reference, with the error of each:
 /// the naive warp's comes from its bias and does not fall with more samples.
-fn disc_warps(out: &Path, q: &Quality) -> anyhow::Result<()> {
+fn disc_warps(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     let scene = disc_light_scene();
     let size = (q.width / 2, q.height / 2);
     let reference = render(
@@ -397,7 +368,7 @@ fn light_points(out: &Path) -> anyhow::Result<()> {
 
 /// Error against time on the large light's penumbrae (independent and stratified shadow
 /// rays, 1, 4 and 16 per light) and on the sphere light (area and solid angle).
-fn convergence(out: &Path, q: &Quality) -> anyhow::Result<()> {
+fn convergence(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     let size = (q.width / 2, q.height / 2);
     let large = Builtin::Large.build(DEFAULT_DEPTH, 1.0);
     let reference = render(

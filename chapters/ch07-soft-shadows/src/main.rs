@@ -1,15 +1,13 @@
 //! `ch07-soft-shadows`: render a scene with area lights and soft shadows, or write the
 //! chapter's figures.
 
-use ch05_motion_blur::render_setup::{CameraArgs, RenderSetup};
-use ch05_motion_blur::{StratifiedTime, TimeSampling};
+use ch05_motion_blur::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch07_soft_shadows::cli::LightArgs;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
 use ch07_soft_shadows::{AreaLights, CAPABILITIES};
 use ch07_soft_shadows::{figures, render_with};
-use common::cli::{ChapterBinary, parse_number};
-use common::render::Budget;
+use common::cli::parse_number;
 use std::process::ExitCode;
 
 #[derive(clap::Args, Debug)]
@@ -41,11 +39,7 @@ fn check_light_scale(scale: f32) -> anyhow::Result<f32> {
 }
 
 fn main() -> ExitCode {
-    let binary = ChapterBinary {
-        name: "ch07-soft-shadows",
-        about: env!("CARGO_PKG_DESCRIPTION"),
-        render: "Render a scene lit by area lights.",
-    };
+    let binary = common::chapter_binary!("Render a scene lit by area lights.");
     binary.run(run_render, figures::write_all)
 }
 
@@ -61,35 +55,21 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         |scene| command.fuzzy.apply(scene),
         Ok,
     )?;
-    let RenderSetup {
-        world,
-        lens,
-        filter,
-        pixel_sampler,
-        settings,
-        ..
-    } = &setup;
     let args = &command.camera.args;
     args.check_outputs()?;
-    let options = command.fuzzy.options();
     let lights = command.lights.options();
-    let time_sampling = TimeSampling::by_default(world.moves(), &settings.budget);
-    let rendered = match (time_sampling, settings.budget) {
-        (TimeSampling::Stratified, Budget::Samples(spp)) => {
-            let sampler = StratifiedTime::new(pixel_sampler.clone(), spp, args.seed);
-            render_with(world, lights, options, lens, settings, &sampler, filter)
-        }
-        _ => render_with(
-            world,
-            lights,
-            options,
-            lens,
-            settings,
-            pixel_sampler,
-            filter,
-        ),
-    };
-    let mut extra = setup.stats(args.seed);
+    let time_sampling = setup.default_time_sampling();
+    let world = &setup.world;
+    let rendered = render_with(
+        world,
+        lights,
+        command.fuzzy.options(),
+        &setup.lens,
+        &setup.settings,
+        &setup.sampler(time_sampling).map_err(anyhow::Error::msg)?,
+        &setup.filter,
+    );
+    let mut extra = setup.stats();
     extra["area_lights"] = AreaLights::of(&world.scene).lights.len().into();
     extra["point_lights"] = world.scene.point_lights.len().into();
     extra["light_scale"] = serde_json::json!(args.scene.is_none().then_some(light_scale));
@@ -98,10 +78,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     extra["light_sampling"] = lights.sampling.strategy.name().into();
     extra["disc_warp"] = lights.sampling.disc_warp.name().into();
     extra["time_sampling"] = time_sampling.name().into();
-    extra
-        .as_object_mut()
-        .expect("a JSON object")
-        .extend(command.fuzzy.stats());
+    command.fuzzy.record_stats(&mut extra);
     args.write_outputs(&rendered, extra)?;
     args.report_written(
         &rendered,

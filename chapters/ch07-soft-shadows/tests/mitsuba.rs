@@ -8,13 +8,13 @@
 //! With `UPDATE_MITSUBA_RENDERS=1` as well, it replaces the stored renders in
 //! `scenes/mitsuba/` that the test `agreement` and the book compare against.
 
-use ch07_soft_shadows::agreement::{AGREEMENT_SCENES, render_scene_file, scenes_dir};
+use ch07_soft_shadows::agreement::AGREEMENT;
 use common::metrics::refresh_agreement_from_env;
 
 #[test]
 #[ignore = "needs Mitsuba 3 (set MITSUBA_PYTHON)"]
 fn chapter_07_agrees_with_mitsuba() {
-    match refresh_agreement_from_env(&scenes_dir(), AGREEMENT_SCENES, &render_scene_file) {
+    match refresh_agreement_from_env(&AGREEMENT) {
         Ok(lines) => eprintln!("{}", lines.join("\n")),
         Err(message) => panic!("{message}"),
     }

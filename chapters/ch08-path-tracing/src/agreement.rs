@@ -9,27 +9,27 @@ use crate::scene_file::path_options;
 use crate::{Method, render_with};
 use ch05_motion_blur::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AgreementScene, MITSUBA_VARIANT};
-use std::path::{Path, PathBuf};
+use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
+use std::path::Path;
 
-/// The scenes compared, with what each one checks.
-pub const AGREEMENT_SCENES: &[AgreementScene] = &[
-    AgreementScene {
-        name: "cornell-box",
-        checks: "indirect diffuse light, colour bleeding, a mirror and a glass sphere, max_depth 8, roulette",
-        variant: MITSUBA_VARIANT,
-    },
-    AgreementScene {
-        name: "point-and-sky",
-        checks: "a point light and a constant environment picked among three lights, a glass sphere, max_depth 5",
-        variant: MITSUBA_VARIANT,
-    },
-];
-
-/// The chapter's scene directory.
-pub fn scenes_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
-}
+/// The chapter's scene files compared with Mitsuba 3, with what each one checks.
+pub const AGREEMENT: AgreementSet = AgreementSet {
+    label: "chapter 08",
+    scenes_dir: concat!(env!("CARGO_MANIFEST_DIR"), "/scenes"),
+    scenes: &[
+        AgreementScene {
+            name: "cornell-box",
+            checks: "indirect diffuse light, colour bleeding, a mirror and a glass sphere, max_depth 8, roulette",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "point-and-sky",
+            checks: "a point light and a constant environment picked among three lights, a glass sphere, max_depth 5",
+            variant: MITSUBA_VARIANT,
+        },
+    ],
+    render: render_scene_file,
+};
 
 /// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, with the file's
 /// integrator settings.
@@ -42,7 +42,7 @@ pub fn render_scene_file(path: &Path) -> Result<Image, String> {
         &side.lens,
         &settings,
         &sampler,
-        &side.filter,
+        &side.film.filter,
     );
     Ok(rendered.image)
 }

@@ -11,19 +11,19 @@
 //!   `plates-convergence.*`);
 //! - the comparison with Mitsuba 3 (`mitsuba.md` and its images).
 //!
-//! `quick` renders thumbnails at few samples, for CI; the full set takes about a minute.
+//! The quick level renders thumbnails at few samples, for CI.
 
-use crate::agreement::scenes_dir;
+use crate::agreement::AGREEMENT;
 use crate::distribution::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
 use crate::distribution::{DistributionOptions, render_distribution};
 use crate::mis::MisHeuristic;
 use crate::options::PathOptions;
 use crate::scene_file::path_options;
 use crate::{Method, render_with};
-use anyhow::Context;
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
+use common::figure_set::{FigureSet, Level};
 use common::image::Image;
 use common::metrics::{
     Technique, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence, write_convergence_csv,
@@ -33,7 +33,6 @@ use common::output::{write_image, write_text};
 use common::render::{Budget, RenderOutput, RenderSettings};
 use common::sampler::IndependentSampler;
 use std::path::Path;
-use std::time::Instant;
 
 /// The techniques compared, by name.
 pub fn techniques(file: PathOptions) -> Vec<(&'static str, PathOptions)> {
@@ -121,7 +120,7 @@ struct SceneFile {
 
 /// The chapter scene file `name`, loaded.
 fn load(name: &str) -> anyhow::Result<SceneFile> {
-    let file = scenes_dir().join(name);
+    let file = AGREEMENT.scenes_dir().join(name);
     let loaded = common::scene_file::load_scene_file(&file, &[])?;
     crate::CAPABILITIES
         .check(&loaded.scene)
@@ -131,60 +130,47 @@ fn load(name: &str) -> anyhow::Result<SceneFile> {
     Ok(SceneFile { world, options })
 }
 
-/// Sizes and sample counts: thumbnails for `quick`.
+/// Sizes and sample counts: thumbnails at the quick level, the scene files' own sizes in the
+/// book.
 struct Quality {
-    quick: bool,
+    level: Level,
+    /// Samples per pixel of the converged references.
     reference_spp: u64,
+    /// Sample counts of the error-against-time runs.
     budgets: &'static [u64],
 }
 
 impl Quality {
+    fn at(level: Level) -> Self {
+        Quality {
+            level,
+            reference_spp: level.pick(64, 1024),
+            budgets: level.pick(&[1, 4], &[1, 4, 16, 64]),
+        }
+    }
+
     fn size(&self, scene: &MotionScene, quick_size: (u32, u32)) -> (u32, u32) {
         let film = scene.scene.film;
-        if self.quick {
-            quick_size
-        } else {
-            (film.width, film.height)
-        }
+        self.level.pick(quick_size, (film.width, film.height))
     }
 }
 
 /// Writes every figure into `out`.
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
-    common::cli::prepare_output_dir(out)?;
-    let quality = if quick {
-        Quality {
-            quick,
-            reference_spp: 64,
-            budgets: &[1, 4],
-        }
-    } else {
-        Quality {
-            quick,
-            reference_spp: 1024,
-            budgets: &[1, 4, 16, 64],
-        }
-    };
-    let start = Instant::now();
-    ray_tree(out, &quality).context("the ray-tree figures")?;
-    distribution_vs_path(out, &quality).context("distribution against path tracing")?;
-    cornell_techniques(out, &quality).context("NEE, MIS and roulette on the Cornell box")?;
-    glossy_plates(out, &quality).context("MIS on the glossy plates")?;
-    common::metrics::write_agreement_figures(
-        out,
-        "chapter 08",
-        &scenes_dir(),
-        crate::agreement::AGREEMENT_SCENES,
-        &crate::agreement::render_scene_file,
-    )
-    .map_err(anyhow::Error::msg)
-    .context("the comparison with Mitsuba 3")?;
-    eprintln!(
-        "ch08 figures written to {} in {:.1} s",
-        out.display(),
-        start.elapsed().as_secs_f64()
-    );
-    Ok(())
+    let mut figures = FigureSet::start("ch08", out, quick)?;
+    let quality = Quality::at(figures.level());
+    figures.make("the ray-tree figures", |out| ray_tree(out, &quality))?;
+    figures.make("distribution against path tracing", |out| {
+        distribution_vs_path(out, &quality)
+    })?;
+    figures.make("NEE, MIS and roulette on the Cornell box", |out| {
+        cornell_techniques(out, &quality)
+    })?;
+    figures.make("MIS on the glossy plates", |out| {
+        glossy_plates(out, &quality)
+    })?;
+    figures.agreement(&AGREEMENT)?;
+    figures.finish()
 }
 
 // ANCHOR: ray_tree
@@ -195,7 +181,7 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let file = load("cornell-box.xml")?;
     let scene = &file.world;
     let size = (16, 16);
-    let deepest = if quality.quick { 4 } else { 6 };
+    let deepest = quality.level.pick(4, 6);
     let mut csv = String::from("branching,indirect_diffuse,max_depth,rays_per_camera_ray\n");
     let mut series = Vec::new();
     for (branching, indirect) in [(1, true), (2, true), (4, true), (4, false)] {
@@ -228,7 +214,7 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &series,
     )?;
 
-    let spp = if quality.quick { 16 } else { 256 };
+    let spp = quality.level.pick(16, 256);
     let shares = depth_shares(
         scene,
         DistributionOptions::branching(1, 8, true),
@@ -282,7 +268,7 @@ fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         )
     };
     let branching = DistributionOptions::branching(2, depth, true);
-    let tree = drt(branching, if quality.quick { 1 } else { 4 });
+    let tree = drt(branching, quality.level.pick(1, 4));
     let seconds = tree.stats.seconds;
     let paths = path_trace(scene, pt_options, size, Budget::Seconds(seconds), 1);
     let caption = |name: &str, output: &RenderOutput| {
@@ -320,7 +306,7 @@ fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     // The lecture's last slide: Cook's tracer (no indirect diffuse light) against the path
     // tracer, both converged, at the scene's own depth.
     let full = file.options.max_depth;
-    let spp = if quality.quick { 16 } else { 256 };
+    let spp = quality.level.pick(16, 256);
     let cook = drt(DistributionOptions::branching(1, full, false), spp);
     let path_image = render(scene, file.options, size, spp, 2);
     comparison_grid(

@@ -1,8 +1,6 @@
 //! `ch08-path-tracing`: path-trace a scene file, or write the chapter's figures.
 
-use anyhow::Context;
-use ch05_motion_blur::render_setup::{CameraArgs, RenderSetup};
-use ch05_motion_blur::{StratifiedTime, TimeSampling};
+use ch05_motion_blur::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
 use ch07_soft_shadows::AreaLights;
@@ -11,8 +9,6 @@ use ch08_path_tracing::cli::PathArgs;
 use ch08_path_tracing::dimensions::render_counted;
 use ch08_path_tracing::scene_file::path_options;
 use ch08_path_tracing::{CAPABILITIES, Method, figures};
-use common::cli::ChapterBinary;
-use common::render::Budget;
 use common::scene::Scene;
 use std::process::ExitCode;
 
@@ -29,11 +25,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = ChapterBinary {
-        name: "ch08-path-tracing",
-        about: env!("CARGO_PKG_DESCRIPTION"),
-        render: "Path-trace a scene file (--scene FILE.xml).",
-    };
+    let binary = common::chapter_binary!("Path-trace a scene file (--scene FILE.xml).");
     binary.run(run_render, figures::write_all)
 }
 
@@ -76,14 +68,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         command.fuzzy.apply(scene)
     };
     let setup = command.camera.setup(&CAPABILITIES, builtin, adjust, Ok)?;
-    let RenderSetup {
-        world,
-        lens,
-        filter,
-        pixel_sampler,
-        settings,
-        ..
-    } = &setup;
+    let world = &setup.world;
     let options = ch08_path_tracing::PathOptions {
         max_depth: world.scene.max_depth,
         ..command
@@ -99,24 +84,24 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     };
     // Dimensions are counted only for --stats, where they are written.
     let count = args.stats.is_some();
-    let time_sampling = TimeSampling::by_default(world.moves(), &settings.budget);
-    let (rendered, dimensions) = match (time_sampling, settings.budget) {
-        (TimeSampling::Stratified, Budget::Samples(spp)) => {
-            let sampler = StratifiedTime::new(pixel_sampler.clone(), spp, args.seed);
-            render_counted(count, world, method, lens, settings, &sampler, filter)
-        }
-        _ => render_counted(count, world, method, lens, settings, pixel_sampler, filter),
-    };
-    let mut extra = setup.stats(args.seed);
+    let (rendered, dimensions) = render_counted(
+        count,
+        world,
+        method,
+        &setup.lens,
+        &setup.settings,
+        &setup
+            .sampler(setup.default_time_sampling())
+            .map_err(anyhow::Error::msg)?,
+        &setup.filter,
+    );
+    let mut extra = setup.stats();
     extra["nee"] = options.nee.into();
     extra["mis"] = options.mis.name().into();
     extra["rr_depth"] = serde_json::json!(options.rr_depth);
     extra["area_lights"] = AreaLights::of(&world.scene).lights.len().into();
     extra["point_lights"] = world.scene.point_lights.len().into();
-    extra
-        .as_object_mut()
-        .context("a JSON object")?
-        .extend(command.fuzzy.stats());
+    command.fuzzy.record_stats(&mut extra);
     if let Some(dimensions) = dimensions {
         extra["dimensions_per_path"] = dimensions.to_json();
     }

@@ -257,80 +257,95 @@ impl AgreementScene {
     }
 }
 
-/// Where the stored renders of a chapter's scenes are: `scenes/mitsuba/`.
-pub fn stored_renders_dir(scenes_dir: &Path) -> PathBuf {
-    scenes_dir.join("mitsuba")
-}
-
 /// A chapter's render of one scene file at [`AGREEMENT_SPP`] samples per pixel.
-pub type RenderSceneFile<'a> = &'a dyn Fn(&Path) -> Result<Image, String>;
+pub type RenderSceneFile = fn(&Path) -> Result<Image, String>;
 
-/// Our render of `scene` measured against its stored renders.
-pub fn stored_agreement(
-    scenes_dir: &Path,
-    scene: &AgreementScene,
-    render: RenderSceneFile,
-) -> Result<(Image, ReferenceRenders, Agreement), String> {
-    let renders = ReferenceRenders::load(&stored_renders_dir(scenes_dir), scene.name)
-        .map_err(|e| e.to_string())?;
-    let ours = render(&scene.file(scenes_dir))?;
-    let agreement = renders.agreement(&ours);
-    Ok((ours, renders, agreement))
+/// A chapter's agreement set: the scene files it checks against Mitsuba 3, where they are, and
+/// the chapter's render of one of them. The tests, the book's figures and the refresh with
+/// Mitsuba all start from it.
+#[derive(Clone, Copy, Debug)]
+pub struct AgreementSet {
+    /// What the figures call our render: `"chapter 07"`, say.
+    pub label: &'static str,
+    /// The chapter's scene folder; the stored renders are in its `mitsuba/` folder.
+    pub scenes_dir: &'static str,
+    /// The scenes compared, with what each one checks.
+    pub scenes: &'static [AgreementScene],
+    /// The chapter's render of a scene file.
+    pub render: RenderSceneFile,
 }
 
-/// Checks every scene against its stored renders: ours must be as unbiased as the other
-/// renderer's second render ([`BIAS_SLACK`]) and no noisier ([`NOISE_TOLERANCE`]). Returns a
-/// message naming each scene that fails.
-pub fn check_stored_agreement(
-    scenes_dir: &Path,
-    scenes: &[AgreementScene],
-    render: RenderSceneFile,
-) -> Result<(), String> {
-    let mut failures = Vec::new();
-    for scene in scenes {
-        let (_, _, agreement) = stored_agreement(scenes_dir, scene, render)?;
-        if !agreement.holds() {
-            failures.push(format!("{} ({}): {agreement:?}", scene.name, scene.checks));
+impl AgreementSet {
+    /// The chapter's scene folder.
+    pub fn scenes_dir(&self) -> &Path {
+        Path::new(self.scenes_dir)
+    }
+
+    /// Where the stored renders of the scenes are: `scenes/mitsuba/`.
+    pub fn stored_renders_dir(&self) -> PathBuf {
+        self.scenes_dir().join("mitsuba")
+    }
+
+    /// The file of `scene`.
+    pub fn file(&self, scene: &AgreementScene) -> PathBuf {
+        scene.file(self.scenes_dir())
+    }
+
+    /// Our render of `scene` measured against its stored renders.
+    pub fn stored(
+        &self,
+        scene: &AgreementScene,
+    ) -> Result<(Image, ReferenceRenders, Agreement), String> {
+        let renders = ReferenceRenders::load(&self.stored_renders_dir(), scene.name)
+            .map_err(|e| e.to_string())?;
+        let ours = (self.render)(&self.file(scene))?;
+        let agreement = renders.agreement(&ours);
+        Ok((ours, renders, agreement))
+    }
+
+    /// Checks every scene against its stored renders: ours must be as unbiased as the other
+    /// renderer's second render ([`BIAS_SLACK`]) and no noisier ([`NOISE_TOLERANCE`]). Returns
+    /// a message naming each scene that fails.
+    pub fn check_stored(&self) -> Result<(), String> {
+        let mut failures = Vec::new();
+        for scene in self.scenes {
+            let (_, _, agreement) = self.stored(scene)?;
+            if !agreement.holds() {
+                failures.push(format!("{} ({}): {agreement:?}", scene.name, scene.checks));
+            }
+        }
+        if failures.is_empty() {
+            Ok(())
+        } else {
+            Err(format!(
+                "disagreement with Mitsuba on {}",
+                failures.join("; ")
+            ))
         }
     }
-    if failures.is_empty() {
-        Ok(())
-    } else {
-        Err(format!(
-            "disagreement with Mitsuba on {}",
-            failures.join("; ")
-        ))
-    }
-}
 
-/// Writes the book's comparison figures `mitsuba-<name>.png` and the table `mitsuba.md` for
-/// a chapter's scenes.
-pub fn write_agreement_figures(
-    out: &Path,
-    ours_label: &str,
-    scenes_dir: &Path,
-    scenes: &[AgreementScene],
-    render: RenderSceneFile,
-) -> Result<(), String> {
-    let mut rows = Vec::new();
-    for scene in scenes {
-        let (ours, renders, agreement) = stored_agreement(scenes_dir, scene, render)?;
-        write_agreement_figure(
-            &out.join(format!("mitsuba-{}.png", scene.name)),
-            ours_label,
-            &ours,
-            &renders,
-            10.0,
-            2,
-        )
-        .map_err(|e| e.to_string())?;
-        rows.push((scene.name.to_string(), renders, agreement));
+    /// Writes the book's comparison figures `mitsuba-<name>.png` and the table `mitsuba.md`.
+    pub fn write_figures(&self, out: &Path) -> Result<(), String> {
+        let mut rows = Vec::new();
+        for scene in self.scenes {
+            let (ours, renders, agreement) = self.stored(scene)?;
+            write_agreement_figure(
+                &out.join(format!("mitsuba-{}.png", scene.name)),
+                self.label,
+                &ours,
+                &renders,
+                10.0,
+                2,
+            )
+            .map_err(|e| e.to_string())?;
+            rows.push((scene.name.to_string(), renders, agreement));
+        }
+        let table: Vec<_> = rows
+            .iter()
+            .map(|(name, renders, agreement)| (name.clone(), renders, *agreement))
+            .collect();
+        write_text(&out.join("mitsuba.md"), &agreement_table(&table)).map_err(|e| e.to_string())
     }
-    let table: Vec<_> = rows
-        .iter()
-        .map(|(name, renders, agreement)| (name.clone(), renders, *agreement))
-        .collect();
-    write_text(&out.join("mitsuba.md"), &agreement_table(&table)).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

@@ -8,8 +8,7 @@ use std::path::Path;
 use std::process::Command;
 
 use super::agreement::{
-    AGREEMENT_SPP, AgreementScene, REFERENCE_SPP, ReferenceRenders, RenderProvenance,
-    RenderSceneFile, stored_renders_dir,
+    AGREEMENT_SPP, AgreementSet, REFERENCE_SPP, ReferenceRenders, RenderProvenance,
 };
 use crate::image::Image;
 use crate::output::read_image;
@@ -114,20 +113,18 @@ pub fn make_reference_renders(
     })
 }
 
-/// Renders every scene afresh with Mitsuba, compares ours with the new renders (as
-/// [`check_stored_agreement`](super::check_stored_agreement) does with the stored ones) and, with `update`, stores them.
+/// Renders every scene of `set` afresh with Mitsuba, compares ours with the new renders (as
+/// [`AgreementSet::check_stored`] does with the stored ones) and, with `update`, stores them.
 /// Returns one line per scene with the numbers, and an error naming the scenes that disagree.
 pub fn refresh_agreement(
     python: &str,
-    scenes_dir: &Path,
-    scenes: &[AgreementScene],
-    render: RenderSceneFile,
+    set: &AgreementSet,
     update: bool,
 ) -> Result<Vec<String>, String> {
     let mut lines = Vec::new();
     let mut failures = Vec::new();
-    for scene in scenes {
-        let file = scene.file(scenes_dir);
+    for scene in set.scenes {
+        let file = set.file(scene);
         let renders = make_reference_renders(
             python,
             scene.variant,
@@ -136,7 +133,7 @@ pub fn refresh_agreement(
             REFERENCE_SPP,
             &[],
         )?;
-        let agreement = renders.agreement(&render(&file)?);
+        let agreement = renders.agreement(&(set.render)(&file)?);
         lines.push(format!(
             "{} ({}): RMSE ours {:.2e} / Mitsuba {:.2e}, bias_blocks ours {:.4} / Mitsuba {:.4}",
             scene.name,
@@ -151,7 +148,7 @@ pub fn refresh_agreement(
         }
         if update {
             renders
-                .save(&stored_renders_dir(scenes_dir), scene.name)
+                .save(&set.stored_renders_dir(), scene.name)
                 .map_err(|e| e.to_string())?;
         }
     }
@@ -170,13 +167,9 @@ pub const UPDATE_MITSUBA_RENDERS: &str = "UPDATE_MITSUBA_RENDERS";
 
 /// [`refresh_agreement`] with the Python named by [`MITSUBA_PYTHON`], storing the new renders
 /// when [`UPDATE_MITSUBA_RENDERS`] is `1`: what each chapter's ignored `tests/mitsuba.rs` runs.
-pub fn refresh_agreement_from_env(
-    scenes_dir: &Path,
-    scenes: &[AgreementScene],
-    render: RenderSceneFile,
-) -> Result<Vec<String>, String> {
+pub fn refresh_agreement_from_env(set: &AgreementSet) -> Result<Vec<String>, String> {
     let python = mitsuba_python()
         .ok_or_else(|| format!("set {MITSUBA_PYTHON} to a Python that has the mitsuba package"))?;
     let update = std::env::var(UPDATE_MITSUBA_RENDERS).is_ok_and(|v| v == "1");
-    refresh_agreement(&python, scenes_dir, scenes, render, update)
+    refresh_agreement(&python, set, update)
 }

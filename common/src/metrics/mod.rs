@@ -14,10 +14,9 @@ mod mitsuba;
 mod plots;
 
 pub use agreement::{
-    AGREEMENT_SPP, Agreement, AgreementScene, BIAS_SLACK, Comparison, NOISE_TOLERANCE,
-    REFERENCE_SPP, ReferenceRenders, RenderProvenance, RenderSceneFile, agreement_table,
-    check_stored_agreement, stored_agreement, stored_renders_dir, write_agreement_figure,
-    write_agreement_figures,
+    AGREEMENT_SPP, Agreement, AgreementScene, AgreementSet, BIAS_SLACK, Comparison,
+    NOISE_TOLERANCE, REFERENCE_SPP, ReferenceRenders, RenderProvenance, RenderSceneFile,
+    agreement_table, write_agreement_figure,
 };
 pub use bias_blocks::{BIAS_BLOCK_SIZE, BIAS_THRESHOLD, bias_blocks};
 pub use convergence::{ConvergenceRecord, Technique, run_convergence};

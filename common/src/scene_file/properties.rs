@@ -13,7 +13,7 @@ use super::description::PropertyValue;
 use super::error::{SceneError, TextPosition};
 use super::reader::Reader;
 use super::transform::read_transform;
-use super::values::{parse_boolean, parse_float, parse_integer, parse_rgb, parse_vec3};
+use super::values::{parse_boolean, parse_float, parse_integer, parse_rgb};
 
 /// `(time, matrix)` keyframes of an `<animation>`.
 type Keyframes = Vec<(f32, Mat4)>;
@@ -253,8 +253,8 @@ fn read_value(reader: &Reader, node: Node) -> Result<PropertyValue, SceneError> 
             reader.required_attribute(node, "value")?,
         )),
         "rgb" => value(|t| parse_rgb(t).map(PropertyValue::Rgb)),
-        "point" => read_xyz(reader, node).map(PropertyValue::Point),
-        "vector" => read_xyz(reader, node).map(PropertyValue::Vector),
+        "point" => reader.xyz(node).map(PropertyValue::Point),
+        "vector" => reader.xyz(node).map(PropertyValue::Vector),
         "transform" => read_transform(reader, node).map(PropertyValue::Transform),
         "animation" => read_animation(reader, node).map(PropertyValue::Animation),
         _ => Err(reader.error(
@@ -266,20 +266,6 @@ fn read_value(reader: &Reader, node: Node) -> Result<PropertyValue, SceneError> 
             ),
         )),
     }
-}
-
-/// A point or vector written as `value="x, y, z"` or as `x`, `y`, `z` attributes (default 0).
-pub(super) fn read_xyz(reader: &Reader, node: Node) -> Result<Vec3, SceneError> {
-    if let Some(value) = reader.parsed_attribute(node, "value", parse_vec3)? {
-        return Ok(value);
-    }
-    let mut xyz = Vec3::ZERO;
-    for (axis, name) in ["x", "y", "z"].into_iter().enumerate() {
-        if let Some(coordinate) = reader.parsed_attribute(node, name, parse_float)? {
-            xyz[axis] = coordinate;
-        }
-    }
-    Ok(xyz)
 }
 
 /// How messages name the kind of a value.

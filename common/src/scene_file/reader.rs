@@ -7,8 +7,9 @@ use std::path::Path;
 use roxmltree::{Document, Node};
 
 use super::error::{SceneError, SceneWarning, TextPosition};
-use super::values::substitute;
+use super::values::{parse_float, parse_vec3, substitute};
 use crate::scene::Material;
+use glam::Vec3;
 
 /// Reads attributes with `$name` substitution and turns problems into located errors.
 pub(super) struct Reader<'a, 'input> {
@@ -104,5 +105,20 @@ impl<'a, 'input> Reader<'a, 'input> {
                 self.error(node, format!("attribute \"{name}\" of <{tag}>: {message}"))
             }),
         }
+    }
+
+    /// A point or vector written as `value="x, y, z"` or as `x`, `y`, `z` attributes of
+    /// `node` (each 0 when left out).
+    pub fn xyz(&self, node: Node) -> Result<Vec3, SceneError> {
+        if let Some(value) = self.parsed_attribute(node, "value", parse_vec3)? {
+            return Ok(value);
+        }
+        let mut xyz = Vec3::ZERO;
+        for (axis, name) in ["x", "y", "z"].into_iter().enumerate() {
+            if let Some(coordinate) = self.parsed_attribute(node, name, parse_float)? {
+                xyz[axis] = coordinate;
+            }
+        }
+        Ok(xyz)
     }
 }

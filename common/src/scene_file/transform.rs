@@ -9,7 +9,6 @@ use glam::{Mat4, Vec3, Vec4};
 use roxmltree::Node;
 
 use super::error::SceneError;
-use super::properties::read_xyz;
 use super::reader::Reader;
 use super::values::{parse_float, parse_floats, parse_vec3};
 
@@ -19,7 +18,7 @@ pub(super) fn read_transform(reader: &Reader, node: Node) -> Result<Mat4, SceneE
     for child in node.children().filter(Node::is_element) {
         let step = match child.tag_name().name() {
             "lookat" => look_at(reader, child)?,
-            "translate" => Mat4::from_translation(read_xyz(reader, child)?),
+            "translate" => Mat4::from_translation(reader.xyz(child)?),
             "rotate" => rotate(reader, child)?,
             "scale" => scale(reader, child)?,
             "matrix" => matrix_element(reader, child)?,
@@ -79,7 +78,7 @@ fn look_at(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
 fn rotate(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
     let axis = match reader.parsed_attribute(node, "axis", parse_vec3)? {
         Some(axis) => axis,
-        None => read_xyz(reader, node)?,
+        None => reader.xyz(node)?,
     };
     let angle = reader
         .parsed_attribute(node, "angle", parse_float)?

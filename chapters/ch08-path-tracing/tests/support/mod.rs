@@ -22,7 +22,9 @@ pub struct SceneFile {
 
 /// The chapter's scene file `name`.
 pub fn scene_file(name: &str) -> SceneFile {
-    let path = ch08_path_tracing::agreement::scenes_dir().join(name);
+    let path = ch08_path_tracing::agreement::AGREEMENT
+        .scenes_dir()
+        .join(name);
     let loaded = common::scene_file::load_scene_file(&path, &[]).expect("the scene loads");
     ch08_path_tracing::CAPABILITIES
         .check(&loaded.scene)
