@@ -73,10 +73,10 @@ fn a_smooth_scene_traced_both_ways_is_chapter_05s_image_bit_for_bit() {
 /// hits a point), while a lobe of any finite exponent shows it as a highlight whose energy
 /// stays the same as the lobe narrows: a speck that the mirror image lacks however large `n`.
 fn floor_scene(floor: Material) -> MotionScene {
-    let mut scene = Builtin::Floor.build(DEFAULT_DEPTH, 1.0);
-    scene.scene.surfaces[0].material = floor;
-    scene.scene.point_lights.truncate(1);
-    scene
+    let mut world = Builtin::Floor.build(DEFAULT_DEPTH, 1.0);
+    world.scene.surfaces[0].material = floor;
+    world.scene.point_lights.truncate(1);
+    world
 }
 
 #[test]

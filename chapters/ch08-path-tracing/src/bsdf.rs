@@ -113,7 +113,7 @@ impl Bsdf<'_> {
     }
 
     /// `f(wo, wi) cos θ_i` without the delta parts (0 for a mirror or smooth glass).
-    #[inline(always)]
+    #[inline]
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         let hit = self.hit;
         match *self.material {

@@ -48,7 +48,7 @@ pub fn light_sample_contribution(
 /// each at shutter time `time`, traced only where the light would add something. A point
 /// light is a delta, so no number is drawn and no MIS weight is needed: each one is counted
 /// with probability 1, as chapter 01 lights its matte surfaces.
-#[inline(always)]
+#[inline]
 pub fn point_lights<W: World>(
     world: &W,
     lights: &SceneLights,

@@ -114,7 +114,8 @@ pub struct PathTracer<'a> {
 
 impl PathTracer<'_> {
     // ANCHOR: radiance
-    /// The radiance arriving along `camera_ray`; every ray of the path keeps its time.
+    /// The radiance arriving along `camera_ray`: the path, traced segment after segment
+    /// until one of them ends it. Every ray of the path keeps the camera ray's time.
     pub fn radiance<S: Sampler>(
         &self,
         camera_ray: &Ray,
@@ -133,7 +134,6 @@ impl PathTracer<'_> {
 
     /// Segment `depth` of `path`, along `ray`: the light it finds, the light sampled where it
     /// ends, and the ray of the next segment (`None` where the path ends).
-    #[inline(never)]
     fn segment<S: Sampler>(
         &self,
         ray: &Ray,
@@ -142,6 +142,7 @@ impl PathTracer<'_> {
         sampler: &mut S,
         counters: &mut SampleCounters,
     ) -> Option<Ray> {
+        // Where the segment ends, or the environment if it leaves the scene.
         counters.rays += 1;
         let Some(hit) = self.world.intersect(ray) else {
             if self.lights.has_environment() {
@@ -151,6 +152,8 @@ impl PathTracer<'_> {
             }
             return None;
         };
+        // 1. What the surface emits, weighted against the light sample that could have found
+        //    it.
         if self.lights.has_area_lights() {
             path.gather(self.emitted(&hit, ray, path.previous));
         }
@@ -170,6 +173,7 @@ impl PathTracer<'_> {
             ray.dir.length()
         );
         let wo = -ray.dir;
+        // 2. Next-event estimation, where the BSDF is not a delta.
         if self.options.nee && !bsdf.is_delta() {
             path.gather(self.next_event(&bsdf, wo, ray.time, sampler, counters));
         }
@@ -179,6 +183,7 @@ impl PathTracer<'_> {
             // were the sample's last, so the image is the same.
             return None;
         }
+        // 3. A BSDF sample extends the path; from `rr_depth` on, the roulette may end it.
         let next = self.extend_path(&bsdf, wo, ray.time, depth, path.carried, sampler)?;
         path.carried = next.carried;
         path.previous = Some(next.previous);
