@@ -321,6 +321,25 @@ impl RenderArgs {
         Ok(self.scene.as_deref())
     }
 
+    /// The scene to render, what the chapter takes from its file, and its name: the
+    /// `--scene` file as `read_file` reads it, or the chapter's `builtin` scene with its name.
+    pub fn scene_or_builtin<T>(
+        &self,
+        read_file: impl FnOnce(&Path) -> anyhow::Result<(Scene, T)>,
+        builtin: impl FnOnce() -> anyhow::Result<(Scene, String)>,
+    ) -> anyhow::Result<(Scene, Option<T>, String)> {
+        match self.scene_file()? {
+            Some(path) => {
+                let (scene, from_file) = read_file(path)?;
+                Ok((scene, Some(from_file), path.display().to_string()))
+            }
+            None => {
+                let (scene, name) = builtin()?;
+                Ok((scene, None, name))
+            }
+        }
+    }
+
     /// `scene` with the longest path `--max-depth` asks for, if it asks.
     pub fn with_max_depth(&self, mut scene: Scene) -> Scene {
         if let Some(max_depth) = self.max_depth {

@@ -26,40 +26,39 @@ fn main() -> ExitCode {
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let (scene, default_spp, scene_name) = match command.args.scene_file()? {
-        Some(path) => {
-            let scene = read_scene_file(path, &command.args.define, &CAPABILITIES)?;
+    let args = &command.args;
+    let (scene, file_spp, scene_name) = args.scene_or_builtin(
+        |path| {
+            let scene = read_scene_file(path, &args.define, &CAPABILITIES)?;
             let spp = u64::from(scene.sampler.sample_count.max(1));
-            (scene, spp, path.display().to_string())
-        }
-        None => (
-            command.builtin.build(DEFAULT_MAX_DEPTH),
-            1,
-            command.builtin.name().to_string(),
-        ),
-    };
-    let scene = command.args.with_max_depth(scene);
-    let settings = command
-        .args
-        .settings((scene.film.width, scene.film.height), default_spp)?;
+            Ok((scene, spp))
+        },
+        || {
+            let name = command.builtin.name().to_string();
+            Ok((command.builtin.build(DEFAULT_MAX_DEPTH), name))
+        },
+    )?;
+    let default_spp = file_spp.unwrap_or(1);
+    let scene = args.with_max_depth(scene);
+    let settings = args.settings((scene.film.width, scene.film.height), default_spp)?;
     let pixel = command.pixel.unwrap_or_else(|| {
         // A scene file that asks for several samples per pixel expects them spread over the
         // pixel, as Mitsuba spreads them; Whitted's own choice is the centre.
         let square = |n: u64| (n as f64).sqrt().round().powi(2) as u64 == n;
         match settings.budget {
-            Budget::Samples(spp) if command.args.scene.is_some() && spp > 1 && square(spp) => {
+            Budget::Samples(spp) if args.scene.is_some() && spp > 1 && square(spp) => {
                 PixelPattern::Grid
             }
             _ => PixelPattern::Centre,
         }
     });
-    if pixel == PixelPattern::Grid && command.args.time.is_some() {
+    if pixel == PixelPattern::Grid && args.time.is_some() {
         anyhow::bail!(
             "--pixel grid needs a fixed --spp (a square such as 4, 16 or 64), not --time"
         );
     }
-    command.args.check_outputs()?;
-    let Some(rendered) = render(&scene, &settings, pixel, command.args.seed) else {
+    args.check_outputs()?;
+    let Some(rendered) = render(&scene, &settings, pixel, args.seed) else {
         anyhow::bail!(
             "--pixel grid places the samples of a pixel on a k x k grid, so --spp must be a square (1, 4, 9, 16, ...)"
         );
@@ -68,9 +67,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         "scene": scene_name,
         "max_depth": scene.max_depth,
         "pixel": format!("{pixel:?}").to_lowercase(),
-        "seed": command.args.seed,
+        "seed": args.seed,
     });
-    command.args.write_outputs(&rendered, extra)?;
-    command.args.report_written(&rendered, "");
+    args.write_outputs(&rendered, extra)?;
+    args.report_written(&rendered, "");
     Ok(())
 }

@@ -25,17 +25,19 @@ fn main() -> ExitCode {
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let (scene, film, scene_name) = match command.args.scene_file()? {
-        Some(path) => {
-            let (scene, film) = read_with_film_side(path, &command.args.define, &CAPABILITIES)?;
-            (scene, Some(film), path.display().to_string())
-        }
-        None => (
-            command.builtin.build(DEFAULT_MAX_DEPTH),
-            None,
-            command.builtin.name().to_string(),
-        ),
-    };
+    let (scene, film, scene_name) = command.args.scene_or_builtin(
+        |path| {
+            Ok(read_with_film_side(
+                path,
+                &command.args.define,
+                &CAPABILITIES,
+            )?)
+        },
+        || {
+            let name = command.builtin.name().to_string();
+            Ok((command.builtin.build(DEFAULT_MAX_DEPTH), name))
+        },
+    )?;
     let scene = command.args.with_max_depth(scene);
     let size = (scene.film.width, scene.film.height);
     let film = command

@@ -29,21 +29,23 @@ fn main() -> ExitCode {
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let (scene, scene_lens, film, scene_name) = match command.args.scene_file()? {
-        Some(path) => {
+    let (scene, from_file, scene_name) = command.args.scene_or_builtin(
+        |path| {
             let (scene, film) = read_with_film_side(path, &command.args.define, &CAPABILITIES)?;
             let lens = lens_of(&scene.camera).map_err(|message| CliError::Unrenderable {
                 file: path.to_path_buf(),
                 message,
             })?;
-            (scene, lens, Some(film), path.display().to_string())
-        }
-        None => (
-            command.builtin.build(DEFAULT_DEPTH),
-            command.builtin.default_lens(),
-            None,
-            command.builtin.name().to_string(),
-        ),
+            Ok((scene, (film, lens)))
+        },
+        || {
+            let name = command.builtin.name().to_string();
+            Ok((command.builtin.build(DEFAULT_DEPTH), name))
+        },
+    )?;
+    let (film, scene_lens) = match from_file {
+        Some((film, lens)) => (Some(film), lens),
+        None => (None, command.builtin.default_lens()),
     };
     let lens = command.lens.lens(scene_lens)?;
     let scene = command.args.with_max_depth(scene);

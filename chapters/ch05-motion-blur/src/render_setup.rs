@@ -65,16 +65,16 @@ impl CameraArgs {
         adjust: impl FnOnce(Scene) -> anyhow::Result<Scene>,
         adjust_world: impl FnOnce(MotionScene) -> anyhow::Result<MotionScene>,
     ) -> anyhow::Result<RenderSetup> {
-        let (scene, side, name) = match self.args.scene_file()? {
-            Some(path) => {
-                let (scene, side) = read_with_camera_side(path, &self.args.define, capabilities)?;
-                (scene, Some(side), path.display().to_string())
-            }
-            None => {
-                let (scene, name) = builtin()?;
-                (scene, None, name)
-            }
-        };
+        let (scene, side, name) = self.args.scene_or_builtin(
+            |path| {
+                Ok(read_with_camera_side(
+                    path,
+                    &self.args.define,
+                    capabilities,
+                )?)
+            },
+            builtin,
+        )?;
         let scene = self.args.with_max_depth(adjust(scene)?);
         let world = motion_for_render(scene).map_err(|message| CliError::Unrenderable {
             file: name.clone().into(),
