@@ -1,12 +1,16 @@
-//! The book's side of the exercises: stubs on the page, no markers anywhere.
+//! The book's side of the exercises: stubs on the page, solutions only after their exercise.
 //!
-//! Two things happen to every chapter, after mdBook's own `links` preprocessor has expanded the
-//! `{{#include}}`s:
+//! Three things happen to every chapter, after mdBook's own `links` preprocessor has expanded
+//! the `{{#include}}`s:
 //!
 //! - a line `{{#exercise path/to/file.rs:anchor}}` becomes a Rust code block showing that
-//!   anchor with its solution replaced by `todo!()`, cut out as in the student edition;
-//! - solution marker lines are dropped, so a solution shown with `{{#include file.rs:anchor}}`
-//!   reads as plain code.
+//!   anchor with its solution replaced by `todo!()`, cut out as in the student edition,
+//!   followed by the solution in a collapsed "Solution" block;
+//! - a solution region inside any other code block (an `{{#include}}` of code that holds an
+//!   exercise) is shown as its `todo!()` too, so no page gives an answer away before its
+//!   exercise; marker lines outside code blocks are dropped;
+//! - a page that writes out a line of any exercise's solution outside its "Solution" block is
+//!   an error naming the page, the exercise and the line ([`solution_leaks`]).
 //!
 //! Both leave fenced code blocks alone where that matters: a `{{#exercise}}` line inside a fence
 //! is shown as written (that is how a page documents the syntax). A page that needs to show the
@@ -18,6 +22,7 @@ use anyhow::{Context, Result, bail};
 use mdbook_driver::book::Book;
 use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
 
+use crate::exercise_list;
 use crate::solution_markers::{self, Marker};
 
 /// A page containing this comment keeps its solution marker lines.
@@ -34,12 +39,19 @@ impl Preprocessor for ExercisePreprocessor {
 
     fn run(&self, context: &PreprocessorContext, mut book: Book) -> Result<Book> {
         let src_dir = context.root.join(&context.config.book.src);
+        let workspace = context.root.parent().unwrap_or(Path::new("."));
+        let solutions = known_solutions(workspace)?;
         let mut problems = Vec::new();
         book.for_each_chapter_mut(|chapter| {
             let Some(path) = &chapter.path else { return };
             let page_dir = src_dir.join(path.parent().unwrap_or(Path::new("")));
             match render_page(&chapter.content, &page_dir) {
-                Ok(content) => chapter.content = content,
+                Ok(content) => {
+                    for leak in solution_leaks(&content, &solutions) {
+                        problems.push(format!("{}: {leak}", path.display()));
+                    }
+                    chapter.content = content;
+                }
                 Err(error) => problems.push(format!("{}: {error:#}", path.display())),
             }
         });
@@ -56,8 +68,28 @@ pub fn render_page(content: &str, page_dir: &Path) -> Result<String> {
     let keep_markers = content.contains(KEEP_MARKERS);
     let mut out = String::with_capacity(content.len());
     let mut open_fence: Option<Fence> = None;
+    let mut in_solution = false;
     for line in content.lines() {
         let trimmed = line.trim_start();
+        if !keep_markers && open_fence.is_some() {
+            // A solution region in shown code: its `todo!()`, as the student sees it.
+            match Marker::of_line(line) {
+                Some(Marker::Begin) => {
+                    let indent = &line[..line.len() - trimmed.len()];
+                    out.push_str(indent);
+                    out.push_str(&solution_markers::todo_call(None));
+                    out.push('\n');
+                    in_solution = true;
+                    continue;
+                }
+                Some(Marker::End) => {
+                    in_solution = false;
+                    continue;
+                }
+                None if in_solution => continue,
+                None => {}
+            }
+        }
         if let Some(fence) = Fence::of_line(trimmed) {
             open_fence = match open_fence {
                 None => Some(fence),
@@ -134,7 +166,107 @@ fn exercise_block(target: &str, page_dir: &Path) -> Result<String> {
         .with_context(|| format!("cannot read {}", file.display()))?;
     let stub =
         solution_markers::book_stub(&source, anchor).with_context(|| format!("in {path}"))?;
-    Ok(format!("```rust\n{stub}\n```\n"))
+    let solution =
+        solution_markers::book_solution(&source, anchor).with_context(|| format!("in {path}"))?;
+    Ok(format!(
+        "```rust\n{stub}\n```\n\n{SOLUTION_OPEN}\n\n```rust\n{solution}\n```\n\n{SOLUTION_CLOSE}\n"
+    ))
+}
+
+/// Opens the collapsed block that shows an exercise's solution after the exercise.
+const SOLUTION_OPEN: &str = "<details class=\"solution\"><summary>Solution</summary>";
+/// Closes it.
+const SOLUTION_CLOSE: &str = "</details>";
+
+/// The solution lines of every listed exercise, each with its exercise's name, as
+/// [`normalized`] compares them. Lines too short to be telling (a brace, `None`, `x`) are
+/// left out, and so are lines that the workspace's code also holds outside any solution
+/// (`let d2 = to_light.length_squared();` shows nothing away).
+fn known_solutions(workspace: &Path) -> Result<Vec<(String, String)>> {
+    let mut elsewhere = std::collections::HashSet::new();
+    for dir in ["common", "chapters"] {
+        collect_code_outside_solutions(&workspace.join(dir), &mut elsewhere)?;
+    }
+    let mut known = Vec::new();
+    for exercise in exercise_list::load(workspace)? {
+        let file = workspace.join(&exercise.file);
+        let source = std::fs::read_to_string(&file)
+            .with_context(|| format!("cannot read {}", file.display()))?;
+        let lines = solution_markers::solution_lines(&source, &exercise.anchor)
+            .with_context(|| format!("in {}", exercise.file.display()))?;
+        for line in lines {
+            let line = normalized(&line);
+            if line.len() >= MIN_TELLING_LENGTH
+                && !line.starts_with("//")
+                && !elsewhere.contains(&line)
+            {
+                known.push((exercise.name.clone(), line));
+            }
+        }
+    }
+    Ok(known)
+}
+
+/// Every line of the `.rs` files under `dir` that is outside a solution region, normalized.
+fn collect_code_outside_solutions(
+    dir: &Path,
+    lines: &mut std::collections::HashSet<String>,
+) -> Result<()> {
+    for entry in std::fs::read_dir(dir).with_context(|| format!("cannot list {}", dir.display()))? {
+        let path = entry?.path();
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if path.is_dir() && name != "target" && !name.starts_with('.') {
+            collect_code_outside_solutions(&path, lines)?;
+        } else if name.ends_with(".rs") {
+            let source = std::fs::read_to_string(&path)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            let mut in_solution = false;
+            for line in source.lines() {
+                match Marker::of_line(line) {
+                    Some(Marker::Begin) => in_solution = true,
+                    Some(Marker::End) => in_solution = false,
+                    None if !in_solution => {
+                        lines.insert(normalized(line));
+                    }
+                    None => {}
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// How many characters, spaces left out, a solution line needs to count as the solution's
+/// own rather than any code's (`return None;`, `let mut sum = 0.0;`).
+const MIN_TELLING_LENGTH: usize = 24;
+
+/// A line with its spaces left out: a copy typed with other spacing is the same line.
+fn normalized(line: &str) -> String {
+    line.chars().filter(|c| !c.is_whitespace()).collect()
+}
+
+/// Every line of `page` outside its "Solution" blocks that is a line of a known solution:
+/// an answer given away before (or without) its exercise.
+pub fn solution_leaks(page: &str, solutions: &[(String, String)]) -> Vec<String> {
+    let mut leaks = Vec::new();
+    let mut in_solution_block = false;
+    for line in page.lines() {
+        let trimmed = line.trim();
+        if trimmed == SOLUTION_OPEN {
+            in_solution_block = true;
+        } else if trimmed == SOLUTION_CLOSE {
+            in_solution_block = false;
+        } else if !in_solution_block {
+            let shown = normalized(line);
+            if let Some((name, _)) = solutions.iter().find(|(_, line)| *line == shown) {
+                leaks.push(format!(
+                    "`{trimmed}` is a line of the solution of {name}: show it only in the \
+                     exercise's Solution block"
+                ));
+            }
+        }
+    }
+    leaks
 }
 
 #[cfg(test)]
@@ -156,7 +288,9 @@ mod tests {
         let page = "Try it:\n\n{{#exercise code/optics.rs:reflect}}\n\nDone.\n";
         assert_eq!(
             render_page(page, dir.path()).unwrap(),
-            "Try it:\n\n```rust\npub fn reflect(x: f32) -> f32 {\n    todo!()\n}\n```\n\nDone.\n"
+            "Try it:\n\n```rust\npub fn reflect(x: f32) -> f32 {\n    todo!()\n}\n```\n\n\
+             <details class=\"solution\"><summary>Solution</summary>\n\n\
+             ```rust\npub fn reflect(x: f32) -> f32 {\n    -x\n}\n```\n\n</details>\n\nDone.\n"
         );
     }
 
@@ -173,10 +307,98 @@ mod tests {
     }
 
     #[test]
-    fn strips_markers_from_included_solutions() {
-        let page = format!("```rust\n{OPTICS}```\n");
+    fn included_code_shows_the_stub_of_an_exercise_it_holds() {
+        let page = format!("```rust\n{OPTICS}```\nBEGIN and END outside code:\n// END SOLUTION\n");
         let rendered = render_page(&page, Path::new(".")).unwrap();
-        assert!(rendered.contains("{\n    -x\n}"), "{rendered}");
+        assert!(rendered.contains("{\n    todo!()\n}"), "{rendered}");
+        assert!(!rendered.contains("-x"), "{rendered}");
+        assert!(!rendered.contains("SOLUTION"), "{rendered}");
+    }
+
+    #[test]
+    fn a_solution_written_out_on_a_page_is_found_but_not_in_its_block() {
+        let solutions = vec![(
+            "ch01-reflect".to_string(),
+            normalized("wi - 2.0 * wi.dot(n) * n"),
+        )];
+        let page = "The answer:\n\n```rust\nwi - 2.0*wi.dot(n)*n\n```\n";
+        let leaks = solution_leaks(page, &solutions);
+        assert_eq!(leaks.len(), 1, "{leaks:?}");
+        assert!(leaks[0].contains("ch01-reflect"), "{leaks:?}");
+        let hidden = format!(
+            "{SOLUTION_OPEN}\n\n```rust\nwi - 2.0 * wi.dot(n) * n\n```\n\n{SOLUTION_CLOSE}\n"
+        );
+        assert!(solution_leaks(&hidden, &solutions).is_empty());
+    }
+
+    /// The page with its `{{#include path}}` and `{{#include path:anchor}}` lines expanded as
+    /// mdBook's `links` preprocessor expands them (anchor comment lines left out), so that
+    /// the test sees what the site's build sees.
+    fn expand_includes(page: &str, page_dir: &Path) -> String {
+        let mut out = String::new();
+        for line in page.lines() {
+            let Some(target) = line
+                .trim()
+                .strip_prefix("{{#include ")
+                .and_then(|rest| rest.strip_suffix("}}"))
+            else {
+                out.push_str(line);
+                out.push('\n');
+                continue;
+            };
+            let (path, anchor) = match target.trim().rsplit_once(':') {
+                Some((path, anchor)) => (path, Some(anchor)),
+                None => (target.trim(), None),
+            };
+            // Generated files (the figures' tables) hold no code.
+            let Ok(source) = std::fs::read_to_string(page_dir.join(path)) else {
+                continue;
+            };
+            let mut inside = anchor.is_none();
+            for source_line in source.lines() {
+                let name_after = |marker: &str| {
+                    source_line
+                        .split_once(marker)
+                        .map(|(_, rest)| rest.trim().to_string())
+                };
+                if let Some(anchor) = anchor {
+                    if name_after("ANCHOR_END:").as_deref() == Some(anchor) {
+                        inside = false;
+                    } else if name_after("ANCHOR:").as_deref() == Some(anchor) {
+                        inside = true;
+                        continue;
+                    }
+                }
+                if inside
+                    && !source_line.contains("ANCHOR:")
+                    && !source_line.contains("ANCHOR_END:")
+                {
+                    out.push_str(source_line);
+                    out.push('\n');
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn no_page_of_the_book_gives_a_solution_away() {
+        let workspace = crate::workspace::root();
+        let solutions = known_solutions(&workspace).unwrap();
+        assert!(solutions.len() > 25, "{} solution lines", solutions.len());
+        let src = workspace.join("book/src");
+        let mut leaks = Vec::new();
+        for entry in std::fs::read_dir(&src).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "md") {
+                let page = expand_includes(&std::fs::read_to_string(&path).unwrap(), &src);
+                let rendered = render_page(&page, &src).unwrap();
+                for leak in solution_leaks(&rendered, &solutions) {
+                    leaks.push(format!("{}: {leak}", path.display()));
+                }
+            }
+        }
+        assert!(leaks.is_empty(), "{}", leaks.join("\n"));
     }
 
     #[test]

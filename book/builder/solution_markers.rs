@@ -254,6 +254,28 @@ pub fn book_stub(source: &str, anchor: &str) -> Result<String, MarkerError> {
     Ok(shown.join("\n"))
 }
 
+/// The solution of an exercise as the book's collapsed "Solution" block shows it: the
+/// anchor's lines with the solution in place, without the anchor and marker lines.
+pub fn book_solution(source: &str, anchor: &str) -> Result<String, MarkerError> {
+    let lines: Vec<&str> = source.lines().collect();
+    let span = locate(&lines, anchor)?;
+    let shown: Vec<&str> = lines[span.body]
+        .iter()
+        .copied()
+        .filter(|line| !is_anchor_line(line) && Marker::of_line(line).is_none())
+        .collect();
+    Ok(shown.join("\n"))
+}
+
+/// The lines of an exercise's solution region (markers left out), for finding a solution
+/// written out somewhere it should not be.
+pub fn solution_lines(source: &str, anchor: &str) -> Result<Vec<String>, MarkerError> {
+    let lines: Vec<&str> = source.lines().collect();
+    let span = locate(&lines, anchor)?;
+    let inner = span.solution.start + 1..span.solution.end - 1;
+    Ok(lines[inner].iter().map(|line| (*line).to_owned()).collect())
+}
+
 /// One exercise to cut out of a file: its anchor and the message of its `todo!`.
 #[derive(Debug, Clone)]
 pub struct Cut<'a> {
