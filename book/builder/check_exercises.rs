@@ -16,7 +16,8 @@ use std::process::{Command, Stdio};
 
 use anyhow::{Context, Result, bail};
 
-use crate::exercise_list::{Exercise, LIST_PATH};
+use crate::exercise_list::{Exercise, LIST_PATH, WrongAnswer};
+use crate::solution_markers;
 use crate::student_edition;
 use crate::workspace;
 
@@ -26,8 +27,14 @@ struct Outcome {
     output: String,
 }
 
-/// Checks every exercise both ways and prints a table; fails on any surprise.
-pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
+/// Checks every `selected` exercise both ways and prints a table, then tries their recorded
+/// wrong answers (only those with `wrong_answers_only`); fails on any surprise.
+pub fn run(
+    root: &Path,
+    exercises: &[Exercise],
+    selected: &dyn Fn(&Exercise) -> bool,
+    wrong_answers_only: bool,
+) -> Result<()> {
     if exercises.is_empty() {
         // Still worth one look: a solution marker nobody listed would leak to students.
         student_edition::plan(root, exercises, &[])?;
@@ -38,6 +45,10 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
 
     let target_dir = workspace::target_dir(root);
     let student_dir = target_dir.join("student");
+    let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
+    if wrong_answers_only {
+        return prove_wrong_answers(root, &chosen, &student_dir);
+    }
     let edition = student_dir.join("edition");
     let edition_build = EditionBuild {
         target_dir: student_dir.join("target"),
@@ -49,7 +60,7 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
     println!("  {files} files, {} exercise(s) stubbed", exercises.len());
     write_separate_crates_config(&edition)?;
 
-    build_edition(&edition, &edition_build, exercises)?;
+    build_edition(&edition, &edition_build, &chosen)?;
 
     println!();
     println!(
@@ -57,7 +68,7 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
         "exercise", "student edition (must fail)", "workspace (must pass)"
     );
     let mut surprises = Vec::new();
-    for exercise in exercises {
+    for exercise in &chosen {
         let stub = run_check(&exercise.check, &edition, Some(&edition_build))?;
         let solution = run_check(&exercise.check, root, None)?;
         println!(
@@ -75,8 +86,8 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
     }
 
     if surprises.is_empty() {
-        println!("\nAll {} exercise(s) behave.", exercises.len());
-        return Ok(());
+        println!("\nAll {} exercise(s) behave.", chosen.len());
+        return prove_wrong_answers(root, &chosen, &student_dir);
     }
     for (exercise, what, outcome) in &surprises {
         println!(
@@ -90,6 +101,97 @@ pub fn run(root: &Path, exercises: &[Exercise]) -> Result<()> {
         surprises.len()
     )
 }
+
+/// Proves that every recorded wrong answer fails its exercise's check, and that the check
+/// says so in the recorded words.
+///
+/// The answers are tried in a copy of the workspace, all solutions in place but the one being
+/// tried, in rounds: round `r` puts in the `r`-th wrong answer of every exercise that has one,
+/// so a round costs one build of the changed crates, not one per answer. The copy is built
+/// with settings of its own (see [`WRONG_ANSWERS_CONFIG`]) in the shared build directory.
+fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) -> Result<()> {
+    let rounds = exercises.iter().map(|e| e.wrong.len()).max().unwrap_or(0);
+    if rounds == 0 {
+        println!("No wrong answers are recorded in {LIST_PATH}.");
+        return Ok(());
+    }
+    let copy = student_dir.join("wrong-answers");
+    let build = EditionBuild {
+        target_dir: student_dir.join("wrong-answers-target"),
+        build_dir: workspace::target_dir(root),
+    };
+    println!("\nTrying the recorded wrong answers in {}", copy.display());
+    student_edition::write_copy(root, &copy)?;
+    write_config(&copy, WRONG_ANSWERS_CONFIG)?;
+
+    println!("{:<28} {:<40} {:<20}", "exercise", "wrong answer", "check");
+    let mut surprises = Vec::new();
+    let mut tried = 0;
+    let mut changed: Vec<PathBuf> = Vec::new();
+    for round in 0..rounds {
+        // Every file back to the workspace's, then this round's answers put in.
+        for file in changed.drain(..) {
+            std::fs::copy(root.join(&file), copy.join(&file))
+                .with_context(|| format!("cannot restore {}", file.display()))?;
+        }
+        let in_round: Vec<(&Exercise, &WrongAnswer)> = exercises
+            .iter()
+            .filter_map(|e| e.wrong.get(round).map(|wrong| (e, wrong)))
+            .collect();
+        for (exercise, wrong) in &in_round {
+            let path = copy.join(&exercise.file);
+            let source = std::fs::read_to_string(&path)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            let spliced = solution_markers::splice_code(&source, &exercise.anchor, &wrong.code)
+                .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
+            std::fs::write(&path, spliced)
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            changed.push(exercise.file.clone());
+        }
+        for (exercise, wrong) in in_round {
+            tried += 1;
+            let outcome = run_check(&exercise.check, &copy, Some(&build))?;
+            let says = outcome
+                .output
+                .to_lowercase()
+                .contains(&wrong.says.to_lowercase());
+            let verdict = match (outcome.passed, says) {
+                (true, _) => "passed (SURPRISE)",
+                (false, true) => "failed, said it (ok)",
+                (false, false) => "failed, silent (SURPRISE)",
+            };
+            println!("{:<28} {:<40} {verdict}", exercise.name, wrong.mistake);
+            if outcome.passed || !says {
+                surprises.push((exercise, wrong, outcome));
+            }
+        }
+    }
+    if surprises.is_empty() {
+        println!("\nAll {tried} wrong answer(s) fail their checks with the recorded words.");
+        return Ok(());
+    }
+    for (exercise, wrong, outcome) in &surprises {
+        println!(
+            "\n--- {} with the wrong answer \"{}\" should fail saying \"{}\"; `{}` printed (last lines):",
+            exercise.name, wrong.mistake, wrong.says, exercise.check
+        );
+        println!("{}", last_lines(&outcome.output, 30));
+    }
+    bail!(
+        "{} wrong answer(s) not refused as recorded: a check must fail on each and say what is wrong",
+        surprises.len()
+    )
+}
+
+/// Settings of the copy in which wrong answers are tried: other debug settings than the
+/// workspace's and the student edition's, so its crates get names of their own in the shared
+/// build directory.
+const WRONG_ANSWERS_CONFIG: &str = "\
+# Written by `book check-exercises` for trying wrong answers: the workspace's crates get names
+# of their own in the shared build directory; dependencies are shared.
+[profile.dev]
+debug = \"limited\"
+";
 
 /// Settings for this check's own build of the student edition, written into the edition's
 /// `.cargo/config.toml` (which overrides the manifest's profiles).
@@ -110,11 +212,15 @@ debug = false
 ";
 
 fn write_separate_crates_config(edition: &Path) -> Result<()> {
+    write_config(edition, SEPARATE_CRATES_CONFIG)
+}
+
+/// Writes `config` as the `.cargo/config.toml` of the copy at `dir`.
+fn write_config(edition: &Path, config: &str) -> Result<()> {
     let dir = edition.join(".cargo");
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let path = dir.join("config.toml");
-    std::fs::write(&path, SEPARATE_CRATES_CONFIG)
-        .with_context(|| format!("cannot write {}", path.display()))
+    std::fs::write(&path, config).with_context(|| format!("cannot write {}", path.display()))
 }
 
 /// Where cargo puts the student edition's build.
@@ -240,5 +346,10 @@ mod tests {
             !same,
             "the workspace's [profile.dev] debug is {workspace:?}"
         );
+        // The copy for wrong answers differs from both.
+        let wrong = dev_debug(WRONG_ANSWERS_CONFIG).expect("the copy sets debug");
+        assert_eq!(wrong, toml::Value::String("limited".into()));
+        assert_ne!(Some(&wrong), workspace.as_ref());
+        assert_ne!(wrong, edition);
     }
 }

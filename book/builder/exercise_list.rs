@@ -33,6 +33,23 @@ pub struct Exercise {
     pub check: String,
     /// A nudge for the stuck. Its first line doubles as the message of the student's `todo!`.
     pub hint: String,
+    /// Plausible wrong answers, each of which the check must refuse with its own words.
+    #[serde(default)]
+    pub wrong: Vec<WrongAnswer>,
+}
+
+/// A plausible wrong answer to an exercise: code that stands where the solution stands, and
+/// the words the exercise's check must print when it refuses it (a check that fails without
+/// saying what is wrong does not teach).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WrongAnswer {
+    /// The mistake, in a few words: `r = u instead of sqrt(u)`.
+    pub mistake: String,
+    /// The code put in place of the solution region, indented as the region is.
+    pub code: String,
+    /// Words the failing check must print (case-insensitive).
+    pub says: String,
 }
 
 impl Exercise {
@@ -127,6 +144,17 @@ pub fn validate(workspace: &Path, exercises: &[Exercise]) -> Vec<String> {
         if let Err(error) = solution_markers::locate(&lines, &exercise.anchor) {
             complain(format!("in `{}`, {error}", exercise.file.display()));
         }
+        for (number, wrong) in exercise.wrong.iter().enumerate() {
+            for (field, value) in [
+                ("mistake", &wrong.mistake),
+                ("code", &wrong.code),
+                ("says", &wrong.says),
+            ] {
+                if value.trim().is_empty() {
+                    complain(format!("wrong answer #{}: `{field}` is empty", number + 1));
+                }
+            }
+        }
     }
     problems
 }
@@ -154,6 +182,25 @@ mod tests {
         std::fs::create_dir_all(dir.path().join("src")).unwrap();
         std::fs::write(dir.path().join("src/optics.rs"), SOURCE).unwrap();
         dir
+    }
+
+    #[test]
+    fn wrong_answers_are_read_and_checked() {
+        let dir = workspace_with_source();
+        let text = format!(
+            "{}[[exercise.wrong]]\nmistake = \"no sign\"\ncode = \"x\"\nsays = \"the sign\"\n\
+             [[exercise.wrong]]\nmistake = \"nothing said\"\ncode = \"y\"\nsays = \" \"\n",
+            entry("ch01-reflect", "src/optics.rs", "reflect")
+        );
+        let exercises = parse(&text).unwrap();
+        assert_eq!(exercises[0].wrong.len(), 2);
+        assert_eq!(exercises[0].wrong[0].says, "the sign");
+        let problems = validate(dir.path(), &exercises);
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(
+            problems[0].contains("wrong answer #2: `says` is empty"),
+            "{problems:?}"
+        );
     }
 
     #[test]

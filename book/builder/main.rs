@@ -50,8 +50,16 @@ enum Task {
     },
     /// List the exercises in order, with the command that checks each and its hint.
     Exercises,
-    /// Check that every exercise fails on the student edition and passes on the workspace.
-    CheckExercises,
+    /// Check that every exercise fails on the student edition and passes on the workspace, and
+    /// that every recorded wrong answer fails its check with the recorded words.
+    CheckExercises {
+        /// Only these exercises (by name, repeatable); the student edition still stubs all.
+        #[arg(long, value_name = "NAME")]
+        only: Vec<String>,
+        /// Only try the wrong answers (quicker while writing a check's messages).
+        #[arg(long)]
+        wrong_answers_only: bool,
+    },
 }
 
 fn main() -> Result<()> {
@@ -73,7 +81,20 @@ fn main() -> Result<()> {
             print_exercises(&exercise_list::load(&root)?);
             Ok(())
         }
-        Some(Task::CheckExercises) => check_exercises::run(&root, &exercise_list::load(&root)?),
+        Some(Task::CheckExercises {
+            only,
+            wrong_answers_only,
+        }) => {
+            let exercises = exercise_list::load(&root)?;
+            if let Some(unknown) = only
+                .iter()
+                .find(|n| !exercises.iter().any(|e| &e.name == *n))
+            {
+                anyhow::bail!("--only {unknown}: there is no such exercise in book/exercises.toml");
+            }
+            let selected = |e: &exercise_list::Exercise| only.is_empty() || only.contains(&e.name);
+            check_exercises::run(&root, &exercises, &selected, wrong_answers_only)
+        }
     }
 }
 

@@ -276,6 +276,36 @@ pub fn solution_lines(source: &str, anchor: &str) -> Result<Vec<String>, MarkerE
     Ok(lines[inner].iter().map(|line| (*line).to_owned()).collect())
 }
 
+/// `source` with the solution region of exercise `anchor` replaced by `code` (a wrong answer
+/// to try), each of its lines indented as the region's `BEGIN` marker is.
+pub fn splice_code(source: &str, anchor: &str, code: &str) -> Result<String, MarkerError> {
+    let lines: Vec<&str> = source.lines().collect();
+    let span = locate(&lines, anchor)?;
+    let begin = lines[span.solution.start];
+    let indent = &begin[..begin.len() - begin.trim_start().len()];
+    let mut out: Vec<String> = lines[..span.solution.start]
+        .iter()
+        .map(|line| (*line).to_owned())
+        .collect();
+    for line in code.trim_end().lines() {
+        out.push(if line.trim().is_empty() {
+            String::new()
+        } else {
+            format!("{indent}{line}")
+        });
+    }
+    out.extend(
+        lines[span.solution.end..]
+            .iter()
+            .map(|line| (*line).to_owned()),
+    );
+    let mut text = out.join("\n");
+    if source.ends_with('\n') {
+        text.push('\n');
+    }
+    Ok(text)
+}
+
 /// One exercise to cut out of a file: its anchor and the message of its `todo!`.
 #[derive(Debug, Clone)]
 pub struct Cut<'a> {
@@ -562,5 +592,15 @@ mod tests {
         );
         assert_eq!(Marker::of_line("x; // BEGIN SOLUTION"), None);
         assert_eq!(Marker::of_line("/// // END SOLUTION"), None);
+    }
+
+    #[test]
+    fn a_wrong_answer_takes_the_solutions_place() {
+        let spliced = splice_code(REFLECT, "reflect", "wi - wi.dot(n) * n\n").unwrap();
+        assert_eq!(
+            spliced,
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    wi - wi.dot(n) * n\n}\n// ANCHOR_END: reflect\n"
+        );
+        assert!(splice_code(REFLECT, "refract", "x").is_err());
     }
 }

@@ -63,6 +63,12 @@ pub fn plan(
         if leave_out.iter().any(|dir| file.starts_with(dir)) {
             continue;
         }
+        if file == Path::new(LIST_PATH) {
+            let list = std::fs::read_to_string(root.join(&file))
+                .with_context(|| format!("cannot read {LIST_PATH}"))?;
+            edition.push(EditionFile::Rewritten(file, without_wrong_answers(&list)?));
+            continue;
+        }
         if file.extension().is_none_or(|ext| ext != "rs") {
             edition.push(EditionFile::Copy(file));
             continue;
@@ -95,6 +101,40 @@ pub fn plan(
     Ok(edition)
 }
 
+/// The exercise list as the student gets it: without the recorded wrong answers, whose
+/// mistakes would give the right answers away. Checked by reading it back: the same
+/// exercises, none with a wrong answer left.
+fn without_wrong_answers(list: &str) -> Result<String> {
+    let mut out = String::with_capacity(list.len());
+    let mut skipping = false;
+    for line in list.lines() {
+        let trimmed = line.trim();
+        if trimmed == "[[exercise.wrong]]" {
+            skipping = true;
+            continue;
+        }
+        if trimmed.starts_with("[[") {
+            skipping = false;
+        }
+        if !skipping {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    let before = crate::exercise_list::parse(list)?;
+    let after = crate::exercise_list::parse(&out)
+        .context("the exercise list without its wrong answers does not read back")?;
+    let same = before.len() == after.len()
+        && before
+            .iter()
+            .zip(&after)
+            .all(|(a, b)| a.name == b.name && a.hint == b.hint);
+    if !same || after.iter().any(|exercise| !exercise.wrong.is_empty()) {
+        bail!("{LIST_PATH}: its wrong answers could not be taken out cleanly");
+    }
+    Ok(out)
+}
+
 /// Writes the student edition into `out`.
 ///
 /// `out` must be empty or missing; with `force`, whatever it holds is deleted first (but never
@@ -115,9 +155,36 @@ pub fn write(root: &Path, exercises: &[Exercise], out: &Path, force: bool) -> Re
         .into_iter()
         .collect();
     let edition = plan(&root, exercises, &leave_out)?;
-
     prepare_empty_dir(&out, force)?;
-    for file in &edition {
+    write_files(&root, &out, &edition)?;
+    Ok(edition.len())
+}
+
+/// Writes a plain copy of the workspace's sources into `out`, solutions and all, replacing
+/// what `out` held: where `check-exercises` tries the recorded wrong answers.
+pub fn write_copy(root: &Path, out: &Path) -> Result<usize> {
+    let out = absolute(out)?;
+    let root = absolute(root)?;
+    if root.starts_with(&out) {
+        bail!(
+            "{} is the workspace or contains it; choose another directory",
+            out.display()
+        );
+    }
+    let inside = out.strip_prefix(&root).ok().map(Path::to_path_buf);
+    let files: Vec<EditionFile> = workspace::source_files(&root)?
+        .into_iter()
+        .filter(|file| inside.as_ref().is_none_or(|dir| !file.starts_with(dir)))
+        .map(EditionFile::Copy)
+        .collect();
+    prepare_empty_dir(&out, true)?;
+    write_files(&root, &out, &files)?;
+    Ok(files.len())
+}
+
+/// Writes `files` of the workspace at `root` into `out`.
+fn write_files(root: &Path, out: &Path, files: &[EditionFile]) -> Result<()> {
+    for file in files {
         let destination = out.join(file.path());
         if let Some(parent) = destination.parent() {
             std::fs::create_dir_all(parent)
@@ -129,7 +196,7 @@ pub fn write(root: &Path, exercises: &[Exercise], out: &Path, force: bool) -> Re
         }
         .with_context(|| format!("cannot write {}", destination.display()))?;
     }
-    Ok(edition.len())
+    Ok(())
 }
 
 fn prepare_empty_dir(out: &Path, force: bool) -> Result<()> {
@@ -226,5 +293,18 @@ mod tests {
         let edition = plan(ws.path(), &[], &[PathBuf::from("student")]).unwrap();
         let paths: Vec<&Path> = edition.iter().map(EditionFile::path).collect();
         assert_eq!(paths, [Path::new("src/lib.rs")]);
+    }
+
+    #[test]
+    fn the_students_list_keeps_its_exercises_but_not_their_wrong_answers() {
+        let list = format!(
+            "{LIST}\n[[exercise.wrong]]\nmistake = \"no sign change\"\ncode = \"\"\"\nx\n\"\"\"\nsays = \"flip\"\n\n{}",
+            LIST.replace("ch01-reflect", "ch01-other")
+        );
+        let stripped = without_wrong_answers(&list).unwrap();
+        assert!(!stripped.contains("no sign change"), "{stripped}");
+        let exercises = exercise_list::parse(&stripped).unwrap();
+        assert_eq!(exercises.len(), 2);
+        assert!(exercises.iter().all(|exercise| exercise.wrong.is_empty()));
     }
 }

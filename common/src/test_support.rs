@@ -4,6 +4,7 @@
 //! Nothing here is used by a renderer; it lives in `common` so that every chapter's tests ask
 //! the same questions in the same way.
 
+use std::path::PathBuf;
 use std::process::{Command, Output};
 
 use crate::image::Image;
@@ -27,6 +28,23 @@ pub fn assert_refused(binary: &str, args: &[&str], expected: &str) {
         stderr.contains(expected),
         "{args:?}: expected `{expected}` in: {stderr}"
     );
+}
+
+/// Where a failing exercise check writes its pictures: `target/exercises/<exercise>/` of the
+/// build the test runs from (found from the test binary's own place,
+/// `target/<profile>/deps/`), created if missing.
+pub fn exercise_output_dir(exercise: &str) -> PathBuf {
+    let exe = std::env::current_exe().unwrap_or_default();
+    let target = exe
+        .ancestors()
+        .find(|dir| dir.file_name().is_some_and(|name| name == "target"))
+        .map(PathBuf::from)
+        .or_else(|| exe.ancestors().nth(3).map(PathBuf::from))
+        .unwrap_or_else(|| PathBuf::from("target"));
+    let dir = target.join("exercises").join(exercise);
+    // A check that cannot write its picture still reports its finding in words.
+    let _ = std::fs::create_dir_all(&dir);
+    dir
 }
 
 /// Characters from dark to bright, for [`image_summary`].

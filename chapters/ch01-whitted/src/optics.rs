@@ -84,18 +84,93 @@ mod tests {
 
     const UP: Vec3 = Vec3::Z;
 
+    /// What is wrong with `r`, an answer to `reflect(d, n)`, in words; `None` if it is right.
+    fn reflect_mistake(d: Vec3, n: Vec3, r: Vec3) -> Option<String> {
+        let expected = d - 2.0 * d.dot(n) * n;
+        if !r.is_finite() {
+            return Some(format!("the result {r} is not a finite vector"));
+        }
+        if (r - expected).length() < 1e-5 {
+            return None;
+        }
+        let (dn, rn) = (d.dot(n), r.dot(n));
+        let mistake = if ((r - rn * n) - (d - dn * n)).length() > 1e-4 {
+            "the part of d along the surface changed: a mirror keeps it as it is and flips only \
+             the part along n"
+                .to_string()
+        } else if rn.abs() < 1e-5 {
+            "the part of d along n vanished instead of flipping: it has to be taken away twice, \
+             not once"
+                .to_string()
+        } else if (rn - dn).abs() < 1e-5 {
+            "the part of d along n kept its sign: the ray goes on through the mirror".to_string()
+        } else if (rn - 3.0 * dn).abs() < 1e-4 {
+            "the part of d along n grew to three times its size: look at the sign of what is \
+             added (d . n is negative for a ray that hits the surface)"
+                .to_string()
+        } else {
+            format!("the part along n is {rn}, where it should be {}", -dn)
+        };
+        Some(format!(
+            "{mistake}.\n  d = {d}, n = {n}: your reflect gave {r}, the mirror direction is {expected}"
+        ))
+    }
+
     #[test]
     fn exercise_reflect_keeps_the_angle_and_flips_the_normal_part() {
-        for theta in [0.0f32, 0.3, 1.0, 1.5] {
-            let d = incoming(theta);
-            let r = reflect(d, UP);
-            assert_relative_eq!(r, Vec3::new(d.x, d.y, -d.z), epsilon = 1e-6);
-            assert_relative_eq!(r.length(), 1.0, epsilon = 1e-6);
-        }
-        // Any orientation: reflecting twice gives the ray back.
         let n = Vec3::new(1.0, 2.0, -0.5).normalize();
-        let d = Vec3::new(-0.3, -0.9, 0.2).normalize();
-        assert_relative_eq!(reflect(reflect(d, n), n), d, epsilon = 1e-6);
+        // Oblique rays first: they show a mistake more plainly than one along the normal.
+        let cases = [1.0f32, 0.3, 1.5, 0.0]
+            .map(|theta| (incoming(theta), UP))
+            .into_iter()
+            .chain([(Vec3::new(-0.3, -0.9, 0.2).normalize(), n)]);
+        for (d, n) in cases {
+            if let Some(mistake) = reflect_mistake(d, n, reflect(d, n)) {
+                panic!("reflect: {mistake}");
+            }
+        }
+    }
+
+    /// What is wrong with `t`, an answer to `refract(d, UP, eta)` where a refracted ray
+    /// exists, in words; `None` if it is right.
+    fn refract_mistake(d: Vec3, eta: f32, t: Option<Vec3>) -> Option<String> {
+        let Some(t) = t else {
+            return Some(
+                "it returned None, but here sin(theta_t) = eta sin(theta_i) is below 1, so there is \
+                 a refracted ray"
+                    .to_string(),
+            );
+        };
+        let sin_i = d.x.hypot(d.y);
+        let sin_t = t.x.hypot(t.y);
+        let mistake = if !t.is_finite() {
+            format!("the result {t} is not a finite vector")
+        } else if t.z >= 0.0 && d.z < 0.0 && t != Vec3::ZERO {
+            "the refracted ray turned back: it must go on through the surface, its part along n \
+             of the same sign as d's"
+                .to_string()
+        } else if (t.length() - 1.0).abs() > 1e-4 {
+            format!(
+                "the result has length {}, not 1: the part along n must come from \
+                 cos(theta_t) = sqrt(1 - sin^2(theta_t))",
+                t.length()
+            )
+        } else if sin_i > 1e-3 && (sin_t - sin_i / eta).abs() < 1e-4 && (eta - 1.0).abs() > 1e-3 {
+            "the ray bends the wrong way: sin(theta_t) came out as sin(theta_i) / eta. eta is \
+             eta_i / eta_t, the index the ray leaves over the one it enters, and \
+             sin(theta_t) = eta sin(theta_i)"
+                .to_string()
+        } else if (sin_t - eta * sin_i).abs() > 1e-4 {
+            format!(
+                "Snell's law does not hold: sin(theta_t) should be eta sin(theta_i) = {}, it is {sin_t}",
+                eta * sin_i
+            )
+        } else {
+            return None;
+        };
+        Some(format!(
+            "{mistake}.\n  d = {d}, n = {UP}, eta = {eta}: your refract gave {t}"
+        ))
     }
 
     #[test]
@@ -105,49 +180,125 @@ mod tests {
             (0.2, 1.5, 1.0),
             (1.2, 1.0, 1.33),
             (0.0, 1.0, 2.4),
+            (0.7, 1.0, 1.0),
         ] {
-            let t = refract(incoming(theta_i), UP, eta_i / eta_t)
-                .expect("no total internal reflection here");
-            assert_relative_eq!(t.length(), 1.0, epsilon = 1e-5);
-            assert!(t.z < 0.0, "the refracted ray continues through the surface");
-            let sin_t = t.x.hypot(t.y);
-            assert_relative_eq!(eta_i * theta_i.sin(), eta_t * sin_t, epsilon = 1e-5);
+            let (d, eta) = (incoming(theta_i), eta_i / eta_t);
+            if let Some(mistake) = refract_mistake(d, eta, refract(d, UP, eta)) {
+                panic!("refract: {mistake}");
+            }
         }
     }
 
     #[test]
     fn exercise_refract_reports_total_internal_reflection() {
         let critical = critical_angle(1.5, 1.0).unwrap();
-        assert!(refract(incoming(critical + 1e-3), UP, 1.5).is_none());
-        assert!(refract(incoming(1.5), UP, 1.5).is_none());
-        assert!(refract(incoming(critical - 1e-3), UP, 1.5).is_some());
+        for theta in [critical + 1e-3, 1.0, 1.5] {
+            if let Some(t) = refract(incoming(theta), UP, 1.5) {
+                panic!(
+                    "refract: leaving glass (eta = 1.5) at {theta:.3} rad, beyond the critical \
+                     angle {critical:.3}, sin(theta_t) = eta sin(theta_i) would be {:.3}, above 1: \
+                     there is no refracted ray (total internal reflection), and refract must say so \
+                     with None. It gave Some({t}).",
+                    1.5 * theta.sin()
+                );
+            }
+        }
+        let just_below = incoming(critical - 1e-3);
+        if let Some(mistake) = refract_mistake(just_below, 1.5, refract(just_below, UP, 1.5)) {
+            panic!("refract, just inside the critical angle: {mistake}");
+        }
     }
 
     #[test]
     fn exercise_refract_at_index_one_goes_straight_through() {
         for theta in [0.0f32, 0.7, 1.5, std::f32::consts::FRAC_PI_2] {
             let d = incoming(theta);
-            assert_relative_eq!(refract(d, UP, 1.0).unwrap(), d, epsilon = 1e-6);
+            let t = refract(d, UP, 1.0);
+            assert!(
+                t.is_some_and(|t| (t - d).length() < 1e-5),
+                "refract: with eta = 1 both sides have the same index, so the ray goes straight \
+                 on, even at {theta:.3} rad. d = {d}: your refract gave {t:?}"
+            );
+        }
+    }
+
+    /// What is wrong with `f`, an answer to `fresnel_dielectric(cos_i, eta)`, in words; `None`
+    /// if it is right.
+    fn fresnel_mistake(cos_i: f32, eta: f32, f: f32) -> Option<String> {
+        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+        let (r_s, r_p) = if sin2_t > 1.0 || eta == 1.0 {
+            (f32::NAN, f32::NAN)
+        } else {
+            let cos_t = (1.0 - sin2_t).max(0.0).sqrt();
+            (
+                (eta * cos_i - cos_t) / (eta * cos_i + cos_t),
+                (cos_i - eta * cos_t) / (cos_i + eta * cos_t),
+            )
+        };
+        let expected = if eta == 1.0 {
+            0.0
+        } else if sin2_t > 1.0 {
+            1.0
+        } else {
+            0.5 * (r_s * r_s + r_p * r_p)
+        };
+        if (f - expected).abs() <= 1e-5 {
+            return None;
+        }
+        let mistake = if eta == 1.0 {
+            "with eta = 1 both sides have the same index: there is no interface, and nothing is \
+             reflected at any angle, even at grazing incidence (cos_i = 0), where the formulas \
+             divide 0 by 0"
+                .to_string()
+        } else if sin2_t > 1.0 {
+            format!(
+                "beyond the critical angle sin^2(theta_t) = {sin2_t:.3} is above 1: there is no \
+                 refracted ray and all the light is reflected (total internal reflection), so the \
+                 reflectance is 1"
+            )
+        } else if !f.is_finite() {
+            "the result is not a number".to_string()
+        } else if (f - r_s * r_s).abs() <= 1e-5 {
+            "that is r_s^2 alone: unpolarised light is half s and half p, so the reflectance is \
+             the mean of r_s^2 and r_p^2"
+                .to_string()
+        } else if (f - r_p * r_p).abs() <= 1e-5 {
+            "that is r_p^2 alone: unpolarised light is half s and half p, so the reflectance is \
+             the mean of r_s^2 and r_p^2"
+                .to_string()
+        } else if (f - 0.5 * (r_s.abs() + r_p.abs())).abs() <= 1e-5 {
+            "that is the mean of the amplitude ratios: the reflectance is the mean of their \
+             squares"
+                .to_string()
+        } else {
+            format!("it should be {expected}")
+        };
+        Some(format!(
+            "{mistake}.\n  cos_i = {cos_i}, eta = {eta}: your fresnel_dielectric gave {f}, \
+             the reflectance is {expected}"
+        ))
+    }
+
+    fn check_fresnel(cos_i: f32, eta: f32) {
+        if let Some(mistake) = fresnel_mistake(cos_i, eta, fresnel_dielectric(cos_i, eta)) {
+            panic!("fresnel_dielectric: {mistake}");
         }
     }
 
     #[test]
     fn exercise_fresnel_matches_known_values() {
         // Normal incidence: ((n1 - n2) / (n1 + n2))^2 = 0.04 for air to glass of 1.5.
+        check_fresnel(1.0, 1.0 / 1.5);
+        check_fresnel(1.0, 1.5);
         assert_relative_eq!(fresnel_dielectric(1.0, 1.0 / 1.5), 0.04, epsilon = 1e-6);
-        assert_relative_eq!(fresnel_dielectric(1.0, 1.5), 0.04, epsilon = 1e-6);
-        // Brewster's angle, tan(theta_B) = 1.5: r_p vanishes, leaving r_s^2 / 2.
-        let brewster = 1.5f32.atan();
-        let expected_rs = ((brewster.cos() - 1.5 * (1.0 - (brewster.sin() / 1.5).powi(2)).sqrt())
-            / (brewster.cos() + 1.5 * (1.0 - (brewster.sin() / 1.5).powi(2)).sqrt()))
-        .powi(2);
-        assert_relative_eq!(
-            fresnel_dielectric(brewster.cos(), 1.0 / 1.5),
-            0.5 * expected_rs,
-            epsilon = 1e-5
-        );
+        // Brewster's angle, tan(theta_B) = 1.5, where r_p vanishes; oblique angles either way.
+        check_fresnel(1.5f32.atan().cos(), 1.0 / 1.5);
+        for cos_i in [0.9f32, 0.5, 0.2] {
+            check_fresnel(cos_i, 1.0 / 1.5);
+            check_fresnel(cos_i, 1.33);
+        }
         // Grazing incidence reflects everything.
-        assert_relative_eq!(fresnel_dielectric(0.0, 1.0 / 1.5), 1.0, epsilon = 1e-6);
+        check_fresnel(0.0, 1.0 / 1.5);
     }
 
     #[test]
@@ -159,19 +310,26 @@ mod tests {
             1.5,
             std::f32::consts::FRAC_PI_2,
         ] {
-            assert_eq!(fresnel_dielectric(theta.cos(), 1.5), 1.0, "theta = {theta}");
+            check_fresnel(theta.cos(), 1.5);
         }
         // The reflectance rises steeply but continuously to 1 at the critical angle.
         let below = fresnel_dielectric((critical - 1e-3).cos(), 1.5);
-        assert!(below > 0.5 && below < 1.0, "{below}");
+        assert!(
+            below > 0.5 && below < 1.0,
+            "fresnel_dielectric: just inside the critical angle the reflectance is between 0.5 \
+             and 1, not {below}"
+        );
         let at = fresnel_dielectric(critical.cos(), 1.5);
-        assert!(at.is_finite() && at > 0.9, "{at}");
+        assert!(
+            at.is_finite() && at > 0.9,
+            "fresnel_dielectric: at the critical angle the reflectance is about 1, not {at}"
+        );
     }
 
     #[test]
     fn exercise_fresnel_at_index_one_reflects_nothing() {
         for cos_i in [0.0f32, 1e-7, 0.5, 1.0] {
-            assert_eq!(fresnel_dielectric(cos_i, 1.0), 0.0);
+            check_fresnel(cos_i, 1.0);
         }
     }
 

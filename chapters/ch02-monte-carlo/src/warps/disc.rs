@@ -97,27 +97,103 @@ mod tests {
     };
     use approx::assert_relative_eq;
 
+    /// What is wrong with `p = sample_uniform_disc_polar(u)` as the lecture's
+    /// `Polar2Cartesian(√ξ2, 2π ξ1)`, in words; `None` if it is right.
+    fn disc_polar_mistake(u: Vec2, p: Vec2) -> Option<String> {
+        let expected = polar_to_cartesian(u.y.sqrt(), TAU * u.x);
+        if p.is_finite() && (p - expected).length() < 1e-5 {
+            return None;
+        }
+        let (r, angle) = (p.length(), azimuth(p) / TAU);
+        let near = |a: f32, b: f32| (a - b).abs() < 1e-4;
+        let mistake = if !p.is_finite() {
+            format!("the point {p} is not finite")
+        } else if near(r, u.y) {
+            format!(
+                "the radius came out as ξ2 = {} itself. Rings of equal width then get equal \
+                 shares of the points, but an inner ring has less area than an outer one: what \
+                 is the chance that a uniform point lies within distance r of the centre?",
+                u.y
+            )
+        } else if near(r, u.x.sqrt()) && near(angle, u.y) {
+            "ξ1 and ξ2 are swapped: the lecture takes the angle from ξ1 and the radius from ξ2"
+                .to_string()
+        } else if near(r, u.y.sqrt()) {
+            format!(
+                "the radius is right but the angle is not: 2π ξ1 is {:.4} of a turn, yours {angle:.4}",
+                u.x
+            )
+        } else {
+            format!("the radius should be √ξ2 = {}, it is {r}", u.y.sqrt())
+        };
+        Some(format!(
+            "{mistake}.\n  ξ = {u}: your sample_uniform_disc_polar gave {p}, the lecture's map gives {expected}"
+        ))
+    }
+
     #[test]
     fn exercise_disc_polar_stays_in_the_disc() {
         for u in edge_points().into_iter().chain(interior_grid(30)) {
             let p = sample_uniform_disc_polar(u);
-            assert!(p.is_finite() && p.length() <= 1.0 + 1e-6, "u = {u}: {p}");
+            assert!(
+                p.is_finite() && p.length() <= 1.0 + 1e-6,
+                "sample_uniform_disc_polar: ξ = {u} gave {p}, outside the unit disc"
+            );
         }
     }
 
     #[test]
     fn exercise_disc_polar_follows_the_lectures_parametrisation() {
         // ξ1 is the angle: a quarter turn points up the y axis. ξ2 is the squared radius.
-        let p = sample_uniform_disc_polar(Vec2::new(0.25, 0.64));
-        assert_relative_eq!(p, Vec2::new(0.0, 0.8), epsilon = 1e-6);
+        for u in [
+            Vec2::new(0.25, 0.64),
+            Vec2::new(0.1, 0.3),
+            Vec2::new(0.7, 0.05),
+        ] {
+            if let Some(mistake) = disc_polar_mistake(u, sample_uniform_disc_polar(u)) {
+                panic!("sample_uniform_disc_polar: {mistake}");
+            }
+        }
     }
 
     #[test]
     fn exercise_disc_polar_is_uniform() {
         let result = chi2_test(&Warp::DiscPolar, 200_000, 2, (16, 16));
-        assert!(
-            result.p_value > significance_level(1, 0.01),
-            "the polar disc fails the chi-square test: {result:?}"
+        if result.p_value > significance_level(1, 0.01) {
+            return;
+        }
+        // A picture: where the points went, against where a uniform disc puts them.
+        let path =
+            common::test_support::exercise_output_dir("ch02-disc-polar").join("histogram.png");
+        let points: Vec<Vec2> = interior_grid(300)
+            .into_iter()
+            .map(sample_uniform_disc_polar)
+            .collect();
+        let drawn = common::output::figures::histogram_vs_pdf(
+            &path,
+            "your polar disc: histogram against the uniform density 1/π",
+            &points,
+            &|p| {
+                if p.length() <= 1.0 {
+                    f64::from(FRAC_1_PI)
+                } else {
+                    0.0
+                }
+            },
+            [Vec2::splat(-1.0), Vec2::splat(1.0)],
+            32,
+        );
+        let picture = match drawn {
+            Ok(()) => format!(
+                "see {} (your points against the uniform density)",
+                path.display()
+            ),
+            Err(error) => format!("(the picture could not be written: {error})"),
+        };
+        panic!(
+            "sample_uniform_disc_polar: the points are not uniform over the disc (chi-square \
+             test, p = {:.2e}): some regions get more than their share of the area; {picture}",
+            result.p_value
         );
     }
 
@@ -129,7 +205,13 @@ mod tests {
             .into_iter()
             .filter(|&u| sample_uniform_disc_polar(u).length() < 0.5)
             .count();
-        assert_relative_eq!(inner as f64 / (n * n) as f64, 0.25, epsilon = 0.005);
+        let share = inner as f64 / (n * n) as f64;
+        assert!(
+            (share - 0.25).abs() < 0.005,
+            "sample_uniform_disc_polar: {:.1} % of the points land within half the radius, where \
+             a quarter of the disc's area lies (25 %)",
+            100.0 * share
+        );
     }
 
     #[test]
