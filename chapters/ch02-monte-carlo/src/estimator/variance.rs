@@ -94,25 +94,66 @@ mod tests {
     use approx::assert_relative_eq;
     use rand::Rng;
 
+    /// What is wrong with `(mean, variance)`, an answer for `values` whose mean and unbiased
+    /// variance are `expected`, in words; `None` if it is right to `tolerance` (relative).
+    fn variance_mistake(
+        values: &[f64],
+        (mean, variance): (f64, f64),
+        expected: (f64, f64),
+        tolerance: f64,
+    ) -> Option<String> {
+        let close = |a: f64, b: f64| (a - b).abs() <= tolerance * b.abs().max(1e-300);
+        if close(mean, expected.0) && close(variance, expected.1) {
+            return None;
+        }
+        let n = values.len() as f64;
+        let mistake = if !close(mean, expected.0) {
+            format!("the mean should be {}", expected.0)
+        } else if close(variance, expected.1 * (n - 1.0) / n) {
+            "that is the squared deviations divided by n: measured from the sample's own mean \
+             they come out too small on average, and dividing by n - 1 makes up for it"
+                .to_string()
+        } else if variance < 0.0 {
+            "a variance is never negative: the formula loses the spread in the rounding of two \
+             huge, nearly equal numbers"
+                .to_string()
+        } else if values.iter().all(|x| x.abs() > 1e6) {
+            "far from zero the formula loses the spread in the rounding: is anything subtracted \
+             from something of nearly the same, huge size?"
+                .to_string()
+        } else {
+            format!("the unbiased sample variance is {}", expected.1)
+        };
+        Some(format!(
+            "{mistake}.\n  values {values:?}: your sample_mean_and_variance gave mean {mean}, \
+             variance {variance}; expected mean {}, variance {}",
+            expected.0, expected.1
+        ))
+    }
+
     #[test]
     fn exercise_sample_variance_known_values() {
         // Mean 5; squared deviations 9, 1, 1, 1, 0, 0, 4, 16 sum to 32; 32 / 7.
-        let (mean, variance) = sample_mean_and_variance(&[2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0]);
-        assert_relative_eq!(mean, 5.0, max_relative = 1e-15);
-        assert_relative_eq!(variance, 32.0 / 7.0, max_relative = 1e-15);
+        let values = [2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0];
+        let answer = sample_mean_and_variance(&values);
+        if let Some(mistake) = variance_mistake(&values, answer, (5.0, 32.0 / 7.0), 1e-15) {
+            panic!("sample_mean_and_variance: {mistake}");
+        }
         // Two values: (a - b)² / 2.
-        let (mean, variance) = sample_mean_and_variance(&[1.0, 4.0]);
-        assert_relative_eq!(mean, 2.5);
-        assert_relative_eq!(variance, 4.5);
+        let answer = sample_mean_and_variance(&[1.0, 4.0]);
+        if let Some(mistake) = variance_mistake(&[1.0, 4.0], answer, (2.5, 4.5), 1e-15) {
+            panic!("sample_mean_and_variance: {mistake}");
+        }
     }
 
     #[test]
     fn exercise_sample_variance_is_stable_far_from_zero() {
         // 10⁹ + {4, 7, 13, 16}: mean 10⁹ + 10, deviations ±3, ±6, variance 90 / 3 = 30.
         let values = [4.0, 7.0, 13.0, 16.0].map(|x| 1e9 + x);
-        let (mean, variance) = sample_mean_and_variance(&values);
-        assert_relative_eq!(mean, 1e9 + 10.0, max_relative = 1e-15);
-        assert_relative_eq!(variance, 30.0, max_relative = 1e-9);
+        let answer = sample_mean_and_variance(&values);
+        if let Some(mistake) = variance_mistake(&values, answer, (1e9 + 10.0, 30.0), 1e-9) {
+            panic!("sample_mean_and_variance: {mistake}");
+        }
         // The shortcut formula fails on the same values: the reason for Welford's method.
         let n = values.len() as f64;
         let sum: f64 = values.iter().sum();
@@ -123,15 +164,25 @@ mod tests {
 
     #[test]
     fn exercise_sample_variance_of_one_value_is_zero() {
-        assert_eq!(sample_mean_and_variance(&[7.5]), (7.5, 0.0));
-        let (mean, variance) = sample_mean_and_variance(&[3.0; 10]);
-        assert_eq!((mean, variance), (3.0, 0.0));
+        for values in [&[7.5][..], &[3.0; 10]] {
+            let (mean, variance) = sample_mean_and_variance(values);
+            assert!(
+                mean == values[0] && variance == 0.0,
+                "sample_mean_and_variance: values {values:?} do not spread at all, so the \
+                 variance is 0 (one value: 0 by convention, not 0 / 0); yours gave mean {mean}, \
+                 variance {variance}"
+            );
+        }
     }
 
     #[test]
     fn exercise_sample_variance_of_nothing_is_nan() {
         let (mean, variance) = sample_mean_and_variance(&[]);
-        assert!(mean.is_nan() && variance.is_nan());
+        assert!(
+            mean.is_nan() && variance.is_nan(),
+            "sample_mean_and_variance: no values have no mean and no variance: both are NaN, \
+             not mean {mean}, variance {variance}"
+        );
     }
 
     #[test]

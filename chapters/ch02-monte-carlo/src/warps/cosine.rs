@@ -11,7 +11,8 @@
 //! a patch is the same above and below, so `p(ω) dω = p(A) dA = (1 / π) cos θ dω`, which is
 //! exactly `cos θ / π`.
 //!
-//! Any uniform disc warp works; the concentric map keeps stratified samples compact.
+//! Any uniform disc warp gives this density; this one lifts the concentric map's point,
+//! which keeps stratified samples compact.
 
 use std::f32::consts::FRAC_1_PI;
 
@@ -62,12 +63,37 @@ mod tests {
     fn exercise_cosine_hemisphere_gives_unit_directions_above_the_horizon() {
         for u in edge_points().into_iter().chain(interior_grid(30)) {
             let d = sample_cosine_hemisphere(u);
-            assert!(d.is_finite(), "u = {u}: {d}");
+            let problem = if !d.is_finite() {
+                "is not a number: at the rim of the disc, 1 - x² - y² can come out a hair below 0"
+                    .to_string()
+            } else if (d.length() - 1.0).abs() >= 1e-5 {
+                format!(
+                    "has length {}, not 1: the disc point has to be lifted onto the unit \
+                     hemisphere, where x² + y² + z² = 1",
+                    d.length()
+                )
+            } else if d.z < 0.0 {
+                "points below the horizon: the hemisphere is the half around +z".to_string()
+            } else {
+                continue;
+            };
+            panic!("sample_cosine_hemisphere: ξ = {u} gave {d}, which {problem}");
+        }
+    }
+
+    #[test]
+    fn exercise_cosine_hemisphere_stands_above_the_concentric_disc() {
+        // The direction is the concentric disc point, lifted straight up.
+        for u in interior_grid(12) {
+            let d = sample_cosine_hemisphere(u);
+            let disc = concentric::sample_uniform_disc_concentric(u);
             assert!(
-                (d.length() - 1.0).abs() < 1e-5,
-                "u = {u}: {d} is not unit length"
+                (d.truncate() - disc).length() < 1e-5,
+                "sample_cosine_hemisphere: ξ = {u} gave {d}, which does not stand above the \
+                 concentric map's point {disc} of the disc: the direction is that point lifted \
+                 straight up onto the hemisphere (another disc map would give other directions \
+                 for the same ξ)"
             );
-            assert!(d.z >= 0.0, "u = {u}: {d} is below the horizon");
         }
     }
 
@@ -76,7 +102,9 @@ mod tests {
         let result = chi2_test(&Warp::CosineHemisphere, 200_000, 3, (16, 16));
         assert!(
             result.p_value > significance_level(1, 0.01),
-            "the cosine hemisphere fails the chi-square test against cos θ / π: {result:?}"
+            "sample_cosine_hemisphere: the directions do not follow the density cos θ / π \
+             (chi-square test, p = {:.2e})",
+            result.p_value
         );
     }
 
@@ -89,7 +117,12 @@ mod tests {
             .map(|&u| sample_cosine_hemisphere(u).z as f64)
             .sum::<f64>()
             / grid.len() as f64;
-        assert_relative_eq!(mean, 2.0 / 3.0, epsilon = 0.01);
+        assert!(
+            (mean - 2.0 / 3.0).abs() < 0.01,
+            "sample_cosine_hemisphere: the mean cos θ of your directions is {mean:.3}; the \
+             density cos θ / π gives 2/3, a uniform hemisphere 1/2: directions near the normal \
+             should be the more likely"
+        );
     }
 
     #[test]

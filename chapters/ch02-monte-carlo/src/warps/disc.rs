@@ -93,7 +93,7 @@ mod tests {
     use crate::chi2::{chi2_test, significance_level};
     use crate::warps::Warp;
     use crate::warps::test_support::{
-        edge_points, integrate_over_rectangle, interior_grid, midpoint_grid,
+        edge_points, integrate_over_rectangle, interior_grid, midpoint_grid, not_uniform,
     };
     use approx::assert_relative_eq;
 
@@ -162,38 +162,25 @@ mod tests {
         if result.p_value > significance_level(1, 0.01) {
             return;
         }
-        // A picture: where the points went, against where a uniform disc puts them.
-        let path =
-            common::test_support::exercise_output_dir("ch02-disc-polar").join("histogram.png");
         let points: Vec<Vec2> = interior_grid(300)
             .into_iter()
             .map(sample_uniform_disc_polar)
             .collect();
-        let drawn = common::output::figures::histogram_vs_pdf(
-            &path,
-            "your polar disc: histogram against the uniform density 1/π",
-            &points,
-            &|p| {
-                if p.length() <= 1.0 {
+        panic!(
+            "{}",
+            not_uniform(
+                "ch02-disc-polar",
+                "sample_uniform_disc_polar",
+                "disc",
+                result.p_value,
+                &points,
+                &|p| if p.length() <= 1.0 {
                     f64::from(FRAC_1_PI)
                 } else {
                     0.0
-                }
-            },
-            [Vec2::splat(-1.0), Vec2::splat(1.0)],
-            32,
-        );
-        let picture = match drawn {
-            Ok(()) => format!(
-                "see {} (your points against the uniform density)",
-                path.display()
-            ),
-            Err(error) => format!("(the picture could not be written: {error})"),
-        };
-        panic!(
-            "sample_uniform_disc_polar: the points are not uniform over the disc (chi-square \
-             test, p = {:.2e}): some regions get more than their share of the area; {picture}",
-            result.p_value
+                },
+                [Vec2::splat(-1.0), Vec2::splat(1.0)],
+            )
         );
     }
 

@@ -54,7 +54,7 @@ mod tests {
     use super::*;
     use crate::chi2::{chi2_test, significance_level};
     use crate::warps::Warp;
-    use crate::warps::test_support::{ONE_MINUS_EPSILON, edge_points, interior_grid};
+    use crate::warps::test_support::{ONE_MINUS_EPSILON, edge_points, interior_grid, not_uniform};
     use glam::Vec3;
 
     fn inside_unit_triangle(b: Vec2) -> bool {
@@ -68,7 +68,12 @@ mod tests {
         grid.push(Vec2::new(ONE_MINUS_EPSILON, 1e-7));
         for u in grid {
             let b = sample_triangle_barycentric(u);
-            assert!(b.is_finite() && inside_unit_triangle(b), "u = {u}: {b}");
+            assert!(
+                b.is_finite() && inside_unit_triangle(b),
+                "sample_triangle_barycentric: ξ = {u} gave {b}, which is not in the triangle \
+                 b1 ≥ 0, b2 ≥ 0, b1 + b2 ≤ 1: every point of the square has to end up in the \
+                 triangle, the upper half moved into the lower one"
+            );
         }
     }
 
@@ -76,16 +81,37 @@ mod tests {
     fn exercise_triangle_fold_keeps_the_lower_half_as_it_is() {
         // The fold moves only what lies outside the triangle.
         for u in interior_grid(20).into_iter().filter(|u| u.x + u.y < 1.0) {
-            assert_eq!(sample_triangle_barycentric(u), u);
+            let b = sample_triangle_barycentric(u);
+            assert_eq!(
+                b, u,
+                "sample_triangle_barycentric: ξ = {u} lies in the lower half (ξ1 + ξ2 ≤ 1), \
+                 so it is a point of the triangle already, and the fold leaves it where it is; \
+                 yours moved it to {b}"
+            );
         }
     }
 
     #[test]
     fn exercise_triangle_fold_is_uniform() {
         let result = chi2_test(&Warp::Triangle, 200_000, 1, (16, 16));
-        assert!(
-            result.p_value > significance_level(1, 0.01),
-            "the triangle fails the chi-square test: {result:?}"
+        if result.p_value > significance_level(1, 0.01) {
+            return;
+        }
+        let points: Vec<Vec2> = interior_grid(300)
+            .into_iter()
+            .map(sample_triangle_barycentric)
+            .collect();
+        panic!(
+            "{}",
+            not_uniform(
+                "ch02-triangle-fold",
+                "sample_triangle_barycentric",
+                "triangle",
+                result.p_value,
+                &points,
+                &|b| if inside_unit_triangle(b) { 2.0 } else { 0.0 },
+                [Vec2::ZERO, Vec2::ONE],
+            )
         );
     }
 
