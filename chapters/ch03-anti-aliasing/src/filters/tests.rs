@@ -56,13 +56,34 @@ fn bad_radii_are_refused_with_the_value() {
 
 #[test]
 fn exercise_tent_filter() {
-    assert_eq!(tent_1d(0.0, 1.0), 1.0);
-    assert_eq!(tent_1d(0.5, 1.0), 0.5);
-    assert_eq!(tent_1d(-0.5, 1.0), 0.5);
-    assert_eq!(tent_1d(0.5, 2.0), 0.75);
-    assert_eq!(tent_1d(1.0, 1.0), 0.0);
-    assert_eq!(tent_1d(1.5, 1.0), 0.0, "zero, not negative, outside");
-    assert_eq!(tent_1d(-3.0, 2.0), 0.0);
+    for (x, radius, expected) in [
+        (0.0f32, 1.0f32, 1.0f32),
+        (0.5, 1.0, 0.5),
+        (-0.5, 1.0, 0.5),
+        (0.5, 2.0, 0.75),
+        (1.0, 1.0, 0.0),
+        (1.5, 1.0, 0.0),
+        (-3.0, 2.0, 0.0),
+    ] {
+        let got = tent_1d(x, radius);
+        if (got - expected).abs() <= 1e-6 {
+            continue;
+        }
+        let mistake = if x.abs() >= radius && got < 0.0 {
+            "beyond the radius the tent must be 0: the straight line goes on below zero there, \
+             and a negative weight is another filter"
+        } else if x < 0.0 && (got - tent_1d(-x, radius)).abs() > 1e-6 {
+            "the tent is symmetric: a sample left of the pixel centre weighs what one as far to \
+             the right does"
+        } else if (got - (1.0 - x.abs())).abs() <= 1e-6 && radius != 1.0 {
+            "the slope ignores the radius: the tent falls from 1 at the centre to 0 at the radius"
+        } else {
+            "the tent is 1 at the centre and falls in a straight line to 0 at the radius"
+        };
+        panic!(
+            "tent_1d: {mistake}.\n  tent_1d({x}, radius {radius}) gave {got}, expected {expected}"
+        );
+    }
 }
 
 /// `∫ f(x) dx` over `[-radius, radius]` by the midpoint rule.
@@ -74,21 +95,48 @@ fn integral(f: impl Fn(f32) -> f32, radius: f32) -> f64 {
         .sum()
 }
 
+/// Parameters `B` and `C`, and the cubic's value at 13 points `x`.
+type MitchellValues = (f32, f32, [(f32, f64); 13]);
+
 #[test]
 fn exercise_mitchell() {
-    let third = 1.0 / 3.0;
-    let m = |x| mitchell_1d(x, third, third);
-    assert!((m(0.0) - 8.0 / 9.0).abs() < 1e-6, "peak (6 - 2B)/6 = 8/9");
-    assert!((m(1.0) - 1.0 / 18.0).abs() < 1e-6, "(B + 6C)/6 at 1 = 1/18");
-    assert!(m(2.0).abs() < 1e-6 && m(2.5) == 0.0 && m(-3.0) == 0.0);
-    assert!(m(1.5) < 0.0, "the negative lobe");
-    assert_eq!(m(0.7), m(-0.7), "symmetric");
-    // Continuous where the pieces meet, and the weights of a constant sum to one.
-    assert!((m(1.0 - 1e-4) - m(1.0 + 1e-4)).abs() < 1e-3);
-    assert!((integral(m, 2.0) - 1.0).abs() < 1e-4);
-    // B = 1, C = 0 is the cubic B-spline: 2/3 at the centre, 1/6 at 1.
-    assert!((mitchell_1d(0.0, 1.0, 0.0) - 2.0 / 3.0).abs() < 1e-6);
-    assert!((mitchell_1d(1.0, 1.0, 0.0) - 1.0 / 6.0).abs() < 1e-6);
+    // The paper's cubic at a few points, for three choices of (B, C), worked out beforehand.
+    let third = 1.0f32 / 3.0;
+    #[rustfmt::skip]
+    let table: [MitchellValues; 3] = [
+        (third, third, [(0.0, 0.888888886), (0.3, 0.740388877), (0.7, 0.309055571), (-0.7, 0.309055571), (0.999, 0.0560570496), (1.0, 0.0555555572), (1.2, -0.0142222328), (1.5, -0.0347222233), (-1.5, -0.0347222233), (1.9, -0.00294444584), (2.0, 0.0), (2.5, 0.0), (-3.0, 0.0)]),
+        (1.0, 0.0, [(0.0, 0.666666667), (0.3, 0.590166661), (0.7, 0.348166675), (-0.7, 0.348166675), (0.999, 0.16716716), (1.0, 0.166666667), (1.2, 0.0853333181), (1.5, 0.0208333333), (-1.5, 0.0208333333), (1.9, 0.000166666786), (2.0, 0.0), (2.5, 0.0), (-3.0, 0.0)]),
+        (0.0, 0.5, [(0.0, 1.0), (0.3, 0.815499987), (0.7, 0.289500015), (-0.7, 0.289500015), (0.999, 0.000501992011), (1.0, 0.0), (1.2, -0.0640000076), (1.5, -0.0625), (-1.5, -0.0625), (1.9, -0.00450000203), (2.0, 0.0), (2.5, 0.0), (-3.0, 0.0)]),
+    ];
+    for (b, c, points) in table {
+        for (x, expected) in points {
+            let got = f64::from(mitchell_1d(x, b, c));
+            if (got - expected).abs() <= 1e-5 {
+                continue;
+            }
+            let mirrored = f64::from(mitchell_1d(-x, b, c));
+            let mistake = if x.abs() >= 2.0 {
+                "beyond |x| = 2 the filter is 0: its support is [-2, 2]"
+            } else if x < 0.0 && (mirrored - got).abs() > 1e-6 {
+                "the filter is symmetric: take |x| before choosing the piece"
+            } else if x.abs() < 1.0 {
+                "the inner piece (|x| < 1) is off: at x = 0 it is (6 - 2B) / 6"
+            } else {
+                "the outer piece (1 ≤ |x| < 2) is off: at x = 1 it is (B + 6C) / 6, and between \
+                 1 and 2 the recommended B = C = 1/3 dips below 0"
+            };
+            panic!(
+                "mitchell_1d: {mistake}.\n  mitchell_1d({x}, B = {b}, C = {c}) gave {got}, the \
+                 paper's cubic gives {expected:.6}"
+            );
+        }
+    }
+    // The weights of a constant sum to one.
+    let area = integral(|x| mitchell_1d(x, third, third), 2.0);
+    assert!(
+        (area - 1.0).abs() < 1e-4,
+        "mitchell_1d: the filter's integral over [-2, 2] is {area}, not 1"
+    );
 }
 
 #[test]

@@ -3,32 +3,91 @@ use common::sampler::IndependentSampler;
 
 const ALL_KINDS: [PixelSamplerKind; 4] = PixelSamplerKind::ALL;
 
+/// What is wrong with `p = jittered(index, columns, rows, xi)`, in words; `None` if right.
+fn jittered_mistake(index: u64, columns: u32, rows: u32, xi: Vec2, p: Vec2) -> Option<String> {
+    let strata = u64::from(columns) * u64::from(rows);
+    let stratum = index % strata;
+    let (column, row) = (stratum % u64::from(columns), stratum / u64::from(columns));
+    let expected = Vec2::new(
+        (column as f32 + xi.x) / columns as f32,
+        (row as f32 + xi.y) / rows as f32,
+    )
+    .min(Vec2::splat(ONE_MINUS_EPSILON));
+    if p == expected
+        || (p.is_finite() && (p - expected).abs().max_element() < 1e-6 && p.max_element() < 1.0)
+    {
+        return None;
+    }
+    let landed = (
+        (p.x * columns as f32).floor() as i64,
+        (p.y * rows as f32).floor() as i64,
+    );
+    let mistake = if !p.is_finite() {
+        "the position is not a number".to_string()
+    } else if p.x == 1.0 || p.y == 1.0 {
+        "the sample lands on 1.0, which is the edge of the next pixel: in f32, (k + ξ) / n can \
+         round up to 1 in the last stratum, and a sample must stay below 1"
+            .to_string()
+    } else if p.min_element() < 0.0 || p.max_element() > 1.0 {
+        if index >= strata {
+            format!(
+                "sample {index} of a pixel with {strata} strata lands outside the pixel: after \
+                 the last stratum the order starts again from the first"
+            )
+        } else {
+            "the sample lands outside the pixel: the jitter ξ spans one stratum, not the whole \
+             pixel"
+                .to_string()
+        }
+    } else if landed == (row as i64, column as i64) && row != column {
+        format!(
+            "sample {index} went to column {}, row {}: strata are counted row by row from the \
+             top left, so it belongs in column {column}, row {row}",
+            landed.0, landed.1
+        )
+    } else if landed != (column as i64, row as i64) {
+        let again = if index >= strata {
+            format!(
+                ": with {strata} strata, after the last one the order starts again from the first"
+            )
+        } else {
+            String::new()
+        };
+        format!(
+            "sample {index} should land in the stratum in column {column}, row {row} (counted \
+             row by row from the top left), not in column {}, row {}{again}",
+            landed.0, landed.1
+        )
+    } else {
+        "the sample is in its stratum but not where ξ puts it: ξ = (0, 0) is the stratum's top \
+         left corner, ξ near (1, 1) its bottom right"
+            .to_string()
+    };
+    Some(format!(
+        "{mistake}.\n  jittered({index}, {columns}, {rows}, ξ = {xi}) gave {p}, expected {expected}"
+    ))
+}
+
 #[test]
 fn exercise_jittered() {
+    let mut cases: Vec<(u64, u32, u32, Vec2)> = Vec::new();
     // Strata are visited row by row, and start again after the last one.
-    let centres: Vec<Vec2> = (0..5)
-        .map(|i| jittered(i, 2, 2, Vec2::splat(0.5)))
-        .collect();
-    assert_eq!(
-        centres,
-        vec![
-            Vec2::new(0.25, 0.25),
-            Vec2::new(0.75, 0.25),
-            Vec2::new(0.25, 0.75),
-            Vec2::new(0.75, 0.75),
-            Vec2::new(0.25, 0.25),
-        ]
-    );
-    // A wide grid: 3 columns, 1 row.
-    assert_eq!(jittered(2, 3, 1, Vec2::ZERO), Vec2::new(2.0 / 3.0, 0.0));
-    assert_eq!(
-        jittered(1, 3, 1, Vec2::new(0.5, 0.25)),
-        Vec2::new(0.5, 0.25)
-    );
+    cases.extend((0..5).map(|i| (i, 2, 2, Vec2::splat(0.5))));
+    // Wide and tall grids; jitter at the stratum's corners.
+    cases.extend([
+        (2, 3, 1, Vec2::ZERO),
+        (1, 3, 1, Vec2::new(0.5, 0.25)),
+        (5, 2, 3, Vec2::new(0.1, 0.9)),
+        (7, 4, 2, Vec2::new(0.3, 0.6)),
+    ]);
     // ξ just below 1 in the last stratum stays inside the pixel.
-    let last = jittered(8, 3, 3, Vec2::splat(ONE_MINUS_EPSILON));
-    assert!(last.x < 1.0 && last.y < 1.0, "{last}");
-    assert!(last.x > 0.999 && last.y > 0.999, "{last}");
+    cases.push((8, 3, 3, Vec2::splat(ONE_MINUS_EPSILON)));
+    for (index, columns, rows, xi) in cases {
+        let p = jittered(index, columns, rows, xi);
+        if let Some(mistake) = jittered_mistake(index, columns, rows, xi, p) {
+            panic!("jittered: {mistake}");
+        }
+    }
 }
 
 #[test]
