@@ -47,6 +47,35 @@ pub fn exercise_output_dir(exercise: &str) -> PathBuf {
     dir
 }
 
+/// The failure message of a warp that is not uniform over its shape, after drawing the
+/// picture that shows where: a histogram of `points` (the student's warp of a regular grid)
+/// against the uniform `density` over `domain`, written under `target/exercises/<exercise>/`.
+pub fn not_uniform(
+    exercise: &str,
+    function: &str,
+    shape: &str,
+    p_value: f64,
+    points: &[glam::Vec2],
+    density: &dyn Fn(glam::Vec2) -> f64,
+    domain: [glam::Vec2; 2],
+) -> String {
+    let path = exercise_output_dir(exercise).join("histogram.png");
+    let title = format!("your {function}: histogram against the uniform density");
+    let picture = match crate::output::figures::histogram_vs_pdf(
+        &path, &title, points, density, domain, 32,
+    ) {
+        Ok(()) => format!(
+            "see {} (your points against the uniform density)",
+            path.display()
+        ),
+        Err(error) => format!("(the picture could not be written: {error})"),
+    };
+    format!(
+        "{function}: the points are not uniform over the {shape} (chi-square test, p = \
+         {p_value:.2e}): some regions get more than their share of the area; {picture}"
+    )
+}
+
 /// Characters from dark to bright, for [`image_summary`].
 const RAMP: &[u8] = b" .:-=+*#%@";
 

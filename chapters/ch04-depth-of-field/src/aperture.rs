@@ -231,10 +231,11 @@ mod tests {
         for blades in [3, 5, 6, 9] {
             for u in grid(41) {
                 let p = sample_uniform_regular_polygon(u, blades, 0.3);
-                assert!(p.is_finite(), "{blades} blades, u = {u}: {p}");
                 assert!(
-                    sample_uniform_regular_polygon_pdf(p, blades, 0.3) > 0.0,
-                    "{blades} blades, u = {u}: {p} is outside"
+                    p.is_finite() && sample_uniform_regular_polygon_pdf(p, blades, 0.3) > 0.0,
+                    "sample_uniform_regular_polygon: ξ = {u} with {blades} blades (rotation 0.3) \
+                     gave {p}, which is outside the polygon: every point has to lie in one of \
+                     the fan's triangles around the centre"
                 );
             }
         }
@@ -245,12 +246,24 @@ mod tests {
         // Chi-square against the density 1/area inside the polygon: a triangle picked with the
         // wrong weight, or a non-uniform point inside it, shows as a huge statistic.
         for (blades, rotation) in [(3, 0.0), (5, 0.4), (6, 0.0)] {
-            let result = polygon_chi2(blades, rotation, |u| {
-                sample_uniform_regular_polygon(u, blades, rotation)
-            });
-            assert!(
-                result.p_value > significance_level(3, 0.01),
-                "{blades} blades: {result:?}"
+            let sample = |u| sample_uniform_regular_polygon(u, blades, rotation);
+            let result = polygon_chi2(blades, rotation, sample);
+            if result.p_value > significance_level(3, 0.01) {
+                continue;
+            }
+            let points: Vec<Vec2> = grid(300).into_iter().map(sample).collect();
+            panic!(
+                "{} ({blades} blades: does every triangle get the same share, and is the point \
+                 inside it uniform?)",
+                common::test_support::not_uniform(
+                    "ch04-polygon-aperture",
+                    "sample_uniform_regular_polygon",
+                    "polygon",
+                    result.p_value,
+                    &points,
+                    &|p| f64::from(sample_uniform_regular_polygon_pdf(p, blades, rotation)),
+                    [Vec2::splat(-1.0), Vec2::splat(1.0)],
+                )
             );
         }
     }
@@ -265,7 +278,12 @@ mod tests {
                 .into_iter()
                 .map(|u| sample_uniform_regular_polygon(u, blades, 0.0).distance(corner))
                 .fold(f32::INFINITY, f32::min);
-            assert!(nearest < 0.03, "corner {k} is never reached: {nearest}");
+            assert!(
+                nearest < 0.03,
+                "sample_uniform_regular_polygon: with {blades} blades, no ξ of a fine grid comes \
+                 near corner {k} at {corner} (the nearest point is {nearest:.3} away): the \
+                 points do not fill the polygon"
+            );
         }
     }
 

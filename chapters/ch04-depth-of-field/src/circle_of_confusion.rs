@@ -34,7 +34,8 @@ use glam::Vec2;
 // ANCHOR: circle_of_confusion
 /// The diameter of the circle of confusion of a point at depth `depth` (along the camera's
 /// axis), for a lens of radius `aperture_radius` focused at `focus_distance`, in the tangent
-/// units of the pinhole's `z = 1` plane: `2 R |d - d_f| / (d d_f)`.
+/// units of the pinhole's `z = 1` plane: the width of the patch of that plane the point's
+/// image spreads over.
 pub fn circle_of_confusion(aperture_radius: f32, focus_distance: f32, depth: f32) -> f32 {
     // BEGIN SOLUTION
     2.0 * aperture_radius * (depth - focus_distance).abs() / (depth * focus_distance)
@@ -143,13 +144,35 @@ mod tests {
 
     #[test]
     fn exercise_circle_of_confusion_is_sharp_at_the_focus_and_bounded_far_behind_it() {
-        assert_eq!(circle_of_confusion(0.3, 4.0, 4.0), 0.0);
-        assert_relative_eq!(
-            circle_of_confusion(0.3, 4.0, 1e9),
-            2.0 * 0.3 / 4.0,
-            epsilon = 1e-6
+        let at_focus = circle_of_confusion(0.3, 4.0, 4.0);
+        assert!(
+            at_focus == 0.0,
+            "circle_of_confusion: a point at the focus distance is imaged sharply, so its circle \
+             has diameter 0, not {at_focus}"
         );
-        assert!(circle_of_confusion(0.3, 4.0, 0.1) > 1.0);
+        let far = circle_of_confusion(0.3, 4.0, 1e9);
+        assert!(
+            (far - 2.0 * 0.3 / 4.0).abs() < 1e-6,
+            "circle_of_confusion: far behind the focus the rays from a point are almost \
+             parallel, and the circle tends to the lens's diameter seen from the focus \
+             distance, 2 R / d_f = {}; yours is {far} at depth 1e9",
+            2.0 * 0.3 / 4.0
+        );
+        let (front, behind) = (
+            circle_of_confusion(0.3, 4.0, 2.0),
+            circle_of_confusion(0.3, 4.0, 8.0),
+        );
+        assert!(
+            front > 0.0 && behind > 0.0,
+            "circle_of_confusion: a diameter is never negative, in front of the focus (depth 2: \
+             {front}) or behind it (depth 8: {behind})"
+        );
+        let near = circle_of_confusion(0.3, 4.0, 0.1);
+        assert!(
+            near > 1.0,
+            "circle_of_confusion: a point close in front of the lens is badly out of focus, its \
+             circle very wide; yours is {near} at depth 0.1 (focus 4, radius 0.3)"
+        );
     }
 
     #[test]
@@ -169,7 +192,10 @@ mod tests {
             let expected = predicted + own_size;
             assert!(
                 (measured - expected).abs() < 0.01 * expected + 0.05,
-                "depth {depth}: measured {measured} px, predicted {predicted} + {own_size} px"
+                "circle_of_confusion: a small sphere at depth {depth} (focus {focus}, lens radius \
+                 {radius}) blurs over {measured:.2} px in a traced image; your circle of \
+                 confusion predicts {predicted:.2} px (plus {own_size:.2} px for the sphere's own \
+                 size)"
             );
         }
     }

@@ -102,29 +102,78 @@ mod tests {
         PinholeCamera::new(frame, 60.0, 64, 48)
     }
 
+    /// What is wrong with `(origin, dir) = thin_lens_ray(pinhole_dir, lens_point, focus)`,
+    /// in words; `None` if it is right.
+    fn thin_lens_mistake(
+        pinhole_dir: Vec3,
+        lens_point: Vec2,
+        focus: f32,
+        (origin, dir): (Vec3, Vec3),
+    ) -> Option<String> {
+        let lens = lens_point.extend(0.0);
+        // Where the pinhole ray crosses the focal plane z = focus.
+        let focus_point = pinhole_dir * (focus / pinhole_dir.z);
+        let close = |a: Vec3, b: Vec3| (a - b).length() <= 1e-5 * b.length().max(1.0);
+        if close(origin, lens) && close(dir, focus_point - lens) {
+            return None;
+        }
+        let mistake = if !origin.is_finite() || !dir.is_finite() {
+            "the ray is not finite".to_string()
+        } else if !close(origin, lens) {
+            if close(origin, Vec3::ZERO) {
+                "the ray starts at the lens centre: it has to leave from the lens point, or \
+                 every ray is the pinhole ray and nothing blurs"
+                    .to_string()
+            } else {
+                format!("the ray has to start at the lens point {lens}")
+            }
+        } else if dir.z.abs() < 1e-6 {
+            "the direction runs parallel to the lens: it should reach the focal plane".to_string()
+        } else {
+            let crossing = origin + dir * (focus / dir.z);
+            if close(crossing, focus_point + lens) {
+                "the ray runs parallel to the pinhole ray, shifted by the lens point: it must \
+                 meet the pinhole ray in the focal plane, or nothing is ever in focus"
+                    .to_string()
+            } else if (dir.z - focus).abs() > 1e-4 * focus && close(crossing, focus_point) {
+                format!(
+                    "the ray goes the right way, but its direction has z = {}, not the focus \
+                     distance {focus}: the direction asked for is P_f - P_l",
+                    dir.z
+                )
+            } else {
+                format!(
+                    "the ray crosses the focal plane z = {focus} at {crossing}; it should cross \
+                     where the pinhole ray does, at {focus_point}"
+                )
+            }
+        };
+        Some(format!(
+            "{mistake}.\n  pinhole direction {pinhole_dir}, lens point {lens_point}, focus \
+             distance {focus}: your thin_lens_ray gave origin {origin}, direction {dir}"
+        ))
+    }
+
+    fn check_thin_lens(pinhole_dir: Vec3, lens_point: Vec2, focus: f32) {
+        let ray = thin_lens_ray(pinhole_dir, lens_point, focus);
+        if let Some(mistake) = thin_lens_mistake(pinhole_dir, lens_point, focus, ray) {
+            panic!("thin_lens_ray: {mistake}");
+        }
+    }
+
     #[test]
     fn exercise_thin_lens_ray_passes_through_the_focus_point() {
-        let pinhole_dir = Vec3::new(0.2, -0.1, 1.0);
-        let lens_point = Vec2::new(0.3, -0.05);
-        let (origin, dir) = thin_lens_ray(pinhole_dir, lens_point, 4.0);
-        assert_eq!(origin, Vec3::new(0.3, -0.05, 0.0));
-        // It reaches the focal plane z = 4 where the pinhole ray does: at (0.8, -0.4, 4).
-        let at_focus = origin + dir * (4.0 / dir.z);
-        assert_relative_eq!(at_focus, Vec3::new(0.8, -0.4, 4.0), epsilon = 1e-6);
-        assert_relative_eq!(dir, Vec3::new(0.5, -0.35, 4.0), epsilon = 1e-6);
+        check_thin_lens(Vec3::new(0.2, -0.1, 1.0), Vec2::new(0.3, -0.05), 4.0);
+        check_thin_lens(Vec3::new(-0.4, 0.25, 1.0), Vec2::new(-0.1, 0.2), 0.5);
+        check_thin_lens(Vec3::new(0.0, 0.0, 1.0), Vec2::new(0.05, 0.05), 100.0);
     }
 
     #[test]
     fn exercise_thin_lens_ray_accepts_a_pinhole_direction_of_any_length() {
-        let lens_point = Vec2::new(-0.2, 0.4);
-        let (o1, d1) = thin_lens_ray(Vec3::new(0.1, 0.3, 1.0), lens_point, 2.0);
-        let (o2, d2) = thin_lens_ray(Vec3::new(0.5, 1.5, 5.0), lens_point, 2.0);
-        assert_eq!(o1, o2);
-        assert_relative_eq!(d1, d2, epsilon = 1e-6);
-        // The lens centre gives the pinhole ray itself.
-        let (o, d) = thin_lens_ray(Vec3::new(0.1, 0.3, 1.0), Vec2::ZERO, 2.0);
-        assert_eq!(o, Vec3::ZERO);
-        assert_relative_eq!(d, Vec3::new(0.2, 0.6, 2.0), epsilon = 1e-6);
+        // The same pinhole ray, written with two lengths; and the lens centre.
+        check_thin_lens(Vec3::new(0.1, 0.3, 1.0), Vec2::new(-0.2, 0.4), 2.0);
+        check_thin_lens(Vec3::new(0.5, 1.5, 5.0), Vec2::new(-0.2, 0.4), 2.0);
+        check_thin_lens(Vec3::new(0.06, 0.18, 0.6), Vec2::ZERO, 2.0);
     }
 
     #[test]

@@ -93,7 +93,7 @@ mod tests {
     use crate::chi2::{chi2_test, significance_level};
     use crate::warps::Warp;
     use crate::warps::test_support::{
-        edge_points, integrate_over_rectangle, interior_grid, midpoint_grid, not_uniform,
+        edge_points, integrate_over_rectangle, interior_grid, midpoint_grid,
     };
     use approx::assert_relative_eq;
 
@@ -168,7 +168,7 @@ mod tests {
             .collect();
         panic!(
             "{}",
-            not_uniform(
+            common::test_support::not_uniform(
                 "ch02-disc-polar",
                 "sample_uniform_disc_polar",
                 "disc",

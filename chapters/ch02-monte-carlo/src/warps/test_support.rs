@@ -91,32 +91,3 @@ pub fn integrate_rotationally_symmetric(p: impl Fn(f32) -> f32) -> f64 {
     }
     TAU * sum * step
 }
-
-/// The failure message of a warp that is not uniform over its shape, after drawing the
-/// picture that shows where: a histogram of `points` (the student's warp of a regular grid)
-/// against the uniform `density`, written under `target/exercises/<exercise>/`.
-pub fn not_uniform(
-    exercise: &str,
-    function: &str,
-    shape: &str,
-    p_value: f64,
-    points: &[Vec2],
-    density: &dyn Fn(Vec2) -> f64,
-    domain: [Vec2; 2],
-) -> String {
-    let path = common::test_support::exercise_output_dir(exercise).join("histogram.png");
-    let title = format!("your {function}: histogram against the uniform density");
-    let picture =
-        match common::output::figures::histogram_vs_pdf(&path, &title, points, density, domain, 32)
-        {
-            Ok(()) => format!(
-                "see {} (your points against the uniform density)",
-                path.display()
-            ),
-            Err(error) => format!("(the picture could not be written: {error})"),
-        };
-    format!(
-        "{function}: the points are not uniform over the {shape} (chi-square test, p = \
-         {p_value:.2e}): some regions get more than their share of the area; {picture}"
-    )
-}

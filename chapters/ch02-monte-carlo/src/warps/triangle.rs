@@ -54,7 +54,7 @@ mod tests {
     use super::*;
     use crate::chi2::{chi2_test, significance_level};
     use crate::warps::Warp;
-    use crate::warps::test_support::{ONE_MINUS_EPSILON, edge_points, interior_grid, not_uniform};
+    use crate::warps::test_support::{ONE_MINUS_EPSILON, edge_points, interior_grid};
     use glam::Vec3;
 
     fn inside_unit_triangle(b: Vec2) -> bool {
@@ -103,7 +103,7 @@ mod tests {
             .collect();
         panic!(
             "{}",
-            not_uniform(
+            common::test_support::not_uniform(
                 "ch02-triangle-fold",
                 "sample_triangle_barycentric",
                 "triangle",
