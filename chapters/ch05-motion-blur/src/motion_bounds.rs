@@ -142,15 +142,29 @@ mod tests {
         let (a, b) = (&motion.keyframes()[0].parts, &motion.keyframes()[1].parts);
         let corners = corners(&unit_box());
         // Few steps: only the margin keeps the corners in between the samples inside.
-        let bounds = segment_bounds(&corners, a, b, 0.0, 1.0, 3);
+        let (steps, u0, u1) = (3, 0.0, 1.0);
+        let bounds = segment_bounds(&corners, a, b, u0, u1, steps);
+        let samples: Vec<f32> = (0..=steps)
+            .map(|i| u0 + (u1 - u0) * i as f32 / steps as f32)
+            .collect();
         for i in 0..=1000 {
-            let m = interpolate(a, b, i as f32 / 1000.0).matrix();
+            let u = i as f32 / 1000.0;
+            let m = interpolate(a, b, u).matrix();
             for &c in &corners {
                 let p = m.transform_point3(c);
-                assert!(
-                    bounds.contains(p),
-                    "u {}: {p} outside {bounds:?}",
-                    i as f32 / 1000.0
+                if bounds.contains(p) {
+                    continue;
+                }
+                let why = if samples.iter().any(|&s| (s - u).abs() < 1e-6) {
+                    "at one of the sampled fractions itself: are the corners placed at all \
+                     steps + 1 fractions from u0 to u1, ends included?"
+                } else {
+                    "between two sampled fractions: the sampled corners' box has to grow by as \
+                     far as a corner can travel in half a step"
+                };
+                panic!(
+                    "segment_bounds: the corner {c} spun to {p} at u = {u} lies outside your box \
+                     {bounds:?} ({steps} steps over [{u0}, {u1}]), {why}"
                 );
             }
         }
@@ -169,11 +183,19 @@ mod tests {
                 dense = dense.union_point(m.transform_point3(c));
             }
         }
-        assert!(bounds.contains_box(&dense));
+        assert!(
+            bounds.contains_box(&dense),
+            "segment_bounds: over [0.25, 0.75] with 32 steps the corners sweep through \
+             {dense:?}, which your box {bounds:?} does not hold: are the fractions spread from \
+             u0 to u1, not from 0 to 1?"
+        );
         let grown = bounds.diagonal() - dense.diagonal();
         assert!(
             grown.max_element() < 0.05 * dense.diagonal().max_element(),
-            "{grown}"
+            "segment_bounds: your box {bounds:?} is larger than the corners' sweep {dense:?} by \
+             {grown} along its sides: with 32 steps the margin should be a small fraction of a \
+             step's travel, not the whole segment's (a box too large costs every ray that \
+             passes near it)"
         );
     }
 

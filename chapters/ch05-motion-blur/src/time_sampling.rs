@@ -209,22 +209,42 @@ mod tests {
                     let high = (stratum + 1) as f32 / strata as f32;
                     assert!(
                         u >= low && u < high,
-                        "{stratum}/{strata} jitter {jitter}: {u}"
+                        "stratified_time_sample: stratum {stratum} of {strata} is the stretch \
+                         [{low}, {high}) of the shutter, and the jitter ({jitter}) only moves \
+                         the sample within it; yours gave {u}"
                     );
                 }
             }
         }
-        assert_eq!(stratified_time_sample(3, 8, 0.5), 3.5 / 8.0);
+        let u = stratified_time_sample(3, 8, 0.5);
+        assert!(
+            u == 3.5 / 8.0,
+            "stratified_time_sample: the jitter 0.5 puts the sample in the middle of stratum 3 of \
+             8, at {}; yours gave {u}{}",
+            3.5 / 8.0,
+            if u == 3.0 / 8.0 {
+                ": the jitter is left out, so every sample of a stratum falls at its start"
+            } else {
+                ""
+            }
+        );
     }
 
     #[test]
     fn exercise_stratified_time_sample_stays_below_one() {
         let strata = 1u64 << 30;
         let u = stratified_time_sample(strata - 1, strata, ONE_MINUS_EPSILON);
-        assert!(u < 1.0, "{u}");
-        assert_eq!(
-            stratified_time_sample(0, 1, ONE_MINUS_EPSILON),
-            ONE_MINUS_EPSILON
+        assert!(
+            u < 1.0,
+            "stratified_time_sample: the last of 2^30 strata with the largest jitter gave {u}: \
+             in f32, (stratum + jitter) / strata can round up to 1, which is outside the shutter \
+             interval [0, 1)"
+        );
+        let u = stratified_time_sample(0, 1, ONE_MINUS_EPSILON);
+        assert!(
+            u == ONE_MINUS_EPSILON,
+            "stratified_time_sample: one stratum and the largest jitter below 1 give that jitter \
+             back, {ONE_MINUS_EPSILON}; yours gave {u}"
         );
     }
 
