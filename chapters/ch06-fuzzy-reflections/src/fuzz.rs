@@ -175,23 +175,51 @@ mod tests {
                 let n = 2000;
                 for u in uniforms(n) {
                     let d = sample_lobe_around(center, exponent, u);
-                    assert!(d.is_finite(), "{center} n={exponent}: {d}");
-                    assert_relative_eq!(d.length(), 1.0, epsilon = 1e-4);
-                    assert!(d.dot(center) > 0.0, "{center} n={exponent}: {d}");
-                    mean += d / n as f32;
+                    let problem = if !d.is_finite() {
+                        "is not finite".to_string()
+                    } else if (d.length() - 1.0).abs() > 1e-4 {
+                        format!(
+                            "has length {}: turning a unit vector with an orthonormal frame keeps \
+                             it unit",
+                            d.length()
+                        )
+                    } else if d.dot(center) <= 0.0 {
+                        if (d - sample_cos_lobe(u, exponent)).length() < 1e-5 {
+                            "is the lobe's direction around +z, not turned to the centre"
+                                .to_string()
+                        } else {
+                            "points away from the centre: the lobe is a cap around it (is the \
+                             lobe's own axis, its z, the one turned to the centre?)"
+                                .to_string()
+                        }
+                    } else {
+                        mean += d / n as f32;
+                        continue;
+                    };
+                    panic!(
+                        "sample_lobe_around: around the centre {center} with exponent \
+                         {exponent}, ξ = {u} gave {d}, which {problem}"
+                    );
                 }
                 // E[cos α] = (n + 1)/(n + 2) for the cos^n lobe; 6 standard errors of the
                 // mean (Var cos α <= 1/12 for n = 0 and smaller for narrower lobes).
                 let expected = (exponent + 1.0) / (exponent + 2.0);
                 let tolerance = 6.0 * (1.0 / 12.0 / n as f32).sqrt();
+                let mean_cos = mean.dot(center);
                 assert!(
-                    (mean.dot(center) - expected).abs() < tolerance,
-                    "{center} n={exponent}: E[cos] {} vs {expected}",
-                    mean.dot(center)
+                    (mean_cos - expected).abs() < tolerance,
+                    "sample_lobe_around: around {center} with exponent {exponent} the mean cosine \
+                     to the centre is {mean_cos:.3}; the cos^n lobe gives (n + 1) / (n + 2) = \
+                     {expected:.3}: is the lobe's own axis, its z, the one turned to the centre?"
                 );
                 // Symmetric about the axis: the sideways mean vanishes.
-                let sideways = (mean - mean.dot(center) * center).length();
-                assert!(sideways < tolerance, "{center} n={exponent}: {sideways}");
+                let sideways = (mean - mean_cos * center).length();
+                assert!(
+                    sideways < tolerance,
+                    "sample_lobe_around: around {center} with exponent {exponent} the directions \
+                     lean to one side of the centre (mean sideways {sideways:.3}): the lobe is \
+                     symmetric about its axis"
+                );
             }
         }
     }
@@ -211,19 +239,27 @@ mod tests {
                 let sigma = (n as f32 * p * (1.0 - p)).sqrt();
                 assert!(
                     (hits - n as f32 * p).abs() < 5.0 * sigma,
-                    "n={exponent} c={c}: {hits} vs {}",
-                    n as f32 * p
+                    "sample_lobe_around: with exponent {exponent}, {:.1} % of the directions \
+                     should lie within {:.1}° of the centre, and {:.1} % of yours do: the \
+                     spread does not follow the cos^n lobe of that exponent",
+                    100.0 * p,
+                    c.acos().to_degrees(),
+                    100.0 * hits / n as f32
                 );
             }
         }
     }
 
     #[test]
-    fn a_huge_exponent_is_the_mirror_direction() {
+    fn exercise_lobe_around_with_a_huge_exponent_is_the_centre() {
         for center in centres() {
             for u in uniforms(100) {
                 let d = sample_lobe_around(center, 1e9, u);
-                assert!(d.dot(center) > 1.0 - 1e-6, "{center}: {d}");
+                assert!(
+                    d.dot(center) > 1.0 - 1e-6,
+                    "sample_lobe_around: an exponent of 1e9 makes the lobe a mirror, every \
+                     direction the centre {center} itself; ξ = {u} gave {d}"
+                );
             }
         }
     }

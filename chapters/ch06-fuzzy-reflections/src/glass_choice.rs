@@ -58,11 +58,8 @@ pub struct GlassChoice {
 
 // ANCHOR: choose_half
 /// The lecture's choice: reflection if `u < 1/2`, else refraction, for a surface that
-/// reflects the share `reflectance` (the Fresnel `F`) of the light.
-///
-/// The chosen branch's share divided by its probability 1/2 is its weight: `2 F` for
-/// reflection, `2 (1 - F)` for refraction, so that on average the two add up to Whitted's
-/// `F L_r + (1 - F) L_t`.
+/// reflects the share `reflectance` (the Fresnel `F`) of the light, with the weight that
+/// makes the chosen ray's light, on average over `u`, Whitted's `F L_r + (1 - F) L_t`.
 pub fn choose_half(u: f32, reflectance: f32) -> GlassChoice {
     // BEGIN SOLUTION
     if u < 0.5 {
@@ -115,28 +112,56 @@ mod tests {
 
     #[test]
     fn exercise_choose_half_picks_each_ray_half_the_time_at_twice_its_share() {
-        assert_eq!(
-            choose_half(0.25, 0.1),
-            GlassChoice {
-                reflect: true,
-                weight: 0.2
-            }
-        );
-        assert_eq!(
-            choose_half(0.5, 0.1),
-            GlassChoice {
-                reflect: false,
-                weight: 1.8
-            }
-        );
         // Unbiased: the mean equals Whitted's F a + (1 - F) b within 5 standard errors.
-        for f in [0.0f32, 0.04, 0.5, 0.9, 1.0] {
+        for f in [0.04f32, 0.5, 0.9, 0.0, 1.0] {
             let (a, b) = (3.0, 0.5);
             let (mean, se) = mean_estimate(choose_half, f, a, b);
             let expected = f64::from(f) * a + (1.0 - f64::from(f)) * b;
+            if (mean - expected).abs() <= 5.0 * se + 1e-9 {
+                continue;
+            }
+            let reflected = choose_half(0.25, f);
+            let refracted = choose_half(0.75, f);
+            let why = if (mean - 0.5 * expected).abs() <= 5.0 * se + 1e-9 {
+                "half of it: each branch is taken only half the time, so its share of the light \
+                 has to count for more when it is taken"
+                    .to_string()
+            } else if reflected.weight == 1.0 && refracted.weight == 1.0 {
+                "the weights are 1: with a coin of 1/2 the branches are not taken in proportion \
+                 to their shares F and 1 - F, so the weight has to make up for it"
+                    .to_string()
+            } else if reflected.reflect == refracted.reflect {
+                "one kind of ray only: the coin has to pick reflection half the time and \
+                 refraction the other half"
+                    .to_string()
+            } else {
+                format!(
+                    "the branches' weights (reflection {}, refraction {}) do not give back F and \
+                     1 - F on average: does each branch carry its own Fresnel share?",
+                    if reflected.reflect {
+                        reflected.weight
+                    } else {
+                        refracted.weight
+                    },
+                    if reflected.reflect {
+                        refracted.weight
+                    } else {
+                        reflected.weight
+                    },
+                )
+            };
+            panic!(
+                "choose_half: with F = {f}, reflected light {a} and refracted light {b}, Whitted's \
+                 sum is {expected}, and the mean of your choices is {mean:.4} (± {se:.4}): {why}"
+            );
+        }
+        // The lecture's convention: reflection below 1/2.
+        for (u, reflect) in [(0.25, true), (0.5, false), (0.9, false)] {
             assert!(
-                (mean - expected).abs() <= 5.0 * se + 1e-9,
-                "F={f}: {mean} vs {expected} (se {se})"
+                choose_half(u, 0.1).reflect == reflect,
+                "choose_half: the lecture reflects for ξ < 1/2 and refracts otherwise; with \
+                 ξ = {u} yours {}",
+                if reflect { "refracted" } else { "reflected" }
             );
         }
     }
