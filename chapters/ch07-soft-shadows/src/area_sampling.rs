@@ -35,12 +35,11 @@ pub fn parallelogram_point_error(quad: &Parallelogram, u: Vec2) -> Vec3 {
 }
 
 // ANCHOR: parallelogram_light_point
-/// A point of the parallelogram light `parallelogram`, uniform by area: `corner + ξ1 e1 + ξ2 e2`, with
-/// the density `1 / |e1 × e2|` per unit area, or `None` if the light has no area.
+/// A point of the parallelogram light `quad`, uniform by area (`ξ1` along the first edge, `ξ2`
+/// along the second), with its density per unit area, or `None` if the light has no area.
 ///
-/// Chapter 02's warp is used with the corner at the origin, `(0, e1, e2)`, so that the edges
-/// enter unrounded; the corner is added last. Far from the origin, `corner + e1` would round
-/// and the difference `(corner + e1) - corner` would no longer be `e1`.
+/// Far from the origin the order of the sums matters: `corner + e1` rounds, and the difference
+/// `(corner + e1) - corner` is then no longer `e1`.
 #[inline]
 pub fn sample_parallelogram_light(quad: &Parallelogram, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION
@@ -84,12 +83,8 @@ pub fn disc_light_sample_at(disc: &Disc, offset: Vec2) -> Option<LightSample> {
 }
 
 // ANCHOR: disc_light_point
-/// A point of the disc light, uniform by area, by the lecture's corrected polar map: angle
-/// `φ = 2π ξ1` and radius `r = R √ξ2`.
-///
-/// The square root is what makes it uniform: the share of the disc's area within radius `r`
-/// is `r² / R²`, so that is the share of samples that must land there, `P(radius ≤ r) = ξ2`
-/// for `r = R √ξ2`. The density is then `1 / (π R²)` everywhere; `None` if the disc has no
+/// A point of the disc light, uniform by area, by the lecture's corrected polar map (the angle
+/// from `ξ1`, the radius from `ξ2`, as chapter 02's polar disc); `None` if the disc has no
 /// area. An ellipse (a disc under a non-uniform scale) is the same map stretched along its
 /// two semi-axes, [`Disc::radii`]: a linear map keeps a uniform density uniform.
 pub fn sample_disc_light_polar(disc: &Disc, u: Vec2) -> Option<LightSample> {

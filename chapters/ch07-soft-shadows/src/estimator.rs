@@ -35,16 +35,10 @@ use crate::strategy::LightSampling;
 // ANCHOR: area_light_contribution
 /// One sample's term of the area estimator, without visibility: for the point `sample` on
 /// `light`, chosen with density `sample.pdf` per unit area, seen from the receiver `x` with
-/// unit normal `n`,
-///
-/// ```text
-/// L cos θ |cos θ_A| / (d² p_A)
-/// ```
-///
-/// with `d = |sample.p - x|`, `θ` the angle between `n` and the direction to the light, `θ_A`
-/// the angle at the light, `L` the light's [`emitted`](AreaLight::emitted) radiance towards
-/// `x` (0 when `x` is behind it) and `cos θ` clamped at 0 (light from below the receiver's
-/// horizon does not reach it). May be NaN when `d = 0`; callers check.
+/// unit normal `n`: the light's [`emitted`](AreaLight::emitted) radiance towards `x` (0 when
+/// `x` is behind it), turned from a patch of the light's area into light arriving at `x`, and
+/// divided by the density. Light from below the receiver's horizon does not reach it. May be
+/// NaN when the point is `x` itself; callers check.
 pub fn area_light_contribution(light: &AreaLight, x: Vec3, n: Vec3, sample: &LightSample) -> Vec3 {
     // BEGIN SOLUTION
     let to_light = sample.p - x;

@@ -40,16 +40,58 @@ fn quad_coordinates(quad: &Parallelogram, p: Vec3) -> Vec2 {
 fn exercise_parallelogram_light_point_lies_on_the_light() {
     let quad = slanted_quad();
     for u in uniform_points(500, 1) {
-        let s = sample_parallelogram_light(&quad, u).expect("the quad has an area");
-        assert_relative_eq!(quad_coordinates(&quad, s.p), u, epsilon = 1e-4);
-        assert_eq!(s.n, quad.normal());
-        assert_relative_eq!(s.pdf, 1.0 / quad.area(), max_relative = 1e-6);
-        assert_eq!(s.pdf_solid_angle, None);
+        let s = sample_parallelogram_light(&quad, u).expect(
+            "sample_parallelogram_light: this parallelogram has an area, so it gives a sample",
+        );
+        let at = quad_coordinates(&quad, s.p);
+        let problem = if quad.corner() != Vec3::ZERO
+            && (quad_coordinates(&quad, s.p + quad.corner()) - u)
+                .abs()
+                .max_element()
+                < 1e-4
+        {
+            Some("the point is missing the corner: it starts from the corner".to_string())
+        } else if (at - Vec2::new(u.y, u.x)).abs().max_element() < 1e-4 && u.x != u.y {
+            Some("ξ1 and ξ2 are swapped: ξ1 goes along the first edge, ξ2 along the second".into())
+        } else if (at - u).abs().max_element() > 1e-4 {
+            Some(format!(
+                "the point lies at edge coordinates {at}, where ξ puts it at {u}"
+            ))
+        } else if s.n != quad.normal() {
+            Some(format!(
+                "the normal {} is not the light's {}",
+                s.n,
+                quad.normal()
+            ))
+        } else if (s.pdf - 1.0 / quad.area()).abs() > 1e-6 / quad.area() {
+            Some(format!(
+                "the density is {}: a point uniform over an area A has density 1 / A = {} per \
+                 unit area",
+                s.pdf,
+                1.0 / quad.area()
+            ))
+        } else if s.pdf_solid_angle.is_some() {
+            Some("an area sample has no density per solid angle: leave it None".into())
+        } else {
+            None
+        };
+        if let Some(problem) = problem {
+            panic!(
+                "sample_parallelogram_light: {problem}.\n  ξ = {u}, corner {}, edges {} and {}: \
+                 your sample {s:?}",
+                quad.corner(),
+                quad.e1(),
+                quad.e2()
+            );
+        }
     }
     let corner = sample_parallelogram_light(&quad, Vec2::ZERO).unwrap();
-    assert_eq!(corner.p, quad.corner());
-    let far = sample_parallelogram_light(&quad, Vec2::new(1.0, 0.0)).unwrap();
-    assert_relative_eq!(far.p, quad.corner() + quad.e1(), epsilon = 1e-6);
+    assert!(
+        corner.p == quad.corner(),
+        "sample_parallelogram_light: ξ = (0, 0) is the corner {} itself, exactly; yours gave {}",
+        quad.corner(),
+        corner.p
+    );
 }
 
 #[test]
@@ -69,7 +111,11 @@ fn exercise_parallelogram_light_point_is_uniform() {
             if inside { 1.0 / quad.area() } else { 0.0 }
         },
     );
-    assert!(passes(&result), "{result:?}");
+    assert!(
+        passes(&result),
+        "sample_parallelogram_light: the points are not uniform over the parallelogram \
+         (chi-square test: {result:?})"
+    );
 }
 
 #[test]
@@ -78,20 +124,42 @@ fn exercise_parallelogram_light_point_has_none_without_area() {
         Parallelogram::new(Vec3::ZERO, Vec3::X, 2.0 * Vec3::X),
         Parallelogram::new(Vec3::ZERO, Vec3::ZERO, Vec3::Z),
     ] {
-        assert_eq!(sample_parallelogram_light(&quad, Vec2::splat(0.5)), None);
+        let got = sample_parallelogram_light(&quad, Vec2::splat(0.5));
+        assert!(
+            got.is_none(),
+            "sample_parallelogram_light: a parallelogram whose edges are parallel (or zero) has \
+             no area and no density; it gives no sample (None), not {got:?}"
+        );
     }
 }
 
 #[test]
 fn exercise_disc_light_point_lies_on_the_disc_with_the_uniform_density() {
     let disc = slanted_disc();
+    let radius = disc.radii().x;
     for u in uniform_points(500, 2) {
-        let s = sample_disc_light_polar(&disc, u).expect("the disc has an area");
+        let s = sample_disc_light_polar(&disc, u)
+            .expect("sample_disc_light_polar: this disc has an area, so it gives a sample");
         let offset = s.p - disc.center();
-        assert!(offset.dot(disc.normal()).abs() < 1e-5, "{offset}");
-        assert!(offset.length() <= disc.radii().x * (1.0 + 1e-6));
-        assert_eq!(s.n, disc.normal());
-        assert_relative_eq!(s.pdf, 1.0 / (PI * 1.5 * 1.5), max_relative = 1e-6);
+        let problem = if offset.dot(disc.normal()).abs() >= 1e-5 {
+            "the point is off the disc's plane".to_string()
+        } else if offset.length() > radius * (1.0 + 1e-6) {
+            format!(
+                "the point is {} from the centre, outside the disc of radius {radius}",
+                offset.length()
+            )
+        } else if s.n != disc.normal() {
+            format!("the normal {} is not the disc's {}", s.n, disc.normal())
+        } else if (s.pdf - 1.0 / (PI * radius * radius)).abs() > 1e-6 * s.pdf.abs().max(1e-6) {
+            format!(
+                "the density is {}: uniform over the disc's area π R² it is {} per unit area",
+                s.pdf,
+                1.0 / (PI * radius * radius)
+            )
+        } else {
+            continue;
+        };
+        panic!("sample_disc_light_polar: {problem}.\n  ξ = {u}: your sample {s:?}");
     }
 }
 
@@ -100,26 +168,60 @@ fn exercise_disc_light_point_follows_the_lectures_parametrisation() {
     // ξ1 is the angle (a quarter turn goes to the bitangent), ξ2 the squared relative radius,
     // as chapter 02's polar map.
     let disc = slanted_disc();
-    let s = sample_disc_light_polar(&disc, Vec2::new(0.25, 0.64)).unwrap();
-    assert_relative_eq!(s.p, disc.point_at(0.0, 0.8 * 1.5), epsilon = 1e-5);
-    for u in uniform_points(100, 3) {
+    let radius = disc.radii().x;
+    for u in [Vec2::new(0.25, 0.64)]
+        .into_iter()
+        .chain(uniform_points(100, 3))
+    {
         let s = sample_disc_light_polar(&disc, u).unwrap();
-        let q = 1.5 * sample_uniform_disc_polar(u);
-        assert_relative_eq!(s.p, disc.point_at(q.x, q.y), epsilon = 1e-5);
+        let q = radius * sample_uniform_disc_polar(u);
+        let expected = disc.point_at(q.x, q.y);
+        if (s.p - expected).length() <= 1e-5 * radius.max(1.0) {
+            continue;
+        }
+        let r = (s.p - disc.center()).length() / radius;
+        let mistake = if (r - u.y).abs() < 1e-4 {
+            "the radius came out as R ξ2: rings of equal width then get equal shares of the \
+             points, but an inner ring has less area than an outer one"
+                .to_string()
+        } else if (r - u.y.sqrt()).abs() < 1e-4 {
+            "the radius is right but the angle is not: ξ1 is the share of a turn, measured from \
+             the disc's tangent towards its bitangent"
+                .to_string()
+        } else {
+            format!(
+                "the point should lie {} of the radius from the centre",
+                u.y.sqrt()
+            )
+        };
+        panic!(
+            "sample_disc_light_polar: {mistake}.\n  ξ = {u}: your point {}, the lecture's map \
+             gives {expected}",
+            s.p
+        );
     }
 }
 
 #[test]
 fn exercise_disc_light_point_is_uniform() {
     let result = chi2_on_disc(DiscWarp::Polar, 4);
-    assert!(passes(&result), "{result:?}");
+    assert!(
+        passes(&result),
+        "sample_disc_light_polar: the points are not uniform over the disc (chi-square test: \
+         {result:?})"
+    );
 }
 
 #[test]
 fn exercise_disc_light_point_has_none_without_area() {
     for radius in [0.0, -1.0, f32::NAN] {
         let disc = Disc::new(Vec3::ZERO, Vec3::Y, radius);
-        assert_eq!(sample_disc_light_polar(&disc, Vec2::splat(0.3)), None);
+        let got = sample_disc_light_polar(&disc, Vec2::splat(0.3));
+        assert!(
+            got.is_none(),
+            "sample_disc_light_polar: a disc of radius {radius} has no area and no density; it \
+             gives no sample (None), not {got:?}"
+        );
     }
 }
 
