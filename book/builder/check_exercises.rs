@@ -105,10 +105,13 @@ pub fn run(
 /// Proves that every recorded wrong answer fails its exercise's check, and that the check
 /// says so in the recorded words.
 ///
-/// The answers are tried in a copy of the workspace, all solutions in place but the one being
+/// The answers are tried in a copy of the workspace, all solutions in place but the ones being
 /// tried, in rounds: round `r` puts in the `r`-th wrong answer of every exercise that has one,
-/// so a round costs one build of the changed crates, not one per answer. The copy is built
-/// with settings of its own (see [`WRONG_ANSWERS_CONFIG`]) in the shared build directory.
+/// so a round costs one build of the changed crates, not one per answer. A later exercise's
+/// check may call an earlier exercise of its chapter, so an answer that surprises in a round
+/// where its chapter had another wrong answer too is tried again alone before it counts. The
+/// copy is built with settings of its own (see [`WRONG_ANSWERS_CONFIG`]) in the shared build
+/// directory.
 fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) -> Result<()> {
     let rounds = exercises.iter().map(|e| e.wrong.len()).max().unwrap_or(0);
     if rounds == 0 {
@@ -125,43 +128,53 @@ fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) 
     write_config(&copy, WRONG_ANSWERS_CONFIG)?;
 
     println!("{:<28} {:<40} {:<20}", "exercise", "wrong answer", "check");
-    let mut surprises = Vec::new();
+    let mut trial = Trial {
+        root,
+        copy: &copy,
+        build: &build,
+        changed: Vec::new(),
+    };
     let mut tried = 0;
-    let mut changed: Vec<PathBuf> = Vec::new();
+    let mut surprises = Vec::new();
+    let mut again = Vec::new();
     for round in 0..rounds {
-        // Every file back to the workspace's, then this round's answers put in.
-        for file in changed.drain(..) {
-            std::fs::copy(root.join(&file), copy.join(&file))
-                .with_context(|| format!("cannot restore {}", file.display()))?;
-        }
         let in_round: Vec<(&Exercise, &WrongAnswer)> = exercises
             .iter()
             .filter_map(|e| e.wrong.get(round).map(|wrong| (e, wrong)))
             .collect();
-        for (exercise, wrong) in &in_round {
-            let path = copy.join(&exercise.file);
-            let source = std::fs::read_to_string(&path)
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            let spliced = solution_markers::splice_code(&source, &exercise.anchor, &wrong.code)
-                .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
-            std::fs::write(&path, spliced)
-                .with_context(|| format!("cannot write {}", path.display()))?;
-            changed.push(exercise.file.clone());
-        }
-        for (exercise, wrong) in in_round {
+        for (exercise, wrong, outcome) in trial.round(&in_round)? {
             tried += 1;
-            let outcome = run_check(&exercise.check, &copy, Some(&build))?;
-            let says = outcome
-                .output
-                .to_lowercase()
-                .contains(&wrong.says.to_lowercase());
-            let verdict = match (outcome.passed, says) {
-                (true, _) => "passed (SURPRISE)",
-                (false, true) => "failed, said it (ok)",
-                (false, false) => "failed, silent (SURPRISE)",
-            };
-            println!("{:<28} {:<40} {verdict}", exercise.name, wrong.mistake);
-            if outcome.passed || !says {
+            let shared = in_round
+                .iter()
+                .filter(|(other, _)| other.chapter == exercise.chapter)
+                .count()
+                > 1;
+            if refused(wrong, &outcome) {
+                print_verdict(exercise, wrong, &outcome, "");
+            } else if shared {
+                print_verdict(exercise, wrong, &outcome, ", tried again alone");
+                again.push((exercise, wrong));
+            } else {
+                print_verdict(exercise, wrong, &outcome, "");
+                surprises.push((exercise, wrong, outcome));
+            }
+        }
+    }
+    // Alone: one answer per chapter per round.
+    while !again.is_empty() {
+        let mut in_round: Vec<(&Exercise, &WrongAnswer)> = Vec::new();
+        again.retain(|&(exercise, wrong)| {
+            let chapter_free = !in_round
+                .iter()
+                .any(|(other, _)| other.chapter == exercise.chapter);
+            if chapter_free {
+                in_round.push((exercise, wrong));
+            }
+            !chapter_free
+        });
+        for (exercise, wrong, outcome) in trial.round(&in_round)? {
+            print_verdict(exercise, wrong, &outcome, " (alone)");
+            if !refused(wrong, &outcome) {
                 surprises.push((exercise, wrong, outcome));
             }
         }
@@ -181,6 +194,66 @@ fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) 
         "{} wrong answer(s) not refused as recorded: a check must fail on each and say what is wrong",
         surprises.len()
     )
+}
+
+/// The copy of the workspace where wrong answers are put in, and the files they changed.
+struct Trial<'a> {
+    root: &'a Path,
+    copy: &'a Path,
+    build: &'a EditionBuild,
+    changed: Vec<PathBuf>,
+}
+
+impl Trial<'_> {
+    /// Puts the `answers` in (every file the last round changed first put back) and runs each
+    /// one's check.
+    fn round<'e>(
+        &mut self,
+        answers: &[(&'e Exercise, &'e WrongAnswer)],
+    ) -> Result<Vec<(&'e Exercise, &'e WrongAnswer, Outcome)>> {
+        for file in self.changed.drain(..) {
+            std::fs::copy(self.root.join(&file), self.copy.join(&file))
+                .with_context(|| format!("cannot restore {}", file.display()))?;
+        }
+        for (exercise, wrong) in answers {
+            let path = self.copy.join(&exercise.file);
+            let source = std::fs::read_to_string(&path)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            let spliced = solution_markers::splice_code(&source, &exercise.anchor, &wrong.code)
+                .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
+            std::fs::write(&path, spliced)
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            self.changed.push(exercise.file.clone());
+        }
+        answers
+            .iter()
+            .map(|&(exercise, wrong)| {
+                let outcome = run_check(&exercise.check, self.copy, Some(self.build))?;
+                Ok((exercise, wrong, outcome))
+            })
+            .collect()
+    }
+}
+
+/// Whether the check refused the wrong answer in its recorded words.
+fn refused(wrong: &WrongAnswer, outcome: &Outcome) -> bool {
+    !outcome.passed
+        && outcome
+            .output
+            .to_lowercase()
+            .contains(&wrong.says.to_lowercase())
+}
+
+fn print_verdict(exercise: &Exercise, wrong: &WrongAnswer, outcome: &Outcome, note: &str) {
+    let verdict = match (outcome.passed, refused(wrong, outcome)) {
+        (true, _) => "passed (SURPRISE)",
+        (false, true) => "failed, said it (ok)",
+        (false, false) => "failed, silent (SURPRISE)",
+    };
+    println!(
+        "{:<28} {:<40} {verdict}{note}",
+        exercise.name, wrong.mistake
+    );
 }
 
 /// Settings of the copy in which wrong answers are tried: other debug settings than the

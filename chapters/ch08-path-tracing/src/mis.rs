@@ -62,11 +62,12 @@ pub fn balance_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {
 }
 
 // ANCHOR: power_heuristic
-/// Veach's power heuristic with exponent 2: `p_a² / (p_a² + p_b²)`.
+/// Veach's power heuristic with exponent 2: the weight of a sample drawn by strategy `a`
+/// (density `pdf_a`) that strategy `b` could also have drawn (density `pdf_b`).
 ///
 /// 0 when `p_a` is 0 (strategy `a` could not have drawn the sample), 1 when `p_a` is infinite
-/// (a delta, which the other strategy can never draw). The squares are taken of the ratio
-/// `p_b / p_a`, so two large densities do not overflow `f32` into `inf / inf`.
+/// (a delta, which the other strategy can never draw); finite for any two densities that
+/// `f32` holds, however large or small.
 pub fn power_heuristic(pdf_a: f32, pdf_b: f32) -> f32 {
     // BEGIN SOLUTION
     if pdf_a <= 0.0 {
@@ -87,18 +88,70 @@ mod tests {
 
     #[test]
     fn exercise_power_heuristic_squares_the_densities() {
-        assert_eq!(power_heuristic(1.0, 1.0), 0.5);
-        assert!((power_heuristic(3.0, 1.0) - 0.9).abs() < 1e-6);
-        assert!((power_heuristic(1.0, 3.0) - 0.1).abs() < 1e-6);
-        assert_eq!(power_heuristic(0.0, 5.0), 0.0);
-        assert_eq!(power_heuristic(2.0, 0.0), 1.0);
-        assert_eq!(power_heuristic(f32::INFINITY, 1.0), 1.0);
-        // No overflow for huge densities (a sharp lobe): 1e30² is infinite in f32.
-        assert!((power_heuristic(1e30, 1e30) - 0.5).abs() < 1e-6);
+        let cases: [(f32, f32, f32, &str); 8] = [
+            (
+                1.0,
+                1.0,
+                0.5,
+                "two equally likely strategies share the sample evenly",
+            ),
+            (3.0, 1.0, 0.9, "densities 3 and 1 square to 9 and 1"),
+            (1.0, 3.0, 0.1, "densities 1 and 3 square to 1 and 9"),
+            (
+                0.0,
+                5.0,
+                0.0,
+                "a strategy that could not have drawn the sample gets weight 0",
+            ),
+            (
+                2.0,
+                0.0,
+                1.0,
+                "when the other strategy could not have drawn it, the weight is 1",
+            ),
+            (
+                f32::INFINITY,
+                1.0,
+                1.0,
+                "a delta (infinite density) can only come from its own strategy: weight 1",
+            ),
+            (
+                1e30,
+                1e30,
+                0.5,
+                "equal huge densities (a sharp lobe) still share evenly; 1e30² overflows f32 to infinity, and inf / inf is NaN",
+            ),
+            (
+                1e-30,
+                1e-30,
+                0.5,
+                "equal tiny densities still share evenly; 1e-30² underflows f32 to 0, and 0 / 0 is NaN",
+            ),
+        ];
+        for (a, b, expected, why) in cases {
+            let w = power_heuristic(a, b);
+            if (w - expected).abs() <= 1e-6 {
+                continue;
+            }
+            let mistake = if (w - balance_heuristic(a, b)).abs() <= 1e-6 && a.is_finite() {
+                "that is the balance heuristic, p_a / (p_a + p_b): the power heuristic squares the \
+                 densities first"
+                    .to_string()
+            } else {
+                why.to_string()
+            };
+            panic!(
+                "power_heuristic: {mistake}.\n  power_heuristic({a}, {b}) gave {w}, expected {expected}"
+            );
+        }
         // The two weights of one sample add up to 1: the combination is unbiased.
         for (a, b) in [(0.3f32, 7.0f32), (1e-3, 1e3), (2.0, 2.5)] {
             let sum = power_heuristic(a, b) + power_heuristic(b, a);
-            assert!((sum - 1.0).abs() < 1e-6, "{a} {b}: {sum}");
+            assert!(
+                (sum - 1.0).abs() < 1e-6,
+                "power_heuristic: the weights of one sample under the two strategies add up to \
+                 {sum}, not 1 (densities {a} and {b}): the combined estimator would be biased"
+            );
         }
     }
 

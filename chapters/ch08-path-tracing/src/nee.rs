@@ -14,14 +14,14 @@ use common::render::SampleCounters;
 use glam::Vec3;
 
 // ANCHOR: light_sample_contribution
-/// The contribution of one light sample, visibility aside: the radiance `emitted` arriving
-/// along the sampled direction, times `f_cos` (`f cos θ` there), over the light's density
-/// `light_pdf` (per solid angle, the pick of the light included), weighted by `mis` against
-/// the density `bsdf_pdf` with which the BSDF would have sampled the same direction.
+/// The contribution of one light sample, visibility aside, for the radiance `emitted` arriving
+/// along the sampled direction, `f_cos` (`f cos θ` there), the light's density `light_pdf`
+/// (per solid angle, the pick of the light included), and the density `bsdf_pdf` with which
+/// the BSDF would have sampled the same direction, combined by the heuristic `mis`.
 ///
-/// A delta light (`light_pdf` infinite: a point light, where `emitted` is already `I / d²`
-/// and only the pick's `pick_probability` divides) takes weight 1. Anything with no chance,
-/// or carrying nothing, is 0, never NaN.
+/// A delta light (`light_pdf` infinite: a point light, where `emitted` is already `I / d²`,
+/// picked with probability `pick_probability`) cannot be found by the BSDF. Anything with no
+/// chance, or carrying nothing, is 0, never NaN.
 #[inline]
 pub fn light_sample_contribution(
     emitted: Vec3,
@@ -91,38 +91,93 @@ mod tests {
     #[test]
     fn exercise_light_sample_contribution_weights_and_divides() {
         let (le, f) = (Vec3::new(2.0, 4.0, 8.0), Vec3::splat(0.25));
-        // Plain NEE: L f / p.
-        let c = light_sample_contribution(le, f, 0.5, 3.0, 1.0, MisHeuristic::None);
-        assert!(
-            (c - Vec3::new(1.0, 2.0, 4.0)).abs().max_element() < 1e-6,
-            "{c}"
-        );
-        // Power heuristic with p_light = 1, p_bsdf = 1: half of it.
-        let c = light_sample_contribution(le, f, 1.0, 1.0, 1.0, MisHeuristic::Power);
-        assert!(
-            (c - Vec3::new(0.25, 0.5, 1.0)).abs().max_element() < 1e-6,
-            "{c}"
-        );
-        // Balance with p_light = 1, p_bsdf = 3: a quarter.
-        let c = light_sample_contribution(le, f, 1.0, 3.0, 1.0, MisHeuristic::Balance);
-        assert!(
-            (c - Vec3::new(0.125, 0.25, 0.5)).abs().max_element() < 1e-6,
-            "{c}"
-        );
-        // A point light picked with probability 1/4: weight 1, times 4.
-        let c = light_sample_contribution(le, f, f32::INFINITY, 5.0, 0.25, MisHeuristic::Power);
-        assert!(
-            (c - Vec3::new(2.0, 4.0, 8.0)).abs().max_element() < 1e-6,
-            "{c}"
-        );
+        // (light pdf, BSDF pdf, pick probability, heuristic, expected, what the case shows)
+        let cases = [
+            (
+                0.5,
+                3.0,
+                1.0,
+                MisHeuristic::None,
+                Vec3::new(1.0, 2.0, 4.0),
+                "plain NEE: L f cos / p_light",
+            ),
+            (
+                1.0,
+                1.0,
+                1.0,
+                MisHeuristic::Power,
+                Vec3::new(0.25, 0.5, 1.0),
+                "equal densities share the sample: the power weight is 1/2",
+            ),
+            (
+                1.0,
+                3.0,
+                1.0,
+                MisHeuristic::Balance,
+                Vec3::new(0.125, 0.25, 0.5),
+                "the balance weight of p_light = 1 against p_bsdf = 3 is 1/4",
+            ),
+            (
+                2.0,
+                1.0,
+                1.0,
+                MisHeuristic::Power,
+                Vec3::new(0.2, 0.4, 0.8),
+                "the weight is the light strategy's, p_light against p_bsdf (here 4/5), not the BSDF's",
+            ),
+            (
+                f32::INFINITY,
+                5.0,
+                0.25,
+                MisHeuristic::Power,
+                Vec3::new(2.0, 4.0, 8.0),
+                "a point light (infinite density) takes weight 1 and is divided only by the chance of picking it",
+            ),
+        ];
+        for (light_pdf, bsdf_pdf, pick, mis, expected, why) in cases {
+            let c = light_sample_contribution(le, f, light_pdf, bsdf_pdf, pick, mis);
+            if (c - expected).abs().max_element() < 1e-6 {
+                continue;
+            }
+            let unweighted = le * f / light_pdf;
+            let mistake = if light_pdf.is_finite()
+                && (c - unweighted).abs().max_element() < 1e-6
+                && mis != MisHeuristic::None
+            {
+                "the MIS weight is missing".to_string()
+            } else if light_pdf.is_finite()
+                && (c - le * f * mis.weight(bsdf_pdf, light_pdf) / light_pdf)
+                    .abs()
+                    .max_element()
+                    < 1e-6
+            {
+                "the weight is the BSDF strategy's: this sample came from the light, so its \
+                 weight is the light's density against the BSDF's"
+                    .to_string()
+            } else if !c.is_finite() {
+                format!("{c} is not finite")
+            } else {
+                why.to_string()
+            };
+            panic!(
+                "light_sample_contribution: {mistake}.\n  L = {le}, f cos = {f}, p_light = \
+                 {light_pdf}, p_bsdf = {bsdf_pdf}, pick {pick}, {mis:?}: yours gave {c}, \
+                 expected {expected} ({why})"
+            );
+        }
         // Nothing to divide by, nothing emitted: 0, not NaN.
-        assert_eq!(
-            light_sample_contribution(le, f, 0.0, 1.0, 1.0, MisHeuristic::Power),
-            Vec3::ZERO
-        );
-        assert_eq!(
-            light_sample_contribution(Vec3::ZERO, f, 0.0, 0.0, 1.0, MisHeuristic::Balance),
-            Vec3::ZERO
-        );
+        for (emitted, light_pdf, bsdf_pdf, mis) in [
+            (le, 0.0, 1.0, MisHeuristic::Power),
+            (Vec3::ZERO, 0.0, 0.0, MisHeuristic::Balance),
+            (le, f32::NAN, 1.0, MisHeuristic::Power),
+        ] {
+            let c = light_sample_contribution(emitted, f, light_pdf, bsdf_pdf, 1.0, mis);
+            assert!(
+                c == Vec3::ZERO,
+                "light_sample_contribution: a sample the light could not have drawn (density \
+                 {light_pdf}) or that carries nothing contributes 0, never NaN or infinity; \
+                 L = {emitted}, p_bsdf = {bsdf_pdf} gave {c}"
+            );
+        }
     }
 }

@@ -412,22 +412,65 @@ mod tests {
             assert_eq!(
                 next.len(),
                 64,
-                "a matte surface seen from its front always scatters"
+                "extend_path: a matte surface seen from its front always scatters, so the path \
+                 always goes on here (no roulette before rr_depth); yours ended {} of 64 paths",
+                64 - next.len()
             );
             for segment in next {
                 // A cosine-sampled matte surface: weight = albedo, pdf = cos θ / π.
-                assert_eq!(segment.carried.throughput, Vec3::new(0.25, 0.25, 2.0));
-                assert_eq!(segment.carried.eta_scale, 1.0);
+                let throughput = segment.carried.throughput;
+                let expected = Vec3::new(0.25, 0.25, 2.0);
+                let why = if throughput == carried.throughput {
+                    "the throughput was not multiplied by the sample's weight"
+                } else if throughput == Vec3::new(0.5, 0.25, 1.0) {
+                    "the throughput became the sample's weight: it is multiplied into what the \
+                     path already carries"
+                } else {
+                    "it is what the path carried times the sample's weight"
+                };
+                assert!(
+                    (throughput - expected).abs().max_element() < 1e-6,
+                    "extend_path: the new throughput is {throughput}, expected {expected}: {why} \
+                     (carried {}, albedo (0.5, 0.25, 1))",
+                    carried.throughput
+                );
+                assert!(
+                    segment.carried.eta_scale == 1.0,
+                    "extend_path: a matte bounce scales no radiance, so eta_scale stays 1, not {}",
+                    segment.carried.eta_scale
+                );
                 let cos = segment.ray.dir.dot(Vec3::Y);
-                assert!(cos > 0.0, "the new ray leaves on the lit side");
+                assert!(
+                    cos > 0.0,
+                    "extend_path: the next ray {:?} does not leave on the lit side of the floor: \
+                     its direction is the BSDF sample's",
+                    segment.ray
+                );
                 let pdf = cos * std::f32::consts::FRAC_1_PI;
-                assert!((segment.previous.pdf - pdf).abs() < 1e-5 * pdf.max(1.0));
-                assert_eq!(segment.previous.p, Vec3::ZERO);
+                assert!(
+                    (segment.previous.pdf - pdf).abs() < 1e-5 * pdf.max(1.0),
+                    "extend_path: Previous keeps the density {}, but the BSDF sampled that \
+                     direction with density {pdf}: MIS at the next hit needs the sample's own pdf",
+                    segment.previous.pdf
+                );
+                assert!(
+                    segment.previous.p == Vec3::ZERO,
+                    "extend_path: Previous keeps the point {}, not the hit point the direction \
+                     leaves from (0, 0, 0)",
+                    segment.previous.p
+                );
                 assert!(
                     segment.ray.origin.y > 0.0,
-                    "offset off the surface, above it"
+                    "extend_path: the next ray starts at {}, on or below the surface: spawn it \
+                     from the hit, offset off the surface",
+                    segment.ray.origin
                 );
-                assert_eq!(segment.ray.time, 0.25, "the path keeps its time");
+                assert!(
+                    segment.ray.time == 0.25,
+                    "extend_path: the next ray's time is {}, not the path's 0.25: every ray of a \
+                     path keeps the shutter time",
+                    segment.ray.time
+                );
             }
         });
     }
@@ -447,7 +490,12 @@ mod tests {
         };
         with_tracer(white, options, |tracer| {
             let before_rr = extensions(tracer, &white, 2, carried, 1000);
-            assert_eq!(before_rr.len(), 1000, "no roulette before rr_depth");
+            assert_eq!(
+                before_rr.len(),
+                1000,
+                "extend_path: before rr_depth no path is ended by the roulette; {} of 1000 were",
+                1000 - before_rr.len()
+            );
             let n = 20_000;
             let survivors = extensions(tracer, &white, 3, carried, n);
             // Survival with probability q = 0.2: the count is binomial(n, 0.2).
@@ -457,13 +505,24 @@ mod tests {
             let count = survivors.len() as f64;
             assert!(
                 (count - expected).abs() < 5.0 * sigma,
-                "{count} survivors of {n}, expected {expected} ± {sigma:.1}"
+                "extend_path: {count} of {n} paths survived the roulette, expected about \
+                 {expected} ± {sigma:.1}: the path carries 0.45 through glass that scaled its \
+                 radiance by 2.25, so the roulette must look at 0.45 / 2.25 = 0.2 (the \
+                 throughput without its radiance scaling)"
             );
             // Each survivor carries throughput / q, so the mean over all paths is unchanged.
             for segment in &survivors {
                 let kept = segment.carried.throughput.x;
-                assert!((kept - 0.45 / 0.2).abs() < 1e-5, "{kept}");
-                assert_eq!(segment.carried.eta_scale, 2.25);
+                assert!(
+                    (kept - 0.45 / 0.2).abs() < 1e-5,
+                    "extend_path: a survivor carries {kept}; surviving with probability 0.2 it \
+                     must carry 0.45 / 0.2 = 2.25, so that the mean over all paths is unchanged"
+                );
+                assert!(
+                    segment.carried.eta_scale == 2.25,
+                    "extend_path: eta_scale is {}, but a matte bounce leaves the path's 2.25 as it is",
+                    segment.carried.eta_scale
+                );
             }
         });
     }
@@ -476,7 +535,12 @@ mod tests {
             eta_scale: 1.0,
         };
         with_tracer(black, PathOptions::with_depth(8), |tracer| {
-            assert!(extensions(tracer, &black, 1, carried, 16).is_empty());
+            let went_on = extensions(tracer, &black, 1, carried, 16).len();
+            assert!(
+                went_on == 0,
+                "extend_path: after a black surface the path carries nothing, so it ends; {went_on} \
+                 of 16 went on (each costs rays and can add nothing)"
+            );
         });
     }
 
@@ -499,7 +563,11 @@ mod tests {
             for i in 0..256 {
                 sampler.start_pixel_sample(UVec2::ZERO, i);
                 let l = tracer.radiance(&ray, &mut sampler, &mut counters);
-                assert!((l - Vec3::ONE).abs().max_element() < 1e-4, "{l}");
+                assert!(
+                    (l - Vec3::ONE).abs().max_element() < 1e-4,
+                    "extend_path: a white matte sphere under a sky of radiance 1 sends back \
+                     exactly 1 however the path bounces; this path brought back {l}"
+                );
             }
             assert!(counters.rays > 256, "the paths bounced");
         });

@@ -12,10 +12,10 @@ pub const MAX_SURVIVAL: f32 = 0.95;
 
 // ANCHOR: russian_roulette
 /// The roulette for a path whose throughput (radiance scaling removed) has the largest
-/// channel `throughput_max`, with the uniform number `u`: `Some(1 / q)`, the factor the
-/// surviving throughput is multiplied by, or `None` when the path ends.
-/// `q = min(throughput_max, MAX_SURVIVAL)`; a path with nothing left (`q` below the smallest
-/// normal float, whose inverse would be infinite, or NaN) ends.
+/// channel `throughput_max`, with the uniform number `u`: `Some(factor)`, what the surviving
+/// throughput is multiplied by, or `None` when the path ends. A dim path is likely to end, a
+/// bright one survives at most with probability [`MAX_SURVIVAL`]; a path with nothing left, or
+/// a NaN, ends.
 pub fn russian_roulette(throughput_max: f32, u: f32) -> Option<f32> {
     // BEGIN SOLUTION
     // `f32::min` ignores NaN, so a NaN throughput is refused before it can become 0.95; and
@@ -38,12 +38,57 @@ mod tests {
 
     #[test]
     fn exercise_russian_roulette_is_unbiased() {
-        assert_eq!(russian_roulette(0.5, 0.49), Some(2.0));
-        assert_eq!(russian_roulette(0.5, 0.5), None);
-        assert_eq!(russian_roulette(3.0, 0.9), Some(1.0 / 0.95));
-        assert_eq!(russian_roulette(3.0, 0.96), None);
-        assert_eq!(russian_roulette(0.0, 0.0), None);
-        assert_eq!(russian_roulette(f32::NAN, 0.0), None);
+        let cases: [(f32, f32, Option<f32>, &str); 6] = [
+            (
+                0.5,
+                0.49,
+                Some(2.0),
+                "a path with throughput 0.5 survives for u below 0.5, and the survivor carries 1 / 0.5",
+            ),
+            (
+                0.5,
+                0.5,
+                None,
+                "a path with throughput 0.5 survives only for u below 0.5",
+            ),
+            (
+                3.0,
+                0.9,
+                Some(1.0 / 0.95),
+                "a bright path survives with probability MAX_SURVIVAL, not 1 (every path must have a chance to end), and carries 1 / MAX_SURVIVAL",
+            ),
+            (
+                3.0,
+                0.96,
+                None,
+                "even a bright path ends when u is above MAX_SURVIVAL",
+            ),
+            (
+                0.0,
+                0.0,
+                None,
+                "a path that carries nothing ends: 1 / 0 would be infinite",
+            ),
+            (
+                f32::NAN,
+                0.0,
+                None,
+                "a NaN throughput ends the path (f32::min ignores a NaN, so min(NaN, 0.95) is 0.95)",
+            ),
+        ];
+        for (t, u, expected, why) in cases {
+            let got = russian_roulette(t, u);
+            assert!(
+                got == expected,
+                "russian_roulette: {why}.\n  russian_roulette({t}, {u}) gave {got:?}, expected {expected:?}"
+            );
+        }
+        let tiny = russian_roulette(1e-39, 0.0);
+        assert!(
+            tiny.is_none_or(f32::is_finite),
+            "russian_roulette: a throughput below the smallest normal float (1e-39) would survive \
+             with a factor of {tiny:?}: 1 / q overflows to infinity there, so the path ends"
+        );
         // The mean of the factor over u is exactly 1 for any throughput.
         for t in [1e-4f32, 0.1, 0.7, 0.95, 1.0, 20.0] {
             let n = 100_000;
@@ -54,7 +99,12 @@ mod tests {
                 })
                 .sum::<f64>()
                 / f64::from(n);
-            assert!((mean - 1.0).abs() < 1e-3, "throughput {t}: {mean}");
+            assert!(
+                (mean - 1.0).abs() < 1e-3,
+                "russian_roulette: over all u the factor of a path with throughput {t} averages \
+                 {mean:.4}, not 1: the roulette has to leave the expected throughput unchanged \
+                 (the survival chance times the survivor's factor is 1)"
+            );
         }
     }
 }
