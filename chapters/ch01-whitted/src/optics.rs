@@ -8,8 +8,8 @@
 use glam::Vec3;
 
 // ANCHOR: reflect
-/// The mirror direction of `d` about the normal `n`: the tangential part of `d` is kept and
-/// the normal part flipped, so the angle of reflection equals the angle of incidence.
+/// The mirror direction of `d` about the normal `n`: in the plane of `d` and `n`, at an angle
+/// of reflection equal to the angle of incidence.
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
     // BEGIN SOLUTION
     d - 2.0 * d.dot(n) * n
@@ -41,8 +41,8 @@ pub fn refract(d: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
 
 // ANCHOR: fresnel
 /// The share of unpolarised light a smooth dielectric interface reflects, from the Fresnel
-/// equations: the mean of the squared amplitude ratios for light polarised perpendicular
-/// (`r_s`) and parallel (`r_p`) to the plane of incidence.
+/// equations for light polarised perpendicular (`r_s`) and parallel (`r_p`) to the plane of
+/// incidence.
 ///
 /// `cos_i` is the cosine between the incident ray and the normal (in `[0, 1]`), `eta` the
 /// relative index `eta_i / eta_t`. The refracted share is `1 - fresnel_dielectric(...)`.

@@ -10,24 +10,17 @@ use rand::SeedableRng;
 use rand_pcg::Pcg32;
 
 // ANCHOR: sample_variance
-/// The mean and the unbiased sample variance `Σ (x - mean)² / (n - 1)` of `values`, in one
-/// pass by Welford's method.
+/// The mean and the unbiased sample variance of `values`, in one pass by Welford's method.
 ///
-/// Dividing by `n - 1` rather than `n` makes the variance unbiased: the deviations are taken
-/// from the sample's own mean, which sits closer to the values than the true mean does, so
-/// they come out too small on average by exactly the factor `(n - 1) / n`.
+/// The deviations are taken from the sample's own mean, which sits closer to the values than
+/// the true mean does, so the plain mean of their squares comes out too small on average; the
+/// unbiased variance makes up for it.
 ///
-/// Why not the textbook shortcut `(Σ x² - n mean²) / (n - 1)`? It subtracts two huge,
+/// Why not the textbook shortcut through `Σ x² - n mean²`? It subtracts two huge,
 /// nearly equal numbers: for values around `10⁹` with a spread of 10, both terms are about
 /// `10¹⁸` and their difference is below the rounding error of either, so the result is
 /// garbage (even negative). Welford's method updates the mean and the sum of squared
-/// deviations `M₂` one value at a time,
-///
-/// ```text
-/// δ = x - mean,   mean += δ / k,   M₂ += δ (x - mean),
-/// ```
-///
-/// and only ever adds small, positive quantities.
+/// deviations one value at a time, and only ever adds small, positive quantities.
 ///
 /// One value has no spread to measure: its variance is returned as 0 (strictly it is
 /// undefined, `0 / 0`). With no values at all both results are `NaN`.

@@ -55,17 +55,8 @@ pub fn invert_disc_naive(p: Vec2) -> Vec2 {
 }
 
 // ANCHOR: disc_polar
-/// A uniform point of the unit disc: the lecture's `Polar2Cartesian(√ξ2, 2π ξ1)`.
-///
-/// Why the square root: for a uniform point the chance of landing within distance `r` of the
-/// centre is the share of the area there, `P(R ≤ r) = π r² / π = r²`. That is the radius's
-/// cumulative distribution `F(r) = r²`, and inverting it turns a uniform number into a radius
-/// with exactly this distribution: set `ξ2 = F(r) = r²` and solve, `r = √ξ2`. The angle needs
-/// no such care, as a uniform disc looks the same in every direction: `φ = 2π ξ1`.
-///
-/// Check: `r` has density `F'(r) = 2r` and `φ` density `1 / 2π`, so `(r, φ)` has `r / π` per
-/// unit of `dr dφ`; the area element is `r dr dφ`, so the density per unit area is `1 / π`, the
-/// same everywhere.
+/// A uniform point of the unit disc by the lecture's `Polar2Cartesian(v, 2π ξ1)`, with the
+/// radius `v` taken from `ξ2` so that every region of the disc gets its share of the area.
 pub fn sample_uniform_disc_polar(u: Vec2) -> Vec2 {
     // BEGIN SOLUTION
     let r = u.y.sqrt();

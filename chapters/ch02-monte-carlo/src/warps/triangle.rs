@@ -20,10 +20,9 @@ use super::VectorSpace;
 /// Uniform barycentric coordinates `(b1, b2)` of a triangle, with `b1, b2 ≥ 0` and
 /// `b1 + b2 ≤ 1`; the third is `b0 = 1 - b1 - b2`.
 ///
-/// Take `u` itself when it already lies in the lower triangle `u.x + u.y ≤ 1`; otherwise fold
-/// it back by the point reflection `(1 - u.x, 1 - u.y)`, which lands in the lower triangle
-/// because `(1 - u.x) + (1 - u.y) = 2 - (u.x + u.y) < 1`. The reflection preserves area, so
-/// both halves of the square arrive with the same, uniform density.
+/// By folding the unit square: the half that already is the triangle stays as it is, and the
+/// other half is mapped onto it by a map that preserves area, so both halves arrive with the
+/// same, uniform density.
 pub fn sample_triangle_barycentric(u: Vec2) -> Vec2 {
     // BEGIN SOLUTION
     if u.x + u.y > 1.0 {
