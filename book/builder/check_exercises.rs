@@ -338,13 +338,28 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
     command
         .args(&args)
         .current_dir(edition)
-        .stdin(Stdio::null());
+        .stdin(Stdio::null())
+        .stdout(Stdio::inherit())
+        .stderr(Stdio::piped());
     build.apply(&mut command);
-    let status = command.status().context("cannot run cargo")?;
-    if !status.success() {
+    let output = command.output().context("cannot run cargo")?;
+    let messages = String::from_utf8_lossy(&output.stderr);
+    eprint!("{messages}");
+    if !output.status.success() {
         bail!(
             "the student edition does not compile (errors above): every stub must leave its \
              crate compiling, so students start from code that builds"
+        );
+    }
+    let warned: Vec<&str> = messages
+        .lines()
+        .filter(|line| line.starts_with("warning: `") && line.contains(" generated "))
+        .collect();
+    if !warned.is_empty() {
+        bail!(
+            "the student edition compiles with warnings ({}): a stub must leave no warning, or \
+             students learn to ignore them",
+            warned.join("; ")
         );
     }
     Ok(())

@@ -306,6 +306,96 @@ pub fn splice_code(source: &str, anchor: &str, code: &str) -> Result<String, Mar
     Ok(text)
 }
 
+/// The parameters of the function whose body holds the exercise's solution that nothing
+/// outside the solution uses: what the stub would leave unused. Read from the signature, the
+/// last `fn` line in the anchor before the solution, up to its opening brace.
+fn unused_inputs(lines: &[&str], span: &ExerciseSpan) -> Vec<String> {
+    let before = &lines[span.body.start..span.solution.start];
+    let Some(fn_line) = before.iter().rposition(|line| {
+        let code = line.trim_start();
+        !code.starts_with("//") && (code.starts_with("fn ") || code.contains(" fn "))
+    }) else {
+        return Vec::new();
+    };
+    let signature: String = before[fn_line..].join(" ");
+    let Some(open) = signature.find('(') else {
+        return Vec::new();
+    };
+    // The parameter list: up to the parenthesis that closes the first one.
+    // A `>` after `-` is an arrow (`Fn(u32) -> f32`), not a closing bracket.
+    let closes = |text: &str, index: usize, c: char| {
+        matches!(c, ')' | ']') || (c == '>' && !text[..index].ends_with('-'))
+    };
+    let mut depth = 0;
+    let mut close = None;
+    for (index, c) in signature[open..].char_indices() {
+        match c {
+            '(' | '<' | '[' => depth += 1,
+            c if closes(&signature[open..], index, c) => {
+                depth -= 1;
+                if depth == 0 {
+                    close = Some(open + index);
+                    break;
+                }
+            }
+            _ => {}
+        }
+    }
+    let Some(close) = close else {
+        return Vec::new();
+    };
+    let mut names = Vec::new();
+    let (mut level, mut start) = (0, open + 1);
+    let list = &signature[..close];
+    for (index, c) in list.char_indices().skip(open + 1) {
+        match c {
+            '(' | '<' | '[' => level += 1,
+            c if closes(list, index, c) => level -= 1,
+            ',' if level == 0 => {
+                names.push(list[start..index].to_string());
+                start = index + 1;
+            }
+            _ => {}
+        }
+    }
+    names.push(list[start..].to_string());
+    // The body starts after the line that opens it.
+    let Some(opens) = before[fn_line..]
+        .iter()
+        .position(|line| line.trim_end().ends_with('{'))
+    else {
+        return Vec::new();
+    };
+    let body_outside: Vec<&str> = lines[span.body.start + fn_line + opens + 1..span.solution.start]
+        .iter()
+        .chain(&lines[span.solution.end..span.body.end])
+        .copied()
+        .collect();
+    names
+        .iter()
+        .filter_map(|parameter| {
+            let name = parameter.split(':').next()?.trim();
+            let name = name.strip_prefix("mut ").unwrap_or(name).trim();
+            let is_identifier = !name.is_empty()
+                && name != "self"
+                && !name.starts_with('_')
+                && name.chars().all(|c| c.is_alphanumeric() || c == '_');
+            let used = body_outside.iter().any(|line| uses_word(line, name));
+            (is_identifier && parameter.contains(':') && !used).then(|| name.to_string())
+        })
+        .collect()
+}
+
+/// Whether `line` holds `word` as a whole identifier.
+fn uses_word(line: &str, word: &str) -> bool {
+    line.match_indices(word).any(|(at, _)| {
+        let before = line[..at].chars().next_back();
+        let after = line[at + word.len()..].chars().next();
+        let part = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+        !part(before) && !part(after)
+    })
+}
+
 /// One exercise to cut out of a file: its anchor and the message of its `todo!`.
 #[derive(Debug, Clone)]
 pub struct Cut<'a> {
@@ -342,7 +432,26 @@ pub fn student_source(source: &str, cuts: &[Cut<'_>]) -> Result<String, Vec<Mark
             });
             continue;
         }
-        regions.push((span.solution, todo_call(Some(&cut.message))));
+        let todo = todo_call(Some(&cut.message));
+        let stub = match unused_inputs(&lines, &span).as_slice() {
+            [] => todo,
+            inputs => {
+                // The stub leaves the function's inputs unused; naming them keeps the build
+                // free of warnings until the student's code uses them.
+                let begin = lines[span.solution.start];
+                let indent = &begin[..begin.len() - begin.trim_start().len()];
+                // Borrowed, not moved: the student's code may still use them all after it.
+                let borrowed: Vec<String> = inputs.iter().map(|name| format!("&{name}")).collect();
+                let inputs = match borrowed.as_slice() {
+                    [one] => one.clone(),
+                    many => format!("({})", many.join(", ")),
+                };
+                format!(
+                    "let _ = {inputs}; // the inputs, until your code uses them\n{indent}{todo}"
+                )
+            }
+        };
+        regions.push((span.solution, stub));
         owners.push(cut.anchor);
     }
     for (index, marker) in marker_lines(source) {
@@ -432,7 +541,7 @@ mod tests {
         let student = student_source(REFLECT, &[cut]).unwrap();
         assert_eq!(
             student,
-            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    todo!(\"ch01-reflect: mirror `wi` about `n`\")\n}\n// ANCHOR_END: reflect\n"
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    let _ = (&wi, &n); // the inputs, until your code uses them\n    todo!(\"ch01-reflect: mirror `wi` about `n`\")\n}\n// ANCHOR_END: reflect\n"
         );
     }
 
@@ -602,5 +711,25 @@ mod tests {
             "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    wi - wi.dot(n) * n\n}\n// ANCHOR_END: reflect\n"
         );
         assert!(splice_code(REFLECT, "refract", "x").is_err());
+    }
+
+    #[test]
+    fn the_stub_names_the_inputs_it_leaves_unused() {
+        let source = "// ANCHOR: step\npub fn step<S: Sampler>(\n    &self,\n    ray: &Ray,\n    depth: u32,\n    f: impl Fn(u32, f32) -> f32,\n) -> f32 {\n    let scale = 2.0 * depth as f32;\n    // BEGIN SOLUTION\n    scale * f(depth, ray.t_max)\n    // END SOLUTION\n}\n// ANCHOR_END: step\n";
+        let lines: Vec<&str> = source.lines().collect();
+        let span = locate(&lines, "step").unwrap();
+        // `depth` is used before the solution; `self` is no input to name.
+        assert_eq!(unused_inputs(&lines, &span), ["ray", "f"]);
+        let cut = Cut {
+            anchor: "step",
+            message: "go".into(),
+        };
+        let student = student_source(source, &[cut]).unwrap();
+        assert!(
+            student.contains(
+                "    let _ = (&ray, &f); // the inputs, until your code uses them\n    todo!(\"go\")"
+            ),
+            "{student}"
+        );
     }
 }

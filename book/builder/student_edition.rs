@@ -249,7 +249,12 @@ mod tests {
         let written = write(ws.path(), &exercises, out.path(), false).unwrap();
         assert_eq!(written, 2);
         let stubbed = std::fs::read_to_string(out.path().join("src/optics.rs")).unwrap();
-        assert!(stubbed.contains("{\n    todo!(\"ch01-reflect: Flip the sign.\")\n}"));
+        assert!(
+            stubbed.contains(
+                "{\n    let _ = &x; // the inputs, until your code uses them\n    todo!(\"ch01-reflect: Flip the sign.\")\n}"
+            ),
+            "{stubbed}"
+        );
         assert_eq!(
             std::fs::read_to_string(out.path().join("README.md")).unwrap(),
             "hi\n"
