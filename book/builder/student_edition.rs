@@ -141,19 +141,7 @@ fn without_wrong_answers(list: &str) -> Result<String> {
 /// when `out` is the workspace or contains it). If `out` lies inside the workspace, it is left
 /// out of the copy, so an earlier edition is never copied into the next.
 pub fn write(root: &Path, exercises: &[Exercise], out: &Path, force: bool) -> Result<usize> {
-    let out = absolute(out)?;
-    let root = absolute(root)?;
-    if root.starts_with(&out) {
-        bail!(
-            "{} is the workspace or contains it; choose another directory",
-            out.display()
-        );
-    }
-    let leave_out: Vec<PathBuf> = out
-        .strip_prefix(&root)
-        .map(Path::to_path_buf)
-        .into_iter()
-        .collect();
+    let (root, out, leave_out) = copy_places(root, out)?;
     let edition = plan(&root, exercises, &leave_out)?;
     prepare_empty_dir(&out, force)?;
     write_files(&root, &out, &edition)?;
@@ -163,6 +151,21 @@ pub fn write(root: &Path, exercises: &[Exercise], out: &Path, force: bool) -> Re
 /// Writes a plain copy of the workspace's sources into `out`, solutions and all, replacing
 /// what `out` held: where `check-exercises` tries the recorded wrong answers.
 pub fn write_copy(root: &Path, out: &Path) -> Result<usize> {
+    let (root, out, leave_out) = copy_places(root, out)?;
+    let files: Vec<EditionFile> = workspace::source_files(&root)?
+        .into_iter()
+        .filter(|file| !leave_out.iter().any(|dir| file.starts_with(dir)))
+        .map(EditionFile::Copy)
+        .collect();
+    prepare_empty_dir(&out, true)?;
+    write_files(&root, &out, &files)?;
+    Ok(files.len())
+}
+
+/// The workspace and the copy's directory as absolute paths, and what of the workspace the
+/// copy must leave out: the copy itself, when it lies inside. A copy that is the workspace, or
+/// contains it, is refused.
+fn copy_places(root: &Path, out: &Path) -> Result<(PathBuf, PathBuf, Vec<PathBuf>)> {
     let out = absolute(out)?;
     let root = absolute(root)?;
     if root.starts_with(&out) {
@@ -171,15 +174,12 @@ pub fn write_copy(root: &Path, out: &Path) -> Result<usize> {
             out.display()
         );
     }
-    let inside = out.strip_prefix(&root).ok().map(Path::to_path_buf);
-    let files: Vec<EditionFile> = workspace::source_files(&root)?
+    let leave_out = out
+        .strip_prefix(&root)
+        .map(Path::to_path_buf)
         .into_iter()
-        .filter(|file| inside.as_ref().is_none_or(|dir| !file.starts_with(dir)))
-        .map(EditionFile::Copy)
         .collect();
-    prepare_empty_dir(&out, true)?;
-    write_files(&root, &out, &files)?;
-    Ok(files.len())
+    Ok((root, out, leave_out))
 }
 
 /// Writes `files` of the workspace at `root` into `out`.
