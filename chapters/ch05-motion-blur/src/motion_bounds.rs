@@ -14,7 +14,7 @@
 //! pbrt-v4 instead solves for the exact extrema of each corner's path; more work for a box
 //! that is only slightly smaller.
 
-use crate::animated_transform::{AnimatedTransform, Decomposed, interpolate};
+use crate::animated_transform::{AnimatedTransform, Decomposed};
 use common::geometry::Aabb;
 use glam::Vec3;
 
@@ -53,6 +53,7 @@ pub fn segment_bounds(
     steps: usize,
 ) -> Aabb {
     // BEGIN SOLUTION
+    use crate::animated_transform::interpolate;
     let steps = steps.max(1);
     let mut bounds = Aabb::empty();
     for i in 0..=steps {
@@ -113,6 +114,7 @@ pub fn motion_bounds(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::animated_transform::interpolate;
     use glam::Mat4;
 
     fn fast_spinning_mover() -> AnimatedTransform {

@@ -24,7 +24,7 @@
 //! which is its proper weight `f_r cos θ / pdf`. The disc is then a different, empirical lobe,
 //! which [`disc_radius_for_exponent`] sizes to spread as wide as the `cos^n` one.
 
-use ch02_monte_carlo::warps::{sample_cos_lobe, sample_uniform_disc_concentric};
+use ch02_monte_carlo::warps::sample_uniform_disc_concentric;
 use glam::{Vec2, Vec3};
 
 /// How a fuzzy surface spreads its directions.
@@ -85,6 +85,7 @@ impl FuzzMethod {
 /// about its axis, so which `a` and `b` does not matter.
 pub fn sample_lobe_around(center: Vec3, exponent: f32, u: Vec2) -> Vec3 {
     // BEGIN SOLUTION
+    use ch02_monte_carlo::warps::sample_cos_lobe;
     let (a, b) = center.any_orthonormal_pair();
     let local = sample_cos_lobe(u, exponent);
     local.x * a + local.y * b + local.z * center
@@ -145,6 +146,7 @@ pub fn disc_radius_for_exponent(exponent: f32) -> f32 {
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+    use ch02_monte_carlo::warps::sample_cos_lobe;
     use common::sampler::{IndependentSampler, Sampler};
     use glam::UVec2;
 

@@ -15,12 +15,7 @@
 //! whatever the rounding of `a` and `b`. The shadow ray needs the bound to leave the light
 //! without hitting it ([`crate::light_sample`]).
 
-use std::f32::consts::TAU;
-
-use ch02_monte_carlo::warps::{
-    parallelogram_pdf, sample_parallelogram, sample_triangle_barycentric, sample_uniform_sphere,
-    triangle_pdf,
-};
+use ch02_monte_carlo::warps::{sample_triangle_barycentric, sample_uniform_sphere, triangle_pdf};
 use common::geometry::{Disc, Parallelogram, Sphere, Triangle, gamma};
 use glam::{Vec2, Vec3};
 
@@ -43,6 +38,7 @@ pub fn parallelogram_point_error(quad: &Parallelogram, u: Vec2) -> Vec3 {
 #[inline]
 pub fn sample_parallelogram_light(quad: &Parallelogram, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION
+    use ch02_monte_carlo::warps::{parallelogram_pdf, sample_parallelogram};
     let p = quad.corner() + sample_parallelogram(u, Vec3::ZERO, quad.e1(), quad.e2());
     let pdf = parallelogram_pdf(quad.area());
     LightSample::by_area(p, parallelogram_point_error(quad, u), quad.normal(), pdf)
@@ -89,6 +85,7 @@ pub fn disc_light_sample_at(disc: &Disc, offset: Vec2) -> Option<LightSample> {
 /// two semi-axes, [`Disc::radii`]: a linear map keeps a uniform density uniform.
 pub fn sample_disc_light_polar(disc: &Disc, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION
+    use std::f32::consts::TAU;
     let r = disc.radii() * u.y.sqrt();
     let (sin, cos) = (TAU * u.x).sin_cos();
     disc_light_sample_at(disc, Vec2::new(r.x * cos, r.y * sin))

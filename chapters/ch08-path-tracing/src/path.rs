@@ -32,7 +32,6 @@ use crate::lights::SceneLights;
 use crate::mis::MisHeuristic;
 use crate::nee::{light_sample_contribution, point_lights};
 use crate::options::PathOptions;
-use crate::roulette::russian_roulette;
 use ch01_whitted::scene::World;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
@@ -207,6 +206,7 @@ impl PathTracer<'_> {
         sampler: &mut S,
     ) -> Option<NextSegment> {
         // BEGIN SOLUTION
+        use crate::roulette::russian_roulette;
         let sample = bsdf.sample(wo, sampler)?;
         let mut throughput = carried.throughput * sample.weight;
         let eta_scale = carried.eta_scale * sample.eta_scale;
