@@ -58,7 +58,7 @@ pub fn run(
     println!("Writing the student edition to {}", edition.display());
     let files = student_edition::write(root, exercises, &edition, true)?;
     println!("  {files} files, {} exercise(s) stubbed", exercises.len());
-    write_separate_crates_config(&edition)?;
+    write_config(&edition, SEPARATE_CRATES_CONFIG)?;
 
     build_edition(&edition, &edition_build, &chosen)?;
 
@@ -283,10 +283,6 @@ const SEPARATE_CRATES_CONFIG: &str = "\
 [profile.dev]
 debug = false
 ";
-
-fn write_separate_crates_config(edition: &Path) -> Result<()> {
-    write_config(edition, SEPARATE_CRATES_CONFIG)
-}
 
 /// Writes `config` as the `.cargo/config.toml` of the copy at `dir`.
 fn write_config(edition: &Path, config: &str) -> Result<()> {

@@ -60,7 +60,13 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let args = &command.camera.args;
     args.check_outputs()?;
     let world = &setup.world;
-    let rendered = render_with(world, &setup.lens, &setup.settings, &sampler, &setup.filter);
+    let rendered = render_with(
+        world,
+        &setup.lens,
+        &setup.film.settings,
+        &sampler,
+        &setup.film.filter,
+    );
     let mut extra = setup.stats();
     extra["time_sampling"] = command.time_sampling.name().into();
     extra["stretches"] = world.moving.stretches().into();

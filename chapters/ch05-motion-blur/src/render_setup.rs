@@ -7,12 +7,11 @@
 use crate::scene_file::{motion_for_render, read_with_camera_side};
 use crate::time_sampling::{StratifiedTime, TimeSampling};
 use crate::world::MotionScene;
-use ch03_anti_aliasing::cli::AntiAliasingArgs;
-use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind, ReconstructionFilter};
+use ch03_anti_aliasing::PixelSampler;
+use ch03_anti_aliasing::cli::{AntiAliasingArgs, FilmSetup};
 use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::cli::LensArgs;
 use common::cli::{CliError, RenderArgs};
-use common::render::RenderSettings;
 use common::scene::{Capabilities, Scene};
 
 /// The options every `render` from chapter 05 on shares: the pixel sampler and filter
@@ -40,14 +39,9 @@ pub struct RenderSetup {
     pub name: String,
     /// The lens: the command line's, else the file's.
     pub lens: Lens,
-    /// The reconstruction filter: the command line's, else the file's.
-    pub filter: ReconstructionFilter,
-    /// The pixel sampler's kind: the command line's, else the closest to the file's.
-    pub sampler_kind: PixelSamplerKind,
-    /// The pixel sampler itself.
-    pub pixel_sampler: PixelSampler,
-    /// Size, budget, threads.
-    pub settings: RenderSettings,
+    /// The filter, the pixel sampler and the render settings: the command line's, else the
+    /// file's.
+    pub film: FilmSetup,
     /// The seed of every random number of the render.
     pub seed: u64,
 }
@@ -94,10 +88,7 @@ impl CameraArgs {
             world,
             name,
             lens,
-            filter: film.filter,
-            sampler_kind: film.sampler_kind,
-            pixel_sampler: film.pixel_sampler,
-            settings: film.settings,
+            film,
             seed: self.args.seed,
         })
     }
@@ -107,7 +98,7 @@ impl RenderSetup {
     /// The time sampling of a render that offers no choice: stratified when the scene moves
     /// and the budget is a sample count ([`TimeSampling::by_default`]).
     pub fn default_time_sampling(&self) -> TimeSampling {
-        TimeSampling::by_default(self.world.moves(), &self.settings.budget)
+        TimeSampling::by_default(self.world.moves(), &self.film.settings.budget)
     }
 
     /// The render's sampler: the pixel sampler, drawing the shutter time as `time_sampling`
@@ -116,23 +107,23 @@ impl RenderSetup {
         &self,
         time_sampling: TimeSampling,
     ) -> Result<StratifiedTime<PixelSampler>, String> {
-        time_sampling.sampler(self.pixel_sampler.clone(), &self.settings.budget, self.seed)
+        let film = &self.film;
+        time_sampling.sampler(film.pixel_sampler.clone(), &film.settings.budget, self.seed)
     }
 
     /// What every render's statistics record of its setup; a chapter adds its own entries.
     pub fn stats(&self) -> serde_json::Value {
         let shutter = self.world.shutter;
-        serde_json::json!({
+        let mut stats = serde_json::json!({
             "scene": self.name,
             "max_depth": self.world.scene.max_depth,
-            "sampler": self.sampler_kind.name(),
-            "filter": self.filter.kind().name(),
-            "filter_radius": self.filter.half_width(),
             "aperture_radius": self.lens.aperture_radius,
             "focus_distance": self.lens.focus_distance,
             "shutter_open": shutter.open,
             "shutter_close": shutter.close,
             "seed": self.seed,
-        })
+        });
+        self.film.record_stats(&mut stats);
+        stats
     }
 }

@@ -45,9 +45,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         &PointLights,
         command.fuzzy.options(),
         &setup.lens,
-        &setup.settings,
+        &setup.film.settings,
         &setup.sampler(time_sampling).map_err(anyhow::Error::msg)?,
-        &setup.filter,
+        &setup.film.filter,
     );
     let mut extra = setup.stats();
     extra["time_sampling"] = time_sampling.name().into();

@@ -65,9 +65,9 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         lights,
         command.fuzzy.options(),
         &setup.lens,
-        &setup.settings,
+        &setup.film.settings,
         &setup.sampler(time_sampling).map_err(anyhow::Error::msg)?,
-        &setup.filter,
+        &setup.film.filter,
     );
     let mut extra = setup.stats();
     extra["area_lights"] = AreaLights::of(&world.scene).lights.len().into();

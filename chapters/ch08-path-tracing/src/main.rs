@@ -89,11 +89,11 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         world,
         method,
         &setup.lens,
-        &setup.settings,
+        &setup.film.settings,
         &setup
             .sampler(setup.default_time_sampling())
             .map_err(anyhow::Error::msg)?,
-        &setup.filter,
+        &setup.film.filter,
     );
     let mut extra = setup.stats();
     extra["nee"] = options.nee.into();
