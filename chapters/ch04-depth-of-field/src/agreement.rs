@@ -5,8 +5,7 @@
 //! (a disc sampled with the concentric map, focused on a plane) must give the same blur.
 
 use crate::render_with;
-use crate::scene_file::lens_of;
-use ch03_anti_aliasing::scene_file::for_agreement;
+use crate::scene_file::for_agreement;
 use common::image::Image;
 use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
 use std::path::Path;
@@ -26,7 +25,6 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
 /// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, through the file's
 /// lens, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let (scene, film, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
-    let lens = lens_of(&scene.camera).map_err(|e| format!("{}: {e}", path.display()))?;
-    Ok(render_with(&scene, &lens, &settings, &sampler, &film.filter).image)
+    let (scene, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    Ok(render_with(&scene, &side.lens, &settings, &sampler, &side.film.filter).image)
 }

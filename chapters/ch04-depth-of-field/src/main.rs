@@ -1,13 +1,12 @@
 //! `ch04-depth-of-field`: render through a thin lens, or write the chapter's figures.
 
 use ch03_anti_aliasing::cli::AntiAliasingArgs;
-use ch03_anti_aliasing::scene_file::read_with_film_side;
 use ch04_depth_of_field::Aperture;
 use ch04_depth_of_field::cli::LensArgs;
-use ch04_depth_of_field::scene_file::lens_of;
+use ch04_depth_of_field::scene_file::read_with_camera_side;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{CAPABILITIES, figures, render_with};
-use common::cli::{CliError, RenderArgs};
+use common::cli::RenderArgs;
 use std::process::ExitCode;
 
 #[derive(clap::Args, Debug)]
@@ -31,12 +30,11 @@ fn main() -> ExitCode {
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let (scene, from_file, scene_name) = command.args.scene_or_builtin(
         |path| {
-            let (scene, film) = read_with_film_side(path, &command.args.define, &CAPABILITIES)?;
-            let lens = lens_of(&scene.camera).map_err(|message| CliError::Unrenderable {
-                file: path.to_path_buf(),
-                message,
-            })?;
-            Ok((scene, (film, lens)))
+            Ok(read_with_camera_side(
+                path,
+                &command.args.define,
+                &CAPABILITIES,
+            )?)
         },
         || {
             let name = command.builtin.name().to_string();
@@ -44,7 +42,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         },
     )?;
     let (film, scene_lens) = match from_file {
-        Some((film, lens)) => (Some(film), lens),
+        Some(side) => (Some(side.film), side.lens),
         None => (None, command.builtin.default_lens()),
     };
     let lens = command.lens.lens(scene_lens)?;

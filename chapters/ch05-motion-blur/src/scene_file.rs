@@ -9,8 +9,8 @@
 
 use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
-use ch03_anti_aliasing::scene_file::{FilmSide, film_side, read_with_film_side};
-use common::cli::{CliError, print_note};
+pub use ch04_depth_of_field::scene_file::{CameraSide, read_with_camera_side};
+use common::cli::print_note;
 use common::render::RenderSettings;
 use common::scene::{Capabilities, Scene};
 use std::path::Path;
@@ -31,54 +31,17 @@ pub fn motion_of(scene: Scene) -> Result<(MotionScene, Option<String>), String> 
 }
 // ANCHOR_END: motion_of
 
-/// What chapters 03 to 05 read from a scene file for the camera's side of a render: the
-/// lens (chapter 04), and the film's filter and the pixel sampler (chapter 03). Later chapters
-/// render the same camera rays, so they read the same.
-#[derive(Clone, Debug)]
-pub struct CameraSide {
-    /// The lens of the file's sensor.
-    pub lens: ch04_depth_of_field::Lens,
-    /// The film's filter, the pixel sampler and its sample count.
-    pub film: FilmSide,
-}
-
-/// The camera side of `scene`, or why a part of it makes no sense.
-pub fn camera_side(scene: &Scene) -> Result<CameraSide, String> {
-    let lens = ch04_depth_of_field::scene_file::lens_of(&scene.camera)?;
-    let film = film_side(scene)?;
-    Ok(CameraSide { lens, film })
-}
-
-/// A scene file for a chapter's `render`: loaded with the `-D` overrides, checked against the
-/// chapter's `capabilities`, its camera side read; every note printed.
-pub fn read_with_camera_side(
-    path: &Path,
-    defines: &[(String, String)],
-    capabilities: &Capabilities,
-) -> Result<(Scene, CameraSide), CliError> {
-    let (scene, film) = read_with_film_side(path, defines, capabilities)?;
-    let lens = ch04_depth_of_field::scene_file::lens_of(&scene.camera).map_err(|message| {
-        CliError::Unrenderable {
-            file: path.to_path_buf(),
-            message,
-        }
-    })?;
-    Ok((scene, CameraSide { lens, film }))
-}
-
-/// A scene file as a chapter checks it against Mitsuba 3 (chapter 03's
-/// [`for_agreement`](ch03_anti_aliasing::scene_file::for_agreement)), with its lens, and its
-/// motion made ready; errors name the file.
+/// A scene file as a chapter checks it against Mitsuba 3 (chapter 04's
+/// [`for_agreement`](ch04_depth_of_field::scene_file::for_agreement)), its motion made ready;
+/// errors name the file.
 pub fn for_agreement(
     path: &Path,
     capabilities: &Capabilities,
 ) -> Result<(MotionScene, CameraSide, RenderSettings, PixelSampler), String> {
-    let in_file = |e: String| format!("{}: {e}", path.display());
-    let (scene, film, settings, sampler) =
-        ch03_anti_aliasing::scene_file::for_agreement(path, capabilities)?;
-    let lens = ch04_depth_of_field::scene_file::lens_of(&scene.camera).map_err(in_file)?;
-    let (world, _) = motion_of(scene).map_err(in_file)?;
-    Ok((world, CameraSide { lens, film }, settings, sampler))
+    let (scene, side, settings, sampler) =
+        ch04_depth_of_field::scene_file::for_agreement(path, capabilities)?;
+    let (world, _) = motion_of(scene).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok((world, side, settings, sampler))
 }
 
 /// [`motion_of`] for a chapter's `render`: the note, if any, printed.
