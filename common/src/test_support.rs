@@ -60,7 +60,8 @@ pub fn not_uniform(
     domain: [glam::Vec2; 2],
 ) -> String {
     let path = exercise_output_dir(exercise).join("histogram.png");
-    let title = format!("your {function}: histogram against the uniform density");
+    // Short enough to fit above the two panels.
+    let title = format!("your {function}");
     let picture = match crate::output::figures::histogram_vs_pdf(
         &path, &title, points, density, domain, 32,
     ) {
