@@ -77,6 +77,63 @@ pub fn not_uniform(
     )
 }
 
+/// Writes the pictures a failing image check shows the student: `mine.png`, `expected.png` and
+/// `difference.png` (the absolute difference, scaled so that its largest channel is white)
+/// under `target/exercises/<exercise>/`, and returns the sentence that points at them.
+///
+/// A check calls it only once it has found, in words, what is wrong; the pictures show where.
+pub fn image_comparison(exercise: &str, mine: &Image, expected: &Image) -> String {
+    let dir = exercise_output_dir(exercise);
+    let difference = difference_image(mine, expected);
+    let written = [
+        ("mine.png", mine),
+        ("expected.png", expected),
+        ("difference.png", &difference),
+    ]
+    .into_iter()
+    .try_for_each(|(name, image)| crate::output::write_image(&dir.join(name), image));
+    match written {
+        Ok(()) => format!(
+            "see {} (mine.png, expected.png and difference.png, brightest where they differ most)",
+            dir.display()
+        ),
+        Err(error) => format!("(the pictures could not be written: {error})"),
+    }
+}
+
+/// `|mine - expected|` per channel, divided by its largest value so the worst pixel is white;
+/// pixels outside the smaller image, and non-finite values, are drawn red.
+fn difference_image(mine: &Image, expected: &Image) -> Image {
+    let width = mine.width.max(expected.width);
+    let height = mine.height.max(expected.height);
+    let mut difference = Image::new(width, height);
+    let red = glam::Vec3::new(1.0, 0.0, 0.0);
+    let inside = |image: &Image, x: u32, y: u32| x < image.width && y < image.height;
+    let mut largest = 0.0f32;
+    for y in 0..height {
+        for x in 0..width {
+            let value = if inside(mine, x, y) && inside(expected, x, y) {
+                (mine.get(x, y) - expected.get(x, y)).abs()
+            } else {
+                glam::Vec3::NAN
+            };
+            if value.is_finite() {
+                largest = largest.max(value.max_element());
+            }
+            difference.set(x, y, value);
+        }
+    }
+    let scale = if largest > 0.0 { 1.0 / largest } else { 1.0 };
+    for pixel in &mut difference.pixels {
+        *pixel = if pixel.is_finite() {
+            *pixel * scale
+        } else {
+            red
+        };
+    }
+    difference
+}
+
 /// Characters from dark to bright, for [`image_summary`].
 const RAMP: &[u8] = b" .:-=+*#%@";
 
@@ -126,5 +183,16 @@ mod tests {
         let text = image_summary(&image, 7);
         // 0.25^(1/2.2) * 9 = 4.8 rounds to level 5, '+'.
         assert_eq!(text, " +@\nmean rgb: 0.4167 0.4167 0.4167\nrays: 7\n");
+    }
+
+    #[test]
+    fn the_difference_is_scaled_to_its_largest_value_and_marks_missing_pixels_red() {
+        let mine = Image::filled(2, 1, Vec3::new(0.5, 0.5, 0.5));
+        let mut expected = Image::filled(3, 1, Vec3::new(0.5, 0.5, 0.5));
+        expected.set(1, 0, Vec3::new(0.25, 0.5, 0.0));
+        let difference = difference_image(&mine, &expected);
+        assert_eq!(difference.get(0, 0), Vec3::ZERO);
+        assert_eq!(difference.get(1, 0), Vec3::new(0.5, 0.0, 1.0));
+        assert_eq!(difference.get(2, 0), Vec3::new(1.0, 0.0, 0.0));
     }
 }
