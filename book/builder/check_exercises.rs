@@ -47,7 +47,8 @@ pub fn run(
     let student_dir = target_dir.join("student");
     let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
     if wrong_answers_only {
-        return prove_wrong_answers(root, &chosen, &student_dir);
+        let mut trial = Trial::new(root, &student_dir)?;
+        return prove_wrong_answers(&mut trial, &chosen);
     }
     let edition = student_dir.join("edition");
     let edition_build = EditionBuild {
@@ -87,7 +88,9 @@ pub fn run(
 
     if surprises.is_empty() {
         println!("\nAll {} exercise(s) behave.", chosen.len());
-        return prove_wrong_answers(root, &chosen, &student_dir);
+        let mut trial = Trial::new(root, &student_dir)?;
+        prove_in_order(&mut trial, exercises, selected)?;
+        return prove_wrong_answers(&mut trial, &chosen);
     }
     for (exercise, what, outcome) in &surprises {
         println!(
@@ -110,30 +113,19 @@ pub fn run(
 /// so a round costs one build of the changed crates, not one per answer. A later exercise's
 /// check may call an earlier exercise of its chapter, so an answer that surprises in a round
 /// where its chapter had another wrong answer too is tried again alone before it counts. The
-/// copy is built with settings of its own (see [`WRONG_ANSWERS_CONFIG`]) in the shared build
+/// copy is built with settings of its own (see [`TRIALS_CONFIG`]) in the shared build
 /// directory.
-fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) -> Result<()> {
+fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<()> {
     let rounds = exercises.iter().map(|e| e.wrong.len()).max().unwrap_or(0);
     if rounds == 0 {
         println!("No wrong answers are recorded in {LIST_PATH}.");
         return Ok(());
     }
-    let copy = student_dir.join("wrong-answers");
-    let build = EditionBuild {
-        target_dir: student_dir.join("wrong-answers-target"),
-        build_dir: workspace::target_dir(root),
-    };
-    println!("\nTrying the recorded wrong answers in {}", copy.display());
-    student_edition::write_copy(root, &copy)?;
-    write_config(&copy, WRONG_ANSWERS_CONFIG)?;
-
+    println!(
+        "\nTrying the recorded wrong answers in {}",
+        trial.copy.display()
+    );
     println!("{:<28} {:<40} {:<20}", "exercise", "wrong answer", "check");
-    let mut trial = Trial {
-        root,
-        copy: &copy,
-        build: &build,
-        changed: Vec::new(),
-    };
     let mut tried = 0;
     let mut surprises = Vec::new();
     let mut again = Vec::new();
@@ -142,7 +134,7 @@ fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) 
             .iter()
             .filter_map(|e| e.wrong.get(round).map(|wrong| (e, wrong)))
             .collect();
-        for (exercise, wrong, outcome) in trial.round(&in_round)? {
+        for (exercise, wrong, outcome) in trial.wrong_answers(&in_round)? {
             tried += 1;
             let shared = in_round
                 .iter()
@@ -172,7 +164,7 @@ fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) 
             }
             !chapter_free
         });
-        for (exercise, wrong, outcome) in trial.round(&in_round)? {
+        for (exercise, wrong, outcome) in trial.wrong_answers(&in_round)? {
             print_verdict(exercise, wrong, &outcome, " (alone)");
             if !refused(wrong, &outcome) {
                 surprises.push((exercise, wrong, outcome));
@@ -196,43 +188,201 @@ fn prove_wrong_answers(root: &Path, exercises: &[Exercise], student_dir: &Path) 
     )
 }
 
-/// The copy of the workspace where wrong answers are put in, and the files they changed.
+/// The copy of the workspace where stubs and wrong answers are put in place of solutions, and
+/// the files the last round changed. It is built with settings of its own (see
+/// [`TRIALS_CONFIG`]) in the shared build directory.
 struct Trial<'a> {
     root: &'a Path,
-    copy: &'a Path,
-    build: &'a EditionBuild,
+    copy: PathBuf,
+    build: EditionBuild,
     changed: Vec<PathBuf>,
 }
 
-impl Trial<'_> {
-    /// Puts the `answers` in (every file the last round changed first put back) and runs each
-    /// one's check.
-    fn round<'e>(
-        &mut self,
-        answers: &[(&'e Exercise, &'e WrongAnswer)],
-    ) -> Result<Vec<(&'e Exercise, &'e WrongAnswer, Outcome)>> {
+impl<'a> Trial<'a> {
+    /// Writes a fresh copy of the workspace, every solution in place.
+    fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
+        let copy = student_dir.join("trials");
+        student_edition::write_copy(root, &copy)?;
+        write_config(&copy, TRIALS_CONFIG)?;
+        Ok(Self {
+            root,
+            copy,
+            build: EditionBuild {
+                target_dir: student_dir.join("trials-target"),
+                build_dir: workspace::target_dir(root),
+            },
+            changed: Vec::new(),
+        })
+    }
+
+    /// Puts each `(exercise, code)` in, `code` standing where the exercise's solution stands,
+    /// after putting back every file the last round changed.
+    fn put_in(&mut self, splices: &[(&Exercise, String)]) -> Result<()> {
         for file in self.changed.drain(..) {
             std::fs::copy(self.root.join(&file), self.copy.join(&file))
                 .with_context(|| format!("cannot restore {}", file.display()))?;
         }
-        for (exercise, wrong) in answers {
+        for (exercise, code) in splices {
             let path = self.copy.join(&exercise.file);
             let source = std::fs::read_to_string(&path)
                 .with_context(|| format!("cannot read {}", path.display()))?;
-            let spliced = solution_markers::splice_code(&source, &exercise.anchor, &wrong.code)
+            let spliced = solution_markers::splice_code(&source, &exercise.anchor, code)
                 .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
             std::fs::write(&path, spliced)
                 .with_context(|| format!("cannot write {}", path.display()))?;
             self.changed.push(exercise.file.clone());
         }
+        Ok(())
+    }
+
+    /// Runs `exercise`'s check in the copy as it now stands.
+    fn check(&self, exercise: &Exercise) -> Result<Outcome> {
+        run_check(&exercise.check, &self.copy, Some(&self.build))
+    }
+
+    /// Puts the `answers` in and runs each one's check.
+    fn wrong_answers<'e>(
+        &mut self,
+        answers: &[(&'e Exercise, &'e WrongAnswer)],
+    ) -> Result<Vec<(&'e Exercise, &'e WrongAnswer, Outcome)>> {
+        let splices: Vec<(&Exercise, String)> = answers
+            .iter()
+            .map(|(exercise, wrong)| (*exercise, wrong.code.clone()))
+            .collect();
+        self.put_in(&splices)?;
         answers
             .iter()
-            .map(|&(exercise, wrong)| {
-                let outcome = run_check(&exercise.check, self.copy, Some(self.build))?;
-                Ok((exercise, wrong, outcome))
-            })
+            .map(|&(exercise, wrong)| Ok((exercise, wrong, self.check(exercise)?)))
             .collect()
     }
+
+    /// The student's stub of `exercise`, as the student edition has it.
+    fn stub(&self, exercise: &Exercise) -> Result<String> {
+        let path = self.root.join(&exercise.file);
+        let source = std::fs::read_to_string(&path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        solution_markers::stub_code(&source, &exercise.anchor, &exercise.todo_message())
+            .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))
+    }
+}
+
+/// Proves the promise that the exercises can be done in order: each exercise's check passes
+/// once it and the exercises before it are solved, while the ones after it are still stubs.
+/// A check that calls a later exercise would leave the student stuck.
+///
+/// Only the chapter's own later exercises can be in the way: a chapter's tests never compile
+/// the chapters after it, so "chapters 01 to c solved, the later ones stubbed" is the solved
+/// workspace as far as chapter c's checks can tell, which the table above has proved. Within
+/// a chapter, round `k` stubs every exercise after the `k`-th of *every* chapter at once and
+/// runs each chapter's `k`-th check, so a round costs one build. Solving more never makes a
+/// check fail, so a check that passes there passes for the student, who has solved at least as
+/// much. One that fails is tried again alone, with the earlier chapters solved in full, before
+/// it counts.
+fn prove_in_order<'e>(
+    trial: &mut Trial<'_>,
+    exercises: &'e [Exercise],
+    selected: &dyn Fn(&Exercise) -> bool,
+) -> Result<()> {
+    let mut chapters: Vec<Vec<&'e Exercise>> = Vec::new();
+    for exercise in exercises {
+        match chapters
+            .iter_mut()
+            .find(|chapter| chapter[0].chapter == exercise.chapter)
+        {
+            Some(chapter) => chapter.push(exercise),
+            None => chapters.push(vec![exercise]),
+        }
+    }
+    let longest = chapters.iter().map(Vec::len).max().unwrap_or(0);
+    // Every exercise's stub, worked out once.
+    let stub_codes: Vec<String> = exercises
+        .iter()
+        .map(|exercise| trial.stub(exercise))
+        .collect::<Result<_>>()?;
+    let stub_of = |exercise: &Exercise| {
+        let index = exercises
+            .iter()
+            .position(|e| e.name == exercise.name)
+            .expect("a listed exercise");
+        stub_codes[index].clone()
+    };
+    let stubs_after = |chapter: &[&'e Exercise], solved: usize| -> Vec<(&'e Exercise, String)> {
+        chapter[solved..]
+            .iter()
+            .map(|exercise| (*exercise, stub_of(exercise)))
+            .collect()
+    };
+    println!(
+        "\nIn order: each check with the exercises before it solved and the ones after it stubbed"
+    );
+    let mut proved = 0;
+    let mut again = Vec::new();
+    // With all of a chapter solved, its checks passed on the workspace above.
+    for solved in 1..longest {
+        let mut stubs = Vec::new();
+        let mut checks = Vec::new();
+        for chapter in chapters.iter().filter(|chapter| chapter.len() > solved) {
+            stubs.extend(stubs_after(chapter, solved));
+            let exercise = chapter[solved - 1];
+            if selected(exercise) {
+                checks.push((chapter.as_slice(), exercise));
+            }
+        }
+        if checks.is_empty() {
+            continue;
+        }
+        trial.put_in(&stubs)?;
+        for (chapter, exercise) in checks {
+            let outcome = trial.check(exercise)?;
+            let later = chapter.len() - solved;
+            if outcome.passed {
+                println!(
+                    "{:<28} passes with {later} later exercise(s) of its chapter stubbed",
+                    exercise.name
+                );
+                proved += 1;
+            } else {
+                again.push((chapter, solved, exercise));
+            }
+        }
+    }
+    let mut stuck = Vec::new();
+    for (chapter, solved, exercise) in again {
+        trial.put_in(&stubs_after(chapter, solved))?;
+        let outcome = trial.check(exercise)?;
+        if outcome.passed {
+            println!(
+                "{:<28} passes with the later exercises of its chapter stubbed (tried alone)",
+                exercise.name
+            );
+            proved += 1;
+        } else {
+            println!(
+                "{:<28} FAILS with the later exercises of its chapter stubbed",
+                exercise.name
+            );
+            stuck.push((exercise, outcome));
+        }
+    }
+    if stuck.is_empty() {
+        println!(
+            "All {proved} exercise(s) that have later ones in their chapter can be done in order."
+        );
+        return Ok(());
+    }
+    for (exercise, outcome) in &stuck {
+        println!(
+            "\n--- {}'s check fails while the exercises after it are stubs: a student doing them \
+             in order would be stuck here (does the check, or the code it runs, call a later \
+             exercise?); `{}` printed (last lines):",
+            exercise.name, exercise.check
+        );
+        println!("{}", last_lines(&outcome.output, 30));
+    }
+    bail!(
+        "{} exercise(s) cannot be done in order: a check may call only the exercises before it",
+        stuck.len()
+    )
 }
 
 /// Whether the check refused the wrong answer in its recorded words.
@@ -256,11 +406,11 @@ fn print_verdict(exercise: &Exercise, wrong: &WrongAnswer, outcome: &Outcome, no
     );
 }
 
-/// Settings of the copy in which wrong answers are tried: other debug settings than the
-/// workspace's and the student edition's, so its crates get names of their own in the shared
-/// build directory.
-const WRONG_ANSWERS_CONFIG: &str = "\
-# Written by `book check-exercises` for trying wrong answers: the workspace's crates get names
+/// Settings of the copy in which stubs and wrong answers are tried: other debug settings than
+/// the workspace's and the student edition's, so its crates get names of their own in the
+/// shared build directory.
+const TRIALS_CONFIG: &str = "\
+# Written by `book check-exercises` for its trials: the workspace's crates get names
 # of their own in the shared build directory; dependencies are shared.
 [profile.dev]
 debug = \"limited\"
@@ -431,7 +581,7 @@ mod tests {
             "the workspace's [profile.dev] debug is {workspace:?}"
         );
         // The copy for wrong answers differs from both.
-        let wrong = dev_debug(WRONG_ANSWERS_CONFIG).expect("the copy sets debug");
+        let wrong = dev_debug(TRIALS_CONFIG).expect("the copy sets debug");
         assert_eq!(wrong, toml::Value::String("limited".into()));
         assert_ne!(Some(&wrong), workspace.as_ref());
         assert_ne!(wrong, edition);

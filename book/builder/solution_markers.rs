@@ -396,6 +396,35 @@ fn uses_word(line: &str, word: &str) -> bool {
     })
 }
 
+/// What stands in a solution's place in the student edition: its `todo!` call, after a line
+/// that names the inputs the stub would leave unused. Lines after the first are indented by
+/// `indent`; the first is placed where the region's `BEGIN` marker was.
+fn stub_text(lines: &[&str], span: &ExerciseSpan, message: &str, indent: &str) -> String {
+    let todo = todo_call(Some(message));
+    match unused_inputs(lines, span).as_slice() {
+        [] => todo,
+        inputs => {
+            // The stub leaves the function's inputs unused; naming them keeps the build
+            // free of warnings until the student's code uses them.
+            // Borrowed, not moved: the student's code may still use them all after it.
+            let borrowed: Vec<String> = inputs.iter().map(|name| format!("&{name}")).collect();
+            let inputs = match borrowed.as_slice() {
+                [one] => one.clone(),
+                many => format!("({})", many.join(", ")),
+            };
+            format!("let _ = {inputs}; // the inputs, until your code uses them\n{indent}{todo}")
+        }
+    }
+}
+
+/// The student's stub of exercise `anchor` in `source`, unindented, as [`splice_code`] takes
+/// code: for putting one exercise's stub back while the others keep their solutions.
+pub fn stub_code(source: &str, anchor: &str, message: &str) -> Result<String, MarkerError> {
+    let lines: Vec<&str> = source.lines().collect();
+    let span = locate(&lines, anchor)?;
+    Ok(stub_text(&lines, &span, message, ""))
+}
+
 /// One exercise to cut out of a file: its anchor and the message of its `todo!`.
 #[derive(Debug, Clone)]
 pub struct Cut<'a> {
@@ -432,25 +461,9 @@ pub fn student_source(source: &str, cuts: &[Cut<'_>]) -> Result<String, Vec<Mark
             });
             continue;
         }
-        let todo = todo_call(Some(&cut.message));
-        let stub = match unused_inputs(&lines, &span).as_slice() {
-            [] => todo,
-            inputs => {
-                // The stub leaves the function's inputs unused; naming them keeps the build
-                // free of warnings until the student's code uses them.
-                let begin = lines[span.solution.start];
-                let indent = &begin[..begin.len() - begin.trim_start().len()];
-                // Borrowed, not moved: the student's code may still use them all after it.
-                let borrowed: Vec<String> = inputs.iter().map(|name| format!("&{name}")).collect();
-                let inputs = match borrowed.as_slice() {
-                    [one] => one.clone(),
-                    many => format!("({})", many.join(", ")),
-                };
-                format!(
-                    "let _ = {inputs}; // the inputs, until your code uses them\n{indent}{todo}"
-                )
-            }
-        };
+        let begin = lines[span.solution.start];
+        let indent = &begin[..begin.len() - begin.trim_start().len()];
+        let stub = stub_text(&lines, &span, &cut.message, indent);
         regions.push((span.solution, stub));
         owners.push(cut.anchor);
     }
