@@ -12,7 +12,7 @@ use std::path::{Component, Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use serde::Deserialize;
 
-use crate::solution_markers;
+use crate::solution_markers::{self, MarkerError};
 
 /// Where the list lives, relative to the workspace root.
 pub const LIST_PATH: &str = "book/exercises.toml";
@@ -103,6 +103,8 @@ pub fn parse(text: &str) -> Result<Vec<Exercise>> {
 pub fn validate(workspace: &Path, exercises: &[Exercise]) -> Vec<String> {
     let mut problems = Vec::new();
     let mut first_entry_named: HashMap<&str, usize> = HashMap::new();
+    // Where an exercise's anchor has no solution region; in a student edition none has one.
+    let mut without_solution: Vec<String> = Vec::new();
 
     for (index, exercise) in exercises.iter().enumerate() {
         let entry = index + 1;
@@ -141,8 +143,14 @@ pub fn validate(workspace: &Path, exercises: &[Exercise]) -> Vec<String> {
             }
         };
         let lines: Vec<&str> = source.lines().collect();
-        if let Err(error) = solution_markers::locate(&lines, &exercise.anchor) {
-            complain(format!("in `{}`, {error}", exercise.file.display()));
+        match solution_markers::locate(&lines, &exercise.anchor) {
+            Ok(_) => {}
+            Err(MarkerError::NoSolution { .. }) => without_solution.push(format!(
+                "{label}: in `{}`, the anchor `{}` holds no solution region",
+                exercise.file.display(),
+                exercise.anchor
+            )),
+            Err(error) => complain(format!("in `{}`, {error}", exercise.file.display())),
         }
         for (number, wrong) in exercise.wrong.iter().enumerate() {
             for (field, value) in [
@@ -156,7 +164,26 @@ pub fn validate(workspace: &Path, exercises: &[Exercise]) -> Vec<String> {
             }
         }
     }
+    // In a student edition every solution has been cut out (or written by the student).
+    if without_solution.len() < exercises.len() {
+        problems.extend(without_solution);
+    }
     problems
+}
+
+/// Whether the workspace at `root` is a student edition: no listed exercise has its solution
+/// region (the workbook has every one).
+pub fn is_student_edition(root: &Path, exercises: &[Exercise]) -> bool {
+    !exercises.is_empty()
+        && exercises.iter().all(|exercise| {
+            std::fs::read_to_string(root.join(&exercise.file)).is_ok_and(|source| {
+                let lines: Vec<&str> = source.lines().collect();
+                matches!(
+                    solution_markers::locate(&lines, &exercise.anchor),
+                    Err(MarkerError::NoSolution { .. } | MarkerError::AnchorNotFound { .. })
+                )
+            })
+        })
 }
 
 /// Whether `path` is relative and never climbs out with `..`.
@@ -247,5 +274,30 @@ mod tests {
         assert!(
             problems[3].starts_with("exercise #4 `ch01-escape`: `file` must be a relative path")
         );
+    }
+
+    #[test]
+    fn a_student_edition_validates_but_a_workbook_missing_one_solution_does_not() {
+        let dir = workspace_with_source();
+        std::fs::write(
+            dir.path().join("src/stub.rs"),
+            "// ANCHOR: refract\nfn refract() {\n    todo!()\n}\n// ANCHOR_END: refract\n",
+        )
+        .unwrap();
+        let both = [
+            entry("ch01-reflect", "src/optics.rs", "reflect"),
+            entry("ch01-refract", "src/stub.rs", "refract"),
+        ]
+        .concat();
+        let problems = validate(dir.path(), &parse(&both).unwrap());
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(
+            problems[0].contains("holds no solution region"),
+            "{problems:?}"
+        );
+        let stubbed_only = parse(&entry("ch01-refract", "src/stub.rs", "refract")).unwrap();
+        assert!(validate(dir.path(), &stubbed_only).is_empty());
+        assert!(is_student_edition(dir.path(), &stubbed_only));
+        assert!(!is_student_edition(dir.path(), &parse(&both).unwrap()));
     }
 }

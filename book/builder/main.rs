@@ -5,15 +5,19 @@
 //! - `cargo run -p book -- exercises` lists the exercises with their checks and hints.
 //! - `cargo run -p book -- student --out DIR` writes the student edition into `DIR`.
 //! - `cargo run -p book -- check-exercises` proves every exercise fails as a stub and passes as
-//!   solved (CI runs it).
+//!   solved, in order, and refuses its recorded wrong answers (CI runs it).
+//! - `cargo run -p book -- progress` (in the student edition) lists what is done and what next.
+//! - `cargo run -p book -- checkpoint NAME --from WORKBOOK` puts one reference solution back.
 
 mod check_exercises;
+mod checkpoint;
 mod exercise_list;
 mod exercise_preprocessor;
 mod figures;
 mod katex_offline;
 mod mdbook_log;
 mod offline_check;
+mod progress;
 mod site;
 mod solution_markers;
 mod student_edition;
@@ -60,6 +64,16 @@ enum Task {
         #[arg(long)]
         wrong_answers_only: bool,
     },
+    /// Run every exercise's check and list the exercises as done or to do, with the next one.
+    Progress,
+    /// Put the reference solution of one exercise back (your version is kept), to go on.
+    Checkpoint {
+        /// The exercise, as `exercises` names it: `ch01-refract`.
+        name: String,
+        /// The workbook: the repository with the solutions, from which this edition was made.
+        #[arg(long, value_name = "PATH")]
+        from: PathBuf,
+    },
 }
 
 fn main() -> Result<()> {
@@ -79,6 +93,31 @@ fn main() -> Result<()> {
         }
         Some(Task::Exercises) => {
             print_exercises(&exercise_list::load(&root)?);
+            Ok(())
+        }
+        Some(Task::Progress) => {
+            let exercises = exercise_list::load(&root)?;
+            println!(
+                "Running every exercise's check. The first check of a chapter compiles the \
+                 chapter (and the first one, its dependencies) first: that takes a few minutes \
+                 on a 2-core machine; after that a chapter's checks take seconds."
+            );
+            let statuses = progress::statuses(&root, &exercises)?;
+            print!("{}", progress::report(&exercises, &statuses));
+            Ok(())
+        }
+        Some(Task::Checkpoint { name, from }) => {
+            let exercises = exercise_list::load(&root)?;
+            let restored = checkpoint::run(&root, &exercises, &name, &from)?;
+            let exercise = exercises.iter().find(|e| e.name == name).expect("found");
+            println!(
+                "Put the reference solution of {name} into {} (from the workbook at {}).\n\
+                 Your own version is kept in {}.\nIts check should pass now: {}",
+                restored.file.display(),
+                from.display(),
+                restored.saved.display(),
+                exercise.check
+            );
             Ok(())
         }
         Some(Task::CheckExercises {
