@@ -90,6 +90,13 @@ pub fn plan(
         }
     }
 
+    for package in packages_with_exercises(exercises) {
+        let script = package.join("build.rs");
+        if !edition.iter().any(|file| file.path() == script) {
+            edition.push(EditionFile::Rewritten(script, FIRST_BUILD_NOTE.to_owned()));
+        }
+    }
+
     if !problems.is_empty() {
         bail!(
             "cannot make the student edition, {} problem(s):\n  {}\n\
@@ -99,6 +106,40 @@ pub fn plan(
         );
     }
     Ok(edition)
+}
+
+/// The build script the student edition gives each package that holds exercises: cargo prints
+/// its note as it builds the package, so the wait of a chapter's first check is announced
+/// before it starts, not explained after it. (Cargo repeats the note on later builds, so it
+/// says what holds every time.)
+const FIRST_BUILD_NOTE: &str = "\
+//! Written by `book student`: a note that cargo prints when it builds this chapter.
+fn main() {
+    println!(\"cargo::rerun-if-changed=build.rs\");
+    println!(
+        \"cargo::warning=note: a chapter's first check compiles the chapter (the very first \\
+         one also its dependencies): a few minutes on a 2-core machine; later checks take seconds\"
+    );
+}
+";
+
+/// The directories of the packages that hold exercises, in the list's order: the part of each
+/// exercise's file before its `src/`.
+fn packages_with_exercises(exercises: &[Exercise]) -> Vec<PathBuf> {
+    let mut packages: Vec<PathBuf> = Vec::new();
+    for exercise in exercises {
+        let package = exercise
+            .file
+            .ancestors()
+            .find(|dir| dir.file_name().is_some_and(|name| name == "src"))
+            .and_then(Path::parent);
+        if let Some(package) = package
+            && !packages.iter().any(|known| known == package)
+        {
+            packages.push(package.to_path_buf());
+        }
+    }
+    packages
 }
 
 /// The exercise list as the student gets it: without the recorded wrong answers, whose
@@ -247,7 +288,10 @@ mod tests {
         let exercises = exercise_list::parse(LIST).unwrap();
         let out = tempfile::tempdir().unwrap();
         let written = write(ws.path(), &exercises, out.path(), false).unwrap();
-        assert_eq!(written, 2);
+        // The two files, and the package's build script with its note on the first build.
+        assert_eq!(written, 3);
+        let note = std::fs::read_to_string(out.path().join("build.rs")).unwrap();
+        assert!(note.contains("first check compiles the chapter"), "{note}");
         let stubbed = std::fs::read_to_string(out.path().join("src/optics.rs")).unwrap();
         assert!(
             stubbed.contains(
