@@ -33,7 +33,7 @@ pub fn run(root: &Path, exercises: &[Exercise], name: &str, workbook: &Path) -> 
     let source = std::fs::read_to_string(&path)
         .with_context(|| format!("cannot read {}", exercise.file.display()))?;
     let lines: Vec<&str> = source.lines().collect();
-    let body = anchor_body(&lines, &exercise.anchor).with_context(|| {
+    let body = solution_markers::anchor_body(&lines, &exercise.anchor).with_context(|| {
         format!(
             "{} has lost the comment lines `// ANCHOR: {anchor}` and `// ANCHOR_END: {anchor}` \
              around the exercise, so it cannot tell which lines to replace; put them back, or \
@@ -110,30 +110,12 @@ fn reference_lines(workbook: &Path, exercise: &Exercise) -> Result<Vec<String>> 
     let lines: Vec<&str> = source.lines().collect();
     solution_markers::locate(&lines, &reference.anchor)
         .with_context(|| format!("{}: exercise `{}`", path.display(), exercise.name))?;
-    let body = anchor_body(&lines, &reference.anchor).expect("located above");
+    let body = solution_markers::anchor_body(&lines, &reference.anchor)?;
     Ok(lines[body]
         .iter()
         .filter(|line| Marker::of_line(line).is_none())
         .map(|line| (*line).to_owned())
         .collect())
-}
-
-/// The lines strictly between `// ANCHOR: anchor` and its `// ANCHOR_END`.
-fn anchor_body(lines: &[&str], anchor: &str) -> Option<std::ops::Range<usize>> {
-    let is = |line: &str, keyword: &str| {
-        line.trim()
-            .strip_prefix("//")
-            .map(str::trim)
-            .and_then(|rest| rest.strip_prefix(keyword))
-            .is_some_and(|name| name.trim() == anchor)
-    };
-    let start = lines.iter().position(|line| is(line, "ANCHOR:"))?;
-    let end = start
-        + 1
-        + lines[start + 1..]
-            .iter()
-            .position(|line| is(line, "ANCHOR_END:"))?;
-    Some(start + 1..end)
 }
 
 /// Writes `text` to `path` whole or not at all: into a file beside it, then renamed over it.

@@ -23,7 +23,7 @@ use mdbook_driver::book::Book;
 use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
 
 use crate::exercise_list;
-use crate::solution_markers::{self, Marker};
+use crate::solution_markers::{self, Marker, MarkerError};
 
 /// A page containing this comment keeps its solution marker lines.
 pub const KEEP_MARKERS: &str = "<!-- keep solution markers -->";
@@ -164,8 +164,15 @@ fn exercise_block(target: &str, page_dir: &Path) -> Result<String> {
     let file = page_dir.join(path);
     let source = std::fs::read_to_string(&file)
         .with_context(|| format!("cannot read {}", file.display()))?;
-    let stub =
-        solution_markers::book_stub(&source, anchor).with_context(|| format!("in {path}"))?;
+    let stub = match solution_markers::book_stub(&source, anchor) {
+        // A student edition: the exercise as the student has it, and no solution to show.
+        Err(MarkerError::NoSolution { .. }) => {
+            let written = solution_markers::book_as_written(&source, anchor)
+                .with_context(|| format!("in {path}"))?;
+            return Ok(format!("```rust\n{written}\n```\n"));
+        }
+        stub => stub.with_context(|| format!("in {path}"))?,
+    };
     let solution =
         solution_markers::book_solution(&source, anchor).with_context(|| format!("in {path}"))?;
     Ok(format!(
@@ -192,8 +199,11 @@ fn known_solutions(workspace: &Path) -> Result<Vec<(String, String)>> {
         let file = workspace.join(&exercise.file);
         let source = std::fs::read_to_string(&file)
             .with_context(|| format!("cannot read {}", file.display()))?;
-        let lines = solution_markers::solution_lines(&source, &exercise.anchor)
-            .with_context(|| format!("in {}", exercise.file.display()))?;
+        let lines = match solution_markers::solution_lines(&source, &exercise.anchor) {
+            // A student edition has no solutions to give away.
+            Err(MarkerError::NoSolution { .. }) => continue,
+            lines => lines.with_context(|| format!("in {}", exercise.file.display()))?,
+        };
         for line in lines {
             let line = normalized(&line);
             if line.len() >= MIN_TELLING_LENGTH
@@ -291,6 +301,21 @@ mod tests {
             "Try it:\n\n```rust\npub fn reflect(x: f32) -> f32 {\n    todo!()\n}\n```\n\n\
              <details class=\"solution\"><summary>Solution</summary>\n\n\
              ```rust\npub fn reflect(x: f32) -> f32 {\n    -x\n}\n```\n\n</details>\n\nDone.\n"
+        );
+    }
+
+    #[test]
+    fn a_student_edition_shows_the_exercise_as_written_and_no_solution() {
+        let dir = page_dir();
+        std::fs::write(
+            dir.path().join("code/optics.rs"),
+            "// ANCHOR: reflect\npub fn reflect(x: f32) -> f32 {\n    x * 2.0 // mine\n}\n// ANCHOR_END: reflect\n",
+        )
+        .unwrap();
+        let page = "{{#exercise code/optics.rs:reflect}}\n";
+        assert_eq!(
+            render_page(page, dir.path()).unwrap(),
+            "```rust\npub fn reflect(x: f32) -> f32 {\n    x * 2.0 // mine\n}\n```\n"
         );
     }
 

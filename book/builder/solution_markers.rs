@@ -267,6 +267,40 @@ pub fn book_solution(source: &str, anchor: &str) -> Result<String, MarkerError> 
     Ok(shown.join("\n"))
 }
 
+/// The lines strictly between `// ANCHOR: anchor` and its `// ANCHOR_END`, whatever they hold
+/// (in a student edition: the stub, or the student's own code).
+pub fn anchor_body(lines: &[&str], anchor: &str) -> Result<Range<usize>, MarkerError> {
+    let start = lines
+        .iter()
+        .position(|line| anchor_name(line, "ANCHOR:") == Some(anchor))
+        .ok_or_else(|| MarkerError::AnchorNotFound {
+            anchor: anchor.to_owned(),
+        })?;
+    let end = start
+        + 1
+        + lines[start + 1..]
+            .iter()
+            .position(|line| anchor_name(line, "ANCHOR_END:") == Some(anchor))
+            .ok_or_else(|| MarkerError::AnchorNotClosed {
+                anchor: anchor.to_owned(),
+                line: start + 1,
+            })?;
+    Ok(start + 1..end)
+}
+
+/// What the book shows for an exercise in a student edition, where it holds no solution: the
+/// anchor's lines as they stand (the stub, or the student's own answer).
+pub fn book_as_written(source: &str, anchor: &str) -> Result<String, MarkerError> {
+    let lines: Vec<&str> = source.lines().collect();
+    let body = anchor_body(&lines, anchor)?;
+    let shown: Vec<&str> = lines[body]
+        .iter()
+        .copied()
+        .filter(|line| !is_anchor_line(line))
+        .collect();
+    Ok(shown.join("\n"))
+}
+
 /// The lines of an exercise's solution region (markers left out), for finding a solution
 /// written out somewhere it should not be.
 pub fn solution_lines(source: &str, anchor: &str) -> Result<Vec<String>, MarkerError> {
