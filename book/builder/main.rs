@@ -15,6 +15,7 @@ mod exercise_list;
 mod exercise_preprocessor;
 mod figures;
 mod katex_offline;
+mod lab_report;
 mod mdbook_log;
 mod offline_check;
 mod progress;
@@ -65,7 +66,14 @@ enum Task {
         wrong_answers_only: bool,
     },
     /// Run every exercise's check and list the exercises as done or to do, with the next one.
-    Progress,
+    Progress {
+        /// Also build your own site: the book with your figures beside the reference ones.
+        #[arg(long)]
+        site: bool,
+        /// With --site: render your figures at full quality (slower) instead of quick ones.
+        #[arg(long, requires = "site")]
+        full: bool,
+    },
     /// Put the reference solution of one exercise back (your version is kept), to go on.
     Checkpoint {
         /// The exercise, as `exercises` names it: `ch01-refract`.
@@ -89,13 +97,25 @@ fn main() -> Result<()> {
                 out.display(),
                 exercises.len()
             );
+            if lab_report::ship_reference_figures(&root, &out)? {
+                println!(
+                    "With the workbook's figures in {}, for the student's own site \
+                     (`progress --site`).",
+                    lab_report::REFERENCE_DIR
+                );
+            } else {
+                println!(
+                    "Without reference figures: build the workbook's site first \
+                     (`cargo run --release -p book`) for the student's site to compare with."
+                );
+            }
             Ok(())
         }
         Some(Task::Exercises) => {
             print_exercises(&exercise_list::load(&root)?);
             Ok(())
         }
-        Some(Task::Progress) => {
+        Some(Task::Progress { site, full }) => {
             let exercises = exercise_list::load(&root)?;
             println!(
                 "Running every exercise's check. The first check of a chapter compiles the \
@@ -104,6 +124,11 @@ fn main() -> Result<()> {
             );
             let statuses = progress::statuses(&root, &exercises)?;
             print!("{}", progress::report(&exercises, &statuses));
+            if site {
+                mdbook_log::install();
+                let front_page = lab_report::build(&root, &exercises, &statuses, full)?;
+                println!("\nYour site: open {}", front_page.display());
+            }
             Ok(())
         }
         Some(Task::Checkpoint { name, from }) => {

@@ -11,15 +11,25 @@ use mdbook_driver::MDBook;
 use mdbook_katex::preprocess::KatexProcessor;
 
 use crate::exercise_preprocessor::ExercisePreprocessor;
+use crate::lab_report::LabReport;
 use crate::{katex_offline, mdbook_log, offline_check};
 
 /// Builds the book whose `book.toml` is in `book_dir`; returns the path of its front page.
 pub fn build(book_dir: &Path) -> Result<PathBuf> {
+    build_with(book_dir, None)
+}
+
+/// Builds the book, with the student's figures set beside the reference ones when a
+/// `lab_report` is given (`progress --site`).
+pub fn build_with(book_dir: &Path, lab_report: Option<LabReport>) -> Result<PathBuf> {
     let mut book = MDBook::load(book_dir)
         .with_context(|| format!("cannot load the book in {}", book_dir.display()))?;
     katex_offline::configure(&mut book.config)?;
-    book.with_preprocessor(ExercisePreprocessor)
-        .with_preprocessor(KatexProcessor);
+    book.with_preprocessor(ExercisePreprocessor);
+    if let Some(lab_report) = lab_report {
+        book.with_preprocessor(lab_report);
+    }
+    book.with_preprocessor(KatexProcessor);
 
     let problems_before = mdbook_log::problems_so_far();
     book.build().context("mdBook could not build the site")?;
