@@ -134,6 +134,113 @@ fn difference_image(mine: &Image, expected: &Image) -> Image {
     difference
 }
 
+/// Compares a snapshot with the stored one, allowing what floating-point error may change, and
+/// falls back to `insta` (its diff, its `.snap.new` for review) when they differ by more.
+///
+/// A student's correct answer to an exercise may differ from the reference in its last bits;
+/// the snapshots of later code must not fail for that, or they would test the spelling of an
+/// answer rather than its meaning. See [`snapshot_close_enough`] for what counts as close.
+#[macro_export]
+macro_rules! assert_close_snapshot {
+    ($name:literal, $value:expr) => {{
+        let value: String = $value;
+        let stored = $crate::test_support::stored_snapshot(
+            env!("CARGO_MANIFEST_DIR"),
+            module_path!(),
+            $name,
+        );
+        if !stored
+            .as_deref()
+            .is_some_and(|stored| $crate::test_support::snapshot_close_enough(stored, &value))
+        {
+            insta::assert_snapshot!($name, value);
+        }
+    }};
+}
+
+/// The body of the snapshot `name` that `insta` stored for the integration test `module`
+/// (`tests/snapshots/<module>__<name>.snap` of the package at `manifest_dir`), if there is one.
+pub fn stored_snapshot(manifest_dir: &str, module: &str, name: &str) -> Option<String> {
+    let file = format!("{}__{name}.snap", module.replace("::", "__"));
+    let path = std::path::Path::new(manifest_dir)
+        .join("tests")
+        .join("snapshots")
+        .join(file);
+    let text = std::fs::read_to_string(path).ok()?;
+    // A header between two `---` lines, then the body.
+    let mut lines = text.lines();
+    (lines.next()? == "---").then_some(())?;
+    lines.by_ref().find(|line| *line == "---")?;
+    Some(lines.collect::<Vec<_>>().join("\n"))
+}
+
+/// Whether the snapshot text `actual` matches `stored` up to floating-point noise:
+/// - the same lines, and in each line the same words;
+/// - numbers within 1e-3 of their size or three units of the last digit printed, whichever is
+///   larger (a path that ends one bounce sooner changes a ray count or a mean a little);
+/// - luminance pictures ([`image_summary`]) where a character may be one level off, in at most
+///   2 % of the pixels (a pixel near a level's edge).
+pub fn snapshot_close_enough(stored: &str, actual: &str) -> bool {
+    let stored: Vec<&str> = stored.trim_end().lines().map(str::trim_end).collect();
+    let actual: Vec<&str> = actual.trim_end().lines().map(str::trim_end).collect();
+    if stored.len() != actual.len() {
+        return false;
+    }
+    let (mut picture_chars, mut picture_flips) = (0usize, 0usize);
+    for (want, got) in stored.iter().zip(&actual) {
+        if want == got {
+            picture_chars += want.len();
+            continue;
+        }
+        if is_picture_row(want) && is_picture_row(got) && want.len() == got.len() {
+            for (a, b) in want.bytes().zip(got.bytes()) {
+                picture_chars += 1;
+                let level = |c: u8| RAMP.iter().position(|&r| r == c).unwrap_or(0) as i64;
+                match (level(a) - level(b)).abs() {
+                    0 => {}
+                    1 => picture_flips += 1,
+                    _ => return false,
+                }
+            }
+            continue;
+        }
+        if !words_close(want, got) {
+            return false;
+        }
+    }
+    picture_flips * 50 <= picture_chars.max(50)
+}
+
+/// A row of an [`image_summary`] picture: ramp characters only.
+fn is_picture_row(line: &str) -> bool {
+    !line.is_empty() && line.bytes().all(|c| RAMP.contains(&c))
+}
+
+/// The same words, numbers within their tolerance.
+fn words_close(want: &str, got: &str) -> bool {
+    let split = |line| -> Vec<&str> {
+        let words = str::split(line, |c: char| c.is_whitespace() || c == ',');
+        words.filter(|word| !word.is_empty()).collect()
+    };
+    let (want, got) = (split(want), split(got));
+    want.len() == got.len()
+        && want.iter().zip(&got).all(|(a, b)| {
+            a == b
+                || match (a.parse::<f64>(), b.parse::<f64>()) {
+                    (Ok(x), Ok(y)) => {
+                        let decimals = match a.split_once('.') {
+                            Some((_, fraction)) if !a.contains(['e', 'E']) => fraction.len(),
+                            _ => 0,
+                        };
+                        let unit = 10f64.powi(-(decimals as i32));
+                        let unit = if a.contains(['e', 'E']) { 0.0 } else { unit };
+                        (x - y).abs() <= (1e-3 * x.abs().max(y.abs())).max(3.0 * unit)
+                    }
+                    _ => false,
+                }
+        })
+}
+
 /// Characters from dark to bright, for [`image_summary`].
 const RAMP: &[u8] = b" .:-=+*#%@";
 
@@ -194,5 +301,27 @@ mod tests {
         assert_eq!(difference.get(0, 0), Vec3::ZERO);
         assert_eq!(difference.get(1, 0), Vec3::new(0.5, 0.0, 1.0));
         assert_eq!(difference.get(2, 0), Vec3::new(1.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn snapshots_allow_float_noise_but_not_a_change() {
+        let stored =
+            "..::\n.:-=\nmean rgb: 0.2995 0.2886 0.2481\nrays: 27954\nx,y\n0.20176762,0.4911644";
+        // One pixel one level off, the means a unit off, a few rays more, a float step.
+        let noisy =
+            "..::\n.:--\nmean rgb: 0.2996 0.2886 0.2480\nrays: 27960\nx,y\n0.20176764,0.4911644";
+        assert!(snapshot_close_enough(stored, noisy));
+        for changed in [
+            "..::\n.:-@\nmean rgb: 0.2995 0.2886 0.2481\nrays: 27954\nx,y\n0.20176762,0.4911644",
+            "..::\n.:-=\nmean rgb: 0.3095 0.2886 0.2481\nrays: 27954\nx,y\n0.20176762,0.4911644",
+            "..::\n.:-=\nmean rgb: 0.2995 0.2886 0.2481\nrays: 29954\nx,y\n0.20176762,0.4911644",
+            "..::\n.:-=\nmean rgb: 0.2995 0.2886 0.2481\nrays: 27954\nx,y\n0.2027,0.4911644",
+            "..::\n.:-=\nmean rgb: 0.2995 0.2886 0.2481\nrays: 27954\nx,z\n0.20176762,0.4911644",
+            "..::\n.:-=\nmean rgb: 0.2995 0.2886 0.2481\nrays: 27954",
+        ] {
+            assert!(!snapshot_close_enough(stored, changed), "{changed}");
+        }
+        // Many pixels a level off is a change, not noise.
+        assert!(!snapshot_close_enough("....\n....", "::::\n::::"));
     }
 }

@@ -28,50 +28,60 @@ fn snapshot_of(
 
 #[test]
 fn edges_one_sample_at_the_centre() {
-    insta::assert_snapshot!(snapshot_of(
-        Builtin::Edges,
-        PixelSamplerKind::Centre,
-        FilterKind::Box,
-        1
-    ));
+    common::assert_close_snapshot!(
+        "edges_one_sample_at_the_centre",
+        snapshot_of(Builtin::Edges, PixelSamplerKind::Centre, FilterKind::Box, 1)
+    );
 }
 
 #[test]
 fn edges_stratified_box() {
-    insta::assert_snapshot!(snapshot_of(
-        Builtin::Edges,
-        PixelSamplerKind::Stratified,
-        FilterKind::Box,
-        4
-    ));
+    common::assert_close_snapshot!(
+        "edges_stratified_box",
+        snapshot_of(
+            Builtin::Edges,
+            PixelSamplerKind::Stratified,
+            FilterKind::Box,
+            4
+        )
+    );
 }
 
 #[test]
 fn checkerboard_random_tent() {
-    insta::assert_snapshot!(snapshot_of(
-        Builtin::Checkerboard,
-        PixelSamplerKind::Random,
-        FilterKind::Tent,
-        4
-    ));
+    common::assert_close_snapshot!(
+        "checkerboard_random_tent",
+        snapshot_of(
+            Builtin::Checkerboard,
+            PixelSamplerKind::Random,
+            FilterKind::Tent,
+            4
+        )
+    );
 }
 
 #[test]
 fn checkerboard_halton_mitchell() {
-    insta::assert_snapshot!(snapshot_of(
-        Builtin::Checkerboard,
-        PixelSamplerKind::Halton,
-        FilterKind::Mitchell,
-        4
-    ));
+    common::assert_close_snapshot!(
+        "checkerboard_halton_mitchell",
+        snapshot_of(
+            Builtin::Checkerboard,
+            PixelSamplerKind::Halton,
+            FilterKind::Mitchell,
+            4
+        )
+    );
 }
 
 #[test]
 fn checkerboard_stratified_gaussian() {
-    insta::assert_snapshot!(snapshot_of(
-        Builtin::Checkerboard,
-        PixelSamplerKind::Stratified,
-        FilterKind::Gaussian,
-        4
-    ));
+    common::assert_close_snapshot!(
+        "checkerboard_stratified_gaussian",
+        snapshot_of(
+            Builtin::Checkerboard,
+            PixelSamplerKind::Stratified,
+            FilterKind::Gaussian,
+            4
+        )
+    );
 }

@@ -27,13 +27,16 @@ fn snapshot_of(file: &str, options: impl Fn(PathOptions) -> PathOptions) -> Stri
 
 #[test]
 fn cornell_box_path_traced() {
-    insta::assert_snapshot!(snapshot_of("cornell-box.xml", |o| o));
+    common::assert_close_snapshot!(
+        "cornell_box_path_traced",
+        snapshot_of("cornell-box.xml", |o| o)
+    );
 }
 
 #[test]
 fn point_and_sky_without_nee() {
-    insta::assert_snapshot!(snapshot_of("point-and-sky.xml", |o| PathOptions {
-        nee: false,
-        ..o
-    }));
+    common::assert_close_snapshot!(
+        "point_and_sky_without_nee",
+        snapshot_of("point-and-sky.xml", |o| PathOptions { nee: false, ..o })
+    );
 }
