@@ -171,6 +171,56 @@ pub fn validate(workspace: &Path, exercises: &[Exercise]) -> Vec<String> {
     problems
 }
 
+/// How many lines the solution of `exercise` has (between its markers), in the workbook at
+/// `root`.
+pub fn solution_size(root: &Path, exercise: &Exercise) -> Result<usize> {
+    let source = std::fs::read_to_string(root.join(&exercise.file))
+        .with_context(|| format!("cannot read {}", exercise.file.display()))?;
+    let lines = solution_markers::solution_lines(&source, &exercise.anchor)
+        .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
+    Ok(lines.len())
+}
+
+/// One chapter's share of the exercises: how many, how many lines of solution, and its
+/// largest exercise (the capstone, where the student writes the chapter's central routine).
+#[derive(Debug)]
+pub struct ChapterShare {
+    pub chapter: String,
+    pub exercises: usize,
+    pub lines: usize,
+    pub capstone: String,
+    pub capstone_lines: usize,
+}
+
+/// Every chapter's share, in the list's order.
+pub fn shares(root: &Path, exercises: &[Exercise]) -> Result<Vec<ChapterShare>> {
+    let mut shares: Vec<ChapterShare> = Vec::new();
+    for exercise in exercises {
+        let lines = solution_size(root, exercise)?;
+        let index = match shares.iter().position(|s| s.chapter == exercise.chapter) {
+            Some(index) => index,
+            None => {
+                shares.push(ChapterShare {
+                    chapter: exercise.chapter.clone(),
+                    exercises: 0,
+                    lines: 0,
+                    capstone: String::new(),
+                    capstone_lines: 0,
+                });
+                shares.len() - 1
+            }
+        };
+        let share = &mut shares[index];
+        share.exercises += 1;
+        share.lines += lines;
+        if lines > share.capstone_lines {
+            share.capstone = exercise.name.clone();
+            share.capstone_lines = lines;
+        }
+    }
+    Ok(shares)
+}
+
 /// Whether the workspace at `root` is a student edition: no listed exercise has its solution
 /// region (the workbook has every one).
 pub fn is_student_edition(root: &Path, exercises: &[Exercise]) -> bool {

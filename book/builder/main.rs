@@ -112,7 +112,11 @@ fn main() -> Result<()> {
             Ok(())
         }
         Some(Task::Exercises) => {
-            print_exercises(&exercise_list::load(&root)?);
+            let exercises = exercise_list::load(&root)?;
+            print_exercises(&exercises);
+            if !exercise_list::is_student_edition(&root, &exercises) {
+                print_shares(&exercise_list::shares(&root, &exercises)?);
+            }
             Ok(())
         }
         Some(Task::Progress { site, full }) => {
@@ -205,4 +209,18 @@ fn print_exercises(exercises: &[exercise_list::Exercise]) {
         }
         println!();
     }
+}
+
+/// For authors: how the exercises are spread over the chapters.
+fn print_shares(shares: &[exercise_list::ChapterShare]) {
+    println!("Per chapter (lines of solution; the capstone is the largest exercise):");
+    for share in shares {
+        println!(
+            "  {:<24} {:>2} exercises {:>4} lines   capstone {} ({} lines)",
+            share.chapter, share.exercises, share.lines, share.capstone, share.capstone_lines
+        );
+    }
+    let exercises: usize = shares.iter().map(|s| s.exercises).sum();
+    let lines: usize = shares.iter().map(|s| s.lines).sum();
+    println!("  {:<24} {exercises:>2} exercises {lines:>4} lines", "all");
 }
