@@ -17,6 +17,7 @@ use std::process::{Command, Stdio};
 use anyhow::{Context, Result, bail};
 
 use crate::exercise_list::{Exercise, LIST_PATH, WrongAnswer};
+use crate::progress;
 use crate::solution_markers;
 use crate::student_edition;
 use crate::workspace;
@@ -69,9 +70,10 @@ pub fn run(
         "exercise", "student edition (must fail)", "workspace (must pass)"
     );
     let mut surprises = Vec::new();
-    for exercise in &chosen {
-        let stub = run_check(&exercise.check, &edition, Some(&edition_build))?;
-        let solution = run_check(&exercise.check, root, None)?;
+    let all: Vec<&Exercise> = chosen.iter().collect();
+    let stubs = run_checks(&all, &edition, Some(&edition_build))?;
+    let solutions = run_checks(&all, root, None)?;
+    for ((exercise, stub), solution) in chosen.iter().zip(stubs).zip(solutions) {
         println!(
             "{:<28} {:<28} {:<28}",
             exercise.name,
@@ -250,10 +252,13 @@ impl<'a> Trial<'a> {
             .map(|(exercise, wrong)| (*exercise, wrong.code.clone()))
             .collect();
         self.put_in(&splices)?;
-        answers
+        let exercises: Vec<&Exercise> = answers.iter().map(|(exercise, _)| *exercise).collect();
+        let outcomes = run_checks(&exercises, &self.copy, Some(&self.build))?;
+        Ok(answers
             .iter()
-            .map(|&(exercise, wrong)| Ok((exercise, wrong, self.check(exercise)?)))
-            .collect()
+            .zip(outcomes)
+            .map(|(&(exercise, wrong), outcome)| (exercise, wrong, outcome))
+            .collect())
     }
 
     /// The student's stub of `exercise`, as the student edition has it.
@@ -332,8 +337,9 @@ fn prove_in_order<'e>(
             continue;
         }
         trial.put_in(&stubs)?;
-        for (chapter, exercise) in checks {
-            let outcome = trial.check(exercise)?;
+        let to_run: Vec<&Exercise> = checks.iter().map(|(_, exercise)| *exercise).collect();
+        let outcomes = run_checks(&to_run, &trial.copy, Some(&trial.build))?;
+        for ((chapter, exercise), outcome) in checks.into_iter().zip(outcomes) {
             let later = chapter.len() - solved;
             if outcome.passed {
                 println!(
@@ -511,6 +517,99 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
     Ok(())
 }
 
+/// Runs the checks of `exercises` in `dir` and returns their outcomes in the same order.
+///
+/// Checks of the usual form (`cargo test -p PACKAGE --lib exercise_...`) are run together, one
+/// `cargo test` per package: an exercise's check passes when every test its filter picks
+/// passed, and its output is what those tests printed. That is what its own command would
+/// report, at the cost of one cargo run per package rather than per exercise. Other checks run
+/// as they are.
+fn run_checks(
+    exercises: &[&Exercise],
+    dir: &Path,
+    build: Option<&EditionBuild>,
+) -> Result<Vec<Outcome>> {
+    let mut outcomes: Vec<Option<Outcome>> = exercises.iter().map(|_| None).collect();
+    let mut packages: Vec<&str> = Vec::new();
+    for (index, exercise) in exercises.iter().enumerate() {
+        match progress::standard_check(&exercise.check) {
+            Some((package, _)) if !packages.contains(&package) => packages.push(package),
+            Some(_) => {}
+            None => outcomes[index] = Some(run_check(&exercise.check, dir, build)?),
+        }
+    }
+    for package in packages {
+        let command = format!("cargo test -p {package} --lib {}", progress::CHECK_PREFIX);
+        let run = run_check(&command, dir, build)?;
+        let compiled = run.output.contains("\nrunning ");
+        let results = progress::test_results(&run.output);
+        let printed = failure_sections(&run.output);
+        for (index, exercise) in exercises.iter().enumerate() {
+            let Some((this_package, filter)) = progress::standard_check(&exercise.check) else {
+                continue;
+            };
+            if this_package != package {
+                continue;
+            }
+            let picked: Vec<&(String, bool)> = results
+                .iter()
+                .filter(|(name, _)| name.contains(filter))
+                .collect();
+            outcomes[index] = Some(if !compiled {
+                Outcome {
+                    passed: false,
+                    output: run.output.clone(),
+                }
+            } else if picked.is_empty() {
+                Outcome {
+                    passed: false,
+                    output: format!("no test's name contains `{filter}`"),
+                }
+            } else {
+                let mut output = String::new();
+                for (name, passed) in &picked {
+                    output.push_str(&format!(
+                        "test {name} ... {}\n",
+                        if *passed { "ok" } else { "FAILED" }
+                    ));
+                    if let Some((_, text)) = printed.iter().find(|(failed, _)| failed == name) {
+                        output.push_str(text);
+                    }
+                }
+                Outcome {
+                    passed: picked.iter().all(|(_, passed)| *passed),
+                    output,
+                }
+            });
+        }
+    }
+    Ok(outcomes
+        .into_iter()
+        .map(|outcome| outcome.expect("every exercise ran"))
+        .collect())
+}
+
+/// What each failed test printed: the `---- NAME stdout ----` sections of a `cargo test` run.
+fn failure_sections(output: &str) -> Vec<(String, String)> {
+    let mut sections: Vec<(String, String)> = Vec::new();
+    let mut current: Option<usize> = None;
+    for line in output.lines() {
+        if let Some(name) = line
+            .strip_prefix("---- ")
+            .and_then(|rest| rest.strip_suffix(" stdout ----"))
+        {
+            sections.push((name.to_owned(), String::new()));
+            current = Some(sections.len() - 1);
+        } else if line == "failures:" {
+            current = None;
+        } else if let Some(index) = current {
+            sections[index].1.push_str(line);
+            sections[index].1.push('\n');
+        }
+    }
+    sections
+}
+
 /// Runs `check` through `sh -c` in `dir`, quietly, keeping its output for the report.
 fn run_check(check: &str, dir: &Path, build: Option<&EditionBuild>) -> Result<Outcome> {
     let mut command = Command::new("sh");
@@ -585,5 +684,19 @@ mod tests {
         assert_eq!(wrong, toml::Value::String("limited".into()));
         assert_ne!(Some(&wrong), workspace.as_ref());
         assert_ne!(wrong, edition);
+    }
+
+    #[test]
+    fn each_failed_test_keeps_what_it_printed() {
+        let output = "running 2 tests\ntest a::exercise_x ... FAILED\ntest a::exercise_y ... FAILED\n\n\
+                      failures:\n\n---- a::exercise_x stdout ----\nthe sign is wrong\n\n\
+                      ---- a::exercise_y stdout ----\nno interface\n\nfailures:\n    a::exercise_x\n";
+        let sections = failure_sections(output);
+        assert_eq!(sections.len(), 2);
+        assert_eq!(sections[0].0, "a::exercise_x");
+        assert!(sections[0].1.contains("the sign is wrong"));
+        assert!(!sections[0].1.contains("no interface"));
+        assert!(sections[1].1.contains("no interface"));
+        assert!(!sections[1].1.contains("exercise_x"));
     }
 }

@@ -24,10 +24,10 @@ pub enum Status {
 }
 
 /// The prefix every standard check's filter starts with.
-const CHECK_PREFIX: &str = "exercise_";
+pub const CHECK_PREFIX: &str = "exercise_";
 
 /// The package and test filter of a check of the usual form.
-fn standard_check(check: &str) -> Option<(&str, &str)> {
+pub fn standard_check(check: &str) -> Option<(&str, &str)> {
     match check.split_whitespace().collect::<Vec<_>>().as_slice() {
         ["cargo", "test", "-p", package, "--lib", filter] if filter.starts_with(CHECK_PREFIX) => {
             Some((package, filter))
@@ -37,7 +37,7 @@ fn standard_check(check: &str) -> Option<(&str, &str)> {
 }
 
 /// The outcome of every test a `cargo test` run printed (`test path::name ... ok`).
-fn test_results(output: &str) -> Vec<(String, bool)> {
+pub fn test_results(output: &str) -> Vec<(String, bool)> {
     output
         .lines()
         .filter_map(|line| {
