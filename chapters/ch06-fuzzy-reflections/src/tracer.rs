@@ -18,7 +18,7 @@
 use crate::below_surface::BelowSurface;
 use crate::fuzz::FuzzMethod;
 use crate::glass_choice::GlassStrategy;
-use crate::highlights::{Lobe, point_light_highlights};
+use crate::highlights::Lobe;
 use crate::lighting::Lighting;
 use ch01_whitted::optics::reflect;
 use ch01_whitted::scene::World;
@@ -134,9 +134,10 @@ impl<L: Lighting> Tracer<'_, L> {
 
     // ANCHOR: glossy
     /// A fuzzy mirror: the radiance leaving `hit` back along `ray` from the point lights'
-    /// highlights ([`point_light_highlights`]) and one ray into the lobe of the material's
-    /// exponent around the mirror direction ([`spread`](Self::spread)), on the side the ray
-    /// arrives from. The back of a one-sided surface is black.
+    /// highlights ([`point_light_highlights`](crate::highlights::point_light_highlights)) and
+    /// one ray into the lobe of the material's exponent around the mirror direction
+    /// ([`spread`](Self::spread)), on the side the ray arrives from. The back of a one-sided
+    /// surface is black.
     ///
     /// The lobe is the material's own distribution of directions: sampling it, what is left
     /// to weight the ray's light by?
@@ -150,6 +151,7 @@ impl<L: Lighting> Tracer<'_, L> {
         counters: &mut SampleCounters,
     ) -> Vec3 {
         // BEGIN SOLUTION
+        use crate::highlights::point_light_highlights;
         let normal = if hit.front_face(ray.dir) {
             hit.shading_n
         } else if glossy.two_sided {
@@ -177,7 +179,7 @@ impl<L: Lighting> Tracer<'_, L> {
     /// infinite exponent) is its centre alone, and draws no numbers.
     ///
     /// Which ray carries that light back, from where, and at what time?
-    fn spread<S: Sampler>(
+    pub fn spread<S: Sampler>(
         &self,
         ray: &Ray,
         hit: &SurfaceHit,
@@ -209,9 +211,9 @@ impl<L: Lighting> Tracer<'_, L> {
     /// Glass, smooth (`exponent` infinite) or frosted: the radiance leaving `hit` back along
     /// `ray`, which the Fresnel equations split between a reflection lobe and a refraction
     /// lobe (that one of exponent [`transmission_exponent`]), each with the point lights'
-    /// highlights ([`point_light_highlights`]) and one ray spread into it
-    /// ([`spread`](Self::spread)); the render's [`GlassStrategy`] says whether to follow both
-    /// or one chosen at random (`choose_half`, `choose_fresnel`).
+    /// highlights ([`point_light_highlights`](crate::highlights::point_light_highlights)) and
+    /// one ray spread into it ([`spread`](Self::spread)); the render's [`GlassStrategy`] says
+    /// whether to follow both or one chosen at random (`choose_half`, `choose_fresnel`).
     ///
     /// Which side of the surface is the ray on, and what does that change? What must a branch
     /// taken at random be weighted by, and what happens to radiance that crosses into another
@@ -230,6 +232,7 @@ impl<L: Lighting> Tracer<'_, L> {
     ) -> Vec3 {
         // BEGIN SOLUTION
         use crate::glass_choice::{choose_fresnel, choose_half};
+        use crate::highlights::point_light_highlights;
         use ch01_whitted::optics::{fresnel_dielectric, refract};
 
         // The side the ray arrives on: the normal facing it, and the ratio of the indices.
@@ -318,6 +321,7 @@ pub fn transmission_exponent(exponent: f32, eta: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::highlights::point_light_highlights;
     use ch01_whitted::optics::fresnel_dielectric;
     use common::geometry::{Parallelogram, Shape, Sphere};
     use common::sampler::IndependentSampler;
@@ -740,6 +744,7 @@ mod tests {
         let term =
             |at: Vec3| FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared();
         let expected = term(lights[1]);
+        let around_normal = FuzzMethod::Lobe.pdf(lights[1].normalize().y, 20.0) / 4.0;
         // The spread rays find the black ceiling: only the highlights remain.
         let (got, _, _) = mean_of(&world, &Glow(Vec::new()), TraceOptions::default(), &ray, 20);
         assert!(
@@ -750,6 +755,8 @@ mod tests {
             got.x,
             if (got.x - expected - term(lights[0])).abs() <= 1e-3 * expected {
                 "the hidden light shows: the highlights' shadow rays lost the ray's shutter time"
+            } else if (got.x - around_normal).abs() <= 1e-3 * around_normal {
+                "is the lobe centred on the mirror direction? Yours is centred on the normal"
             } else if got.x == 0.0 {
                 "a fuzzy mirror shows the point lights its lobe sees, as highlights"
             } else {
