@@ -765,31 +765,83 @@ mod tests {
         );
     }
 
+    /// The radiance `spread` brings back to where `ray` meets `world`, from a lobe around the
+    /// mirror direction of a floor of normal +y, averaged over `n` samples, with its standard
+    /// error and the numbers drawn from the sampler.
+    fn spread_from_floor<L: Lighting>(
+        world: &MotionScene,
+        lighting: &L,
+        options: TraceOptions,
+        ray: &Ray,
+        exponent: f32,
+        n: u64,
+    ) -> (f64, f64, u32) {
+        let tracer = Tracer {
+            world,
+            lighting,
+            options,
+        };
+        let hit = world.intersect(ray).expect("the ray meets the floor");
+        let lobe = Lobe {
+            center: reflect(ray.dir, Vec3::Y),
+            exponent,
+            side: Vec3::Y,
+            method: FuzzMethod::Lobe,
+        };
+        let mut sampler = Counting {
+            inner: IndependentSampler::new(3),
+            drawn: 0,
+        };
+        let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+        for i in 0..n {
+            sampler.start_pixel_sample(UVec2::ZERO, i);
+            let l = tracer.spread(
+                ray,
+                &hit,
+                &lobe,
+                1,
+                &mut sampler,
+                &mut SampleCounters::default(),
+            );
+            let x = f64::from(l.element_sum());
+            sum += x;
+            sum2 += x * x;
+        }
+        let mean = sum / n as f64;
+        let variance = (sum2 / n as f64 - mean * mean).max(0.0);
+        (mean, (variance / n as f64).sqrt(), sampler.drawn)
+    }
+
     #[test]
     fn exercise_spread_keeps_the_rays_shutter_time() {
-        // A glowing ball that is over the glossy floor's mirror direction from time 0.5 on,
-        // and far away before.
+        // A glowing ball over the floor's mirror direction from time 0.5 on, far away before.
         let ball = Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5));
         let far = Mat4::from_translation(Vec3::new(40.0, 1.5, 0.0));
         let there = Mat4::from_translation(Vec3::new(1.5, 1.5, 0.0));
-        let green = Vec3::new(0.0, 1.0, 0.0);
-        let lighting = Glow(vec![Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, green]);
+        let lighting = Glow(vec![Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::Y]);
+        let world = between_ceiling_and_floor(Material::diffuse(Vec3::ZERO), |b| {
+            b.moving(
+                ball,
+                vec![(0.0, far), (0.5, there), (1.0, there)],
+                Material::diffuse(Vec3::ZERO),
+            )
+        });
+        let ray = towards_origin(45.0, true).with_time(0.8);
         for exponent in [f32::INFINITY, 1e6] {
-            let world = between_ceiling_and_floor(Material::glossy(Vec3::ONE, exponent), |b| {
-                b.moving(
-                    ball,
-                    vec![(0.0, far), (0.5, there), (1.0, there)],
-                    Material::diffuse(Vec3::ZERO),
-                )
-            });
-            let ray = towards_origin(45.0, true).with_time(0.8);
-            let (got, _, _) = mean_of(&world, &lighting, TraceOptions::default(), &ray, 20);
+            let (got, _, _) = spread_from_floor(
+                &world,
+                &lighting,
+                TraceOptions::default(),
+                &ray,
+                exponent,
+                20,
+            );
             assert!(
-                got.abs_diff_eq(green, 1e-4),
-                "spread: a glossy floor (exponent {exponent}) whose mirror direction meets a \
-                 glowing ball at the camera ray's time 0.8 (and misses it at time 0) should see \
-                 {green}, and yours saw {got}{}",
-                if got == Vec3::ZERO {
+                (got - 1.0).abs() < 1e-4,
+                "spread: a lobe of exponent {exponent} around a floor's mirror direction, which \
+                 meets a ball glowing 1 at the camera ray's time 0.8 (and misses it at time 0), \
+                 should bring back 1, and yours brought {got}{}",
+                if got == 0.0 {
                     ": the spread ray lost the ray's shutter time; every ray of a path sees the \
                      world at the camera ray's instant"
                 } else {
@@ -801,40 +853,46 @@ mod tests {
 
     #[test]
     fn exercise_spread_draws_nothing_for_a_smooth_lobe() {
-        let world = between_ceiling_and_floor(Material::glossy(Vec3::ONE, f32::INFINITY), |b| b);
+        let world = between_ceiling_and_floor(Material::diffuse(Vec3::ZERO), |b| b);
         let lighting = Glow(vec![Vec3::ZERO, RED, BLUE]);
-        let tracer = Tracer {
-            world: &world,
-            lighting: &lighting,
-            options: TraceOptions::default(),
-        };
-        let mut sampler = Counting {
-            inner: IndependentSampler::new(1),
-            drawn: 0,
-        };
-        sampler.start_pixel_sample(UVec2::ZERO, 0);
         let ray = towards_origin(30.0, true);
-        let got = tracer.trace(&ray, 1, &mut sampler, &mut SampleCounters::default());
+        let options = TraceOptions::default();
+        let (got, _, drawn) = spread_from_floor(&world, &lighting, options, &ray, f32::INFINITY, 1);
         assert!(
-            got.abs_diff_eq(RED, 1e-5) && sampler.drawn == 0,
-            "spread: a smooth glossy floor (an infinite exponent) should reflect the ceiling's \
-             {RED} exactly, drawing no numbers, and yours saw {got} and drew {}: a smooth lobe \
-             is its centre alone, and a number drawn for it shifts every later dimension",
-            sampler.drawn
+            (got - 1.0).abs() < 1e-5 && drawn == 0,
+            "spread: a smooth lobe (an infinite exponent) around a floor's mirror direction \
+             should bring back the ceiling's {RED} exactly, drawing no numbers, and yours \
+             brought {got} (summed over the channels) and drew {drawn}: a smooth lobe is its \
+             centre alone, and a number drawn for it shifts every later dimension"
         );
     }
 
     #[test]
     fn exercise_spread_follows_the_below_surface_policy() {
-        // A white rough floor in the furnace at 80° from the normal: much of the lobe is below.
-        let world = crate::furnace::white_floor(1.0);
+        // A floor in a world that glows 1 everywhere, met at 80° from the normal: much of a
+        // lobe of exponent 1 around the mirror direction is below the floor.
+        let floor = Parallelogram::new(Vec3::new(-1e3, 0.0, -1e3), 2e3 * Vec3::Z, 2e3 * Vec3::X);
+        let world = crate::furnace::scene_of(
+            vec![(Shape::Parallelogram(floor), Material::diffuse(Vec3::ZERO))],
+            Vec3::splat(1.0 / 3.0),
+            Vec3::new(0.0, 2.0, 5.0),
+            Vec3::ZERO,
+            4,
+        );
         let ray = crate::furnace::incoming(80.0);
         for below in BelowSurface::ALL {
             let options = TraceOptions {
                 below,
                 ..TraceOptions::default()
             };
-            let (mean, se) = crate::furnace::mean_radiance(&world, options, &ray, 2000);
+            let (mean, se, _) = spread_from_floor(
+                &world,
+                &crate::lighting::PointLights,
+                options,
+                &ray,
+                1.0,
+                2000,
+            );
             let keeps_energy = below != BelowSurface::Drop;
             let ok = if keeps_energy {
                 (mean - 1.0).abs() <= 5.0 * se + 1e-6
@@ -843,15 +901,16 @@ mod tests {
             };
             assert!(
                 ok,
-                "spread: a white floor of exponent 1 in a furnace of radiance 1, seen at 80°, \
-                 with the {below:?} policy reflects {mean:.3} (± {se:.3}) of the light: {}",
+                "spread: a lobe of exponent 1 around a floor's mirror direction at 80° from the \
+                 normal, in a world that glows 1 everywhere, with the {below:?} policy brings \
+                 back {mean:.3} (± {se:.3}): {}",
                 if keeps_energy {
-                    "this policy never loses a sample, so all of it should come back; is the \
-                     render's below-surface policy (self.options.below) the one used?"
+                    "this policy never loses a sample, so 1 should come back; is the render's \
+                     below-surface policy (self.options.below) the one used?"
                 } else {
-                    "dropping the directions below the surface loses part of the lobe, so \
-                     well under all of it should come back; a direction below that is kept \
-                     leaks light through the surface"
+                    "dropping the directions below the surface loses part of the lobe, so well \
+                     under 1 should come back; a direction below that is kept leaks light \
+                     through the surface"
                 }
             );
         }
