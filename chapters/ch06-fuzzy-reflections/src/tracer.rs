@@ -502,11 +502,16 @@ mod tests {
     /// (intensity 1 each, in the red channel), a still ball hiding the last one, and a ball
     /// that moves between the first one and the origin at time 0.5 and stays there.
     fn floor_with_lights(lights: &[Vec3]) -> MotionScene {
+        floor_of_with_lights(Material::glossy(Vec3::ONE, 20.0), lights)
+    }
+
+    /// [`floor_with_lights`] with a floor of `material`.
+    fn floor_of_with_lights(material: Material, lights: &[Vec3]) -> MotionScene {
         let last = lights[lights.len() - 1];
         let first = lights[0];
         let ball = |at: Vec3| Shape::Sphere(Sphere::new(at, 0.04));
         let lights = lights.to_vec();
-        between_ceiling_and_floor(Material::glossy(Vec3::ONE, 20.0), move |b| {
+        between_ceiling_and_floor(material, move |b| {
             let b = lights.iter().fold(b, |b, &position| {
                 b.light(PointLight {
                     position,
@@ -1064,6 +1069,44 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn exercise_glass_frosted_shows_the_lights_it_sees_at_the_rays_time() {
+        // Frosted glass with two lights near its mirror direction, the first hidden by a
+        // moving ball from time 0.5 on; the spread rays find a black world.
+        let ray = towards_origin(40.0, true).with_time(0.8);
+        let mirror = reflect(ray.dir, Vec3::Y);
+        let lights = [
+            3.0 * (mirror + Vec3::new(0.1, 0.0, 0.25)).normalize(),
+            2.0 * mirror,
+        ];
+        let glass = Material::rough_glass(1.5, 20.0);
+        let world = floor_of_with_lights(glass, &[lights[0], lights[1], Vec3::new(0.0, 5.0, 40.0)]);
+        let (_, f, _) = whitted(40.0, true);
+        let term = |at: Vec3| {
+            f * FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared()
+        };
+        let expected = term(lights[1]);
+        let (got, _, _) = mean_of(
+            &world,
+            &Glow(Vec::new()),
+            options(GlassStrategy::Both),
+            &ray,
+            5,
+        );
+        assert!(
+            (got.x - expected).abs() <= 1e-3 * expected,
+            "glass: frosted glass (exponent 20) at time 0.8, following both rays, with a light \
+             near its mirror direction and another hidden at that time by a moving ball, should \
+             show the highlight {expected} (times F = {f:.4}), and yours showed {}{}",
+            got.x,
+            if (got.x - expected - term(lights[0])).abs() <= 1e-3 * expected {
+                ": the hidden light shows; the highlights' shadow rays lost the ray's shutter time"
+            } else {
+                ""
+            }
+        );
     }
 
     #[test]
