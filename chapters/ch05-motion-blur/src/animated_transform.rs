@@ -222,8 +222,13 @@ impl AnimatedTransform {
         self.at_with_inverse(time).0
     }
 
-    /// Object to world at `time` and its inverse, world to object.
+    // ANCHOR: at_with_inverse
+    /// Object to world at `time` and its inverse, world to object: held at the first
+    /// keyframe's before it (and for a time that is not a number), at the last one's after it,
+    /// exactly a keyframe's own matrices at its time, and the two keyframes around `time`
+    /// interpolated in between (see [`segment_at`](Self::segment_at) and [`interpolate`]).
     pub fn at_with_inverse(&self, time: f32) -> (Mat4, Mat4) {
+        // BEGIN SOLUTION
         let first = &self.keyframes[0];
         let last = &self.keyframes[self.keyframes.len() - 1];
         let exact = |k: &Keyframe| (k.matrix, k.inverse);
@@ -241,18 +246,23 @@ impl AnimatedTransform {
         }
         let parts = interpolate(&self.keyframes[i].parts, &self.keyframes[i + 1].parts, u);
         (parts.matrix(), parts.inverse_matrix())
+        // END SOLUTION
     }
+    // ANCHOR_END: at_with_inverse
 }
 
 // ANCHOR: interpolate
-/// The transform a fraction `u` of the way from `a` to `b`: translation and scale lerped,
-/// rotation slerped (the shorter way, at constant angular speed).
+/// The transform a fraction `u` of the way from `a` to `b`, each part in its own way: the
+/// object moves along a straight line at constant speed, turns about a fixed axis at constant
+/// angular speed, the shorter way round, and its scale changes evenly.
 pub fn interpolate(a: &Decomposed, b: &Decomposed, u: f32) -> Decomposed {
+    // BEGIN SOLUTION
     Decomposed {
         translation: a.translation.lerp(b.translation, u),
         rotation: a.rotation.slerp(b.rotation, u),
         scale: a.scale * (1.0 - u) + b.scale * u,
     }
+    // END SOLUTION
 }
 // ANCHOR_END: interpolate
 
@@ -260,6 +270,176 @@ pub fn interpolate(a: &Decomposed, b: &Decomposed, u: f32) -> Decomposed {
 mod tests {
     use super::*;
     use std::f32::consts::{FRAC_PI_2, PI};
+
+    fn close_mat3(a: Mat3, b: Mat3, tolerance: f32) -> bool {
+        (0..3).all(|i| (a.col(i) - b.col(i)).abs().max_element() <= tolerance)
+    }
+
+    /// Whether two unit quaternions are the same rotation (`q` and `-q` are).
+    fn same_rotation(a: Quat, b: Quat, tolerance: f32) -> bool {
+        a.dot(b).abs() >= 1.0 - tolerance
+    }
+
+    #[test]
+    fn exercise_interpolate_moves_turns_and_scales_evenly() {
+        let axis = Vec3::new(1.0, -2.0, 0.5).normalize();
+        let a = Decomposed {
+            translation: Vec3::new(1.0, 2.0, 3.0),
+            rotation: Quat::from_axis_angle(axis, 0.2),
+            scale: Mat3::from_diagonal(Vec3::new(1.0, 2.0, 1.0)),
+        };
+        // 160 degrees from a's rotation: far enough for an uneven turn to show.
+        let turn = 160f32.to_radians();
+        let b = Decomposed {
+            translation: Vec3::new(-3.0, 0.0, 5.0),
+            rotation: Quat::from_axis_angle(axis, 0.2 + turn),
+            scale: Mat3::from_diagonal(Vec3::new(3.0, 1.0, 0.5)),
+        };
+        for u in [0.0f32, 0.25, 0.5, 0.8, 1.0] {
+            let got = interpolate(&a, &b, u);
+            let at = format!("interpolate: a fraction u = {u} of the way");
+            let translation = a.translation + u * (b.translation - a.translation);
+            assert!(
+                got.translation.abs_diff_eq(translation, 1e-5),
+                "{at}, the translation should be {translation}, and yours is {}: {}",
+                got.translation,
+                if got
+                    .translation
+                    .abs_diff_eq(b.translation.lerp(a.translation, u), 1e-5)
+                {
+                    "it runs from b to a, backwards (u = 0 is a)"
+                } else {
+                    "the object moves along the straight line from a to b at constant speed"
+                }
+            );
+            let scale = a.scale * (1.0 - u) + b.scale * u;
+            if !close_mat3(got.scale, scale, 1e-4) {
+                let lerped_matrices = a.matrix() * (1.0 - u) + b.matrix() * u;
+                let why = if close_mat3(got.scale, Decomposed::new(lerped_matrices).scale, 1e-4) {
+                    "it is what lerping the two matrices gives: a blend of two rotations is no \
+                     rotation, and the object shrinks and shears on the way; interpolate the \
+                     parts each in its own way"
+                } else {
+                    "the scale changes evenly from a's to b's"
+                };
+                panic!(
+                    "{at}, the scale should be {scale}, and yours is {}: {why}",
+                    got.scale
+                );
+            }
+            let length = got.rotation.length();
+            assert!(
+                (length - 1.0).abs() < 1e-4,
+                "{at}, the rotation is a quaternion of length {length}: a rotation is a unit \
+                 quaternion (a blend of two unit quaternions is shorter than 1)"
+            );
+            let rotation = Quat::from_axis_angle(axis, 0.2 + u * turn);
+            if !same_rotation(got.rotation, rotation, 1e-5) {
+                let turned = (a.rotation.inverse() * got.rotation).to_axis_angle().1;
+                let why = if same_rotation(got.rotation, a.rotation.lerp(b.rotation, u), 1e-5) {
+                    "blending the quaternions and normalising follows the right great circle, \
+                     but not at constant speed: the object turns slowly at the ends and fast in \
+                     the middle"
+                } else {
+                    "the object turns about one axis at constant angular speed, the shorter way"
+                };
+                panic!(
+                    "{at}, the rotation should have turned {:.1} degrees from a's, and yours \
+                     turned {:.1}: {why}",
+                    (u * turn).to_degrees(),
+                    turned.to_degrees()
+                );
+            }
+        }
+    }
+
+    /// A motion whose parts are linear in time: `T(t) R(t) S(t)`, with the rotation's angle
+    /// linear in time, so that interpolating between any of its keyframes gives `f(t)` itself.
+    fn linear_motion(time: f32) -> Mat4 {
+        let axis = Vec3::new(0.3, 1.0, -0.2).normalize();
+        Mat4::from_translation(Vec3::new(-2.0, 1.0, 0.5) + time * Vec3::new(1.5, -0.5, 2.0))
+            * Mat4::from_axis_angle(axis, 1.2 * time)
+            * Mat4::from_scale(Vec3::new(1.0 + 0.5 * time, 2.0 - 0.3 * time, 1.0))
+    }
+
+    #[test]
+    fn exercise_at_with_inverse_interpolates_between_the_right_keyframes() {
+        let times = [1.0f32, 3.0, 3.5];
+        let keyframes: Vec<(f32, Mat4)> = times.iter().map(|&t| (t, linear_motion(t))).collect();
+        let motion = AnimatedTransform::new(&keyframes).unwrap();
+        let points = [Vec3::ZERO, Vec3::X, Vec3::new(0.5, -1.0, 2.0)];
+        let cases = [
+            (-5.0, 1.0),
+            (0.0, 1.0),
+            (1.0, 1.0),
+            (1.5, 1.5),
+            (2.0, 2.0),
+            (2.9, 2.9),
+            (3.0, 3.0),
+            (3.2, 3.2),
+            (3.5, 3.5),
+            (4.0, 3.5),
+            (100.0, 3.5),
+            (f32::NAN, 1.0),
+        ];
+        for (time, held) in cases {
+            let (m, inverse) = motion.at_with_inverse(time);
+            let expected = linear_motion(held);
+            let at = format!(
+                "AnimatedTransform::at_with_inverse: keyframes at times 1, 3 and 3.5, at time \
+                 {time}"
+            );
+            let agrees = |m: Mat4| {
+                points.iter().all(|&x| {
+                    m.transform_point3(x)
+                        .abs_diff_eq(expected.transform_point3(x), 1e-4)
+                })
+            };
+            if !agrees(m) {
+                let segment = times.windows(2).find(|w| w[0] <= time && time < w[1]);
+                let why = if time.is_nan() {
+                    "a time that is not a number is held at the first keyframe".to_string()
+                } else if time < times[0] {
+                    "before the first keyframe the object stays where the first one puts it"
+                        .to_string()
+                } else if time > times[2] {
+                    "after the last keyframe the object stays where the last one puts it"
+                        .to_string()
+                } else if let Some(w) = segment {
+                    let (ka, kb) = (Decomposed::new(linear_motion(w[0])), linear_motion(w[1]));
+                    let u = (time - w[0]) / (w[1] - w[0]);
+                    let lerped = linear_motion(w[0]) * (1.0 - u) + kb * u;
+                    let unscaled = interpolate(&ka, &Decomposed::new(kb), time - w[0]).matrix();
+                    if lerped.abs_diff_eq(m, 1e-4) {
+                        "the keyframe matrices were blended entry by entry: the object shrinks \
+                         and shears between them; interpolate their parts"
+                            .to_string()
+                    } else if unscaled.abs_diff_eq(m, 1e-4) {
+                        format!(
+                            "the fraction given to interpolate is {}, the time since the \
+                             keyframe; it is the fraction of the way from one keyframe to the \
+                             next, from 0 at the first to 1 at the second",
+                            time - w[0]
+                        )
+                    } else {
+                        format!(
+                            "the object lies between the keyframes at times {} and {}",
+                            w[0], w[1]
+                        )
+                    }
+                } else {
+                    "at a keyframe's time the object is where that keyframe puts it".to_string()
+                };
+                panic!("{at}, the object is not where it should be: {why}");
+            }
+            let round_trip = inverse * m;
+            assert!(
+                round_trip.abs_diff_eq(Mat4::IDENTITY, 1e-4),
+                "{at}, the second matrix does not undo the first: it takes world space back to \
+                 object space, the inverse of the first (their product is {round_trip})"
+            );
+        }
+    }
 
     #[test]
     fn decomposing_and_recombining_gives_the_matrix_back() {

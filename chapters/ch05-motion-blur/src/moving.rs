@@ -12,7 +12,6 @@
 
 use crate::animated_transform::AnimatedTransform;
 use crate::motion_bounds::motion_bounds;
-use crate::object_space::{hit_to_world, to_object_space};
 use crate::shutter::Shutter;
 use common::Ray;
 use common::geometry::{Aabb, Bvh, Shape, SurfaceHit};
@@ -36,13 +35,47 @@ impl MovingShape {
     }
 
     // ANCHOR: moving_intersect
-    /// The nearest hit at the ray's time: the ray goes into object space, the hit comes back.
+    /// The nearest hit, before `ray.t_max`, of the shape where its motion has it at the ray's
+    /// shutter time, as a world-space [`SurfaceHit`]: the ray's own `t`, the point and its error
+    /// bound ([`point_error_to_world`](crate::object_space::point_error_to_world)), and unit normals perpendicular to the placed surface.
+    ///
+    /// The shape itself only knows how to meet a ray in its own space. Which space should the
+    /// intersection happen in, and what does each part of the hit become on the way back?
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        // BEGIN SOLUTION
+        use crate::object_space::{point_error_to_world, to_object_space};
+        use glam::Mat3;
+
+        // Where the object is at the ray's time (not at the shutter's opening, nor at 0).
         let (object_to_world, world_to_object) = self.motion.at_with_inverse(ray.time);
-        let local_hit = self
-            .shape
-            .intersect(&to_object_space(ray, &world_to_object))?;
-        Some(hit_to_world(&local_hit, &object_to_world, &world_to_object))
+
+        // The ray in the object's own space, where the shape sits still. Its direction is not
+        // normalised, so the same t names the same point in both spaces, and t_max holds.
+        let local_ray = to_object_space(ray, &world_to_object);
+        let local = self.shape.intersect(&local_ray)?;
+
+        // The hit back in world space. A point goes by the transform itself.
+        let p = object_to_world.transform_point3(local.p);
+        let p_error = point_error_to_world(local.p, local.p_error, &object_to_world);
+
+        // A normal is no point or direction: under a stretch it would lean over with the
+        // surface. The inverse transpose keeps it perpendicular to the placed surface; a scale
+        // changes its length, so it is normalised again.
+        let normal_matrix = Mat3::from_mat4(world_to_object).transpose();
+        let n = (normal_matrix * local.n).normalize();
+        let shading_n = (normal_matrix * local.shading_n).normalize();
+
+        // t needs no conversion: the object-space ray's point at t is the world point at t.
+        Some(SurfaceHit {
+            t: local.t,
+            p,
+            p_error,
+            n,
+            shading_n,
+            uv: local.uv,
+            shape: local.shape,
+        })
+        // END SOLUTION
     }
     // ANCHOR_END: moving_intersect
 
@@ -185,8 +218,278 @@ fn stretch(shutter: &Shutter, j: usize, k: usize) -> (f32, f32) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::object_space::{point_error_to_world, to_object_space};
     use common::geometry::Sphere;
-    use glam::{Mat4, Vec3};
+    use glam::{DVec3, Mat4, Vec3};
+
+    /// A unit sphere, stretched into an ellipsoid, turning and sliding over the shutter.
+    fn stretched_sphere() -> MovingShape {
+        MovingShape::new(
+            Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0)),
+            AnimatedTransform::new(&[
+                (
+                    0.0,
+                    Mat4::from_translation(Vec3::new(-3.0, 0.0, 0.0))
+                        * Mat4::from_rotation_y(0.3)
+                        * Mat4::from_scale(Vec3::new(2.0, 0.5, 1.0)),
+                ),
+                (
+                    1.0,
+                    Mat4::from_translation(Vec3::new(3.0, 1.0, 0.0))
+                        * Mat4::from_rotation_y(1.2)
+                        * Mat4::from_scale(Vec3::new(1.0, 0.5, 2.0)),
+                ),
+            ])
+            .unwrap(),
+        )
+    }
+
+    /// The hit of `ray` with the unit sphere placed by `motion` at `time`, solved in world
+    /// space in f64: `|W x| = 1` on the surface, `W` world to object. `(t, p, n)`.
+    fn ellipsoid_hit(
+        motion: &AnimatedTransform,
+        ray: &Ray,
+        time: f32,
+    ) -> Option<(f32, Vec3, Vec3)> {
+        let w = motion.at_with_inverse(time).1.as_dmat4();
+        let (origin, dir) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+        let (o, d) = (w.transform_point3(origin), w.transform_vector3(dir));
+        let (a, b, c) = (d.dot(d), 2.0 * o.dot(d), o.dot(o) - 1.0);
+        let discriminant = b * b - 4.0 * a * c;
+        if discriminant < 0.0 {
+            return None;
+        }
+        let root = discriminant.sqrt();
+        let t = [(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)]
+            .into_iter()
+            .find(|&t| t > 1e-4 && t < f64::from(ray.t_max))?;
+        let object_point = o + t * d;
+        let normal: DVec3 = glam::DMat3::from_mat4(w).transpose() * object_point;
+        Some((
+            t as f32,
+            (origin + t * dir).as_vec3(),
+            normal.normalize().as_vec3(),
+        ))
+    }
+
+    /// What is wrong with `got = shape.intersect(ray)`, in words; `None` if it is right.
+    fn moving_hit_mistake(
+        shape: &MovingShape,
+        ray: &Ray,
+        got: Option<SurfaceHit>,
+    ) -> Option<String> {
+        let expected = ellipsoid_hit(&shape.motion, ray, ray.time);
+        let (got, (t, p, n)) = match (got, expected) {
+            (None, None) => return None,
+            (Some(got), Some(expected)) => (got, expected),
+            (got, expected) => {
+                let same = |a: Option<f32>, b: Option<f32>| match (a, b) {
+                    (None, None) => true,
+                    (Some(a), Some(b)) => (a - b).abs() < 1e-3 * a.max(1.0),
+                    _ => false,
+                };
+                let at_other_time = [0.0, 0.5, 1.0].into_iter().find(|&time| {
+                    time != ray.time
+                        && same(
+                            ellipsoid_hit(&shape.motion, ray, time).map(|h| h.0),
+                            got.map(|h| h.t),
+                        )
+                });
+                let said = match (got, expected) {
+                    (Some(got), None) => format!(
+                        "yours hit it at t = {}, but at the ray's time {} the object is not there{}",
+                        got.t,
+                        ray.time,
+                        if ellipsoid_hit(
+                            &shape.motion,
+                            &Ray {
+                                t_max: f32::INFINITY,
+                                ..*ray
+                            },
+                            ray.time
+                        )
+                        .is_some()
+                        {
+                            " before the ray's t_max (a shadow ray stops at its light)"
+                        } else {
+                            ""
+                        }
+                    ),
+                    _ => format!(
+                        "yours missed it, but at the ray's time {} the ray meets it at t = {}",
+                        ray.time,
+                        expected.map_or(0.0, |h| h.0)
+                    ),
+                };
+                return Some(match at_other_time {
+                    Some(time) => format!(
+                        "{said}: yours looks where the object is at time {time}; the object has \
+                         to be where it is at the ray's own time"
+                    ),
+                    None => said,
+                });
+            }
+        };
+        let close = |a: Vec3, b: Vec3| (a - b).length() <= 1e-3 * b.length().max(1.0);
+        let (object_to_world, world_to_object) = shape.motion.at_with_inverse(ray.time);
+        if (got.t - t).abs() > 1e-3 * t.max(1.0) {
+            let scaled = got.t * ray.dir.length();
+            let local_dir = world_to_object.transform_vector3(ray.dir);
+            return Some(format!(
+                "the hit is at t = {t} on the world ray, and yours says t = {}: {}",
+                got.t,
+                if let Some(time) = [0.0, 0.5, 1.0].into_iter().find(|&time| {
+                    ellipsoid_hit(&shape.motion, ray, time)
+                        .is_some_and(|h| (h.0 - got.t).abs() < 1e-4 * h.0.max(1.0))
+                }) {
+                    format!(
+                        "yours looks where the object is at time {time}; the object has to be \
+                         where it is at the ray's own time"
+                    )
+                } else if (got.t - t * local_dir.length()).abs() < 1e-3 * t.max(1.0)
+                    || (got.t - t / local_dir.length()).abs() < 1e-3 * t.max(1.0)
+                {
+                    "t was rescaled by the length of the object-space direction; with that \
+                     direction left as the transform made it, the same t names the same point in \
+                     both spaces"
+                        .to_string()
+                } else if (scaled - t).abs() < 1e-3 * t.max(1.0)
+                    || (got.t / ray.dir.length() - t).abs() < 1e-3 * t.max(1.0)
+                {
+                    "t was rescaled by the length of the ray's direction; it is the parameter of \
+                     the ray as given, ray.at(t) = p"
+                        .to_string()
+                } else {
+                    "is the object where it is at the ray's time, and is t the world ray's \
+                     parameter of the point?"
+                        .to_string()
+                }
+            ));
+        }
+        if !close(got.p, p) {
+            let local = world_to_object.transform_point3(p);
+            return Some(format!(
+                "the hit point should be {p} (the world ray's point at t = {t}), and yours is {}{}",
+                got.p,
+                if close(got.p, local) {
+                    ": that is the point in the object's own space; it goes back to world space \
+                     by the object-to-world transform"
+                } else {
+                    ""
+                }
+            ));
+        }
+        let check_normal = |name: &str, got_n: Vec3| -> Option<String> {
+            let length = got_n.length();
+            if (length - 1.0).abs() > 1e-3 {
+                return Some(format!(
+                    "the {name} has length {length}: the transform changes a normal's length \
+                     (the object is scaled), so it has to be made unit again"
+                ));
+            }
+            if close(got_n, n) {
+                return None;
+            }
+            let local_n = to_object_space(ray, &world_to_object);
+            let local_hit = shape
+                .shape
+                .intersect(&local_n)
+                .map(|h| h.n)
+                .unwrap_or(Vec3::ZERO);
+            let like_a_direction = object_to_world.transform_vector3(local_hit).normalize();
+            Some(format!(
+                "the {name} should be {n}, perpendicular to the stretched surface, and yours is \
+                 {got_n}{}",
+                if close(got_n, like_a_direction) {
+                    ": it was transformed like a direction, and under a stretch a normal moved \
+                     that way leans over with the surface; what matrix keeps it perpendicular?"
+                } else if close(got_n, -n) {
+                    ": it points into the object"
+                } else {
+                    ""
+                }
+            ))
+        };
+        if let Some(mistake) = check_normal("normal n", got.n) {
+            return Some(mistake);
+        }
+        if let Some(mistake) = check_normal("shading normal", got.shading_n) {
+            return Some(mistake);
+        }
+        // The error bound: at least what the transform's rounding can do to the point.
+        let local = shape
+            .shape
+            .intersect(&to_object_space(ray, &world_to_object))
+            .expect("the reference hits");
+        let bound = point_error_to_world(local.p, local.p_error, &object_to_world);
+        if !(got.p_error.cmpge(0.5 * bound).all() && got.p_error.is_finite()) {
+            return Some(format!(
+                "the point's error bound is {}, where the transformed point may be off by up to \
+                 {bound}{}: a secondary ray leaving from the point is offset by this bound, and \
+                 too small a bound lets it hit the surface it leaves (point_error_to_world \
+                 bounds a transformed point)",
+                got.p_error,
+                if got.p_error == local.p_error {
+                    " (yours is the object-space bound, which the transform scales and adds to)"
+                } else {
+                    ""
+                }
+            ));
+        }
+        if got.uv != local.uv || got.shape != local.shape {
+            return Some(
+                "the surface coordinates (uv) and the shape index are the shape's own and stay as \
+                 they are"
+                    .to_string(),
+            );
+        }
+        None
+    }
+
+    #[test]
+    fn exercise_moving_intersect_finds_the_object_where_it_is_at_the_rays_time() {
+        let shape = stretched_sphere();
+        let mut hits = 0;
+        for i in 0..200 {
+            let time = (i as f32 + 0.5) / 200.0;
+            let x = -4.0 + 8.0 * ((i * 37 % 200) as f32 / 200.0);
+            let y = -0.2 + 1.4 * ((i * 91 % 200) as f32 / 200.0);
+            let dir = Vec3::new(0.1 * ((i % 7) as f32 - 3.0), 0.05, 1.0);
+            // Directions of several lengths: t is the parameter of the ray as given.
+            let dir = dir.normalize() * [1.0, 2.5, 0.4][i % 3];
+            let ray = Ray::new(Vec3::new(x, y, -6.0), dir).with_time(time);
+            let got = shape.intersect(&ray);
+            hits += usize::from(got.is_some());
+            if let Some(mistake) = moving_hit_mistake(&shape, &ray, got) {
+                panic!(
+                    "MovingShape::intersect: a stretched sphere turning and sliding from x = -3 \
+                     to x = 3 over the shutter [0, 1], and the ray {ray:?}: {mistake}"
+                );
+            }
+        }
+        assert!(
+            hits > 20,
+            "the test's rays should hit the object often ({hits})"
+        );
+    }
+
+    #[test]
+    fn exercise_moving_intersect_stops_at_t_max() {
+        let shape = stretched_sphere();
+        // At time 0.5 the object is around x = 0; the ray meets it near t = 5.
+        for t_max in [4.0, 20.0] {
+            let ray = Ray {
+                t_max,
+                ..Ray::new(Vec3::new(0.0, 0.5, -6.0), Vec3::Z).with_time(0.5)
+            };
+            if let Some(mistake) = moving_hit_mistake(&shape, &ray, shape.intersect(&ray)) {
+                panic!(
+                    "MovingShape::intersect: a ray stopping at t_max = {t_max} at time 0.5: \
+                     {mistake}"
+                );
+            }
+        }
+    }
 
     fn crossing_sphere() -> MovingShape {
         MovingShape::new(

@@ -66,11 +66,13 @@ impl Shutter {
     }
 
     // ANCHOR: time_at
-    /// The time a uniform `u` in `[0, 1)` picks: uniform over the interval, so the image is the
-    /// average over the time the shutter is open. Stays inside `[open, close]` for any `u` in
-    /// `[0, 1]`, even when rounding would carry `open + u * length` past `close`.
+    /// The time a uniform `u` in `[0, 1)` picks: uniform over the interval, so that the image
+    /// is the average over the time the shutter is open, with `u = 0` the moment it opens.
+    /// Never outside `[open, close]` for any `u` in `[0, 1]`, whatever float rounding does.
     pub fn time_at(&self, u: f32) -> f32 {
+        // BEGIN SOLUTION
         (self.open + u * self.length()).clamp(self.open, self.close)
+        // END SOLUTION
     }
     // ANCHOR_END: time_at
 }
@@ -78,6 +80,81 @@ impl Shutter {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// What is wrong with `time = shutter.time_at(u)`, in words; `None` if it is right.
+    fn time_at_mistake(shutter: &Shutter, u: f32, time: f32) -> Option<String> {
+        let (open, close) = (f64::from(shutter.open), f64::from(shutter.close));
+        let expected = open + f64::from(u) * (close - open);
+        let tolerance = 4.0 * f64::from(f32::EPSILON) * open.abs().max(close.abs()).max(1.0);
+        let near = |x: f64| (f64::from(time) - x).abs() <= tolerance;
+        if near(expected) {
+            if time < shutter.open || time > shutter.close {
+                return Some(format!(
+                    "it is outside the interval [{open}, {close}]: no ray may see the world \
+                     before the shutter opens or after it closes (float rounding can carry a \
+                     sum one step past the end; what keeps the time inside?)"
+                ));
+            }
+            return None;
+        }
+        let why = if near(f64::from(u)) {
+            "u was given back as it is: u is a fraction of the shutter interval, not a time, \
+             and has to be mapped onto [open, close]"
+        } else if near(close - f64::from(u) * (close - open)) {
+            "the interval is run backwards: u = 0 is the moment the shutter opens"
+        } else if near(open + f64::from(u) * close) {
+            "u was scaled by the closing time instead of the interval's length"
+        } else if near(f64::from(u) * (close - open)) {
+            "the interval starts at `open`, not at 0"
+        } else {
+            "u should pick the time that fraction of the way through the interval"
+        };
+        Some(format!("the time should be {expected}: {why}"))
+    }
+
+    #[test]
+    fn exercise_time_at_maps_u_onto_the_interval() {
+        for (open, close) in [
+            (2.0, 6.0),
+            (-1.5, 0.5),
+            (0.25, 0.75),
+            (0.0, 1.0),
+            (3.0, 3.0),
+        ] {
+            let shutter = Shutter::new(open, close).unwrap();
+            for u in [0.0, 0.1, 0.5, 0.75, 0.999] {
+                let time = shutter.time_at(u);
+                if let Some(mistake) = time_at_mistake(&shutter, u, time) {
+                    panic!(
+                        "Shutter::time_at: the shutter open from {open} to {close} and u = {u} \
+                         gave the time {time}, but {mistake}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn exercise_time_at_never_leaves_the_interval() {
+        // Intervals where `open + 1 * (close - open)` rounds past `close` in f32.
+        for (open, close) in [
+            (-421.926_57_f32, -67.055_67_f32),
+            (-81_375_136.0, 3_248_766.0),
+            (-1.989_266, 0.001_094_891_6),
+            (1e7, 1e7 + 3.0),
+        ] {
+            let shutter = Shutter::new(open, close).unwrap();
+            for u in [0.0, 0.3, 1.0 - f32::EPSILON / 2.0, 1.0] {
+                let time = shutter.time_at(u);
+                if let Some(mistake) = time_at_mistake(&shutter, u, time) {
+                    panic!(
+                        "Shutter::time_at: the shutter open from {open} to {close} and u = {u} \
+                         gave the time {time}, but {mistake}"
+                    );
+                }
+            }
+        }
+    }
 
     #[test]
     fn times_stay_inside_the_interval() {

@@ -59,14 +59,17 @@ impl BelowSurface {
     /// sample carries no light.
     ///
     /// `draw` turns two uniform numbers into a direction; it is called with the sampler's next
-    /// two dimensions, once, or again for each resample. A direction exactly in the surface
-    /// plane counts as below: it would run along the surface and light nothing.
+    /// two dimensions, once, or again for each resample, at most [`MAX_RESAMPLES`] times in
+    /// all. A direction exactly in the surface plane counts as below: it would run along the
+    /// surface and light nothing. What does each policy do with a direction below, and what
+    /// must never come back from this function?
     pub fn scatter<S: Sampler>(
         self,
         side: Vec3,
         sampler: &mut S,
         draw: impl Fn(Vec2) -> Vec3,
     ) -> Option<Vec3> {
+        // BEGIN SOLUTION
         let above = |d: Vec3| d.dot(side) > 0.0;
         let d = draw(sampler.get_2d());
         if above(d) {
@@ -79,6 +82,7 @@ impl BelowSurface {
                 .find(|&d| above(d)),
             BelowSurface::Reflect => Some(mirror_through_plane(d, side)).filter(|&d| above(d)),
         }
+        // END SOLUTION
     }
     // ANCHOR_END: scatter
 }
@@ -98,6 +102,137 @@ mod tests {
         let mut s = IndependentSampler::new(2);
         s.start_pixel_sample(UVec2::ZERO, 0);
         s
+    }
+
+    use std::cell::RefCell;
+
+    /// `policy.scatter(side, ..)` with `draw` giving the directions of `lobe` in turn (the last
+    /// one again when they run out): the result, and the numbers each draw was given.
+    fn scatter_with(policy: BelowSurface, side: Vec3, lobe: &[Vec3]) -> (Option<Vec3>, Vec<Vec2>) {
+        let given = RefCell::new(Vec::new());
+        let draw = |u: Vec2| {
+            let mut given = given.borrow_mut();
+            given.push(u);
+            lobe[(given.len() - 1).min(lobe.len() - 1)]
+        };
+        let result = policy.scatter(side, &mut sampler(), draw);
+        (result, given.into_inner())
+    }
+
+    /// Runs `f` on its own thread and gives up after a few seconds, so that a policy which
+    /// never stops drawing fails the check instead of hanging it.
+    fn within_seconds<T: Send + 'static>(what: &str, f: impl FnOnce() -> T + Send + 'static) -> T {
+        let (sender, receiver) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = sender.send(f());
+        });
+        receiver
+            .recv_timeout(std::time::Duration::from_secs(10))
+            .unwrap_or_else(|_| panic!("BelowSurface::scatter: {what} never returned"))
+    }
+
+    #[test]
+    fn exercise_scatter_keeps_directions_above_the_surface() {
+        let above = Vec3::new(0.3, 0.1, 0.9).normalize();
+        for policy in BelowSurface::ALL {
+            for side in [Vec3::Z, -Vec3::Z] {
+                let d = if side.z > 0.0 { above } else { -above };
+                let (got, given) = scatter_with(policy, side, &[d]);
+                assert!(
+                    got == Some(d) && given.len() == 1,
+                    "BelowSurface::scatter: {policy:?} with the side {side} and a first direction \
+                     {d} that leaves on that side gave {got:?} after {} draw(s): a direction \
+                     above the surface is kept as it is, after one draw",
+                    given.len()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn exercise_scatter_never_lets_light_through_the_surface() {
+        let below = Vec3::new(0.6, 0.0, -0.8);
+        for policy in BelowSurface::ALL {
+            for side in [Vec3::Z, -Vec3::Z] {
+                for d in [below * side.z, Vec3::X] {
+                    let (got, given) =
+                        within_seconds("a lobe entirely below the surface", move || {
+                            scatter_with(policy, side, &[d])
+                        });
+                    if let Some(got) = got.filter(|g| g.dot(side) <= 0.0) {
+                        panic!(
+                            "BelowSurface::scatter: {policy:?} on the side {side} gave {got}, \
+                             {}: a ray that leaves on the wrong side goes into the object, and \
+                             light would leak through the surface",
+                            if got.dot(side) == 0.0 {
+                                "in the surface plane (it counts as below: it runs along the \
+                                 surface and lights nothing)"
+                            } else {
+                                "below the surface"
+                            }
+                        );
+                    }
+                    let expected_draws = if policy == BelowSurface::Resample {
+                        MAX_RESAMPLES as usize
+                    } else {
+                        1
+                    };
+                    assert!(
+                        given.len() == expected_draws,
+                        "BelowSurface::scatter: {policy:?} with every direction below drew {} \
+                         direction(s); it draws {expected_draws} in all (MAX_RESAMPLES \
+                         directions in all when resampling), and each draw takes two numbers",
+                        given.len()
+                    );
+                }
+            }
+        }
+        // Drop: the sample carries nothing.
+        let (got, _) = scatter_with(BelowSurface::Drop, Vec3::Z, &[below]);
+        assert!(
+            got.is_none(),
+            "BelowSurface::scatter: Drop gave {got:?} for a direction below: the sample carries \
+             no light"
+        );
+        // Reflect: only the part along the normal changes sign.
+        let (got, _) = scatter_with(BelowSurface::Reflect, Vec3::Z, &[below]);
+        let mirrored = Vec3::new(0.6, 0.0, 0.8);
+        assert!(
+            got.is_some_and(|g| g.abs_diff_eq(mirrored, 1e-6)),
+            "BelowSurface::Reflect: {below} below the surface z = 0 gave {got:?}, and the \
+             mirror image through the surface plane is {mirrored}: only the part along the \
+             normal changes sign{}",
+            if got.is_some_and(|g| g.abs_diff_eq(-below, 1e-6)) {
+                " (yours turned the whole direction round)"
+            } else {
+                ""
+            }
+        );
+    }
+
+    #[test]
+    fn exercise_scatter_resamples_with_fresh_numbers() {
+        let above = Vec3::new(0.2, -0.3, 0.9).normalize();
+        for below_count in [1, 3, MAX_RESAMPLES as usize - 1] {
+            let mut lobe = vec![-Vec3::Z; below_count];
+            lobe.push(above);
+            let (got, given) = scatter_with(BelowSurface::Resample, Vec3::Z, &lobe);
+            assert!(
+                got == Some(above) && given.len() == below_count + 1,
+                "BelowSurface::Resample: {below_count} direction(s) below, then one above, gave \
+                 {got:?} after {} draw(s): resampling draws until a direction is above, and \
+                 keeps that one",
+                given.len()
+            );
+            let mut distinct = given.clone();
+            distinct.dedup();
+            assert!(
+                distinct.len() == given.len(),
+                "BelowSurface::Resample: the draws were given the numbers {given:?}: each \
+                 resample takes the sampler's next two numbers, or it draws the same direction \
+                 again"
+            );
+        }
     }
 
     #[test]

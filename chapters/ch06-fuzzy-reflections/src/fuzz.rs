@@ -24,7 +24,6 @@
 //! which is its proper weight `f_r cos θ / pdf`. The disc is then a different, empirical lobe,
 //! which [`disc_radius_for_exponent`] sizes to spread as wide as the `cos^n` one.
 
-use ch02_monte_carlo::warps::sample_uniform_disc_concentric;
 use glam::{Vec2, Vec3};
 
 /// How a fuzzy surface spreads its directions.
@@ -99,17 +98,21 @@ pub fn lobe_around_pdf(cos_alpha: f32, exponent: f32) -> f32 {
 }
 
 // ANCHOR: disc_perturbation
-/// The lecture's empirical fuzz: `normalize(center + x a + y b)` for a uniform point `(x, y)`
-/// on the disc of `radius`, in an orthonormal frame `(a, b)` around the unit `center`.
+/// The lecture's empirical fuzz: the unit `center` moved by a point drawn uniformly (by area)
+/// from a disc of `radius`, whose centre is the tip of `center` (one unit from the surface
+/// point); a unit direction.
 ///
-/// The disc sits one unit along `center`, so the angle from `center` is `atan(radius ρ)`, `ρ`
-/// the distance of the disc point from its centre (uniform by area, so `ρ²` is uniform):
-/// no direction ever leaves a cone of half-angle `atan(radius)`, and inside it directions
-/// near the rim are favoured over a `cos^n` lobe's.
+/// How must the disc be turned so that every way of tilting the direction is equally likely,
+/// and which of chapter 02's disc warps is uniform by area? The widest tilt is then
+/// `atan(radius)`: the radius is a length on the disc, not an angle.
 pub fn sample_disc_perturbation(center: Vec3, radius: f32, u: Vec2) -> Vec3 {
+    // BEGIN SOLUTION
+    use ch02_monte_carlo::warps::sample_uniform_disc_concentric;
+    // A frame (a, b) perpendicular to the centre: the disc lies across the direction.
     let (a, b) = center.any_orthonormal_pair();
     let p = radius * sample_uniform_disc_concentric(u);
     (center + p.x * a + p.y * b).normalize()
+    // END SOLUTION
 }
 // ANCHOR_END: disc_perturbation
 
@@ -262,6 +265,100 @@ mod tests {
                     "sample_lobe_around: an exponent of 1e9 makes the lobe a mirror, every \
                      direction the centre {center} itself; ξ = {u} gave {d}"
                 );
+            }
+        }
+    }
+
+    /// What is wrong with the directions `sample_disc_perturbation` makes around `center`
+    /// with `radius` from `n` uniform pairs, in words; `None` if nothing is.
+    fn disc_mistake(center: Vec3, radius: f32, n: u64) -> Option<String> {
+        let samples: Vec<(Vec2, Vec3)> = uniforms(n)
+            .map(|u| (u, sample_disc_perturbation(center, radius, u)))
+            .collect();
+        for &(u, d) in &samples {
+            let length = d.length();
+            if !d.is_finite() || (length - 1.0).abs() > 1e-4 {
+                return Some(format!(
+                    "ξ = {u} gave {d}, of length {length}: a direction is a unit vector"
+                ));
+            }
+        }
+        // Every way of tilting equally likely: as much spread along a as along b.
+        let (a, b) = center.any_orthonormal_pair();
+        let spread = |axis: Vec3| -> f64 {
+            samples
+                .iter()
+                .map(|&(_, d)| f64::from((d - d.dot(center) * center).dot(axis).powi(2)))
+                .sum()
+        };
+        let (spread_a, spread_b) = (spread(a), spread(b));
+        let ratio = spread_a.min(spread_b) / spread_a.max(spread_b).max(1e-30);
+        if ratio < 0.8 {
+            return Some(format!(
+                "the directions spread {:.2} times as much one way as the other across the \
+                 centre: the disc has to lie across the direction, perpendicular to it",
+                1.0 / ratio.max(1e-9)
+            ));
+        }
+        let tan = |d: Vec3| {
+            let cos_alpha = d.dot(center);
+            (1.0 - cos_alpha * cos_alpha).max(0.0).sqrt() / cos_alpha
+        };
+        for &(u, d) in &samples {
+            let cos_alpha = d.dot(center);
+            if cos_alpha <= 0.0 || tan(d) > radius * (1.0 + 1e-3) + 1e-5 {
+                let alpha = cos_alpha.clamp(-1.0, 1.0).acos();
+                let why = if alpha <= radius * (1.0 + 1e-3) {
+                    "the radius was used as an angle; it is the disc's radius one unit along \
+                     the centre, so the widest tilt is atan(radius)"
+                } else {
+                    "is the disc one unit along the centre, with the radius it is given?"
+                };
+                return Some(format!(
+                    "ξ = {u} gave {d}, tilted {:.2}° from the centre, beyond the {:.2}° \
+                     (atan {radius}) that a disc of radius {radius} allows: {why}",
+                    alpha.to_degrees(),
+                    radius.atan().to_degrees()
+                ));
+            }
+        }
+        // A uniform disc point: the share within a fraction s of the radius is s².
+        for s in [0.3f32, 0.6, 0.9] {
+            let count = samples
+                .iter()
+                .filter(|&&(_, d)| tan(d) <= radius * s)
+                .count();
+            let p = f64::from(s * s);
+            let share = count as f64 / n as f64;
+            let sigma = (p * (1.0 - p) / n as f64).sqrt();
+            if (share - p).abs() > 5.0 * sigma {
+                let why = if (share - f64::from(s)).abs() <= 5.0 * sigma {
+                    "the disc point is not uniform by area: it crowds the centre as the polar \
+                     warp with r = ξ does"
+                } else {
+                    "the disc point should be uniform by area over the disc of the given radius"
+                };
+                return Some(format!(
+                    "{:.1} % of the directions should lie within {s} of the disc's radius from \
+                     the centre, and {:.1} % of yours do: {why}",
+                    100.0 * p,
+                    100.0 * share
+                ));
+            }
+        }
+        None
+    }
+
+    #[test]
+    fn exercise_disc_perturbation_spreads_evenly_inside_its_cone() {
+        for center in [Vec3::X, -Vec3::Z, Vec3::new(1.0, 2.0, -0.5).normalize()] {
+            for radius in [0.05f32, 0.5, 1.5] {
+                if let Some(mistake) = disc_mistake(center, radius, 20_000) {
+                    panic!(
+                        "sample_disc_perturbation: around the centre {center} with a disc of \
+                         radius {radius}: {mistake}"
+                    );
+                }
             }
         }
     }

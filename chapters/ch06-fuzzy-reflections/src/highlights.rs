@@ -29,9 +29,13 @@ pub struct Lobe {
 }
 
 // ANCHOR: highlights
-/// The radiance `lobe` scatters back along the incoming ray from every point light that
-/// `hit` sees on the lobe's side of the surface: `p(l) I / r²` per light, `p` the lobe's
-/// density at the light's direction `l` (the material's reflectance is applied by the caller).
+/// The radiance `lobe` scatters back along the incoming ray from every point light of the
+/// scene that `hit` sees, at the shutter `time`, on the lobe's side of the surface (the
+/// material's reflectance is applied by the caller). Every shadow ray traced is counted in
+/// `counters.rays`; a light the lobe cannot send light from needs none.
+///
+/// How much of a light's intensity arrives at the point, and what share of it does the lobe
+/// send back along the ray?
 pub fn point_light_highlights<W: World>(
     world: &W,
     hit: &SurfaceHit,
@@ -39,6 +43,7 @@ pub fn point_light_highlights<W: World>(
     time: f32,
     counters: &mut SampleCounters,
 ) -> Vec3 {
+    // BEGIN SOLUTION
     if !lobe.exponent.is_finite() {
         return Vec3::ZERO; // a mirror's lobe is a single direction: no highlight
     }
@@ -63,5 +68,6 @@ pub fn point_light_highlights<W: World>(
         radiance += density * light.intensity / distance_squared;
     }
     radiance
+    // END SOLUTION
 }
 // ANCHOR_END: highlights
