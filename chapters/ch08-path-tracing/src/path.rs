@@ -29,9 +29,8 @@
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
-use crate::nee::{light_sample_contribution, point_lights};
+use crate::nee::point_lights;
 use crate::options::PathOptions;
-use ch01_whitted::scene::World;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
 use common::Ray;
@@ -163,6 +162,7 @@ impl PathTracer<'_> {
         );
         // BEGIN SOLUTION
         use crate::mis::MisHeuristic;
+        use ch01_whitted::scene::World;
         // The MIS weight of light this segment finds, which the light sample of the previous
         // bounce would have chosen with density `light_pdf`: 1 after the camera, after a
         // delta bounce (no light sample could be taken there) or without NEE; 0 with NEE but
@@ -299,10 +299,16 @@ impl PathTracer<'_> {
     }
     // ANCHOR_END: next_event
 
-    // ANCHOR: light_sample
-    /// One light sample at a non-delta surface: a light picked uniformly among the area
-    /// lights and the environment, a direction to it, and the shadow ray, traced only when
-    /// the sample carries something.
+    // ANCHOR: nee_light_sample
+    /// One light sample at the non-delta surface of `bsdf`, seen from `wo`: a light picked
+    /// uniformly among the area lights and the environment ([`SceneLights::pick`]), a
+    /// direction to it ([`SceneLights::sample`]), its MIS-weighted contribution
+    /// ([`light_sample_contribution`](crate::nee::light_sample_contribution)), and the shadow
+    /// ray at shutter time `time`.
+    ///
+    /// Which numbers does a scene with a single light to pick from need to draw? What does
+    /// the BSDF say about the sampled direction, for the term and for the weight? When is a
+    /// shadow ray worth tracing, and where must it stop?
     pub fn light_sample<S: Sampler>(
         &self,
         bsdf: &Bsdf,
@@ -311,6 +317,10 @@ impl PathTracer<'_> {
         sampler: &mut S,
         counters: &mut SampleCounters,
     ) -> Vec3 {
+        // BEGIN SOLUTION
+        use crate::nee::light_sample_contribution;
+        use ch01_whitted::scene::World;
+        // With one light to pick from there is nothing to choose: no number is drawn.
         let u_pick = if self.lights.count() > 1 {
             sampler.get_1d()
         } else {
@@ -341,8 +351,9 @@ impl PathTracer<'_> {
         } else {
             contribution
         }
+        // END SOLUTION
     }
-    // ANCHOR_END: light_sample
+    // ANCHOR_END: nee_light_sample
 }
 
 #[cfg(test)]
@@ -351,6 +362,7 @@ mod tests {
     use crate::bsdf::test_support::floor_hit;
     use crate::furnace::spheres;
     use crate::mis::MisHeuristic;
+    use ch01_whitted::scene::World;
     use ch07_soft_shadows::reference::sphere_irradiance;
     use ch07_soft_shadows::{AreaLights, LightSampling};
     use common::sampler::IndependentSampler;
@@ -792,28 +804,168 @@ mod tests {
         }
     }
 
+    // One light sample.
+
+    /// The mean and standard error (green channel) of `light_sample` at the floor's origin of
+    /// `world`, seen from (2, 1, 0), over `n` sample streams; and the shadow rays it traced.
+    fn light_samples_at_origin(world: &MotionScene, mis: MisHeuristic, n: u64) -> (f64, f64, u64) {
+        let options = PathOptions {
+            mis,
+            ..PathOptions::with_depth(2)
+        };
+        with_path_tracer(world, options, |tracer| {
+            let eye = Vec3::new(2.0, 1.0, 0.0);
+            let ray = Ray::new(eye, -eye.normalize());
+            let hit = world.intersect(&ray).expect("the floor");
+            let bsdf = Bsdf {
+                material: &world.scene.surface(hit.shape).material,
+                hit: &hit,
+                fuzz: FuzzMethod::Lobe,
+            };
+            let mut sampler = IndependentSampler::new(9);
+            let mut counters = SampleCounters::default();
+            let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+            for i in 0..n {
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                let l = tracer.light_sample(&bsdf, -ray.dir, 0.0, &mut sampler, &mut counters);
+                assert!(
+                    l.is_finite() && l.cmpge(Vec3::ZERO).all(),
+                    "light_sample: a light sample gave {l}: never negative, NaN or infinite"
+                );
+                let x = f64::from(l.y);
+                (sum, sum2) = (sum + x, sum2 + x * x);
+            }
+            let mean = sum / n as f64;
+            let variance = (sum2 / n as f64 - mean * mean).max(0.0);
+            (mean, (variance / n as f64).sqrt(), counters.rays)
+        })
+    }
+
+    /// What a floor of albedo 0.5 at the origin reflects of the sphere light of
+    /// [`sphere_light_scene`]: 0.5 E / π.
+    fn floor_reference() -> f64 {
+        0.5 * f64::from(sphere_irradiance(Vec3::ONE, 0.5, 1.5, 1.0).y) / PI64
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_finds_the_light() {
+        // Without MIS the light sample alone finds the whole light.
+        let (world, _) = sphere_light_scene(2);
+        let reference = floor_reference();
+        let (mean, se, rays) = light_samples_at_origin(&world, MisHeuristic::None, 4000);
+        assert!(
+            rays <= 4000,
+            "light_sample: {rays} shadow rays for 4000 light samples: one each at most"
+        );
+        assert!(
+            (mean - reference).abs() < 5.0 * se + 1e-3 * reference,
+            "light_sample: with NEE and no MIS the light sample alone must find the sphere \
+             light's {reference:.5} at the floor; yours averaged {mean:.5} ± {se:.5}: {}",
+            if mean == 0.0 {
+                "no light arrived, although nothing stands between them: the shadow ray was \
+                 blocked by the light itself (it must stop short of the light it aims at)"
+            } else {
+                "the sample's term is L f cos θ / p_light (light_sample_contribution), with the \
+                 density the light was sampled with"
+            }
+        );
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_shares_the_light_with_the_bsdf_sample() {
+        // The BSDF sample's share, computed here on its own: cosine-weighted directions from
+        // the floor's origin, those that hit the sphere weighted against the cone's density.
+        let (world, _) = sphere_light_scene(2);
+        let reference = floor_reference();
+        let center = Vec3::new(0.0, 1.5, 0.0);
+        let s = 0.5f64 / 1.5;
+        let cone_pdf = (1.0 / (2.0 * PI64 * s * s / (1.0 + (1.0 - s * s).sqrt()))) as f32;
+        for mis in [MisHeuristic::Power, MisHeuristic::Balance] {
+            let directions = 200_000;
+            let mut bsdf_share = 0.0f64;
+            let mut rng = IndependentSampler::new(17);
+            rng.start_pixel_sample(UVec2::ONE, 0);
+            for _ in 0..directions {
+                let local = ch02_monte_carlo::warps::sample_cosine_hemisphere(rng.get_2d());
+                let w = Vec3::new(local.x, local.z, local.y);
+                let b = w.dot(center);
+                let hits = b > 0.0 && b * b - (center.length_squared() - 0.25) > 0.0;
+                if hits {
+                    // Albedo 0.5 times radiance 1, weighted.
+                    bsdf_share += 0.5 * f64::from(mis.weight(w.y / std::f32::consts::PI, cone_pdf));
+                }
+            }
+            let bsdf_share = bsdf_share / directions as f64;
+            let (light_share, se) = {
+                let (mean, se, _) = light_samples_at_origin(&world, mis, 4000);
+                (mean, se)
+            };
+            let total = light_share + bsdf_share;
+            assert!(
+                (total - reference).abs() < 5.0 * se + 5e-3 * reference,
+                "light_sample: with the {mis:?} heuristic the light sample's share \
+                 ({light_share:.5} ± {se:.5}) and the BSDF sample's ({bsdf_share:.5}) must add \
+                 up to the light, {reference:.5}, but add up to {total:.5}: {}",
+                if total > reference {
+                    "too much: the weight of a light sample is the light's density against the \
+                     BSDF's density of the same direction, which the BSDF tells"
+                } else {
+                    "too little: the weight of a light sample is the light's density against \
+                     the BSDF's, not the other way round"
+                }
+            );
+        }
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_is_stopped_by_what_blocks_the_light() {
+        // A panel between the floor's origin and the light.
+        let (world, _) = sphere_light_scene_blocked(2);
+        let (mean, _, rays) = light_samples_at_origin(&world, MisHeuristic::Power, 500);
+        assert!(
+            mean == 0.0,
+            "light_sample: a panel stands between the floor and the light, yet light arrived \
+             through the blocker ({mean:.5} on average): a light sample counts only when its \
+             shadow ray reaches the light"
+        );
+        assert!(rays > 0, "light_sample: no shadow ray was traced");
+    }
+
     /// A matte floor (albedo 0.5, y = 0, 20 wide) under a sphere light (radius 0.5, radiance
     /// 1, black surface) centred 1.5 above the origin, no sky; and the floor's origin.
     fn sphere_light_scene(max_depth: u32) -> (MotionScene, Vec3) {
+        light_scene(max_depth, false)
+    }
+
+    /// The same with a black 1 x 1 panel 0.7 above the origin, between it and the light.
+    fn sphere_light_scene_blocked(max_depth: u32) -> (MotionScene, Vec3) {
+        light_scene(max_depth, true)
+    }
+
+    fn light_scene(max_depth: u32, blocked: bool) -> (MotionScene, Vec3) {
         use common::geometry::{Parallelogram, Shape, Sphere};
         use common::scene::{Camera, CameraFrame, FilmSettings, SceneBuilder};
         let floor =
             Parallelogram::new(Vec3::new(-10.0, 0.0, -10.0), 20.0 * Vec3::Z, 20.0 * Vec3::X);
         let light = Sphere::new(Vec3::new(0.0, 1.5, 0.0), 0.5);
-        let scene = SceneBuilder::new()
+        let mut builder = SceneBuilder::new()
             .shape(
                 Shape::Parallelogram(floor),
                 Smooth::diffuse(Vec3::splat(0.5)),
             )
-            .area_light(Shape::Sphere(light), Smooth::diffuse(Vec3::ZERO), Vec3::ONE)
-            .build(
-                Camera::pinhole(
-                    CameraFrame::look_at(Vec3::new(2.0, 1.0, 0.0), Vec3::ZERO, Vec3::Y).unwrap(),
-                    40.0,
-                ),
-                FilmSettings::new(16, 16),
-                max_depth,
-            );
+            .area_light(Shape::Sphere(light), Smooth::diffuse(Vec3::ZERO), Vec3::ONE);
+        if blocked {
+            let panel = Parallelogram::new(Vec3::new(-0.5, 0.7, -0.5), Vec3::Z, Vec3::X);
+            builder = builder.shape(Shape::Parallelogram(panel), Smooth::diffuse(Vec3::ZERO));
+        }
+        let scene = builder.build(
+            Camera::pinhole(
+                CameraFrame::look_at(Vec3::new(2.0, 1.0, 0.0), Vec3::ZERO, Vec3::Y).unwrap(),
+                40.0,
+            ),
+            FilmSettings::new(16, 16),
+            max_depth,
+        );
         (MotionScene::still(scene), Vec3::ZERO)
     }
 
