@@ -917,6 +917,59 @@ mod tests {
         }
     }
 
+    /// A sampler that counts the numbers drawn from it.
+    #[derive(Clone)]
+    struct Counting {
+        inner: IndependentSampler,
+        drawn: u32,
+    }
+
+    impl Sampler for Counting {
+        fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
+            self.inner.start_pixel_sample(pixel, sample_index);
+        }
+        fn get_pixel_2d(&mut self) -> glam::Vec2 {
+            self.drawn += 2;
+            self.inner.get_pixel_2d()
+        }
+        fn get_1d(&mut self) -> f32 {
+            self.drawn += 1;
+            self.inner.get_1d()
+        }
+        fn get_2d(&mut self) -> glam::Vec2 {
+            self.drawn += 2;
+            self.inner.get_2d()
+        }
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_draws_only_what_it_needs() {
+        // One light to pick from: nothing to choose, so only the point on it is drawn.
+        let (world, _) = sphere_light_scene(2);
+        with_path_tracer(&world, PathOptions::with_depth(2), |tracer| {
+            let eye = Vec3::new(2.0, 1.0, 0.0);
+            let ray = Ray::new(eye, -eye.normalize());
+            let hit = world.intersect(&ray).expect("the floor");
+            let bsdf = Bsdf {
+                material: &world.scene.surface(hit.shape).material,
+                hit: &hit,
+                fuzz: FuzzMethod::Lobe,
+            };
+            let mut sampler = Counting {
+                inner: IndependentSampler::new(3),
+                drawn: 0,
+            };
+            sampler.start_pixel_sample(UVec2::ZERO, 0);
+            let mut counters = SampleCounters::default();
+            tracer.light_sample(&bsdf, -ray.dir, 0.0, &mut sampler, &mut counters);
+            assert!(
+                sampler.drawn == 2,
+                "light_sample: with a single light to pick from, one light sample drew {}                  numbers; the pick needs no number then (a scene pays only for what it has),                  and the point on the light needs two",
+                sampler.drawn
+            );
+        });
+    }
+
     #[test]
     fn exercise_nee_light_sample_is_stopped_by_what_blocks_the_light() {
         // A panel between the floor's origin and the light.
