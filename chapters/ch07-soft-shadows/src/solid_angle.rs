@@ -21,15 +21,14 @@
 //! Numerics. A distant sphere makes a tiny cap: at `R / d = 10⁻⁴`, `1 - cos θ_max = 5·10⁻⁹` is
 //! below the spacing of floats near 1, so `cos θ_max` itself rounds to 1 and `1 - cos θ_max`,
 //! written as that subtraction, to 0. The cone therefore keeps `1 - cos θ_max` as a number of
-//! its own, computed without the subtraction, and is sampled from it directly
-//! ([`sample_cone`]: chapter 02's
+//! its own, computed without the subtraction, and is sampled from it directly (chapter 02's
 //! [`sample_spherical_cap`](ch02_monte_carlo::warps::sample_spherical_cap), whose
-//! documentation recommends this for the tiniest caps). A receiver on or inside the sphere has
-//! no cone around it: it falls back to area sampling.
+//! documentation recommends this for the tiniest caps, with its parameter passed without
+//! rounding). A receiver on or inside the sphere has no cone around it: it falls back to area
+//! sampling.
 
 use std::f32::consts::TAU;
 
-use ch02_monte_carlo::warps::sphere::spherical_direction;
 use common::geometry::{Sphere, gamma};
 use glam::{Vec2, Vec3};
 
@@ -95,24 +94,8 @@ pub fn sphere_cone(sphere: &Sphere, x: Vec3) -> Option<SphereCone> {
 }
 // ANCHOR_END: sphere_cone
 
-/// `(cos θ, sin² θ, φ)` of the direction [`sample_cone`] makes of `u`: `1 - cos θ` uniform in
-/// `[0, 1 - cos θ_max)` (by the hat-box theorem, uniform in solid angle), `φ = 2π ξ1`.
-fn cone_angles(u: Vec2, one_minus_cos_theta_max: f32) -> (f32, f32, f32) {
-    let one_minus_cos = u.y * one_minus_cos_theta_max;
-    let sin2_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0);
-    (1.0 - one_minus_cos, sin2_theta, TAU * u.x)
-}
-
-/// A direction uniform in the cone within `θ_max` of +z, given `1 - cos θ_max` in `(0, 2]`:
-/// chapter 02's spherical cap with its parameter passed without rounding. Density
-/// [`cone_pdf`].
-pub fn sample_cone(u: Vec2, one_minus_cos_theta_max: f32) -> Vec3 {
-    let (cos_theta, sin2_theta, phi) = cone_angles(u, one_minus_cos_theta_max);
-    spherical_direction(sin2_theta.sqrt(), cos_theta, phi)
-}
-
-/// The density of [`sample_cone`] per unit solid angle: one over the cone's solid angle
-/// `2π (1 - cos θ_max)`.
+/// The density per unit solid angle of a direction uniform in a cone whose half-angle has
+/// `1 - cos θ_max` = `one_minus_cos_theta_max`: one over the cone's solid angle.
 pub fn cone_pdf(one_minus_cos_theta_max: f32) -> f32 {
     1.0 / (TAU * one_minus_cos_theta_max)
 }

@@ -7,14 +7,13 @@
 //! The loop carries the *throughput* `β`, the product of the BSDF weights so far: what one
 //! unit of radiance found at the path's end contributes to the pixel.
 //!
-//! At each surface the path reached by segment `depth`:
+//! At each surface a segment reaches ([`PathTracer::radiance`] and its segments):
 //!
-//! 1. what the surface emits, counted with the MIS weight of the BSDF sample that found it
-//!    (1 after the camera or a delta bounce, or without NEE);
-//! 2. if `depth < max_depth` (the next segment is allowed), at a non-delta surface,
-//!    next-event estimation: a shadow ray to every point light, and one light sample among
-//!    the lights a ray can find (area lights and the environment); then one BSDF sample that
-//!    extends the path;
+//! 1. what the surface emits, weighted against the light sample that could have found it
+//!    too (multiple importance sampling, [`crate::mis`]);
+//! 2. while `max_depth` allows it, at a non-delta surface, next-event estimation: a shadow
+//!    ray to every point light, and one light sample among the lights a ray can find (area
+//!    lights and the environment); then one BSDF sample that extends the path;
 //! 3. from `rr_depth` on, Russian roulette.
 //!
 //! A ray that leaves the scene finds the environment, weighted like an emitter.
