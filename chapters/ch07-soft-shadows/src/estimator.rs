@@ -102,7 +102,9 @@ pub fn light_sample_contribution(
 /// (a shadow ray, [`LightSample::shadow_ray`]; `|_| true` for an unoccluded light).
 ///
 /// The sum is kept in `f64`, so many samples lose no digits. A matte receiver then reflects
-/// [`matte_reflected_radiance`].
+/// [`matte_reflected_radiance`]. This is the estimator without a world, for measuring it
+/// against exact references; the renderer's, with its shadow rays, is the `matte` of
+/// [`AreaLighting`](crate::lighting::AreaLighting).
 pub fn estimate_irradiance(
     x: Vec3,
     n: Vec3,

@@ -19,11 +19,9 @@
 //! numbers of that light's points, after the camera's and the earlier bounces' (pbrt-v4's
 //! order). A scene without area lights draws none, and renders as chapter 06 does, bit for bit.
 
-use crate::estimator::{estimate_irradiance, matte_reflected_radiance};
 use crate::light::AreaLight;
 use crate::light_options::LightOptions;
 use ch01_whitted::scene::World;
-use ch01_whitted::tracer::direct_light;
 use ch06_fuzzy_reflections::Lighting;
 use common::Ray;
 use common::geometry::SurfaceHit;
@@ -60,6 +58,20 @@ impl Lighting for AreaLighting<'_> {
     }
 
     // ANCHOR: matte
+    /// What a matte surface of albedo `albedo` at `hit` reflects towards the camera of every
+    /// light: the point lights as chapter 01 lights them, and each area light estimated from
+    /// `self.options.samples` shadow rays to points on it, drawn from `sampler` with
+    /// [`LightOptions::points`].
+    ///
+    /// Which side of the surface faces the ray, and what does a one-sided surface seen from
+    /// behind reflect? For one point of a light ([`AreaLight::sample`]), in which measure was
+    /// it chosen, and what does its term need in that measure
+    /// ([`area_light_contribution`](crate::estimator::area_light_contribution) is the term
+    /// per unit area)? Where must its shadow ray ([`LightSample::shadow_ray`]) stop, when the
+    /// light is itself a shape of the world? How do the terms of one light make one estimate,
+    /// and how does a matte surface turn irradiance into radiance?
+    ///
+    /// [`LightSample::shadow_ray`]: crate::light_sample::LightSample::shadow_ray
     fn matte<W: World, S: Sampler>(
         &self,
         world: &W,
@@ -70,6 +82,10 @@ impl Lighting for AreaLighting<'_> {
         sampler: &mut S,
         counters: &mut SampleCounters,
     ) -> Vec3 {
+        // BEGIN SOLUTION
+        use crate::estimator::area_light_contribution;
+        use ch01_whitted::tracer::direct_light;
+        use glam::DVec3;
         let point_lights = direct_light(world, ray, hit, albedo, two_sided, counters);
         let normal = if hit.front_face(ray.dir) {
             hit.shading_n
@@ -81,19 +97,263 @@ impl Lighting for AreaLighting<'_> {
         let mut irradiance = Vec3::ZERO;
         for light in self.lights {
             let points = self.options.points(sampler);
-            irradiance += estimate_irradiance(
-                hit.p,
-                normal,
-                light,
-                &points,
-                self.options.sampling,
-                |sample| {
-                    counters.rays += 1;
-                    !world.occluded(&sample.shadow_ray(hit, ray.time))
+            // The sum of the terms, in f64 so that many samples lose no digits.
+            let mut sum = DVec3::ZERO;
+            for &u in &points {
+                let Some(sample) = light.sample(hit.p, u, self.options.sampling) else {
+                    continue; // a light without area
+                };
+                // The term in the measure the point was chosen in: by its direction,
+                // `L cos θ / p_ω` (no cos θ_A / d² to divide by at the silhouette); by area,
+                // `L cos θ cos θ_A / (d² p_A)`.
+                let term = match sample.pdf_solid_angle {
+                    Some(pdf_solid_angle) => {
+                        let wi = (sample.p - hit.p).normalize();
+                        let cos_theta = normal.dot(wi).max(0.0);
+                        light.emitted(sample.n, -wi) * (cos_theta / pdf_solid_angle)
+                    }
+                    None => area_light_contribution(light, hit.p, normal, &sample),
+                };
+                // NaN (d = 0) and infinity (d² underflowing) come only from a point within a
+                // float or so of the receiver: a set of measure zero. A term of 0 (the back
+                // of the light, or below the horizon) needs no shadow ray.
+                if !term.is_finite() || term == Vec3::ZERO {
+                    continue;
+                }
+                // Offset at both ends, it stops short of the light, which is in the world.
+                counters.rays += 1;
+                if !world.occluded(&sample.shadow_ray(hit, ray.time)) {
+                    sum += term.as_dvec3();
+                }
+            }
+            irradiance += (sum / points.len() as f64).as_vec3();
+        }
+        // A matte surface reflects ρ / π of its irradiance in every direction.
+        point_lights + albedo * std::f32::consts::FRAC_1_PI * irradiance
+        // END SOLUTION
+    }
+    // ANCHOR_END: matte
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference::{polygon_irradiance, sphere_irradiance};
+    use crate::scene::AreaLights;
+    use ch05_motion_blur::MotionScene;
+    use common::geometry::{Parallelogram, Shape, Sphere};
+    use common::sampler::IndependentSampler;
+    use common::scene::{Camera, CameraFrame, FilmSettings, Material, SceneBuilder};
+    use glam::UVec2;
+    use std::f64::consts::PI;
+
+    const ALBEDO: f32 = 0.5;
+    /// Where the receiver is looked at from: off to the side, clear of the lights.
+    const EYE: Vec3 = Vec3::new(2.0, 1.0, 0.3);
+
+    /// A matte floor (y = 0, facing up, 20 wide, albedo 0.5) and one light of radiance 1 of
+    /// `shape`, with a black surface.
+    fn scene_with(shape: Shape) -> MotionScene {
+        let floor =
+            Parallelogram::new(Vec3::new(-10.0, 0.0, -10.0), 20.0 * Vec3::Z, 20.0 * Vec3::X);
+        let frame = CameraFrame::look_at(EYE, Vec3::ZERO, Vec3::Y).unwrap();
+        let scene = SceneBuilder::new()
+            .shape(
+                Shape::Parallelogram(floor),
+                Material::diffuse(Vec3::splat(ALBEDO)),
+            )
+            .area_light(shape, Material::diffuse(Vec3::ZERO), Vec3::ONE)
+            .build(Camera::pinhole(frame, 40.0), FilmSettings::new(16, 16), 2);
+        MotionScene::still(scene)
+    }
+
+    /// The mean and standard error over `calls` of the radiance `matte` reflects from the
+    /// floor's origin towards `EYE`, with `samples` shadow rays per light; and the shadow
+    /// rays traced.
+    fn reflected(world: &MotionScene, samples: u32, calls: u64) -> (f64, f64, u64) {
+        let area_lights = AreaLights::of(&world.scene);
+        let lighting = area_lights.lighting(LightOptions::with_samples(samples));
+        let ray = Ray::new(EYE, (Vec3::ZERO - EYE).normalize());
+        let hit = world.intersect(&ray).expect("the ray reaches the floor");
+        assert!(hit.p.length() < 1e-5, "the floor's origin: {hit:?}");
+        let mut sampler = IndependentSampler::new(7);
+        let mut counters = SampleCounters::default();
+        let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+        for i in 0..calls {
+            sampler.start_pixel_sample(UVec2::ZERO, i);
+            let l = lighting.matte(
+                world,
+                &ray,
+                &hit,
+                Vec3::splat(ALBEDO),
+                false,
+                &mut sampler,
+                &mut counters,
+            );
+            assert!(
+                l.is_finite() && l.cmpge(Vec3::ZERO).all(),
+                "matte: a matte floor under one light reflected {l}: never negative, NaN or \
+                 infinite"
+            );
+            let x = f64::from(l.y);
+            (sum, sum2) = (sum + x, sum2 + x * x);
+        }
+        let mean = sum / calls as f64;
+        let variance = (sum2 / calls as f64 - mean * mean).max(0.0);
+        (mean, (variance / calls as f64).sqrt(), counters.rays)
+    }
+
+    /// Panics with what `mean` shows against `reference`, trying the usual slips `slips`
+    /// (each a ratio to the reference and what it means) before the general `why`.
+    fn judge(what: &str, mean: f64, se: f64, reference: f64, slips: &[(f64, &str)], why: &str) {
+        let tolerance = 5.0 * se + 1e-3 * reference;
+        if (mean - reference).abs() < tolerance {
+            return;
+        }
+        let seen = slips
+            .iter()
+            .find(|(ratio, _)| (mean - ratio * reference).abs() < tolerance.max(0.02 * reference))
+            .map_or(why, |(_, slip)| slip);
+        panic!(
+            "matte: {what} should reflect {reference:.5}; yours averaged {mean:.5} ± {se:.5} \
+             ({:.3} times as much): {seen}",
+            mean / reference
+        );
+    }
+
+    const BLOCKED: &str = "no light arrived although nothing stands between the floor and \
+        the light: the shadow ray was blocked by the light itself (the light is a shape of the \
+        world, so its shadow ray must stop short of the light, offset at both ends)";
+    const NO_PI: &str = "π times too bright: a matte surface reflects albedo / π of its \
+        irradiance in every direction";
+
+    #[test]
+    fn exercise_matte_estimates_a_panel_light() {
+        // A 1 x 1 panel facing down, 1 above the floor, off-centre: sampled by area.
+        let quad = Parallelogram::new(Vec3::new(-0.2, 1.0, -0.7), Vec3::X, Vec3::Z);
+        let vertices = [
+            quad.corner(),
+            quad.corner() + quad.e1(),
+            quad.corner() + quad.e1() + quad.e2(),
+            quad.corner() + quad.e2(),
+        ];
+        let irradiance = polygon_irradiance(Vec3::ZERO, Vec3::Y, &vertices, Vec3::ONE).y;
+        let reference = f64::from(ALBEDO) * f64::from(irradiance) / PI;
+        let world = scene_with(Shape::Parallelogram(quad));
+        for (samples, calls) in [(1, 4000), (4, 1000)] {
+            let (mean, se, rays) = reflected(&world, samples, calls);
+            assert!(
+                rays <= u64::from(samples) * calls,
+                "matte: {rays} shadow rays for {calls} hits with {samples} point(s) on the \
+                 light each: one shadow ray per point at most"
+            );
+            let samples_f = f64::from(samples);
+            let mut slips = vec![(0.0, BLOCKED), (std::f64::consts::PI, NO_PI)];
+            let not_divided = format!(
+                "{samples} times too bright with {samples} shadow rays: the terms of one light \
+                 are averaged, not divided by the number of shadow rays and summed"
+            );
+            if samples > 1 {
+                slips.insert(1, (samples_f, not_divided.as_str()));
+            }
+            judge(
+                &format!("a floor of albedo 0.5 under a panel light, {samples} shadow ray(s)"),
+                mean,
+                se,
+                reference,
+                &slips,
+                "the term of a point chosen by area is L cos θ cos θ_A / (d² p_A), averaged \
+                 over the shadow rays that reach the light",
+            );
+        }
+    }
+
+    #[test]
+    fn exercise_matte_estimates_a_sphere_light_by_its_cone() {
+        // A sphere of radius 0.5 off to the side: sampled by the cone it covers.
+        let center = Vec3::new(1.0, 1.5, 0.0);
+        let (radius, d) = (0.5f64, f64::from(center.length()));
+        let cos = f64::from(center.y) / d;
+        let irradiance = f64::from(sphere_irradiance(Vec3::ONE, 0.5, d as f32, cos as f32).y);
+        let reference = f64::from(ALBEDO) * irradiance / PI;
+        // Without the receiver's cosine the estimate is L times the cone's solid angle.
+        let s = radius / d;
+        let solid_angle = 2.0 * PI * s * s / (1.0 + (1.0 - s * s).sqrt());
+        let no_cos = solid_angle / irradiance;
+        let world = scene_with(Shape::Sphere(Sphere::new(center, 0.5)));
+        for (samples, calls) in [(1, 4000), (4, 1000)] {
+            let (mean, se, _) = reflected(&world, samples, calls);
+            let too_bright = "too bright: a point chosen by its direction has a density per unit \
+                solid angle, and its term is L cos θ / p_ω; divided by the density per unit \
+                area instead, it lacks the conversion d² / |cos θ_A|";
+            judge(
+                &format!(
+                    "a floor of albedo 0.5 under a sphere light, sampled by its cone, \
+                     {samples} shadow ray(s)"
+                ),
+                mean,
+                se,
+                reference,
+                &[
+                    (0.0, BLOCKED),
+                    (
+                        no_cos,
+                        "the receiver's cosine is missing: light arriving at angle θ to the \
+                         floor's normal spreads over 1 / cos θ as much area",
+                    ),
+                    (std::f64::consts::PI, NO_PI),
+                    (
+                        f64::from(samples).max(2.0),
+                        "not divided by the number of shadow rays",
+                    ),
+                ],
+                if mean > reference {
+                    too_bright
+                } else {
+                    "too dark: part of the light is lost"
                 },
             );
         }
-        point_lights + matte_reflected_radiance(albedo, irradiance)
     }
-    // ANCHOR_END: matte
+
+    #[test]
+    fn exercise_matte_leaves_the_back_of_a_one_sided_surface_black() {
+        // The floor seen from below, lit from below: a one-sided matte surface's back is black.
+        let world = scene_with(Shape::Sphere(Sphere::new(Vec3::new(0.5, -1.5, 0.0), 0.5)));
+        let area_lights = AreaLights::of(&world.scene);
+        let lighting = area_lights.lighting(LightOptions::with_samples(4));
+        let from_below = Vec3::new(2.0, -1.0, 0.3);
+        let ray = Ray::new(from_below, (Vec3::ZERO - from_below).normalize());
+        let hit = world.intersect(&ray).expect("the ray reaches the floor");
+        let mut sampler = IndependentSampler::new(3);
+        let mut counters = SampleCounters::default();
+        for two_sided in [false, true] {
+            let mut total = Vec3::ZERO;
+            for i in 0..64 {
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                total += lighting.matte(
+                    &world,
+                    &ray,
+                    &hit,
+                    Vec3::splat(ALBEDO),
+                    two_sided,
+                    &mut sampler,
+                    &mut counters,
+                );
+            }
+            if two_sided {
+                assert!(
+                    total.y > 0.0,
+                    "matte: a two-sided matte floor seen from below, with a light below it, is \
+                     lit on that side: its normal is turned to face the ray"
+                );
+            } else {
+                assert!(
+                    total == Vec3::ZERO,
+                    "matte: a one-sided matte floor seen from behind reflects nothing, but \
+                     yours reflected {total} over 64 calls"
+                );
+            }
+        }
+    }
 }

@@ -19,20 +19,19 @@
 //! covers: `p_ω = p_A d² / |cos θ_A|` ([`pdf_area_to_solid_angle`]).
 //!
 //! Numerics. A distant sphere makes a tiny cap: at `R / d = 10⁻⁴`, `1 - cos θ_max = 5·10⁻⁹` is
-//! below the spacing of floats near 1, so `cos θ_max` itself rounds to 1 and `1 - cos θ_max` to
-//! 0. It is computed instead from `sin² θ_max = (R / d)²` as `sin² / (1 + cos)`, which keeps
-//! every digit, and the cone is sampled from `1 - cos θ_max` directly ([`sample_cone`]:
-//! chapter 02's [`sample_spherical_cap`](ch02_monte_carlo::warps::sample_spherical_cap), whose
-//! documentation recommends exactly this for the tiniest caps). A receiver on or inside the
-//! sphere has no cone around it: it falls back to area sampling.
+//! below the spacing of floats near 1, so `cos θ_max` itself rounds to 1 and `1 - cos θ_max`,
+//! written as that subtraction, to 0. The cone therefore keeps `1 - cos θ_max` as a number of
+//! its own, computed without the subtraction, and is sampled from it directly (chapter 02's
+//! [`sample_spherical_cap`](ch02_monte_carlo::warps::sample_spherical_cap), whose
+//! documentation recommends this for the tiniest caps, with its parameter passed without
+//! rounding). A receiver on or inside the sphere has no cone around it: it falls back to area
+//! sampling.
 
 use std::f32::consts::TAU;
 
-use ch02_monte_carlo::warps::sphere::spherical_direction;
 use common::geometry::{Sphere, gamma};
 use glam::{Vec2, Vec3};
 
-use crate::area_sampling::sample_sphere_area;
 use crate::light_sample::LightSample;
 
 /// The density per unit solid angle, seen from a receiver at distance `√distance_squared`, of
@@ -64,14 +63,16 @@ pub struct SphereCone {
     pub sin_theta_max: f32,
     /// `sin² θ_max`.
     pub sin2_theta_max: f32,
-    /// `1 - cos θ_max`, computed as `sin² θ_max / (1 + cos θ_max)` so that it keeps its digits
-    /// when the cone is tiny.
+    /// `1 - cos θ_max`, computed so that it keeps its digits when the cone is tiny (which
+    /// identity of `sin²` and `cos` avoids subtracting two numbers close to 1?).
     pub one_minus_cos_theta_max: f32,
 }
 
+// ANCHOR: sphere_cone
 /// The cone `sphere` covers seen from `x`, or `None` when `x` is on or inside the sphere (or
-/// the sphere has no radius), where no cone describes it.
+/// the sphere has no radius, or is too far to compute with), where no cone describes it.
 pub fn sphere_cone(sphere: &Sphere, x: Vec3) -> Option<SphereCone> {
+    // BEGIN SOLUTION
     let r = sphere.radius;
     let to_center = sphere.center - x;
     let distance = to_center.length();
@@ -89,52 +90,31 @@ pub fn sphere_cone(sphere: &Sphere, x: Vec3) -> Option<SphereCone> {
         sin2_theta_max,
         one_minus_cos_theta_max: sin2_theta_max / (1.0 + cos_theta_max),
     })
+    // END SOLUTION
 }
+// ANCHOR_END: sphere_cone
 
-/// `(cos θ, sin² θ, φ)` of the direction [`sample_cone`] makes of `u`: `1 - cos θ` uniform in
-/// `[0, 1 - cos θ_max)` (by the hat-box theorem, uniform in solid angle), `φ = 2π ξ1`.
-fn cone_angles(u: Vec2, one_minus_cos_theta_max: f32) -> (f32, f32, f32) {
-    let one_minus_cos = u.y * one_minus_cos_theta_max;
-    let sin2_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0);
-    (1.0 - one_minus_cos, sin2_theta, TAU * u.x)
-}
-
-/// A direction uniform in the cone within `θ_max` of +z, given `1 - cos θ_max` in `(0, 2]`:
-/// chapter 02's spherical cap with its parameter passed without rounding. Density
-/// [`cone_pdf`].
-pub fn sample_cone(u: Vec2, one_minus_cos_theta_max: f32) -> Vec3 {
-    let (cos_theta, sin2_theta, phi) = cone_angles(u, one_minus_cos_theta_max);
-    spherical_direction(sin2_theta.sqrt(), cos_theta, phi)
-}
-
-/// The density of [`sample_cone`] per unit solid angle: one over the cone's solid angle
-/// `2π (1 - cos θ_max)`.
+/// The density per unit solid angle of a direction uniform in a cone whose half-angle has
+/// `1 - cos θ_max` = `one_minus_cos_theta_max`: one over the cone's solid angle.
 pub fn cone_pdf(one_minus_cos_theta_max: f32) -> f32 {
     1.0 / (TAU * one_minus_cos_theta_max)
 }
 
+// ANCHOR: sample_sphere_solid_angle
 /// A point of the sphere light seen from `x`, chosen by a direction uniform in the cone the
-/// sphere covers (pbrt-v4's `Sphere::Sample(ctx, u)`); falls back to
-/// [`sample_sphere_area`] when `x` is on or inside the sphere. `None` if the sphere has no
-/// area or its cone is too small for `f32` (`R / d` below about 10⁻¹⁹: its light is then far
-/// below anything an `f32` image can show).
+/// sphere covers (pbrt-v4's `Sphere::Sample(ctx, u)`); by area
+/// ([`sample_sphere_area`](crate::area_sampling::sample_sphere_area)) when `x` is on or inside
+/// the sphere. `None`
+/// if the sphere has no area or its cone is too small for `f32` (`R / d` below about 10⁻¹⁹:
+/// its light is then far below anything an `f32` image can show).
 ///
-/// The point is where the sampled direction first meets the sphere, found in one of two ways
-/// so that it keeps its digits wherever the receiver is:
-///
-/// - a receiver farther than `2R` from the centre: intersecting the ray would lose the point's
-///   digits (the ray travels `d ≫ R` and its rounding grows with `d`). Instead the point comes
-///   from the angle `α` at the sphere's centre between the receiver and the point, by the law
-///   of sines in the triangle of `x`, the centre and the point (as pbrt-v4 does):
-///   `cos α = sin² θ / sin θ_max + cos θ √(1 - sin² θ / sin² θ_max)`;
-/// - a receiver within `2R`: `α` is then tiny for most directions and `cos α` rounds to 1,
-///   which would pile the samples onto the nearest point. The distance along the ray is
-///   computed instead, without cancellation, as
-///   `t = (d² - R²) / (d cos θ + √(R² - d² sin² θ))`.
-///
-/// Either way the point is then projected onto the sphere, `center + R n`, so its error bound
-/// is that of the sphere's own hit points.
+/// Which share of the cone's solid angle lies within `θ` of its axis, and what `θ` makes that
+/// share `ξ2`? [`point_seen_along`] finds the point of the sphere a direction meets. The
+/// sample carries its density per unit area and, since it was chosen by direction, per unit
+/// solid angle too: how are the two related at that point?
 pub fn sample_sphere_solid_angle(sphere: &Sphere, x: Vec3, u: Vec2) -> Option<LightSample> {
+    // BEGIN SOLUTION
+    use crate::area_sampling::sample_sphere_area;
     let Some(cone) = sphere_cone(sphere, x) else {
         // On or inside the sphere (and not merely too far away to compute with).
         let inside = (sphere.center - x).length() <= sphere.radius;
@@ -148,8 +128,53 @@ pub fn sample_sphere_solid_angle(sphere: &Sphere, x: Vec3, u: Vec2) -> Option<Li
     if !pdf_solid_angle.is_finite() {
         return None;
     }
+    // 1 - cos θ uniform in [0, 1 - cos θ_max): uniform in solid angle (the hat-box theorem).
+    let one_minus_cos = u.y * cone.one_minus_cos_theta_max;
+    let sin2_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0);
+    let (cos_theta, phi) = (1.0 - one_minus_cos, TAU * u.x);
+    let (p, p_error, n) = point_seen_along(sphere, x, &cone, cos_theta, sin2_theta, phi);
+    let to_light = p - x;
+    let distance_squared = to_light.length_squared();
+    let cos_theta_light = n.dot(-to_light) / distance_squared.sqrt();
+    Some(LightSample {
+        p,
+        p_error,
+        n,
+        pdf: pdf_solid_angle_to_area(pdf_solid_angle, distance_squared, cos_theta_light),
+        pdf_solid_angle: Some(pdf_solid_angle),
+    })
+    // END SOLUTION
+}
+// ANCHOR_END: sample_sphere_solid_angle
+
+/// The point of `sphere` that the direction from `x` at angle `θ` to the axis of `cone`
+/// (`cos θ`, `sin² θ`), turned by `φ` about it, first meets, with its error bound and the
+/// sphere's outward unit normal there: `(p, p_error, n)`. The axis is turned by `φ` in the
+/// frame `cone.axis.any_orthonormal_pair()`.
+///
+/// The point is found in one of two ways so that it keeps its digits wherever the receiver is:
+///
+/// - a receiver farther than `2R` from the centre: intersecting the ray would lose the point's
+///   digits (the ray travels `d ≫ R` and its rounding grows with `d`). Instead the point comes
+///   from the angle `α` at the sphere's centre between the receiver and the point, by the law
+///   of sines in the triangle of `x`, the centre and the point (as pbrt-v4 does):
+///   `cos α = sin² θ / sin θ_max + cos θ √(1 - sin² θ / sin² θ_max)`;
+/// - a receiver within `2R`: `α` is then tiny for most directions and `cos α` rounds to 1,
+///   which would pile the samples onto the nearest point. The distance along the ray is
+///   computed instead, without cancellation, as
+///   `t = (d² - R²) / (d cos θ + √(R² - d² sin² θ))`.
+///
+/// Either way the point is then projected onto the sphere, `center + R n`, so its error bound
+/// is that of the sphere's own hit points.
+pub fn point_seen_along(
+    sphere: &Sphere,
+    x: Vec3,
+    cone: &SphereCone,
+    cos_theta: f32,
+    sin2_theta: f32,
+    phi: f32,
+) -> (Vec3, Vec3, Vec3) {
     let r = sphere.radius;
-    let (cos_theta, sin2_theta, phi) = cone_angles(u, cone.one_minus_cos_theta_max);
     let sin_theta = sin2_theta.sqrt();
     let (t, b) = cone.axis.any_orthonormal_pair();
     let (sin_phi, cos_phi) = phi.sin_cos();
@@ -175,16 +200,7 @@ pub fn sample_sphere_solid_angle(sphere: &Sphere, x: Vec3, u: Vec2) -> Option<Li
     let local = r * n;
     let p = sphere.center + local;
     let p_error = gamma(5) * local.abs() + gamma(2) * p.abs();
-    let to_light = p - x;
-    let distance_squared = to_light.length_squared();
-    let cos_theta_light = n.dot(-to_light) / distance_squared.sqrt();
-    Some(LightSample {
-        p,
-        p_error,
-        n,
-        pdf: pdf_solid_angle_to_area(pdf_solid_angle, distance_squared, cos_theta_light),
-        pdf_solid_angle: Some(pdf_solid_angle),
-    })
+    (p, p_error, n)
 }
 
 /// The density per unit solid angle with which [`sample_sphere_solid_angle`] picks the

@@ -7,14 +7,13 @@
 //! The loop carries the *throughput* `β`, the product of the BSDF weights so far: what one
 //! unit of radiance found at the path's end contributes to the pixel.
 //!
-//! At each surface the path reached by segment `depth`:
+//! At each surface a segment reaches ([`PathTracer::radiance`] and its segments):
 //!
-//! 1. what the surface emits, counted with the MIS weight of the BSDF sample that found it
-//!    (1 after the camera or a delta bounce, or without NEE);
-//! 2. if `depth < max_depth` (the next segment is allowed), at a non-delta surface,
-//!    next-event estimation: a shadow ray to every point light, and one light sample among
-//!    the lights a ray can find (area lights and the environment); then one BSDF sample that
-//!    extends the path;
+//! 1. what the surface emits, weighted against the light sample that could have found it
+//!    too (multiple importance sampling, [`crate::mis`]);
+//! 2. while `max_depth` allows it, at a non-delta surface, next-event estimation: a shadow
+//!    ray to every point light, and one light sample among the lights a ray can find (area
+//!    lights and the environment); then one BSDF sample that extends the path;
 //! 3. from `rr_depth` on, Russian roulette.
 //!
 //! A ray that leaves the scene finds the environment, weighted like an emitter.
@@ -29,14 +28,11 @@
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
-use crate::mis::MisHeuristic;
-use crate::nee::{light_sample_contribution, point_lights};
+use crate::nee::point_lights;
 use crate::options::PathOptions;
-use ch01_whitted::scene::World;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
 use common::Ray;
-use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
 use common::sampler::Sampler;
 use glam::Vec3;
@@ -44,38 +40,38 @@ use glam::Vec3;
 /// Where the previous bounce was, and how its direction was chosen: what the MIS weight of
 /// light found by that direction needs.
 #[derive(Clone, Copy, Debug)]
-struct Previous {
+pub struct Previous {
     /// The surface point the direction left from.
-    p: Vec3,
+    pub p: Vec3,
     /// The BSDF's density of the direction; infinite for a delta.
-    pdf: f32,
+    pub pdf: f32,
 }
 
 /// What a path carries from one segment to the next.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Carried {
+pub struct Carried {
     /// The product of the BSDF weights (and roulette factors) so far: what one unit of
     /// radiance found at the path's end adds to the pixel.
-    throughput: Vec3,
+    pub throughput: Vec3,
     /// The product of the radiance scalings `(eta_i / eta_t)²` inside `throughput`.
-    eta_scale: f32,
+    pub eta_scale: f32,
 }
 
 /// A path between two of its segments: what it has gathered, what it carries on, and how its
 /// last direction was chosen.
 #[derive(Clone, Copy, Debug)]
-struct PathState {
+pub struct PathState {
     /// The radiance gathered so far.
-    radiance: Vec3,
+    pub radiance: Vec3,
     /// What the next segment's light is multiplied by.
-    carried: Carried,
+    pub carried: Carried,
     /// The bounce the last direction left from; `None` for the camera ray (no MIS).
-    previous: Option<Previous>,
+    pub previous: Option<Previous>,
 }
 
 impl PathState {
     /// A path about to trace its camera ray: nothing gathered, everything carried.
-    const START: PathState = PathState {
+    pub const START: PathState = PathState {
         radiance: Vec3::ZERO,
         carried: Carried {
             throughput: Vec3::ONE,
@@ -85,17 +81,20 @@ impl PathState {
     };
 
     /// Adds `light` arriving at the current segment's end, times what the path carries.
-    fn gather(&mut self, light: Vec3) {
+    pub fn gather(&mut self, light: Vec3) {
         self.radiance += self.carried.throughput * light;
     }
 }
 
 /// The path's next segment: its ray, what it carries, and how its direction was chosen.
 #[derive(Clone, Copy, Debug)]
-struct NextSegment {
-    ray: Ray,
-    carried: Carried,
-    previous: Previous,
+pub struct NextSegment {
+    /// The segment's ray.
+    pub ray: Ray,
+    /// What the path carries along it.
+    pub carried: Carried,
+    /// The bounce its direction left from.
+    pub previous: Previous,
 }
 
 /// A path tracer over a scene.
@@ -130,9 +129,21 @@ impl PathTracer<'_> {
         }
         path.radiance
     }
+    // ANCHOR_END: radiance
 
-    /// Segment `depth` of `path`, along `ray`: the light it finds, the light sampled where it
-    /// ends, and the ray of the next segment (`None` where the path ends).
+    // ANCHOR: segment
+    /// Segment `depth` of `path` (the camera ray is segment 1), along `ray`: where it ends,
+    /// the light it finds there, the light sampled at that surface, and the ray of the next
+    /// segment, or `None` where the path ends.
+    ///
+    /// Light can reach the path two ways here: found by this segment (a surface that glows,
+    /// or the environment when the ray leaves the scene) and sampled at its end (next-event
+    /// estimation, [`next_event`](Self::next_event)). Which of the two counts how much, when
+    /// the previous bounce could have sampled the light this segment found? Which lights can
+    /// only one of them find? What does `max_depth` (Mitsuba's, counting the camera ray)
+    /// still allow at this depth: a light sample, a further segment, neither?
+    /// [`PathState::gather`] adds light times what the path carries, and
+    /// [`extend_path`](Self::extend_path) chooses the next segment.
     fn segment<S: Sampler>(
         &self,
         ray: &Ray,
@@ -141,20 +152,53 @@ impl PathTracer<'_> {
         sampler: &mut S,
         counters: &mut SampleCounters,
     ) -> Option<Ray> {
+        // Every segment's ray has a unit direction (the camera's and the BSDF's are built
+        // unit), so `-ray.dir` needs no normalising; every test render checks it.
+        debug_assert!(
+            (ray.dir.length_squared() - 1.0).abs() < 1e-4,
+            "a segment's ray of length {}",
+            ray.dir.length()
+        );
+        // BEGIN SOLUTION
+        use crate::mis::MisHeuristic;
+        use ch01_whitted::scene::World;
+        // The MIS weight of light this segment finds, which the light sample of the previous
+        // bounce would have chosen with density `light_pdf`: 1 after the camera, after a
+        // delta bounce (no light sample could be taken there) or without NEE; 0 with NEE but
+        // no MIS (the light sample counted it).
+        let previous = path.previous;
+        let weighted = |previous: Previous| self.options.nee && previous.pdf.is_finite();
+        let emission_weight = |light_pdf: f32| match previous {
+            Some(previous) if weighted(previous) => match self.options.mis {
+                MisHeuristic::None => 0.0,
+                mis => mis.weight(previous.pdf, light_pdf),
+            },
+            _ => 1.0,
+        };
         // Where the segment ends, or the environment if it leaves the scene.
         counters.rays += 1;
         let Some(hit) = self.world.intersect(ray) else {
             if self.lights.has_environment() {
-                let pdf = self.lights.environment_pdf();
-                let weight = self.emission_weight(path.previous, pdf);
+                let weight = emission_weight(self.lights.environment_pdf());
                 path.gather(self.lights.environment * weight);
             }
             return None;
         };
         // 1. What the surface emits, weighted against the light sample that could have found
         //    it.
-        if self.lights.has_area_lights() {
-            path.gather(self.emitted(&hit, ray, path.previous));
+        if self.lights.has_area_lights()
+            && let Some(light) = self.lights.area_light_of(hit.shape)
+        {
+            let le = light.emitted(hit.n, -ray.dir);
+            if le != Vec3::ZERO {
+                let light_pdf = match previous {
+                    Some(previous) if weighted(previous) => {
+                        self.lights.area_pdf(light, previous.p, hit.p, hit.n)
+                    }
+                    _ => 0.0,
+                };
+                path.gather(le * emission_weight(light_pdf));
+            }
         }
         if depth >= self.options.max_depth {
             return None; // no segment left for a light sample or a bounce
@@ -164,13 +208,6 @@ impl PathTracer<'_> {
             hit: &hit,
             fuzz: self.fuzz,
         };
-        // Every ray of a path has a unit direction (the camera's and the BSDF's are built
-        // unit), so `wo` needs no normalising; every test render checks it.
-        debug_assert!(
-            (ray.dir.length_squared() - 1.0).abs() < 1e-4,
-            "a path ray of length {}",
-            ray.dir.length()
-        );
         let wo = -ray.dir;
         // 2. Next-event estimation, where the BSDF is not a delta.
         if self.options.nee && !bsdf.is_delta() {
@@ -187,8 +224,9 @@ impl PathTracer<'_> {
         path.carried = next.carried;
         path.previous = Some(next.previous);
         Some(next.ray)
+        // END SOLUTION
     }
-    // ANCHOR_END: radiance
+    // ANCHOR_END: segment
 
     // ANCHOR: extend_path
     /// The path's next segment from the surface of `bsdf`, seen from `wo`, where segment
@@ -196,7 +234,7 @@ impl PathTracer<'_> {
     /// weight, then, from `rr_depth` on, Russian roulette on the throughput without its
     /// radiance scaling (`throughput / eta_scale`). `None` when the path ends: no direction,
     /// nothing carried, or the roulette says so.
-    fn extend_path<S: Sampler>(
+    pub fn extend_path<S: Sampler>(
         &self,
         bsdf: &Bsdf,
         wo: Vec3,
@@ -235,50 +273,12 @@ impl PathTracer<'_> {
     }
     // ANCHOR_END: extend_path
 
-    /// What the surface at `hit` emits back along `ray`, MIS-weighted against the light
-    /// sample taken at the previous bounce.
-    #[inline]
-    fn emitted(&self, hit: &SurfaceHit, ray: &Ray, previous: Option<Previous>) -> Vec3 {
-        let Some(light) = self.lights.area_light_of(hit.shape) else {
-            return Vec3::ZERO;
-        };
-        let le = light.emitted(hit.n, -ray.dir);
-        if le == Vec3::ZERO {
-            return Vec3::ZERO;
-        }
-        let light_pdf = match previous {
-            Some(previous) if self.needs_weight(previous) => {
-                self.lights.area_pdf(light, previous.p, hit.p, hit.n)
-            }
-            _ => 0.0,
-        };
-        le * self.emission_weight(previous, light_pdf)
-    }
-
-    /// Whether light found after `previous` could also have come from its light sample.
-    fn needs_weight(&self, previous: Previous) -> bool {
-        self.options.nee && previous.pdf.is_finite()
-    }
-
-    /// The MIS weight of light found by the BSDF direction of `previous`, which the light
-    /// sample would have chosen with density `light_pdf`: 1 for the camera ray, after a delta
-    /// bounce, or without NEE; 0 with NEE but no MIS (the light sample counted it).
-    fn emission_weight(&self, previous: Option<Previous>, light_pdf: f32) -> f32 {
-        match previous {
-            Some(previous) if self.needs_weight(previous) => match self.options.mis {
-                MisHeuristic::None => 0.0,
-                mis => mis.weight(previous.pdf, light_pdf),
-            },
-            _ => 1.0,
-        }
-    }
-
     // ANCHOR: next_event
     /// Next-event estimation at the surface of `bsdf`, seen from `wo`: every point light
     /// through its own shadow ray (a delta has nothing to sample), and one light sample among
     /// the lights a ray can find.
     #[inline]
-    fn next_event<S: Sampler>(
+    pub fn next_event<S: Sampler>(
         &self,
         bsdf: &Bsdf,
         wo: Vec3,
@@ -298,11 +298,17 @@ impl PathTracer<'_> {
     }
     // ANCHOR_END: next_event
 
-    // ANCHOR: light_sample
-    /// One light sample at a non-delta surface: a light picked uniformly among the area
-    /// lights and the environment, a direction to it, and the shadow ray, traced only when
-    /// the sample carries something.
-    fn light_sample<S: Sampler>(
+    // ANCHOR: nee_light_sample
+    /// One light sample at the non-delta surface of `bsdf`, seen from `wo`: a light picked
+    /// uniformly among the area lights and the environment ([`SceneLights::pick`]), a
+    /// direction to it ([`SceneLights::sample`]), its MIS-weighted contribution
+    /// ([`light_sample_contribution`](crate::nee::light_sample_contribution)), and the shadow
+    /// ray at shutter time `time`.
+    ///
+    /// Which numbers does a scene with a single light to pick from need to draw? What does
+    /// the BSDF say about the sampled direction, for the term and for the weight? When is a
+    /// shadow ray worth tracing, and where must it stop?
+    pub fn light_sample<S: Sampler>(
         &self,
         bsdf: &Bsdf,
         wo: Vec3,
@@ -310,6 +316,10 @@ impl PathTracer<'_> {
         sampler: &mut S,
         counters: &mut SampleCounters,
     ) -> Vec3 {
+        // BEGIN SOLUTION
+        use crate::nee::light_sample_contribution;
+        use ch01_whitted::scene::World;
+        // With one light to pick from there is nothing to choose: no number is drawn.
         let u_pick = if self.lights.count() > 1 {
             sampler.get_1d()
         } else {
@@ -340,8 +350,9 @@ impl PathTracer<'_> {
         } else {
             contribution
         }
+        // END SOLUTION
     }
-    // ANCHOR_END: light_sample
+    // ANCHOR_END: nee_light_sample
 }
 
 #[cfg(test)]
@@ -349,11 +360,15 @@ mod tests {
     use super::*;
     use crate::bsdf::test_support::floor_hit;
     use crate::furnace::spheres;
+    use crate::mis::MisHeuristic;
+    use ch01_whitted::scene::World;
+    use ch07_soft_shadows::reference::sphere_irradiance;
     use ch07_soft_shadows::{AreaLights, LightSampling};
     use common::sampler::IndependentSampler;
     use common::scene::Material as Smooth;
     use common::scene::Material;
     use glam::UVec2;
+    use std::f64::consts::PI as PI64;
 
     /// A tracer over a furnace scene (one sphere of `material` in a sky of radiance 1).
     fn with_tracer<R>(
@@ -546,8 +561,8 @@ mod tests {
 
     #[test]
     fn exercise_extend_path_lets_the_furnace_return_one() {
-        // The whole loop through `extend_path`: a white matte sphere under a sky of 1 sends
-        // back exactly 1 whatever the bounces (mean of 256 paths through the centre pixel).
+        // Paths made of `extend_path` alone: a white matte sphere under a sky of 1 sends back
+        // exactly 1 whatever the bounces, so every path that leaves the sphere carries 1.
         let white = Smooth::diffuse(Vec3::ONE);
         let options = PathOptions {
             nee: false,
@@ -556,20 +571,469 @@ mod tests {
         };
         with_tracer(white, options, |tracer| {
             let world = tracer.world;
-            let camera = ch01_whitted::camera::PinholeCamera::of(&world.scene.camera, 64, 48);
-            let ray = camera.generate_ray(glam::Vec2::new(32.5, 24.5));
+            let eye = Vec3::new(0.0, 0.5, 4.0);
             let mut sampler = IndependentSampler::new(5);
-            let mut counters = SampleCounters::default();
+            let mut bounces = 0;
             for i in 0..256 {
                 sampler.start_pixel_sample(UVec2::ZERO, i);
-                let l = tracer.radiance(&ray, &mut sampler, &mut counters);
+                let mut ray = Ray::new(eye, (Vec3::new(0.1, 0.2, 0.0) - eye).normalize());
+                let mut carried = PathState::START.carried;
+                let mut depth = 1;
+                while let Some(hit) = world.intersect(&ray) {
+                    let bsdf = Bsdf {
+                        material: &white,
+                        hit: &hit,
+                        fuzz: FuzzMethod::Lobe,
+                    };
+                    let Some(next) =
+                        tracer.extend_path(&bsdf, -ray.dir, 0.0, depth, carried, &mut sampler)
+                    else {
+                        panic!(
+                            "extend_path: a white matte sphere seen from outside always \
+                             scatters, but the path ended at depth {depth}"
+                        );
+                    };
+                    (ray, carried, depth) = (next.ray, next.carried, depth + 1);
+                    bounces += 1;
+                    assert!(depth < 64, "extend_path: the path never leaves the sphere");
+                }
+                let l = carried.throughput;
                 assert!(
                     (l - Vec3::ONE).abs().max_element() < 1e-4,
                     "extend_path: a white matte sphere under a sky of radiance 1 sends back \
-                     exactly 1 however the path bounces; this path brought back {l}"
+                     exactly 1 however the path bounces; this path carried {l} to the sky"
                 );
             }
-            assert!(counters.rays > 256, "the paths bounced");
+            assert!(bounces >= 256, "the paths bounced");
         });
+    }
+
+    // The path's segment: the capstone.
+
+    /// The mean and the standard error of the radiance along `ray` (its green channel) over
+    /// `n` paths with sample streams `0..n` of seed `seed`. Panics on a non-finite path.
+    fn mean_radiance(tracer: &PathTracer, ray: &Ray, n: u64, seed: u64) -> (f64, f64) {
+        let mut sampler = IndependentSampler::new(seed);
+        let mut counters = SampleCounters::default();
+        let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+        for i in 0..n {
+            sampler.start_pixel_sample(UVec2::ZERO, i);
+            let l = tracer.radiance(ray, &mut sampler, &mut counters);
+            assert!(
+                l.is_finite() && l.cmpge(Vec3::ZERO).all(),
+                "segment: a path brought back {l}: radiance is never negative, NaN or infinite"
+            );
+            let x = f64::from(l.y);
+            sum += x;
+            sum2 += x * x;
+        }
+        let mean = sum / n as f64;
+        let variance = (sum2 / n as f64 - mean * mean).max(0.0);
+        (mean, (variance / n as f64).sqrt())
+    }
+
+    /// The furnace's eye, and rays from it to the sphere's front and past it, into the sky.
+    fn furnace_rays() -> (Ray, Ray) {
+        let eye = Vec3::new(0.0, 0.5, 4.0);
+        let to_sphere = Ray::new(eye, (Vec3::new(0.1, 0.3, 0.0) - eye).normalize());
+        let to_sky = Ray::new(eye, (Vec3::new(0.0, 5.0, 0.0) - eye).normalize());
+        (to_sphere, to_sky)
+    }
+
+    #[test]
+    fn exercise_segment_counts_what_the_camera_ray_finds() {
+        // max_depth 1: the camera ray alone, which sees what glows and nothing lit.
+        let grey = Smooth::diffuse(Vec3::splat(0.5));
+        let (to_sphere, to_sky) = furnace_rays();
+        with_tracer(grey, PathOptions::with_depth(1), |tracer| {
+            let (sky, _) = mean_radiance(tracer, &to_sky, 16, 1);
+            assert!(
+                (sky - 1.0).abs() < 1e-6,
+                "segment: a camera ray that leaves the scene sees the sky of radiance 1, yours \
+                 brought back {sky}: {}",
+                if sky == 0.0 {
+                    "the camera ray's own light is missing (nothing came before it, so \
+                     whatever it finds counts in full)"
+                } else {
+                    "what the camera ray finds counts in full, with weight 1"
+                }
+            );
+            let (sphere, _) = mean_radiance(tracer, &to_sphere, 64, 2);
+            assert!(
+                sphere == 0.0,
+                "segment: at max_depth 1 a path is the camera ray alone, which sees only what \
+                 glows; the grey sphere does not glow but brought back {sphere}: the depth \
+                 limit is off by one (no light sample and no bounce after the last segment)"
+            );
+        });
+        // A sphere light seen by the camera, at every depth.
+        for max_depth in [1, 2, 5] {
+            let (world, _) = sphere_light_scene(max_depth);
+            with_path_tracer(&world, PathOptions::with_depth(max_depth), |tracer| {
+                let eye = Vec3::new(2.0, 1.0, 0.0);
+                let to_light = Ray::new(eye, (Vec3::new(0.0, 1.5, 0.0) - eye).normalize());
+                let (l, _) = mean_radiance(tracer, &to_light, 16, 3);
+                assert!(
+                    (l - 1.0).abs() < 1e-6,
+                    "segment: the camera sees a sphere light of radiance 1 at max_depth \
+                     {max_depth}; yours brought back {l}: {}",
+                    if l == 0.0 {
+                        "the camera ray's own light is missing (what glows where the camera \
+                         ray ends counts in full: no light sample came before it)"
+                    } else {
+                        "what the camera ray finds counts once, in full"
+                    }
+                );
+            });
+        }
+    }
+
+    #[test]
+    fn exercise_segment_lights_the_furnace_once() {
+        // A convex grey sphere of albedo 0.5 under a sky of 1 sends back exactly 0.5 from
+        // max_depth 2 on: each bounce leaves for the sky. The light sample and the BSDF sample
+        // share that light by the power heuristic; with one light the environment's density
+        // is 1/(4π) and the cosine lobe's cos θ/π, so the light sample's share of the
+        // expectation is A = ∫ 2c/(1 + 16c²) dc = ln(17)/16, the BSDF sample's 1 - A.
+        let albedo = 0.5;
+        let grey = Smooth::diffuse(Vec3::splat(albedo));
+        let (to_sphere, _) = furnace_rays();
+        let a = 17f64.ln() / 16.0;
+        let albedo = f64::from(albedo);
+        for max_depth in [2, 3, 6] {
+            with_tracer(grey, PathOptions::with_depth(max_depth), |tracer| {
+                let (mean, se) = mean_radiance(tracer, &to_sphere, 4000, 4);
+                let tolerance = 5.0 * se + 1e-3;
+                if (mean - albedo).abs() < tolerance {
+                    return;
+                }
+                // What the usual slips give, in expectation.
+                let slips = [
+                    (
+                        albedo * (1.0 - a),
+                        "NEE is skipped at the last surface the path may bounce from: at \
+                         max_depth 2 the first hit is the last bounce, and its light sample \
+                         must still be taken (only the next segment's bounce is not allowed)",
+                    ),
+                    (
+                        albedo * (a + 1.0),
+                        "the sky is counted twice: the BSDF ray that finds it adds it without \
+                         its MIS weight, although the light sample at the same bounce counted \
+                         its share already",
+                    ),
+                    (
+                        albedo * a + (1.0 - a),
+                        "the throughput was not carried: light found after a bounce is \
+                         multiplied by what the path carries after that bounce (the albedo \
+                         here), not by 1",
+                    ),
+                    (
+                        2.0 * albedo * a,
+                        "the MIS weight of light found by the BSDF ray uses the densities the \
+                         wrong way round: that direction came from the BSDF, so its weight is \
+                         the BSDF's density against the light sample's",
+                    ),
+                    (
+                        0.0,
+                        "nothing lit the sphere: at max_depth 2 the path takes a light sample \
+                         at its first hit and may bounce once (is the depth limit off by one?)",
+                    ),
+                ];
+                let why = slips
+                    .iter()
+                    .find(|(value, _)| (mean - value).abs() < tolerance)
+                    .map_or(
+                        "each light must be counted once: in full where only one strategy \
+                         can find it, shared by the MIS weights where both can",
+                        |(_, why)| why,
+                    );
+                panic!(
+                    "segment: a grey sphere of albedo 0.5 under a sky of radiance 1 sends back \
+                     0.5 at max_depth {max_depth}; yours averaged {mean:.4} ± {se:.4} over 4000 \
+                     paths: {why}"
+                );
+            });
+        }
+    }
+
+    #[test]
+    fn exercise_segment_shares_a_sphere_light_between_its_two_samples() {
+        // A matte floor of albedo 0.5 under a sphere light of radius 0.5 whose centre is 1.5
+        // above the floor's origin: the origin receives E = π L (R/d)² and reflects
+        // 0.5 E / π, at any depth from 2 on (the light's surface is black, no sky).
+        let reference = 0.5 * f64::from(sphere_irradiance(Vec3::ONE, 0.5, 1.5, 1.0).y) / PI64;
+        for (max_depth, options) in [
+            (2, PathOptions::with_depth(2)),
+            (4, PathOptions::with_depth(4)),
+            (
+                3,
+                PathOptions {
+                    mis: MisHeuristic::Balance,
+                    ..PathOptions::with_depth(3)
+                },
+            ),
+        ] {
+            let (world, floor_point) = sphere_light_scene(max_depth);
+            with_path_tracer(&world, options, |tracer| {
+                let eye = Vec3::new(2.0, 1.0, 0.0);
+                let ray = Ray::new(eye, (floor_point - eye).normalize());
+                let (mean, se) = mean_radiance(tracer, &ray, 2000, 5);
+                let tolerance = 5.0 * se + 1e-3 * reference;
+                assert!(
+                    (mean - reference).abs() < tolerance,
+                    "segment: a floor of albedo 0.5 under a sphere light should reflect \
+                     {reference:.5} at max_depth {max_depth} ({:?}); yours averaged {mean:.5} ± \
+                     {se:.5} over 2000 paths ({:+.0} %): {}",
+                    options.mis,
+                    100.0 * (mean / reference - 1.0),
+                    if mean > reference {
+                        "too bright: the light the BSDF ray finds and the light sample's share \
+                         of it add up to more than the light: is its MIS weight there, and is \
+                         the light sample's density per unit solid angle seen from the previous \
+                         bounce (the same density the light sample used)?"
+                    } else if mean == 0.0 {
+                        "the floor got no light: a light sample at the first hit, and a \
+                         bounce that may find the light, are both allowed at max_depth 2"
+                    } else {
+                        "too dark: part of the light is lost (a light sample not taken, or a \
+                         weight that is too small)"
+                    }
+                );
+            });
+        }
+    }
+
+    // One light sample.
+
+    /// The mean and standard error (green channel) of `light_sample` at the floor's origin of
+    /// `world`, seen from (2, 1, 0), over `n` sample streams; and the shadow rays it traced.
+    fn light_samples_at_origin(world: &MotionScene, mis: MisHeuristic, n: u64) -> (f64, f64, u64) {
+        let options = PathOptions {
+            mis,
+            ..PathOptions::with_depth(2)
+        };
+        with_path_tracer(world, options, |tracer| {
+            let eye = Vec3::new(2.0, 1.0, 0.0);
+            let ray = Ray::new(eye, -eye.normalize());
+            let hit = world.intersect(&ray).expect("the floor");
+            let bsdf = Bsdf {
+                material: &world.scene.surface(hit.shape).material,
+                hit: &hit,
+                fuzz: FuzzMethod::Lobe,
+            };
+            let mut sampler = IndependentSampler::new(9);
+            let mut counters = SampleCounters::default();
+            let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+            for i in 0..n {
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                let l = tracer.light_sample(&bsdf, -ray.dir, 0.0, &mut sampler, &mut counters);
+                assert!(
+                    l.is_finite() && l.cmpge(Vec3::ZERO).all(),
+                    "light_sample: a light sample gave {l}: never negative, NaN or infinite"
+                );
+                let x = f64::from(l.y);
+                (sum, sum2) = (sum + x, sum2 + x * x);
+            }
+            let mean = sum / n as f64;
+            let variance = (sum2 / n as f64 - mean * mean).max(0.0);
+            (mean, (variance / n as f64).sqrt(), counters.rays)
+        })
+    }
+
+    /// What a floor of albedo 0.5 at the origin reflects of the sphere light of
+    /// [`sphere_light_scene`]: 0.5 E / π.
+    fn floor_reference() -> f64 {
+        0.5 * f64::from(sphere_irradiance(Vec3::ONE, 0.5, 1.5, 1.0).y) / PI64
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_finds_the_light() {
+        // Without MIS the light sample alone finds the whole light.
+        let (world, _) = sphere_light_scene(2);
+        let reference = floor_reference();
+        let (mean, se, rays) = light_samples_at_origin(&world, MisHeuristic::None, 4000);
+        assert!(
+            rays <= 4000,
+            "light_sample: {rays} shadow rays for 4000 light samples: one each at most"
+        );
+        assert!(
+            (mean - reference).abs() < 5.0 * se + 1e-3 * reference,
+            "light_sample: with NEE and no MIS the light sample alone must find the sphere \
+             light's {reference:.5} at the floor; yours averaged {mean:.5} ± {se:.5}: {}",
+            if mean == 0.0 {
+                "no light arrived, although nothing stands between them: the shadow ray was \
+                 blocked by the light itself (it must stop short of the light it aims at)"
+            } else {
+                "the sample's term is L f cos θ / p_light (light_sample_contribution), with the \
+                 density the light was sampled with"
+            }
+        );
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_shares_the_light_with_the_bsdf_sample() {
+        // The BSDF sample's share, computed here on its own: cosine-weighted directions from
+        // the floor's origin, those that hit the sphere weighted against the cone's density.
+        let (world, _) = sphere_light_scene(2);
+        let reference = floor_reference();
+        let center = Vec3::new(0.0, 1.5, 0.0);
+        let s = 0.5f64 / 1.5;
+        let cone_pdf = (1.0 / (2.0 * PI64 * s * s / (1.0 + (1.0 - s * s).sqrt()))) as f32;
+        for mis in [MisHeuristic::Power, MisHeuristic::Balance] {
+            let directions = 200_000;
+            let mut bsdf_share = 0.0f64;
+            let mut rng = IndependentSampler::new(17);
+            rng.start_pixel_sample(UVec2::ONE, 0);
+            for _ in 0..directions {
+                let local = ch02_monte_carlo::warps::sample_cosine_hemisphere(rng.get_2d());
+                let w = Vec3::new(local.x, local.z, local.y);
+                let b = w.dot(center);
+                let hits = b > 0.0 && b * b - (center.length_squared() - 0.25) > 0.0;
+                if hits {
+                    // Albedo 0.5 times radiance 1, weighted.
+                    bsdf_share += 0.5 * f64::from(mis.weight(w.y / std::f32::consts::PI, cone_pdf));
+                }
+            }
+            let bsdf_share = bsdf_share / directions as f64;
+            let (light_share, se) = {
+                let (mean, se, _) = light_samples_at_origin(&world, mis, 4000);
+                (mean, se)
+            };
+            let total = light_share + bsdf_share;
+            assert!(
+                (total - reference).abs() < 5.0 * se + 5e-3 * reference,
+                "light_sample: with the {mis:?} heuristic the light sample's share \
+                 ({light_share:.5} ± {se:.5}) and the BSDF sample's ({bsdf_share:.5}) must add \
+                 up to the light, {reference:.5}, but add up to {total:.5}: {}",
+                if total > reference {
+                    "too much: the weight of a light sample is the light's density against the \
+                     BSDF's density of the same direction, which the BSDF tells"
+                } else {
+                    "too little: the weight of a light sample is the light's density against \
+                     the BSDF's, not the other way round"
+                }
+            );
+        }
+    }
+
+    /// A sampler that counts the numbers drawn from it.
+    #[derive(Clone)]
+    struct Counting {
+        inner: IndependentSampler,
+        drawn: u32,
+    }
+
+    impl Sampler for Counting {
+        fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
+            self.inner.start_pixel_sample(pixel, sample_index);
+        }
+        fn get_pixel_2d(&mut self) -> glam::Vec2 {
+            self.drawn += 2;
+            self.inner.get_pixel_2d()
+        }
+        fn get_1d(&mut self) -> f32 {
+            self.drawn += 1;
+            self.inner.get_1d()
+        }
+        fn get_2d(&mut self) -> glam::Vec2 {
+            self.drawn += 2;
+            self.inner.get_2d()
+        }
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_draws_only_what_it_needs() {
+        // One light to pick from: nothing to choose, so only the point on it is drawn.
+        let (world, _) = sphere_light_scene(2);
+        with_path_tracer(&world, PathOptions::with_depth(2), |tracer| {
+            let eye = Vec3::new(2.0, 1.0, 0.0);
+            let ray = Ray::new(eye, -eye.normalize());
+            let hit = world.intersect(&ray).expect("the floor");
+            let bsdf = Bsdf {
+                material: &world.scene.surface(hit.shape).material,
+                hit: &hit,
+                fuzz: FuzzMethod::Lobe,
+            };
+            let mut sampler = Counting {
+                inner: IndependentSampler::new(3),
+                drawn: 0,
+            };
+            sampler.start_pixel_sample(UVec2::ZERO, 0);
+            let mut counters = SampleCounters::default();
+            tracer.light_sample(&bsdf, -ray.dir, 0.0, &mut sampler, &mut counters);
+            assert!(
+                sampler.drawn == 2,
+                "light_sample: with a single light to pick from, one light sample drew {}                  numbers; the pick needs no number then (a scene pays only for what it has),                  and the point on the light needs two",
+                sampler.drawn
+            );
+        });
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_is_stopped_by_what_blocks_the_light() {
+        // A panel between the floor's origin and the light.
+        let (world, _) = sphere_light_scene_blocked(2);
+        let (mean, _, rays) = light_samples_at_origin(&world, MisHeuristic::Power, 500);
+        assert!(
+            mean == 0.0,
+            "light_sample: a panel stands between the floor and the light, yet light arrived \
+             through the blocker ({mean:.5} on average): a light sample counts only when its \
+             shadow ray reaches the light"
+        );
+        assert!(rays > 0, "light_sample: no shadow ray was traced");
+    }
+
+    /// A matte floor (albedo 0.5, y = 0, 20 wide) under a sphere light (radius 0.5, radiance
+    /// 1, black surface) centred 1.5 above the origin, no sky; and the floor's origin.
+    fn sphere_light_scene(max_depth: u32) -> (MotionScene, Vec3) {
+        light_scene(max_depth, false)
+    }
+
+    /// The same with a black 1 x 1 panel 0.7 above the origin, between it and the light.
+    fn sphere_light_scene_blocked(max_depth: u32) -> (MotionScene, Vec3) {
+        light_scene(max_depth, true)
+    }
+
+    fn light_scene(max_depth: u32, blocked: bool) -> (MotionScene, Vec3) {
+        use common::geometry::{Parallelogram, Shape, Sphere};
+        use common::scene::{Camera, CameraFrame, FilmSettings, SceneBuilder};
+        let floor =
+            Parallelogram::new(Vec3::new(-10.0, 0.0, -10.0), 20.0 * Vec3::Z, 20.0 * Vec3::X);
+        let light = Sphere::new(Vec3::new(0.0, 1.5, 0.0), 0.5);
+        let mut builder = SceneBuilder::new()
+            .shape(
+                Shape::Parallelogram(floor),
+                Smooth::diffuse(Vec3::splat(0.5)),
+            )
+            .area_light(Shape::Sphere(light), Smooth::diffuse(Vec3::ZERO), Vec3::ONE);
+        if blocked {
+            let panel = Parallelogram::new(Vec3::new(-0.5, 0.7, -0.5), Vec3::Z, Vec3::X);
+            builder = builder.shape(Shape::Parallelogram(panel), Smooth::diffuse(Vec3::ZERO));
+        }
+        let scene = builder.build(
+            Camera::pinhole(
+                CameraFrame::look_at(Vec3::new(2.0, 1.0, 0.0), Vec3::ZERO, Vec3::Y).unwrap(),
+                40.0,
+            ),
+            FilmSettings::new(16, 16),
+            max_depth,
+        );
+        (MotionScene::still(scene), Vec3::ZERO)
+    }
+
+    /// A path tracer over `world`, its sphere lights sampled by solid angle.
+    fn with_path_tracer<R>(
+        world: &MotionScene,
+        options: PathOptions,
+        use_tracer: impl FnOnce(&PathTracer) -> R,
+    ) -> R {
+        let area_lights = AreaLights::of(&world.scene);
+        let tracer = PathTracer {
+            world,
+            lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
+            options,
+            fuzz: FuzzMethod::Lobe,
+        };
+        use_tracer(&tracer)
     }
 }
