@@ -25,12 +25,19 @@ impl HalfPlane {
         p.y < self.slope * p.x + self.intercept
     }
 
-    /// The exact area of the unit square below the edge: `∫ clamp(slope x + intercept, 0, 1) dx`
-    /// over `[0, 1]`, integrated piece by piece (each piece is linear, so the trapezoid rule is
-    /// exact on it).
+    // ANCHOR: edge_coverage
+    /// The exact area of the unit square below the edge: the true value of a pixel that is 1
+    /// below the edge and 0 above it, against which the samplers' estimates are measured.
+    ///
+    /// Over each `x` of the square, how much of the column `[0, 1]` lies below the edge? Where
+    /// does that height stop being a straight line, and what integrates a straight line exactly?
     pub fn coverage(&self) -> f64 {
+        // BEGIN SOLUTION
         let (m, b) = (f64::from(self.slope), f64::from(self.intercept));
+        // The height below the edge within the square: the line, clamped to [0, 1].
         let height = |x: f64| (m * x + b).clamp(0.0, 1.0);
+        // It bends where the line crosses the bottom or the top of the square; between those
+        // points it is linear, and the trapezoid rule is exact on each piece.
         let mut breaks = vec![0.0, 1.0];
         if m != 0.0 {
             for level in [0.0, 1.0] {
@@ -45,7 +52,9 @@ impl HalfPlane {
             .windows(2)
             .map(|w| 0.5 * (height(w[0]) + height(w[1])) * (w[1] - w[0]))
             .sum()
+        // END SOLUTION
     }
+    // ANCHOR_END: edge_coverage
 }
 
 /// The fraction of `spp` samples of `kind` (with seed `seed`, in `pixel`) that fall below
@@ -83,20 +92,84 @@ pub fn coverage_mse(kind: PixelSamplerKind, spp: u64, repetitions: u64, edge: Ha
 mod tests {
     use super::*;
 
+    /// The area by a fine midpoint rule, for comparison.
+    fn area_by_columns(edge: HalfPlane) -> f64 {
+        let n = 200_000;
+        let (m, b) = (f64::from(edge.slope), f64::from(edge.intercept));
+        (0..n)
+            .map(|i| (m * ((i as f64 + 0.5) / n as f64) + b).clamp(0.0, 1.0))
+            .sum::<f64>()
+            / n as f64
+    }
+
+    /// What is wrong with `got = edge.coverage()`, in words; `None` if right.
+    fn coverage_mistake(edge: HalfPlane, expected: f64, got: f64) -> Option<String> {
+        if (got - expected).abs() <= 1e-6 {
+            return None;
+        }
+        let (m, b) = (f64::from(edge.slope), f64::from(edge.intercept));
+        let unclamped = b + 0.5 * m;
+        let ends_only = 0.5 * (b.clamp(0.0, 1.0) + (m + b).clamp(0.0, 1.0));
+        let mistake = if !got.is_finite() {
+            "the area is not a number".to_string()
+        } else if !(0.0..=1.0).contains(&got) || (got - unclamped).abs() <= 1e-9 {
+            "the area of a part of the pixel lies between 0 and 1: where the edge passes above \
+             or below the pixel, only the pixel's own column counts"
+                .to_string()
+        } else if (got - ends_only).abs() <= 1e-9 {
+            "the edge leaves the pixel through its top or bottom, so the height under it bends \
+             there: one trapezoid over the whole pixel is no longer exact, but one per straight \
+             piece is"
+                .to_string()
+        } else {
+            "the area below the edge is the integral, over x in [0, 1], of the height of the \
+             column under the edge inside the pixel"
+                .to_string()
+        };
+        Some(format!(
+            "{mistake}.\n  slope {}, intercept {}: coverage() gave {got}, expected {expected}",
+            edge.slope, edge.intercept
+        ))
+    }
+
     #[test]
-    fn coverage_is_the_exact_area() {
+    fn exercise_edge_coverage_is_the_exact_area() {
+        // Horizontal, the diagonal, through a corner, across both sides, above and below the
+        // pixel, falling, in at the bottom and out at the top, out through top and bottom.
         let cases = [
-            (0.0, 0.3, 0.3),   // horizontal
-            (1.0, 0.0, 0.5),   // the diagonal
-            (2.0, 0.0, 0.75),  // steep, through a corner
-            (0.5, 0.25, 0.5),  // crosses both sides
-            (0.0, 1.5, 1.0),   // above the pixel
-            (-1.0, -0.1, 0.0), // below it
-            (-0.2, 0.9, 0.8),  // falling
+            (0.0, 0.3),
+            (1.0, 0.0),
+            (2.0, 0.0),
+            (0.5, 0.25),
+            (0.0, 1.5),
+            (-1.0, -0.1),
+            (-0.2, 0.9),
+            (3.0, -1.0),
+            (-4.0, 2.5),
         ];
-        for (slope, intercept, area) in cases {
+        for (slope, intercept) in cases {
             let edge = HalfPlane { slope, intercept };
-            assert!((edge.coverage() - area).abs() < 1e-7, "{edge:?}");
+            let expected = area_by_columns(edge);
+            if let Some(mistake) = coverage_mistake(edge, expected, edge.coverage()) {
+                panic!("coverage: {mistake}");
+            }
+        }
+    }
+
+    #[test]
+    fn exercise_edge_coverage_of_random_edges() {
+        use common::sampler::{IndependentSampler, Sampler};
+        let mut numbers = IndependentSampler::new(3);
+        numbers.start_pixel_sample(UVec2::ZERO, 0);
+        for _ in 0..200 {
+            let edge = HalfPlane {
+                slope: 8.0 * numbers.get_1d() - 4.0,
+                intercept: 3.0 * numbers.get_1d() - 1.0,
+            };
+            let expected = area_by_columns(edge);
+            if let Some(mistake) = coverage_mistake(edge, expected, edge.coverage()) {
+                panic!("coverage: {mistake}");
+            }
         }
     }
 }

@@ -8,6 +8,7 @@
 //!
 //! - [`pixel_samplers`]: where in its pixel each sample looks.
 //! - [`filters`]: how samples are weighted into pixels, `Σ f L / Σ f`.
+//! - [`reconstruction`]: that weighted average gathered for one pixel, as the lecture writes it.
 //! - [`scenes`], [`scene_file`]: scenes that alias, built in or read from Mitsuba 3 XML.
 //! - [`coverage`]: one pixel cut by an edge, the samplers' error in its purest form.
 //! - [`figures`]: the chapter's figures for the book.
@@ -23,6 +24,7 @@ pub mod coverage;
 pub mod figures;
 pub mod filters;
 pub mod pixel_samplers;
+pub mod reconstruction;
 pub mod scene_file;
 pub mod scenes;
 

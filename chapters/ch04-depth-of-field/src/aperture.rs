@@ -126,6 +126,31 @@ pub fn regular_polygon_area(blades: u32) -> f32 {
     0.5 * blades as f32 * (TAU / blades as f32).sin()
 }
 
+// ANCHOR: polygon_density
+/// The density of [`sample_uniform_regular_polygon`] per unit area, at `p`: the density of
+/// points spread evenly over the regular `blades`-gon inscribed in the unit circle, its first
+/// corner at angle `rotation`, and nothing outside it.
+///
+/// How large is the polygon (see [`regular_polygon_area`]), and how can you tell that a point
+/// is inside a convex polygon from its edges, taken in the order of [`polygon_corner`]?
+/// A point on an edge counts as inside, with a little room for rounding.
+pub fn sample_uniform_regular_polygon_pdf(p: Vec2, blades: u32, rotation: f32) -> f32 {
+    // BEGIN SOLUTION
+    let inside = (0..blades).all(|k| {
+        let a = polygon_corner(k, blades, rotation);
+        let b = polygon_corner(k + 1, blades, rotation);
+        // Corners run counter-clockwise, so the inside is to the left of each edge a -> b.
+        (b - a).perp_dot(p - a) >= -1e-6
+    });
+    if inside {
+        1.0 / regular_polygon_area(blades)
+    } else {
+        0.0
+    }
+    // END SOLUTION
+}
+// ANCHOR_END: polygon_density
+
 // ANCHOR: polygon_aperture
 /// A uniform point of the regular `blades`-gon inscribed in the unit circle, its first corner
 /// at angle `rotation`; density [`sample_uniform_regular_polygon_pdf`].
@@ -151,35 +176,8 @@ pub fn sample_uniform_regular_polygon(u: Vec2, blades: u32, rotation: f32) -> Ve
 }
 // ANCHOR_END: polygon_aperture
 
-/// The density of [`sample_uniform_regular_polygon`] per unit area: one over the polygon's
-/// area inside (the polygon is convex, so a point is inside when it is on the inner side of
-/// every edge), zero outside.
-pub fn sample_uniform_regular_polygon_pdf(p: Vec2, blades: u32, rotation: f32) -> f32 {
-    let inside = (0..blades).all(|k| {
-        let a = polygon_corner(k, blades, rotation);
-        let b = polygon_corner(k + 1, blades, rotation);
-        // Corners run counter-clockwise, so the inside is to the left of each edge a -> b.
-        (b - a).perp_dot(p - a) >= -1e-6
-    });
-    if inside {
-        1.0 / regular_polygon_area(blades)
-    } else {
-        0.0
-    }
-}
-
-/// A point of the unit-size `aperture` from `u`: the disc through `warp`, the polygon
-/// uniformly (the warp choice is a disc's; a polygon is always drawn by its fan).
-pub fn sample_aperture(aperture: Aperture, warp: LensWarp, u: Vec2) -> Vec2 {
-    match aperture {
-        Aperture::Disc => warp.sample(u),
-        Aperture::Polygon { blades, rotation } => {
-            sample_uniform_regular_polygon(u, blades, rotation)
-        }
-    }
-}
-
-/// The density of [`sample_aperture`]'s points, per unit area of the unit-size aperture.
+/// The density of the points of the unit-size `aperture` (a disc drawn through `warp`, a
+/// polygon by its fan), per unit area.
 pub fn sample_aperture_pdf(aperture: Aperture, warp: LensWarp, p: Vec2) -> f32 {
     match aperture {
         Aperture::Disc => warp.pdf(p),
@@ -287,19 +285,119 @@ mod tests {
         }
     }
 
+    /// What is wrong with `got = sample_uniform_regular_polygon_pdf(p, blades, rotation)`, in
+    /// words; `None` if right. `inside` says whether `p` is in the polygon.
+    fn polygon_density_mistake(
+        p: Vec2,
+        blades: u32,
+        rotation: f32,
+        inside: bool,
+        got: f32,
+    ) -> Option<String> {
+        let area = regular_polygon_area(blades);
+        let expected = if inside { 1.0 / area } else { 0.0 };
+        if (got - expected).abs() <= 1e-5 * expected.max(1.0) {
+            return None;
+        }
+        let near = |a: f32, b: f32| (a - b).abs() <= 1e-5 * b.abs().max(1.0);
+        let unturned = |q: Vec2| {
+            (0..blades).all(|k| {
+                let a = polygon_corner(k, blades, 0.0);
+                let b = polygon_corner(k + 1, blades, 0.0);
+                (b - a).perp_dot(q - a) >= -1e-4
+            })
+        };
+        let on_edge = (0..blades).any(|k| {
+            let a = polygon_corner(k, blades, rotation);
+            let b = polygon_corner(k + 1, blades, rotation);
+            (b - a).perp_dot(p - a).abs() < 1e-4
+        });
+        let mistake = if !got.is_finite() {
+            "the density is not a number".to_string()
+        } else if inside && near(got, std::f32::consts::FRAC_1_PI) {
+            "inside, the density is one over the polygon's area, not over the disc's".to_string()
+        } else if inside && near(got, 1.0) {
+            format!(
+                "a density integrates to one over its shape: inside, it is one over the \
+                 polygon's area {area}"
+            )
+        } else if inside && got == 0.0 && on_edge {
+            "a point on the polygon's edge counts as inside: the sampler's points reach the \
+             edges and corners, and there the density is not 0 (leave a little room for \
+             rounding)"
+                .to_string()
+        } else if rotation != 0.0 && unturned(p) != inside && (got > 0.0) == unturned(p) {
+            format!(
+                "the polygon is turned by the rotation {rotation}: its first corner is at that \
+                 angle, and so is every other corner"
+            )
+        } else if inside && got == 0.0 {
+            "a point inside the polygon gets density 0: which side of each edge is the inside, \
+             when the corners run counter-clockwise?"
+                .to_string()
+        } else if !inside && got != 0.0 {
+            "a point outside the polygon gets a density: it must be 0 outside, so every edge has \
+             to be tested"
+                .to_string()
+        } else {
+            format!("inside, the density is one over the polygon's area {area}")
+        };
+        Some(format!(
+            "{mistake}.\n  sample_uniform_regular_polygon_pdf({p}, {blades} blades, rotation \
+             {rotation}) gave {got}, expected {expected}"
+        ))
+    }
+
     #[test]
-    fn the_polygon_density_integrates_to_one() {
+    fn exercise_polygon_density_inside_and_outside() {
+        for (blades, rotation) in [(3, 0.0f32), (5, 0.4), (6, 0.0), (8, 1.0), (4, 0.3)] {
+            let mut points: Vec<(Vec2, bool)> = vec![(Vec2::ZERO, true)];
+            for k in 0..blades {
+                let corner = polygon_corner(k, blades, rotation);
+                let middle = 0.5 * (corner + polygon_corner(k + 1, blades, rotation));
+                points.extend([
+                    (0.9 * corner, true),
+                    (0.98 * middle, true),
+                    (corner, true),
+                    (middle, true),
+                    (1.03 * middle, false),
+                    (1.1 * corner, false),
+                ]);
+            }
+            points.push((Vec2::new(3.0, -2.0), false));
+            for (p, inside) in points {
+                let got = sample_uniform_regular_polygon_pdf(p, blades, rotation);
+                if let Some(mistake) = polygon_density_mistake(p, blades, rotation, inside, got) {
+                    panic!("sample_uniform_regular_polygon_pdf: {mistake}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn exercise_polygon_density_integrates_to_one() {
         // Midpoint rule over [-1, 1]^2.
         let n = 400;
         let h = 2.0 / n as f32;
-        let mut sum = 0.0f64;
-        for i in 0..n {
-            for j in 0..n {
-                let p = Vec2::new(-1.0 + (i as f32 + 0.5) * h, -1.0 + (j as f32 + 0.5) * h);
-                sum += f64::from(sample_uniform_regular_polygon_pdf(p, 6, 0.2) * h * h);
+        for (blades, rotation) in [(6, 0.2), (3, 1.3)] {
+            let mut sum = 0.0f64;
+            for i in 0..n {
+                for j in 0..n {
+                    let p = Vec2::new(-1.0 + (i as f32 + 0.5) * h, -1.0 + (j as f32 + 0.5) * h);
+                    sum +=
+                        f64::from(sample_uniform_regular_polygon_pdf(p, blades, rotation) * h * h);
+                }
             }
+            assert!(
+                (sum - 1.0).abs() < 5e-3,
+                "sample_uniform_regular_polygon_pdf: a density integrates to one over the plane, \
+                 but yours integrates to {sum:.4} for {blades} blades (rotation {rotation})"
+            );
         }
-        assert_relative_eq!(sum, 1.0, epsilon = 5e-3);
+    }
+
+    #[test]
+    fn the_polygons_area() {
         assert_relative_eq!(regular_polygon_area(4), 2.0, epsilon = 1e-6);
         assert_relative_eq!(
             regular_polygon_area(MAX_BLADES),

@@ -25,11 +25,9 @@
 //! finite `2R / d_f` behind it (as `d → ∞`): a distant background is never blurred more than
 //! that, which is why a far focus keeps everything behind it nearly sharp (the hyperfocal trick).
 
-use crate::aperture::LensWarp;
 use crate::thin_lens::ThinLensCamera;
 use ch01_whitted::camera::PinholeCamera;
 use common::geometry::Sphere;
-use glam::Vec2;
 
 // ANCHOR: circle_of_confusion
 /// The diameter of the circle of confusion of a point at depth `depth` (along the camera's
@@ -68,17 +66,25 @@ pub fn circle_of_confusion_on_film(
         / (focus_distance - focal_length)
 }
 
+// ANCHOR: measured_blur
 /// The width, in pixels, of the band of film positions along the image's middle row from
-/// which at least one lens ray hits `sphere`. Each edge of the band is found by bisection
-/// between a position that sees the sphere and one that does not.
+/// which at least one lens ray hits `sphere`, measured to a small fraction of a pixel.
 ///
 /// This measures the circle of confusion without the formula: for a small `sphere` on the
 /// camera's axis the band is the blur circle widened by the sphere's own image.
+///
+/// Which points of the lens can send a ray from the middle row to a sphere on the axis, and
+/// how do you pick exactly those with a lens sample? A film position either sees the sphere
+/// or not: how do you find, to a tiny fraction of a pixel, where the band ends on each side,
+/// without trying every position?
 ///
 /// # Panics
 ///
 /// If the middle of the row does not see the sphere at all (it is not on the axis).
 pub fn measured_blur_width(camera: &ThinLensCamera, sphere: &Sphere) -> f32 {
+    // BEGIN SOLUTION
+    use crate::aperture::LensWarp;
+    use glam::Vec2;
     let row = camera.pinhole.height as f32 / 2.0;
     // The sphere sits on the axis and the film positions on the middle row, so the rays
     // that can hit it leave from the lens's horizontal diameter: sample it densely (the
@@ -115,7 +121,9 @@ pub fn measured_blur_width(camera: &ThinLensCamera, sphere: &Sphere) -> f32 {
         inside
     };
     edge(camera.pinhole.width as f32) - edge(0.0)
+    // END SOLUTION
 }
+// ANCHOR_END: measured_blur
 
 #[cfg(test)]
 mod tests {
@@ -123,7 +131,7 @@ mod tests {
     use crate::lens::{Lens, image_distance};
     use approx::assert_relative_eq;
     use common::scene::CameraFrame;
-    use glam::Vec3;
+    use glam::{Vec2, Vec3};
 
     #[test]
     fn the_two_models_agree_once_the_film_distance_is_divided_out() {
@@ -173,6 +181,85 @@ mod tests {
             "circle_of_confusion: a point close in front of the lens is badly out of focus, its \
              circle very wide; yours is {near} at depth 0.1 (focus 4, radius 0.3)"
         );
+    }
+
+    /// Whether a ray from film position `x` of the middle row, from any of `lens` points on the
+    /// lens's horizontal diameter, hits `sphere`.
+    fn seen_from(camera: &ThinLensCamera, sphere: &Sphere, lens: &[Vec2], x: f32) -> bool {
+        let row = camera.pinhole.height as f32 / 2.0;
+        lens.iter().any(|&p| {
+            // The ray from lens point p through the focus point of film position x.
+            let pinhole_dir = camera.pinhole.camera_direction(Vec2::new(x, row));
+            let (origin, dir) =
+                crate::thin_lens::thin_lens_ray(pinhole_dir, p, camera.lens.focus_distance);
+            let frame = &camera.pinhole.frame;
+            let ray = common::Ray::new(
+                frame.origin + frame.to_world(origin),
+                frame.to_world(dir.normalize()),
+            );
+            sphere.intersect(&ray).is_some()
+        })
+    }
+
+    /// The band's width found the slow way: every film position of the middle row a quarter
+    /// pixel apart, then every 1/200 of a pixel around each end.
+    fn scanned_blur_width(camera: &ThinLensCamera, sphere: &Sphere, lens: &[Vec2]) -> f32 {
+        let sees = |x: f32| seen_from(camera, sphere, lens, x);
+        let width = camera.pinhole.width as f32;
+        let coarse: Vec<f32> = (0..=(4.0 * width) as u32).map(|i| i as f32 / 4.0).collect();
+        let first = coarse.iter().copied().find(|&x| sees(x)).unwrap();
+        let last = coarse.iter().copied().rev().find(|&x| sees(x)).unwrap();
+        let fine = |from: f32| (0..=50).map(move |i| from + i as f32 / 200.0);
+        let start = fine(first - 0.25).find(|&x| sees(x)).unwrap();
+        let end = fine(last).take_while(|&x| sees(x)).last().unwrap();
+        end - start
+    }
+
+    fn blur_camera() -> ThinLensCamera {
+        let frame = CameraFrame::look_at(Vec3::ZERO, Vec3::Z, Vec3::Y).unwrap();
+        let pinhole = PinholeCamera::new(frame, 40.0, 200, 60);
+        ThinLensCamera::new(pinhole, Lens::new(0.15, 4.0).unwrap())
+    }
+
+    #[test]
+    fn exercise_measured_blur_agrees_with_a_slow_scan() {
+        let camera = blur_camera();
+        for depth in [1.5f32, 4.0, 10.0] {
+            let sphere = Sphere::new(Vec3::new(0.0, 0.0, depth), 0.003);
+            let got = measured_blur_width(&camera, &sphere);
+            let r = camera.lens.aperture_radius;
+            let diameter: Vec<Vec2> = (0..=1200)
+                .map(|i| Vec2::new(r * (i as f32 / 600.0 - 1.0), 0.0))
+                .collect();
+            let expected = scanned_blur_width(&camera, &sphere, &diameter);
+            if (got - expected).abs() <= 0.03 + 0.003 * expected {
+                continue;
+            }
+            let pinhole_only = scanned_blur_width(&camera, &sphere, &[Vec2::ZERO]);
+            let mistake = if !got.is_finite() {
+                "the width is not a number".to_string()
+            } else if (got - pinhole_only).abs() < 0.05 && (expected - pinhole_only).abs() > 0.5 {
+                "only the lens centre sends rays: a film position sees the sphere when a ray \
+                 from any point of the lens hits it, and the lens's rim reaches farthest"
+                    .to_string()
+            } else if (2.0 * got - expected).abs() <= 0.06 + 0.006 * expected {
+                "that is half the band: it has two ends, one on each side of the centre".to_string()
+            } else if got < expected {
+                "the band is narrower than traced rays find: do your lens points reach the rim \
+                 of the lens on both sides, and does each end converge on the last position \
+                 that sees the sphere?"
+                    .to_string()
+            } else {
+                "the band is wider than traced rays find: does each end converge on the last \
+                 position that still sees the sphere?"
+                    .to_string()
+            };
+            panic!(
+                "measured_blur_width: {mistake}.\n  a sphere of radius 0.003 at depth {depth} \
+                 (lens radius 0.15, focus 4, 200 pixels across): yours measures {got:.3} px, a \
+                 slow scan of the row finds {expected:.3} px"
+            );
+        }
     }
 
     #[test]

@@ -12,7 +12,7 @@
 //! keeps the field of view as the only other lens parameter; both ways are accepted here and
 //! both end in the same [`Lens`].
 
-use crate::aperture::{Aperture, LensWarp, sample_aperture, sample_aperture_pdf};
+use crate::aperture::{Aperture, LensWarp, sample_aperture_pdf};
 use glam::Vec2;
 
 /// A thin lens in the camera's `z = 0` plane, its optical axis the camera's +z.
@@ -93,17 +93,9 @@ impl Lens {
         self.aperture_radius == 0.0
     }
 
-    // ANCHOR: lens_point
-    /// The point of the lens, in the camera's `z = 0` plane, that the lens sample `u` picks:
-    /// the unit-size aperture scaled by the aperture radius (Mitsuba: `aperture_radius *
-    /// square_to_uniform_disc_concentric(u)`).
-    pub fn sample_point(&self, u: Vec2) -> Vec2 {
-        self.aperture_radius * sample_aperture(self.aperture, self.warp, u)
-    }
-    // ANCHOR_END: lens_point
-
-    /// The density of [`Lens::sample_point`]'s points per unit area of the lens: the unit
-    /// shape's density divided by the area factor `R²`.
+    /// The density, per unit area of the lens, of the lens points the camera draws
+    /// ([`crate::ThinLensCamera::generate_ray_through`]): the unit shape's density divided by
+    /// the area factor `R²`.
     pub fn sample_point_pdf(&self, p: Vec2) -> f32 {
         let r = self.aperture_radius;
         sample_aperture_pdf(self.aperture, self.warp, p / r) / (r * r)
@@ -167,13 +159,8 @@ mod tests {
     }
 
     #[test]
-    fn lens_points_fill_the_scaled_aperture() {
+    fn the_lens_density_is_spread_over_the_scaled_aperture() {
         let lens = Lens::new(2.0, 5.0).unwrap();
-        assert_relative_eq!(
-            lens.sample_point(Vec2::new(1.0, 0.5) - 1e-7).x,
-            2.0,
-            epsilon = 1e-4
-        );
         assert_relative_eq!(
             lens.sample_point_pdf(Vec2::new(0.5, 0.5)),
             1.0 / (std::f32::consts::PI * 4.0),

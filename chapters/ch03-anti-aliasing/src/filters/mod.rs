@@ -146,8 +146,15 @@ impl ReconstructionFilter {
         }
     }
 
-    /// The 1-D profile `f(x)` (before rounding), of which the 2-D filter is the product.
+    // ANCHOR: filter_profile
+    /// The 1-D profile `f(x)` (before rounding), of which the 2-D filter is the product: this
+    /// filter's kernel with its own parameters, reaching exactly as far as its half-width.
+    ///
+    /// The kernels (`box_1d`, `tent_1d`, `gaussian_1d`, `mitchell_1d`) take their parameters
+    /// as they are stored here, but one: which kernel has a support of its own, and how must `x`
+    /// be changed for that support to end at this filter's radius?
     pub fn evaluate_1d(&self, x: f32) -> f32 {
+        // BEGIN SOLUTION
         match *self {
             ReconstructionFilter::Box { radius } => box_1d(x, radius),
             ReconstructionFilter::Tent { radius } => tent_1d(x, radius),
@@ -160,7 +167,9 @@ impl ReconstructionFilter {
                 }
             }
         }
+        // END SOLUTION
     }
+    // ANCHOR_END: filter_profile
 }
 
 /// Accepts a filter radius in `(0, MAX_RADIUS]`, or says what is wrong with it.

@@ -139,6 +139,90 @@ fn exercise_mitchell() {
     );
 }
 
+/// What is wrong with `got = filter.evaluate_1d(x)`, in words; `None` if right.
+fn filter_profile_mistake(filter: ReconstructionFilter, x: f32, got: f32) -> Option<String> {
+    let expected = match filter {
+        ReconstructionFilter::Box { radius } => box_1d(x, radius),
+        ReconstructionFilter::Tent { radius } => tent_1d(x, radius),
+        ReconstructionFilter::Gaussian { stddev, radius } => gaussian_1d(x, stddev, radius),
+        ReconstructionFilter::Mitchell { radius, b, c } => {
+            if x.abs() > radius {
+                0.0
+            } else {
+                mitchell_1d(2.0 * x / radius, b, c)
+            }
+        }
+    };
+    if (got - expected).abs() <= 1e-6 {
+        return None;
+    }
+    let near = |v: f32| (got - v).abs() <= 1e-6;
+    let mistake = match filter {
+        ReconstructionFilter::Mitchell { radius, b, c } if near(mitchell_1d(x, b, c)) => format!(
+            "the Mitchell–Netravali cubic is used on its own support [-2, 2], whatever the \
+             filter's radius ({radius}): x has to be stretched so that the radius lands where \
+             the cubic ends"
+        ),
+        ReconstructionFilter::Mitchell { radius, b, c }
+            if near(mitchell_1d(x * radius / 2.0, b, c)) =>
+        {
+            format!(
+                "the Mitchell–Netravali cubic is stretched the wrong way: at x = {radius}, the \
+                 filter's radius, the cubic should be at the end of its support, 2"
+            )
+        }
+        ReconstructionFilter::Gaussian { stddev, radius }
+            if near(gaussian_1d(x, radius, stddev)) =>
+        {
+            "the Gaussian's standard deviation and radius are swapped".to_string()
+        }
+        _ => {
+            format!("this filter's profile is its own kernel with its own parameters ({filter:?})")
+        }
+    };
+    Some(format!(
+        "{mistake}.\n  {filter:?}.evaluate_1d({x}) gave {got}, expected {expected}"
+    ))
+}
+
+#[test]
+fn exercise_filter_profile() {
+    let third = 1.0 / 3.0;
+    let filters = [
+        ReconstructionFilter::Box { radius: 0.7 },
+        ReconstructionFilter::Tent { radius: 1.5 },
+        ReconstructionFilter::Gaussian {
+            stddev: 0.3,
+            radius: 1.2,
+        },
+        ReconstructionFilter::Mitchell {
+            radius: 1.0,
+            b: third,
+            c: third,
+        },
+        ReconstructionFilter::Mitchell {
+            radius: 3.0,
+            b: 1.0,
+            c: 0.0,
+        },
+        ReconstructionFilter::Mitchell {
+            radius: 2.0,
+            b: 0.0,
+            c: 0.5,
+        },
+    ];
+    let xs = [
+        0.0, 0.3, -0.3, 0.69, 0.71, -0.9, 1.0, 1.1, 1.4, 2.0, 2.5, -2.9, 3.1,
+    ];
+    for filter in filters {
+        for x in xs {
+            if let Some(mistake) = filter_profile_mistake(filter, x, filter.evaluate_1d(x)) {
+                panic!("evaluate_1d: {mistake}");
+            }
+        }
+    }
+}
+
 #[test]
 fn weights_vanish_outside_the_radius() {
     for kind in FilterKind::ALL {

@@ -14,14 +14,16 @@
 use common::sampler::{IndependentSampler, Sampler, mix, unit_f32};
 use glam::{UVec2, Vec2};
 
-use super::ONE_MINUS_EPSILON;
-
-/// The radical inverse of `index` in `base`: its base-`base` digits mirrored around the point,
-/// `d0 d1 d2 ...` to `0.d0 d1 d2 ...`. In base 2: 1 to 0.5, 2 to 0.25, 3 to 0.75, 4 to 0.125.
-pub fn radical_inverse(base: u32, mut index: u64) -> f64 {
+// ANCHOR: radical_inverse
+/// The radical inverse of `index` in `base`: the digits of `index` written in `base`, mirrored
+/// around the point, so that the index's last digit becomes the first digit of a fraction in
+/// `[0, 1)`. What are 1, 2 and 3 in base 2, mirrored?
+pub fn radical_inverse(base: u32, index: u64) -> f64 {
     assert!(base >= 2, "a radical inverse needs a base of at least 2");
+    // BEGIN SOLUTION
     let base = u64::from(base);
     let inverse_base = 1.0 / base as f64;
+    let mut index = index;
     let mut reversed = 0.0f64;
     let mut scale = inverse_base;
     while index > 0 {
@@ -30,24 +32,33 @@ pub fn radical_inverse(base: u32, mut index: u64) -> f64 {
         scale *= inverse_base;
     }
     reversed
+    // END SOLUTION
 }
+// ANCHOR_END: radical_inverse
 
-/// Point `index` of the 2-D Halton sequence (bases 2 and 3), in `[0, 1)^2` as `f32`.
-pub fn halton_2d(index: u64) -> Vec2 {
+// ANCHOR: halton_position
+/// The position, in `[0, 1)^2`, of sample `index` of a pixel whose Cranley–Patterson shift is
+/// `shift` (in `[0, 1)^2`): point `index` of the Halton sequence in bases 2 (for `x`) and 3
+/// (for `y`), moved by `shift` and wrapped around the pixel, as on a torus.
+///
+/// Which base belongs to which coordinate, and what can the conversion to `f32`, or the shift,
+/// do to a value just below 1?
+pub fn halton_position(index: u64, shift: Vec2) -> Vec2 {
+    // BEGIN SOLUTION
+    use super::ONE_MINUS_EPSILON;
     // A value just below 1 in f64 may round to 1.0 in f32: keep it below.
     let to_unit = |v: f64| (v as f32).min(ONE_MINUS_EPSILON);
-    Vec2::new(
+    let point = Vec2::new(
         to_unit(radical_inverse(2, index)),
         to_unit(radical_inverse(3, index)),
-    )
-}
-
-/// Adds `shift` to `p` modulo 1, per coordinate. Both are in `[0, 1)`, so their sum is below
-/// 2 and, if at least 1, loses exactly 1 (exact in `f32`): the result stays in `[0, 1)`.
-pub fn rotate(p: Vec2, shift: Vec2) -> Vec2 {
+    );
+    // Both are in [0, 1), so their sum is below 2 and, if at least 1, loses exactly 1 (exact
+    // in f32): the result stays in [0, 1).
     let wrap = |s: f32| if s >= 1.0 { s - 1.0 } else { s };
-    Vec2::new(wrap(p.x + shift.x), wrap(p.y + shift.y))
+    Vec2::new(wrap(point.x + shift.x), wrap(point.y + shift.y))
+    // END SOLUTION
 }
+// ANCHOR_END: halton_position
 
 /// Halton points, rotated by a random shift per pixel (Cranley–Patterson).
 #[derive(Clone, Debug)]
@@ -88,7 +99,7 @@ impl Sampler for HaltonSampler {
     }
 
     fn get_pixel_2d(&mut self) -> Vec2 {
-        rotate(halton_2d(self.index), self.shift)
+        halton_position(self.index, self.shift)
     }
 
     fn get_1d(&mut self) -> f32 {

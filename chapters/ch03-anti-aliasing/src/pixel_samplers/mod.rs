@@ -21,7 +21,7 @@ mod halton;
 mod random;
 mod stratified;
 
-pub use halton::{HaltonSampler, radical_inverse};
+pub use halton::{HaltonSampler, halton_position, radical_inverse};
 pub use random::{RandomSampler, random_offset};
 pub use stratified::{StratifiedSampler, jittered, strata_grid};
 

@@ -9,13 +9,20 @@
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 
-/// The grid of strata for `spp` samples: `(columns, rows)` with `columns * rows == spp` and
-/// as close to square as possible (the largest divisor of `spp` not above its square root
-/// gives the rows). A prime count gets a single row of thin strata: still stratified in `x`.
+// ANCHOR: strata_grid
+/// The grid of strata for `spp` samples: `(columns, rows)`, with exactly `spp` cells, at least
+/// as many columns as rows, and as close to square as `spp` allows; `None` for no samples, or
+/// for a grid too large to count in `u32`. A prime count can only be a single row of thin
+/// strata: still stratified in `x`.
+///
+/// Which divisors of `spp` could be the number of rows, and which of them makes the squarest
+/// grid?
 pub fn strata_grid(spp: u64) -> Option<(u32, u32)> {
+    // BEGIN SOLUTION
     if spp == 0 {
         return None;
     }
+    // The rows: the largest divisor of spp not above its square root.
     let mut rows = (spp as f64).sqrt().floor() as u64;
     // The float square root can be one off for huge counts; nudge it to the true floor.
     while rows * rows > spp {
@@ -29,7 +36,9 @@ pub fn strata_grid(spp: u64) -> Option<(u32, u32)> {
     }
     let columns = spp / rows;
     Some((u32::try_from(columns).ok()?, u32::try_from(rows).ok()?))
+    // END SOLUTION
 }
+// ANCHOR_END: strata_grid
 
 // ANCHOR: jittered
 /// The position of sample `sample_index` of a pixel divided into `columns x rows` strata: a

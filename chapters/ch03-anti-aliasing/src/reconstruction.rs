@@ -1,0 +1,78 @@
+//! One pixel's value, gathered: the lecture's weighted average written out for a single pixel.
+//!
+//! A pixel's value is the weighted average of the radiance of the samples near it, each weighted
+//! by the reconstruction filter. With the box of radius 1/2 only the pixel's own samples count;
+//! a wider filter also takes in samples that its neighbours drew. The film (`common::film`) computes the same sums
+//! the other way round, for speed: each sample, as soon as it is traced, is *scattered* into
+//! every pixel its filter reaches. Here one pixel *gathers* the samples that reach it, which is
+//! the formula as the lecture writes it; the check proves that both give the same image.
+
+use common::film::Filter;
+use common::sampler::Sampler;
+use glam::{UVec2, Vec2, Vec3};
+
+// ANCHOR: filtered_pixel
+/// The value of `pixel` in an image of `image_size` pixels (pixel `(i, j)` covers
+/// `[i, i+1) x [j, j+1)` of the film) when every pixel takes `spp` samples, numbered
+/// `0..spp`, placed by `sampler`, and `filter` reconstructs: the weighted average of the
+/// radiance of every sample, of this pixel or of a neighbour, that the filter reaches.
+///
+/// `radiance(p_film, sampler)` is the radiance seen through film position `p_film`; it may
+/// draw the sample's further numbers (a lens point, a time) from `sampler`. A pixel that no
+/// sample reaches with any weight is black.
+///
+/// Where is a pixel's centre, which pixels' samples can the filter reach from it, and where in
+/// the film does sample `k` of pixel `q` lie? What must the weighted sum be divided by?
+pub fn filtered_pixel<S: Sampler>(
+    pixel: UVec2,
+    image_size: UVec2,
+    spp: u64,
+    sampler: &mut S,
+    filter: &dyn Filter,
+    radiance: impl FnMut(Vec2, &mut S) -> Vec3,
+) -> Vec3 {
+    // BEGIN SOLUTION
+    use glam::DVec3;
+    let mut radiance = radiance;
+    // Offsets are measured from the pixel's centre, half a pixel from its corner.
+    let centre = pixel.as_vec2() + Vec2::splat(0.5);
+    // A sample of pixel q lies in [q, q + 1): it can be within the radius of the centre only if
+    // q + 1 > centre - radius and q <= centre + radius. Pixels outside the image take no
+    // samples.
+    let radius = filter.radius();
+    let first = (centre - radius - Vec2::ONE).floor().max(Vec2::ZERO);
+    let last = (centre + radius)
+        .floor()
+        .min(image_size.as_vec2() - Vec2::ONE);
+    // The two sums of the lecture's weighted average, in f64 as the film keeps them.
+    let mut weighted_radiance = DVec3::ZERO;
+    let mut weight_sum = 0.0f64;
+    for y in first.y as u32..=last.y as u32 {
+        for x in first.x as u32..=last.x as u32 {
+            let neighbour = UVec2::new(x, y);
+            for index in 0..spp {
+                // Sample `index` of the neighbour, where the neighbour's render puts it.
+                sampler.start_pixel_sample(neighbour, index);
+                let p_film = neighbour.as_vec2() + sampler.get_pixel_2d();
+                let weight = f64::from(filter.evaluate(p_film - centre));
+                if weight == 0.0 {
+                    continue;
+                }
+                let sample = radiance(p_film, sampler).as_dvec3();
+                weighted_radiance += weight * sample;
+                weight_sum += weight;
+            }
+        }
+    }
+    // Dividing by the sum of the weights makes them sum to one, whatever the samples were.
+    if weight_sum == 0.0 {
+        Vec3::ZERO
+    } else {
+        (weighted_radiance / weight_sum).as_vec3()
+    }
+    // END SOLUTION
+}
+// ANCHOR_END: filtered_pixel
+
+#[cfg(test)]
+mod tests;
