@@ -292,6 +292,7 @@ fn check_at_depth(max_depth: u32) {
 /// caught by the world's count of rays rather than by a stack overflow.
 fn with_deep_stack(check: impl FnOnce() + Send + 'static) {
     let handle = std::thread::Builder::new()
+        .name("the check of trace".to_string())
         .stack_size(256 << 20)
         .spawn(check)
         .expect("a thread for the check");
