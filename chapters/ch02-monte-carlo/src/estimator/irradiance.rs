@@ -83,8 +83,9 @@ pub struct Estimate {
 /// and both warps can make the same direction: how likely is it, then? The chapter's warps and
 /// their densities, and [`super::sample_mean_and_variance`], are there to be called.
 ///
-/// With `n = 0` there is nothing to average: both numbers are `NaN`. The standard error needs
-/// at least two directions to mean anything.
+/// A direction of density 0 (on the horizon, where the cosine's density vanishes) contributes
+/// nothing. With `n = 0` there is nothing to average: both numbers are `NaN`. The standard
+/// error needs at least two directions to mean anything.
 pub fn estimate_irradiance(
     radiance: impl Fn(Vec3) -> f64,
     sampling: DirectionSampling,

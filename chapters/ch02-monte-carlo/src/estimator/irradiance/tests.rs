@@ -321,6 +321,23 @@ fn exercise_sun_and_sky_is_exact_where_the_density_follows_the_integrand() {
 }
 
 #[test]
+fn exercise_sun_and_sky_of_a_direction_on_the_horizon() {
+    // ξ1 = 0 puts the concentric map's point on the rim of the disc: lifted, it lies on the
+    // horizon, where the cosine-weighted density is 0 (and so is the integrand).
+    let mut on_the_rim = [Vec2::new(0.0, 0.3), Vec2::new(0.5, 0.5)].into_iter();
+    let estimate = estimate_irradiance(|_| 1.0, DirectionSampling::Cosine, 2, &mut || {
+        on_the_rim.next().expect("one u per direction")
+    });
+    assert!(
+        estimate.mean.is_finite() && (estimate.mean - PI / 2.0).abs() < 1e-5,
+        "estimate_irradiance: of two cosine-weighted directions, one lies on the horizon, where \
+         its density is 0: 0 / 0 is not a number, and such a direction contributes nothing \
+         (the other gives π). The estimate should be π/2, yours is {}",
+        estimate.mean
+    );
+}
+
+#[test]
 fn exercise_sun_and_sky_of_no_directions_is_nan() {
     let estimate = estimate_irradiance(
         |_| 1.0,
