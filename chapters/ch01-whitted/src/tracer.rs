@@ -6,19 +6,23 @@
 //! traced the same way, recursively, until the depth limit. Every ray is deterministic, so one
 //! ray per pixel gives the final image, with every edge jagged and every shadow hard.
 
-use crate::optics::{fresnel_dielectric, reflect, refract};
 use crate::scene::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
-use common::scene::Material;
 use glam::Vec3;
-use std::f32::consts::FRAC_1_PI;
 
 // ANCHOR: trace
 /// The radiance arriving along `ray`, which is segment number `depth` of its path (the camera
-/// ray is segment 1). Every ray it spawns keeps the ray's shutter `time`.
+/// ray is segment 1; a path has at most the scene's `max_depth` segments, as in Mitsuba).
+/// Every ray it spawns keeps the ray's shutter `time`, and every ray traced is counted once in
+/// `counters.rays` (`direct_light` counts its own shadow rays). Chapter 06's materials
+/// (`Glossy`, `RoughGlass`) reflect nothing here.
 pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCounters) -> Vec3 {
+    // BEGIN SOLUTION
+    use crate::optics::reflect;
+    use common::scene::Material;
+
     counters.rays += 1;
     let scene = world.scene();
     let Some(hit) = world.intersect(ray) else {
@@ -51,19 +55,25 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
             reflectance * trace(world, &reflected, depth + 1, counters)
         }
         Material::Dielectric { int_ior, ext_ior } => {
-            dielectric(world, ray, &hit, int_ior, ext_ior, depth, counters)
+            dielectric(ray, &hit, int_ior, ext_ior, &mut |next| {
+                trace(world, next, depth + 1, counters)
+            })
         }
         // Chapter 06's materials; the capability check keeps them from this chapter.
         Material::Glossy(_) | Material::RoughGlass(_) => Vec3::ZERO,
     }
+    // END SOLUTION
 }
 // ANCHOR_END: trace
 
 // ANCHOR: direct_light
-/// Light reflected by a matte surface from every point light it sees: `albedo / pi` times
-/// the irradiance `I cos(theta) / r^2`, where a shadow ray finds nothing in the way.
+/// The radiance a matte surface of `albedo` reflects back along `ray` from the scene's point
+/// lights: each light counts only where a shadow ray from `hit` reaches it unblocked. The back
+/// of a one-sided surface is black; a `two_sided` one is matte on both sides.
 ///
-/// Public because the later chapters' tracers light their matte surfaces the same way.
+/// Every shadow ray traced is counted in `counters.rays`, and none is traced that could not
+/// change the answer. Public because the later chapters' tracers light their matte surfaces the
+/// same way.
 pub fn direct_light<W: World>(
     world: &W,
     ray: &Ray,
@@ -72,6 +82,9 @@ pub fn direct_light<W: World>(
     two_sided: bool,
     counters: &mut SampleCounters,
 ) -> Vec3 {
+    // BEGIN SOLUTION
+    use std::f32::consts::FRAC_1_PI;
+
     let normal = if hit.front_face(ray.dir) {
         hit.shading_n
     } else if two_sided {
@@ -95,21 +108,30 @@ pub fn direct_light<W: World>(
         radiance += albedo * FRAC_1_PI * light.intensity * cos_theta / distance_squared;
     }
     radiance
+    // END SOLUTION
 }
 // ANCHOR_END: direct_light
 
 // ANCHOR: dielectric
-/// Glass: a Fresnel-weighted sum of the reflected and the refracted ray. Radiance crossing
-/// into a denser medium is squeezed into a narrower cone, so it is scaled by `(eta_i/eta_t)^2`.
-fn dielectric<W: World>(
-    world: &W,
+/// Glass: the radiance arriving along `ray` from a smooth interface, brought back by the
+/// reflected ray and, when there is one, the refracted ray, each with its share of the light.
+/// (What happens to radiance that crosses into a medium of another index? The chapter's
+/// section on glass says.)
+///
+/// `int_ior` is the index inside the glass (behind the normal `hit.n`), `ext_ior` the one
+/// outside; the ray may arrive from either side. `trace_next` follows a ray one segment further
+/// along the path and returns the radiance it brings back; a ray whose share is zero is not
+/// traced. Public so that a later tracer can reuse it.
+pub fn dielectric(
     ray: &Ray,
     hit: &SurfaceHit,
     int_ior: f32,
     ext_ior: f32,
-    depth: u32,
-    counters: &mut SampleCounters,
+    trace_next: &mut impl FnMut(&Ray) -> Vec3,
 ) -> Vec3 {
+    // BEGIN SOLUTION
+    use crate::optics::{fresnel_dielectric, reflect, refract};
+
     // Orient the normal against the ray; coming from inside, the indices swap.
     let (normal, eta) = if hit.front_face(ray.dir) {
         (hit.n, ext_ior / int_ior)
@@ -121,14 +143,18 @@ fn dielectric<W: World>(
     let mut radiance = Vec3::ZERO;
     if reflectance > 0.0 {
         let reflected = hit.spawn_ray(reflect(ray.dir, normal), ray.time);
-        radiance += reflectance * trace(world, &reflected, depth + 1, counters);
+        radiance += reflectance * trace_next(&reflected);
     }
     if reflectance < 1.0
         && let Some(dir) = refract(ray.dir, normal, eta)
     {
         let refracted = hit.spawn_ray(dir, ray.time);
-        radiance += (1.0 - reflectance) * eta * eta * trace(world, &refracted, depth + 1, counters);
+        radiance += (1.0 - reflectance) * eta * eta * trace_next(&refracted);
     }
     radiance
+    // END SOLUTION
 }
 // ANCHOR_END: dielectric
+
+#[cfg(test)]
+mod tests;

@@ -9,6 +9,7 @@
 //! | [`integrand`](Integrand) | integrals with known values: `x²`, a peak, the sky's irradiance |
 //! | [`strategy`](Strategy) | uniform, importance and stratified sampling of the same integral |
 //! | [`variance`](sample_mean_and_variance) | measuring the noise of an estimator over repeated runs |
+//! | [`irradiance`](estimate_irradiance) | the capstone: a sun and a sky, warps, densities, a standard error |
 //! | [`convergence`](convergence()) | error against samples and time, and its slope |
 //! | [`plots`](plot_error_vs_n_with_slope) | the figures and the table of a convergence experiment |
 //!
@@ -18,6 +19,7 @@
 
 mod convergence;
 mod integrand;
+mod irradiance;
 mod monte_carlo;
 mod plots;
 mod strategy;
@@ -31,6 +33,7 @@ pub use integrand::{
     Dimensions, ImportanceSampling, Integrand, SKY_RADIANCE, peaked_quartic, sky_irradiance,
     x_squared,
 };
+pub use irradiance::{DirectionSampling, Estimate, SunAndSky, estimate_irradiance};
 pub use monte_carlo::{estimate, estimate_uniform};
 pub use plots::{inverse_sqrt_reference, plot_error_vs_n_with_slope, save_convergence};
 pub use strategy::Strategy;

@@ -23,8 +23,8 @@
 //! estimator becomes `|D|` times the average of `f`.
 
 // ANCHOR: estimate
-/// The general (importance-sampling) estimator `(1/n) Σ f(x_i) / p(x_i)`, with each `x_i` a
-/// fresh point from `sample` and `pdf` its density.
+/// The lecture's estimator of `∫ f`: `n` points, each a fresh one from `sample`, whose density
+/// is `pdf`; each point's share of the estimate is weighted by how likely it was to be drawn.
 ///
 /// `pdf` must be the density that `sample` actually draws from: any other function biases the
 /// result. A point whose density is 0 (it can only appear through rounding at the edge of a
@@ -33,10 +33,11 @@
 /// With `n = 0` there is nothing to average, and the estimate is `NaN`.
 pub fn estimate<X: Copy>(
     n: usize,
-    mut sample: impl FnMut() -> X,
+    sample: &mut impl FnMut() -> X,
     f: impl Fn(X) -> f64,
     pdf: impl Fn(X) -> f64,
 ) -> f64 {
+    // BEGIN SOLUTION
     let mut sum = 0.0;
     for _ in 0..n {
         let x = sample();
@@ -46,6 +47,7 @@ pub fn estimate<X: Copy>(
         }
     }
     sum / n as f64
+    // END SOLUTION
 }
 // ANCHOR_END: estimate
 
@@ -84,17 +86,107 @@ mod tests {
         }
     }
 
+    /// Runs `estimate` on the points `xs` with `f` and `pdf`, and fails, naming the mistake, if
+    /// it is not the lecture's estimator.
+    fn check_estimate(xs: &[f64], f: impl Fn(f64) -> f64, pdf: impl Fn(f64) -> f64, case: &str) {
+        let mut points = xs.iter().copied();
+        let mut drawn = 0;
+        let value = estimate(
+            xs.len(),
+            &mut || {
+                drawn += 1;
+                points.next().unwrap_or(f64::NAN)
+            },
+            &f,
+            &pdf,
+        );
+        let n = xs.len() as f64;
+        let terms = |g: &dyn Fn(f64) -> f64| -> f64 {
+            xs.iter()
+                .filter(|&&x| pdf(x) > 0.0)
+                .map(|&x| g(x))
+                .sum::<f64>()
+        };
+        let sum = terms(&|x| f(x) / pdf(x));
+        let expected = sum / n;
+        let near = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1e-300);
+        if drawn != xs.len() {
+            panic!(
+                "estimate ({case}): it drew {drawn} points where n = {}: one fresh point per \
+                 term, n terms",
+                xs.len()
+            );
+        }
+        if near(value, expected) {
+            return;
+        }
+        let mistake = if value.is_nan() && xs.iter().any(|&x| pdf(x) == 0.0) {
+            "it is NaN: a point of density 0 gives 0 / 0; such a point contributes nothing"
+                .to_string()
+        } else if near(value, terms(&f) / n) {
+            "each f(x) is averaged as it is, without dividing by its density: that is only \
+             right for the uniform density 1 on a domain of size 1. A point that was likely to \
+             be drawn must count for less"
+                .to_string()
+        } else if near(value, terms(&|x| f(x) * pdf(x)) / n) {
+            "each f(x) is multiplied by its density, where it must be divided by it".to_string()
+        } else if near(value, sum) {
+            "that is the sum of the terms, not their mean".to_string()
+        } else if near(value, sum / (n - 1.0)) || near(value, sum / (n + 1.0)) {
+            "the sum of the terms is divided by the wrong count: the estimate is their mean"
+                .to_string()
+        } else {
+            format!("the mean of f(x_i) / p(x_i) here is {expected}")
+        };
+        panic!("estimate ({case}): {mistake}.\n  Your estimate gave {value}, expected {expected}");
+    }
+
     #[test]
-    fn a_constant_is_integrated_exactly() {
-        assert_relative_eq!(estimate_uniform(2.5, 7, midpoints(7), |_| 4.0), 10.0);
-        assert_relative_eq!(estimate(7, midpoints(7), |_| 4.0, |_| 1.0 / 2.5), 10.0);
+    fn exercise_estimate_integrates_a_constant_exactly() {
+        let points: Vec<f64> = std::iter::repeat_with(midpoints(7)).take(7).collect();
+        check_estimate(
+            &points,
+            |_| 4.0,
+            |_| 1.0 / 2.5,
+            "f = 4 on a domain of size 2.5",
+        );
+        assert_relative_eq!(estimate(7, &mut midpoints(7), |_| 4.0, |_| 1.0 / 2.5), 10.0);
+    }
+
+    #[test]
+    fn exercise_estimate_divides_each_term_by_its_own_density() {
+        // Two points with densities 1/2 and 2: terms 2 * 3 = 6 and 5 / 2 = 2.5, mean 4.25.
+        check_estimate(
+            &[0.0, 1.0],
+            |x| if x == 0.0 { 3.0 } else { 5.0 },
+            |x| if x == 0.0 { 0.5 } else { 2.0 },
+            "two points of densities 1/2 and 2",
+        );
+        let f = |x: f64| x * x + 1.0;
+        let points: Vec<f64> = std::iter::repeat_with(midpoints(10)).take(10).collect();
+        check_estimate(&points, f, |x| 0.5 + x, "a density that grows with x");
+    }
+
+    #[test]
+    fn exercise_estimate_of_points_of_zero_density() {
+        check_estimate(&[0.0, 1.0, 0.5], |x| x, |x| x, "a point of density 0");
+    }
+
+    #[test]
+    fn exercise_estimate_of_no_samples_is_nan() {
+        let value = estimate(0, &mut || 0.0, |x| x, |_| 1.0);
+        assert!(
+            value.is_nan(),
+            "estimate: with n = 0 there is nothing to average, and the estimate is NaN, not \
+             {value}"
+        );
     }
 
     #[test]
     fn the_uniform_form_is_the_general_form_with_a_constant_density() {
         let f = |x: f64| x * x + 1.0;
         let uniform = estimate_uniform(3.0, 10, midpoints(10), f);
-        let general = estimate(10, midpoints(10), f, |_| 1.0 / 3.0);
+        let general = estimate(10, &mut midpoints(10), f, |_| 1.0 / 3.0);
         assert_relative_eq!(uniform, general, max_relative = 1e-14);
         // The midpoint rule's value for ∫ (x² + 1) dx over [0, 1], times 3.
         assert_relative_eq!(
@@ -102,31 +194,6 @@ mod tests {
             3.0 * (1.0 + 1.0 / 3.0 - 0.1 * 0.1 / 12.0),
             max_relative = 1e-12
         );
-    }
-
-    #[test]
-    fn each_term_is_divided_by_its_own_density() {
-        // Two points with densities 1/2 and 2: terms 2 * 3 = 6 and 5 / 2 = 2.5, mean 4.25.
-        let mut points = [0.0, 1.0].into_iter();
-        let value = estimate(
-            2,
-            || points.next().unwrap(),
-            |x| if x == 0.0 { 3.0 } else { 5.0 },
-            |x| if x == 0.0 { 0.5 } else { 2.0 },
-        );
-        assert_eq!(value, 4.25);
-    }
-
-    #[test]
-    fn points_of_zero_density_contribute_nothing() {
-        let mut points = [0.0, 1.0].into_iter();
-        let value = estimate(2, || points.next().unwrap(), |x| x, |x| x);
-        assert_eq!(value, 0.5);
-    }
-
-    #[test]
-    fn no_samples_give_nan() {
-        assert!(estimate(0, || 0.0, |x| x, |_| 1.0).is_nan());
         assert!(estimate_uniform(1.0, 0, || 0.0, |x| x).is_nan());
     }
 }

@@ -66,7 +66,7 @@ impl Strategy {
             ),
             Strategy::Importance => estimate(
                 n,
-                || (integrand.importance.warp)(independent_point(dimensions, rng)),
+                &mut || (integrand.importance.warp)(independent_point(dimensions, rng)),
                 integrand.f,
                 integrand.importance.pdf,
             ),

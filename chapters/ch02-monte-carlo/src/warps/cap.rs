@@ -4,40 +4,54 @@
 //! of the whole sphere sends every shadow ray towards the light (chapter 07). pbrt-v4 calls
 //! it a cone (`SampleUniformCone`).
 //!
-//! By the hat-box theorem of [`super::sphere`], a cap is a band of heights `z = cos θ` in
-//! `[cos θ_max, 1]` with uniform `φ`, and its solid angle is the band's height times `2π`:
-//! `Ω = 2π (1 - cos θ_max)`. A uniform direction has `z` uniform in that band:
-//! `1 - z = ξ2 (1 - cos θ_max)`, so `ξ2 = 0` is the pole and `ξ2 → 1` the rim. With
-//! `cos θ_max = -1` this is [`super::sample_uniform_sphere`] exactly.
+//! The hat-box theorem of [`super::sphere`] does most of the work: in the coordinates
+//! `(z = cos θ, φ)` the sphere is a flat rectangle, and a cap is a part of it. How large a part,
+//! and what does that make its solid angle? Which coordinate is then uniform, and over what
+//! range? As for the sphere and the hemisphere, `ξ2 = 0` is the pole and `ξ2 → 1` the rim; with
+//! `cos θ_max = -1` the cap is the whole sphere and the warp is [`super::sample_uniform_sphere`].
 //!
-//! A small light far away makes a tiny cap, `1 - cos θ_max` of 10^-8 and below. Computing
-//! `1 - z` directly, as above, keeps its digits; forming `z` first and then `sin θ` from it
-//! would not (see the notes of [`super::lobe`]). The caller should likewise pass an accurate
-//! `cos θ_max`; for the tiniest caps the API would better take `1 - cos θ_max` itself.
+//! A small light far away makes a tiny cap, `1 - cos θ_max` of 10^-8 and below, where `cos θ`
+//! itself rounds to 1 in `f32`. Which quantity still holds its digits there, and can `sin θ` be
+//! computed from it rather than from `cos θ` (see the notes of [`super::lobe`])? The caller
+//! should likewise pass an accurate `cos θ_max`; for the tiniest caps the API would better take
+//! `1 - cos θ_max` itself.
 
 use std::f32::consts::TAU;
 
 use glam::{Vec2, Vec3};
 
 use super::disc::azimuth;
-use super::sphere::{one_minus_cos_theta, spherical_direction};
+use super::sphere::one_minus_cos_theta;
 
+// ANCHOR: spherical_cap_pdf
+/// The density of [`sample_spherical_cap`] per unit solid angle, for directions inside the
+/// cap of directions within `θ_max` of +z (`-1 ≤ cos_theta_max < 1`): every direction of the
+/// cap equally likely.
+pub fn spherical_cap_pdf(cos_theta_max: f32) -> f32 {
+    // BEGIN SOLUTION
+    1.0 / (TAU * (1.0 - cos_theta_max))
+    // END SOLUTION
+}
+// ANCHOR_END: spherical_cap_pdf
+
+// ANCHOR: spherical_cap
 /// A uniform direction of the cap of directions within `θ_max` of +z, for
-/// `-1 ≤ cos_theta_max < 1`. Density [`spherical_cap_pdf`].
+/// `-1 ≤ cos_theta_max < 1`, with `φ = 2π ξ1` and `ξ2 = 0` at the pole. Density
+/// [`spherical_cap_pdf`].
 pub fn sample_spherical_cap(u: Vec2, cos_theta_max: f32) -> Vec3 {
+    // BEGIN SOLUTION
+    use super::sphere::spherical_direction;
+
     let one_minus_cos = u.y * (1.0 - cos_theta_max);
     let cos_theta = 1.0 - one_minus_cos;
     let sin_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
     spherical_direction(sin_theta, cos_theta, TAU * u.x)
+    // END SOLUTION
 }
+// ANCHOR_END: spherical_cap
 
-/// The density of [`sample_spherical_cap`] per unit solid angle: one over the cap's solid
-/// angle `2π (1 - cos θ_max)`, for directions inside the cap.
-pub fn spherical_cap_pdf(cos_theta_max: f32) -> f32 {
-    1.0 / (TAU * (1.0 - cos_theta_max))
-}
-
-/// The `u` that [`sample_spherical_cap`] maps to `d`: `(φ / 2π, (1 - cos θ) / (1 - cos θ_max))`.
+/// The `u` that [`sample_spherical_cap`] maps to `d`, for the round trip of the tests and for
+/// chapter 07.
 pub fn invert_spherical_cap(d: Vec3, cos_theta_max: f32) -> Vec2 {
     Vec2::new(
         azimuth(d.truncate()) / TAU,
@@ -48,31 +62,63 @@ pub fn invert_spherical_cap(d: Vec3, cos_theta_max: f32) -> Vec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::warps::sample_uniform_sphere;
+    use crate::chi2::{chi2_test, significance_level};
     use crate::warps::test_support::{edge_points, integrate_over_sphere, interior_grid};
+    use crate::warps::{Warp, sample_uniform_sphere};
     use approx::assert_relative_eq;
+    use std::f64::consts::PI;
 
     const CAPS: [f32; 5] = [-1.0, -0.5, 0.0, 0.8, 0.999_9];
 
-    #[test]
-    fn edge_values_stay_in_the_cap() {
-        for cos_max in CAPS {
-            for u in edge_points() {
-                let d = sample_spherical_cap(u, cos_max);
-                assert!(
-                    d.is_finite() && (d.length() - 1.0).abs() < 1e-5,
-                    "u = {u}: {d}"
-                );
-                assert!(
-                    d.z >= cos_max - 1e-6,
-                    "u = {u}: {d} leaves the cap {cos_max}"
-                );
-            }
+    /// What is wrong with `pdf`, an answer to `spherical_cap_pdf(cos_max)`, in words; `None`
+    /// if it is right.
+    fn cap_pdf_mistake(cos_max: f32, pdf: f32) -> Option<String> {
+        let solid_angle = 2.0 * PI * (1.0 - f64::from(cos_max));
+        let expected = 1.0 / solid_angle;
+        let pdf = f64::from(pdf);
+        // The density is constant over the cap, so its integral is the density times Ω.
+        let integral = pdf * solid_angle;
+        if (integral - 1.0).abs() < 1e-5 {
+            return None;
         }
+        let near = |x: f64| (integral - x).abs() < 1e-4 * x;
+        let mistake = if !pdf.is_finite() {
+            "it is not a finite number".to_string()
+        } else if cos_max != 0.0 && (pdf - 0.5 / PI).abs() < 1e-6 {
+            "that is the hemisphere's density, 1/(2π), whatever the cap: a smaller cap holds \
+             its directions in less solid angle, so each is more likely"
+                .to_string()
+        } else if near(0.5) {
+            "it is half the density: is the solid angle of the cap twice what it should be \
+             (4π belongs to the whole sphere, whose band of heights is 2 long)?"
+                .to_string()
+        } else if near(2.0 * PI) {
+            "it is 2π times too large: the azimuth φ sweeps a whole turn".to_string()
+        } else if near(2.0) || near(PI) || near(1.0 / PI) {
+            format!(
+                "it is off by a constant factor ({integral:.4}): the density of a uniform \
+                 direction is one over the cap's solid angle"
+            )
+        } else {
+            format!(
+                "over the cap it integrates to {integral:.5}, not 1: the density of a uniform \
+                 direction is one over the cap's solid angle"
+            )
+        };
+        Some(format!(
+            "{mistake}.\n  cos θ_max = {cos_max}: your spherical_cap_pdf gave {pdf}, expected \
+             {expected}"
+        ))
     }
 
     #[test]
-    fn the_density_integrates_to_one() {
+    fn exercise_spherical_cap_pdf_integrates_to_one() {
+        for cos_max in [0.0, 0.8, -0.5, -1.0, 0.999_9] {
+            if let Some(mistake) = cap_pdf_mistake(cos_max, spherical_cap_pdf(cos_max)) {
+                panic!("spherical_cap_pdf: {mistake}");
+            }
+        }
+        // And numerically, over the sphere, as a density must.
         for cos_max in [-0.5, 0.0, 0.8] {
             let integral = integrate_over_sphere(
                 |d| {
@@ -89,9 +135,149 @@ mod tests {
     }
 
     #[test]
-    fn the_whole_sphere_is_a_cap() {
+    fn exercise_spherical_cap_pdf_of_a_tiny_cap() {
+        // The smallest cap an f32 cos θ_max can describe: 1 - cos θ_max = 6e-8.
+        let cos_max = f32::from_bits(0x3f7f_ffff);
+        if let Some(mistake) = cap_pdf_mistake(cos_max, spherical_cap_pdf(cos_max)) {
+            panic!("spherical_cap_pdf of the tiniest cap: {mistake}");
+        }
+    }
+
+    /// What is wrong with `d = sample_spherical_cap(u, cos_max)`, in words; `None` if it is
+    /// the lecture's uniform direction with `φ = 2π ξ1` and `ξ2 = 0` at the pole.
+    fn cap_mistake(u: Vec2, cos_max: f32, d: Vec3) -> Option<String> {
+        let (u64x, u64y, m) = (f64::from(u.x), f64::from(u.y), f64::from(cos_max));
+        let z = 1.0 - u64y * (1.0 - m);
+        let phi = 2.0 * PI * u64x;
+        let sin = (u64y * (1.0 - m) * (1.0 + z)).sqrt();
+        let expected = Vec3::new((sin * phi.cos()) as f32, (sin * phi.sin()) as f32, z as f32);
+        if d.is_finite() && (d - expected).length() < 1e-6 {
+            return None;
+        }
+        let mistake = if !d.is_finite() {
+            "it is not a finite direction".to_string()
+        } else if (d.length() - 1.0).abs() > 1e-5 {
+            format!("it has length {}, not 1", d.length())
+        } else if d.z < cos_max - 1e-6 {
+            format!(
+                "it lies outside the cap: cos θ = {} is below cos θ_max",
+                d.z
+            )
+        } else if (f64::from(d.z) - (m + u64y * (1.0 - m))).abs() < 1e-5 && u.y != 0.5 {
+            "ξ2 = 0 gives the rim and ξ2 → 1 the pole: the chapter's warps start at the pole, \
+             ξ2 = 0"
+                .to_string()
+        } else if (f64::from(d.z) - z).abs() > 1e-5 {
+            format!(
+                "cos θ = {} is not where a uniform direction's height lies: which coordinate is \
+                 uniform over the cap, and over what range?",
+                d.z
+            )
+        } else if (d.truncate().length() - expected.truncate().length()).abs() > 1e-6 {
+            format!(
+                "sin θ = {} lost its digits (it should be {}): near the pole cos θ rounds to 1; \
+                 compute sin θ from 1 - cos θ, which keeps them",
+                d.truncate().length(),
+                expected.truncate().length()
+            )
+        } else {
+            "the height is right but the azimuth is not: φ = 2π ξ1, measured from +x towards +y"
+                .to_string()
+        };
+        Some(format!(
+            "{mistake}.\n  ξ = {u}, cos θ_max = {cos_max}: your sample_spherical_cap gave {d}, \
+             expected {expected}"
+        ))
+    }
+
+    #[test]
+    fn exercise_spherical_cap_follows_the_chapters_parametrisation() {
+        // The height first, everywhere: a wrong height also spoils sin θ, and it is the cause.
+        let cases = CAPS.into_iter().flat_map(|m| {
+            edge_points()
+                .into_iter()
+                .chain(interior_grid(12))
+                .map(move |u| (u, m))
+        });
+        for (u, cos_max) in cases {
+            let d = sample_spherical_cap(u, cos_max);
+            let z = 1.0 - f64::from(u.y) * (1.0 - f64::from(cos_max));
+            if !d.is_finite() || (f64::from(d.z) - z).abs() > 1e-5 {
+                let mistake = cap_mistake(u, cos_max, d).expect("a wrong height is a mistake");
+                panic!("sample_spherical_cap: {mistake}");
+            }
+        }
+        for cos_max in CAPS {
+            for u in edge_points().into_iter().chain(interior_grid(12)) {
+                if let Some(mistake) = cap_mistake(u, cos_max, sample_spherical_cap(u, cos_max)) {
+                    panic!("sample_spherical_cap: {mistake}");
+                }
+            }
+        }
+        // With cos θ_max = -1 the cap is the whole sphere.
         for u in interior_grid(10) {
-            assert_eq!(sample_spherical_cap(u, -1.0), sample_uniform_sphere(u));
+            assert_relative_eq!(
+                sample_spherical_cap(u, -1.0),
+                sample_uniform_sphere(u),
+                epsilon = 1e-6
+            );
+        }
+    }
+
+    #[test]
+    fn exercise_spherical_cap_keeps_a_tiny_cap_in_shape() {
+        // The smallest cap an f32 cos θ_max can describe: the largest float below 1, so that
+        // 1 - cos θ_max = 6e-8. Its directions lie about 2.4e-4 radians from the pole.
+        let cos_max = f32::from_bits(0x3f7f_ffff);
+        let u = Vec2::new(0.0, 0.5);
+        if let Some(mistake) = cap_mistake(u, cos_max, sample_spherical_cap(u, cos_max)) {
+            panic!("sample_spherical_cap, the tiniest cap: {mistake}");
+        }
+    }
+
+    #[test]
+    fn exercise_spherical_cap_has_its_density() {
+        // The pdf is yours too (the exercise before): it must integrate to one...
+        for cos_max in [-0.5, 0.0, 0.8] {
+            if let Some(mistake) = cap_pdf_mistake(cos_max, spherical_cap_pdf(cos_max)) {
+                panic!("spherical_cap_pdf: {mistake}");
+            }
+        }
+        // ... and the directions must follow it.
+        for cos_max in [0.0, 0.8] {
+            let warp = Warp::SphericalCap {
+                cos_theta_max: cos_max,
+            };
+            let result = chi2_test(&warp, 100_000, 5, (16, 16));
+            if result.p_value <= significance_level(2, 0.01) {
+                let points: Vec<Vec2> = interior_grid(150)
+                    .into_iter()
+                    .map(|u| {
+                        let d = sample_spherical_cap(u, cos_max);
+                        Vec2::new(azimuth(d.truncate()) / TAU, d.z)
+                    })
+                    .collect();
+                let density = move |p: Vec2| {
+                    if p.y >= cos_max {
+                        1.0 / (1.0 - f64::from(cos_max))
+                    } else {
+                        0.0
+                    }
+                };
+                panic!(
+                    "{} (cos θ_max = {cos_max}, drawn in (φ/2π, cos θ), where equal areas are \
+                     equal solid angles)",
+                    common::test_support::not_uniform(
+                        "ch02-spherical-cap",
+                        "sample_spherical_cap",
+                        "cap",
+                        result.p_value,
+                        &points,
+                        &density,
+                        [Vec2::new(0.0, cos_max), Vec2::ONE],
+                    )
+                );
+            }
         }
     }
 
@@ -105,16 +291,5 @@ mod tests {
                 assert_relative_eq!(sample_spherical_cap(back, cos_max), d, epsilon = 1e-5);
             }
         }
-    }
-
-    #[test]
-    fn a_tiny_cap_keeps_its_shape() {
-        // The smallest cap an f32 cos θ_max can describe: the largest float below 1, so that
-        // 1 - cos θ_max = 6e-8. Its directions lie about 2.4e-4 radians from the pole, and
-        // sin θ must come out right rather than rounded to 0 via cos θ.
-        let cos_max = f32::from_bits(0x3f7f_ffff);
-        let d = sample_spherical_cap(Vec2::new(0.0, 0.5), cos_max);
-        let expected_sin = (2.0 * 0.5 * (1.0 - cos_max as f64)).sqrt() as f32;
-        assert_relative_eq!(d.x, expected_sin, max_relative = 1e-5);
     }
 }
