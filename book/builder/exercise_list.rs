@@ -350,4 +350,38 @@ mod tests {
         assert!(is_student_edition(dir.path(), &stubbed_only));
         assert!(!is_student_edition(dir.path(), &parse(&both).unwrap()));
     }
+
+    /// The promise of the exercise set: every chapter's student writes at least four
+    /// exercises, one of them the chapter's central routine (a capstone of 25 lines or more),
+    /// and the whole set covers the lecture (40 exercises, 900 lines of solution at least).
+    #[test]
+    fn every_chapter_has_four_exercises_and_a_capstone() {
+        let root = crate::workspace::root();
+        let exercises = load(&root).unwrap();
+        let shares = shares(&root, &exercises).unwrap();
+        let chapters: Vec<&str> = shares.iter().map(|s| s.chapter.as_str()).collect();
+        for chapter in crate::figures::CHAPTERS.iter().map(|(id, _)| *id) {
+            assert!(
+                chapters.iter().any(|c| c.starts_with(chapter)),
+                "{chapter} has no exercise"
+            );
+        }
+        for share in &shares {
+            assert!(share.exercises >= 4, "{share:?}: fewer than four exercises");
+            assert!(
+                share.capstone_lines >= 25,
+                "{share:?}: no capstone of 25 lines"
+            );
+        }
+        let lines: usize = shares.iter().map(|s| s.lines).sum();
+        assert!(exercises.len() >= 40, "{} exercises", exercises.len());
+        assert!(lines >= 900, "{lines} lines of solution");
+        for exercise in &exercises {
+            assert!(
+                exercise.wrong.len() >= 2,
+                "{}: fewer than two recorded wrong answers",
+                exercise.name
+            );
+        }
+    }
 }
