@@ -44,6 +44,7 @@ pub fn run(
         return Ok(());
     }
 
+    let started = std::time::Instant::now();
     let target_dir = workspace::target_dir(root);
     let student_dir = target_dir.join("student");
     let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
@@ -89,10 +90,20 @@ pub fn run(
     }
 
     if surprises.is_empty() {
-        println!("\nAll {} exercise(s) behave.", chosen.len());
+        println!(
+            "\nAll {} exercise(s) behave ({:.0} s so far).",
+            chosen.len(),
+            started.elapsed().as_secs_f64()
+        );
         let mut trial = Trial::new(root, &student_dir)?;
         prove_in_order(&mut trial, exercises, selected)?;
-        return prove_wrong_answers(&mut trial, &chosen);
+        println!("({:.0} s so far)", started.elapsed().as_secs_f64());
+        prove_wrong_answers(&mut trial, &chosen)?;
+        println!(
+            "check-exercises took {:.0} s.",
+            started.elapsed().as_secs_f64()
+        );
+        return Ok(());
     }
     for (exercise, what, outcome) in &surprises {
         println!(
