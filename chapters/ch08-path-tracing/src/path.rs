@@ -916,31 +916,6 @@ mod tests {
         }
     }
 
-    /// A sampler that counts the numbers drawn from it.
-    #[derive(Clone)]
-    struct Counting {
-        inner: IndependentSampler,
-        drawn: u32,
-    }
-
-    impl Sampler for Counting {
-        fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
-            self.inner.start_pixel_sample(pixel, sample_index);
-        }
-        fn get_pixel_2d(&mut self) -> glam::Vec2 {
-            self.drawn += 2;
-            self.inner.get_pixel_2d()
-        }
-        fn get_1d(&mut self) -> f32 {
-            self.drawn += 1;
-            self.inner.get_1d()
-        }
-        fn get_2d(&mut self) -> glam::Vec2 {
-            self.drawn += 2;
-            self.inner.get_2d()
-        }
-    }
-
     #[test]
     fn exercise_nee_light_sample_draws_only_what_it_needs() {
         // One light to pick from: nothing to choose, so only the point on it is drawn.
@@ -954,17 +929,18 @@ mod tests {
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
             };
-            let mut sampler = Counting {
-                inner: IndependentSampler::new(3),
-                drawn: 0,
-            };
+            let tally = crate::dimensions::DimensionTally::default();
+            let mut sampler =
+                crate::dimensions::CountingSampler::new(IndependentSampler::new(3), &tally);
             sampler.start_pixel_sample(UVec2::ZERO, 0);
             let mut counters = SampleCounters::default();
             tracer.light_sample(&bsdf, -ray.dir, 0.0, &mut sampler, &mut counters);
             assert!(
-                sampler.drawn == 2,
-                "light_sample: with a single light to pick from, one light sample drew {}                  numbers; the pick needs no number then (a scene pays only for what it has),                  and the point on the light needs two",
-                sampler.drawn
+                sampler.drawn() == 2,
+                "light_sample: with a single light to pick from, one light sample drew {} \
+                 numbers; the pick needs no number then (a scene pays only for what it has), \
+                 and the point on the light needs two",
+                sampler.drawn()
             );
         });
     }
