@@ -112,6 +112,21 @@ mod tests {
         Some(format!("the time should be {expected}: {why}"))
     }
 
+    /// Fails, saying what is wrong, if `time_at` of the shutter open from `open` to `close`
+    /// is wrong at any of `us`.
+    fn check_time_at(open: f32, close: f32, us: &[f32]) {
+        let shutter = Shutter::new(open, close).unwrap();
+        for &u in us {
+            let time = shutter.time_at(u);
+            if let Some(mistake) = time_at_mistake(&shutter, u, time) {
+                panic!(
+                    "Shutter::time_at: the shutter open from {open} to {close} and u = {u} \
+                     gave the time {time}, but {mistake}"
+                );
+            }
+        }
+    }
+
     #[test]
     fn exercise_time_at_maps_u_onto_the_interval() {
         for (open, close) in [
@@ -121,16 +136,7 @@ mod tests {
             (0.0, 1.0),
             (3.0, 3.0),
         ] {
-            let shutter = Shutter::new(open, close).unwrap();
-            for u in [0.0, 0.1, 0.5, 0.75, 0.999] {
-                let time = shutter.time_at(u);
-                if let Some(mistake) = time_at_mistake(&shutter, u, time) {
-                    panic!(
-                        "Shutter::time_at: the shutter open from {open} to {close} and u = {u} \
-                         gave the time {time}, but {mistake}"
-                    );
-                }
-            }
+            check_time_at(open, close, &[0.0, 0.1, 0.5, 0.75, 0.999]);
         }
     }
 
@@ -143,16 +149,7 @@ mod tests {
             (-1.989_266, 0.001_094_891_6),
             (1e7, 1e7 + 3.0),
         ] {
-            let shutter = Shutter::new(open, close).unwrap();
-            for u in [0.0, 0.3, 1.0 - f32::EPSILON / 2.0, 1.0] {
-                let time = shutter.time_at(u);
-                if let Some(mistake) = time_at_mistake(&shutter, u, time) {
-                    panic!(
-                        "Shutter::time_at: the shutter open from {open} to {close} and u = {u} \
-                         gave the time {time}, but {mistake}"
-                    );
-                }
-            }
+            check_time_at(open, close, &[0.0, 0.3, 1.0 - f32::EPSILON / 2.0, 1.0]);
         }
     }
 
