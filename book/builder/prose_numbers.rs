@@ -286,10 +286,12 @@ fn numbers_in_line(line: &str) -> Vec<String> {
             notable = true;
         }
         // Part of a longer name or version (`1.2.3`, `x86_64`): skip the whole run.
-        let continues = bytes
-            .get(at)
-            .is_some_and(|&b| b.is_ascii_alphabetic() || b == b'_')
-            && !text.ends_with('%');
+        let continues = !text.ends_with('%')
+            && bytes.get(at).is_some_and(|&b| {
+                b.is_ascii_alphabetic()
+                    || b == b'_'
+                    || (b == b'.' && bytes.get(at + 1).is_some_and(u8::is_ascii_digit))
+            });
         if notable && !continues {
             found.push(text);
         }
