@@ -455,3 +455,48 @@ fn wider_tent(out: &Path) -> anyhow::Result<()> {
     write_text(&out.join("mitsuba_wider_tent.md"), &text)?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use common::metrics::ConvergenceRecord;
+
+    #[test]
+    fn the_fitted_slope_of_a_power_law_is_its_exponent() {
+        let points: Vec<(f64, f64)> = [1.0, 4.0, 16.0, 64.0]
+            .iter()
+            .map(|&n: &f64| (n, 3.0 * n.powf(-1.5)))
+            .collect();
+        assert!((log_log_slope(&points) + 1.5).abs() < 1e-12);
+        // A zero error (an exact estimate) has no logarithm and is left out.
+        let with_zero = [(1.0, 1.0), (2.0, 0.5), (4.0, 0.0)];
+        assert!((log_log_slope(&with_zero) + 1.0).abs() < 1e-12);
+        assert_eq!(log_log_slope(&[(1.0, 1.0)]), 0.0);
+    }
+
+    #[test]
+    fn the_convergence_table_says_what_a_doubling_divides_the_error_by() {
+        let record = |technique: &str, spp: u64, rmse: f64| ConvergenceRecord {
+            technique: technique.to_string(),
+            spp,
+            seconds: spp as f64,
+            rmse,
+            relmse: rmse,
+        };
+        let records = [
+            record("random", 1, 0.4),
+            record("random", 4, 0.2),
+            record("random", 16, 0.1),
+        ];
+        let table = convergence_table(&records);
+        let row = table
+            .lines()
+            .find(|l| l.starts_with("| random"))
+            .expect("a row for the random sampler");
+        assert!(
+            row.contains("| -0.50 | 1.41 | -0.50 | 1.41 |"),
+            "RMSE halving per 4x samples is a slope of -1/2, divided by sqrt 2 per doubling: {row}"
+        );
+        assert!(row.contains("1.00e-1 at 16 spp"), "{row}");
+    }
+}

@@ -574,4 +574,44 @@ mod tests {
         let back = project(&camera, ray.at(5.0)).unwrap();
         assert!((back - p_film).length() < 1e-3, "{back}");
     }
+
+    #[test]
+    fn the_convergence_sentence_words_the_comparison_from_the_numbers() {
+        let record = |warp: LensWarp, spp: u64, rmse: f64| common::metrics::ConvergenceRecord {
+            technique: warp.name().to_string(),
+            spp,
+            seconds: spp as f64,
+            rmse,
+            relmse: rmse,
+        };
+        let run = |naive_last: f64| {
+            convergence_sentence(&[
+                record(LensWarp::Naive, 1, 0.8),
+                record(LensWarp::Naive, 16, naive_last),
+                record(LensWarp::Polar, 1, 0.8),
+                record(LensWarp::Polar, 16, 0.2),
+                record(LensWarp::Concentric, 1, 0.8),
+                record(LensWarp::Concentric, 16, 0.25),
+            ])
+        };
+        assert!(
+            run(0.4).contains("0.400, higher than the polar"),
+            "{}",
+            run(0.4)
+        );
+        assert!(
+            run(0.1).contains("0.100, lower than the polar"),
+            "{}",
+            run(0.1)
+        );
+        assert!(run(0.22).contains("between the polar"), "{}", run(0.22));
+        assert!(run(0.4).contains("would be divided by 4.0"), "{}", run(0.4));
+    }
+
+    #[test]
+    fn the_circle_of_confusion_table_reports_the_largest_difference() {
+        let table = circle_of_confusion_table(&[(2.0, 10.5), (4.0, 4.75)], |d| 20.0 / d, 0.1, 5.0);
+        assert!(table.contains("| 2 | 10.00 | 10.50 | +0.5000 |"), "{table}");
+        assert!(table.contains("differ by at most 0.5000 pixels"), "{table}");
+    }
 }
