@@ -612,3 +612,67 @@ fn time_to_error(records: &[common::metrics::ConvergenceRecord]) -> String {
     ));
     text
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use common::metrics::ConvergenceRecord;
+
+    #[test]
+    fn share_differing_counts_pixels_beyond_the_tolerance_in_any_channel() {
+        let a = Image::filled(4, 2, Vec3::splat(0.5));
+        let mut b = a.clone();
+        b.set(0, 0, Vec3::new(0.5, 0.6, 0.5)); // beyond in green only
+        b.set(1, 0, Vec3::splat(0.51)); // within
+        b.set(3, 1, Vec3::splat(0.0)); // beyond in all
+        assert_eq!(share_differing(&a, &b, 0.02), 2.0 / 8.0);
+        assert_eq!(share_differing(&a, &a, 0.0), 0.0);
+    }
+
+    fn record(technique: &str, spp: u64, seconds: f64, rmse: f64) -> ConvergenceRecord {
+        ConvergenceRecord {
+            technique: technique.to_string(),
+            spp,
+            seconds,
+            rmse,
+            relmse: rmse,
+        }
+    }
+
+    #[test]
+    fn time_to_error_is_relative_to_both_and_names_the_quickest_and_the_slowest() {
+        // MSE × seconds: both 1e-2, half 4e-2, fresnel 2.5e-3, at every budget.
+        let records = [
+            record("both", 1, 1.0, 0.1),
+            record("both", 4, 4.0, 0.05),
+            record("half", 1, 0.25, 0.4),
+            record("half", 4, 1.0, 0.2),
+            record("fresnel", 1, 0.25, 0.1),
+            record("fresnel", 4, 1.0, 0.05),
+        ];
+        let text = time_to_error(&records);
+        assert!(text.contains("| both | 1.00 |"), "{text}");
+        assert!(text.contains("| half | 4.00 |"), "{text}");
+        assert!(text.contains("| fresnel | 0.25 |"), "{text}");
+        assert!(
+            text.contains("quickest to a given error is choosing one by the Fresnel term"),
+            "{text}"
+        );
+        assert!(
+            text.contains("slowest choosing one with probability ½"),
+            "{text}"
+        );
+
+        // The words follow the numbers when the order flips.
+        let flipped = [
+            record("both", 1, 1.0, 0.01),
+            record("half", 1, 1.0, 0.2),
+            record("fresnel", 1, 1.0, 0.1),
+        ];
+        let text = time_to_error(&flipped);
+        assert!(
+            text.contains("quickest to a given error is tracing both rays"),
+            "{text}"
+        );
+    }
+}
