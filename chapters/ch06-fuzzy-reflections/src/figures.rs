@@ -204,7 +204,7 @@ fn disc_against_lobe(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> 
             let caption = match fuzz {
                 FuzzMethod::Lobe => format!("cos^n lobe, {}", exponent_label(exponent)),
                 FuzzMethod::Disc => format!(
-                    "empirical disc, radius {:.2} (as wide)",
+                    "empirical disc, radius {:.2} (about as wide)",
                     crate::fuzz::disc_radius_for_exponent(exponent)
                 ),
             };
