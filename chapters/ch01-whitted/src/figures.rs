@@ -443,3 +443,38 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     )?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ray_tree_sentence_says_less_or_more_as_the_numbers_say() {
+        let sentence = ray_tree_sentence(&[("slow", 2.0, 6.0), ("bushy", 1.0, 2048.0)]);
+        assert!(
+            sentence.contains(
+                "the slow scene's tree grew from 2.00 to 6.00 rays per pixel, 3.0 times (less"
+            ),
+            "{sentence}"
+        );
+        assert!(
+            sentence.contains("2048.0 times (more than a tree that doubles)"),
+            "{sentence}"
+        );
+    }
+
+    #[test]
+    fn the_convergence_table_has_a_row_per_record() {
+        let record = |technique: &str, spp| common::metrics::ConvergenceRecord {
+            technique: technique.to_string(),
+            spp,
+            seconds: 0.5,
+            rmse: 0.25,
+            relmse: 0.0625,
+        };
+        let table = convergence_table(&[record("pixel centre", 1), record("regular grid", 4)]);
+        let lines: Vec<&str> = table.lines().collect();
+        assert_eq!(lines.len(), 4, "{table}");
+        assert_eq!(lines[3], "| regular grid | 4 | 0.500 | 2.50e-1 |");
+    }
+}

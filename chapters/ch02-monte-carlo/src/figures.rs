@@ -428,3 +428,52 @@ fn estimators(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     write_text(&out.join("convergence_slopes.md"), &table)?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_chi_square_verdict_names_every_failing_warp() {
+        let none = chi2_verdict(3, &[], 1e-3);
+        assert!(
+            none.contains("3 of the 3 warps tested pass; none fails"),
+            "{none}"
+        );
+        let one = chi2_verdict(3, &["disc-naive (p = 0 in double precision)".into()], 1e-3);
+        assert!(one.contains("2 of the 3") && one.contains("the one that fails is disc-naive"));
+        let two = chi2_verdict(3, &["a".into(), "b".into()], 1e-3);
+        assert!(two.contains("the ones that fail are a, b"), "{two}");
+    }
+
+    #[test]
+    fn the_slope_table_fits_each_strategy_and_marks_an_exact_one() {
+        let records: Vec<ConvergenceRecord> = Strategy::ALL
+            .iter()
+            .flat_map(|strategy| {
+                [4u64, 16, 64].map(|n| {
+                    let rmse = match strategy {
+                        // Error 1/√n, error 1e-9 (rounding), error 1/n.
+                        Strategy::Uniform => 1.0 / (n as f64).sqrt(),
+                        Strategy::Importance => 1e-9,
+                        Strategy::Stratified => 1.0 / n as f64,
+                    };
+                    ConvergenceRecord {
+                        technique: strategy.name().to_string(),
+                        spp: n,
+                        seconds: 1e-6,
+                        rmse,
+                        relmse: rmse * rmse,
+                    }
+                })
+            })
+            .collect();
+        let table = slope_table(&[("f", records)]);
+        let row = table.lines().nth(2).unwrap();
+        assert!(
+            row.starts_with("| f | -0.50 | exact but for rounding"),
+            "{row}"
+        );
+        assert!(row.ends_with("| -1.00 |"), "{row}");
+    }
+}
