@@ -718,3 +718,36 @@ fn static_pinhole(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     )?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn comparative_words_follow_the_printed_numbers() {
+        assert_eq!(lower_or_higher(0.1, 0.2), "lower than");
+        assert_eq!(lower_or_higher(0.2, 0.1), "higher than");
+        // Equal to three decimals, as the sentence prints them.
+        assert_eq!(lower_or_higher(0.1231, 0.1229), "the same as");
+    }
+
+    #[test]
+    fn sample_counts_are_spelled_for_their_number() {
+        assert_eq!(samples_per_pixel(1), "1 sample per pixel");
+        assert_eq!(samples_per_pixel(16), "16 samples per pixel");
+    }
+
+    #[test]
+    fn a_convergence_table_has_a_row_per_record() {
+        let record = ConvergenceRecord {
+            technique: "path".to_string(),
+            spp: 4,
+            seconds: 0.5,
+            rmse: 0.25,
+            relmse: 0.0,
+        };
+        let table = convergence_table(&[record.clone(), record]);
+        assert_eq!(table.lines().count(), 4);
+        assert!(table.contains("| path | 4 | 0.500 | 0.2500 |"), "{table}");
+    }
+}
