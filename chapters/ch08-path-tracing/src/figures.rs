@@ -9,11 +9,18 @@
 //! - NEE, MIS and Russian roulette on the Cornell box (`bsdf-only.png`, `nee.png`, ...,
 //!   `roulette.png`, `convergence.*`) and on Veach's glossy plates (`mis-plates.png`,
 //!   `plates-convergence.*`);
+//! - the numbers each path draws in the agreement scenes (`dimensions.md`), and the static
+//!   pinhole scene timed against chapter 03's tracer (`static-pinhole.md`), for the Speed
+//!   appendix;
 //! - the comparison with Mitsuba 3 (`mitsuba.md` and its images).
+//!
+//! Beside each CSV a small Markdown file (a table or a sentence) holds the numbers the page
+//! quotes, so that the text and the figures always agree.
 //!
 //! The quick level renders thumbnails at few samples, for CI.
 
 use crate::agreement::AGREEMENT;
+use crate::dimensions::render_counted;
 use crate::distribution::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
 use crate::distribution::{DistributionOptions, render_distribution};
 use crate::mis::MisHeuristic;
@@ -24,15 +31,19 @@ use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use common::figure_set::{FigureSet, Level};
+use common::film::PixelBoxFilter;
 use common::image::Image;
 use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence, write_convergence_csv,
+    ConvergenceRecord, Technique, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence,
+    write_convergence_csv,
 };
 use common::output::figures::{Axes, Series, SeriesStyle, comparison_grid, line_plot};
 use common::output::{write_image, write_text};
 use common::render::{Budget, RenderOutput, RenderSettings};
 use common::sampler::IndependentSampler;
+use common::scene::Material;
 use std::path::Path;
+use std::time::Instant;
 
 /// The techniques compared, by name.
 pub fn techniques(file: PathOptions) -> Vec<(&'static str, PathOptions)> {
@@ -169,6 +180,10 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("MIS on the glossy plates", |out| {
         glossy_plates(out, &quality)
     })?;
+    figures.make("dimensions drawn per path", |out| dimensions(out, &quality))?;
+    figures.make("the static pinhole scene against chapter 03", |out| {
+        static_pinhole(out, &quality)
+    })?;
     figures.agreement(&AGREEMENT)?;
     figures.finish()
 }
@@ -184,7 +199,10 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let deepest = quality.level.pick(4, 6);
     let mut csv = String::from("branching,indirect_diffuse,max_depth,rays_per_camera_ray\n");
     let mut series = Vec::new();
-    for (branching, indirect) in [(1, true), (2, true), (4, true), (4, false)] {
+    let configurations = [(1, true), (2, true), (4, true), (4, false)];
+    // rays[configuration][depth - 1], for the Markdown table.
+    let mut rays_table = Vec::new();
+    for (branching, indirect) in configurations {
         let mut points = Vec::new();
         for depth in 1..=deepest {
             let options = DistributionOptions::branching(branching, depth, indirect);
@@ -192,6 +210,7 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
             csv += &format!("{branching},{indirect},{depth},{rays:.2}\n");
             points.push((f64::from(depth), rays));
         }
+        rays_table.push(points.iter().map(|&(_, rays)| rays).collect::<Vec<_>>());
         let label = if indirect {
             format!("k = m = {branching}, indirect diffuse")
         } else {
@@ -200,6 +219,21 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         series.push(Series::new(label, points, SeriesStyle::LineAndPoints));
     }
     write_text(&out.join("ray-tree.csv"), &csv)?;
+    let mut table = format!(
+        "Counted on the Cornell box ({} × {} pixels, 1 sample each), rays of every kind per \
+         camera ray, against the depth limit:\n\n\
+         | `max_depth` | k = m = 1 | k = m = 2 | k = m = 4 | k = m = 4, Cook (no indirect) |\n\
+         |---|---|---|---|---|\n",
+        size.0, size.1
+    );
+    for depth in 1..=deepest {
+        table += &format!("| {depth} |");
+        for column in &rays_table {
+            table += &format!(" {} |", rays_number(column[depth as usize - 1]));
+        }
+        table += "\n";
+    }
+    write_text(&out.join("ray-tree.md"), &table)?;
     let log_y = Axes {
         log_y: true,
         ..Axes::linear(
@@ -215,10 +249,11 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     )?;
 
     let spp = quality.level.pick(16, 256);
+    let share_size = (32, 32);
     let shares = depth_shares(
         scene,
         DistributionOptions::branching(1, 8, true),
-        (32, 32),
+        share_size,
         spp,
         2,
     );
@@ -227,6 +262,24 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         csv += &format!("{depth},{share:.5}\n");
     }
     write_text(&out.join("depth-shares.csv"), &csv)?;
+    let mut table = format!(
+        "Measured on the Cornell box at {} × {} pixels, {}, `max_depth` up to 8, \
+         $k = m = 1$:\n\n| depth |",
+        share_size.0,
+        share_size.1,
+        samples_per_pixel(spp)
+    );
+    for &(depth, _) in &shares {
+        table += &format!(" {depth} |");
+    }
+    table += "\n|---|";
+    table += &"---|".repeat(shares.len());
+    table += "\n| share |";
+    for &(_, share) in &shares {
+        table += &format!(" {share:.3} |");
+    }
+    table += "\n";
+    write_text(&out.join("depth-shares.md"), &table)?;
     let points = shares.iter().map(|&(d, s)| (f64::from(d), s)).collect();
     let log_y = Axes {
         log_y: true,
@@ -285,6 +338,36 @@ fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     ];
     comparison_grid(&out.join("drt-vs-pt.png"), &cells, 2, 3)?;
     eprintln!("drt-vs-pt: {} | {}", cells[0].0, cells[1].0);
+    // The path tracer at the tree's own sample count, to compare one sample with one sample.
+    let paths_at_tree_spp = path_trace(scene, pt_options, size, Budget::Samples(tree.stats.spp), 1);
+    let (tree_error, path_error) = (
+        rmse(&tree.image, &reference),
+        rmse(&paths.image, &reference),
+    );
+    let path_error_per_sample = rmse(&paths_at_tree_spp.image, &reference);
+    let per_sample = |output: &RenderOutput| output.stats.seconds / output.stats.spp.max(1) as f64;
+    write_text(
+        &out.join("drt-vs-pt.md"),
+        &format!(
+            "At {w} × {h} pixels the tree with $k = m = 2$ took {tree_s:.3} s for {tree_spp} \
+             and reached an RMSE of {tree_error:.3} against a path-traced reference of \
+             {reference_spp}. The path tracer, given the same time, took {path_spp} in \
+             {path_s:.3} s and reached {path_error:.3}, {verdict} the tree's. Sample for \
+             sample, the tree's error is {sample_verdict} the path tracer's ({tree_error:.3} \
+             against {path_error_per_sample:.3}, both at {tree_spp}), and one of its samples \
+             cost {cost:.1} times as much as a path.\n",
+            w = size.0,
+            h = size.1,
+            tree_s = tree.stats.seconds,
+            tree_spp = samples_per_pixel(tree.stats.spp),
+            reference_spp = samples_per_pixel(quality.reference_spp),
+            path_spp = samples_per_pixel(paths.stats.spp),
+            path_s = paths.stats.seconds,
+            verdict = lower_or_higher(path_error, tree_error),
+            sample_verdict = lower_or_higher(tree_error, path_error_per_sample),
+            cost = per_sample(&tree) / per_sample(&paths_at_tree_spp).max(f64::MIN_POSITIVE),
+        ),
+    )?;
 
     let runs = vec![
         Technique::new("distribution k=m=1", move |spp| {
@@ -297,6 +380,10 @@ fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let budgets = &quality.budgets[..quality.budgets.len() - 1];
     let records = run_convergence(&runs, budgets, &reference);
     write_convergence_csv(&out.join("drt-vs-pt-convergence.csv"), &records)?;
+    write_text(
+        &out.join("drt-vs-pt-convergence.md"),
+        &convergence_table(&records),
+    )?;
     plot_error_vs_time(
         &out.join("drt-vs-pt-convergence.png"),
         "Cornell box, depth 4: the tree against the path",
@@ -334,8 +421,14 @@ fn cornell_techniques(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         let image = render(scene, options, size, 16, 1);
         write_image(&out.join(format!("{name}.png")), &image)?;
     }
+    let roulette_from = match file.options.rr_depth {
+        Some(depth) => format!("roulette from {depth}"),
+        None => "roulette as in the file".to_string(),
+    };
+    let mut roulette_md =
+        String::from("| 64 samples per pixel | seconds | RMSE |\n|---|---|---|\n");
     let roulette: Vec<(String, Image)> = [
-        ("roulette from 5", file.options),
+        (roulette_from.as_str(), file.options),
         ("no roulette", {
             PathOptions {
                 rr_depth: None,
@@ -346,15 +439,17 @@ fn cornell_techniques(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     .into_iter()
     .map(|(name, options)| {
         let output = path_trace(scene, options, size, Budget::Samples(64), 1);
+        let error = rmse(&output.image, &reference);
         let caption = format!(
-            "{name}: 64 spp, {:.2} s, RMSE {:.4}",
+            "{name}: 64 spp, {:.2} s, RMSE {error:.4}",
             output.stats.seconds,
-            rmse(&output.image, &reference)
         );
+        roulette_md += &format!("| {name} | {:.3} | {error:.4} |\n", output.stats.seconds);
         (caption, output.image)
     })
     .collect();
     comparison_grid(&out.join("roulette.png"), &roulette, 2, 3)?;
+    write_text(&out.join("roulette.md"), &roulette_md)?;
     let runs: Vec<Technique> = techniques
         .iter()
         .map(|&(name, options)| {
@@ -363,6 +458,7 @@ fn cornell_techniques(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         .collect();
     let records = run_convergence(&runs, quality.budgets, &reference);
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
+    write_text(&out.join("convergence.md"), &convergence_table(&records))?;
     plot_error_vs_time(
         &out.join("convergence.png"),
         "Cornell box: error against time",
@@ -416,12 +512,39 @@ fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     ];
     let spp = 4;
     let mut cells = Vec::new();
+    let mut errors = Vec::new();
     for &(name, options) in &variants {
         let image = render(scene, options, size, spp, 1);
         let error = rmse(&image, &reference);
         eprintln!("plates {name}: RMSE {error:.4} at {spp} spp");
         cells.push((format!("{name}, {spp} spp, RMSE {error:.3}"), image));
+        errors.push((name, error));
     }
+    let mut table = format!(
+        "At {spp} samples per pixel ({} × {} pixels), against a reference of {}:\n\n\
+         | technique | RMSE |\n|---|---|\n",
+        size.0,
+        size.1,
+        samples_per_pixel(quality.reference_spp)
+    );
+    for &(name, error) in &errors {
+        table += &format!("| {name} | {error:.3} |\n");
+    }
+    let error_of = |wanted: &str| {
+        errors
+            .iter()
+            .find(|(name, _)| *name == wanted)
+            .map_or(f64::NAN, |&(_, error)| error)
+    };
+    let (balance, power) = (error_of("MIS, balance"), error_of("MIS, power"));
+    let (bsdf, light) = (error_of("BSDF sampling"), error_of("light sampling"));
+    table += &format!(
+        "\nHere the balance heuristic's error is {} the power heuristic's, and the better of \
+         the two MIS renders has an error {} that of the better single technique.\n",
+        lower_or_higher(balance, power),
+        lower_or_higher(balance.min(power), bsdf.min(light)),
+    );
+    write_text(&out.join("mis-plates.md"), &table)?;
     cells.push((
         format!("reference, {} spp", quality.reference_spp),
         reference.clone(),
@@ -435,6 +558,10 @@ fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         .collect();
     let records = run_convergence(&runs, quality.budgets, &reference);
     write_convergence_csv(&out.join("plates-convergence.csv"), &records)?;
+    write_text(
+        &out.join("plates-convergence.md"),
+        &convergence_table(&records),
+    )?;
     plot_error_vs_time(
         &out.join("plates-convergence.png"),
         "Glossy plates: error against time",
@@ -443,3 +570,184 @@ fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     Ok(())
 }
 // ANCHOR_END: glossy_plates
+
+/// "lower than", "higher than" or "the same as", for `a` compared with `b`, as printed to
+/// three decimals: the generated sentences say what the numbers beside them say.
+fn lower_or_higher(a: f64, b: f64) -> &'static str {
+    let (a, b) = ((a * 1e3).round(), (b * 1e3).round());
+    if a < b {
+        "lower than"
+    } else if a > b {
+        "higher than"
+    } else {
+        "the same as"
+    }
+}
+
+/// "1 sample per pixel", "4 samples per pixel".
+fn samples_per_pixel(spp: u64) -> String {
+    if spp == 1 {
+        "1 sample per pixel".to_string()
+    } else {
+        format!("{spp} samples per pixel")
+    }
+}
+
+/// A count of rays per camera ray, to two or three significant figures.
+fn rays_number(rays: f64) -> String {
+    if rays < 10.0 {
+        format!("{rays:.1}")
+    } else {
+        format!("{rays:.0}")
+    }
+}
+
+/// The error-against-time records as a Markdown table, one row per technique and budget.
+fn convergence_table(records: &[ConvergenceRecord]) -> String {
+    let mut table =
+        String::from("| technique | samples per pixel | seconds | RMSE |\n|---|---|---|---|\n");
+    for record in records {
+        table += &format!(
+            "| {} | {} | {:.3} | {:.4} |\n",
+            record.technique, record.spp, record.seconds, record.rmse
+        );
+    }
+    table
+}
+
+/// How many numbers a path draws on average in the agreement scenes, counted by
+/// [`CountingSampler`](crate::dimensions::CountingSampler) (`dimensions.md`).
+fn dimensions(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let mut table = String::from(
+        "| scene | `max_depth` | numbers drawn per path, mean | most in one path |\n|---|---|---|---|\n",
+    );
+    for name in ["cornell-box", "point-and-sky"] {
+        let file = load(&format!("{name}.xml"))?;
+        let scene = &file.world;
+        let size = quality.size(scene, (32, 32));
+        let settings = RenderSettings::new(size.0, size.1, quality.level.pick(4, 16));
+        let (_, stats) = render_counted(
+            true,
+            scene,
+            Method::new(file.options),
+            &Lens::PINHOLE,
+            &settings,
+            &IndependentSampler::new(1),
+            &box_filter(),
+        );
+        let stats = stats.expect("counted");
+        table += &format!(
+            "| `{name}.xml` | {} | {:.1} | {} |\n",
+            file.options.max_depth, stats.mean, stats.max
+        );
+    }
+    write_text(&out.join("dimensions.md"), &table)?;
+    Ok(())
+}
+
+/// What the path tracer's generality costs where it is not used: chapter 01's Cornell box
+/// with matte spheres at `max_depth` 2, where chapter 03's tracer and this one trace the same
+/// rays, timed alternately on one thread (`static-pinhole.md`; `benches/static_pinhole.rs`
+/// measures the same with more care).
+fn static_pinhole(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let side = quality.level.pick(32, 128);
+    let spp = 4;
+    let runs = quality.level.pick(3, 15);
+    let mut scene = ch01_whitted::scenes::Builtin::Cornell.build(2);
+    for surface in &mut scene.surfaces {
+        if matches!(
+            surface.material,
+            Material::Mirror { .. } | Material::Dielectric { .. }
+        ) {
+            surface.material = Material::diffuse(glam::Vec3::splat(0.73));
+        }
+    }
+    let settings = RenderSettings {
+        threads: Some(1),
+        ..RenderSettings::new(side, side, spp)
+    };
+    let world = MotionScene::still(scene.clone());
+    let method = Method::new(PathOptions::with_depth(2));
+    let (mut whitted, mut path) = (Vec::new(), Vec::new());
+    // One untimed run of each first, so that neither pays for cold caches.
+    for run in 0..=runs {
+        let started = Instant::now();
+        let _ = ch03_anti_aliasing::render_with(
+            &scene,
+            &settings,
+            &IndependentSampler::new(1),
+            &PixelBoxFilter,
+        );
+        let whitted_seconds = started.elapsed().as_secs_f64();
+        let started = Instant::now();
+        let _ = render_with(
+            &world,
+            method,
+            &Lens::PINHOLE,
+            &settings,
+            &IndependentSampler::new(1),
+            &PixelBoxFilter,
+        );
+        let path_seconds = started.elapsed().as_secs_f64();
+        if run > 0 {
+            whitted.push(whitted_seconds);
+            path.push(path_seconds);
+        }
+    }
+    let fastest = |times: &[f64]| times.iter().copied().fold(f64::INFINITY, f64::min);
+    let median = |times: &mut Vec<f64>| {
+        times.sort_by(f64::total_cmp);
+        times[times.len() / 2]
+    };
+    let (whitted_fastest, path_fastest) = (fastest(&whitted), fastest(&path));
+    let (whitted_median, path_median) = (median(&mut whitted), median(&mut path));
+    write_text(
+        &out.join("static-pinhole.md"),
+        &format!(
+            "At {side} × {side} pixels, {spp} samples per pixel, on one thread, the fastest of \
+             {runs} alternating runs took {:.1} ms with chapter 03's tracer and {:.1} ms with \
+             this chapter's: {:.2} times as long (the ratio of the medians, {:.1} ms and \
+             {:.1} ms: {:.2}).\n",
+            whitted_fastest * 1e3,
+            path_fastest * 1e3,
+            path_fastest / whitted_fastest,
+            whitted_median * 1e3,
+            path_median * 1e3,
+            path_median / whitted_median,
+        ),
+    )?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn comparative_words_follow_the_printed_numbers() {
+        assert_eq!(lower_or_higher(0.1, 0.2), "lower than");
+        assert_eq!(lower_or_higher(0.2, 0.1), "higher than");
+        // Equal to three decimals, as the sentence prints them.
+        assert_eq!(lower_or_higher(0.1231, 0.1229), "the same as");
+    }
+
+    #[test]
+    fn sample_counts_are_spelled_for_their_number() {
+        assert_eq!(samples_per_pixel(1), "1 sample per pixel");
+        assert_eq!(samples_per_pixel(16), "16 samples per pixel");
+    }
+
+    #[test]
+    fn a_convergence_table_has_a_row_per_record() {
+        let record = ConvergenceRecord {
+            technique: "path".to_string(),
+            spp: 4,
+            seconds: 0.5,
+            rmse: 0.25,
+            relmse: 0.0,
+        };
+        let table = convergence_table(&[record.clone(), record]);
+        assert_eq!(table.lines().count(), 4);
+        assert!(table.contains("| path | 4 | 0.500 | 0.2500 |"), "{table}");
+    }
+}
