@@ -440,7 +440,8 @@ impl Events {
                     sent.params.request.url.clone(),
                 );
             }
-            Event::NetworkLoadingFailed(failed) => {
+            // A load cancelled because the page went on to the next one is no fault of the page.
+            Event::NetworkLoadingFailed(failed) if failed.params.canceled != Some(true) => {
                 let url = self
                     .requests
                     .get(&failed.params.request_id)
