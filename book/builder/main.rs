@@ -8,6 +8,8 @@
 //!   solved, in order, and refuses its recorded wrong answers (CI runs it).
 //! - `cargo run -p book -- progress` (in the student edition) lists what is done and what next.
 //! - `cargo run -p book -- checkpoint NAME --from WORKBOOK` puts one reference solution back.
+//! - `cargo run -p book -- check-prose` finds numbers typed into the pages that a run measured
+//!   (the site build runs it too).
 //! - `cargo run -p book -- check-site` opens every page of the built site in headless Chromium,
 //!   offline, and fails on broken images, links and formulas, script errors, or a search that
 //!   finds nothing; it leaves a screenshot of every page (CI runs it).
@@ -22,6 +24,7 @@ mod lab_report;
 mod mdbook_log;
 mod offline_check;
 mod progress;
+mod prose_numbers;
 mod site;
 mod site_check;
 mod solution_markers;
@@ -78,6 +81,9 @@ enum Task {
         #[arg(long, requires = "site")]
         full: bool,
     },
+    /// Find numbers in the pages' prose that should come from a generated file (the site build
+    /// runs this check first).
+    CheckProse,
     /// Put the reference solution of one exercise back (your version is kept), to go on.
     Checkpoint {
         /// The exercise, as `exercises` names it: `ch01-refract`.
@@ -156,6 +162,14 @@ fn main() -> Result<()> {
                 let front_page = lab_report::build(&root, &exercises, &statuses, full)?;
                 println!("\nYour site: open {}", front_page.display());
             }
+            Ok(())
+        }
+        Some(Task::CheckProse) => {
+            prose_numbers::check(&root, &root.join("book").join("src"))?;
+            println!(
+                "No page's prose holds a number that is not listed in {}.",
+                prose_numbers::ALLOWED_PATH
+            );
             Ok(())
         }
         Some(Task::Checkpoint { name, from }) => {

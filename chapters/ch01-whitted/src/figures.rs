@@ -1,5 +1,10 @@
 //! The chapter's figures: what recursion adds, what one ray per pixel misses, Fresnel's
-//! curves, how the ray tree grows, and error against time.
+//! curves, how the ray tree grows, and error against time; and, for the appendices, the
+//! agreement with Mitsuba 3 and the tracer's speed.
+//!
+//! Every number the book's prose quotes from a run is written here into a small Markdown file
+//! (`ray_tree.md`, `convergence.md`, `speed.md`, `mitsuba-noise.md`) that the pages include,
+//! so the text always matches the figures beside it, quick or full.
 
 use crate::agreement::AGREEMENT;
 use crate::optics::fresnel_dielectric;
@@ -14,6 +19,7 @@ use common::metrics::{
 use common::output::figures::{
     Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
 };
+use common::output::write_text;
 use common::render::RenderSettings;
 use glam::Vec2;
 use std::path::Path;
@@ -60,6 +66,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
         convergence(out, &quality)
     })?;
     figures.agreement(&AGREEMENT)?;
+    figures.make("the Mitsuba noise sentence", mitsuba_noise)?;
     figures.finish()
 }
 
@@ -96,6 +103,7 @@ fn aliasing(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
     let full = render(&scene, &quality.render.settings(1), PixelPattern::Centre, 0)
         .expect("centre sampling always renders");
+    write_speed(out, &full.stats)?;
     comparison_grid(
         &out.join("render.png"),
         &[("one ray per pixel".to_string(), full.image)],
@@ -229,12 +237,13 @@ fn fresnel_curves(out: &Path) -> anyhow::Result<()> {
             })
             .collect()
     };
+    let critical_degrees = (1.0f32 / 1.5).asin().to_degrees();
     let series = vec![
         Series::new("air to water (1.33)", curve(1.0, 1.33), SeriesStyle::Line),
         Series::new("air to glass (1.5)", curve(1.0, 1.5), SeriesStyle::Line),
         Series::new("air to diamond (2.42)", curve(1.0, 2.42), SeriesStyle::Line),
         Series::new(
-            "glass to air: total reflection past 41.8°",
+            format!("glass to air: total reflection past {critical_degrees:.1}°"),
             curve(1.5, 1.0),
             SeriesStyle::Line,
         ),
@@ -259,8 +268,9 @@ fn ray_tree(out: &Path, level: Level) -> anyhow::Result<()> {
     let (width, height) = level.pick((32, 24), (128, 96));
     let settings = RenderSettings::new(width, height, 1);
     let mut series = Vec::new();
+    let mut growth = Vec::new();
     for builtin in Builtin::ALL {
-        let points = (1..=12)
+        let points: Vec<(f64, f64)> = (1..=12)
             .map(|max_depth| {
                 let scene = builtin.build(max_depth);
                 let stats = render_with(&scene, &settings, &CentreSampler::new(0)).stats;
@@ -270,12 +280,20 @@ fn ray_tree(out: &Path, level: Level) -> anyhow::Result<()> {
                 )
             })
             .collect();
+        let at = |max_depth: f64| {
+            points
+                .iter()
+                .find(|p| p.0 == max_depth)
+                .map_or(f64::NAN, |p| p.1)
+        };
+        growth.push((builtin.name(), at(2.0), at(12.0)));
         series.push(Series::new(
             builtin.name(),
             points,
             SeriesStyle::LineAndPoints,
         ));
     }
+    write_text(&out.join("ray_tree.md"), &ray_tree_sentence(&growth))?;
     let axes = Axes {
         log_y: true,
         ..Axes::linear(
@@ -290,6 +308,95 @@ fn ray_tree(out: &Path, level: Level) -> anyhow::Result<()> {
         &series,
     )?;
     Ok(())
+}
+
+/// How much the ray tree grew from `max_depth` 2 to 12 in each scene, against the growth of a
+/// tree that splits in two at every level: `(scene, rays per pixel at 2, rays per pixel at 12)`.
+fn ray_tree_sentence(growth: &[(&str, f64, f64)]) -> String {
+    let full = 2f64.powi(10);
+    let parts: Vec<String> = growth
+        .iter()
+        .map(|&(name, shallow, deep)| {
+            let factor = deep / shallow;
+            let word = if factor < full { "less" } else { "more" };
+            format!(
+                "the {name} scene's tree grew from {shallow:.2} to {deep:.2} rays per pixel, \
+                 {factor:.1} times ({word} than a tree that doubles)"
+            )
+        })
+        .collect();
+    format!(
+        "From `max_depth` 2 to 12 a tree that split in two at every level would grow \
+         {full:.0} times. In the runs behind the plot above, {}.\n",
+        parts.join("; ")
+    )
+}
+
+/// The speed of the default render, for the Speed appendix.
+fn write_speed(out: &Path, stats: &common::render::RenderStats) -> anyhow::Result<()> {
+    let pixels = u64::from(stats.width) * u64::from(stats.height);
+    let text = format!(
+        "The default scene at {} x {} pixels, one ray through each pixel centre and \
+         `max_depth` {}, cast {} rays ({:.2} per pixel, shadow rays included) in {:.3} s: \
+         {:.2} million rays per second, on the machine and with the build that made these \
+         figures.\n",
+        stats.width,
+        stats.height,
+        crate::scenes::DEFAULT_MAX_DEPTH,
+        stats.rays,
+        stats.rays as f64 / pixels as f64,
+        stats.seconds,
+        stats.rays_per_second / 1e6,
+    );
+    write_text(&out.join("speed.md"), &text)?;
+    Ok(())
+}
+
+/// Whether our render is less noisy than Mitsuba's second render at the same sample count, on
+/// each scene of the agreement set: the comparative words of the Mitsuba appendix.
+fn mitsuba_noise(out: &Path) -> anyhow::Result<()> {
+    let mut lower = Vec::new();
+    let mut not_lower = Vec::new();
+    for scene in AGREEMENT.scenes {
+        let (_, _, agreement) = AGREEMENT.stored(scene).map_err(anyhow::Error::msg)?;
+        if agreement.ours.rmse < agreement.other.rmse {
+            lower.push(scene.name);
+        } else {
+            not_lower.push(scene.name);
+        }
+    }
+    let list = |names: &[&str]| names.join(", ");
+    let text = match (lower.is_empty(), not_lower.is_empty()) {
+        (false, true) => format!(
+            "On every scene ({}) our RMSE is lower than that of Mitsuba's second render.\n",
+            list(&lower)
+        ),
+        (true, false) => format!(
+            "On every scene ({}) our RMSE is no lower than that of Mitsuba's second render.\n",
+            list(&not_lower)
+        ),
+        _ => format!(
+            "Our RMSE is lower than that of Mitsuba's second render on {} and no lower on {}.\n",
+            list(&lower),
+            list(&not_lower)
+        ),
+    };
+    write_text(&out.join("mitsuba-noise.md"), &text)?;
+    Ok(())
+}
+
+/// The error-against-time records as a table for the page.
+fn convergence_table(records: &[common::metrics::ConvergenceRecord]) -> String {
+    let mut table = String::from(
+        "| technique | camera rays per pixel | seconds | RMSE |\n|---|---:|---:|---:|\n",
+    );
+    for record in records {
+        table.push_str(&format!(
+            "| {} | {} | {:.3} | {:.2e} |\n",
+            record.technique, record.spp, record.seconds, record.rmse
+        ));
+    }
+    table
 }
 
 /// Error against time: more rays at the pixel centre buy nothing; a grid converges.
@@ -323,6 +430,7 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     ];
     let records = run_convergence(&techniques, quality.render.budgets, &reference);
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
+    write_text(&out.join("convergence.md"), &convergence_table(&records))?;
     plot_error_vs_time(
         &out.join("convergence.png"),
         "Error against time (spheres)",
@@ -334,4 +442,39 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &records,
     )?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ray_tree_sentence_says_less_or_more_as_the_numbers_say() {
+        let sentence = ray_tree_sentence(&[("slow", 2.0, 6.0), ("bushy", 1.0, 2048.0)]);
+        assert!(
+            sentence.contains(
+                "the slow scene's tree grew from 2.00 to 6.00 rays per pixel, 3.0 times (less"
+            ),
+            "{sentence}"
+        );
+        assert!(
+            sentence.contains("2048.0 times (more than a tree that doubles)"),
+            "{sentence}"
+        );
+    }
+
+    #[test]
+    fn the_convergence_table_has_a_row_per_record() {
+        let record = |technique: &str, spp| common::metrics::ConvergenceRecord {
+            technique: technique.to_string(),
+            spp,
+            seconds: 0.5,
+            rmse: 0.25,
+            relmse: 0.0625,
+        };
+        let table = convergence_table(&[record("pixel centre", 1), record("regular grid", 4)]);
+        let lines: Vec<&str> = table.lines().collect();
+        assert_eq!(lines.len(), 4, "{table}");
+        assert_eq!(lines[3], "| regular grid | 4 | 0.500 | 2.50e-1 |");
+    }
 }

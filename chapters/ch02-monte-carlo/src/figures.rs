@@ -1,9 +1,14 @@
 //! The chapter's figures: warps side by side, histograms against densities, RANDU's planes,
 //! generator speed and evenness, the chi-square table, and error against n and against time.
+//!
+//! Every number the page quotes from a run is written here into a small Markdown file
+//! (`generators.md`, `chi2.md`, `chi2-verdict.md`, `convergence_slopes.md`) that the page
+//! includes, so the text always matches the figures, quick or full.
 
 use crate::chi2::{Chi2Result, chi2_test, significance_level};
 use crate::estimator::{
-    Strategy, convergence, peaked_quartic, save_convergence, sky_irradiance, x_squared,
+    Strategy, convergence, convergence_rate, peaked_quartic, save_convergence, sky_irradiance,
+    x_squared,
 };
 use crate::rng::{
     Generator, consecutive_triples, fraction_on_randu_planes, numbers_per_second,
@@ -11,6 +16,7 @@ use crate::rng::{
 };
 use crate::warps::{Domain, Warp, WarpPoint};
 use common::figure_set::{FigureSet, Level};
+use common::metrics::ConvergenceRecord;
 use common::output::figures::{histogram_vs_pdf, scatter_plot};
 use common::output::write_text;
 use common::sampler::unit_f32;
@@ -309,6 +315,7 @@ fn chi2_table(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let rows = chi2_rows(quality.chi2_samples);
     let level = significance_level(rows.len(), 0.01);
     let mut csv = String::from("warp,statistic,dof,p_value\n");
+    let mut failing = Vec::new();
     let mut table = format!(
         "| warp | X² | degrees of freedom | p-value | verdict at {level:.1e} |\n|---|---|---|---|---|\n"
     );
@@ -320,6 +327,11 @@ fn chi2_table(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         let verdict = if result.p_value >= level {
             "passes"
         } else {
+            failing.push(if result.p_value > 0.0 {
+                format!("{name} (p = {:.1e})", result.p_value)
+            } else {
+                format!("{name} (p = 0 in double precision)")
+            });
             "**fails**"
         };
         table.push_str(&format!(
@@ -333,25 +345,135 @@ fn chi2_table(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     }
     write_text(&out.join("chi2.csv"), &csv)?;
     write_text(&out.join("chi2.md"), &table)?;
+    write_text(
+        &out.join("chi2-verdict.md"),
+        &chi2_verdict(rows.len(), &failing, level),
+    )?;
     Ok(())
+}
+
+/// The chi-square table in one sentence: how many warps pass, and which fail.
+fn chi2_verdict(tested: usize, failing: &[String], level: f64) -> String {
+    let passing = tested - failing.len();
+    let failed = match failing {
+        [] => "none fails".to_string(),
+        [one] => format!("the one that fails is {one}"),
+        many => format!("the ones that fail are {}", many.join(", ")),
+    };
+    format!(
+        "At the corrected significance level {level:.1e}, {passing} of the {tested} warps tested \
+         pass; {failed}.\n"
+    )
+}
+
+/// The fitted slope of each strategy's error against n on each integrand, as a Markdown table:
+/// the convergence rates the plots show.
+fn slope_table(rows: &[(&str, Vec<ConvergenceRecord>)]) -> String {
+    let mut table = String::from("| integrand |");
+    let mut rule = String::from("|---|");
+    for strategy in Strategy::ALL {
+        table.push_str(&format!(" {} |", strategy.name()));
+        rule.push_str("---:|");
+    }
+    table.push('\n');
+    table.push_str(&rule);
+    table.push('\n');
+    for (integrand, records) in rows {
+        table.push_str(&format!("| {integrand} |"));
+        for strategy in Strategy::ALL {
+            let name = strategy.name();
+            // An estimator whose every term equals the integral leaves only the rounding of
+            // floating point: a relative error near the precision of an f32, with no slope.
+            let worst_relative = records
+                .iter()
+                .filter(|record| record.technique == name)
+                .map(|record| record.relmse.sqrt())
+                .fold(0.0, f64::max);
+            let slope = convergence_rate(records, name);
+            if worst_relative < 1e-5 {
+                table.push_str(&format!(
+                    " exact but for rounding (relative error at most {worst_relative:.0e}) |"
+                ));
+            } else {
+                table.push_str(&format!(" {slope:.2} |"));
+            }
+        }
+        table.push('\n');
+    }
+    table
 }
 
 /// Error against n and against time for uniform, importance and stratified sampling.
 fn estimators(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let counts = crate::estimator::SAMPLE_COUNTS;
     let smooth = x_squared();
-    let records = convergence(&smooth, &Strategy::ALL, &counts, quality.repetitions, 11);
-    save_convergence(out, "convergence_smooth", smooth.formula, &records)?;
+    let smooth_records = convergence(&smooth, &Strategy::ALL, &counts, quality.repetitions, 11);
+    save_convergence(out, "convergence_smooth", smooth.formula, &smooth_records)?;
     let peaked = peaked_quartic();
-    let records = convergence(&peaked, &Strategy::ALL, &counts, quality.repetitions, 12);
-    save_convergence(out, "convergence_peaked", peaked.formula, &records)?;
+    let peaked_records = convergence(&peaked, &Strategy::ALL, &counts, quality.repetitions, 12);
+    save_convergence(out, "convergence_peaked", peaked.formula, &peaked_records)?;
     let sky = sky_irradiance();
-    let records = convergence(&sky, &Strategy::ALL, &counts, quality.repetitions, 13);
+    let sky_records = convergence(&sky, &Strategy::ALL, &counts, quality.repetitions, 13);
     save_convergence(
         out,
         "convergence_sky",
         "Irradiance under a uniform sky",
-        &records,
+        &sky_records,
     )?;
+    let table = slope_table(&[
+        (smooth.formula, smooth_records),
+        (peaked.formula, peaked_records),
+        ("irradiance under a uniform sky", sky_records),
+    ]);
+    write_text(&out.join("convergence_slopes.md"), &table)?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_chi_square_verdict_names_every_failing_warp() {
+        let none = chi2_verdict(3, &[], 1e-3);
+        assert!(
+            none.contains("3 of the 3 warps tested pass; none fails"),
+            "{none}"
+        );
+        let one = chi2_verdict(3, &["disc-naive (p = 0 in double precision)".into()], 1e-3);
+        assert!(one.contains("2 of the 3") && one.contains("the one that fails is disc-naive"));
+        let two = chi2_verdict(3, &["a".into(), "b".into()], 1e-3);
+        assert!(two.contains("the ones that fail are a, b"), "{two}");
+    }
+
+    #[test]
+    fn the_slope_table_fits_each_strategy_and_marks_an_exact_one() {
+        let records: Vec<ConvergenceRecord> = Strategy::ALL
+            .iter()
+            .flat_map(|strategy| {
+                [4u64, 16, 64].map(|n| {
+                    let rmse = match strategy {
+                        // Error 1/√n, error 1e-9 (rounding), error 1/n.
+                        Strategy::Uniform => 1.0 / (n as f64).sqrt(),
+                        Strategy::Importance => 1e-9,
+                        Strategy::Stratified => 1.0 / n as f64,
+                    };
+                    ConvergenceRecord {
+                        technique: strategy.name().to_string(),
+                        spp: n,
+                        seconds: 1e-6,
+                        rmse,
+                        relmse: rmse * rmse,
+                    }
+                })
+            })
+            .collect();
+        let table = slope_table(&[("f", records)]);
+        let row = table.lines().nth(2).unwrap();
+        assert!(
+            row.starts_with("| f | -0.50 | exact but for rounding"),
+            "{row}"
+        );
+        assert!(row.ends_with("| -1.00 |"), "{row}");
+    }
 }

@@ -1,6 +1,8 @@
 //! The chapter's figures: every sampler at growing sample counts, zoomed edges, the filters on
 //! the checkerboard, where the samples of a pixel land, the filter profiles, the error of one
-//! edge pixel, and error against time.
+//! edge pixel, and error against time. Every number the chapter's page quotes from a run is
+//! written here too, as a small Markdown file the page includes (`edge_pixel.md`,
+//! `convergence.md`, `mitsuba_wider_tent.md`), so that the text and the figures always agree.
 
 use crate::coverage::{HalfPlane, coverage_mse};
 use crate::filters::{FilterKind, ReconstructionFilter};
@@ -15,6 +17,7 @@ use common::metrics::{
 use common::output::figures::{
     Axes, Series, SeriesStyle, comparison_grid, crop, line_plot, scatter_plot,
 };
+use common::output::write_text;
 use common::render::RenderSettings;
 use common::scene::Scene;
 use glam::{UVec2, Vec2};
@@ -64,6 +67,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
         convergence(out, &quality)
     })?;
     figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.make("the wider tent against Mitsuba 3", wider_tent)?;
     figures.finish()
 }
 
@@ -280,7 +284,58 @@ fn edge_pixel(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         &Axes::log_log("samples per pixel", "mean squared error of the coverage"),
         &series,
     )?;
+    write_text(&out.join("edge_pixel.md"), &edge_pixel_table(&series))?;
     Ok(())
+}
+
+/// The slope the theory predicts for the mean squared error of one edge pixel with `kind`.
+fn predicted_edge_slope(kind: &str) -> &'static str {
+    match kind {
+        "centre" => "0 (a fixed error)",
+        "random" => "-1",
+        "stratified" => "-3/2",
+        _ => "about -3/2",
+    }
+}
+
+/// The Markdown table of the fitted slopes of the edge pixel's error, one row per sampler.
+fn edge_pixel_table(series: &[Series]) -> String {
+    let mut table = String::from(
+        "| sampler | fitted slope of log MSE against log n | the theory's slope | MSE at the largest n |\n\
+         |---|---:|---|---:|\n",
+    );
+    for s in series {
+        let slope = log_log_slope(&s.points);
+        let last = s.points.last().map_or(f64::NAN, |p| p.1);
+        table.push_str(&format!(
+            "| {} | {slope:.2} | {} | {last:.1e} |\n",
+            s.label,
+            predicted_edge_slope(&s.label)
+        ));
+    }
+    table
+}
+
+/// The least-squares slope of `log y` against `log x`, over the points where both are
+/// positive (a sampler that is exact at some `n` has no logarithm there); 0 for fewer than
+/// two such points or no spread in `x`.
+pub fn log_log_slope(points: &[(f64, f64)]) -> f64 {
+    let logs: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(x, y)| *x > 0.0 && *y > 0.0)
+        .map(|(x, y)| (x.ln(), y.ln()))
+        .collect();
+    let n = logs.len() as f64;
+    if logs.len() < 2 {
+        return 0.0;
+    }
+    let (mx, my) = (
+        logs.iter().map(|p| p.0).sum::<f64>() / n,
+        logs.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxx: f64 = logs.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = logs.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    if sxx == 0.0 { 0.0 } else { sxy / sxx }
 }
 
 /// Error against time and against samples for every sampler, on the edge scene.
@@ -320,5 +375,128 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         "Error against samples per pixel (edges)",
         &records,
     )?;
+    write_text(&out.join("convergence.md"), &convergence_table(&records))?;
     Ok(())
+}
+
+/// What a doubling of samples and of time did to each sampler's RMSE in this run: the fitted
+/// slopes of log RMSE against log spp and against log seconds, and the factor `2^-slope` by
+/// which a doubling divides the error.
+fn convergence_table(records: &[common::metrics::ConvergenceRecord]) -> String {
+    let mut table = String::from(
+        "| sampler | slope against spp | RMSE divided per doubling of spp | slope against time | RMSE divided per doubling of time | RMSE at the largest budget |\n\
+         |---|---:|---:|---:|---:|---:|\n",
+    );
+    for kind in PixelSamplerKind::ALL {
+        let mine: Vec<_> = records
+            .iter()
+            .filter(|r| r.technique == kind.name())
+            .collect();
+        let by_spp: Vec<(f64, f64)> = mine.iter().map(|r| (r.spp as f64, r.rmse)).collect();
+        let by_time: Vec<(f64, f64)> = mine.iter().map(|r| (r.seconds, r.rmse)).collect();
+        let (slope_spp, slope_time) = (log_log_slope(&by_spp), log_log_slope(&by_time));
+        let last = mine
+            .iter()
+            .max_by_key(|r| r.spp)
+            .map_or(String::from("–"), |r| {
+                format!("{:.2e} at {} spp", r.rmse, r.spp)
+            });
+        table.push_str(&format!(
+            "| {} | {slope_spp:.2} | {:.2} | {slope_time:.2} | {:.2} | {last} |\n",
+            kind.name(),
+            2f64.powf(-slope_spp),
+            2f64.powf(-slope_time),
+        ));
+    }
+    table
+}
+
+/// The file's tent (radius 1.5) and a tent one tenth wider, both measured against Mitsuba 3's
+/// stored renders of `tent-spheres.xml`: the comparison is sharp enough to reject a filter
+/// that is only slightly too wide, as Mitsuba's tabulated filter is (`mitsuba_wider_tent.md`).
+fn wider_tent(out: &Path) -> anyhow::Result<()> {
+    use common::metrics::ReferenceRenders;
+    let set = &crate::agreement::AGREEMENT;
+    let scene_entry = set
+        .scenes
+        .iter()
+        .find(|s| s.name == "tent-spheres")
+        .ok_or_else(|| anyhow::anyhow!("the agreement set has no tent-spheres scene"))?;
+    let path = set.file(scene_entry);
+    let renders = ReferenceRenders::load(&set.stored_renders_dir(), scene_entry.name)?;
+    let (scene, film, settings, sampler) =
+        crate::scene_file::for_agreement(&path, &crate::CAPABILITIES)
+            .map_err(anyhow::Error::msg)?;
+    let radius = film.filter.half_width();
+    let wider = ReconstructionFilter::new(film.filter.kind(), Some(1.1 * radius))
+        .map_err(anyhow::Error::msg)?;
+    let measure = |filter: &ReconstructionFilter| {
+        renders.agreement(&crate::render_with(&scene, &settings, &sampler, filter).image)
+    };
+    let (own, widened) = (measure(&film.filter), measure(&wider));
+    let verdict = |a: &common::metrics::Agreement| if a.holds() { "passes" } else { "fails" };
+    let text = format!(
+        "| tent radius | RMSE ours | RMSE Mitsuba | bias_blocks ours | bias_blocks Mitsuba | the check |\n\
+         |---:|---:|---:|---:|---:|---|\n\
+         | {radius} (the file's) | {:.2e} | {:.2e} | {:.3} | {:.3} | {} |\n\
+         | {:.2} (one tenth wider) | {:.2e} | {:.2e} | {:.3} | {:.3} | {} |\n",
+        own.ours.rmse,
+        own.other.rmse,
+        own.ours.bias_blocks,
+        own.other.bias_blocks,
+        verdict(&own),
+        wider.half_width(),
+        widened.ours.rmse,
+        widened.other.rmse,
+        widened.ours.bias_blocks,
+        widened.other.bias_blocks,
+        verdict(&widened),
+    );
+    write_text(&out.join("mitsuba_wider_tent.md"), &text)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use common::metrics::ConvergenceRecord;
+
+    #[test]
+    fn the_fitted_slope_of_a_power_law_is_its_exponent() {
+        let points: Vec<(f64, f64)> = [1.0, 4.0, 16.0, 64.0]
+            .iter()
+            .map(|&n: &f64| (n, 3.0 * n.powf(-1.5)))
+            .collect();
+        assert!((log_log_slope(&points) + 1.5).abs() < 1e-12);
+        // A zero error (an exact estimate) has no logarithm and is left out.
+        let with_zero = [(1.0, 1.0), (2.0, 0.5), (4.0, 0.0)];
+        assert!((log_log_slope(&with_zero) + 1.0).abs() < 1e-12);
+        assert_eq!(log_log_slope(&[(1.0, 1.0)]), 0.0);
+    }
+
+    #[test]
+    fn the_convergence_table_says_what_a_doubling_divides_the_error_by() {
+        let record = |technique: &str, spp: u64, rmse: f64| ConvergenceRecord {
+            technique: technique.to_string(),
+            spp,
+            seconds: spp as f64,
+            rmse,
+            relmse: rmse,
+        };
+        let records = [
+            record("random", 1, 0.4),
+            record("random", 4, 0.2),
+            record("random", 16, 0.1),
+        ];
+        let table = convergence_table(&records);
+        let row = table
+            .lines()
+            .find(|l| l.starts_with("| random"))
+            .expect("a row for the random sampler");
+        assert!(
+            row.contains("| -0.50 | 1.41 | -0.50 | 1.41 |"),
+            "RMSE halving per 4x samples is a slope of -1/2, divided by sqrt 2 per doubling: {row}"
+        );
+        assert!(row.contains("1.00e-1 at 16 spp"), "{row}");
+    }
 }

@@ -1,6 +1,8 @@
 //! The chapter's figures: the lecture's aperture series, three focus settings, the naive lens
 //! warp against the correct ones, polygonal bokeh, where lens samples land, the circle of
-//! confusion against depth, and error against time.
+//! confusion against depth, and error against time. Every number the chapter's page quotes
+//! from a run is written here too, as a small Markdown file the page includes
+//! (`circle_of_confusion.md`, `convergence.md`, `mitsuba_naive.md`).
 
 use crate::aperture::{
     Aperture, LensWarp, sample_uniform_regular_polygon, sample_uniform_regular_polygon_pdf,
@@ -21,6 +23,7 @@ use common::metrics::{
 use common::output::figures::{
     Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
 };
+use common::output::write_text;
 use common::render::RenderSettings;
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::CameraFrame;
@@ -43,6 +46,8 @@ struct Quality {
     detail_spp: u64,
     /// Points in each lens scatter plot.
     lens_points: u32,
+    /// Size of the error-against-time renders.
+    convergence_size: (u32, u32),
 }
 
 impl Quality {
@@ -58,6 +63,7 @@ impl Quality {
             render,
             detail_spp: level.pick(64, 512),
             lens_points: level.pick(512, 2048),
+            convergence_size: level.pick((48, 32), (60, 40)),
         }
     }
 }
@@ -84,6 +90,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
         convergence(out, &quality, &scene)
     })?;
     figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.make("the naive warp against Mitsuba 3", naive_against_mitsuba)?;
     figures.finish()
 }
 
@@ -382,6 +389,15 @@ fn circle_of_confusion_plot(out: &Path, quality: &Quality) -> anyhow::Result<()>
             )
         })
         .collect();
+    let predicted = |d: f64| {
+        f64::from(circle_of_confusion_pixels(
+            &pinhole, radius, focus, d as f32,
+        ))
+    };
+    write_text(
+        &out.join("circle_of_confusion.md"),
+        &circle_of_confusion_table(&measured, predicted, radius, focus),
+    )?;
     series.push(Series::new(
         "R = 0.12, measured from traced rays",
         measured,
@@ -403,7 +419,7 @@ fn circle_of_confusion_plot(out: &Path, quality: &Quality) -> anyhow::Result<()>
 /// Error against time for the three disc warps: the uniform ones converge, the naive one
 /// converges to the wrong image.
 fn convergence(out: &Path, quality: &Quality, scene: &Scene) -> anyhow::Result<()> {
-    let (width, height) = (quality.render.width / 5, quality.render.height / 5);
+    let (width, height) = quality.convergence_size;
     let settings = |spp| RenderSettings::new(width, height, spp);
     let lens = disc(0.12, BOKEH_SPHERE_DEPTHS[0]);
     // Random pixel samples: each technique differs only in its lens warp.
@@ -437,6 +453,111 @@ fn convergence(out: &Path, quality: &Quality, scene: &Scene) -> anyhow::Result<(
         "Error against samples per pixel: lens warps (bokeh scene)",
         &records,
     )?;
+    write_text(&out.join("convergence.md"), &convergence_sentence(&records))?;
+    Ok(())
+}
+
+/// The measured blur beside the formula's, depth by depth, and the largest difference.
+fn circle_of_confusion_table(
+    measured: &[(f64, f64)],
+    predicted: impl Fn(f64) -> f64,
+    radius: f32,
+    focus: f32,
+) -> String {
+    let mut table = String::from(
+        "| depth d | the formula (pixels) | traced rays (pixels) | difference (pixels) |\n\
+         |---:|---:|---:|---:|\n",
+    );
+    let mut worst: f64 = 0.0;
+    for &(d, m) in measured {
+        let p = predicted(d);
+        worst = worst.max((m - p).abs());
+        table.push_str(&format!("| {d} | {p:.2} | {m:.2} | {:+.4} |\n", m - p));
+    }
+    table.push_str(&format!(
+        "\nWith a lens of radius {radius} focused at {focus}, the traced rays and the formula \
+         differ by at most {worst:.4} pixels at the depths measured in this run.\n"
+    ));
+    table
+}
+
+/// A sentence for the page: each warp's RMSE at the largest budget, with the comparison
+/// worded from the numbers, and how much each fell from the smallest budget to the largest.
+fn convergence_sentence(records: &[common::metrics::ConvergenceRecord]) -> String {
+    let ends = |warp: LensWarp| {
+        let mine: Vec<_> = records
+            .iter()
+            .filter(|r| r.technique == warp.name())
+            .collect();
+        let first = mine.iter().min_by_key(|r| r.spp).map(|r| (r.spp, r.rmse));
+        let last = mine.iter().max_by_key(|r| r.spp).map(|r| (r.spp, r.rmse));
+        first.zip(last).unwrap_or(((0, f64::NAN), (0, f64::NAN)))
+    };
+    let (naive, polar, concentric) = (
+        ends(LensWarp::Naive),
+        ends(LensWarp::Polar),
+        ends(LensWarp::Concentric),
+    );
+    let above_both = naive.1.1 > polar.1.1 && naive.1.1 > concentric.1.1;
+    let below_both = naive.1.1 < polar.1.1 && naive.1.1 < concentric.1.1;
+    let comparison = if above_both {
+        "higher than"
+    } else if below_both {
+        "lower than"
+    } else {
+        "between"
+    };
+    let fall = |(first, last): ((u64, f64), (u64, f64))| first.1 / last.1;
+    format!(
+        "In the run that made these figures, at {} samples per pixel the naive warp's RMSE is \
+         {:.3}, {comparison} the polar warp's {:.3} and the concentric warp's {:.3}. Going from \
+         {} to {} samples per pixel divided the RMSE of the polar and concentric warps by \
+         {:.1} and {:.1}, and the naive warp's by {:.1}; pure noise, which falls as one over \
+         the square root of the sample count, would be divided by {:.1}.\n",
+        naive.1.0,
+        naive.1.1,
+        polar.1.1,
+        concentric.1.1,
+        naive.0.0,
+        naive.1.0,
+        fall(polar),
+        fall(concentric),
+        fall(naive),
+        (naive.1.0 as f64 / naive.0.0.max(1) as f64).sqrt(),
+    )
+}
+
+/// The thin-lens scene file rendered with the naive lens warp, measured against Mitsuba 3's
+/// stored renders: the comparison catches the wrong density (`mitsuba_naive.md`).
+fn naive_against_mitsuba(out: &Path) -> anyhow::Result<()> {
+    use common::metrics::ReferenceRenders;
+    let set = &crate::agreement::AGREEMENT;
+    let mut text = String::from(
+        "| scene | lens warp | RMSE ours | RMSE Mitsuba | bias_blocks ours | bias_blocks Mitsuba | the check |\n\
+         |---|---|---:|---:|---:|---:|---|\n",
+    );
+    for entry in set.scenes {
+        let renders = ReferenceRenders::load(&set.stored_renders_dir(), entry.name)?;
+        let (scene, side, settings, sampler) =
+            crate::scene_file::for_agreement(&set.file(entry), &crate::CAPABILITIES)
+                .map_err(anyhow::Error::msg)?;
+        for warp in [side.lens.warp, LensWarp::Naive] {
+            let lens = side.lens.with_warp(warp);
+            let image = render_with(&scene, &lens, &settings, &sampler, &side.film.filter).image;
+            let a = renders.agreement(&image);
+            text.push_str(&format!(
+                "| {} | {} | {:.2e} | {:.2e} | {:.3} | {:.3} | {} |\n",
+                entry.name,
+                warp.name(),
+                a.ours.rmse,
+                a.other.rmse,
+                a.ours.bias_blocks,
+                a.other.bias_blocks,
+                if a.holds() { "passes" } else { "fails" },
+            ));
+        }
+    }
+    write_text(&out.join("mitsuba_naive.md"), &text)?;
     Ok(())
 }
 
@@ -452,5 +573,45 @@ mod tests {
         let ray = camera.generate_ray(p_film);
         let back = project(&camera, ray.at(5.0)).unwrap();
         assert!((back - p_film).length() < 1e-3, "{back}");
+    }
+
+    #[test]
+    fn the_convergence_sentence_words_the_comparison_from_the_numbers() {
+        let record = |warp: LensWarp, spp: u64, rmse: f64| common::metrics::ConvergenceRecord {
+            technique: warp.name().to_string(),
+            spp,
+            seconds: spp as f64,
+            rmse,
+            relmse: rmse,
+        };
+        let run = |naive_last: f64| {
+            convergence_sentence(&[
+                record(LensWarp::Naive, 1, 0.8),
+                record(LensWarp::Naive, 16, naive_last),
+                record(LensWarp::Polar, 1, 0.8),
+                record(LensWarp::Polar, 16, 0.2),
+                record(LensWarp::Concentric, 1, 0.8),
+                record(LensWarp::Concentric, 16, 0.25),
+            ])
+        };
+        assert!(
+            run(0.4).contains("0.400, higher than the polar"),
+            "{}",
+            run(0.4)
+        );
+        assert!(
+            run(0.1).contains("0.100, lower than the polar"),
+            "{}",
+            run(0.1)
+        );
+        assert!(run(0.22).contains("between the polar"), "{}", run(0.22));
+        assert!(run(0.4).contains("would be divided by 4.0"), "{}", run(0.4));
+    }
+
+    #[test]
+    fn the_circle_of_confusion_table_reports_the_largest_difference() {
+        let table = circle_of_confusion_table(&[(2.0, 10.5), (4.0, 4.75)], |d| 20.0 / d, 0.1, 5.0);
+        assert!(table.contains("| 2 | 10.00 | 10.50 | +0.5000 |"), "{table}");
+        assert!(table.contains("differ by at most 0.5000 pixels"), "{table}");
     }
 }

@@ -59,6 +59,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("the plates", |out| inter_reflections(out, &quality))?;
     figures.make("the lobe-sample plots", lobe_samples)?;
     figures.make("the ray-count growth", |out| ray_growth(out, &quality))?;
+    figures.make("the cost per sample", |out| speed(out, &quality, level))?;
     figures.make("the equal-time comparison", |out| {
         equal_time(out, &quality, level)
     })?;
@@ -114,8 +115,9 @@ fn exponent_label(exponent: f32) -> String {
 fn roughness_series(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let settings = quality.gallery();
     let options = TraceOptions::default();
+    let exponents = [1.0f32, 10.0, 100.0, 1e3, 1e6];
     let mut reflection = Vec::new();
-    for exponent in [1.0f32, 10.0, 100.0, 1e3, 1e6] {
+    for exponent in exponents {
         let scene = Builtin::Floor.build(DEFAULT_DEPTH, exponent);
         reflection.push((
             format!("glossy floor, {}", exponent_label(exponent)),
@@ -126,10 +128,26 @@ fn roughness_series(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     mirror.scene.surfaces[0].material = Material::Mirror {
         reflectance: Vec3::splat(0.8),
     };
-    reflection.push((
-        "perfect mirror (chapter 01)".to_string(),
-        render(&mirror, options, &settings, 0).image,
-    ));
+    let mirror_image = render(&mirror, options, &settings, 0).image;
+    // How far each floor is from the mirror, rendered at the same pixel positions.
+    let share_of = |exponent: f32| {
+        let i = exponents
+            .iter()
+            .position(|&e| e == exponent)
+            .expect("a rendered exponent");
+        share_differing(&reflection[i].1, &mirror_image, MIRROR_TOLERANCE)
+    };
+    write_text(
+        &out.join("roughness.md"),
+        &format!(
+            "Rendered at the same pixel positions as the mirror, the floor of $n = 10^6$ \
+             differs from it by more than {MIRROR_TOLERANCE} in {:.1} % of the pixels, the \
+             floor of $n = 10$ in {:.1} %.\n",
+            100.0 * share_of(1e6),
+            100.0 * share_of(10.0),
+        ),
+    )?;
+    reflection.push(("perfect mirror (chapter 01)".to_string(), mirror_image));
     comparison_grid(&out.join("roughness_reflection.png"), &reflection, 3, 1)?;
 
     let mut refraction = Vec::new();
@@ -154,6 +172,25 @@ fn roughness_series(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The difference in any colour channel above which [`roughness_series`] counts a pixel of a
+/// glossy floor as differing from the mirror's (the bound `tests/extremes.rs` uses).
+const MIRROR_TOLERANCE: f32 = 0.02;
+
+/// The share of the pixels of `a` and `b` (of the same size) that differ by more than
+/// `tolerance` in some colour channel.
+fn share_differing(a: &Image, b: &Image, tolerance: f32) -> f64 {
+    let (width, height) = (a.width, a.height);
+    let mut differing = 0u64;
+    for y in 0..height {
+        for x in 0..width {
+            if (a.get(x, y) - b.get(x, y)).abs().max_element() > tolerance {
+                differing += 1;
+            }
+        }
+    }
+    differing as f64 / (f64::from(width) * f64::from(height))
+}
+
 /// The empirical disc and the `cos^n` lobe, sized to the same spread.
 fn disc_against_lobe(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let settings = quality.gallery();
@@ -168,7 +205,7 @@ fn disc_against_lobe(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> 
             let caption = match fuzz {
                 FuzzMethod::Lobe => format!("cos^n lobe, {}", exponent_label(exponent)),
                 FuzzMethod::Disc => format!(
-                    "empirical disc, radius {:.2} (as wide)",
+                    "empirical disc, radius {:.2} (about as wide)",
                     crate::fuzz::disc_radius_for_exponent(exponent)
                 ),
             };
@@ -208,6 +245,15 @@ fn below_surface(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::R
         .collect();
     let mut series = Vec::new();
     let mut csv = String::from("exponent,fuzz,below_surface,degrees,albedo,standard_error\n");
+    // The table the page includes: the albedo at a few of the angles, in percent.
+    let table_angles = [0.0f32, 45.0, 75.0, 89.9];
+    let mut table = String::from("| floor | stray rays |");
+    for degrees in table_angles {
+        table.push_str(&format!(" {degrees}° |"));
+    }
+    table.push_str("\n|---|---|");
+    table.push_str(&"---:|".repeat(table_angles.len()));
+    table.push('\n');
     for exponent in [1.0f32, 10.0] {
         let floor = white_floor(exponent);
         for below in BelowSurface::ALL {
@@ -225,6 +271,15 @@ fn below_surface(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::R
                 ));
                 points.push((f64::from(degrees), albedo));
             }
+            table.push_str(&format!("| $n = {exponent}$ | {} |", below.name()));
+            for degrees in table_angles {
+                let (_, albedo) = points
+                    .iter()
+                    .find(|(d, _)| *d == f64::from(degrees))
+                    .expect("a table angle is one of the plotted angles");
+                table.push_str(&format!(" {:.0} % |", 100.0 * albedo));
+            }
+            table.push('\n');
             let style = if exponent == 1.0 {
                 SeriesStyle::LineAndPoints
             } else {
@@ -238,6 +293,11 @@ fn below_surface(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::R
         }
     }
     write_text(&out.join("below_surface_energy.csv"), &csv)?;
+    table.push_str(&format!(
+        "\nReflected radiance as a share of the incoming radiance 1, each the mean of \
+         {furnace_samples} rays, against the angle of incidence.\n"
+    ));
+    write_text(&out.join("below_surface_energy.md"), &table)?;
     line_plot(
         &out.join("below_surface_energy.png"),
         "A white glossy floor in a furnace of radiance 1",
@@ -344,6 +404,8 @@ fn ray_growth(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let depths: Vec<u32> = (1..=14).collect();
     let mut csv = String::from("strategy,max_depth,rays_per_camera_ray,seconds\n");
     let mut series = Vec::new();
+    // Per strategy: rays per camera ray at the deepest limit.
+    let mut deepest = Vec::new();
     for glass in GlassStrategy::ALL {
         let mut points = Vec::new();
         for &depth in &depths {
@@ -362,6 +424,7 @@ fn ray_growth(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
             ));
             points.push((f64::from(depth), per_ray));
         }
+        deepest.push(points.last().expect("at least one depth").1);
         series.push(Series::new(
             glass.name(),
             points,
@@ -369,6 +432,16 @@ fn ray_growth(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
         ));
     }
     write_text(&out.join("ray_growth.csv"), &csv)?;
+    let max_depth = depths.last().expect("at least one depth");
+    let [both, half, fresnel] = [0, 1, 2].map(|i| deepest[i]);
+    write_text(
+        &out.join("ray_growth.md"),
+        &format!(
+            "At the depth limit {max_depth}, tracing both rays costs {both:.0} rays per camera \
+             ray; choosing one costs {half:.1} with probability ½ and {fresnel:.1} with the \
+             Fresnel choice.\n"
+        ),
+    )?;
     line_plot(
         &out.join("ray_growth.png"),
         "Rays per camera ray against the depth limit",
@@ -381,6 +454,43 @@ fn ray_growth(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
         },
         &series,
     )?;
+    Ok(())
+}
+
+/// What a sample of the panes costs with each glass strategy, at the default depth limit: rays
+/// per camera ray, time, and rays per second, as a table for the Speed appendix.
+fn speed(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::Result<()> {
+    let (width, height) = (quality.width / 4, quality.height / 4);
+    // Enough samples that thread start-up does not dominate the time.
+    let spp = level.pick(2, 16);
+    let scene = Builtin::Panes.build(DEFAULT_DEPTH, 1e6);
+    let mut table = String::from(
+        "| at glass | rays per camera ray | milliseconds | million rays per second |\n\
+         |---|---:|---:|---:|\n",
+    );
+    let mut threads = 1;
+    for glass in GlassStrategy::ALL {
+        let options = TraceOptions {
+            glass,
+            ..TraceOptions::default()
+        };
+        let rendered = render(&scene, options, &RenderSettings::new(width, height, spp), 0);
+        let camera_rays = u64::from(width * height) * spp;
+        table.push_str(&format!(
+            "| {} | {:.1} | {:.1} | {:.1} |\n",
+            glass.name(),
+            rendered.stats.rays as f64 / camera_rays as f64,
+            1e3 * rendered.stats.seconds,
+            rendered.stats.rays_per_second / 1e6,
+        ));
+        threads = rendered.stats.threads;
+    }
+    table.push_str(&format!(
+        "\nThe panes at the depth limit {DEFAULT_DEPTH}, {width} × {height} pixels, {spp} samples \
+         per pixel, {threads} threads, on the machine that built this site; shadow rays count \
+         as rays.\n"
+    ));
+    write_text(&out.join("speed.md"), &table)?;
     Ok(())
 }
 
@@ -457,6 +567,7 @@ fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
             .collect();
         let records = run_convergence(&techniques, quality.budgets, &reference);
         write_convergence_csv(&out.join(format!("{name}.csv")), &records)?;
+        write_text(&out.join(format!("{name}.md")), &time_to_error(&records))?;
         let what = match builtin {
             Builtin::Panes => "smooth glass panes",
             _ => "frosted pane",
@@ -473,4 +584,114 @@ fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
         )?;
     }
     Ok(())
+}
+
+/// How the glass strategies are named in a generated sentence.
+fn strategy_words(name: &str) -> &'static str {
+    match name {
+        "both" => "tracing both rays",
+        "half" => "choosing one with probability ½",
+        _ => "choosing one by the Fresnel term",
+    }
+}
+
+/// A table of the time each glass strategy needs to reach a given error, relative to tracing
+/// both rays, and a sentence naming the quickest and the slowest.
+///
+/// An unbiased estimator's mean squared error falls as one over the time spent, so the product
+/// `MSE × seconds` is the time it needs per unit of inverse squared error; the geometric mean
+/// over the budgets evens out the noise of any single render.
+fn time_to_error(records: &[common::metrics::ConvergenceRecord]) -> String {
+    let cost = |glass: GlassStrategy| {
+        let products: Vec<f64> = records
+            .iter()
+            .filter(|r| r.technique == glass.name())
+            .map(|r| (r.rmse * r.rmse * r.seconds).max(f64::MIN_POSITIVE).ln())
+            .collect();
+        (products.iter().sum::<f64>() / products.len().max(1) as f64).exp()
+    };
+    let costs: Vec<(GlassStrategy, f64)> = GlassStrategy::ALL
+        .iter()
+        .map(|&glass| (glass, cost(glass)))
+        .collect();
+    let both = costs[0].1;
+    let mut text = String::from(
+        "| at glass | time to reach a given error, relative to tracing both |\n|---|---:|\n",
+    );
+    for (glass, cost) in &costs {
+        text.push_str(&format!("| {} | {:.2} |\n", glass.name(), cost / both));
+    }
+    let by_cost = |a: &&(GlassStrategy, f64), b: &&(GlassStrategy, f64)| a.1.total_cmp(&b.1);
+    let quickest = costs.iter().min_by(by_cost).expect("three strategies").0;
+    let slowest = costs.iter().max_by(by_cost).expect("three strategies").0;
+    text.push_str(&format!(
+        "\nHere the quickest to a given error is {}, and the slowest {}.\n",
+        strategy_words(quickest.name()),
+        strategy_words(slowest.name()),
+    ));
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use common::metrics::ConvergenceRecord;
+
+    #[test]
+    fn share_differing_counts_pixels_beyond_the_tolerance_in_any_channel() {
+        let a = Image::filled(4, 2, Vec3::splat(0.5));
+        let mut b = a.clone();
+        b.set(0, 0, Vec3::new(0.5, 0.6, 0.5)); // beyond in green only
+        b.set(1, 0, Vec3::splat(0.51)); // within
+        b.set(3, 1, Vec3::splat(0.0)); // beyond in all
+        assert_eq!(share_differing(&a, &b, 0.02), 2.0 / 8.0);
+        assert_eq!(share_differing(&a, &a, 0.0), 0.0);
+    }
+
+    fn record(technique: &str, spp: u64, seconds: f64, rmse: f64) -> ConvergenceRecord {
+        ConvergenceRecord {
+            technique: technique.to_string(),
+            spp,
+            seconds,
+            rmse,
+            relmse: rmse,
+        }
+    }
+
+    #[test]
+    fn time_to_error_is_relative_to_both_and_names_the_quickest_and_the_slowest() {
+        // MSE × seconds: both 1e-2, half 4e-2, fresnel 2.5e-3, at every budget.
+        let records = [
+            record("both", 1, 1.0, 0.1),
+            record("both", 4, 4.0, 0.05),
+            record("half", 1, 0.25, 0.4),
+            record("half", 4, 1.0, 0.2),
+            record("fresnel", 1, 0.25, 0.1),
+            record("fresnel", 4, 1.0, 0.05),
+        ];
+        let text = time_to_error(&records);
+        assert!(text.contains("| both | 1.00 |"), "{text}");
+        assert!(text.contains("| half | 4.00 |"), "{text}");
+        assert!(text.contains("| fresnel | 0.25 |"), "{text}");
+        assert!(
+            text.contains("quickest to a given error is choosing one by the Fresnel term"),
+            "{text}"
+        );
+        assert!(
+            text.contains("slowest choosing one with probability ½"),
+            "{text}"
+        );
+
+        // The words follow the numbers when the order flips.
+        let flipped = [
+            record("both", 1, 1.0, 0.01),
+            record("half", 1, 1.0, 0.2),
+            record("fresnel", 1, 1.0, 0.1),
+        ];
+        let text = time_to_error(&flipped);
+        assert!(
+            text.contains("quickest to a given error is tracing both rays"),
+            "{text}"
+        );
+    }
 }

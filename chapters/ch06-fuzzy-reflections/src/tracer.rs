@@ -309,7 +309,8 @@ impl<L: Lighting> Tracer<'_, L> {
 /// normal incidence): refraction is the less sensitive, and at `eta = 1` a rough boundary
 /// between equal media bends no ray at all, so glass of index 1 vanishes however frosted.
 /// A lobe's width goes as `1/√n`, so the refraction lobe's exponent is the reflection's
-/// times `(2 / |1 - eta|)²`: 36 times larger for glass of index 1.5 in air.
+/// times `(2 / |1 - eta|)²`. For glass of index 1.5 in air that is 36 on the way in
+/// (`eta = 1/1.5`, `|1 - eta| = 1/3`) but 16 on the way out (`eta = 1.5`, `|1 - eta| = 1/2`).
 pub fn transmission_exponent(exponent: f32, eta: f32) -> f32 {
     let sensitivity = (1.0 - eta).abs() / 2.0;
     if sensitivity == 0.0 {

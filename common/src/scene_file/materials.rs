@@ -53,7 +53,8 @@ const DEFAULT_PHONG_EXPONENT: f32 = 30.0;
 ///
 /// Mitsuba 3's rough BSDFs (`roughconductor`, `roughdielectric`) become `cos^n` lobes of about
 /// the same width (see [`Microfacet`]), remembering the roughness they stand in for; the
-/// workbook's `phong` (Mitsuba 0.6's name, its specular lobe only) is the glossy lobe itself.
+/// workbook's `phong` (Mitsuba 0.6's name and exponent, a specular lobe only) is the glossy lobe
+/// itself, normalised as chapter 06's density `(n + 1) / 2π cos^n` rather than as 0.6's Phong.
 pub(super) fn read_bsdf(reader: &mut Reader, node: Node) -> Result<Material, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} bsdf"))?;

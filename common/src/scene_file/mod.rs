@@ -22,7 +22,8 @@
 //!   `<ref>`), an optional `area` emitter and `flip_normals`.
 //! - `bsdf`: `diffuse`, `conductor` (`material="none"`), `dielectric`, `twosided`,
 //!   `roughconductor` and `roughdielectric` (rendered as `cos^n` lobes of about the same width),
-//!   and the workbook's `phong` (Mitsuba 0.6's specular lobe).
+//!   and the workbook's `phong` (Mitsuba 0.6's name and exponent; the lobe is chapter 06's
+//!   normalised `cos^n` density, not 0.6's `(n + 2) / 2π` normalisation).
 //! - `emitter`: `area` (in a shape), `point`, `constant`.
 //! - `transform`: `lookat`, `translate`, `rotate`, `scale`, `matrix`.
 //! - `animation` (the workbook's extension, in Mitsuba 0.6's syntax, for chapter 05's motion
