@@ -10,6 +10,9 @@
 //! - `cargo run -p book -- checkpoint NAME --from WORKBOOK` puts one reference solution back.
 //! - `cargo run -p book -- check-prose` finds numbers typed into the pages that a run measured
 //!   (the site build runs it too).
+//! - `cargo run -p book -- check-site` opens every page of the built site in headless Chromium,
+//!   offline, and fails on broken images, links and formulas, script errors, or a search that
+//!   finds nothing; it leaves a screenshot of every page (CI runs it).
 
 mod check_exercises;
 mod checkpoint;
@@ -23,6 +26,7 @@ mod offline_check;
 mod progress;
 mod prose_numbers;
 mod site;
+mod site_check;
 mod solution_markers;
 mod student_edition;
 mod workspace;
@@ -87,6 +91,25 @@ enum Task {
         /// The workbook: the repository with the solutions, from which this edition was made.
         #[arg(long, value_name = "PATH")]
         from: PathBuf,
+    },
+    /// Open every page of the built site in headless Chromium (offline, from disk) and fail on
+    /// a broken image, an image without alt text, a broken link or anchor, a formula KaTeX
+    /// could not typeset, a console error or uncaught exception, or a search with no results.
+    CheckSite {
+        /// The built site [default: book/site].
+        #[arg(long, value_name = "DIR")]
+        site: Option<PathBuf>,
+        /// Where to write a screenshot of every page [default: site-screenshots/ in cargo's
+        /// target directory].
+        #[arg(long, value_name = "DIR")]
+        screenshots: Option<PathBuf>,
+        /// Only list images without alt text instead of failing on them (until every page's
+        /// figures have alt text, issue 20; this flag goes away then).
+        #[arg(long)]
+        no_alt_check: bool,
+        /// The word typed into the search box of index.html, which must find something.
+        #[arg(long, default_value = "Fresnel")]
+        search: String,
     },
 }
 
@@ -177,7 +200,75 @@ fn main() -> Result<()> {
             let selected = |e: &exercise_list::Exercise| only.is_empty() || only.contains(&e.name);
             check_exercises::run(&root, &exercises, &selected, wrong_answers_only)
         }
+        Some(Task::CheckSite {
+            site,
+            screenshots,
+            no_alt_check,
+            search,
+        }) => {
+            let options = site_check::Options {
+                site: site.unwrap_or_else(|| root.join("book").join("site")),
+                screenshots: screenshots
+                    .unwrap_or_else(|| workspace::target_dir(&root).join("site-screenshots")),
+                alt_check: !no_alt_check,
+                search_word: Some(search),
+            };
+            check_site(&options)
+        }
     }
+}
+
+/// Runs the browser check and prints what it found; fails if anything is wrong.
+fn check_site(options: &site_check::Options) -> Result<()> {
+    let started = Instant::now();
+    println!(
+        "Opening every page of {} in headless Chromium, offline ...",
+        options.site.display()
+    );
+    let outcome = site_check::run(options)?;
+    for skipped in &outcome.skipped {
+        println!("Skipped {}: {}.", skipped.page, skipped.why);
+    }
+    if let Some(count) = outcome.search_results {
+        println!(
+            "Search for \"{}\" showed {count} result(s).",
+            options.search_word.as_deref().unwrap_or_default()
+        );
+    }
+    println!(
+        "Screenshots of {} page(s) in {}",
+        outcome.pages.len(),
+        options.screenshots.display()
+    );
+    if !outcome.notes.is_empty() {
+        println!(
+            "\n{} image(s) without alt text (not failing: --no-alt-check):",
+            outcome.notes.len()
+        );
+        for note in &outcome.notes {
+            println!("  {note}");
+        }
+    }
+    let seconds = started.elapsed().as_secs_f64();
+    if !outcome.problems.is_empty() {
+        println!("\n{} problem(s):", outcome.problems.len());
+        for problem in &outcome.problems {
+            println!("  {problem}");
+        }
+        let pages: std::collections::BTreeSet<&str> =
+            outcome.problems.iter().map(|p| p.page.as_str()).collect();
+        anyhow::bail!(
+            "the site has {} problem(s) on {} page(s), listed above (checked in {seconds:.1} s)",
+            outcome.problems.len(),
+            pages.len()
+        );
+    }
+    println!(
+        "All {} page(s) load cleanly: every image, link, anchor and formula (checked in \
+         {seconds:.1} s).",
+        outcome.pages.len()
+    );
+    Ok(())
 }
 
 /// Figures first, then the site that shows them.
