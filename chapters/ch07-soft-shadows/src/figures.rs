@@ -178,9 +178,15 @@ fn samples_per_light(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Where the sphere light of [`sphere_light_scene`] is.
+const SPHERE_LIGHT_CENTRE: Vec3 = Vec3::new(0.3, 3.0, 0.3);
+
+/// The radius of the sphere light in the figure of the two strategies.
+const STRATEGIES_SPHERE_RADIUS: f32 = 0.3;
+
 /// A floor with two balls under a small sphere light 3 above it.
 fn sphere_light_scene(radius: f32) -> MotionScene {
-    let light = Sphere::new(Vec3::new(0.3, 3.0, 0.3), radius);
+    let light = Sphere::new(SPHERE_LIGHT_CENTRE, radius);
     Builder::new()
         .shape(floor(6.0), matte(Vec3::splat(0.7)))
         .shape(
@@ -200,7 +206,7 @@ fn sphere_light_scene(radius: f32) -> MotionScene {
 
 /// Area against solid-angle sampling of a sphere light, same samples.
 fn sphere_strategies(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
-    let scene = sphere_light_scene(0.3);
+    let scene = sphere_light_scene(STRATEGIES_SPHERE_RADIUS);
     let spp = (q.spp / 2).max(1);
     let cells: Vec<(String, Image)> = [Strategy::Area, Strategy::SolidAngle]
         .iter()
@@ -646,7 +652,7 @@ fn measurements(out: &Path, level: Level) -> anyhow::Result<()> {
     )?;
 
     // A sphere light by area: how many of its points face away from the receiver.
-    let (sphere_radius, centre) = (0.15f32, Vec3::new(0.3, 3.0, 0.3));
+    let (sphere_radius, centre) = (STRATEGIES_SPHERE_RADIUS, SPHERE_LIGHT_CENTRE);
     let sphere = AreaLight::new(Sphere::new(centre, sphere_radius), Vec3::ONE);
     let d = centre.length();
     let away = points
@@ -658,8 +664,8 @@ fn measurements(out: &Path, level: Level) -> anyhow::Result<()> {
     write_text(
         &out.join("sphere_cap.md"),
         &format!(
-            "For the figure's sphere light (radius {sphere_radius}, its centre {d:.2} from the \
-             floor point under the origin), the visible cap is $(1 - R/d)/2 = {visible:.3}$ of \
+            "For the sphere light of the two renders above (radius {sphere_radius}, its centre \
+             {d:.2} from the floor's point at the origin), the visible cap is $(1 - R/d)/2 = {visible:.3}$ of \
              its area. Of {n} points drawn by area, {:.3} faced away from the receiver (the \
              formula says {:.3}): those shadow rays are spent on light that cannot arrive.\n",
             away as f64 / points.len() as f64,
