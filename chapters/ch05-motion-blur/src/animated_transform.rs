@@ -2,11 +2,12 @@
 //! `AnimatedTransform` does.
 //!
 //! Lerping two matrices does not give a transform in between: halfway between a rotation by
-//! 0 and one by 90 degrees, the lerped matrix shrinks the object by `cos 45° ≈ 0.71` and
-//! shears it. So every keyframe matrix is split into a translation `T`, a rotation `R` and a
-//! scale `S` (`M = T R S`, a polar decomposition), and the parts are interpolated each in its
-//! own way: `T` and `S` linearly, `R` as a quaternion along the great circle (slerp), which
-//! turns at constant speed about a fixed axis.
+//! 0 and one by 90 degrees, the lerped matrix is the rotation by 45 degrees times a squash that
+//! shrinks the object by `cos 45° = 1/√2` across the axis and leaves it as it is along the
+//! axis (a non-uniform scale, not a shear). So every keyframe matrix is split into a
+//! translation `T`, a rotation `R` and a scale `S` (`M = T R S`, a polar decomposition), and
+//! the parts are interpolated each in its own way: `T` and `S` linearly, `R` as a quaternion
+//! along the great circle (slerp), which turns at constant speed about a fixed axis.
 //!
 //! Slerp takes the shorter way round, so two neighbouring keyframes must differ by less than
 //! half a turn; a spin by one turn or more is written as several keyframes (see
@@ -317,7 +318,7 @@ mod tests {
                 let lerped_matrices = a.matrix() * (1.0 - u) + b.matrix() * u;
                 let why = if close_mat3(got.scale, Decomposed::new(lerped_matrices).scale, 1e-4) {
                     "it is what lerping the two matrices gives: a blend of two rotations is no \
-                     rotation, and the object shrinks and shears on the way; interpolate the \
+                     rotation, and the object shrinks across the axis on the way; interpolate the \
                      parts each in its own way"
                 } else {
                     "the scale changes evenly from a's to b's"
@@ -411,8 +412,8 @@ mod tests {
                     let lerped = linear_motion(w[0]) * (1.0 - u) + kb * u;
                     let unscaled = interpolate(&ka, &Decomposed::new(kb), time - w[0]).matrix();
                     if lerped.abs_diff_eq(m, 1e-4) {
-                        "the keyframe matrices were blended entry by entry: the object shrinks \
-                         and shears between them; interpolate their parts"
+                        "the keyframe matrices were blended entry by entry: the object is \
+                         distorted between them; interpolate their parts"
                             .to_string()
                     } else if unscaled.abs_diff_eq(m, 1e-4) {
                         format!(
@@ -449,7 +450,7 @@ mod tests {
                 Quat::from_axis_angle(Vec3::new(1.0, 2.0, 3.0).normalize(), 1.1),
                 Vec3::new(-3.0, 4.0, 0.5),
             ),
-            // Scale after rotation: a shear in T R S form, kept in the symmetric S.
+            // Scale after rotation: a scale along turned axes in T R S form, kept in the symmetric S.
             Mat4::from_scale(Vec3::new(3.0, 1.0, 1.0)) * Mat4::from_rotation_z(0.6),
             // A mirror.
             Mat4::from_scale(Vec3::new(-1.0, 1.0, 1.0)) * Mat4::from_rotation_y(0.3),

@@ -1,8 +1,10 @@
 //! The chapter's figures: a fast and a slow object, a spinning one and a moving camera; the
 //! shutter from short to long; where time samples land; error against time for independent
-//! and stratified time; and what motion bounds cost a BVH.
+//! and stratified time; the streak of a shutter that opens over a while; and what motion bounds
+//! cost a BVH.
 
 use crate::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER, swarm};
+use crate::shutter_opening::{sample_trapezoid_opening, trapezoid_opening_pdf};
 use crate::time_sampling::{StratifiedTime, TimeSampler};
 use crate::world::MotionScene;
 use crate::{Shutter, render_with};
@@ -12,9 +14,12 @@ use ch04_depth_of_field::Lens;
 use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::image::Image;
 use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+    ConvergenceRecord, Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence,
+    write_convergence_csv,
 };
-use common::output::figures::{bar_chart, comparison_grid, scatter_plot};
+use common::output::figures::{
+    Axes, Series, SeriesStyle, bar_chart, comparison_grid, line_plot, scatter_plot,
+};
 use common::output::write_text;
 use common::render::RenderSettings;
 use common::sampler::{IndependentSampler, Sampler};
@@ -41,6 +46,9 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("the gallery of motions", |out| gallery(out, &quality))?;
     figures.make("the shutter series", |out| shutter_lengths(out, &quality))?;
     figures.make("the time-sample plot", time_samples)?;
+    figures.make("the shutter-opening profiles", |out| {
+        shutter_opening(out, level)
+    })?;
     figures.make("the error-against-time figures", |out| {
         convergence(out, &quality)
     })?;
@@ -219,6 +227,10 @@ fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     ];
     let records = run_convergence(&techniques, quality.budgets, &reference);
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
+    write_text(
+        &out.join("convergence.md"),
+        &stratified_time_sentence(&records),
+    )?;
     plot_error_vs_time(
         &out.join("convergence.png"),
         "Error against time: time sampling (street scene)",
@@ -228,6 +240,111 @@ fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
         &out.join("convergence_spp.png"),
         "Error against samples per pixel: time sampling (street scene)",
         &records,
+    )?;
+    Ok(())
+}
+
+/// The sentence the page shows under the error plots: at how many of the sample counts
+/// stratified time has the lower error, and the two errors at the largest count.
+fn stratified_time_sentence(records: &[ConvergenceRecord]) -> String {
+    let of = |name: &str| -> Vec<&ConvergenceRecord> {
+        records.iter().filter(|r| r.technique == name).collect()
+    };
+    let (independent, stratified) = (of("independent time"), of("stratified time"));
+    let pairs: Vec<(&ConvergenceRecord, &ConvergenceRecord)> = independent
+        .iter()
+        .filter_map(|i| Some((*i, *stratified.iter().find(|s| s.spp == i.spp)?)))
+        .collect();
+    let lower = pairs.iter().filter(|(i, s)| s.rmse < i.rmse).count();
+    let Some((last_i, last_s)) = pairs.iter().max_by_key(|(i, _)| i.spp) else {
+        return "No error was measured.\n".to_string();
+    };
+    let share = match lower {
+        n if n == pairs.len() => format!("at every one of the {} sample counts", pairs.len()),
+        0 => format!("at none of the {} sample counts", pairs.len()),
+        n => format!("at {n} of the {} sample counts", pairs.len()),
+    };
+    let word = if last_s.rmse < last_i.rmse {
+        "lower"
+    } else {
+        "not lower"
+    };
+    format!(
+        "In this run stratified time has the lower error {share}; at {} spp its RMSE is {:.4} \
+         against {:.4} for independent time ({word}: {:.2} times the error), in {:.1} ms against \
+         {:.1} ms.\n",
+        last_i.spp,
+        last_s.rmse,
+        last_i.rmse,
+        last_s.rmse / last_i.rmse,
+        1e3 * last_s.seconds,
+        1e3 * last_i.seconds,
+    )
+}
+
+/// How long the shutter takes to open (and to close) in the trapezoid of the profile figure,
+/// as a fraction of the exposure.
+pub const PROFILE_RAMP: f32 = 0.25;
+
+/// The streak a sphere leaves when the shutter opens at once (the lecture's box) and when it
+/// takes a quarter of the exposure to open and a quarter to close (a trapezoid). A sphere of
+/// radius 1/4 crosses from x = -1 to x = 1 while the shutter is open; along the line its centre
+/// follows, a point's brightness is the share of the shutter's weight during which the sphere
+/// covers it. Each share is estimated as the renderer would: times drawn by the warp from
+/// stratified `u`, each counted once.
+fn shutter_opening(out: &Path, level: Level) -> anyhow::Result<()> {
+    let n = level.pick(256, 4096);
+    let radius = 0.25f32;
+    let covered_share = |x: f32, ramp: f32| -> f64 {
+        let hits = (0..n)
+            .filter(|&i| {
+                let s = sample_trapezoid_opening((i as f32 + 0.5) / n as f32, ramp);
+                let centre = -1.0 + 2.0 * s;
+                (x - centre).abs() < radius
+            })
+            .count();
+        hits as f64 / n as f64
+    };
+    let xs: Vec<f32> = (0..=240).map(|i| -1.5 + 3.0 * i as f32 / 240.0).collect();
+    let profile = |ramp: f32| -> Vec<(f64, f64)> {
+        xs.iter()
+            .map(|&x| (f64::from(x), covered_share(x, ramp)))
+            .collect()
+    };
+    let opening = |ramp: f32| -> Vec<(f64, f64)> {
+        (0..=200)
+            .map(|i| {
+                let s = i as f32 / 200.0;
+                // The weight over the exposure, drawn over the sphere's path: s = 0 at x = -1.
+                (
+                    f64::from(-1.0 + 2.0 * s),
+                    f64::from(trapezoid_opening_pdf(s, ramp)) / 4.0,
+                )
+            })
+            .collect()
+    };
+    let series = vec![
+        Series::new("streak, box shutter", profile(0.0), SeriesStyle::Line),
+        Series::new(
+            format!("streak, trapezoid shutter (ramps of {PROFILE_RAMP})"),
+            profile(PROFILE_RAMP),
+            SeriesStyle::Line,
+        ),
+        Series::new("box opening / 4", opening(0.0), SeriesStyle::Dashed),
+        Series::new(
+            "trapezoid opening / 4",
+            opening(PROFILE_RAMP),
+            SeriesStyle::Dashed,
+        ),
+    ];
+    line_plot(
+        &out.join("shutter_opening.png"),
+        "A moving sphere's streak under two shutters",
+        &Axes::linear(
+            "position along the path (the centre moves from -1 to 1)",
+            "brightness (weighted share of the exposure covered)",
+        ),
+        &series,
     )?;
     Ok(())
 }

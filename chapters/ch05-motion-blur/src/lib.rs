@@ -5,7 +5,8 @@
 //! keeps that time for every ray of its path, so the image becomes the average of the world
 //! over the interval.
 //!
-//! - [`shutter`]: the interval and the time a uniform number picks.
+//! - [`shutter`]: the interval and the time a uniform number picks; [`shutter_opening`]: a
+//!   shutter that opens and closes over a fraction of the exposure.
 //! - [`animated_transform`]: transforms between keyframes (translation, slerped rotation,
 //!   scale).
 //! - [`object_space`]: intersecting a moving object by taking the ray into its own space.
@@ -28,6 +29,7 @@ pub mod render_setup;
 pub mod scene_file;
 pub mod scenes;
 pub mod shutter;
+pub mod shutter_opening;
 pub mod time_sampling;
 pub mod world;
 

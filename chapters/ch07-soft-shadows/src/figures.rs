@@ -1,10 +1,16 @@
 //! The chapter's figures: the lecture's small and large light; one light of each shape;
 //! shadow rays per light; a sphere light sampled by area and by solid angle; the naive disc's
-//! wrong penumbra, measured; where the points land on each light; error against time.
+//! wrong penumbra, measured; where the points land on each light; error against time; and the
+//! sentences that put the measured numbers into the page.
 
+use crate::estimator::light_sample_contribution;
+use crate::reference::disc_on_axis_irradiance;
 use crate::sample_stream::SampleStream;
 use crate::scenes::{Builder, Builtin, DEFAULT_DEPTH, camera, floor, matte};
-use crate::{DiscWarp, LightOptions, LightStrata, Strategy, render_with};
+use crate::{
+    AreaLight, DiscWarp, LightOptions, LightSampling, LightStrata, Strategy, light_samples,
+    render_with,
+};
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
@@ -13,8 +19,8 @@ use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::geometry::{Disc, Parallelogram, Shape, Sphere, Triangle};
 use common::image::Image;
 use common::metrics::{
-    Technique, mean, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence,
-    write_convergence_csv,
+    ConvergenceRecord, Technique, mean, plot_error_vs_spp, plot_error_vs_time, rmse,
+    run_convergence, write_convergence_csv,
 };
 use common::output::figures::{comparison_grid, scatter_plot};
 use common::output::write_text;
@@ -48,6 +54,10 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("the disc warps", |out| disc_warps(out, &q))?;
     figures.make("the light-sample plots", light_points)?;
     figures.make("the error-against-time figures", |out| convergence(out, &q))?;
+    let level = figures.level();
+    figures.make("the estimator's measurements", |out| {
+        measurements(out, level)
+    })?;
     figures.agreement(&crate::agreement::AGREEMENT)?;
     figures.finish()
 }
@@ -168,9 +178,15 @@ fn samples_per_light(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Where the sphere light of [`sphere_light_scene`] is.
+const SPHERE_LIGHT_CENTRE: Vec3 = Vec3::new(0.3, 3.0, 0.3);
+
+/// The radius of the sphere light in the figure of the two strategies.
+const STRATEGIES_SPHERE_RADIUS: f32 = 0.3;
+
 /// A floor with two balls under a small sphere light 3 above it.
 fn sphere_light_scene(radius: f32) -> MotionScene {
-    let light = Sphere::new(Vec3::new(0.3, 3.0, 0.3), radius);
+    let light = Sphere::new(SPHERE_LIGHT_CENTRE, radius);
     Builder::new()
         .shape(floor(6.0), matte(Vec3::splat(0.7)))
         .shape(
@@ -190,7 +206,7 @@ fn sphere_light_scene(radius: f32) -> MotionScene {
 
 /// Area against solid-angle sampling of a sphere light, same samples.
 fn sphere_strategies(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
-    let scene = sphere_light_scene(0.3);
+    let scene = sphere_light_scene(STRATEGIES_SPHERE_RADIUS);
     let spp = (q.spp / 2).max(1);
     let cells: Vec<(String, Image)> = [Strategy::Area, Strategy::SolidAngle]
         .iter()
@@ -396,6 +412,15 @@ fn convergence(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     }
     let records = run_convergence(&techniques, q.budgets, &reference);
     write_convergence_csv(&out.join("convergence_shadow_rays.csv"), &records)?;
+    let one = "1 independent ray(s) per light";
+    write_text(
+        &out.join("shadow_rays.md"),
+        &format!(
+            "In this run, {} {}\n",
+            equal_time_sentence(&records, one, "16 stratified ray(s) per light"),
+            equal_time_sentence(&records, one, "16 independent ray(s) per light")
+        ),
+    )?;
     plot_error_vs_time(
         &out.join("convergence_shadow_rays.png"),
         "Error against time: shadow rays per light (large light)",
@@ -432,10 +457,220 @@ fn convergence(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
         .collect();
     let records = run_convergence(&techniques, q.budgets, &reference);
     write_convergence_csv(&out.join("convergence_sphere.csv"), &records)?;
+    write_text(
+        &out.join("sphere_convergence.md"),
+        &format!(
+            "In this run, {}\n",
+            equal_spp_sentence(&records, "sphere by area", "sphere by solid-angle")
+        ),
+    )?;
     plot_error_vs_time(
         &out.join("convergence_sphere.png"),
         "Error against time: a small sphere light by area and by solid angle",
         &records,
+    )?;
+    Ok(())
+}
+
+/// The record of `technique` whose render time is closest to `seconds`.
+fn nearest_in_time<'a>(
+    records: &'a [ConvergenceRecord],
+    technique: &str,
+    seconds: f64,
+) -> Option<&'a ConvergenceRecord> {
+    records
+        .iter()
+        .filter(|r| r.technique == technique)
+        .min_by(|a, b| {
+            let gap = |r: &ConvergenceRecord| (r.seconds.ln() - seconds.ln()).abs();
+            gap(a).total_cmp(&gap(b))
+        })
+}
+
+/// "`b` at K spp reaches an RMSE of E_b in T_b, against E_a for `a` at M spp in T_a: F times
+/// the error (lower/higher)", for `a` at its largest budget and the `b` render closest to it
+/// in time.
+fn equal_time_sentence(records: &[ConvergenceRecord], a: &str, b: &str) -> String {
+    let Some(ra) = records
+        .iter()
+        .filter(|r| r.technique == a)
+        .max_by_key(|r| r.spp)
+    else {
+        return format!("no render of {a} was measured.");
+    };
+    let Some(rb) = nearest_in_time(records, b, ra.seconds) else {
+        return format!("no render of {b} was measured.");
+    };
+    let word = if rb.rmse < ra.rmse { "lower" } else { "higher" };
+    let (a, b) = (spoken(a), spoken(b));
+    format!(
+        "{b} at {} spp reach an RMSE of {:.4} in {:.0} ms, against {:.4} for {a} at {} spp in \
+         {:.0} ms: {:.2} times the error, {word}.",
+        rb.spp,
+        rb.rmse,
+        1e3 * rb.seconds,
+        ra.rmse,
+        ra.spp,
+        1e3 * ra.seconds,
+        rb.rmse / ra.rmse,
+    )
+}
+
+/// The two strategies at the largest sample count: their errors, times and ratios.
+fn equal_spp_sentence(records: &[ConvergenceRecord], a: &str, b: &str) -> String {
+    let last = |name: &str| {
+        records
+            .iter()
+            .filter(|r| r.technique == name)
+            .max_by_key(|r| r.spp)
+    };
+    let (Some(ra), Some(rb)) = (last(a), last(b)) else {
+        return "no render was measured.".to_string();
+    };
+    let word = if rb.rmse < ra.rmse { "lower" } else { "higher" };
+    format!(
+        "at {} spp sampling by area reaches an RMSE of {:.5} in {:.0} ms and sampling by solid \
+         angle {:.5} in {:.0} ms: {:.3} times the error ({word}) for {:.2} times the time.",
+        ra.spp,
+        ra.rmse,
+        1e3 * ra.seconds,
+        rb.rmse,
+        1e3 * rb.seconds,
+        rb.rmse / ra.rmse,
+        rb.seconds / ra.seconds,
+    )
+}
+
+/// A technique's name as words: "16 stratified rays per light", "1 independent ray per light".
+fn spoken(technique: &str) -> String {
+    if technique.starts_with("1 ") {
+        technique.replace("ray(s)", "ray")
+    } else {
+        technique.replace("ray(s)", "rays")
+    }
+}
+
+/// Mean and standard error of the mean of `terms`.
+fn mean_and_error(terms: &[f64]) -> (f64, f64) {
+    let n = terms.len() as f64;
+    let mean = terms.iter().sum::<f64>() / n;
+    let variance = terms.iter().map(|t| (t - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    (mean, (variance / n).sqrt())
+}
+
+/// `n` points of `[0, 1)^2`, independent, from the workbook's own sampler.
+fn uniform_points(n: usize, seed: u64) -> Vec<Vec2> {
+    let mut sampler = IndependentSampler::new(seed);
+    sampler.start_pixel_sample(UVec2::ZERO, 0);
+    (0..n).map(|_| sampler.get_2d()).collect()
+}
+
+/// The numbers the page quotes that are no image: the naive disc warp's bias at one receiver,
+/// what stratifying 16 shadow rays does to a penumbra's variance, and how much of a sphere
+/// light sampling by area wastes. Each is written as a sentence that holds whatever the
+/// numbers come out as.
+fn measurements(out: &Path, level: Level) -> anyhow::Result<()> {
+    let n = level.pick(20_000, 400_000);
+
+    // The naive disc: a receiver 0.3 under the centre of a disc light of radius 0.6.
+    let (radius, height) = (0.6f32, 0.3f32);
+    let disc = Disc::new(Vec3::new(0.0, height, 0.0), -Vec3::Y, radius);
+    let light = AreaLight::new(disc, Vec3::ONE);
+    let exact = f64::from(disc_on_axis_irradiance(Vec3::ONE, radius, height).x);
+    let points = uniform_points(n, 5);
+    let mut text = format!(
+        "A receiver {height} under the centre of a disc light of radius {radius} and radiance 1 \
+         receives exactly $\\pi R^2/(h^2+R^2) = {exact:.4}$. With {n} shadow rays, each warp \
+         estimates:\n\n| disc warp | estimate | against the exact value | standard errors off |\n\
+         |---|---:|---:|---:|\n"
+    );
+    for warp in DiscWarp::ALL {
+        let terms: Vec<f64> = points
+            .iter()
+            .map(|&u| {
+                f64::from(
+                    light_sample_contribution(
+                        Vec3::ZERO,
+                        Vec3::Y,
+                        &light,
+                        u,
+                        LightSampling::area(warp),
+                        &mut |_| true,
+                    )
+                    .x,
+                )
+            })
+            .collect();
+        let (estimate, error) = mean_and_error(&terms);
+        text.push_str(&format!(
+            "| {} | {estimate:.4} | {:.3} times | {:.1} |\n",
+            warp.name(),
+            estimate / exact,
+            (estimate - exact).abs() / error
+        ));
+    }
+    write_text(&out.join("naive_disc.md"), &text)?;
+
+    // A penumbra: a floor point that sees only the part x < 0.37 of a unit panel 1 above it.
+    let panel = AreaLight::new(
+        Parallelogram::new(Vec3::new(-0.2, 1.0, -0.7), Vec3::X, Vec3::Z),
+        Vec3::ONE,
+    );
+    let estimates = level.pick(400, 4000);
+    let variance_of_16 = |stratified: bool| -> f64 {
+        let mut sampler = IndependentSampler::new(7);
+        let values: Vec<f64> = (0..estimates)
+            .map(|i| {
+                sampler.start_pixel_sample(UVec2::ZERO, i as u64);
+                let u = light_samples(16, stratified, &mut SampleStream(&mut sampler));
+                f64::from(
+                    crate::estimator::estimate_irradiance(
+                        Vec3::ZERO,
+                        Vec3::Y,
+                        &panel,
+                        &u,
+                        LightSampling::area(DiscWarp::Concentric),
+                        |s| s.p.x < 0.37,
+                    )
+                    .x,
+                )
+            })
+            .collect();
+        let (_, error) = mean_and_error(&values);
+        error * error * values.len() as f64
+    };
+    let (independent, stratified) = (variance_of_16(false), variance_of_16(true));
+    let ratio = stratified / independent;
+    let word = if ratio < 1.0 { "less" } else { "more" };
+    write_text(
+        &out.join("penumbra_strata.md"),
+        &format!(
+            "At a floor point that sees a part of a panel light, over {estimates} estimates of \
+             16 shadow rays each, the stratified rays' estimate has {ratio:.3} times the \
+             variance of the independent rays' ({word}).\n"
+        ),
+    )?;
+
+    // A sphere light by area: how many of its points face away from the receiver.
+    let (sphere_radius, centre) = (STRATEGIES_SPHERE_RADIUS, SPHERE_LIGHT_CENTRE);
+    let sphere = AreaLight::new(Sphere::new(centre, sphere_radius), Vec3::ONE);
+    let d = centre.length();
+    let away = points
+        .iter()
+        .filter_map(|&u| sphere.sample(Vec3::ZERO, u, LightSampling::area(DiscWarp::Concentric)))
+        .filter(|s| s.n.dot(-s.p) <= 0.0)
+        .count();
+    let visible = 0.5 * (1.0 - sphere_radius / d);
+    write_text(
+        &out.join("sphere_cap.md"),
+        &format!(
+            "For the sphere light of the two renders above (radius {sphere_radius}, its centre \
+             {d:.2} from the floor's point at the origin), the visible cap is $(1 - R/d)/2 = {visible:.3}$ of \
+             its area. Of {n} points drawn by area, {:.3} faced away from the receiver (the \
+             formula says {:.3}): those shadow rays are spent on light that cannot arrive.\n",
+            away as f64 / points.len() as f64,
+            1.0 - visible
+        ),
     )?;
     Ok(())
 }
