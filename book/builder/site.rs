@@ -12,7 +12,7 @@ use mdbook_katex::preprocess::KatexProcessor;
 
 use crate::exercise_preprocessor::ExercisePreprocessor;
 use crate::lab_report::LabReport;
-use crate::{katex_offline, mdbook_log, offline_check};
+use crate::{katex_offline, mdbook_log, offline_check, prose_numbers};
 
 /// Builds the book whose `book.toml` is in `book_dir`; returns the path of its front page.
 pub fn build(book_dir: &Path) -> Result<PathBuf> {
@@ -22,6 +22,8 @@ pub fn build(book_dir: &Path) -> Result<PathBuf> {
 /// Builds the book, with the student's figures set beside the reference ones when a
 /// `lab_report` is given (`progress --site`).
 pub fn build_with(book_dir: &Path, lab_report: Option<LabReport>) -> Result<PathBuf> {
+    // A number typed into a page fails the build before anything is written.
+    prose_numbers::check(book_dir.parent().unwrap_or(book_dir), &book_dir.join("src"))?;
     let mut book = MDBook::load(book_dir)
         .with_context(|| format!("cannot load the book in {}", book_dir.display()))?;
     katex_offline::configure(&mut book.config)?;
