@@ -385,20 +385,6 @@ fn mitsuba_noise(out: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The error-against-time records as a table for the page.
-fn convergence_table(records: &[common::metrics::ConvergenceRecord]) -> String {
-    let mut table = String::from(
-        "| technique | camera rays per pixel | seconds | RMSE |\n|---|---:|---:|---:|\n",
-    );
-    for record in records {
-        table.push_str(&format!(
-            "| {} | {} | {:.3} | {:.2e} |\n",
-            record.technique, record.spp, record.seconds, record.rmse
-        ));
-    }
-    table
-}
-
 /// Error against time: more rays at the pixel centre buy nothing; a grid converges.
 fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let scene = Builtin::Spheres.build(crate::scenes::DEFAULT_MAX_DEPTH);
@@ -430,7 +416,10 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     ];
     let records = run_convergence(&techniques, quality.render.budgets, &reference);
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
-    write_text(&out.join("convergence.md"), &convergence_table(&records))?;
+    write_text(
+        &out.join("convergence.md"),
+        &common::metrics::convergence_markdown(&records, "camera rays per pixel"),
+    )?;
     plot_error_vs_time(
         &out.join("convergence.png"),
         "Error against time (spheres)",
@@ -461,20 +450,5 @@ mod tests {
             sentence.contains("2048.0 times (more than a tree that doubles)"),
             "{sentence}"
         );
-    }
-
-    #[test]
-    fn the_convergence_table_has_a_row_per_record() {
-        let record = |technique: &str, spp| common::metrics::ConvergenceRecord {
-            technique: technique.to_string(),
-            spp,
-            seconds: 0.5,
-            rmse: 0.25,
-            relmse: 0.0625,
-        };
-        let table = convergence_table(&[record("pixel centre", 1), record("regular grid", 4)]);
-        let lines: Vec<&str> = table.lines().collect();
-        assert_eq!(lines.len(), 4, "{table}");
-        assert_eq!(lines[3], "| regular grid | 4 | 0.500 | 2.50e-1 |");
     }
 }

@@ -34,7 +34,7 @@ use common::figure_set::{FigureSet, Level};
 use common::film::PixelBoxFilter;
 use common::image::Image;
 use common::metrics::{
-    ConvergenceRecord, Technique, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence,
+    Technique, convergence_markdown, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence,
     write_convergence_csv,
 };
 use common::output::figures::{Axes, Series, SeriesStyle, comparison_grid, line_plot};
@@ -382,7 +382,7 @@ fn distribution_vs_path(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     write_convergence_csv(&out.join("drt-vs-pt-convergence.csv"), &records)?;
     write_text(
         &out.join("drt-vs-pt-convergence.md"),
-        &convergence_table(&records),
+        &convergence_markdown(&records, "samples per pixel"),
     )?;
     plot_error_vs_time(
         &out.join("drt-vs-pt-convergence.png"),
@@ -458,7 +458,10 @@ fn cornell_techniques(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         .collect();
     let records = run_convergence(&runs, quality.budgets, &reference);
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
-    write_text(&out.join("convergence.md"), &convergence_table(&records))?;
+    write_text(
+        &out.join("convergence.md"),
+        &convergence_markdown(&records, "samples per pixel"),
+    )?;
     plot_error_vs_time(
         &out.join("convergence.png"),
         "Cornell box: error against time",
@@ -560,7 +563,7 @@ fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     write_convergence_csv(&out.join("plates-convergence.csv"), &records)?;
     write_text(
         &out.join("plates-convergence.md"),
-        &convergence_table(&records),
+        &convergence_markdown(&records, "samples per pixel"),
     )?;
     plot_error_vs_time(
         &out.join("plates-convergence.png"),
@@ -600,19 +603,6 @@ fn rays_number(rays: f64) -> String {
     } else {
         format!("{rays:.0}")
     }
-}
-
-/// The error-against-time records as a Markdown table, one row per technique and budget.
-fn convergence_table(records: &[ConvergenceRecord]) -> String {
-    let mut table =
-        String::from("| technique | samples per pixel | seconds | RMSE |\n|---|---|---|---|\n");
-    for record in records {
-        table += &format!(
-            "| {} | {} | {:.3} | {:.4} |\n",
-            record.technique, record.spp, record.seconds, record.rmse
-        );
-    }
-    table
 }
 
 /// How many numbers a path draws on average in the agreement scenes, counted by
@@ -735,19 +725,5 @@ mod tests {
     fn sample_counts_are_spelled_for_their_number() {
         assert_eq!(samples_per_pixel(1), "1 sample per pixel");
         assert_eq!(samples_per_pixel(16), "16 samples per pixel");
-    }
-
-    #[test]
-    fn a_convergence_table_has_a_row_per_record() {
-        let record = ConvergenceRecord {
-            technique: "path".to_string(),
-            spp: 4,
-            seconds: 0.5,
-            rmse: 0.25,
-            relmse: 0.0,
-        };
-        let table = convergence_table(&[record.clone(), record]);
-        assert_eq!(table.lines().count(), 4);
-        assert!(table.contains("| path | 4 | 0.500 | 0.2500 |"), "{table}");
     }
 }

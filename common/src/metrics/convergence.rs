@@ -83,8 +83,44 @@ pub fn run_convergence(
     records
 }
 
+/// The records as a Markdown table for a page, one row per technique and budget, so that the
+/// numbers printed beside an error-against-time plot are the run's own. `budget` names the
+/// samples column as the chapter counts them ("camera rays per pixel").
+pub fn convergence_markdown(records: &[ConvergenceRecord], budget: &str) -> String {
+    let mut table = format!("| technique | {budget} | seconds | RMSE |\n|---|---:|---:|---:|\n");
+    for record in records {
+        table.push_str(&format!(
+            "| {} | {} | {:.3} | {:.2e} |\n",
+            record.technique, record.spp, record.seconds, record.rmse
+        ));
+    }
+    table
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn the_markdown_table_has_a_row_per_record_under_the_chapter_s_heading() {
+        let record = |technique: &str, spp| super::ConvergenceRecord {
+            technique: technique.to_string(),
+            spp,
+            seconds: 0.5,
+            rmse: 0.25,
+            relmse: 0.0625,
+        };
+        let table = super::convergence_markdown(
+            &[record("pixel centre", 1), record("regular grid", 4)],
+            "camera rays per pixel",
+        );
+        let lines: Vec<&str> = table.lines().collect();
+        assert_eq!(lines.len(), 4, "{table}");
+        assert_eq!(
+            lines[0],
+            "| technique | camera rays per pixel | seconds | RMSE |"
+        );
+        assert_eq!(lines[3], "| regular grid | 4 | 0.500 | 2.50e-1 |");
+    }
+
     use super::*;
     use approx::assert_relative_eq;
     use glam::Vec3;

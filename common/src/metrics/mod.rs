@@ -19,7 +19,7 @@ pub use agreement::{
     agreement_table, write_agreement_figure,
 };
 pub use bias_blocks::{BIAS_BLOCK_SIZE, BIAS_THRESHOLD, bias_blocks};
-pub use convergence::{ConvergenceRecord, Technique, run_convergence};
+pub use convergence::{ConvergenceRecord, Technique, convergence_markdown, run_convergence};
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
 pub use mitsuba::{
