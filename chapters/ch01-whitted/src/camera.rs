@@ -22,6 +22,9 @@ pub struct PinholeCamera {
     pub height: u32,
     /// Rays start this far along the viewing axis (Mitsuba's `near_clip`).
     pub near_clip: f32,
+    /// Where the image's centre sits off the viewing axis, in fractions of the image's width
+    /// and height (Mitsuba's `principal_point_offset`; zero for the usual camera).
+    pub principal_point_offset: Vec2,
 }
 
 impl PinholeCamera {
@@ -33,14 +36,16 @@ impl PinholeCamera {
             width,
             height,
             near_clip: 0.01,
+            principal_point_offset: Vec2::ZERO,
         }
     }
 
-    /// The pinhole of the scene's `camera` (its frame at rest, its field of view and near
-    /// clip) on a `width x height` film.
+    /// The pinhole of the scene's `camera` (its frame at rest, its field of view, near clip
+    /// and principal point) on a `width x height` film.
     pub fn of(camera: &Camera, width: u32, height: u32) -> Self {
         Self {
             near_clip: camera.near_clip,
+            principal_point_offset: camera.principal_point_offset,
             ..Self::new(camera.frame, camera.fov_x_degrees, width, height)
         }
     }
@@ -57,8 +62,8 @@ impl PinholeCamera {
     /// The direction, in camera space and not normalised, through film position `p_film`
     /// (in pixels, `(0, 0)` at the top-left corner).
     pub fn camera_direction(&self, p_film: Vec2) -> Vec3 {
-        let u = p_film.x / self.width as f32;
-        let v = p_film.y / self.height as f32;
+        let u = p_film.x / self.width as f32 + self.principal_point_offset.x;
+        let v = p_film.y / self.height as f32 + self.principal_point_offset.y;
         let aspect = self.width as f32 / self.height as f32;
         Vec3::new(
             (1.0 - 2.0 * u) * self.tan_half_fov_x,
@@ -108,5 +113,24 @@ mod tests {
         assert!(top.dir.y > 0.0);
         // The vertical half-extent is tan(45°) / aspect = 0.5.
         assert_relative_eq!(top.dir.y / -top.dir.z, 0.5, epsilon = 1e-6);
+    }
+
+    #[test]
+    fn a_principal_point_offset_moves_the_image_as_in_mitsuba() {
+        // Mitsuba 3's ray through the film's centre for fov 40 on a 300 x 200 film with
+        // principal_point_offset (0.1, 0.2), in camera space.
+        let camera = PinholeCamera {
+            principal_point_offset: Vec2::new(0.1, 0.2),
+            ..PinholeCamera::new(
+                CameraFrame::look_at(Vec3::ZERO, Vec3::Z, Vec3::Y).unwrap(),
+                40.0,
+                300,
+                200,
+            )
+        };
+        let ray = camera.generate_ray(Vec2::new(150.0, 100.0));
+        // The camera's frame is the world's: camera space is world space here.
+        let mitsuba = Vec3::new(-0.072_264_1, -0.096_352_2, 0.992_721);
+        assert_relative_eq!(ray.dir, mitsuba, epsilon = 1e-5);
     }
 }

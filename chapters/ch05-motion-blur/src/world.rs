@@ -50,7 +50,11 @@ impl MotionScene {
         for (j, animated) in scene.moving.iter().enumerate() {
             let surface = &scene.surfaces[first_index + j];
             let motion = AnimatedTransform::new(&animated.keyframes).map_err(|e| {
-                let at = surface.origin.map(|p| format!("{p}: ")).unwrap_or_default();
+                let at = surface
+                    .origin
+                    .as_ref()
+                    .map(|p| format!("{p}: "))
+                    .unwrap_or_default();
                 format!("{at}shape {}: {e}", first_index + j + 1)
             })?;
             moving.push(MovingShape::new(animated.shape, motion));

@@ -4,7 +4,7 @@
 //! image's left**; the field of view is horizontal. How a ray leaves the camera is the
 //! chapters' business: chapter 01's pinhole, chapter 04's thin lens, chapter 05's shutter.
 
-use glam::{Mat4, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
 /// Where the camera is and which way it looks.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,6 +82,9 @@ pub struct Camera {
     pub frame: CameraFrame,
     /// The horizontal field of view in degrees.
     pub fov_x_degrees: f32,
+    /// The image's centre moved off the camera's axis by these fractions of the image's width
+    /// and height (Mitsuba's `principal_point_offset_x` and `_y`); zero for the usual camera.
+    pub principal_point_offset: Vec2,
     /// Rays start this far along the camera axis (Mitsuba's `near_clip`, default 0.01).
     pub near_clip: f32,
     /// Pinhole or thin lens.
@@ -102,6 +105,7 @@ impl Camera {
         Self {
             frame,
             fov_x_degrees,
+            principal_point_offset: Vec2::ZERO,
             near_clip: 0.01,
             model: CameraModel::Pinhole,
             shutter_open: 0.0,

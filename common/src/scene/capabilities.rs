@@ -188,7 +188,7 @@ impl FeatureUse {
     /// `line 32, column 5: an area light (shape 3)`.
     fn describe(&self) -> String {
         let mut text = String::new();
-        if let Some(origin) = self.origin {
+        if let Some(origin) = &self.origin {
             text.push_str(&format!("{origin}: "));
         }
         text.push_str(self.feature.what());
@@ -295,7 +295,7 @@ impl Scene {
         if matches!(self.integrator, Integrator::Path { .. }) && self.max_depth > 2 {
             add(
                 Feature::IndirectLight,
-                self.origins.integrator,
+                self.origins.integrator.clone(),
                 "the path integrator's max_depth".to_string(),
             );
         }
@@ -309,21 +309,21 @@ impl Scene {
         {
             add(
                 Feature::Aperture,
-                self.origins.sensor,
+                self.origins.sensor.clone(),
                 format!("aperture radius {aperture_radius}"),
             );
         }
         if !keyframes.is_empty() {
             add(
                 Feature::MovingCamera,
-                self.origins.sensor,
+                self.origins.sensor.clone(),
                 "an <animation> of the sensor's to_world".to_string(),
             );
         }
         if self.film.filter != FilmFilter::Box {
             add(
                 Feature::FilmFilter,
-                self.origins.filter.or(self.origins.sensor),
+                self.origins.filter.clone().or(self.origins.sensor.clone()),
                 format!("{:?}", self.film.filter).to_lowercase(),
             );
         }
@@ -332,7 +332,7 @@ impl Scene {
             let name = format!("shape {}", index + 1);
             let moves = index >= still;
             if moves {
-                add(Feature::MovingShape, surface.origin, name.clone());
+                add(Feature::MovingShape, surface.origin.clone(), name.clone());
             }
             if surface.emitter.is_some() {
                 let feature = if moves {
@@ -340,7 +340,7 @@ impl Scene {
                 } else {
                     Feature::AreaLight
                 };
-                add(feature, surface.origin, name.clone());
+                add(feature, surface.origin.clone(), name.clone());
             }
             if let Some((detail, stands_in)) = fuzzy_detail(&surface.material) {
                 let feature = if stands_in {
@@ -348,13 +348,13 @@ impl Scene {
                 } else {
                     Feature::FuzzyMaterial
                 };
-                add(feature, surface.origin, format!("{name}: {detail}"));
+                add(feature, surface.origin.clone(), format!("{name}: {detail}"));
             }
         }
         if self.environment != glam::Vec3::ZERO {
             add(
                 Feature::EnvironmentLight,
-                self.origins.environment,
+                self.origins.environment.clone(),
                 String::new(),
             );
         }
@@ -422,6 +422,7 @@ mod tests {
         lit.surfaces[0].origin = Some(TextPosition {
             line: 32,
             column: 5,
+            file: None,
         });
         let refusal = WHITTED.check(&lit).unwrap_err();
         assert!(

@@ -74,7 +74,7 @@ pub struct Scene {
 }
 
 /// What the surface of one shape is made of, whether it glows, and where it was written.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Surface {
     /// How it scatters light.
     pub material: Material,

@@ -2,6 +2,8 @@
 //! and where each part was written in the scene file.
 
 use std::fmt;
+use std::path::Path;
+use std::sync::Arc;
 
 /// The image the camera records.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -79,7 +81,7 @@ pub enum Integrator {
 /// Where the parts of a scene were written in its file, for messages that point at them.
 /// Every entry is `None` for a built-in scene; a shape's own is on its
 /// [`Surface`](super::Surface).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Origins {
     /// The `<integrator>` element (or `None` when the file has none).
     pub integrator: Option<TextPosition>,
@@ -91,18 +93,26 @@ pub struct Origins {
     pub environment: Option<TextPosition>,
 }
 
-/// A place in a scene file: 1-based line and column, as an editor shows them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// A place in a scene file: 1-based line and column, as an editor shows them, and the file
+/// when it is not the scene file itself but one it includes.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct TextPosition {
     /// The line, counted from 1 (0: not known).
     pub line: u32,
     /// The column in characters, counted from 1 (0: not known).
     pub column: u32,
+    /// The included file the place is in; `None` in the scene file.
+    pub file: Option<Arc<Path>>,
 }
 
 impl fmt::Display for TextPosition {
-    /// `line 12, column 5`, for messages about an element that has already been read.
+    /// `line 12, column 5` (with `of parts/lights.xml` in an included file), for messages about
+    /// an element that has already been read.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}, column {}", self.line, self.column)
+        write!(f, "line {}, column {}", self.line, self.column)?;
+        match &self.file {
+            Some(file) => write!(f, " of {}", file.display()),
+            None => Ok(()),
+        }
     }
 }

@@ -16,8 +16,8 @@
 //! transform *between* keyframes is found (decomposed, with the rotation slerped) is chapter
 //! 05's business, not the reader's.
 
+use super::element::Element;
 use glam::Mat4;
-use roxmltree::Node;
 
 use super::error::SceneError;
 use super::reader::Reader;
@@ -25,10 +25,13 @@ use super::transform::read_transform;
 use super::values::parse_float;
 
 /// The keyframes of an `<animation>` element: `(time, matrix)` pairs with increasing times.
-pub(super) fn read_animation(reader: &Reader, node: Node) -> Result<Vec<(f32, Mat4)>, SceneError> {
+pub(super) fn read_animation(
+    reader: &Reader,
+    node: &Element,
+) -> Result<Vec<(f32, Mat4)>, SceneError> {
     let mut keyframes: Vec<(f32, Mat4)> = Vec::new();
-    for child in node.children().filter(Node::is_element) {
-        let tag = child.tag_name().name();
+    for child in node.children() {
+        let tag = child.name();
         if tag != "transform" {
             return Err(reader.error(
                 child,

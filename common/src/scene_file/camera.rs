@@ -1,16 +1,20 @@
 //! `<sensor>` with its `<film>` and `<sampler>`, and the field-of-view conversion.
 
+use super::element::Element;
 use glam::Mat4;
-use roxmltree::Node;
 
 use super::description::{FilmDescription, SamplerDescription, Sensor};
 use super::error::SceneError;
 use super::properties::Properties;
 use super::reader::Reader;
+use super::values::parse_float;
 use crate::scene::{CameraModel, FilmFilter};
 
 /// Reads a `perspective` or `thinlens` sensor.
-pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, SceneError> {
+pub(super) fn read_sensor<'a>(
+    reader: &mut Reader<'a>,
+    node: &'a Element,
+) -> Result<Sensor, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     if type_name != "perspective" && type_name != "thinlens" {
         return Err(reader.error(
@@ -21,13 +25,15 @@ pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, Sce
     let mut properties = Properties::read(reader, node, format!("{type_name} sensor"))?;
     let mut film = None;
     let mut sampler = None;
-    for &object in &properties.objects {
-        match object.tag_name().name() {
+    for &written in &properties.objects {
+        // A `<ref>` names a film or sampler declared apart, at the top level.
+        let object = reader.dereference(written)?;
+        match object.name() {
             "film" if film.is_none() => film = Some(read_film(reader, object)?),
             "sampler" if sampler.is_none() => sampler = Some(read_sampler(reader, object)?),
             tag => {
                 return Err(reader.error(
-                    object,
+                    written,
                     format!(
                         "<{tag}> is not allowed here: a sensor holds one <film> and one <sampler>"
                     ),
@@ -42,34 +48,23 @@ pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, Sce
         seed: 0,
     });
 
-    let fov = properties.float(reader, "fov")?.ok_or_else(|| {
-        reader.error(
-            node,
-            "the sensor needs <float name=\"fov\" value=\"...\"/> in degrees",
-        )
-    })?;
-    if !(fov > 0.0 && fov < 180.0) {
-        let position = properties
-            .position_of("fov")
-            .unwrap_or(reader.position(node));
-        return Err(reader.error_at(
-            position,
-            format!("fov must be between 0 and 180 degrees, found {fov}"),
-        ));
-    }
-    let fov_axis = properties
-        .string(reader, "fov_axis")?
-        .unwrap_or_else(|| "x".to_string());
     let aspect = film.width as f32 / film.height as f32;
-    let fov_x_degrees = horizontal_fov(fov, &fov_axis, aspect).ok_or_else(|| {
-        let position = properties
-            .position_of("fov_axis")
-            .unwrap_or(reader.position(node));
-        reader.error_at(
-            position,
-            format!("unknown fov_axis \"{fov_axis}\": expected x, y, diagonal, smaller or larger"),
-        )
-    })?;
+    let fov_x_degrees = field_of_view(reader, node, &mut properties, aspect)?;
+    let mut offset = |name: &str| -> Result<f32, SceneError> {
+        let offset = properties.float(reader, name)?.unwrap_or(0.0);
+        if offset.is_finite() {
+            Ok(offset)
+        } else {
+            let position = properties
+                .position_of(name)
+                .unwrap_or(reader.position(node));
+            Err(reader.error_at(position, format!("{name} must be a finite number")))
+        }
+    };
+    let principal_point_offset = glam::Vec2::new(
+        offset("principal_point_offset_x")?,
+        offset("principal_point_offset_y")?,
+    );
 
     let model = if type_name == "thinlens" {
         let mut required = |name: &str| {
@@ -92,6 +87,7 @@ pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, Sce
         position: reader.position(node),
         model,
         fov_x_degrees,
+        principal_point_offset,
         near_clip: properties.float(reader, "near_clip")?.unwrap_or(0.01),
         far_clip: properties.float(reader, "far_clip")?.unwrap_or(10_000.0),
         shutter_open: properties.float(reader, "shutter_open")?.unwrap_or(0.0),
@@ -103,6 +99,76 @@ pub(super) fn read_sensor(reader: &mut Reader, node: Node) -> Result<Sensor, Sce
     };
     properties.finish(reader);
     Ok(sensor)
+}
+
+/// The horizontal field of view in degrees, from `fov` and `fov_axis`, or else from
+/// `focal_length` (Mitsuba 3's default "50mm") as a lens on a 36 x 24 mm film: its diagonal
+/// field of view `2 atan(sqrt(36² + 24²) / 2f)`, whatever the image's aspect ratio.
+fn field_of_view(
+    reader: &Reader,
+    node: &Element,
+    properties: &mut Properties,
+    aspect: f32,
+) -> Result<f32, SceneError> {
+    let at = |properties: &Properties, name: &str| {
+        properties
+            .position_of(name)
+            .unwrap_or(reader.position(node))
+    };
+    let has_fov = properties.position_of("fov").is_some();
+    if has_fov && properties.position_of("focal_length").is_some() {
+        return Err(reader.error_at(
+            at(properties, "focal_length"),
+            "the sensor gives both fov and focal_length: give one of them",
+        ));
+    }
+    let (fov, fov_axis, axis_name) = if has_fov {
+        let fov = properties.float(reader, "fov")?.unwrap_or_default();
+        let axis = properties
+            .string(reader, "fov_axis")?
+            .unwrap_or_else(|| "x".to_string());
+        (fov, axis, "fov")
+    } else {
+        let focal_length = match properties.position_of("focal_length") {
+            None => 50.0,
+            Some(position) => {
+                let text = match properties.string(reader, "focal_length") {
+                    Ok(text) => text.unwrap_or_default(),
+                    Err(_) => properties
+                        .float(reader, "focal_length")?
+                        .unwrap_or_default()
+                        .to_string(),
+                };
+                let number = text.trim().trim_end_matches("mm").trim();
+                parse_float(number)
+                    .ok()
+                    .filter(|f| f.is_finite() && *f > 0.0)
+                    .ok_or_else(|| {
+                        reader.error_at(
+                            position,
+                            format!(
+                                "focal_length must be a positive length in millimetres such as                                  \"50mm\", found \"{text}\""
+                            ),
+                        )
+                    })?
+            }
+        };
+        let diagonal_mm = (36.0f32 * 36.0 + 24.0 * 24.0).sqrt();
+        let fov = 2.0 * (diagonal_mm / (2.0 * focal_length)).atan().to_degrees();
+        (fov, "diagonal".to_string(), "focal_length")
+    };
+    if !(fov > 0.0 && fov < 180.0) {
+        return Err(reader.error_at(
+            at(properties, axis_name),
+            format!("fov must be between 0 and 180 degrees, found {fov}"),
+        ));
+    }
+    horizontal_fov(fov, &fov_axis, aspect).ok_or_else(|| {
+        reader.error_at(
+            at(properties, "fov_axis"),
+            format!("unknown fov_axis \"{fov_axis}\": expected x, y, diagonal, smaller or larger"),
+        )
+    })
 }
 
 /// The horizontal field of view in degrees for `fov` degrees along `fov_axis`, as Mitsuba 3
@@ -141,7 +207,10 @@ fn default_film() -> FilmDescription {
 }
 
 /// Reads an `hdrfilm` with its optional `rfilter`.
-fn read_film(reader: &mut Reader, node: Node) -> Result<FilmDescription, SceneError> {
+fn read_film<'a>(
+    reader: &mut Reader<'a>,
+    node: &'a Element,
+) -> Result<FilmDescription, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     if type_name != "hdrfilm" {
         return Err(reader.error(
@@ -178,10 +247,11 @@ fn read_film(reader: &mut Reader, node: Node) -> Result<FilmDescription, SceneEr
     if let Some(format) = properties.string(reader, "component_format")? {
         film.component_format = format;
     }
-    for &object in &properties.objects {
-        if object.tag_name().name() != "rfilter" {
-            let tag = object.tag_name().name();
-            return Err(reader.error(object, format!("<{tag}> is not allowed inside <film>")));
+    for &written in &properties.objects {
+        let object = reader.dereference(written)?;
+        if object.name() != "rfilter" {
+            let tag = object.name();
+            return Err(reader.error(written, format!("<{tag}> is not allowed inside <film>")));
         }
         film.filter = read_filter(reader, object)?;
         film.filter_position = Some(reader.position(object));
@@ -191,7 +261,7 @@ fn read_film(reader: &mut Reader, node: Node) -> Result<FilmDescription, SceneEr
 }
 
 /// Reads an `rfilter`: box, tent or gaussian.
-fn read_filter(reader: &mut Reader, node: Node) -> Result<FilmFilter, SceneError> {
+fn read_filter(reader: &mut Reader, node: &Element) -> Result<FilmFilter, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} rfilter"))?;
     let filter = match type_name.as_str() {
@@ -210,14 +280,14 @@ fn read_filter(reader: &mut Reader, node: Node) -> Result<FilmFilter, SceneError
         }
     };
     if let Some(object) = properties.objects.first() {
-        return Err(reader.error(*object, "an rfilter cannot contain objects"));
+        return Err(reader.error(object, "an rfilter cannot contain objects"));
     }
     properties.finish(reader);
     Ok(filter)
 }
 
 /// Reads a sampler of any type: only `sample_count` and `seed` are interpreted.
-fn read_sampler(reader: &mut Reader, node: Node) -> Result<SamplerDescription, SceneError> {
+fn read_sampler(reader: &mut Reader, node: &Element) -> Result<SamplerDescription, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} sampler"))?;
     let mut count_or_seed = |name: &str, default: u32, minimum: u32| {
@@ -243,7 +313,7 @@ fn read_sampler(reader: &mut Reader, node: Node) -> Result<SamplerDescription, S
         type_name,
     };
     if let Some(object) = properties.objects.first() {
-        return Err(reader.error(*object, "a sampler cannot contain objects"));
+        return Err(reader.error(object, "a sampler cannot contain objects"));
     }
     properties.finish(reader);
     Ok(sampler)

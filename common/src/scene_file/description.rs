@@ -7,7 +7,7 @@
 
 use std::path::PathBuf;
 
-use glam::{Mat4, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
 use super::TextPosition;
 use crate::scene::{AreaEmitter, CameraModel, FilmFilter, Material};
@@ -74,6 +74,9 @@ pub struct Sensor {
     /// The horizontal field of view in degrees, already converted from the file's `fov` and
     /// `fov_axis` with the film's aspect ratio, as Mitsuba 3 does.
     pub fov_x_degrees: f32,
+    /// Mitsuba's `principal_point_offset_x` and `_y`: the image's centre moved off the camera's
+    /// axis by these fractions of the image's width and height (0 for the usual camera).
+    pub principal_point_offset: Vec2,
     /// Rays start this far along the camera axis (default 0.01).
     pub near_clip: f32,
     /// Rays end this far along the camera axis (default 10 000).
@@ -183,7 +186,7 @@ pub enum ShapeGeometry {
 }
 
 /// A light that is not a shape.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum EmitterDescription {
     /// A point light.
     Point {

@@ -1,13 +1,11 @@
-//! The top level of a scene file: `<scene>`, `<default>`s, and the objects in it.
+//! The top level of a scene: `<scene>` with the files it includes, and the objects in it.
 
-use std::collections::HashMap;
 use std::path::Path;
-
-use roxmltree::{Document, Node};
 
 use super::LoadedDescription;
 use super::camera::read_sensor;
 use super::description::SceneDescription;
+use super::element::{Element, read_tree};
 use super::error::{SceneError, TextPosition};
 use super::integrator::{default_integrator, read_integrator};
 use super::lights::{Emitter, read_emitter};
@@ -15,39 +13,27 @@ use super::materials::read_bsdf;
 use super::reader::Reader;
 use super::shapes::read_shape;
 
+/// Objects that may stand at the top level only to be referenced from inside another object
+/// (`<sensor>` refers to a `<sampler>`, a `<shape>` to an area `<emitter>`).
+const REFERENCED_ONLY: &[&str] = &["sampler", "rfilter", "film"];
+
 /// Parses the text of a scene file; see [`super::parse_scene`].
 pub(super) fn parse_document(
     text: &str,
     file: &Path,
     overrides: &[(String, String)],
 ) -> Result<LoadedDescription, SceneError> {
-    let document = Document::parse(text).map_err(|error| {
-        let position = error.pos();
-        SceneError {
-            file: file.to_path_buf(),
-            line: position.row,
-            column: position.col,
-            message: format!("malformed XML: {error}"),
-        }
-    })?;
-    let root = document.root_element();
-    let parameters = collect_parameters(file, &document, root, overrides)?;
-    let mut reader = Reader::new(file, &document, parameters);
-    if root.tag_name().name() != "scene" {
-        let tag = root.tag_name().name();
-        return Err(reader.error(
-            root,
-            format!("expected <scene> as the outer element, found <{tag}>"),
-        ));
-    }
+    let tree = read_tree(text, file, overrides)?;
+    let mut reader = Reader::new(file, &tree)?;
 
     let mut integrator = None;
     let mut integrator_position = None;
     let mut sensor = None;
     let mut shapes = Vec::new();
     let mut emitters = Vec::new();
-    for child in root.children().filter(Node::is_element) {
-        let tag = child.tag_name().name();
+    let mut set_apart: Vec<&Element> = Vec::new();
+    for child in tree.root.children() {
+        let tag = child.name();
         match tag {
             "default" => {}
             "integrator" if integrator.is_none() => {
@@ -71,27 +57,44 @@ pub(super) fn parse_document(
             }
             "emitter" => match read_emitter(&mut reader, child)? {
                 Emitter::Standalone(emitter) => emitters.push(emitter),
+                // An area emitter declared apart is read again where a shape refers to it.
+                Emitter::Area(_) if child.attribute("id").is_some() => set_apart.push(child),
                 Emitter::Area(_) => {
                     return Err(reader.error(
                         child,
-                        "an area emitter must be inside the <shape> that emits",
+                        "an area emitter must be inside the <shape> that emits, or have an id \
+                         that a shape's <ref> names",
                     ));
                 }
             },
+            _ if REFERENCED_ONLY.contains(&tag) => set_apart.push(child),
             _ => {
                 return Err(reader.error(
                     child,
                     format!(
-                        "unknown element <{tag}> in <scene>: expected default, integrator, \
-                         sensor, shape, bsdf or emitter"
+                        "unknown element <{tag}> in <scene>: expected default, path, include, \
+                         integrator, sensor, shape, bsdf, emitter, or a sampler, rfilter or \
+                         film with an id"
                     ),
                 ));
             }
         }
     }
+    for element in set_apart {
+        let used = element
+            .attribute("id")
+            .is_some_and(|id| reader.referenced.contains(id));
+        if !used {
+            let tag = element.name();
+            reader.warn_at(
+                reader.position(element),
+                format!("this <{tag}> is never referenced by a <ref id=\"...\"/>, so it is unused"),
+            );
+        }
+    }
     let sensor = sensor.ok_or_else(|| {
         reader.error_at(
-            TextPosition { line: 0, column: 0 },
+            TextPosition::default(),
             "the scene has no <sensor>: add <sensor type=\"perspective\"> with a fov",
         )
     })?;
@@ -105,25 +108,4 @@ pub(super) fn parse_document(
         },
         warnings: reader.warnings,
     })
-}
-
-/// The `$name` parameters: every top-level `<default>`, then the caller's overrides on top.
-fn collect_parameters(
-    file: &Path,
-    document: &Document,
-    root: Node,
-    overrides: &[(String, String)],
-) -> Result<HashMap<String, String>, SceneError> {
-    let reader = Reader::new(file, document, HashMap::new());
-    let mut parameters = HashMap::new();
-    for node in root.children().filter(|n| n.has_tag_name("default")) {
-        let (Some(name), Some(value)) = (node.attribute("name"), node.attribute("value")) else {
-            return Err(reader.error(node, "<default> needs \"name\" and \"value\" attributes"));
-        };
-        parameters.insert(name.to_string(), value.to_string());
-    }
-    for (name, value) in overrides {
-        parameters.insert(name.clone(), value.clone());
-    }
-    Ok(parameters)
 }

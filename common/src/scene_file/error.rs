@@ -1,7 +1,7 @@
 //! What can go wrong while reading a scene file, and the warnings that are not worth stopping for.
 
 use std::fmt;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 pub use crate::scene::TextPosition;
 
@@ -12,7 +12,7 @@ pub use crate::scene::TextPosition;
 /// error concerns the file as a whole (it cannot be read, or it lacks a `<sensor>`).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub struct SceneError {
-    /// The scene file, as the caller named it.
+    /// The scene file, as the caller named it, or the included file the problem is in.
     pub file: PathBuf,
     /// The line of the offending element, counted from 1 (0: the whole file).
     pub line: u32,
@@ -20,6 +20,19 @@ pub struct SceneError {
     pub column: u32,
     /// What is wrong and what was expected instead.
     pub message: String,
+}
+
+impl SceneError {
+    /// An error at `position`, which is in the scene file `scene_file` unless it names an
+    /// included file.
+    pub fn at(scene_file: &Path, position: &TextPosition, message: impl Into<String>) -> Self {
+        SceneError {
+            file: position.file.as_deref().unwrap_or(scene_file).to_path_buf(),
+            line: position.line,
+            column: position.column,
+            message: message.into(),
+        }
+    }
 }
 
 impl fmt::Display for SceneError {

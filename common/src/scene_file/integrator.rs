@@ -1,6 +1,6 @@
 //! `<integrator>`: `path` and `direct`.
 
-use roxmltree::Node;
+use super::element::Element;
 
 use super::description::Integrator;
 use super::error::SceneError;
@@ -16,13 +16,16 @@ pub(super) fn default_integrator() -> Integrator {
 }
 
 /// Reads an `<integrator>`.
-pub(super) fn read_integrator(reader: &mut Reader, node: Node) -> Result<Integrator, SceneError> {
+pub(super) fn read_integrator(
+    reader: &mut Reader,
+    node: &Element,
+) -> Result<Integrator, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} integrator"))?;
     if let Some(object) = properties.objects.first() {
-        let tag = object.tag_name().name();
+        let tag = object.name();
         return Err(reader.error(
-            *object,
+            object,
             format!("<{tag}> is not allowed inside <integrator>"),
         ));
     }

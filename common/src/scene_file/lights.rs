@@ -1,7 +1,7 @@
 //! `<emitter>`: area lights attached to shapes, and point and constant lights on their own.
 
+use super::element::Element;
 use glam::Vec3;
-use roxmltree::Node;
 
 use super::description::EmitterDescription;
 use super::error::SceneError;
@@ -18,12 +18,12 @@ pub(super) enum Emitter {
 }
 
 /// Reads an `<emitter>` of type `area`, `point` or `constant`.
-pub(super) fn read_emitter(reader: &mut Reader, node: Node) -> Result<Emitter, SceneError> {
+pub(super) fn read_emitter(reader: &mut Reader, node: &Element) -> Result<Emitter, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} emitter"))?;
     if let Some(object) = properties.objects.first() {
-        let tag = object.tag_name().name();
-        return Err(reader.error(*object, format!("<{tag}> is not allowed inside <emitter>")));
+        let tag = object.name();
+        return Err(reader.error(object, format!("<{tag}> is not allowed inside <emitter>")));
     }
     let emitter = match type_name.as_str() {
         "area" => Emitter::Area(AreaEmitter {
@@ -80,7 +80,7 @@ pub(super) fn read_emitter(reader: &mut Reader, node: Node) -> Result<Emitter, S
 /// would give negative pixels rather than an error.
 fn emission(
     reader: &Reader,
-    node: Node,
+    node: &Element,
     properties: &mut Properties,
     name: &str,
     whose: &str,

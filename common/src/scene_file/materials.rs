@@ -1,7 +1,7 @@
 //! `<bsdf>` and `<ref>`: materials, inline or named by `id` and referenced later.
 
+use super::element::Element;
 use glam::Vec3;
-use roxmltree::Node;
 
 use super::error::SceneError;
 use super::properties::Properties;
@@ -48,22 +48,41 @@ const DEFAULT_ALPHA: f32 = 0.1;
 /// Mitsuba 0.6's default Phong exponent.
 const DEFAULT_PHONG_EXPONENT: f32 = 30.0;
 
-/// Reads a `<bsdf>` element into the material it describes and, when it has an `id`,
-/// registers it for later `<ref>`s.
+/// Reads a `<bsdf>` element into the material it describes. One with an `id` is read once,
+/// the first time it is met or referenced; every later `<ref>` gets the same material.
 ///
 /// Mitsuba 3's rough BSDFs (`roughconductor`, `roughdielectric`) become `cos^n` lobes of about
 /// the same width (see [`Microfacet`]), remembering the roughness they stand in for; the
 /// workbook's `phong` (Mitsuba 0.6's name and exponent, a specular lobe only) is the glossy lobe
 /// itself, normalised as chapter 06's density `(n + 1) / 2π cos^n` rather than as 0.6's Phong.
-pub(super) fn read_bsdf(reader: &mut Reader, node: Node) -> Result<Material, SceneError> {
+pub(super) fn read_bsdf<'a>(
+    reader: &mut Reader<'a>,
+    node: &'a Element,
+) -> Result<Material, SceneError> {
+    let Some(id) = reader.attribute(node, "id")? else {
+        return read_bsdf_element(reader, node);
+    };
+    if let Some(material) = reader.bsdfs_by_id.get(&id) {
+        return Ok(*material);
+    }
+    reader.start_reading(node, &id)?;
+    let material = read_bsdf_element(reader, node);
+    reader.done_reading(&id);
+    let material = material?;
+    reader.bsdfs_by_id.insert(id, material);
+    Ok(material)
+}
+
+/// Reads the `<bsdf>` element `node` itself, however often its id is referenced.
+fn read_bsdf_element<'a>(
+    reader: &mut Reader<'a>,
+    node: &'a Element,
+) -> Result<Material, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} bsdf"))?;
     if let (false, Some(object)) = (type_name == "twosided", properties.objects.first()) {
-        let tag = object.tag_name().name();
-        return Err(reader.error(
-            *object,
-            format!("a {type_name} bsdf cannot contain <{tag}>"),
-        ));
+        let tag = object.name();
+        return Err(reader.error(object, format!("a {type_name} bsdf cannot contain <{tag}>")));
     }
     let material = match type_name.as_str() {
         "diffuse" => Material::diffuse(
@@ -156,12 +175,6 @@ pub(super) fn read_bsdf(reader: &mut Reader, node: Node) -> Result<Material, Sce
     } else {
         properties.finish(reader);
     }
-    if let Some(id) = reader.attribute(node, "id")? {
-        if reader.bsdfs_by_id.contains_key(&id) {
-            return Err(reader.error(node, format!("a bsdf with id \"{id}\" is already defined")));
-        }
-        reader.bsdfs_by_id.insert(id, material);
-    }
     Ok(material)
 }
 
@@ -187,7 +200,7 @@ fn two_sided(inner: Material) -> Material {
 /// workbook does not have; `material="none"` (the default) is a perfect mirror.
 fn no_measured_metal(
     reader: &Reader,
-    node: Node,
+    node: &Element,
     properties: &mut Properties,
     type_name: &str,
 ) -> Result<(), SceneError> {
@@ -211,7 +224,7 @@ fn no_measured_metal(
 /// The `distribution` and `alpha` of a rough BSDF.
 fn microfacet(
     reader: &Reader,
-    node: Node,
+    node: &Element,
     properties: &mut Properties,
 ) -> Result<Microfacet, SceneError> {
     let at = |properties: &Properties, name: &str| {
@@ -252,41 +265,29 @@ fn microfacet(
     })
 }
 
-/// The BSDFs among `objects` (inline `<bsdf>` or `<ref>`); any other object is an error.
-pub(super) fn nested_bsdfs(
-    reader: &mut Reader,
-    objects: &[Node],
-    parent: Node,
+/// The BSDFs among `objects` (inline `<bsdf>` or `<ref>` to one); any other object is an error.
+pub(super) fn nested_bsdfs<'a>(
+    reader: &mut Reader<'a>,
+    objects: &[&'a Element],
+    parent: &Element,
 ) -> Result<Vec<Material>, SceneError> {
     let mut bsdfs = Vec::new();
     for &object in objects {
-        match object.tag_name().name() {
-            "bsdf" => bsdfs.push(read_bsdf(reader, object)?),
-            "ref" => bsdfs.push(resolve_ref(reader, object)?),
+        let target = reader.dereference(object)?;
+        match target.name() {
+            "bsdf" => bsdfs.push(read_bsdf(reader, target)?),
             tag => {
-                let parent_tag = parent.tag_name().name();
-                return Err(reader.error(
-                    object,
-                    format!("<{tag}> is not allowed inside <{parent_tag}>"),
-                ));
+                let parent_tag = parent.name();
+                let what = if object.has_name("ref") {
+                    format!("<ref> names a <{tag}>, which is not allowed inside <{parent_tag}>")
+                } else {
+                    format!("<{tag}> is not allowed inside <{parent_tag}>")
+                };
+                return Err(reader.error(object, what));
             }
         }
     }
     Ok(bsdfs)
-}
-
-/// The BSDF a `<ref id="..."/>` names; it must be defined earlier in the file.
-pub(super) fn resolve_ref(reader: &Reader, node: Node) -> Result<Material, SceneError> {
-    let id = reader.required_attribute(node, "id")?;
-    reader.bsdfs_by_id.get(&id).copied().ok_or_else(|| {
-        reader.error(
-            node,
-            format!(
-                "<ref id=\"{id}\"> names no bsdf defined before it: define \
-                 <bsdf type=\"...\" id=\"{id}\"> earlier in the file"
-            ),
-        )
-    })
 }
 
 /// An index of refraction given as a `<float>` or as a `<string>` naming a material.

@@ -34,6 +34,7 @@ mod animation;
 mod camera;
 mod description;
 mod document;
+mod element;
 mod error;
 mod integrator;
 mod lights;

@@ -5,8 +5,8 @@
 //! Every property the plugin does not ask for becomes a warning when it is `finish`ed: a typo
 //! in a property name is then visible instead of silently ignored.
 
+use super::element::Element;
 use glam::{Mat4, Vec3};
-use roxmltree::Node;
 
 use super::animation::read_animation;
 use super::description::PropertyValue;
@@ -39,28 +39,24 @@ struct Property {
 }
 
 /// The properties and nested objects of one plugin element.
-pub(super) struct Properties<'a, 'input> {
+pub(super) struct Properties<'a> {
     /// How messages name the plugin, such as "sphere shape".
     plugin: String,
     list: Vec<Property>,
     /// Nested objects, in file order.
-    pub objects: Vec<Node<'a, 'input>>,
+    pub objects: Vec<&'a Element>,
 }
 
-impl<'a, 'input> Properties<'a, 'input> {
+impl<'a> Properties<'a> {
     /// Reads every child element of `node`; `plugin` names it in messages ("sphere shape").
-    pub fn read(
-        reader: &Reader,
-        node: Node<'a, 'input>,
-        plugin: String,
-    ) -> Result<Self, SceneError> {
+    pub fn read(reader: &Reader, node: &'a Element, plugin: String) -> Result<Self, SceneError> {
         let mut properties = Properties {
             plugin,
             list: Vec::new(),
             objects: Vec::new(),
         };
-        for child in node.children().filter(Node::is_element) {
-            let tag = child.tag_name().name();
+        for child in node.children() {
+            let tag = child.name();
             if OBJECT_TAGS.contains(&tag) {
                 properties.objects.push(child);
                 continue;
@@ -88,7 +84,7 @@ impl<'a, 'input> Properties<'a, 'input> {
     fn take(&mut self, name: &str) -> Option<(&PropertyValue, TextPosition)> {
         let property = self.list.iter_mut().find(|p| p.name == name)?;
         property.used = true;
-        Some((&property.value, property.position))
+        Some((&property.value, property.position.clone()))
     }
 
     /// Where the property `name` is written, if it is.
@@ -96,7 +92,7 @@ impl<'a, 'input> Properties<'a, 'input> {
         self.list
             .iter()
             .find(|p| p.name == name)
-            .map(|p| p.position)
+            .map(|p| p.position.clone())
     }
 
     /// Reads `name` with `convert`, which returns `None` for a value of the wrong kind.
@@ -217,7 +213,7 @@ impl<'a, 'input> Properties<'a, 'input> {
     pub fn finish_strict(self, reader: &mut Reader) -> Result<(), SceneError> {
         match self.unused().next() {
             Some(property) => Err(reader.error_at(
-                property.position,
+                property.position.clone(),
                 format!(
                     "the {} has no property `{}`: a misspelt property would silently change \
                      the material",
@@ -233,14 +229,14 @@ impl<'a, 'input> Properties<'a, 'input> {
         for property in self.unused() {
             let (name, plugin) = (&property.name, &self.plugin);
             let message = format!("unknown property \"{name}\" of the {plugin}, ignored");
-            reader.warn_at(property.position, message);
+            reader.warn_at(property.position.clone(), message);
         }
     }
 }
 
 /// The value of one property element, such as `<rgb name="radiance" value="17, 12, 4"/>`.
-fn read_value(reader: &Reader, node: Node) -> Result<PropertyValue, SceneError> {
-    let tag = node.tag_name().name();
+fn read_value(reader: &Reader, node: &Element) -> Result<PropertyValue, SceneError> {
+    let tag = node.name();
     let value = |parse: fn(&str) -> Result<PropertyValue, String>| {
         let text = reader.required_attribute(node, "value")?;
         parse(&text).map_err(|message| reader.error(node, format!("<{tag}>: {message}")))

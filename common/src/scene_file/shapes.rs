@@ -1,7 +1,7 @@
 //! `<shape>`: geometry with its transform, material and optional area light.
 
+use super::element::Element;
 use glam::{Mat4, Vec3};
-use roxmltree::Node;
 
 use super::description::{ShapeDescription, ShapeGeometry, mitsuba_default_material};
 use super::error::SceneError;
@@ -11,7 +11,10 @@ use super::properties::Properties;
 use super::reader::Reader;
 
 /// Reads a `sphere`, `rectangle`, `disk`, `cube` or `obj` shape.
-pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescription, SceneError> {
+pub(super) fn read_shape<'a>(
+    reader: &mut Reader<'a>,
+    node: &'a Element,
+) -> Result<ShapeDescription, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} shape"))?;
     let geometry = match type_name.as_str() {
@@ -41,9 +44,8 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
                     "an obj shape needs <string name=\"filename\" value=\"mesh.obj\"/>",
                 )
             })?;
-            let directory = reader.file.parent().unwrap_or(reader.file);
             ShapeGeometry::Obj {
-                filename: directory.join(filename),
+                filename: reader.resolve_file(node, &filename),
                 face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
             }
         }
@@ -61,10 +63,16 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
     let to_world = to_world.unwrap_or(Mat4::IDENTITY);
     let flip_normals = properties.boolean(reader, "flip_normals")?.unwrap_or(false);
 
-    let (emitter_nodes, bsdf_nodes): (Vec<Node>, Vec<Node>) = properties
-        .objects
-        .iter()
-        .partition(|object| object.tag_name().name() == "emitter");
+    // An object may be a `<ref>` to a BSDF or an area emitter declared elsewhere.
+    let mut emitter_nodes = Vec::new();
+    let mut bsdf_nodes = Vec::new();
+    for &object in &properties.objects {
+        if reader.dereference(object)?.has_name("emitter") {
+            emitter_nodes.push(reader.dereference(object)?);
+        } else {
+            bsdf_nodes.push(object);
+        }
+    }
     let material = match nested_bsdfs(reader, &bsdf_nodes, node)?.as_slice() {
         [] => mitsuba_default_material(),
         [material] => *material,
@@ -74,18 +82,18 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
     };
     let emitter = match emitter_nodes.as_slice() {
         [] => None,
-        [emitter_node] => match read_emitter(reader, *emitter_node)? {
+        [emitter_node] => match read_emitter(reader, emitter_node)? {
             Emitter::Area(area) => Some(area),
             Emitter::Standalone(_) => {
                 return Err(reader.error(
-                    *emitter_node,
+                    emitter_node,
                     "only an area emitter can be inside a shape; put point and constant \
                      emitters at the top level",
                 ));
             }
         },
         [_, second, ..] => {
-            return Err(reader.error(*second, "a shape has at most one emitter"));
+            return Err(reader.error(second, "a shape has at most one emitter"));
         }
     };
     properties.finish(reader);

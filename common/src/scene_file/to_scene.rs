@@ -19,12 +19,7 @@ use glam::{Mat4, Vec3};
 
 /// The scene model of `description`, read from `file`.
 pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Scene, SceneError> {
-    let error = |position: TextPosition, message: String| SceneError {
-        file: file.to_path_buf(),
-        line: position.line,
-        column: position.column,
-        message,
-    };
+    let error = |position: TextPosition, message: String| SceneError::at(file, &position, message);
     let sensor = &description.sensor;
     if let CameraModel::ThinLens {
         aperture_radius,
@@ -33,7 +28,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
     {
         if !(aperture_radius.is_finite() && aperture_radius >= 0.0) {
             return Err(error(
-                sensor.position,
+                sensor.position.clone(),
                 format!(
                     "the thinlens sensor's aperture_radius must be a finite number of at least 0, found {aperture_radius}"
                 ),
@@ -41,7 +36,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
         }
         if !(focus_distance.is_finite() && focus_distance > 0.0) {
             return Err(error(
-                sensor.position,
+                sensor.position.clone(),
                 format!(
                     "the thinlens sensor's focus_distance must be a finite positive distance, found {focus_distance}"
                 ),
@@ -51,13 +46,13 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
     let (open, close) = (sensor.shutter_open, sensor.shutter_close);
     if !(open.is_finite() && close.is_finite() && (close - open).is_finite()) {
         return Err(error(
-            sensor.position,
+            sensor.position.clone(),
             format!("the sensor's shutter_open {open} and shutter_close {close} must be finite"),
         ));
     }
     if close < open {
         return Err(error(
-            sensor.position,
+            sensor.position.clone(),
             format!(
                 "the sensor's shutter_close {close} is before its shutter_open {open}: the shutter must open before it closes"
             ),
@@ -66,7 +61,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
 
     let mut builder = SceneBuilder::new();
     for shape in &description.shapes {
-        let position = shape.position;
+        let position = shape.position.clone();
         let kind = match shape.geometry {
             ShapeGeometry::Sphere { .. } => "sphere",
             ShapeGeometry::Rectangle => "rectangle",
@@ -83,7 +78,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
         let surface = Surface {
             material: shape.material,
             emitter: shape.emitter,
-            origin: Some(position),
+            origin: Some(position.clone()),
         };
         let keyframes = &shape.to_world_keyframes;
         let placed = if keyframes.is_empty() {
@@ -100,32 +95,32 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             .map_err(|message| error(position, format!("the {kind} shape: {message}")))?;
         for piece in pieces {
             builder = if keyframes.is_empty() {
-                builder.surface(piece, surface)
+                builder.surface(piece, surface.clone())
             } else {
                 let animated = AnimatedShape {
                     shape: piece,
                     keyframes: keyframes.clone(),
                 };
-                builder.moving_surface(animated, surface)
+                builder.moving_surface(animated, surface.clone())
             };
         }
     }
     let mut environment = Vec3::ZERO;
     let mut environment_position = None;
     for emitter in &description.emitters {
-        match *emitter {
+        match emitter {
             EmitterDescription::Point {
                 position,
                 intensity,
             } => {
                 builder = builder.light(PointLight {
-                    position,
-                    intensity,
+                    position: *position,
+                    intensity: *intensity,
                 });
             }
             EmitterDescription::Constant { radiance, position } => {
-                environment += radiance;
-                environment_position.get_or_insert(position);
+                environment += *radiance;
+                environment_position.get_or_insert(position.clone());
             }
         }
     }
@@ -149,6 +144,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
     let camera = Camera {
         frame: CameraFrame::from_matrix(&sensor.to_world),
         fov_x_degrees: sensor.fov_x_degrees,
+        principal_point_offset: sensor.principal_point_offset,
         near_clip: sensor.near_clip,
         model: sensor.model,
         shutter_open: open,
@@ -171,9 +167,9 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             seed: sensor.sampler.seed,
         },
         origins: Origins {
-            integrator: description.integrator_position,
-            sensor: Some(sensor.position),
-            filter: sensor.film.filter_position,
+            integrator: description.integrator_position.clone(),
+            sensor: Some(sensor.position.clone()),
+            filter: sensor.film.filter_position.clone(),
             environment: environment_position,
         },
         ..scene

@@ -5,18 +5,18 @@
 //! element must be invertible (a zero scale or a camera looking at itself is a mistake in the
 //! file, not a shape worth rendering), so each is checked where it is written.
 
+use super::element::Element;
 use glam::{Mat4, Vec3, Vec4};
-use roxmltree::Node;
 
 use super::error::SceneError;
 use super::reader::Reader;
 use super::values::{parse_float, parse_floats, parse_vec3};
 
 /// The composed matrix of a `<transform>` element.
-pub(super) fn read_transform(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
+pub(super) fn read_transform(reader: &Reader, node: &Element) -> Result<Mat4, SceneError> {
     let mut matrix = Mat4::IDENTITY;
-    for child in node.children().filter(Node::is_element) {
-        let step = match child.tag_name().name() {
+    for child in node.children() {
+        let step = match child.name() {
             "lookat" => look_at(reader, child)?,
             "translate" => Mat4::from_translation(reader.xyz(child)?),
             "rotate" => rotate(reader, child)?,
@@ -43,7 +43,7 @@ pub(super) fn read_transform(reader: &Reader, node: Node) -> Result<Mat4, SceneE
 
 /// Mitsuba's camera-to-world frame: columns left, up, direction, origin. +x is the image's
 /// **left**, because `left = up × direction` in a right-handed frame.
-fn look_at(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
+fn look_at(reader: &Reader, node: &Element) -> Result<Mat4, SceneError> {
     let vector = |name| {
         reader
             .parsed_attribute(node, name, parse_vec3)?
@@ -75,7 +75,7 @@ fn look_at(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
 }
 
 /// A rotation by `angle` degrees about `axis` (or the `x`, `y`, `z` attributes), right-handed.
-fn rotate(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
+fn rotate(reader: &Reader, node: &Element) -> Result<Mat4, SceneError> {
     let axis = match reader.parsed_attribute(node, "axis", parse_vec3)? {
         Some(axis) => axis,
         None => reader.xyz(node)?,
@@ -91,7 +91,7 @@ fn rotate(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
 }
 
 /// A scale: `value` (one number for all axes, or three) or `x`, `y`, `z` (default 1).
-fn scale(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
+fn scale(reader: &Reader, node: &Element) -> Result<Mat4, SceneError> {
     let factors = match reader.parsed_attribute(node, "value", parse_floats)? {
         Some(values) => match *values.as_slice() {
             [uniform] => Vec3::splat(uniform),
@@ -122,7 +122,7 @@ fn scale(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
 }
 
 /// A matrix written as 16 numbers, row by row.
-fn matrix_element(reader: &Reader, node: Node) -> Result<Mat4, SceneError> {
+fn matrix_element(reader: &Reader, node: &Element) -> Result<Mat4, SceneError> {
     let values = reader
         .parsed_attribute(node, "value", parse_floats)?
         .ok_or_else(|| reader.error(node, "<matrix> needs a \"value\" attribute"))?;

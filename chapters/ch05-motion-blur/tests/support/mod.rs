@@ -59,13 +59,13 @@ pub fn frozen_at(world: &MotionScene, time: f32) -> Scene {
     let still = &world.scene;
     let mut builder = SceneBuilder::new().environment(still.environment);
     for (index, shape) in still.geometry.shapes().iter().enumerate() {
-        builder = builder.surface(*shape, still.surfaces[index]);
+        builder = builder.surface(*shape, still.surfaces[index].clone());
     }
     let first_moving = still.geometry.shapes().len();
     for (index, moving) in world.moving.shapes().iter().enumerate() {
         let m = moving.motion.at(time);
         let placed = place(&moving.shape, &m);
-        builder = builder.surface(placed, still.surfaces[first_moving + index]);
+        builder = builder.surface(placed, still.surfaces[first_moving + index].clone());
     }
     for light in &still.point_lights {
         builder = builder.light(*light);
@@ -83,7 +83,7 @@ pub fn frozen_at(world: &MotionScene, time: f32) -> Scene {
     Scene {
         sampler: still.sampler.clone(),
         integrator: still.integrator,
-        origins: still.origins,
+        origins: still.origins.clone(),
         ..builder.build(camera, still.film, still.max_depth)
     }
 }

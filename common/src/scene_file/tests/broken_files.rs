@@ -50,7 +50,7 @@ const CORPUS: &[Broken] = &[
     Broken {
         name: "missing ref",
         input: Body("<shape type=\"cube\">\n<ref id=\"gold\"/></shape>"),
-        fragment: "<ref id=\"gold\"> names no bsdf",
+        fragment: "<ref id=\"gold\"> names nothing",
         line: 3,
     },
     Broken {

@@ -3,6 +3,7 @@
 mod animation;
 mod broken_files;
 mod cornell;
+mod files_and_references;
 mod model;
 mod never_panics;
 mod transforms;

@@ -31,7 +31,7 @@ fn cornell_box_becomes_eight_surfaces_one_of_which_glows() {
         .collect();
     assert_eq!(lights.len(), 1);
     assert_eq!(lights[0].material, Material::diffuse(Vec3::ZERO));
-    assert!(lights[0].origin.is_some_and(|p| p.line > 0));
+    assert!(lights[0].origin.as_ref().is_some_and(|p| p.line > 0));
     assert_eq!(scene.integrator, Integrator::Path { rr_depth: 1000 });
     assert_eq!(scene.max_depth, 8);
     assert_eq!((scene.film.width, scene.film.height), (256, 256));
@@ -55,7 +55,7 @@ fn still_shapes_come_first_then_moving_ones_each_piece_with_its_surface() {
         Material::Dielectric { .. }
     ));
     assert_eq!(scene.surfaces[6].material, Material::mirror());
-    assert_eq!(scene.surfaces[6].origin.unwrap().line, 2);
+    assert_eq!(scene.surfaces[6].origin.as_ref().unwrap().line, 2);
     assert_eq!(scene.moving[0].keyframes.len(), 2);
 }
 
