@@ -17,6 +17,9 @@ pub struct PathOptions {
     /// The longest path in segments, counting the camera ray (Mitsuba's `max_depth`): 1 sees
     /// only what glows, 2 adds direct light, each further step one bounce more.
     pub max_depth: u32,
+    /// Mitsuba's `hide_emitters`: the camera ray's own segment finds no emission (no light
+    /// source, no environment); light still reaches what it sees.
+    pub hide_emitters: bool,
 }
 
 /// Mitsuba's default `rr_depth`.
@@ -30,6 +33,7 @@ impl Default for PathOptions {
             mis: MisHeuristic::Power,
             rr_depth: Some(MITSUBA_RR_DEPTH),
             max_depth: 12,
+            hide_emitters: false,
         }
     }
 }

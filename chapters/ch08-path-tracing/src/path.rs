@@ -175,10 +175,12 @@ impl PathTracer<'_> {
             },
             _ => 1.0,
         };
+        // Light found by the camera ray itself is left out when the scene hides its emitters.
+        let finds_emission = depth > 1 || !self.options.hide_emitters;
         // Where the segment ends, or the environment if it leaves the scene.
         counters.rays += 1;
         let Some(hit) = self.world.intersect(ray) else {
-            if self.lights.has_environment() {
+            if finds_emission && self.lights.has_environment() {
                 let weight = emission_weight(self.lights.environment_pdf());
                 path.gather(self.lights.environment * weight);
             }
@@ -186,7 +188,8 @@ impl PathTracer<'_> {
         };
         // 1. What the surface emits, weighted against the light sample that could have found
         //    it.
-        if self.lights.has_area_lights()
+        if finds_emission
+            && self.lights.has_area_lights()
             && let Some(light) = self.lights.area_light_of(hit.shape)
         {
             let le = light.emitted(hit.n, -ray.dir);

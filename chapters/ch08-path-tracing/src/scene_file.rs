@@ -15,10 +15,12 @@ pub fn path_options(scene: &Scene) -> PathOptions {
         Integrator::Path { rr_depth } => PathOptions {
             max_depth: scene.max_depth,
             rr_depth: Some(rr_depth),
+            hide_emitters: scene.hide_emitters,
             ..PathOptions::default()
         },
         Integrator::Direct => PathOptions {
             max_depth: scene.max_depth,
+            hide_emitters: scene.hide_emitters,
             ..PathOptions::default()
         },
     }

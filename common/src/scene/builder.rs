@@ -95,6 +95,7 @@ impl SceneBuilder {
             sampler: SamplerSettings::default(),
             integrator: Integrator::Path { rr_depth: 5 },
             max_depth,
+            hide_emitters: false,
             origins: Origins::default(),
         }
     }

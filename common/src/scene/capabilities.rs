@@ -98,6 +98,8 @@ pub enum Feature {
     IndirectLight,
     /// The environment lighting matte surfaces (not only seen directly or in mirrors).
     EnvironmentLight,
+    /// Emitters hidden from camera rays (Mitsuba's `hide_emitters`).
+    HiddenEmitters,
 }
 
 /// What a chapter that does not render a feature does with a scene that uses it.
@@ -120,7 +122,9 @@ impl Feature {
                 Some(Chapter::FUZZY_REFLECTIONS)
             }
             Feature::AreaLight => Some(Chapter::SOFT_SHADOWS),
-            Feature::IndirectLight | Feature::EnvironmentLight => Some(Chapter::PATH_TRACING),
+            Feature::IndirectLight | Feature::EnvironmentLight | Feature::HiddenEmitters => {
+                Some(Chapter::PATH_TRACING)
+            }
             Feature::MovingAreaLight => None,
         }
     }
@@ -138,6 +142,7 @@ impl Feature {
             Feature::MovingAreaLight => "an area light that moves",
             Feature::IndirectLight => "indirect light",
             Feature::EnvironmentLight => "an environment",
+            Feature::HiddenEmitters => "emitters hidden from the camera",
         }
     }
 
@@ -154,6 +159,7 @@ impl Feature {
             Feature::MovingAreaLight => "no chapter samples lights that move",
             Feature::IndirectLight => "indirect light comes",
             Feature::EnvironmentLight => "the environment lights matte surfaces",
+            Feature::HiddenEmitters => "the integrator's hide_emitters comes",
         }
     }
 
@@ -356,6 +362,18 @@ impl Scene {
                 Feature::EnvironmentLight,
                 self.origins.environment.clone(),
                 String::new(),
+            );
+        }
+        let something_glows = self.environment != glam::Vec3::ZERO
+            || self
+                .surfaces
+                .iter()
+                .any(|surface| surface.emitter.is_some());
+        if self.hide_emitters && something_glows {
+            add(
+                Feature::HiddenEmitters,
+                self.origins.integrator.clone(),
+                "hide_emitters".to_string(),
             );
         }
         uses

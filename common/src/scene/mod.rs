@@ -68,6 +68,9 @@ pub struct Scene {
     /// `max_depth`: 1 sees only what the camera ray hits, 2 adds direct light (the shadow ray
     /// is the second segment), each further step one more bounce.
     pub max_depth: u32,
+    /// Mitsuba's `hide_emitters`: camera rays see no light source and no environment (light
+    /// still reaches what they see, and mirrors still show the lights).
+    pub hide_emitters: bool,
     /// Where the scene's parts are written in its file, for messages; empty for built-in
     /// scenes.
     pub origins: Origins,

@@ -19,6 +19,8 @@ pub struct SceneDescription {
     pub integrator: Integrator,
     /// Where the `<integrator>` element is; `None` when the file has none.
     pub integrator_position: Option<TextPosition>,
+    /// The integrator's `hide_emitters`: camera rays do not see what glows.
+    pub hide_emitters: bool,
     /// The camera with its film and sampler.
     pub sensor: Sensor,
     /// Every shape, in file order, each with its material and optional area light.

@@ -27,6 +27,7 @@ pub(super) fn parse_document(
     let mut reader = Reader::new(file, &tree)?;
 
     let mut integrator = None;
+    let mut hide_emitters = false;
     let mut integrator_position = None;
     let mut sensor = None;
     let mut shapes = Vec::new();
@@ -37,7 +38,9 @@ pub(super) fn parse_document(
         match tag {
             "default" => {}
             "integrator" if integrator.is_none() => {
-                integrator = Some(read_integrator(&mut reader, child)?);
+                let (read, hide) = read_integrator(&mut reader, child)?;
+                integrator = Some(read);
+                hide_emitters = hide;
                 integrator_position = Some(reader.position(child));
             }
             "sensor" if sensor.is_none() => sensor = Some(read_sensor(&mut reader, child)?),
@@ -102,6 +105,7 @@ pub(super) fn parse_document(
         scene: SceneDescription {
             integrator: integrator.unwrap_or_else(default_integrator),
             integrator_position,
+            hide_emitters,
             sensor,
             shapes,
             emitters,

@@ -15,12 +15,21 @@ pub(super) fn default_integrator() -> Integrator {
     }
 }
 
-/// Reads an `<integrator>`.
+/// Reads an `<integrator>`: the light transport, and whether camera rays hide the emitters.
 pub(super) fn read_integrator(
     reader: &mut Reader,
     node: &Element,
-) -> Result<Integrator, SceneError> {
+) -> Result<(Integrator, bool), SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
+    if let Some(output) = not_radiance(&type_name) {
+        return Err(reader.error(
+            node,
+            format!(
+                "the {type_name} integrator writes {output}, not an image of radiance, which is \
+                 all the workbook renders: use the path or direct integrator on its own"
+            ),
+        ));
+    }
     let mut properties = Properties::read(reader, node, format!("{type_name} integrator"))?;
     if let Some(object) = properties.objects.first() {
         let tag = object.name();
@@ -55,7 +64,28 @@ pub(super) fn read_integrator(
             )?,
             rr_depth: depth("rr_depth", 5, "1 or more")?,
         },
-        "direct" => Integrator::Direct,
+        "direct" => {
+            // Mitsuba's `shading_samples` sets both counts; each may be given apart.
+            let shading = properties.integer(reader, "shading_samples")?;
+            for name in ["emitter_samples", "bsdf_samples"] {
+                let count = properties.integer(reader, name)?.or(shading).unwrap_or(1);
+                if count != 1 {
+                    let position = properties
+                        .position_of(name)
+                        .or(properties.position_of("shading_samples"))
+                        .unwrap_or(reader.position(node));
+                    reader.warn_at(
+                        position,
+                        format!(
+                            "{name} = {count} is rendered as 1 (one light and one BSDF sample \
+                             per hit): the same image on average, with more noise than \
+                             Mitsuba's at equal samples per pixel"
+                        ),
+                    );
+                }
+            }
+            Integrator::Direct
+        }
         _ => {
             return Err(reader.error(
                 node,
@@ -66,6 +96,21 @@ pub(super) fn read_integrator(
             ));
         }
     };
+    let hide_emitters = properties
+        .boolean(reader, "hide_emitters")?
+        .unwrap_or(false);
     properties.finish(reader);
-    Ok(integrator)
+    Ok((integrator, hide_emitters))
+}
+
+/// What an integrator whose output is not an image of radiance writes instead; `None` for
+/// every other type.
+fn not_radiance(type_name: &str) -> Option<&'static str> {
+    match type_name {
+        "aov" => Some("extra channels (depth, normals, positions, ...) beside the image"),
+        "moment" => Some("the moments of the samples beside the image"),
+        "stokes" => Some("the polarisation of the light (Stokes vectors)"),
+        "depth" => Some("the distance to the first hit"),
+        _ => None,
+    }
 }

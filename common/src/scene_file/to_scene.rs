@@ -161,6 +161,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
         .build(camera, film, max_depth);
     Ok(Scene {
         integrator,
+        hide_emitters: description.hide_emitters,
         sampler: SamplerSettings {
             type_name: sensor.sampler.type_name.clone(),
             sample_count: sensor.sampler.sample_count,

@@ -307,3 +307,38 @@ fn the_principal_point_offset_is_read() {
     .sensor;
     assert_eq!(sensor.principal_point_offset, Vec2::new(0.1, 0.2));
 }
+
+#[test]
+fn wrappers_that_do_not_write_radiance_are_refused_with_what_they_write() {
+    for (wrapper, says) in [
+        ("aov", "extra channels"),
+        ("moment", "moments"),
+        ("stokes", "polarisation"),
+    ] {
+        let error = parse(&scene_with(&format!(
+            "<integrator type=\"{wrapper}\">\n<integrator type=\"path\"/></integrator>"
+        )))
+        .expect_err(wrapper);
+        assert_eq!(error.line, 2, "{error}");
+        assert!(error.message.contains(says), "{error}");
+        assert!(
+            error.message.contains("not an image of radiance"),
+            "{error}"
+        );
+    }
+}
+
+#[test]
+fn direct_reads_its_sample_counts_and_hide_emitters() {
+    let loaded = parse(&scene_with(
+        "<integrator type=\"direct\"><integer name=\"emitter_samples\" value=\"4\"/>\
+         <integer name=\"bsdf_samples\" value=\"1\"/>\
+         <boolean name=\"hide_emitters\" value=\"true\"/></integrator>",
+    ))
+    .expect("loads");
+    assert_eq!(loaded.scene.integrator, Integrator::Direct);
+    assert!(loaded.scene.hide_emitters);
+    // One count is not 1: rendered as 1, said once.
+    assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
+    assert!(loaded.warnings[0].message.contains("emitter_samples = 4"));
+}

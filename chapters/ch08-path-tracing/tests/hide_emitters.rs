@@ -1,0 +1,95 @@
+//! Mitsuba's `hide_emitters`: the camera stops seeing the light source and the environment,
+//! and nothing else changes. The same samples are drawn either way, so every pixel that does
+//! not look straight at something glowing must come out bit for bit the same.
+
+use common::output::read_image;
+use common::test_support::run_binary;
+use std::path::Path;
+
+const BIN: &str = env!("CARGO_BIN_EXE_ch08-path-tracing");
+
+/// A floor under a square light, seen from the side, with a grey sky around.
+fn scene(hide: bool) -> String {
+    format!(
+        r#"<scene version="3.0.0">
+    <integrator type="path"><integer name="max_depth" value="4"/>
+        <boolean name="hide_emitters" value="{hide}"/></integrator>
+    <sensor type="perspective"><float name="fov" value="60"/>
+        <transform name="to_world"><lookat origin="0, 1, 4" target="0, 0.8, 0" up="0, 1, 0"/></transform>
+        <sampler type="independent"><integer name="sample_count" value="4"/></sampler>
+        <film type="hdrfilm"><integer name="width" value="24"/><integer name="height" value="16"/>
+            <rfilter type="box"/></film></sensor>
+    <emitter type="constant"><rgb name="radiance" value="0.5"/></emitter>
+    <shape type="rectangle"><transform name="to_world"><scale value="3"/><rotate x="1" angle="-90"/></transform></shape>
+    <shape type="rectangle">
+        <transform name="to_world"><scale value="0.5"/><rotate x="1" angle="90"/><translate y="1.5"/></transform>
+        <emitter type="area"><rgb name="radiance" value="8"/></emitter></shape>
+</scene>"#
+    )
+}
+
+fn render(text: &str, folder: &Path, name: &str) -> common::image::Image {
+    let scene = folder.join(format!("{name}.xml"));
+    std::fs::write(&scene, text).unwrap();
+    let image = folder.join(format!("{name}.pfm"));
+    let output = run_binary(
+        BIN,
+        &[
+            "render",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--out",
+            image.to_str().unwrap(),
+        ],
+    );
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    read_image(&image).unwrap()
+}
+
+#[test]
+fn hidden_emitters_darken_only_what_the_camera_sees_glowing() {
+    let folder = tempfile::tempdir().unwrap();
+    let shown = render(&scene(false), folder.path(), "shown");
+    let hidden = render(&scene(true), folder.path(), "hidden");
+    let (mut same, mut darker) = (0, 0);
+    for y in 0..shown.height {
+        for x in 0..shown.width {
+            let (a, b) = (shown.get(x, y), hidden.get(x, y));
+            if a == b {
+                same += 1;
+            } else {
+                // Only light seen directly goes: a hidden pixel is never brighter.
+                assert!(b.cmple(a).all(), "pixel ({x}, {y}): {b} brighter than {a}");
+                darker += 1;
+            }
+        }
+    }
+    // The sky above the horizon and the light's underside are hidden; the lit floor is not.
+    assert!(darker > 0, "hide_emitters changed nothing");
+    assert!(same > 0, "hide_emitters changed every pixel");
+    // The top row looks at the sky only: black when hidden.
+    assert_eq!(hidden.get(0, 0), glam::Vec3::ZERO);
+    assert!(shown.get(0, 0).x > 0.4);
+    // The bottom row looks at the floor, lit by the light and the sky: unchanged.
+    let bottom = shown.height - 1;
+    assert_eq!(hidden.get(12, bottom), shown.get(12, bottom));
+    assert!(shown.get(12, bottom).x > 0.0);
+}
+
+#[test]
+fn chapters_before_08_refuse_hidden_emitters() {
+    let folder = tempfile::tempdir().unwrap();
+    let file = folder.path().join("hidden.xml");
+    std::fs::write(&file, scene(true)).unwrap();
+    let scene = common::scene_file::load_scene_file(&file, &[])
+        .unwrap()
+        .scene;
+    let refusal = ch07_soft_shadows::CAPABILITIES.check(&scene).unwrap_err();
+    assert!(refusal.contains("hide_emitters"), "{refusal}");
+    assert!(refusal.contains("chapter 08"), "{refusal}");
+    assert!(ch08_path_tracing::CAPABILITIES.check(&scene).is_ok());
+}
