@@ -242,6 +242,7 @@ fn chapter_08_path_tracing_is_thread_independent_with_every_estimator() {
                 mis,
                 rr_depth,
                 max_depth: 8,
+                hide_emitters: false,
             });
             let sampler = PixelSampler::new(PixelSamplerKind::Stratified, 4, 11).unwrap();
             assert_thread_independent(&format!("ch08 {} {method:?}", builtin.name()), |t| {

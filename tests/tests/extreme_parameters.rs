@@ -236,7 +236,7 @@ proptest! {
     ) {
         use ch08_path_tracing::{Method, PathOptions, render_with};
         let scene = builtin.build(12, light_scale);
-        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth });
+        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth, hide_emitters: false });
         let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
         let settings = RenderSettings::new(width, height, spp);
         let pixels = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
@@ -275,7 +275,7 @@ proptest! {
             }
         }
         let scene = MotionScene::still(scene);
-        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth: params.max_depth });
+        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth: params.max_depth, hide_emitters: false });
         let lens = Lens::new(radius, focus).unwrap();
         let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
         let settings = RenderSettings::new(params.width, params.height, spp);

@@ -160,6 +160,12 @@ pub fn mitsuba_default_material() -> Material {
     Material::diffuse(Vec3::splat(0.5))
 }
 
+/// What Mitsuba 3 gives a shape that glows and has no BSDF: black diffuse, so that a lamp
+/// written without a material reflects nothing (0.5 would add light bounced off its face).
+pub fn mitsuba_default_emitter_material() -> Material {
+    Material::diffuse(Vec3::ZERO)
+}
+
 /// The geometry of a shape, in Mitsuba 3's object space.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ShapeGeometry {

@@ -122,12 +122,10 @@ pub(super) fn read_tree(
     })
 }
 
-/// The folder a file is in (`.` for a bare file name).
+/// The folder a file is in: empty for a bare file name, so that names joined to it stay as
+/// the user would write them.
 fn folder_of(file: &Path) -> PathBuf {
-    match file.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
-        _ => PathBuf::from("."),
-    }
+    file.parent().map(Path::to_path_buf).unwrap_or_default()
 }
 
 /// Looks `name` up: as written when absolute, else in each folder in turn; the first that
@@ -145,6 +143,19 @@ pub(super) fn resolve_file(name: &str, folders: &[PathBuf]) -> PathBuf {
         .or(candidates.first())
         .cloned()
         .unwrap_or_else(|| path.to_path_buf())
+}
+
+/// Where a file named in an element is looked for, in order: the `<path>` folders, most
+/// recent first (as Mitsuba puts them before the others), then the folder of the file the
+/// element is written in, then the scene file's folder (the last of `search_folders`).
+pub(super) fn folders_for(search_folders: &[PathBuf], own_folder: PathBuf) -> Vec<PathBuf> {
+    let (scene_folder, paths) = search_folders
+        .split_last()
+        .map_or((None, search_folders), |(last, rest)| (Some(last), rest));
+    let mut folders = paths.to_vec();
+    folders.push(own_folder);
+    folders.extend(scene_folder.cloned());
+    folders
 }
 
 struct TreeBuilder<'a> {
@@ -219,8 +230,7 @@ impl TreeBuilder<'_> {
     /// The children of the `<scene>` in the file an `<include>` names.
     fn include(&mut self, element: &Element) -> Result<Vec<Element>, SceneError> {
         let name = self.required(element, "filename")?;
-        let mut folders = vec![self.folder_of_element(element)];
-        folders.extend(self.search_folders.iter().cloned());
+        let folders = folders_for(&self.search_folders, self.folder_of_element(element));
         let path = resolve_file(&name, &folders);
         if self.include_chain.len() >= MAX_INCLUDE_DEPTH || self.include_chain.contains(&path) {
             return Err(self.error(

@@ -5,7 +5,7 @@
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
-use super::element::{Element, SceneTree, resolve_file};
+use super::element::{Element, SceneTree, folders_for, resolve_file};
 use super::error::{SceneError, SceneWarning, TextPosition};
 use super::values::{parse_float, parse_vec3, substitute};
 use crate::scene::Material;
@@ -158,19 +158,17 @@ impl<'a> Reader<'a> {
         self.reading.remove(id);
     }
 
-    /// The file a property of `node` names: looked up next to the file `node` is written in,
-    /// then in the `<path>` folders, then next to the scene file.
+    /// The file a property of `node` names: looked up in the `<path>` folders, then next to
+    /// the file `node` is written in, then next to the scene file.
     pub fn resolve_file(&self, node: &Element, name: &str) -> PathBuf {
-        let own_folder = node
-            .position
-            .file
-            .as_deref()
-            .and_then(Path::parent)
-            .map(Path::to_path_buf);
-        let folders: Vec<PathBuf> = own_folder
-            .into_iter()
-            .chain(self.search_folders.iter().cloned())
-            .collect();
-        resolve_file(name, &folders)
+        let own_folder = match node.position.file.as_deref() {
+            Some(file) => file.parent().map(Path::to_path_buf).unwrap_or_default(),
+            None => self
+                .file
+                .parent()
+                .map(Path::to_path_buf)
+                .unwrap_or_default(),
+        };
+        resolve_file(name, &folders_for(self.search_folders, own_folder))
     }
 }

@@ -3,7 +3,9 @@
 use super::element::Element;
 use glam::{Mat4, Vec3};
 
-use super::description::{ShapeDescription, ShapeGeometry, mitsuba_default_material};
+use super::description::{
+    ShapeDescription, ShapeGeometry, mitsuba_default_emitter_material, mitsuba_default_material,
+};
 use super::error::SceneError;
 use super::lights::{Emitter, read_emitter};
 use super::materials::nested_bsdfs;
@@ -74,7 +76,8 @@ pub(super) fn read_shape<'a>(
         }
     }
     let material = match nested_bsdfs(reader, &bsdf_nodes, node)?.as_slice() {
-        [] => mitsuba_default_material(),
+        [] if emitter_nodes.is_empty() => mitsuba_default_material(),
+        [] => mitsuba_default_emitter_material(),
         [material] => *material,
         [_, ..] => {
             return Err(reader.error(bsdf_nodes[1], "a shape has at most one bsdf"));

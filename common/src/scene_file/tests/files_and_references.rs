@@ -342,3 +342,20 @@ fn direct_reads_its_sample_counts_and_hide_emitters() {
     assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
     assert!(loaded.warnings[0].message.contains("emitter_samples = 4"));
 }
+
+#[test]
+fn a_shape_without_a_bsdf_is_grey_unless_it_glows_then_black_as_in_mitsuba() {
+    let loaded = parse(&scene_with(
+        "<shape type=\"sphere\"/>\
+         <shape type=\"rectangle\"><emitter type=\"area\"/></shape>",
+    ))
+    .expect("loads");
+    assert_eq!(
+        loaded.scene.shapes[0].material,
+        Material::diffuse(Vec3::splat(0.5))
+    );
+    assert_eq!(
+        loaded.scene.shapes[1].material,
+        Material::diffuse(Vec3::ZERO)
+    );
+}
