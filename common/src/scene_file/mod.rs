@@ -43,6 +43,7 @@ mod obj;
 mod properties;
 mod reader;
 mod shapes;
+mod spectrum;
 mod to_geometry;
 mod to_scene;
 mod transform;
@@ -63,6 +64,9 @@ pub use description::{
 pub use error::{SceneError, SceneWarning, TextPosition};
 pub use materials::{named_ior, named_ior_names};
 pub use obj::{load_obj, parse_obj};
+pub use spectrum::{
+    LinearSrgb, SampledSpectrum, Spectrum, SpectrumRole, parse_spd, parse_spectrum, read_spd_file,
+};
 pub use to_geometry::world_shapes;
 
 /// A scene read from a file, with what the loader ignored.
