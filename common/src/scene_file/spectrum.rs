@@ -17,6 +17,14 @@ use std::path::Path;
 pub(super) use element::read_spectrum;
 pub use to_srgb::{LinearSrgb, SpectrumRole};
 
+/// The longest wavelength a spectrum may name, in nanometres (1 mm, far beyond the 830 nm where
+/// the colour matching functions end).
+pub const MAX_WAVELENGTH: f64 = 1e6;
+
+/// The largest magnitude of a spectrum's value: no reflectance or light is near it, and the
+/// colour of a larger one would not fit in an `f32`.
+pub const MAX_VALUE: f64 = 1e30;
+
 /// A spectrum as a scene file writes it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Spectrum {
@@ -26,8 +34,10 @@ pub enum Spectrum {
     Sampled(SampledSpectrum),
 }
 
-/// Values at two or more strictly increasing, positive wavelengths (nanometres), all finite.
-/// The fields are private so that no spectrum breaks these rules: the conversion relies on them.
+/// Values at two or more strictly increasing wavelengths, each above 0 and at most
+/// [`MAX_WAVELENGTH`] nanometres, with values at most [`MAX_VALUE`] in magnitude. The bounds
+/// keep every step of the conversion finite, so a colour is never NaN or infinite. The fields
+/// are private so that no spectrum breaks these rules.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SampledSpectrum {
     wavelengths: Vec<f64>,
@@ -46,13 +56,17 @@ impl SampledSpectrum {
         }
         let mut previous: Option<f64> = None;
         for &(wavelength, value) in pairs {
-            if !wavelength.is_finite() || wavelength <= 0.0 {
+            if !(wavelength > 0.0 && wavelength <= MAX_WAVELENGTH) {
                 return Err(format!(
-                    "wavelength {wavelength} is not a positive number of nanometres"
+                    "wavelength {wavelength} is not a positive number of nanometres up to \
+                     {MAX_WAVELENGTH:e}"
                 ));
             }
-            if !value.is_finite() {
-                return Err(format!("the value at {wavelength} nm is not finite"));
+            if !(value.abs() <= MAX_VALUE) {
+                return Err(format!(
+                    "the value {value} at {wavelength} nm is not a number of magnitude at most \
+                     {MAX_VALUE:e}"
+                ));
             }
             if let Some(previous) = previous
                 && wavelength <= previous
@@ -90,7 +104,13 @@ pub fn parse_spectrum(text: &str) -> Result<Spectrum, String> {
     match tokens.as_slice() {
         [] => Err("a spectrum needs a number or wavelength:value pairs, found nothing".into()),
         [single] if !single.contains(':') => parse_number(single, "a spectrum's value")
-            .map(Spectrum::Uniform)
+            .and_then(|value| {
+                if value.abs() <= MAX_VALUE {
+                    Ok(Spectrum::Uniform(value))
+                } else {
+                    Err(format!("a spectrum's value must be at most {MAX_VALUE:e} in magnitude, found {value}"))
+                }
+            })
             .map_err(|message| {
                 format!("{message} (a spectrum is one number or wavelength:value pairs)")
             }),

@@ -7,8 +7,11 @@
 //! `...radiance.value`). They are single-precision numbers printed to nine digits.
 
 use glam::Vec3;
+use proptest::prelude::*;
 
-use super::{SampledSpectrum, Spectrum, SpectrumRole, parse_spd, parse_spectrum};
+use super::{
+    MAX_VALUE, MAX_WAVELENGTH, SampledSpectrum, Spectrum, SpectrumRole, parse_spd, parse_spectrum,
+};
 
 // The measured reflectances and light of the Cornell box (Cornell University Program of
 // Computer Graphics), as Mitsuba's documentation scene `variants_cbox_rgb.xml` writes them.
@@ -184,6 +187,9 @@ fn malformed_values_are_refused_with_the_problem_named() {
     assert_refused("-400:0.5, 700:1", "wavelength -400 is not a positive");
     assert_refused("0:0.5, 700:1", "wavelength 0 is not a positive");
     assert_refused("400:0.5, 700:NaN", "finite");
+    assert_refused("400:0.5, 2e6:1", "wavelength 2000000 is not a positive number");
+    assert_refused("400:0.5, 700:-1e31", "not a number of magnitude at most 1e30");
+    assert_refused("1e31", "at most 1e30 in magnitude");
 }
 
 #[test]
@@ -204,4 +210,59 @@ fn malformed_spd_files_are_refused_with_the_line() {
 fn a_missing_spd_file_is_an_error_naming_it() {
     let message = super::read_spd_file(std::path::Path::new("/no/such/dir/x.spd")).unwrap_err();
     assert!(message.contains("/no/such/dir/x.spd"), "{message}");
+}
+
+/// Two to forty pairs at increasing wavelengths (any gaps, down to a millionth of a nanometre,
+/// across the whole allowed range) with values anywhere in the allowed range.
+fn valid_pairs() -> impl Strategy<Value = Vec<(f64, f64)>> {
+    let gap = prop_oneof![1e-6..1.0, 1.0..50.0, 50.0..MAX_WAVELENGTH / 40.0];
+    let value = prop_oneof![-1.0..2.0, -MAX_VALUE..MAX_VALUE, Just(0.0), Just(MAX_VALUE)];
+    (1e-3..900.0, prop::collection::vec((gap, value), 2..40)).prop_map(|(start, steps): (f64, _)| {
+        let mut wavelength = start;
+        steps
+            .into_iter()
+            .map(|(gap, value)| {
+                wavelength += gap;
+                (wavelength.min(MAX_WAVELENGTH), value)
+            })
+            .collect()
+    })
+}
+
+proptest! {
+    #[test]
+    fn valid_spectra_give_finite_colours(pairs in valid_pairs()) {
+        // Clamping to the largest wavelength may repeat it: such lists are refused, not kept.
+        if let Ok(sampled) = SampledSpectrum::new(&pairs) {
+            let spectrum = Spectrum::Sampled(sampled);
+            for role in [SpectrumRole::Reflectance, SpectrumRole::Emission] {
+                let converted = spectrum.to_linear_srgb(role);
+                prop_assert!(converted.rgb.is_finite(), "{role:?}: {converted:?}");
+                prop_assert!(converted.rgb.min_element() >= 0.0, "{role:?}: {converted:?}");
+                if role == SpectrumRole::Reflectance {
+                    prop_assert!(converted.rgb.max_element() <= 1.0, "{converted:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn written_pairs_read_back(pairs in valid_pairs()) {
+        let text: Vec<String> = pairs.iter().map(|(w, v)| format!("{w}:{v}")).collect();
+        let read = parse_spectrum(&text.join(", "));
+        let built = SampledSpectrum::new(&pairs).map(Spectrum::Sampled);
+        prop_assert_eq!(read, built);
+    }
+
+    #[test]
+    fn any_text_is_read_or_refused_without_panicking(text in "[0-9:.,eE+ #\n-]{0,60}|\\PC{0,60}") {
+        for parsed in [parse_spectrum(&text), parse_spd(&text)] {
+            if let Ok(spectrum) = parsed {
+                for role in [SpectrumRole::Reflectance, SpectrumRole::Emission] {
+                    let rgb = spectrum.to_linear_srgb(role).rgb;
+                    prop_assert!(rgb.is_finite(), "{text:?} {role:?}: {rgb}");
+                }
+            }
+        }
+    }
 }
