@@ -65,7 +65,8 @@ pub use error::{SceneError, SceneWarning, TextPosition};
 pub use materials::{named_ior, named_ior_names};
 pub use obj::{load_obj, parse_obj};
 pub use spectrum::{
-    LinearSrgb, MAX_VALUE, MAX_WAVELENGTH, SampledSpectrum, Spectrum, SpectrumRole, parse_spd, parse_spectrum, read_spd_file,
+    LinearSrgb, MAX_VALUE, MAX_WAVELENGTH, SampledSpectrum, Spectrum, SpectrumRole, parse_spd,
+    parse_spectrum, read_spd_file,
 };
 pub use to_geometry::world_shapes;
 

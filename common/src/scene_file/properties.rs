@@ -174,16 +174,17 @@ impl<'a> Properties<'a> {
         role: SpectrumRole,
     ) -> Result<Option<Vec3>, SceneError> {
         let expected = "an <rgb>, a <spectrum> or a <float>";
-        let Some((colour, clamped_from)) = self.typed(reader, name, expected, |value| match value {
-            PropertyValue::Rgb(c) => Some((*c, None)),
-            PropertyValue::Float(x) => Some((Vec3::splat(*x), None)),
-            PropertyValue::Integer(i) => Some((Vec3::splat(*i as f32), None)),
-            PropertyValue::Spectrum(spectrum) => {
-                let converted = spectrum.to_linear_srgb(role);
-                Some((converted.rgb, converted.clamped_from))
-            }
-            _ => None,
-        })?
+        let Some((colour, clamped_from)) =
+            self.typed(reader, name, expected, |value| match value {
+                PropertyValue::Rgb(c) => Some((*c, None)),
+                PropertyValue::Float(x) => Some((Vec3::splat(*x), None)),
+                PropertyValue::Integer(i) => Some((Vec3::splat(*i as f32), None)),
+                PropertyValue::Spectrum(spectrum) => {
+                    let converted = spectrum.to_linear_srgb(role);
+                    Some((converted.rgb, converted.clamped_from))
+                }
+                _ => None,
+            })?
         else {
             return Ok(None);
         };

@@ -56,13 +56,13 @@ impl SampledSpectrum {
         }
         let mut previous: Option<f64> = None;
         for &(wavelength, value) in pairs {
-            if !(wavelength > 0.0 && wavelength <= MAX_WAVELENGTH) {
+            if wavelength.is_nan() || wavelength <= 0.0 || wavelength > MAX_WAVELENGTH {
                 return Err(format!(
                     "wavelength {wavelength} is not a positive number of nanometres up to \
                      {MAX_WAVELENGTH:e}"
                 ));
             }
-            if !(value.abs() <= MAX_VALUE) {
+            if value.is_nan() || value.abs() > MAX_VALUE {
                 return Err(format!(
                     "the value {value} at {wavelength} nm is not a number of magnitude at most \
                      {MAX_VALUE:e}"

@@ -15,8 +15,9 @@ pub(super) const CIE_MAX: f64 = 830.0;
 const CIE_SAMPLES: usize = 95;
 
 /// Scales the colour matching functions so that a spectrum equal to 1 everywhere has a
-/// luminance (Y) of 1: the integral of the tabulated `ȳ` over 360–830 nm, as Mitsuba computes it.
-pub(super) const CIE_Y_NORMALIZATION: f64 = 1.0 / 106.7502593994140625;
+/// luminance (Y) of 1: the integral of the tabulated `ȳ` over 360–830 nm, as Mitsuba computes it
+/// (Mitsuba writes the single-precision sum, 106.7502593994140625, in full).
+pub(super) const CIE_Y_NORMALIZATION: f64 = 1.0 / 106.750_259_399_414_06;
 
 /// Scales the D65 table so that D65 has a luminance of 1 (Mitsuba's constant).
 const CIE_D65_NORMALIZATION: f64 = 1.0 / 98.99741751876255;

@@ -113,7 +113,7 @@ fn interpolate(wavelengths: &[f64], values: &[f64], wavelength: f64) -> f64 {
 /// entries are single-precision numbers.
 fn xyz_to_srgb(xyz: DVec3) -> DVec3 {
     const ROWS: [[f32; 3]; 3] = [
-        [3.240479, -1.537150, -0.498535],
+        [3.240479, -1.53715, -0.498535],
         [-0.969256, 1.875991, 0.041556],
         [0.055648, -0.204043, 1.057311],
     ];

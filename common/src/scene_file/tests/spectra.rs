@@ -2,6 +2,9 @@
 //! from spectra as Mitsuba 3's RGB variants read them, `.spd` files found like other files,
 //! and the errors and warnings placed at the element.
 
+// Mitsuba's colours are written to nine digits, as its Python bindings print them.
+#![allow(clippy::excessive_precision)]
+
 use std::fs;
 
 use glam::Vec3;
@@ -37,7 +40,10 @@ fn the_same_spectrum_is_white_as_a_reflectance_and_purple_as_a_light() {
 #[test]
 fn a_single_number_is_grey_for_a_bsdf_and_purple_for_a_light() {
     let loaded = parse(&two_spectra("0.25", "2")).expect("loads");
-    assert_eq!(loaded.scene.shapes[0].material, Material::diffuse(Vec3::splat(0.25)));
+    assert_eq!(
+        loaded.scene.shapes[0].material,
+        Material::diffuse(Vec3::splat(0.25))
+    );
     let radiance = loaded.scene.shapes[1].emitter.unwrap().radiance;
     assert!(radiance.abs_diff_eq(Vec3::new(2.40958786, 1.89658201, 1.81783211), 1e-6));
 }
@@ -72,7 +78,11 @@ fn an_out_of_gamut_reflectance_is_clamped_with_a_warning_at_its_line() {
     assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
     let warning = &loaded.warnings[0];
     assert_eq!(warning.line, 2);
-    assert!(warning.message.contains("\"reflectance\""), "{}", warning.message);
+    assert!(
+        warning.message.contains("\"reflectance\""),
+        "{}",
+        warning.message
+    );
     assert!(warning.message.contains("clamped"), "{}", warning.message);
 }
 
@@ -123,7 +133,12 @@ fn a_spectrum_needs_exactly_one_of_value_and_filename() {
         let error = error_of(&format!(
             "<bsdf type=\"diffuse\"><spectrum name=\"reflectance\"{attributes}/></bsdf>"
         ));
-        assert!(error.message.contains("either a \"value\" or a \"filename\""), "{error}");
+        assert!(
+            error
+                .message
+                .contains("either a \"value\" or a \"filename\""),
+            "{error}"
+        );
     }
 }
 
@@ -146,8 +161,6 @@ fn spectrum_plugins_are_refused_by_name() {
 
 #[test]
 fn a_spectrum_where_a_number_is_expected_is_refused() {
-    let error = error_of(
-        "<shape type=\"sphere\"><spectrum name=\"radius\" value=\"1\"/></shape>",
-    );
+    let error = error_of("<shape type=\"sphere\"><spectrum name=\"radius\" value=\"1\"/></shape>");
     assert!(error.message.contains("found a <spectrum>"), "{error}");
 }
