@@ -26,6 +26,8 @@
 //!   normalised `cos^n` density, not 0.6's `(n + 2) / 2π` normalisation).
 //! - `emitter`: `area` (in a shape), `point`, `constant`.
 //! - `transform`: `lookat`, `translate`, `rotate`, `scale`, `matrix`.
+//! - `spectrum` (`value="λ:v, ..."`, one number, or `filename="....spd"`), turned into linear
+//!   sRGB as Mitsuba 3's RGB variants do: a reflectance differently from an emitter's radiance.
 //! - `animation` (the workbook's extension, in Mitsuba 0.6's syntax, for chapter 05's motion
 //!   blur): `<animation name="to_world">` with `<transform time="...">` keyframes, in a shape
 //!   or a sensor.
