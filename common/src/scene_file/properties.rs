@@ -190,9 +190,13 @@ impl<'a> Properties<'a> {
         };
         if let (Some(original), Some(position)) = (clamped_from, self.position_of(name)) {
             let plugin = &self.plugin;
+            let allowed = match role {
+                SpectrumRole::Reflectance => "a reflectance lies in [0, 1]",
+                SpectrumRole::Emission => "light is not negative",
+            };
             let message = format!(
                 "the <spectrum> \"{name}\" of the {plugin} is the colour {original:.4} in linear \
-                 sRGB, outside the range allowed; clamped to {colour:.4} as Mitsuba does"
+                 sRGB, but {allowed}: clamped to {colour:.4}, as Mitsuba does"
             );
             self.warnings.push((position, message));
         }

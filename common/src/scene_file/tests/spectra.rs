@@ -83,7 +83,19 @@ fn an_out_of_gamut_reflectance_is_clamped_with_a_warning_at_its_line() {
         "{}",
         warning.message
     );
-    assert!(warning.message.contains("clamped"), "{}", warning.message);
+    assert!(warning.message.contains("[0, 1]: clamped"), "{}", warning.message);
+}
+
+#[test]
+fn a_light_with_a_negative_channel_is_clamped_with_a_warning() {
+    let loaded = parse(&two_spectra("0.5", "500:1, 510:1")).expect("loads");
+    let radiance = loaded.scene.shapes[1].emitter.unwrap().radiance;
+    assert_eq!(radiance.x, 0.0);
+    assert!(radiance.y > 0.0);
+    assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
+    let message = &loaded.warnings[0].message;
+    assert!(message.contains("\"radiance\" of the area emitter"), "{message}");
+    assert!(message.contains("not negative: clamped"), "{message}");
 }
 
 #[test]
