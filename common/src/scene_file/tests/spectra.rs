@@ -83,7 +83,11 @@ fn an_out_of_gamut_reflectance_is_clamped_with_a_warning_at_its_line() {
         "{}",
         warning.message
     );
-    assert!(warning.message.contains("[0, 1]: clamped"), "{}", warning.message);
+    assert!(
+        warning.message.contains("[0, 1]: clamped"),
+        "{}",
+        warning.message
+    );
 }
 
 #[test]
@@ -94,7 +98,10 @@ fn a_light_with_a_negative_channel_is_clamped_with_a_warning() {
     assert!(radiance.y > 0.0);
     assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
     let message = &loaded.warnings[0].message;
-    assert!(message.contains("\"radiance\" of the area emitter"), "{message}");
+    assert!(
+        message.contains("\"radiance\" of the area emitter"),
+        "{message}"
+    );
     assert!(message.contains("not negative: clamped"), "{message}");
 }
 
