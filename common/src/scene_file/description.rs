@@ -10,6 +10,7 @@ use std::path::PathBuf;
 use glam::{Mat4, Vec2, Vec3};
 
 use super::TextPosition;
+use super::spectrum::Spectrum;
 use crate::scene::{AreaEmitter, CameraModel, FilmFilter, Material};
 
 /// Everything a scene file describes.
@@ -64,6 +65,9 @@ pub enum PropertyValue {
     Transform(Mat4),
     /// `<animation>` (the workbook's extension): `(time, matrix)` keyframes, times increasing.
     Animation(Vec<(f32, Mat4)>),
+    /// `<spectrum>`, kept as written: a reflectance and an emitter's radiance turn the same
+    /// spectrum into different RGB.
+    Spectrum(Spectrum),
 }
 
 /// A camera: where it is, what it sees, and how its image is sampled and stored.

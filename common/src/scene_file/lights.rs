@@ -85,7 +85,7 @@ fn emission(
     name: &str,
     whose: &str,
 ) -> Result<Vec3, SceneError> {
-    let value = properties.rgb(reader, name)?.unwrap_or(Vec3::ONE);
+    let value = properties.emitted_rgb(reader, name)?.unwrap_or(Vec3::ONE);
     if value.is_finite() && value.cmpge(Vec3::ZERO).all() {
         return Ok(value);
     }

@@ -26,6 +26,8 @@
 //!   normalised `cos^n` density, not 0.6's `(n + 2) / 2π` normalisation).
 //! - `emitter`: `area` (in a shape), `point`, `constant`.
 //! - `transform`: `lookat`, `translate`, `rotate`, `scale`, `matrix`.
+//! - `spectrum` (`value="λ:v, ..."`, one number, or `filename="....spd"`), turned into linear
+//!   sRGB as Mitsuba 3's RGB variants do: a reflectance differently from an emitter's radiance.
 //! - `animation` (the workbook's extension, in Mitsuba 0.6's syntax, for chapter 05's motion
 //!   blur): `<animation name="to_world">` with `<transform time="...">` keyframes, in a shape
 //!   or a sensor.
@@ -43,6 +45,7 @@ mod obj;
 mod properties;
 mod reader;
 mod shapes;
+mod spectrum;
 mod to_geometry;
 mod to_scene;
 mod transform;
@@ -63,6 +66,10 @@ pub use description::{
 pub use error::{SceneError, SceneWarning, TextPosition};
 pub use materials::{named_ior, named_ior_names};
 pub use obj::{load_obj, parse_obj};
+pub use spectrum::{
+    LinearSrgb, MAX_VALUE, MAX_WAVELENGTH, SampledSpectrum, Spectrum, SpectrumRole, parse_spd,
+    parse_spectrum, read_spd_file,
+};
 pub use to_geometry::world_shapes;
 
 /// A scene read from a file, with what the loader ignored.

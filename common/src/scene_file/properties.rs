@@ -12,6 +12,7 @@ use super::animation::read_animation;
 use super::description::PropertyValue;
 use super::error::{SceneError, TextPosition};
 use super::reader::Reader;
+use super::spectrum::{SpectrumRole, read_spectrum};
 use super::transform::read_transform;
 use super::values::{parse_boolean, parse_float, parse_integer, parse_rgb};
 
@@ -45,6 +46,9 @@ pub(super) struct Properties<'a> {
     list: Vec<Property>,
     /// Nested objects, in file order.
     pub objects: Vec<&'a Element>,
+    /// Warnings found while reading values (a spectrum clamped into the sRGB gamut), given to
+    /// the reader when the plugin is `finish`ed.
+    warnings: Vec<(TextPosition, String)>,
 }
 
 impl<'a> Properties<'a> {
@@ -54,6 +58,7 @@ impl<'a> Properties<'a> {
             plugin,
             list: Vec::new(),
             objects: Vec::new(),
+            warnings: Vec::new(),
         };
         for child in node.children() {
             let tag = child.name();
@@ -148,14 +153,54 @@ impl<'a> Properties<'a> {
         })
     }
 
-    /// A colour: `<rgb>`, or a `<float>` meaning a grey.
+    /// A reflectance colour: `<rgb>`, a `<float>` meaning a grey, or a `<spectrum>` converted
+    /// as Mitsuba's RGB variants convert a reflectance.
     pub fn rgb(&mut self, reader: &Reader, name: &str) -> Result<Option<Vec3>, SceneError> {
-        self.typed(reader, name, "an <rgb> or a <float>", |value| match value {
-            PropertyValue::Rgb(c) => Some(*c),
-            PropertyValue::Float(x) => Some(Vec3::splat(*x)),
-            PropertyValue::Integer(i) => Some(Vec3::splat(*i as f32)),
-            _ => None,
-        })
+        self.colour(reader, name, SpectrumRole::Reflectance)
+    }
+
+    /// An emitter's colour (radiance, intensity): like [`Properties::rgb`], but a `<spectrum>`
+    /// is converted as Mitsuba converts emission, which differs from a reflectance.
+    pub fn emitted_rgb(&mut self, reader: &Reader, name: &str) -> Result<Option<Vec3>, SceneError> {
+        self.colour(reader, name, SpectrumRole::Emission)
+    }
+
+    /// A colour with a `<spectrum>` read in `role`; a spectrum clamped into the sRGB gamut
+    /// gives a warning, as in Mitsuba.
+    fn colour(
+        &mut self,
+        reader: &Reader,
+        name: &str,
+        role: SpectrumRole,
+    ) -> Result<Option<Vec3>, SceneError> {
+        let expected = "an <rgb>, a <spectrum> or a <float>";
+        let Some((colour, clamped_from)) =
+            self.typed(reader, name, expected, |value| match value {
+                PropertyValue::Rgb(c) => Some((*c, None)),
+                PropertyValue::Float(x) => Some((Vec3::splat(*x), None)),
+                PropertyValue::Integer(i) => Some((Vec3::splat(*i as f32), None)),
+                PropertyValue::Spectrum(spectrum) => {
+                    let converted = spectrum.to_linear_srgb(role);
+                    Some((converted.rgb, converted.clamped_from))
+                }
+                _ => None,
+            })?
+        else {
+            return Ok(None);
+        };
+        if let (Some(original), Some(position)) = (clamped_from, self.position_of(name)) {
+            let plugin = &self.plugin;
+            let allowed = match role {
+                SpectrumRole::Reflectance => "a reflectance lies in [0, 1]",
+                SpectrumRole::Emission => "light is not negative",
+            };
+            let message = format!(
+                "the <spectrum> \"{name}\" of the {plugin} is the colour {original:.4} in linear \
+                 sRGB, but {allowed}: clamped to {colour:.4}, as Mitsuba does"
+            );
+            self.warnings.push((position, message));
+        }
+        Ok(Some(colour))
     }
 
     /// A `<point>`.
@@ -210,7 +255,8 @@ impl<'a> Properties<'a> {
 
     /// Refuses the first property the plugin did not ask for: for the workbook's own
     /// materials, whose look a misspelt property (`alhpa`) would silently change.
-    pub fn finish_strict(self, reader: &mut Reader) -> Result<(), SceneError> {
+    pub fn finish_strict(mut self, reader: &mut Reader) -> Result<(), SceneError> {
+        self.give_warnings(reader);
         match self.unused().next() {
             Some(property) => Err(reader.error_at(
                 property.position.clone(),
@@ -224,8 +270,16 @@ impl<'a> Properties<'a> {
         }
     }
 
+    /// Hands the warnings found while reading values to `reader`.
+    fn give_warnings(&mut self, reader: &mut Reader) {
+        for (position, message) in self.warnings.drain(..) {
+            reader.warn_at(position, message);
+        }
+    }
+
     /// Warns about every property the plugin did not ask for.
-    pub fn finish(self, reader: &mut Reader) {
+    pub fn finish(mut self, reader: &mut Reader) {
+        self.give_warnings(reader);
         for property in self.unused() {
             let (name, plugin) = (&property.name, &self.plugin);
             let message = format!("unknown property \"{name}\" of the {plugin}, ignored");
@@ -253,11 +307,12 @@ fn read_value(reader: &Reader, node: &Element) -> Result<PropertyValue, SceneErr
         "vector" => reader.xyz(node).map(PropertyValue::Vector),
         "transform" => read_transform(reader, node).map(PropertyValue::Transform),
         "animation" => read_animation(reader, node).map(PropertyValue::Animation),
+        "spectrum" => read_spectrum(reader, node).map(PropertyValue::Spectrum),
         _ => Err(reader.error(
             node,
             format!(
                 "unknown element <{tag}>: expected a property (float, integer, boolean, string, \
-                 rgb, point, vector, transform, animation) or an object ({})",
+                 rgb, spectrum, point, vector, transform, animation) or an object ({})",
                 OBJECT_TAGS.join(", ")
             ),
         )),
@@ -276,5 +331,6 @@ fn kind_name(value: &PropertyValue) -> &'static str {
         PropertyValue::Vector(_) => "a <vector>",
         PropertyValue::Transform(_) => "a <transform>",
         PropertyValue::Animation(_) => "an <animation>",
+        PropertyValue::Spectrum(_) => "a <spectrum>",
     }
 }

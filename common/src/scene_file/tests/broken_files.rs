@@ -43,8 +43,8 @@ const CORPUS: &[Broken] = &[
     },
     Broken {
         name: "unknown property element",
-        input: Body("<shape type=\"cube\">\n<spectrum name=\"x\" value=\"1\"/></shape>"),
-        fragment: "unknown element <spectrum>",
+        input: Body("<shape type=\"cube\">\n<colour name=\"x\" value=\"1\"/></shape>"),
+        fragment: "unknown element <colour>",
         line: 3,
     },
     Broken {

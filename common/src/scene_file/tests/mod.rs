@@ -6,6 +6,7 @@ mod cornell;
 mod files_and_references;
 mod model;
 mod never_panics;
+mod spectra;
 mod transforms;
 mod warnings;
 
