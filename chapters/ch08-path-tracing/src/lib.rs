@@ -30,6 +30,7 @@ pub mod distribution;
 pub mod figures;
 pub mod furnace;
 pub mod lights;
+pub mod microfacet;
 pub mod mis;
 pub mod nee;
 pub mod options;
