@@ -158,7 +158,13 @@ impl NormalDistribution {
             MicrofacetDistribution::Ggx => alpha2 * u.x / (1.0 - u.x),
         };
         let cos_theta = 1.0 / (1.0 + tan2).sqrt();
-        let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
+        // Mitsuba's `sqrt(1 - cos²)` loses the digits of a small angle in single precision
+        // (`cos² θ` rounds to a few parts in 10⁸ of 1); `tan θ cos θ` keeps them.
+        let sin_theta = if tan2.is_finite() {
+            tan2.sqrt() * cos_theta
+        } else {
+            1.0
+        };
         Vec3::new(cos_phi * sin_theta, sin_phi * sin_theta, cos_theta)
     }
 

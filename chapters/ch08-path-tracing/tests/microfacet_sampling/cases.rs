@@ -2,7 +2,7 @@
 //! reflections around the mirror direction, refractions around the smooth refracted direction.
 //! The charts only place the bins; the density compared is always the sampler's own.
 
-use crate::chart::{Chart, Lobe};
+use crate::slope_chart::{Lobe, SlopeChart as Chart};
 use ch08_path_tracing::microfacet::fresnel;
 use ch08_path_tracing::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
@@ -54,17 +54,10 @@ fn at(degrees: f32) -> Vec3 {
     Vec3::new(sin * cos_phi, sin * sin_phi, cos)
 }
 
-/// The `cos^n` exponent of the chart of normals of roughness `alpha`: Beckmann's
-/// `D ≈ exp(-tan² θ / alpha²)` is about `cos^n θ ≈ exp(-n θ² / 2)` with `n = 2 / alpha²`. GGX's
-/// tail falls only like a power of `tan θ`, and on a strip that narrow its mass would spread
-/// over many decades of `1 - v` next to the strip's far edge, where the quadrature of the
-/// density loses some of it: its chart stays at most 6 wide (the far edge at `1 - v ≈ 10⁻³`).
-fn normals_exponent(kind: MicrofacetDistribution, alpha: f32) -> f32 {
-    let n = 2.0 / (alpha * alpha);
-    match kind {
-        Beckmann => n,
-        Ggx => n.min(6.0),
-    }
+/// The width of the chart of normals of roughness `alpha`: `alpha` is about the spread of
+/// their slopes, `tan θ_m`.
+fn normals_width(alpha: f32) -> f32 {
+    alpha.atan()
 }
 
 /// What [`Case::approximation`] allows a distribution.
@@ -75,16 +68,16 @@ fn approximation(kind: MicrofacetDistribution) -> f64 {
     }
 }
 
-/// Reflected directions spread twice as far as the normals, so a quarter of the exponent.
-fn reflection_exponent(kind: MicrofacetDistribution, alpha: f32) -> f32 {
-    normals_exponent(kind, alpha) / 4.0
+/// Reflected directions spread twice as far as the normals.
+fn reflection_width(alpha: f32) -> f32 {
+    (2.0 * normals_width(alpha)).min(1.5)
 }
 
-fn normals_lobe(kind: MicrofacetDistribution, alpha_u: f32, alpha_v: f32) -> Vec<Lobe> {
+fn normals_lobe(alpha_u: f32, alpha_v: f32) -> Vec<Lobe> {
     vec![Lobe {
         axis: Vec3::Z,
         side: Vec3::Z,
-        exponent: normals_exponent(kind, (alpha_u * alpha_v).sqrt()),
+        width: normals_width((alpha_u * alpha_v).sqrt()),
     }]
 }
 
@@ -98,7 +91,7 @@ pub fn visible_normals() -> Vec<Case> {
                 let w = at(view);
                 cases.push(Case {
                     name: format!("visible normals {kind:?} {au}/{av} from {view}°"),
-                    chart: Chart::new(normals_lobe(kind, au, av)),
+                    chart: Chart::new(normals_lobe(au, av)),
                     sample: Box::new(move |s| Some(d.sample_visible_normal(w, s.get_2d()))),
                     pdf: Box::new(move |m| d.visible_normal_pdf(w, m)),
                     drops: false,
@@ -118,7 +111,7 @@ pub fn plain_normals() -> Vec<Case> {
             let d = NormalDistribution::new(kind, au, av);
             cases.push(Case {
                 name: format!("plain normals {kind:?} {au}/{av}"),
-                chart: Chart::new(normals_lobe(kind, au, av)),
+                chart: Chart::new(normals_lobe(au, av)),
                 sample: Box::new(move |s| Some(d.sample_normal(s.get_2d()))),
                 pdf: Box::new(move |m| d.normal_pdf(m)),
                 drops: false,
@@ -176,7 +169,7 @@ pub fn conductors() -> Vec<Case> {
                 let lobe = Lobe {
                     axis: mirror(wo),
                     side: Vec3::Z,
-                    exponent: reflection_exponent(kind, (au * av).sqrt()),
+                    width: reflection_width((au * av).sqrt()),
                 };
                 let name = format!("rough conductor {kind:?} {au}/{av} from {view}°");
                 cases.push(bsdf_case(kind, name, bsdf, wo, vec![lobe]));
@@ -201,7 +194,7 @@ pub fn glass() -> Vec<Case> {
                 let mut lobes = vec![Lobe {
                     axis: mirror(wo),
                     side,
-                    exponent: reflection_exponent(kind, alpha),
+                    width: reflection_width(alpha),
                 }];
                 // Rough facets refract even beyond the critical angle: straight through,
                 // then, when no smooth refraction exists.
@@ -214,7 +207,7 @@ pub fn glass() -> Vec<Case> {
                 lobes.push(Lobe {
                     axis,
                     side: -side,
-                    exponent: reflection_exponent(kind, alpha),
+                    width: reflection_width(alpha),
                 });
                 let name = format!("rough glass {kind:?} {alpha} from {where_}");
                 cases.push(bsdf_case(kind, name, bsdf, wo, lobes));
@@ -242,7 +235,7 @@ pub fn plastic() -> Vec<Case> {
             let lobe = Lobe {
                 axis: mirror(wo),
                 side: Vec3::Z,
-                exponent: reflection_exponent(kind, alpha).min(10.0),
+                width: reflection_width(alpha).max(0.5),
             };
             let name = format!("rough plastic {kind:?} {alpha} from 50°");
             cases.push(bsdf_case(kind, name, bsdf, wo, vec![lobe]));
