@@ -110,3 +110,74 @@ fn reflected(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
         f64::from(distribution.g1(r, m) * f)
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use common::scene::MicrofacetDistribution;
+
+    /// `1 - F`, and `2 ∫ F(μ) μ dμ` from inside, of a smooth interface of index `eta`.
+    fn smooth(eta: f32) -> (impl Fn(f32) -> f32, f64) {
+        let n = 100_000;
+        let inside: f64 = (0..n)
+            .map(|i| {
+                let mu = (i as f64 + 0.5) / n as f64;
+                2.0 * mu * f64::from(fresnel::dielectric(mu as f32, 1.0 / eta).reflectance)
+            })
+            .sum::<f64>()
+            / n as f64;
+        (
+            move |mu| 1.0 - fresnel::dielectric(mu, eta).reflectance,
+            inside,
+        )
+    }
+
+    /// A nearly smooth coating is a smooth interface: it lets through `1 - F` and reflects
+    /// back from inside the cosine-weighted mean of `F`.
+    #[test]
+    fn a_nearly_smooth_coating_is_a_smooth_interface() {
+        let eta = 1.5;
+        let (transmitted, inside) = smooth(eta);
+        for kind in [
+            MicrofacetDistribution::Beckmann,
+            MicrofacetDistribution::Ggx,
+        ] {
+            let coating = Coating::new(&NormalDistribution::isotropic(kind, 0.01), eta);
+            for i in 4..=20 {
+                let mu = i as f32 / 20.0;
+                let (t, expected) = (coating.transmittance(mu), transmitted(mu));
+                assert!(
+                    (t - expected).abs() < 1e-2,
+                    "{kind:?} at {mu}: {t} vs {expected}"
+                );
+            }
+            let r = f64::from(coating.internal_reflectance);
+            // The mean over 64 cosines, Mitsuba's rule, is a coarse quadrature.
+            assert!((r - inside).abs() < 1e-2, "{kind:?}: R_int {r} vs {inside}");
+        }
+    }
+
+    /// A rougher coating lets less through at grazing incidence (shadowing) and everything
+    /// stays a share.
+    #[test]
+    fn transmittance_is_a_share_that_falls_towards_grazing() {
+        for kind in [
+            MicrofacetDistribution::Beckmann,
+            MicrofacetDistribution::Ggx,
+        ] {
+            let coating = Coating::new(&NormalDistribution::isotropic(kind, 0.5), 1.5);
+            let values: Vec<f32> = (0..=20)
+                .map(|i| coating.transmittance(i as f32 / 20.0))
+                .collect();
+            assert!(
+                values.iter().all(|t| (0.0..=1.0).contains(t)),
+                "{kind:?}: {values:?}"
+            );
+            assert!(values[2] < values[20], "{kind:?}: {values:?}");
+            assert!((0.0..1.0).contains(&coating.internal_reflectance));
+            // Out-of-range cosines never read past the table.
+            assert!(coating.transmittance(1.5).is_finite());
+            assert!(coating.transmittance(-0.5).is_finite());
+        }
+    }
+}

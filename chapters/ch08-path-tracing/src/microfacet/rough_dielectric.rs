@@ -139,7 +139,7 @@ impl RoughDielectric {
         };
         let g1 = self.distribution.g1(wi, m);
         let pdf = pdf.abs();
-        if g1 == 0.0 || !(pdf > 0.0) {
+        if g1 == 0.0 || pdf.is_nan() || pdf <= 0.0 {
             return None;
         }
         Some(BsdfSample {

@@ -127,7 +127,7 @@ impl RoughPlastic {
             sample_cosine_hemisphere(u)
         };
         let pdf = self.pdf(wo, wi);
-        if !(pdf > 0.0) {
+        if pdf.is_nan() || pdf <= 0.0 {
             return None;
         }
         Some(BsdfSample {
