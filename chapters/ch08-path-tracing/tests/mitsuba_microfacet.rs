@@ -1,6 +1,8 @@
 //! The microfacet BSDFs evaluate to what Mitsuba 3 evaluates them to: `f cos θ` and the
 //! density, on a grid of direction pairs, for `roughconductor`, `roughdielectric` and
-//! `roughplastic` with both distributions. Needs a Python with the `mitsuba` package, so it is
+//! `roughplastic` with both distributions. And Mitsuba's sampling delivers, on average, the
+//! albedo that our `eval` integrates to (by quadrature over the facets): its choices, weights
+//! and radiance scaling are the ones our `eval` describes. Needs a Python with the `mitsuba` package, so it is
 //! ignored by default. Run it with
 //!
 //! ```text
@@ -11,7 +13,7 @@
 
 use ch08_path_tracing::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
-    RoughPlasticParameters,
+    RoughPlasticParameters, albedo,
 };
 use common::scene::MicrofacetDistribution::{self, Beckmann, Ggx};
 use glam::Vec3;
@@ -34,6 +36,10 @@ struct Case {
     theirs: Value,
     /// Whether directions below the surface count (glass).
     both_sides: bool,
+    /// The roughness, where the albedo's quadrature puts its nodes.
+    alpha: f32,
+    /// `int_ior / ext_ior` for glass, whose albedo includes refraction.
+    eta: Option<f32>,
 }
 
 fn name(kind: MicrofacetDistribution) -> &'static str {
@@ -65,6 +71,8 @@ fn cases() -> Vec<Case> {
                 ours: Box::new(ours),
                 theirs,
                 both_sides: false,
+                alpha: au.max(av),
+                eta: None,
             });
         }
         for alpha in [0.1f32, 0.5] {
@@ -76,6 +84,8 @@ fn cases() -> Vec<Case> {
                 ours: Box::new(ours),
                 theirs,
                 both_sides: true,
+                alpha,
+                eta: Some(1.5),
             });
             let diffuse = Vec3::new(0.2, 0.5, 0.8);
             let ours = RoughPlastic::new(RoughPlasticParameters {
@@ -94,6 +104,8 @@ fn cases() -> Vec<Case> {
                 ours: Box::new(ours),
                 theirs,
                 both_sides: false,
+                alpha,
+                eta: None,
             });
         }
     }
@@ -127,7 +139,32 @@ fn pairs(both_sides: bool) -> Vec<(Vec3, Vec3)> {
     pairs
 }
 
-fn mitsuba_values(python: &str, request: &Value) -> Vec<Vec<[f64; 4]>> {
+/// Samples per direction of Mitsuba's albedo estimate.
+const ALBEDO_SAMPLES: usize = 10_000;
+
+/// The directions the albedo is estimated from.
+fn albedo_from(both_sides: bool) -> Vec<Vec3> {
+    let above = [
+        direction(0.0, 0.0),
+        direction(60.0, 0.0),
+        direction(85.0, 0.0),
+    ];
+    let below = above.map(|w| -w);
+    if both_sides {
+        above.into_iter().chain(below).collect()
+    } else {
+        above.to_vec()
+    }
+}
+
+/// Mitsuba's answer for one case.
+struct Answer {
+    values: Vec<[f64; 4]>,
+    /// Per direction: the mean weight and its standard error, per channel.
+    albedo: Vec<[f64; 6]>,
+}
+
+fn mitsuba_values(python: &str, request: &Value) -> Vec<Answer> {
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/mitsuba_microfacet.py");
     let mut child = Command::new(python)
         .arg(script)
@@ -143,7 +180,47 @@ fn mitsuba_values(python: &str, request: &Value) -> Vec<Vec<[f64; 4]>> {
         .expect("the script reads its cases");
     let output = child.wait_with_output().expect("the script finishes");
     assert!(output.status.success(), "{script} failed");
-    serde_json::from_slice(&output.stdout).expect("the script writes JSON")
+    let answers: Value = serde_json::from_slice(&output.stdout).expect("the script writes JSON");
+    let numbers = |row: &Value| -> Vec<f64> {
+        row.as_array()
+            .expect("a row of numbers")
+            .iter()
+            .map(|x| x.as_f64().expect("a number"))
+            .collect()
+    };
+    let rows = |value: &Value| -> Vec<Vec<f64>> {
+        value
+            .as_array()
+            .expect("a list of rows")
+            .iter()
+            .map(numbers)
+            .collect()
+    };
+    answers
+        .as_array()
+        .expect("one answer per case")
+        .iter()
+        .map(|answer| Answer {
+            values: rows(&answer["values"])
+                .into_iter()
+                .map(|r| r.try_into().expect("r, g, b, pdf"))
+                .collect(),
+            albedo: rows(&answer["albedo"])
+                .into_iter()
+                .map(|r| r.try_into().expect("means and errors"))
+                .collect(),
+        })
+        .collect()
+}
+
+/// `∫ f cos θ_i dω_i` of our `eval` by quadrature over the facets.
+fn ours_albedo(case: &Case, wo: Vec3) -> [f64; 3] {
+    let eval = |wi| case.ours.eval(wo, wi);
+    let mut total = albedo::reflected(wo, case.alpha, eval);
+    if let Some(eta) = case.eta {
+        total += albedo::refracted(wo, case.alpha, eta, eval);
+    }
+    total.to_array()
 }
 
 #[test]
@@ -160,14 +237,19 @@ fn microfacet_bsdfs_evaluate_as_mitsuba_does() {
                 .iter()
                 .map(|(wo, wi)| json!([[wo.x, wo.y, wo.z], [wi.x, wi.y, wi.z]]))
                 .collect();
-            json!({"bsdf": c.theirs, "pairs": pairs})
+            let from: Vec<Value> = albedo_from(c.both_sides)
+                .iter()
+                .map(|w| json!([w.x, w.y, w.z]))
+                .collect();
+            json!({"bsdf": c.theirs, "pairs": pairs, "albedo_from": from,
+                "samples": ALBEDO_SAMPLES})
         })
         .collect();
     let theirs = mitsuba_values(&python, &Value::Array(request));
     let mut failures = Vec::new();
-    for (case, values) in cases.iter().zip(&theirs) {
+    for (case, answer) in cases.iter().zip(&theirs) {
         let mut worst = (0.0f64, String::new());
-        for ((wo, wi), theirs) in pairs(case.both_sides).iter().zip(values) {
+        for ((wo, wi), theirs) in pairs(case.both_sides).iter().zip(&answer.values) {
             let f = case.ours.eval(*wo, *wi);
             let ours = [f.x, f.y, f.z, case.ours.pdf(*wo, *wi)].map(f64::from);
             for (a, b) in ours.iter().zip(theirs) {
@@ -186,6 +268,30 @@ fn microfacet_bsdfs_evaluate_as_mitsuba_does() {
         );
         if worst.0 > TOLERANCE {
             failures.push(format!("{}: {:.2e} at {}", case.name, worst.0, worst.1));
+        }
+        for (wo, theirs) in albedo_from(case.both_sides).iter().zip(&answer.albedo) {
+            let ours = ours_albedo(case, *wo);
+            for c in 0..3 {
+                // Five standard errors, and Beckmann's approximate `G1` (0.35 %), which
+                // Mitsuba's weights use but its exact visible-normal sampler does not.
+                let allowed = 5.0 * theirs[3 + c] + 4e-3 * ours[c] + 1e-4;
+                let off = (ours[c] - theirs[c]).abs();
+                eprintln!(
+                    "  albedo from {wo}: ours {:.4}, Mitsuba {:.4} ± {:.4}",
+                    ours[c],
+                    theirs[c],
+                    theirs[3 + c]
+                );
+                if off > allowed {
+                    failures.push(format!(
+                        "{} from {wo}: albedo {:.4} but Mitsuba samples {:.4} ± {:.4}",
+                        case.name,
+                        ours[c],
+                        theirs[c],
+                        theirs[3 + c]
+                    ));
+                }
+            }
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
