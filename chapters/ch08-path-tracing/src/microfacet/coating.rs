@@ -18,7 +18,10 @@
 use super::distribution::NormalDistribution;
 use super::fresnel;
 use super::gauss_legendre::nodes_and_weights;
+use common::scene::MicrofacetDistribution;
 use glam::Vec3;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Entries of the transmittance table, Mitsuba's `MI_ROUGH_TRANSMITTANCE_RES`.
 pub const RESOLUTION: usize = 64;
@@ -53,6 +56,38 @@ impl Coating {
             transmittance,
             internal_reflectance: (2.0 * internal / RESOLUTION as f64) as f32,
         }
+    }
+
+    /// The coating of `distribution` over `eta`, tabulated once per process for each
+    /// roughness and index: a Beckmann table takes about a second in a debug build, and a
+    /// scene's plastics often share one.
+    pub fn shared(distribution: &NormalDistribution, eta: f32) -> Arc<Self> {
+        // The distribution by number: the scene model's enum is not `Hash`.
+        type Key = (u8, u32, u32, u32);
+        static TABLES: OnceLock<Mutex<HashMap<Key, Arc<Coating>>>> = OnceLock::new();
+        let kind = match distribution.kind {
+            MicrofacetDistribution::Beckmann => 0,
+            MicrofacetDistribution::Ggx => 1,
+        };
+        let key = (
+            kind,
+            distribution.alpha_u.to_bits(),
+            distribution.alpha_v.to_bits(),
+            eta.to_bits(),
+        );
+        let tables = TABLES.get_or_init(Default::default);
+        if let Some(table) = tables.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return Arc::clone(table);
+        }
+        // Tabulated outside the lock, so that other threads' lookups do not wait; two
+        // threads may both tabulate the same coating once, with the same result.
+        let table = Arc::new(Self::new(distribution, eta));
+        tables
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .entry(key)
+            .or_insert(table)
+            .clone()
     }
 
     /// `T(cos θ)`, interpolated linearly between the entries (`cos θ` in `[0, 1]`).
@@ -114,7 +149,6 @@ fn reflected(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use common::scene::MicrofacetDistribution;
 
     /// `1 - F`, and `2 ∫ F(μ) μ dμ` from inside, of a smooth interface of index `eta`.
     fn smooth(eta: f32) -> (impl Fn(f32) -> f32, f64) {
@@ -175,6 +209,12 @@ mod tests {
             );
             assert!(values[2] < values[20], "{kind:?}: {values:?}");
             assert!((0.0..1.0).contains(&coating.internal_reflectance));
+            let d = NormalDistribution::isotropic(kind, 0.5);
+            assert_eq!(*Coating::shared(&d, 1.5), coating);
+            assert!(Arc::ptr_eq(
+                &Coating::shared(&d, 1.5),
+                &Coating::shared(&d, 1.5)
+            ));
             // Out-of-range cosines never read past the table.
             assert!(coating.transmittance(1.5).is_finite());
             assert!(coating.transmittance(-0.5).is_finite());

@@ -105,8 +105,8 @@ impl NormalDistribution {
     }
 
     // ANCHOR: sample_visible_normal
-    /// A normal visible from `w` (above the surface), drawn from [`visible_normal_pdf`]
-    /// (Self::visible_normal_pdf), by Heitz and d'Eon's recipe: stretch the configuration so
+    /// A normal visible from `w` (above the surface), drawn from
+    /// [`visible_normal_pdf`](Self::visible_normal_pdf), by Heitz and d'Eon's recipe: stretch the configuration so
     /// that the roughness is 1, draw the slope of a visible facet of the unit-roughness
     /// distribution seen from the stretched `w` (which only depends on its angle from the
     /// normal), turn it to `w`'s azimuth and stretch it back (a normal's tangential part

@@ -23,6 +23,7 @@ use ch02_monte_carlo::warps::cosine::{cosine_hemisphere_pdf, sample_cosine_hemis
 use common::scene::MicrofacetDistribution;
 use glam::{Vec2, Vec3};
 use std::f32::consts::FRAC_1_PI;
+use std::sync::Arc;
 
 /// A rough plastic with its coating tabulated.
 #[derive(Clone, Debug, PartialEq)]
@@ -32,7 +33,7 @@ pub struct RoughPlastic {
     diffuse_reflectance: Vec3,
     specular_reflectance: Vec3,
     nonlinear: bool,
-    coating: Coating,
+    coating: Arc<Coating>,
     specular_sampling_weight: f32,
 }
 
@@ -54,10 +55,11 @@ pub struct RoughPlasticParameters {
 }
 
 impl RoughPlastic {
-    /// The plastic, its coating tabulated (some 10⁶ sampled normals, as in Mitsuba).
+    /// The plastic, its coating tabulated (some 10⁶ sampled normals, as in Mitsuba; once per
+    /// roughness and index, see [`Coating::shared`]).
     pub fn new(p: RoughPlasticParameters) -> Self {
         let distribution = NormalDistribution::isotropic(p.kind, p.alpha);
-        let coating = Coating::new(&distribution, p.eta);
+        let coating = Coating::shared(&distribution, p.eta);
         let mean = |c: Vec3| (c.x + c.y + c.z) / 3.0;
         let specular = mean(p.specular_reflectance);
         Self {

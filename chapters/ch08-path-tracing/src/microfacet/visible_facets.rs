@@ -1,8 +1,8 @@
 //! The normal of a microfacet visible from a direction at `θ` from the normal, for the
 //! distributions of roughness 1, seen from the azimuth `φ = 0`. A facet of slope `(x̃, ỹ)` has
 //! the normal `(-x̃, -ỹ, 1)`; both samplers return such a normal up to a positive factor, so
-//! that a facet standing on edge (an infinite slope) stays finite. [`NormalDistribution`]
-//! (super::NormalDistribution) turns it to any azimuth and stretches it to any roughness.
+//! that a facet standing on edge (an infinite slope) stays finite.
+//! [`NormalDistribution`](super::NormalDistribution) turns it to any azimuth and stretches it to any roughness.
 //!
 //! Both are Mitsuba 3's (`sample_visible_11`): GGX by Heitz's 2018 construction (a visible
 //! GGX facet is a point of the projected hemisphere), Beckmann by Jakob's numerical inversion
