@@ -1,7 +1,8 @@
-//! The microfacet figures are drawn: the `cos^n` lobe against GGX and Beckmann, and the white
-//! furnace. Set `MICROFACET_FIGURES=DIR` to keep them in `DIR` and look at them.
+//! The microfacet figures are drawn: the `cos^n` lobe against GGX and Beckmann, the white
+//! furnace, and the visible normals' histogram beside their density. Set `MICROFACET_FIGURES=DIR` to keep them in `DIR` and look at them.
 
 use ch08_path_tracing::microfacet::figures;
+use common::scene::MicrofacetDistribution;
 use std::path::PathBuf;
 
 #[test]
@@ -15,7 +16,10 @@ fn the_lobe_and_furnace_figures_are_written() {
     let furnace = dir.join("microfacet-furnace.png");
     figures::lobes(&lobes, &[0.1, 0.4], 40.0).expect("the lobes figure");
     figures::furnace(&furnace, &[0.0, 45.0, 70.0, 85.0]).expect("the furnace figure");
-    for path in [lobes, furnace] {
+    let visible = dir.join("microfacet-visible-normals.png");
+    figures::visible_normals(&visible, MicrofacetDistribution::Ggx, 0.5, 60.0, 200_000)
+        .expect("the visible normals figure");
+    for path in [lobes, furnace, visible] {
         let size = std::fs::metadata(&path).map(|m| m.len()).unwrap_or(0);
         assert!(size > 10_000, "{} is {size} bytes", path.display());
     }

@@ -6,9 +6,10 @@ use super::distribution::NormalDistribution;
 use super::rough_conductor::RoughConductor;
 use ch02_monte_carlo::warps::lobe::cos_lobe_pdf;
 use common::output::OutputError;
-use common::output::figures::{Axes, Series, SeriesStyle, line_plot};
+use common::output::figures::{Axes, Series, SeriesStyle, histogram_vs_pdf, line_plot};
+use common::sampler::{IndependentSampler, Sampler};
 use common::scene::MicrofacetDistribution;
-use glam::Vec3;
+use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
 
 /// A rough conductor that reflects everything at every facet (Mitsuba's default `eta = 0`,
@@ -108,5 +109,47 @@ pub fn furnace(path: &Path, incidences: &[f64]) -> Result<(), OutputError> {
         "White furnace of a rough mirror",
         &Axes::linear("roughness alpha", "albedo"),
         &series,
+    )
+}
+
+/// The visible normals of `kind` at roughness `alpha` seen from `incidence` degrees: where
+/// `samples` normals drawn by [`NormalDistribution::sample_visible_normal`] fall, projected
+/// straight down onto the unit disc, beside the density they should have there,
+/// `D_w(m) / cos θ_m` (the projection shrinks a solid angle by `cos θ_m`).
+pub fn visible_normals(
+    path: &Path,
+    kind: MicrofacetDistribution,
+    alpha: f32,
+    incidence: f64,
+    samples: u64,
+) -> Result<(), OutputError> {
+    let d = NormalDistribution::isotropic(kind, alpha);
+    let w = in_plane(incidence);
+    let mut sampler = IndependentSampler::new(1);
+    let points: Vec<Vec2> = (0..samples)
+        .map(|i| {
+            sampler.start_pixel_sample(UVec2::ZERO, i);
+            d.sample_visible_normal(w, sampler.get_2d()).truncate()
+        })
+        .collect();
+    let pdf = |p: Vec2| {
+        let z2 = 1.0 - p.length_squared();
+        if z2 <= 0.0 {
+            return 0.0;
+        }
+        let m = p.extend(z2.sqrt());
+        f64::from(d.visible_normal_pdf(w, m) / m.z)
+    };
+    let name = match kind {
+        MicrofacetDistribution::Beckmann => "Beckmann",
+        MicrofacetDistribution::Ggx => "GGX",
+    };
+    histogram_vs_pdf(
+        path,
+        &format!("Visible normals, {name} alpha {alpha}, seen from {incidence}°"),
+        &points,
+        &pdf,
+        [Vec2::splat(-1.0), Vec2::splat(1.0)],
+        40,
     )
 }
