@@ -43,7 +43,7 @@ const VIEWS: [f32; 3] = [0.0, 60.0, 89.0];
 
 /// Every test of the file, for Šidák's correction.
 pub const TESTS: usize = KINDS.len() * ROUGHNESS.len() * (VIEWS.len() + 1) // normals
-    + KINDS.len() * 3 * 2 // conductors
+    + KINDS.len() * 3 * 3 // conductors
     + KINDS.len() * 2 * 3 // glass
     + KINDS.len() * 2; // plastic
 
@@ -153,7 +153,7 @@ fn mirror(wo: Vec3) -> Vec3 {
     fresnel::reflect(wo, facing(wo))
 }
 
-/// Copper-like metal at two roughnesses and anisotropic, from the normal and at 70°.
+/// Copper-like metal at two roughnesses and anisotropic, from the normal, at 70° and grazing.
 pub fn conductors() -> Vec<Case> {
     let mut cases = Vec::new();
     for kind in KINDS {
@@ -164,7 +164,7 @@ pub fn conductors() -> Vec<Case> {
                 k: Vec3::new(3.6, 2.6, 2.3),
                 specular_reflectance: Vec3::ONE,
             };
-            for view in [0.0, 70.0] {
+            for view in [0.0, 70.0, 88.0] {
                 let wo = at(view);
                 let lobe = Lobe {
                     axis: mirror(wo),
