@@ -109,6 +109,57 @@ fn cases() -> Vec<Case> {
             });
         }
     }
+    // Mitsuba's optional factors and the plastic's `nonlinear`.
+    let tint = Vec3::new(0.9, 0.6, 0.3);
+    let ours = RoughConductor {
+        distribution: NormalDistribution::isotropic(Ggx, 0.2),
+        eta,
+        k,
+        specular_reflectance: tint,
+    };
+    cases.push(Case {
+        name: "roughconductor ggx 0.2, specular_reflectance".into(),
+        ours: Box::new(ours),
+        theirs: json!({"type": "roughconductor", "distribution": "ggx", "alpha": 0.2,
+            "eta": rgb(eta), "k": rgb(k), "specular_reflectance": rgb(tint)}),
+        both_sides: false,
+        alpha: 0.2,
+        eta: None,
+    });
+    let ours = RoughDielectric {
+        specular_reflectance: tint,
+        specular_transmittance: Vec3::ONE - tint * 0.5,
+        ..RoughDielectric::new(NormalDistribution::isotropic(Ggx, 0.2), 1.33, 1.0)
+    };
+    cases.push(Case {
+        name: "roughdielectric ggx 0.2, specular factors".into(),
+        ours: Box::new(ours),
+        theirs: json!({"type": "roughdielectric", "distribution": "ggx", "alpha": 0.2,
+            "int_ior": 1.33, "ext_ior": 1.0, "specular_reflectance": rgb(tint),
+            "specular_transmittance": rgb(Vec3::ONE - tint * 0.5)}),
+        both_sides: true,
+        alpha: 0.2,
+        eta: Some(1.33),
+    });
+    let diffuse = Vec3::new(0.9, 0.4, 0.1);
+    let ours = RoughPlastic::new(RoughPlasticParameters {
+        kind: Ggx,
+        alpha: 0.2,
+        eta: 1.6,
+        diffuse_reflectance: diffuse,
+        specular_reflectance: tint,
+        nonlinear: true,
+    });
+    cases.push(Case {
+        name: "roughplastic ggx 0.2, nonlinear, specular_reflectance".into(),
+        ours: Box::new(ours),
+        theirs: json!({"type": "roughplastic", "distribution": "ggx", "alpha": 0.2,
+            "int_ior": 1.6, "ext_ior": 1.0, "diffuse_reflectance": rgb(diffuse),
+            "specular_reflectance": rgb(tint), "nonlinear": true}),
+        both_sides: false,
+        alpha: 0.2,
+        eta: None,
+    });
     cases
 }
 
