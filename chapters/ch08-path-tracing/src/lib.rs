@@ -16,6 +16,8 @@
 //! - [`path`]: the path loop; [`render_with`].
 //! - [`distribution`]: Cook's branching tracer with every effect, for comparison;
 //!   [`render_distribution`].
+//! - [`microfacet`]: beyond the lecture, Mitsuba 3's `roughconductor`, `roughdielectric` and
+//!   `roughplastic` (Beckmann and GGX, visible-normal sampling), in the local frame.
 //! - [`scene_file`], [`agreement`], [`CAPABILITIES`]: the path options of a scene file, the
 //!   check against Mitsuba 3's `path`, what of a scene the chapter renders;
 //!   [`furnace`]: the white furnace; [`cli`]: the options of `render`; [`figures`].
@@ -30,6 +32,7 @@ pub mod distribution;
 pub mod figures;
 pub mod furnace;
 pub mod lights;
+pub mod microfacet;
 pub mod mis;
 pub mod nee;
 pub mod options;

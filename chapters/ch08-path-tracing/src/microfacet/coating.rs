@@ -1,0 +1,223 @@
+//! How much light gets through a rough dielectric coating, tabulated as Mitsuba 3's
+//! `roughplastic` tabulates it, so the plastic's diffuse base is weighted as there.
+//!
+//! Light reaching the base must cross the rough interface twice. Mitsuba keeps single
+//! scattering: the share of light from `cos θ` that refracts through a visible facet and is
+//! not shadowed on the way in, `T(cos θ) = ∫ D_w(m) (1 - F(w·m)) G1(t, m) dm` (`t` the refracted
+//! direction), tabulated at 64 evenly spaced `cos θ` and interpolated linearly. Light the base
+//! scatters back up meets the interface from inside, where it is reflected with the
+//! cosine-weighted mean `R_int = ∫ R(cos θ) 2 cos θ d(cos θ)` of the reflectance from inside,
+//! so the base's albedo `ρ` becomes `ρ / (1 - R_int)` (or `ρ / (1 - ρ R_int)`, Mitsuba's
+//! `nonlinear`).
+//!
+//! Both integrals run over the unit square of the visible-normal sampler's numbers with a
+//! tensor Gauss–Legendre rule (32² points for `T`, 128² for `R` seen from inside, where total
+//! internal reflection makes the integrand jump), and `R_int` is the mean over the same 64
+//! cosines, all exactly as Mitsuba does, so that the tables agree to rounding.
+
+use super::distribution::NormalDistribution;
+use super::fresnel;
+use super::gauss_legendre::nodes_and_weights;
+use common::scene::MicrofacetDistribution;
+use glam::Vec3;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+/// Entries of the transmittance table, Mitsuba's `MI_ROUGH_TRANSMITTANCE_RES`.
+pub const RESOLUTION: usize = 64;
+
+/// The tabulated coating of one roughness and index.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Coating {
+    /// `T` at `cos θ = max(10⁻⁶, i / 63)`.
+    transmittance: [f32; RESOLUTION],
+    /// `R_int`, the cosine-weighted reflectance of the interface from inside.
+    pub internal_reflectance: f32,
+}
+
+impl Coating {
+    /// Tabulates the coating of facets `distribution` over a medium of relative index `eta`.
+    pub fn new(distribution: &NormalDistribution, eta: f32) -> Self {
+        let directions: Vec<Vec3> = (0..RESOLUTION)
+            .map(|i| {
+                let mu = (i as f32 / (RESOLUTION - 1) as f32).max(1e-6);
+                Vec3::new((1.0 - mu * mu).sqrt(), 0.0, mu)
+            })
+            .collect();
+        let mut transmittance = [0.0; RESOLUTION];
+        for (t, w) in transmittance.iter_mut().zip(&directions) {
+            *t = transmitted(distribution, *w, eta) as f32;
+        }
+        let internal: f64 = directions
+            .iter()
+            .map(|w| reflected(distribution, *w, 1.0 / eta) * f64::from(w.z))
+            .sum();
+        Self {
+            transmittance,
+            internal_reflectance: (2.0 * internal / RESOLUTION as f64) as f32,
+        }
+    }
+
+    /// The coating of `distribution` over `eta`, tabulated once per process for each
+    /// roughness and index: a Beckmann table takes about a second in a debug build, and a
+    /// scene's plastics often share one.
+    pub fn shared(distribution: &NormalDistribution, eta: f32) -> Arc<Self> {
+        // The distribution by number: the scene model's enum is not `Hash`.
+        type Key = (u8, u32, u32, u32);
+        static TABLES: OnceLock<Mutex<HashMap<Key, Arc<Coating>>>> = OnceLock::new();
+        let kind = match distribution.kind {
+            MicrofacetDistribution::Beckmann => 0,
+            MicrofacetDistribution::Ggx => 1,
+        };
+        let key = (
+            kind,
+            distribution.alpha_u.to_bits(),
+            distribution.alpha_v.to_bits(),
+            eta.to_bits(),
+        );
+        let tables = TABLES.get_or_init(Default::default);
+        if let Some(table) = tables.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return Arc::clone(table);
+        }
+        // Tabulated outside the lock, so that other threads' lookups do not wait; two
+        // threads may both tabulate the same coating once, with the same result.
+        let table = Arc::new(Self::new(distribution, eta));
+        tables
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .entry(key)
+            .or_insert(table)
+            .clone()
+    }
+
+    /// `T(cos θ)`, interpolated linearly between the entries (`cos θ` in `[0, 1]`).
+    pub fn transmittance(&self, cos_theta: f32) -> f32 {
+        let x = cos_theta * (RESOLUTION - 1) as f32;
+        // Truncation as Mitsuba's integer conversion; a NaN or negative goes to entry 0.
+        let index = (x.max(0.0) as usize).min(RESOLUTION - 2);
+        let (t0, t1) = (self.transmittance[index], self.transmittance[index + 1]);
+        t0 + (t1 - t0) * (x - index as f32)
+    }
+}
+
+/// `∫ f(sampled normal) du` over the unit square by the tensor rule of `n²` points.
+fn over_visible_normals(n: usize, mut f: impl FnMut(glam::Vec2) -> f64) -> f64 {
+    let rule = nodes_and_weights(n);
+    let mut sum = 0.0;
+    for &(y, wy) in &rule {
+        for &(x, wx) in &rule {
+            let u = glam::Vec2::new((0.5 * x + 0.5) as f32, (0.5 * y + 0.5) as f32);
+            sum += 0.25 * wx * wy * f(u);
+        }
+    }
+    sum
+}
+
+/// The rule's size: finer where the integrand jumps at total internal reflection.
+fn points(eta: f32) -> usize {
+    if eta > 1.0 { 32 } else { 128 }
+}
+
+/// The share of light from `w` refracted into a medium of relative index `eta` (Mitsuba's
+/// `eval_transmittance`).
+fn transmitted(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
+    over_visible_normals(points(eta), |u| {
+        let m = distribution.sample_visible_normal(w, u);
+        let f = fresnel::dielectric(w.dot(m), eta);
+        let t = fresnel::refract(w, m, &f);
+        if t.z * w.z >= 0.0 {
+            return 0.0;
+        }
+        f64::from(distribution.g1(t, m) * (1.0 - f.reflectance))
+    })
+}
+
+/// The share of light from `w` reflected at an interface of relative index `eta` (Mitsuba's
+/// `eval_reflectance`).
+fn reflected(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
+    over_visible_normals(points(eta), |u| {
+        let m = distribution.sample_visible_normal(w, u);
+        let r = fresnel::reflect(w, m);
+        if r.z <= 0.0 || w.z <= 0.0 {
+            return 0.0;
+        }
+        let f = fresnel::dielectric(w.dot(m), eta).reflectance;
+        f64::from(distribution.g1(r, m) * f)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `1 - F`, and `2 ∫ F(μ) μ dμ` from inside, of a smooth interface of index `eta`.
+    fn smooth(eta: f32) -> (impl Fn(f32) -> f32, f64) {
+        let n = 100_000;
+        let inside: f64 = (0..n)
+            .map(|i| {
+                let mu = (i as f64 + 0.5) / n as f64;
+                2.0 * mu * f64::from(fresnel::dielectric(mu as f32, 1.0 / eta).reflectance)
+            })
+            .sum::<f64>()
+            / n as f64;
+        (
+            move |mu| 1.0 - fresnel::dielectric(mu, eta).reflectance,
+            inside,
+        )
+    }
+
+    /// A nearly smooth coating is a smooth interface: it lets through `1 - F` and reflects
+    /// back from inside the cosine-weighted mean of `F`.
+    #[test]
+    fn a_nearly_smooth_coating_is_a_smooth_interface() {
+        let eta = 1.5;
+        let (transmitted, inside) = smooth(eta);
+        for kind in [
+            MicrofacetDistribution::Beckmann,
+            MicrofacetDistribution::Ggx,
+        ] {
+            let coating = Coating::new(&NormalDistribution::isotropic(kind, 0.01), eta);
+            for i in 4..=20 {
+                let mu = i as f32 / 20.0;
+                let (t, expected) = (coating.transmittance(mu), transmitted(mu));
+                assert!(
+                    (t - expected).abs() < 1e-2,
+                    "{kind:?} at {mu}: {t} vs {expected}"
+                );
+            }
+            let r = f64::from(coating.internal_reflectance);
+            // The mean over 64 cosines, Mitsuba's rule, is a coarse quadrature.
+            assert!((r - inside).abs() < 1e-2, "{kind:?}: R_int {r} vs {inside}");
+        }
+    }
+
+    /// A rougher coating lets less through at grazing incidence (shadowing) and everything
+    /// stays a share.
+    #[test]
+    fn transmittance_is_a_share_that_falls_towards_grazing() {
+        for kind in [
+            MicrofacetDistribution::Beckmann,
+            MicrofacetDistribution::Ggx,
+        ] {
+            let coating = Coating::new(&NormalDistribution::isotropic(kind, 0.5), 1.5);
+            let values: Vec<f32> = (0..=20)
+                .map(|i| coating.transmittance(i as f32 / 20.0))
+                .collect();
+            assert!(
+                values.iter().all(|t| (0.0..=1.0).contains(t)),
+                "{kind:?}: {values:?}"
+            );
+            assert!(values[2] < values[20], "{kind:?}: {values:?}");
+            assert!((0.0..1.0).contains(&coating.internal_reflectance));
+            let d = NormalDistribution::isotropic(kind, 0.5);
+            assert_eq!(*Coating::shared(&d, 1.5), coating);
+            assert!(Arc::ptr_eq(
+                &Coating::shared(&d, 1.5),
+                &Coating::shared(&d, 1.5)
+            ));
+            // Out-of-range cosines never read past the table.
+            assert!(coating.transmittance(1.5).is_finite());
+            assert!(coating.transmittance(-0.5).is_finite());
+        }
+    }
+}
