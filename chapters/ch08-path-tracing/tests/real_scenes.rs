@@ -102,7 +102,7 @@ fn real_scene_files_render_or_are_refused_with_their_place() {
     }
     eprintln!("\n{rendered} rendered; refusals by reason:");
     let mut by_count: Vec<_> = refusals.into_iter().collect();
-    by_count.sort_by(|a, b| b.1.cmp(&a.1));
+    by_count.sort_by_key(|(_, count)| std::cmp::Reverse(*count));
     for (reason, count) in by_count {
         eprintln!("{count:4}  {reason}");
     }
