@@ -1,21 +1,26 @@
-//! The BSDF of every chapter-06 material, as the path tracer needs it: *sample* a direction,
+//! The BSDF of every material, as the path tracer needs it: *sample* a direction,
 //! *evaluate* `f cos θ` for a direction the light sample chose, and the *density* with which
 //! sampling would have chosen it (for multiple importance sampling).
 //!
 //! Each material keeps the three in one small module. Directions point away from the surface:
 //! `wo` towards where the path came from, `wi` towards where the light comes from. A
-//! [`BsdfSample`]'s `weight` is `f cos θ / pdf`, which for every material here is a constant
-//! (the albedo, the reflectance, 1 or the refraction's `eta²`): each material is sampled by
-//! exactly the lobe it is made of.
+//! [`BsdfSample`]'s `weight` is `f cos θ / pdf`, which for the lecture's materials is a
+//! constant (the albedo, the reflectance, 1 or the refraction's `eta²`): each is sampled by
+//! exactly the lobe it is made of. Chapter 08's own (metals, thin glass, plastic) follow
+//! Mitsuba 3's: a metal's weight is its Fresnel reflectance, plastic's varies with `wi`.
 //!
-//! Random numbers, in this order: a choice at glass (1), a direction (2) for diffuse, glossy
-//! and frosted surfaces; a mirror and smooth glass's chosen branch take no direction numbers.
+//! Random numbers, in this order: a choice at glass, a thin pane and plastic (1), a direction
+//! (2) for diffuse, glossy, frosted and plastic surfaces and rough metals; a mirror, a smooth
+//! metal and smooth glass's chosen branch take no direction numbers.
 
+pub mod conductor;
 pub mod dielectric;
 pub mod diffuse;
 pub mod glossy;
 pub mod mirror;
+pub mod plastic;
 pub mod rough_glass;
+pub mod thin_dielectric;
 
 use ch06_fuzzy_reflections::FuzzMethod;
 use common::geometry::SurfaceHit;
@@ -66,6 +71,25 @@ impl Bsdf<'_> {
             Material::Diffuse { .. } | Material::CheckeredDiffuse { .. } => false,
             Material::Glossy(g) => !g.exponent.is_finite(),
             Material::RoughGlass(g) => !g.exponent.is_finite(),
+            Material::Conductor(c) => match c.roughness {
+                None => true,
+                Some(_) => !conductor::stand_in_lobe(&c).exponent.is_finite(),
+            },
+            Material::ThinDielectric { .. } => true,
+            Material::Plastic(_) => false,
+        }
+    }
+
+    /// How a plastic's coat reflects: a mirror, or the lobe standing in for its roughness
+    /// until the microfacet BSDF renders it.
+    fn coat(&self, roughness: Option<common::scene::Microfacet>) -> plastic::Coat {
+        match roughness {
+            None => plastic::Coat::Smooth,
+            // The microfacet coat goes here; until then chapter 06's lobe stands in.
+            Some(microfacet) => plastic::Coat::Lobe {
+                exponent: microfacet.lobe_exponent(),
+                fuzz: self.fuzz,
+            },
         }
     }
 
@@ -109,10 +133,36 @@ impl Bsdf<'_> {
                 };
                 rough_glass::sample(hit, wo, &g, self.fuzz, choice, u)
             }
+            Material::Conductor(c) => match c.roughness {
+                None => conductor::sample(hit, wo, &c),
+                // The microfacet BSDF goes here; until then chapter 06's lobe stands in.
+                Some(_) => {
+                    let lobe = conductor::stand_in_lobe(&c);
+                    let u = if lobe.exponent.is_finite() {
+                        sampler.get_2d()
+                    } else {
+                        glam::Vec2::ZERO
+                    };
+                    glossy::sample(hit, wo, &lobe, self.fuzz, u)
+                }
+            },
+            Material::ThinDielectric { int_ior, ext_ior } => Some(thin_dielectric::sample(
+                hit,
+                wo,
+                int_ior,
+                ext_ior,
+                sampler.get_1d(),
+            )),
+            Material::Plastic(p) => {
+                let choice = sampler.get_1d();
+                let u = sampler.get_2d();
+                plastic::sample(hit, wo, &p, self.coat(p.roughness), choice, u)
+            }
         }
     }
 
-    /// `f(wo, wi) cos θ_i` without the delta parts (0 for a mirror or smooth glass).
+    /// `f(wo, wi) cos θ_i` without the delta parts (0 for a mirror, a smooth metal, smooth or
+    /// thin glass; plastic's base without its smooth coat).
     #[inline]
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         let hit = self.hit;
@@ -127,6 +177,12 @@ impl Bsdf<'_> {
             Material::Mirror { .. } | Material::Dielectric { .. } => Vec3::ZERO,
             Material::Glossy(g) => glossy::eval(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => rough_glass::eval(hit, wo, wi, &g, self.fuzz),
+            Material::Conductor(c) => match c.roughness {
+                None => Vec3::ZERO,
+                Some(_) => glossy::eval(hit, wo, wi, &conductor::stand_in_lobe(&c), self.fuzz),
+            },
+            Material::ThinDielectric { .. } => Vec3::ZERO,
+            Material::Plastic(p) => plastic::eval(hit, wo, wi, &p, self.coat(p.roughness)),
         }
     }
 
@@ -141,6 +197,12 @@ impl Bsdf<'_> {
             Material::Mirror { .. } | Material::Dielectric { .. } => 0.0,
             Material::Glossy(g) => glossy::pdf(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => rough_glass::pdf(hit, wo, wi, &g, self.fuzz),
+            Material::Conductor(c) => match c.roughness {
+                None => 0.0,
+                Some(_) => glossy::pdf(hit, wo, wi, &conductor::stand_in_lobe(&c), self.fuzz),
+            },
+            Material::ThinDielectric { .. } => 0.0,
+            Material::Plastic(p) => plastic::pdf(hit, wo, wi, &p, self.coat(p.roughness)),
         }
     }
 }

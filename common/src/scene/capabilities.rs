@@ -98,6 +98,14 @@ pub enum Feature {
     IndirectLight,
     /// The environment lighting matte surfaces (not only seen directly or in mirrors).
     EnvironmentLight,
+    /// A metal whose reflectance changes with the angle (a complex index of refraction);
+    /// chapters before 08 render the lecture's mirror or lobe in its place
+    /// ([`Material::lecture_stand_in`]).
+    MetalFresnel,
+    /// A pane of thin glass (Mitsuba's `thindielectric`).
+    ThinDielectric,
+    /// A matte base under a clear coat (Mitsuba's `plastic`, `roughplastic`).
+    Plastic,
 }
 
 /// What a chapter that does not render a feature does with a scene that uses it.
@@ -107,6 +115,8 @@ enum WhenMissing {
     Refuse,
     /// The scene is rendered without the feature, with this note.
     Note(&'static str),
+    /// The scene is rendered with the lecture's stand-in, which the use's detail describes.
+    StandIn,
 }
 
 impl Feature {
@@ -120,7 +130,11 @@ impl Feature {
                 Some(Chapter::FUZZY_REFLECTIONS)
             }
             Feature::AreaLight => Some(Chapter::SOFT_SHADOWS),
-            Feature::IndirectLight | Feature::EnvironmentLight => Some(Chapter::PATH_TRACING),
+            Feature::IndirectLight
+            | Feature::EnvironmentLight
+            | Feature::MetalFresnel
+            | Feature::ThinDielectric
+            | Feature::Plastic => Some(Chapter::PATH_TRACING),
             Feature::MovingAreaLight => None,
         }
     }
@@ -138,6 +152,9 @@ impl Feature {
             Feature::MovingAreaLight => "an area light that moves",
             Feature::IndirectLight => "indirect light",
             Feature::EnvironmentLight => "an environment",
+            Feature::MetalFresnel => "a metal",
+            Feature::ThinDielectric => "a thin pane of glass (thindielectric)",
+            Feature::Plastic => "plastic",
         }
     }
 
@@ -154,6 +171,10 @@ impl Feature {
             Feature::MovingAreaLight => "no chapter samples lights that move",
             Feature::IndirectLight => "indirect light comes",
             Feature::EnvironmentLight => "the environment lights matte surfaces",
+            Feature::MetalFresnel => "metals' reflectance by angle comes",
+            Feature::ThinDielectric | Feature::Plastic => {
+                "materials beyond the lecture's are rendered"
+            }
         }
     }
 
@@ -168,6 +189,7 @@ impl Feature {
             Feature::EnvironmentLight => WhenMissing::Note(
                 "the constant environment is seen directly and in mirrors and glass, but it does not light matte surfaces here",
             ),
+            Feature::MetalFresnel => WhenMissing::StandIn,
             _ => WhenMissing::Refuse,
         }
     }
@@ -243,6 +265,11 @@ impl Capabilities {
                 WhenMissing::Note(text) => {
                     note(format!("{text}; {}{brought_by}", feature.lesson()))
                 }
+                WhenMissing::StandIn => note(format!(
+                    "{}; {}{brought_by}",
+                    usage.describe(),
+                    feature.lesson()
+                )),
                 WhenMissing::Refuse => {
                     return Err(format!(
                         "{}; {}{brought_by}; {} renders {}",
@@ -255,6 +282,21 @@ impl Capabilities {
             }
         }
         Ok(notes)
+    }
+
+    /// Replaces, in a chapter before 08, every material with a lecture stand-in by it
+    /// ([`Material::lecture_stand_in`]), so that the chapter's tracer meets only the
+    /// lecture's materials; [`check`](Self::check) writes the notes that say so. Chapter 08
+    /// renders the materials themselves and leaves the scene as it is.
+    pub fn put_in_stand_ins(&self, scene: &mut Scene) {
+        if self.chapter.number >= Chapter::PATH_TRACING.number {
+            return;
+        }
+        for surface in &mut scene.surfaces {
+            if let Some((stand_in, _)) = surface.material.lecture_stand_in() {
+                surface.material = stand_in;
+            }
+        }
     }
 
     /// What the chapter renders, in words, for a refusal.
@@ -342,6 +384,26 @@ impl Scene {
                 };
                 add(feature, surface.origin, name.clone());
             }
+            if let Some((stand_in, how)) = surface.material.lecture_stand_in()
+                && let Material::Conductor(conductor) = surface.material
+                && conductor.eta != glam::Vec3::ZERO
+            {
+                add(
+                    Feature::MetalFresnel,
+                    surface.origin,
+                    format!(
+                        "{name}: rendered as {}, {how}",
+                        describe_stand_in(&stand_in)
+                    ),
+                );
+            }
+            match surface.material {
+                Material::ThinDielectric { .. } => {
+                    add(Feature::ThinDielectric, surface.origin, name.clone())
+                }
+                Material::Plastic(_) => add(Feature::Plastic, surface.origin, name.clone()),
+                _ => {}
+            }
             if let Some((detail, stands_in)) = fuzzy_detail(&surface.material) {
                 let feature = if stands_in {
                     Feature::MicrofacetMaterial
@@ -362,12 +424,40 @@ impl Scene {
     }
 }
 
+/// A stand-in material in words, for a note: "a mirror of reflectance (0.95, 0.64, 0.54)".
+fn describe_stand_in(material: &Material) -> String {
+    let rgb = |c: glam::Vec3| format!("({:.3}, {:.3}, {:.3})", c.x, c.y, c.z);
+    match material {
+        Material::Mirror { reflectance } => {
+            format!("a mirror of reflectance {}", rgb(*reflectance))
+        }
+        Material::Glossy(g) => format!("a lobe of reflectance {}", rgb(g.reflectance)),
+        other => format!("{other:?}"),
+    }
+}
+
 /// What a fuzzy material is, for messages, and whether it stands in for a microfacet
 /// roughness; `None` for a smooth one.
 fn fuzzy_detail(material: &Material) -> Option<(String, bool)> {
     let (kind, exponent, stands_in_for) = match material {
         Material::Glossy(g) => ("roughconductor", g.exponent, g.stands_in_for),
         Material::RoughGlass(g) => ("roughdielectric", g.exponent, g.stands_in_for),
+        Material::Conductor(c) => {
+            let microfacet = c.roughness?;
+            (
+                "roughconductor",
+                microfacet.lobe_exponent(),
+                Some(microfacet),
+            )
+        }
+        Material::Plastic(p) => {
+            let microfacet = p.roughness?;
+            (
+                "roughplastic (its coat)",
+                microfacet.lobe_exponent(),
+                Some(microfacet),
+            )
+        }
         _ => return None,
     };
     Some(match stands_in_for {
