@@ -563,6 +563,92 @@ mod tests {
     }
 
     #[test]
+    fn metals_get_the_lectures_stand_in_before_chapter_08_and_thin_glass_and_plastic_wait() {
+        const PATH_TRACING: Capabilities = Capabilities {
+            chapter: Chapter::PATH_TRACING,
+            approximates: &[],
+        };
+        let gold = crate::scene::Conductor {
+            eta: Vec3::new(0.143, 0.375, 1.442),
+            k: Vec3::new(3.983, 2.386, 1.603),
+            specular_reflectance: Vec3::ONE,
+            two_sided: false,
+            roughness: None,
+        };
+        let mut metal = scene(SceneBuilder::new().shape(sphere(), Material::Conductor(gold)));
+        let notes = WHITTED.check(&metal).unwrap();
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].starts_with("a metal (shape 1: rendered as a mirror of reflectance (0.967")
+                && notes[0].contains("normal incidence")
+                && notes[0].contains("chapter 08"),
+            "{notes:?}"
+        );
+        assert_eq!(PATH_TRACING.check(&metal), Ok(Vec::new()));
+        PATH_TRACING.put_in_stand_ins(&mut metal);
+        assert_eq!(metal.surfaces[0].material, Material::Conductor(gold));
+        WHITTED.put_in_stand_ins(&mut metal);
+        assert!(
+            matches!(metal.surfaces[0].material, Material::Mirror { reflectance } if reflectance.z < 0.5)
+        );
+
+        // Rough: a lobe, which needs chapter 06; eta 0 reflects everything, so no note on
+        // its colour.
+        let rough = Material::Conductor(crate::scene::Conductor {
+            eta: Vec3::ZERO,
+            k: Vec3::ONE,
+            roughness: Some(crate::scene::Microfacet {
+                distribution: crate::scene::MicrofacetDistribution::Beckmann,
+                alpha: 0.5,
+            }),
+            ..gold
+        });
+        let rough = scene(SceneBuilder::new().shape(sphere(), rough));
+        assert!(
+            WHITTED
+                .check(&rough)
+                .unwrap_err()
+                .contains("microfacet roughness")
+        );
+        let notes = SOFT_SHADOWS.check(&rough).unwrap();
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].contains("roughconductor with alpha 0.5"),
+            "{notes:?}"
+        );
+
+        for (material, words) in [
+            (
+                Material::ThinDielectric {
+                    int_ior: 1.5,
+                    ext_ior: 1.0,
+                },
+                "a thin pane of glass (thindielectric) (shape 1)",
+            ),
+            (
+                Material::Plastic(crate::scene::Plastic {
+                    diffuse_reflectance: Vec3::splat(0.5),
+                    specular_reflectance: Vec3::ONE,
+                    int_ior: 1.49,
+                    ext_ior: 1.0,
+                    nonlinear: false,
+                    two_sided: false,
+                    roughness: None,
+                }),
+                "plastic (shape 1)",
+            ),
+        ] {
+            let beyond = scene(SceneBuilder::new().shape(sphere(), material));
+            let refusal = SOFT_SHADOWS.check(&beyond).unwrap_err();
+            assert!(
+                refusal.starts_with(words) && refusal.contains("chapter 08 (ch08-path-tracing)"),
+                "{refusal}"
+            );
+            assert_eq!(PATH_TRACING.check(&beyond), Ok(Vec::new()));
+        }
+    }
+
+    #[test]
     fn a_moving_light_is_refused_by_every_chapter() {
         let keyframes = vec![
             (0.0, Mat4::IDENTITY),

@@ -3,6 +3,7 @@
 mod animation;
 mod broken_files;
 mod cornell;
+mod materials;
 mod model;
 mod never_panics;
 mod transforms;
