@@ -73,7 +73,7 @@ impl Bsdf<'_> {
             Material::RoughGlass(g) => !g.exponent.is_finite(),
             Material::Conductor(c) => match c.roughness {
                 None => true,
-                Some(_) => !conductor::stand_in_lobe(&c).exponent.is_finite(),
+                Some(_) => !conductor::stand_in_lobe(c).exponent.is_finite(),
             },
             Material::ThinDielectric { .. } => true,
             Material::Plastic(_) => false,
