@@ -250,8 +250,8 @@ impl Material {
         };
         Some((
             stand_in,
-            "its Fresnel reflectance at normal incidence at every angle: the colour seen \
-             square on, without the metal's brightening towards grazing angles",
+            "its reflectance at normal incidence at every angle (no brightening towards \
+             grazing angles)",
         ))
     }
 
