@@ -80,8 +80,9 @@ const DEFAULT_PHONG_EXPONENT: f32 = 30.0;
 /// Mitsuba 3's rough BSDFs keep their microfacet roughness: `roughconductor` and
 /// `roughplastic` as the `roughness` of a [`Conductor`] or [`Plastic`], `roughdielectric` as
 /// a `cos^n` lobe of about the same width (see [`Microfacet`]) remembering the roughness it
-/// stands in for; the workbook's `phong` (Mitsuba 0.6's name and exponent, a specular lobe only) is the glossy lobe
-/// itself, normalised as chapter 06's density `(n + 1) / 2π cos^n` rather than as 0.6's Phong.
+/// stands in for; the workbook's `phong` (Mitsuba 0.6's name and exponent, a specular lobe
+/// only) is the glossy lobe itself, normalised as chapter 06's density `(n + 1) / 2π cos^n`
+/// rather than as 0.6's Phong.
 pub(super) fn read_bsdf(reader: &mut Reader, node: Node) -> Result<Material, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} bsdf"))?;

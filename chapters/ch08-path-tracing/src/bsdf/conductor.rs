@@ -19,7 +19,8 @@ use glam::Vec3;
 /// With `a² + b² = |(eta + i k)² - sin² θ|` and `a` the real part of its square root
 /// (the textbook form, as in Mitsuba's `fresnel_conductor`):
 /// `r_s = (a² + b² - 2 a cos θ + cos² θ) / (a² + b² + 2 a cos θ + cos² θ)` and
-/// `r_p = r_s (cos² θ (a² + b²) - 2 a cos θ sin² θ + sin⁴ θ) / (cos² θ (a² + b²) + 2 a cos θ sin² θ + sin⁴ θ)`.
+/// `r_p = r_s (P - 2 a cos θ sin² θ) / (P + 2 a cos θ sin² θ)`, with
+/// `P = cos² θ (a² + b²) + sin⁴ θ`.
 pub fn fresnel_conductor(cos_i: f32, eta: f32, k: f32) -> f32 {
     let cos2 = cos_i * cos_i;
     let sin2 = 1.0 - cos2;
