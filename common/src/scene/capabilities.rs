@@ -442,10 +442,16 @@ fn fuzzy_detail(material: &Material) -> Option<(String, bool)> {
     let (kind, exponent, stands_in_for) = match material {
         Material::Glossy(g) => ("roughconductor", g.exponent, g.stands_in_for),
         Material::RoughGlass(g) => ("roughdielectric", g.exponent, g.stands_in_for),
+        // A metal of eta 0 reflects everything at every angle; any other keeps its colour
+        // square on at every angle of the lobe, as the lecture's stand-in does.
         Material::Conductor(c) => {
             let microfacet = c.roughness?;
             (
-                "roughconductor",
+                if c.eta == glam::Vec3::ZERO {
+                    "roughconductor"
+                } else {
+                    "roughconductor of its reflectance at normal incidence"
+                },
                 microfacet.lobe_exponent(),
                 Some(microfacet),
             )
