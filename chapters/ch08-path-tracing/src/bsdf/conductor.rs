@@ -34,7 +34,8 @@ pub fn fresnel_conductor(cos_i: f32, eta: f32, k: f32) -> f32 {
     let p_cross = two_a_cos * sin2;
     let r_p = r_s * (p_base - p_cross) / (p_base + p_cross);
     let reflectance = 0.5 * (r_s + r_p);
-    // 0/0 only at cos θ = 0 with a vanishing index: a grazing ray is reflected whole.
+    // 0/0 only at exactly grazing incidence on an index-matched surface (eta = 1, k = 0):
+    // take the grazing limit of every other index, a full reflection.
     if reflectance.is_nan() {
         1.0
     } else {
