@@ -134,13 +134,14 @@ fn describe_interrupt(written: Option<&Path>, spp: u64, requested_spp: Option<u6
 /// A scene file read for a chapter's `render`: loaded with the `-D` overrides, the loader's
 /// warnings printed, checked against what the chapter renders (a refusal is prefixed with the
 /// file's name), and the notes of the check printed: the light the chapter's method leaves
-/// out, the settings it ignores, the materials it renders its own way.
+/// out, the settings it ignores, the materials it renders its own way. Materials the chapter
+/// renders through a lecture stand-in are replaced by it ([`Capabilities::put_in_stand_ins`]).
 pub fn read_scene_file(
     path: &Path,
     defines: &[(String, String)],
     capabilities: &Capabilities,
 ) -> Result<Scene, CliError> {
-    let loaded = load_scene_file(path, defines)?;
+    let mut loaded = load_scene_file(path, defines)?;
     for warning in &loaded.warnings {
         eprintln!("{warning}");
     }
@@ -153,6 +154,7 @@ pub fn read_scene_file(
     for note in &notes {
         print_note(note);
     }
+    capabilities.put_in_stand_ins(&mut loaded.scene);
     Ok(loaded.scene)
 }
 

@@ -43,10 +43,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
 /// integrates the same pixel area, with less noise.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
     let loaded = load_scene_file(path, &[]).map_err(|e| e.to_string())?;
-    let scene = loaded.scene;
+    let mut scene = loaded.scene;
     CAPABILITIES
         .check(&scene)
         .map_err(|e| format!("{}: {e}", path.display()))?;
+    CAPABILITIES.put_in_stand_ins(&mut scene);
     let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
     let rendered = render(&scene, &settings, PixelPattern::Grid, 0)
         .expect("64 is a square, so the grid exists");

@@ -17,7 +17,8 @@ use glam::Vec3;
 /// ray is segment 1; a path has at most the scene's `max_depth` segments, as in Mitsuba).
 /// Every ray it spawns keeps the ray's shutter `time`, and every ray traced is counted once in
 /// `counters.rays` (`direct_light` counts its own shadow rays). Chapter 06's materials
-/// (`Glossy`, `RoughGlass`) reflect nothing here.
+/// (`Glossy`, `RoughGlass`) and chapter 08's (`Conductor`, `ThinDielectric`, `Plastic`) reflect
+/// nothing here: the capability check refuses them or puts the lecture's stand-in in their place.
 pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCounters) -> Vec3 {
     // BEGIN SOLUTION
     use crate::optics::reflect;
@@ -59,8 +60,13 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
                 trace(world, next, depth + 1, counters)
             })
         }
-        // Chapter 06's materials; the capability check keeps them from this chapter.
-        Material::Glossy(_) | Material::RoughGlass(_) => Vec3::ZERO,
+        // Chapters 06 and 08's materials; the capability check keeps them from this chapter
+        // (a metal arrives as the mirror that stands in for it).
+        Material::Glossy(_)
+        | Material::RoughGlass(_)
+        | Material::Conductor(_)
+        | Material::ThinDielectric { .. }
+        | Material::Plastic(_) => Vec3::ZERO,
     }
     // END SOLUTION
 }

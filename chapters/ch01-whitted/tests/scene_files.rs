@@ -236,8 +236,8 @@ fn moving_shapes_and_cameras_are_refused_with_chapter_05() {
 fn what_no_chapter_renders_is_refused_while_loading() {
     for (body, expected) in [
         (
-            r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Au"/></bsdf></shape>"#,
-            "perfect mirror",
+            r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Unobtainium"/></bsdf></shape>"#,
+            "unknown material \"Unobtainium\"",
         ),
         (
             r#"<shape type="obj"><string name="filename" value="bunny.obj"/></shape>"#,
@@ -288,4 +288,52 @@ fn broken_scene_files_are_refused_by_the_binary() {
     ]);
     assert!(!out.status.success(), "-D without --scene was accepted");
     assert!(!image.exists());
+}
+
+#[test]
+fn a_gold_sphere_renders_as_the_mirror_of_its_colour_square_on_with_a_note() {
+    let light = r#"<emitter type="point"><point name="position" x="0" y="3" z="3"/><rgb name="intensity" value="20"/></emitter>
+        <shape type="rectangle"><transform name="to_world"><scale value="3"/><translate z="-2"/></transform>
+          <bsdf type="diffuse"><rgb name="reflectance" value="0.2, 0.5, 0.8"/></bsdf></shape>"#;
+    let gold = scene_with(
+        "",
+        &format!(
+            r#"{light}<shape type="sphere"><bsdf type="conductor"><string name="material" value="Au"/></bsdf></shape>"#
+        ),
+    );
+    let mut scene = parse_scene(&gold, Path::new("gold.xml"), &[])
+        .unwrap()
+        .scene;
+    let notes = convert(&scene).unwrap();
+    assert!(
+        notes.iter().any(
+            |n| n.contains("a metal (shape 2: rendered as a mirror of reflectance")
+                && n.contains("chapter 08")
+        ),
+        "{notes:?}"
+    );
+    CAPABILITIES.put_in_stand_ins(&mut scene);
+    let common::scene::Material::Mirror { reflectance } = scene.surfaces[1].material else {
+        panic!("{:?}", scene.surfaces[1]);
+    };
+    // The same scene written with that mirror renders the same image, bit for bit.
+    let mirror = scene_with(
+        "",
+        &format!(
+            r#"{light}<shape type="sphere"><bsdf type="conductor"><rgb name="specular_reflectance" value="{}, {}, {}"/></bsdf></shape>"#,
+            reflectance.x, reflectance.y, reflectance.z
+        ),
+    );
+    let mirror = parse_scene(&mirror, Path::new("mirror.xml"), &[])
+        .unwrap()
+        .scene;
+    let settings = RenderSettings::new(8, 8, 1);
+    let image = |scene: &Scene| {
+        render(scene, &settings, PixelPattern::Centre, 0)
+            .unwrap()
+            .image
+    };
+    assert_eq!(image(&scene).pixels, image(&mirror).pixels);
+    // And gold is not white: the blue wall in it is darkened more than the rest.
+    assert!(reflectance.x > 0.9 && reflectance.z < 0.5, "{reflectance}");
 }

@@ -65,8 +65,9 @@ pub fn for_agreement(
     capabilities: &Capabilities,
 ) -> Result<(Scene, FilmSide, RenderSettings, PixelSampler), String> {
     let in_file = |e: String| format!("{}: {e}", path.display());
-    let scene = load_scene_file(path, &[]).map_err(|e| e.to_string())?.scene;
+    let mut scene = load_scene_file(path, &[]).map_err(|e| e.to_string())?.scene;
     capabilities.check(&scene).map_err(in_file)?;
+    capabilities.put_in_stand_ins(&mut scene);
     let film = film_side(&scene).map_err(in_file)?;
     let settings = RenderSettings::new(scene.film.width, scene.film.height, AGREEMENT_SPP);
     let sampler = PixelSampler::new(film.sampler, AGREEMENT_SPP, 0).map_err(|e| e.to_string())?;

@@ -27,6 +27,16 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "a point light and a constant environment picked among three lights, a glass sphere, max_depth 5",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "metals",
+            checks: "smooth conductors: gold by Mitsuba's name (a sphere, and a sheet on the floor seen at grazing angles), eta and k given as colours, a chromium panel; the conductor Fresnel equations",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "coated-and-thin",
+            checks: "smooth plastic (linear and nonlinear) under an area light, with its light sample and MIS, and a thin glass pane that shows the light in its reflection and casts a shadow",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

@@ -223,11 +223,12 @@ fn matte(bsdf: &Bsdf) -> Option<(Vec3, bool)> {
     }
 }
 
-/// Whether the material has one direction only (a mirror, a lobe of infinite exponent that
-/// is not glass): `k` copies of it would trace the same ray `k` times.
+/// Whether the material has one direction only (a mirror, a smooth metal, a lobe of infinite
+/// exponent that is not glass): `k` copies of it would trace the same ray `k` times.
 fn single_direction(bsdf: &Bsdf) -> bool {
     match *bsdf.material {
         Material::Mirror { .. } => true,
+        Material::Conductor(c) => c.roughness.is_none(),
         Material::Glossy(g) => !g.exponent.is_finite(),
         _ => false,
     }

@@ -100,6 +100,14 @@ pub enum Feature {
     EnvironmentLight,
     /// Emitters hidden from camera rays (Mitsuba's `hide_emitters`).
     HiddenEmitters,
+    /// A metal whose reflectance changes with the angle (a complex index of refraction);
+    /// chapters before 08 render the lecture's mirror or lobe in its place
+    /// ([`Material::lecture_stand_in`]).
+    MetalFresnel,
+    /// A pane of thin glass (Mitsuba's `thindielectric`).
+    ThinDielectric,
+    /// A matte base under a clear coat (Mitsuba's `plastic`, `roughplastic`).
+    Plastic,
 }
 
 /// What a chapter that does not render a feature does with a scene that uses it.
@@ -109,6 +117,8 @@ enum WhenMissing {
     Refuse,
     /// The scene is rendered without the feature, with this note.
     Note(&'static str),
+    /// The scene is rendered with the lecture's stand-in, which the use's detail describes.
+    StandIn,
 }
 
 impl Feature {
@@ -122,9 +132,12 @@ impl Feature {
                 Some(Chapter::FUZZY_REFLECTIONS)
             }
             Feature::AreaLight => Some(Chapter::SOFT_SHADOWS),
-            Feature::IndirectLight | Feature::EnvironmentLight | Feature::HiddenEmitters => {
-                Some(Chapter::PATH_TRACING)
-            }
+            Feature::IndirectLight
+            | Feature::EnvironmentLight
+            | Feature::HiddenEmitters
+            | Feature::MetalFresnel
+            | Feature::ThinDielectric
+            | Feature::Plastic => Some(Chapter::PATH_TRACING),
             Feature::MovingAreaLight => None,
         }
     }
@@ -143,6 +156,9 @@ impl Feature {
             Feature::IndirectLight => "indirect light",
             Feature::EnvironmentLight => "an environment",
             Feature::HiddenEmitters => "emitters hidden from the camera",
+            Feature::MetalFresnel => "a metal",
+            Feature::ThinDielectric => "a thin pane of glass (thindielectric)",
+            Feature::Plastic => "plastic",
         }
     }
 
@@ -160,6 +176,10 @@ impl Feature {
             Feature::IndirectLight => "indirect light comes",
             Feature::EnvironmentLight => "the environment lights matte surfaces",
             Feature::HiddenEmitters => "the integrator's hide_emitters comes",
+            Feature::MetalFresnel => "metals' reflectance by angle comes",
+            Feature::ThinDielectric | Feature::Plastic => {
+                "materials beyond the lecture's are rendered"
+            }
         }
     }
 
@@ -174,6 +194,7 @@ impl Feature {
             Feature::EnvironmentLight => WhenMissing::Note(
                 "the constant environment is seen directly and in mirrors and glass, but it does not light matte surfaces here",
             ),
+            Feature::MetalFresnel => WhenMissing::StandIn,
             _ => WhenMissing::Refuse,
         }
     }
@@ -249,6 +270,11 @@ impl Capabilities {
                 WhenMissing::Note(text) => {
                     note(format!("{text}; {}{brought_by}", feature.lesson()))
                 }
+                WhenMissing::StandIn => note(format!(
+                    "{}; {}{brought_by}",
+                    usage.describe(),
+                    feature.lesson()
+                )),
                 WhenMissing::Refuse => {
                     return Err(format!(
                         "{}; {}{brought_by}; {} renders {}",
@@ -261,6 +287,21 @@ impl Capabilities {
             }
         }
         Ok(notes)
+    }
+
+    /// Replaces, in a chapter before 08, every material with a lecture stand-in by it
+    /// ([`Material::lecture_stand_in`]), so that the chapter's tracer meets only the
+    /// lecture's materials; [`check`](Self::check) writes the notes that say so. Chapter 08
+    /// renders the materials themselves and leaves the scene as it is.
+    pub fn put_in_stand_ins(&self, scene: &mut Scene) {
+        if self.chapter.number >= Chapter::PATH_TRACING.number {
+            return;
+        }
+        for surface in &mut scene.surfaces {
+            if let Some((stand_in, _)) = surface.material.lecture_stand_in() {
+                surface.material = stand_in;
+            }
+        }
     }
 
     /// What the chapter renders, in words, for a refusal.
@@ -348,6 +389,28 @@ impl Scene {
                 };
                 add(feature, surface.origin.clone(), name.clone());
             }
+            if let Some((stand_in, how)) = surface.material.lecture_stand_in()
+                && let Material::Conductor(conductor) = surface.material
+                && conductor.eta != glam::Vec3::ZERO
+            {
+                add(
+                    Feature::MetalFresnel,
+                    surface.origin.clone(),
+                    format!(
+                        "{name}: rendered as {}, {how}",
+                        describe_stand_in(&stand_in)
+                    ),
+                );
+            }
+            match surface.material {
+                Material::ThinDielectric { .. } => add(
+                    Feature::ThinDielectric,
+                    surface.origin.clone(),
+                    name.clone(),
+                ),
+                Material::Plastic(_) => add(Feature::Plastic, surface.origin.clone(), name.clone()),
+                _ => {}
+            }
             if let Some((detail, stands_in)) = fuzzy_detail(&surface.material) {
                 let feature = if stands_in {
                     Feature::MicrofacetMaterial
@@ -380,12 +443,46 @@ impl Scene {
     }
 }
 
+/// A stand-in material in words, for a note: "a mirror of reflectance (0.95, 0.64, 0.54)".
+fn describe_stand_in(material: &Material) -> String {
+    let rgb = |c: glam::Vec3| format!("({:.3}, {:.3}, {:.3})", c.x, c.y, c.z);
+    match material {
+        Material::Mirror { reflectance } => {
+            format!("a mirror of reflectance {}", rgb(*reflectance))
+        }
+        Material::Glossy(g) => format!("a lobe of reflectance {}", rgb(g.reflectance)),
+        other => format!("{other:?}"),
+    }
+}
+
 /// What a fuzzy material is, for messages, and whether it stands in for a microfacet
 /// roughness; `None` for a smooth one.
 fn fuzzy_detail(material: &Material) -> Option<(String, bool)> {
     let (kind, exponent, stands_in_for) = match material {
         Material::Glossy(g) => ("roughconductor", g.exponent, g.stands_in_for),
         Material::RoughGlass(g) => ("roughdielectric", g.exponent, g.stands_in_for),
+        // A metal of eta 0 reflects everything at every angle; any other keeps its colour
+        // square on at every angle of the lobe, as the lecture's stand-in does.
+        Material::Conductor(c) => {
+            let microfacet = c.roughness?;
+            (
+                if c.eta == glam::Vec3::ZERO {
+                    "roughconductor"
+                } else {
+                    "roughconductor of its reflectance at normal incidence"
+                },
+                microfacet.lobe_exponent(),
+                Some(microfacet),
+            )
+        }
+        Material::Plastic(p) => {
+            let microfacet = p.roughness?;
+            (
+                "roughplastic (its coat)",
+                microfacet.lobe_exponent(),
+                Some(microfacet),
+            )
+        }
         _ => return None,
     };
     Some(match stands_in_for {
@@ -489,6 +586,92 @@ mod tests {
                 && refusal.contains("chapter 06"),
             "{refusal}"
         );
+    }
+
+    #[test]
+    fn metals_get_the_lectures_stand_in_before_chapter_08_and_thin_glass_and_plastic_wait() {
+        const PATH_TRACING: Capabilities = Capabilities {
+            chapter: Chapter::PATH_TRACING,
+            approximates: &[],
+        };
+        let gold = crate::scene::Conductor {
+            eta: Vec3::new(0.143, 0.375, 1.442),
+            k: Vec3::new(3.983, 2.386, 1.603),
+            specular_reflectance: Vec3::ONE,
+            two_sided: false,
+            roughness: None,
+        };
+        let mut metal = scene(SceneBuilder::new().shape(sphere(), Material::Conductor(gold)));
+        let notes = WHITTED.check(&metal).unwrap();
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].starts_with("a metal (shape 1: rendered as a mirror of reflectance (0.967")
+                && notes[0].contains("normal incidence")
+                && notes[0].contains("chapter 08"),
+            "{notes:?}"
+        );
+        assert_eq!(PATH_TRACING.check(&metal), Ok(Vec::new()));
+        PATH_TRACING.put_in_stand_ins(&mut metal);
+        assert_eq!(metal.surfaces[0].material, Material::Conductor(gold));
+        WHITTED.put_in_stand_ins(&mut metal);
+        assert!(
+            matches!(metal.surfaces[0].material, Material::Mirror { reflectance } if reflectance.z < 0.5)
+        );
+
+        // Rough: a lobe, which needs chapter 06; eta 0 reflects everything, so no note on
+        // its colour.
+        let rough = Material::Conductor(crate::scene::Conductor {
+            eta: Vec3::ZERO,
+            k: Vec3::ONE,
+            roughness: Some(crate::scene::Microfacet {
+                distribution: crate::scene::MicrofacetDistribution::Beckmann,
+                alpha: 0.5,
+            }),
+            ..gold
+        });
+        let rough = scene(SceneBuilder::new().shape(sphere(), rough));
+        assert!(
+            WHITTED
+                .check(&rough)
+                .unwrap_err()
+                .contains("microfacet roughness")
+        );
+        let notes = SOFT_SHADOWS.check(&rough).unwrap();
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(
+            notes[0].contains("roughconductor with alpha 0.5"),
+            "{notes:?}"
+        );
+
+        for (material, words) in [
+            (
+                Material::ThinDielectric {
+                    int_ior: 1.5,
+                    ext_ior: 1.0,
+                },
+                "a thin pane of glass (thindielectric) (shape 1)",
+            ),
+            (
+                Material::Plastic(crate::scene::Plastic {
+                    diffuse_reflectance: Vec3::splat(0.5),
+                    specular_reflectance: Vec3::ONE,
+                    int_ior: 1.49,
+                    ext_ior: 1.0,
+                    nonlinear: false,
+                    two_sided: false,
+                    roughness: None,
+                }),
+                "plastic (shape 1)",
+            ),
+        ] {
+            let beyond = scene(SceneBuilder::new().shape(sphere(), material));
+            let refusal = SOFT_SHADOWS.check(&beyond).unwrap_err();
+            assert!(
+                refusal.starts_with(words) && refusal.contains("chapter 08 (ch08-path-tracing)"),
+                "{refusal}"
+            );
+            assert_eq!(PATH_TRACING.check(&beyond), Ok(Vec::new()));
+        }
     }
 
     #[test]

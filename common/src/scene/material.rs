@@ -1,8 +1,12 @@
 //! What a surface is made of: every material the workbook renders, as parameters.
 //!
 //! Chapter 01 renders the smooth ones (matte, mirror, glass); chapter 06 adds the fuzzy ones,
-//! whose reflection is spread by a `cos^n` lobe. How each is traced or sampled is the chapters'
-//! business; here they are only data.
+//! whose reflection is spread by a `cos^n` lobe. Chapter 08 renders three more that a scene
+//! file may ask for and the lecture does not teach: metals with a complex index of refraction
+//! ([`Conductor`]), thin panes of glass and plastic (a matte base under a clear coat); earlier
+//! chapters render the lecture's nearest material in their place ([`Material::lecture_stand_in`])
+//! or refuse them. How each is traced or sampled is the chapters' business; here they are only
+//! data.
 
 use glam::{Vec2, Vec3};
 
@@ -42,6 +46,72 @@ pub enum Material {
     /// Frosted glass: smooth glass's Fresnel split into a reflected and a refracted ray, each
     /// spread by a `cos^n` lobe around its ideal direction (chapter 06).
     RoughGlass(RoughGlass),
+    /// A metal: a mirror (or, rough, a lobe) whose reflectance follows the Fresnel equations
+    /// of a complex index of refraction `eta + i k`, so that gold is yellow and brighter at
+    /// grazing angles (Mitsuba's `conductor` and `roughconductor`).
+    Conductor(Conductor),
+    /// A pane of glass too thin to shift the light through it: a Fresnel share reflected
+    /// (the light bouncing inside the pane included), the rest passing straight on
+    /// (Mitsuba's `thindielectric`).
+    ThinDielectric {
+        /// Index of refraction of the pane.
+        int_ior: f32,
+        /// Index of refraction around it.
+        ext_ior: f32,
+    },
+    /// A matte base under a smooth dielectric coat (Mitsuba's `plastic` and `roughplastic`).
+    Plastic(Plastic),
+}
+
+/// A metal's parameters, as Mitsuba 3's `conductor` takes them.
+///
+/// Mitsuba's default `material="none"` is a perfect mirror: the loader makes that a
+/// [`Material::Mirror`] when it is smooth, and a conductor of `eta = 0`, `k = 1` (whose
+/// Fresnel reflectance is 1 at every angle) when it is rough.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conductor {
+    /// Real part of the index of refraction, per colour channel.
+    pub eta: Vec3,
+    /// Imaginary part (the extinction coefficient), per colour channel.
+    pub k: Vec3,
+    /// A factor on the reflection, per colour channel (1 for a physical metal).
+    pub specular_reflectance: Vec3,
+    /// Whether the back face reflects too (Mitsuba's `twosided`); else it is black.
+    pub two_sided: bool,
+    /// The microfacet roughness of a `roughconductor`; `None` for a smooth metal.
+    pub roughness: Option<Microfacet>,
+}
+
+/// Plastic's parameters, as Mitsuba 3's `plastic` takes them: light is reflected by the
+/// coat's Fresnel share, the rest enters, scatters at the matte base (and between base and
+/// coat) and leaves through the coat.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plastic {
+    /// The base's albedo, per colour channel.
+    pub diffuse_reflectance: Vec3,
+    /// A factor on the coat's reflection (1 for a physical coat).
+    pub specular_reflectance: Vec3,
+    /// Index of refraction of the coat.
+    pub int_ior: f32,
+    /// Index of refraction outside.
+    pub ext_ior: f32,
+    /// Whether the light bouncing between base and coat darkens and saturates the colour
+    /// (Mitsuba's `nonlinear`); when false the base's albedo keeps its hue.
+    pub nonlinear: bool,
+    /// Whether the back face reflects too (Mitsuba's `twosided`); else it is black.
+    pub two_sided: bool,
+    /// The coat's microfacet roughness for a `roughplastic`; `None` for a smooth coat.
+    pub roughness: Option<Microfacet>,
+}
+
+impl Conductor {
+    /// The Fresnel reflectance at normal incidence, `((eta - 1)² + k²) / ((eta + 1)² + k²)`
+    /// per channel: the colour a metal shows when looked at square on.
+    pub fn normal_incidence_fresnel(&self) -> Vec3 {
+        let one = Vec3::ONE;
+        let k2 = self.k * self.k;
+        ((self.eta - one) * (self.eta - one) + k2) / ((self.eta + one) * (self.eta + one) + k2)
+    }
 }
 
 /// A fuzzy mirror's parameters.
@@ -152,6 +222,37 @@ impl Material {
             exponent,
             stands_in_for: None,
         })
+    }
+
+    /// The lecture's material that chapters 01 to 07 render in place of one of chapter 08's,
+    /// with what the replacement changes, in words for a note; `None` for the lecture's own
+    /// materials and for those with no honest replacement (a thin pane, plastic), which those
+    /// chapters refuse.
+    ///
+    /// A metal becomes a mirror (a `cos^n` lobe when rough, standing in for its roughness as
+    /// chapter 06's rough materials do) whose reflectance is its Fresnel reflectance at normal
+    /// incidence: its colour seen square on, without the brightening towards grazing angles.
+    /// A metal of reflectance 1 at every angle (Mitsuba's `material="none"`) is that mirror
+    /// exactly.
+    pub fn lecture_stand_in(&self) -> Option<(Material, &'static str)> {
+        let Material::Conductor(conductor) = self else {
+            return None;
+        };
+        let reflectance = conductor.specular_reflectance * conductor.normal_incidence_fresnel();
+        let stand_in = match conductor.roughness {
+            None => Material::Mirror { reflectance },
+            Some(microfacet) => Material::Glossy(Glossy {
+                reflectance,
+                exponent: microfacet.lobe_exponent(),
+                two_sided: conductor.two_sided,
+                stands_in_for: Some(microfacet),
+            }),
+        };
+        Some((
+            stand_in,
+            "its reflectance at normal incidence at every angle (no brightening towards \
+             grazing angles)",
+        ))
     }
 
     /// Whether the material scatters with a lobe (chapter 06's materials).

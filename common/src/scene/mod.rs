@@ -30,7 +30,8 @@ pub use camera::{Camera, CameraFrame, CameraModel};
 pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
-    Checkerboard, Glossy, Material, Microfacet, MicrofacetDistribution, RoughGlass, check_exponent,
+    Checkerboard, Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic,
+    RoughGlass, check_exponent,
 };
 pub use settings::{FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition};
 

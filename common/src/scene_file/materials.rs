@@ -4,30 +4,56 @@ use super::element::Element;
 use glam::Vec3;
 
 use super::error::SceneError;
+use super::metals::{named_metal, named_metal_names};
 use super::properties::Properties;
 use super::reader::Reader;
 use super::values::parse_float;
 use crate::scene::{
-    Glossy, Material, Microfacet, MicrofacetDistribution, RoughGlass, check_exponent,
+    Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
+    check_exponent,
 };
 
-/// Mitsuba's default interior index of refraction, BK7 glass.
+/// Mitsuba's default interior index of refraction of glass, BK7.
 const BK7_IOR: f32 = 1.5046;
 /// Mitsuba's default exterior index of refraction, air.
 const AIR_IOR: f32 = 1.000277;
+/// Mitsuba's default interior index of refraction of plastic, polypropylene.
+const POLYPROPYLENE_IOR: f32 = 1.49;
 
-/// Indices of refraction that may be given by name instead of a number.
+/// Indices of refraction that may be given by name instead of a number: Mitsuba 3's list
+/// (`include/mitsuba/render/ior.h`, after Hecht's *Optics*: measured at about 589 nm between
+/// 0 and 20 degrees Celsius), in its order and spelling.
 const NAMED_IORS: &[(&str, f32)] = &[
-    ("bk7", BK7_IOR),
     ("vacuum", 1.0),
+    ("helium", 1.000036),
+    ("hydrogen", 1.000132),
     ("air", AIR_IOR),
+    ("carbon dioxide", 1.00045),
     ("water", 1.3330),
+    ("acetone", 1.36),
+    ("ethanol", 1.361),
+    ("carbon tetrachloride", 1.461),
+    ("glycerol", 1.4729),
+    ("benzene", 1.501),
+    ("silicone oil", 1.52045),
+    ("bromine", 1.661),
+    ("water ice", 1.31),
+    ("fused quartz", 1.458),
+    ("pyrex", 1.470),
+    ("acrylic glass", 1.49),
+    ("polypropylene", POLYPROPYLENE_IOR),
+    ("bk7", BK7_IOR),
+    ("sodium chloride", 1.544),
+    ("amber", 1.55),
+    ("pet", 1.5750),
     ("diamond", 2.419),
 ];
 
-/// The index of refraction of a material Mitsuba knows by name (`bk7`, `water`, ...), also
-/// for chapters that read the properties of a BSDF outside the subset; and the names known.
+/// The index of refraction of a material Mitsuba knows by name (`bk7`, `water`, ...; in any
+/// case, as Mitsuba compares them in lower case), also for chapters that read the properties
+/// of a BSDF outside the subset.
 pub fn named_ior(name: &str) -> Option<f32> {
+    let name = name.to_lowercase();
     NAMED_IORS
         .iter()
         .find(|(material, _)| *material == name)
@@ -40,8 +66,8 @@ pub fn named_ior_names() -> Vec<&'static str> {
 }
 
 /// The BSDF types the workbook renders, for messages.
-const KNOWN_BSDFS: &str =
-    "diffuse, conductor, dielectric, twosided, phong, roughconductor and roughdielectric";
+const KNOWN_BSDFS: &str = "diffuse, conductor, dielectric, thindielectric, plastic, twosided, \
+     phong, roughconductor, roughplastic and roughdielectric";
 
 /// Mitsuba 3's default `alpha` of its rough BSDFs.
 const DEFAULT_ALPHA: f32 = 0.1;
@@ -51,10 +77,12 @@ const DEFAULT_PHONG_EXPONENT: f32 = 30.0;
 /// Reads a `<bsdf>` element into the material it describes. One with an `id` is read once,
 /// the first time it is met or referenced; every later `<ref>` gets the same material.
 ///
-/// Mitsuba 3's rough BSDFs (`roughconductor`, `roughdielectric`) become `cos^n` lobes of about
-/// the same width (see [`Microfacet`]), remembering the roughness they stand in for; the
-/// workbook's `phong` (Mitsuba 0.6's name and exponent, a specular lobe only) is the glossy lobe
-/// itself, normalised as chapter 06's density `(n + 1) / 2π cos^n` rather than as 0.6's Phong.
+/// Mitsuba 3's rough BSDFs keep their microfacet roughness: `roughconductor` and
+/// `roughplastic` as the `roughness` of a [`Conductor`] or [`Plastic`], `roughdielectric` as
+/// a `cos^n` lobe of about the same width (see [`Microfacet`]) remembering the roughness it
+/// stands in for; the workbook's `phong` (Mitsuba 0.6's name and exponent, a specular lobe
+/// only) is the glossy lobe itself, normalised as chapter 06's density `(n + 1) / 2π cos^n`
+/// rather than as 0.6's Phong.
 pub(super) fn read_bsdf<'a>(
     reader: &mut Reader<'a>,
     node: &'a Element,
@@ -90,18 +118,33 @@ fn read_bsdf_element<'a>(
                 .rgb(reader, "reflectance")?
                 .unwrap_or(Vec3::splat(0.5)),
         ),
-        "conductor" => {
-            no_measured_metal(reader, node, &mut properties, "conductor")?;
-            Material::Mirror {
-                reflectance: properties
-                    .rgb(reader, "specular_reflectance")?
-                    .unwrap_or(Vec3::ONE),
-            }
-        }
+        "conductor" => conductor(reader, node, &mut properties, None)?,
         "dielectric" => Material::Dielectric {
             int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
             ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
         },
+        "thindielectric" => {
+            for unrendered in ["specular_reflectance", "specular_transmittance"] {
+                if let Some(position) = properties.position_of(unrendered) {
+                    return Err(reader.error_at(
+                        position,
+                        format!(
+                            "thindielectric: `{unrendered}` (a factor against physics) is not \
+                             rendered; leave it out"
+                        ),
+                    ));
+                }
+            }
+            Material::ThinDielectric {
+                int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
+                ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
+            }
+        }
+        "plastic" => plastic(reader, &mut properties, None)?,
+        "roughplastic" => {
+            let microfacet = microfacet(reader, node, &mut properties)?;
+            plastic(reader, &mut properties, Some(microfacet))?
+        }
         "phong" => {
             let exponent = properties
                 .float(reader, "exponent")?
@@ -122,16 +165,8 @@ fn read_bsdf_element<'a>(
             })
         }
         "roughconductor" => {
-            no_measured_metal(reader, node, &mut properties, "roughconductor")?;
             let microfacet = microfacet(reader, node, &mut properties)?;
-            Material::Glossy(Glossy {
-                reflectance: properties
-                    .rgb(reader, "specular_reflectance")?
-                    .unwrap_or(Vec3::ONE),
-                exponent: microfacet.lobe_exponent(),
-                two_sided: false,
-                stands_in_for: Some(microfacet),
-            })
+            conductor(reader, node, &mut properties, Some(microfacet))?
         }
         "roughdielectric" => {
             let microfacet = microfacet(reader, node, &mut properties)?;
@@ -169,7 +204,12 @@ fn read_bsdf_element<'a>(
     };
     if matches!(
         type_name.as_str(),
-        "phong" | "roughconductor" | "roughdielectric"
+        "phong"
+            | "roughconductor"
+            | "roughdielectric"
+            | "thindielectric"
+            | "plastic"
+            | "roughplastic"
     ) {
         properties.finish_strict(reader)?;
     } else {
@@ -178,9 +218,9 @@ fn read_bsdf_element<'a>(
     Ok(material)
 }
 
-/// The material `inner` reflecting on both sides. Matte and glossy surfaces get a back face;
-/// mirrors and glass are what they were (a mirror reflects on its front side only, and glass
-/// has two sides already).
+/// The material `inner` reflecting on both sides. Matte, glossy, metal and plastic surfaces
+/// get a back face; mirrors and glass are what they were (a mirror reflects on its front side
+/// only, and glass has two sides already).
 fn two_sided(inner: Material) -> Material {
     match inner {
         Material::Diffuse { albedo, .. } => Material::two_sided_diffuse(albedo),
@@ -192,33 +232,115 @@ fn two_sided(inner: Material) -> Material {
             two_sided: true,
             ..glossy
         }),
+        Material::Conductor(conductor) => Material::Conductor(Conductor {
+            two_sided: true,
+            ..conductor
+        }),
+        Material::Plastic(plastic) => Material::Plastic(Plastic {
+            two_sided: true,
+            ..plastic
+        }),
         other => other,
     }
 }
 
-/// Refuses a conductor made of a named metal: its colour needs measured spectral data the
-/// workbook does not have; `material="none"` (the default) is a perfect mirror.
-fn no_measured_metal(
+/// A `conductor` (`roughness` `None`) or `roughconductor`: its metal named by `material`
+/// (Mitsuba's list, see [`named_metal`]) or given by `eta` and `k` (each an `<rgb>` or a
+/// `<float>`; Mitsuba's defaults are `eta = 0` and `k = 1`, which reflect everything).
+///
+/// A smooth conductor of the default `material="none"` without `eta` or `k` is the perfect
+/// mirror it is in Mitsuba, a [`Material::Mirror`] of `specular_reflectance`.
+fn conductor(
     reader: &Reader,
     node: &Element,
     properties: &mut Properties,
-    type_name: &str,
-) -> Result<(), SceneError> {
-    match properties.string(reader, "material")? {
-        Some(metal) if metal != "none" => {
-            let position = properties
-                .position_of("material")
-                .unwrap_or(reader.position(node));
-            Err(reader.error_at(
-                position,
-                format!(
-                    "the {type_name} `{metal}` needs measured metal data; the workbook has the \
-                     perfect mirror, material=\"none\", with a specular_reflectance"
-                ),
-            ))
+    roughness: Option<Microfacet>,
+) -> Result<Material, SceneError> {
+    let type_name = if roughness.is_some() {
+        "roughconductor"
+    } else {
+        "conductor"
+    };
+    let at = |properties: &Properties, name: &str| {
+        properties
+            .position_of(name)
+            .unwrap_or(reader.position(node))
+    };
+    let specular_reflectance = properties
+        .rgb(reader, "specular_reflectance")?
+        .unwrap_or(Vec3::ONE);
+    let material = properties
+        .string(reader, "material")?
+        .unwrap_or_else(|| "none".to_string());
+    let eta = properties.rgb(reader, "eta")?;
+    let k = properties.rgb(reader, "k")?;
+    let (eta, k) = if material == "none" {
+        if roughness.is_none() && eta.is_none() && k.is_none() {
+            return Ok(Material::Mirror {
+                reflectance: specular_reflectance,
+            });
         }
-        _ => Ok(()),
+        (eta.unwrap_or(Vec3::ZERO), k.unwrap_or(Vec3::ONE))
+    } else {
+        if eta.is_some() || k.is_some() {
+            let given = if eta.is_some() { "eta" } else { "k" };
+            return Err(reader.error_at(
+                at(properties, given),
+                format!(
+                    "{type_name}: give either a named material or eta and k, not both \
+                     (material is \"{material}\")"
+                ),
+            ));
+        }
+        named_metal(&material).ok_or_else(|| {
+            reader.error_at(
+                at(properties, "material"),
+                format!(
+                    "{type_name}: unknown material \"{material}\": Mitsuba 3 knows none (a \
+                     perfect mirror) and {}",
+                    named_metal_names().join(", ")
+                ),
+            )
+        })?
+    };
+    for (name, value) in [("eta", eta), ("k", k)] {
+        if !(value.is_finite() && value.min_element() >= 0.0) {
+            return Err(reader.error_at(
+                at(properties, name),
+                format!("{type_name}: {name} must be finite and not negative, found {value}"),
+            ));
+        }
     }
+    Ok(Material::Conductor(Conductor {
+        eta,
+        k,
+        specular_reflectance,
+        two_sided: false,
+        roughness,
+    }))
+}
+
+/// A `plastic` (`roughness` `None`) or `roughplastic` with Mitsuba 3's defaults: a base of
+/// albedo 0.5 under a coat of polypropylene (1.49) in air, `specular_reflectance` 1,
+/// `nonlinear` false.
+fn plastic(
+    reader: &Reader,
+    properties: &mut Properties,
+    roughness: Option<Microfacet>,
+) -> Result<Material, SceneError> {
+    Ok(Material::Plastic(Plastic {
+        diffuse_reflectance: properties
+            .rgb(reader, "diffuse_reflectance")?
+            .unwrap_or(Vec3::splat(0.5)),
+        specular_reflectance: properties
+            .rgb(reader, "specular_reflectance")?
+            .unwrap_or(Vec3::ONE),
+        int_ior: ior(reader, properties, "int_ior", POLYPROPYLENE_IOR)?,
+        ext_ior: ior(reader, properties, "ext_ior", AIR_IOR)?,
+        nonlinear: properties.boolean(reader, "nonlinear")?.unwrap_or(false),
+        two_sided: false,
+        roughness,
+    }))
 }
 
 /// The `distribution` and `alpha` of a rough BSDF.

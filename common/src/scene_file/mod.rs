@@ -20,9 +20,10 @@
 //!   sampler of any type.
 //! - `shape`: `sphere`, `rectangle`, `disk`, `cube`, `obj`, each with a `bsdf` (inline or
 //!   `<ref>`), an optional `area` emitter and `flip_normals`.
-//! - `bsdf`: `diffuse`, `conductor` (`material="none"`), `dielectric`, `twosided`,
-//!   `roughconductor` and `roughdielectric` (rendered as `cos^n` lobes of about the same width),
-//!   and the workbook's `phong` (Mitsuba 0.6's name and exponent; the lobe is chapter 06's
+//! - `bsdf`: `diffuse`, `conductor` (a named `material` of Mitsuba's list, or `eta` and `k`),
+//!   `dielectric` and `thindielectric` (indices of refraction by number or by name), `plastic`,
+//!   `twosided`, `roughconductor`, `roughplastic` and `roughdielectric` (rendered as `cos^n`
+//!   lobes of about the same width), and the workbook's `phong` (Mitsuba 0.6's name and exponent; the lobe is chapter 06's
 //!   normalised `cos^n` density, not 0.6's `(n + 2) / 2π` normalisation).
 //! - `emitter`: `area` (in a shape), `point`, `constant`.
 //! - `transform`: `lookat`, `translate`, `rotate`, `scale`, `matrix`.
@@ -41,6 +42,7 @@ mod error;
 mod integrator;
 mod lights;
 mod materials;
+mod metals;
 mod obj;
 mod properties;
 mod reader;
@@ -65,6 +67,7 @@ pub use description::{
 };
 pub use error::{SceneError, SceneWarning, TextPosition};
 pub use materials::{named_ior, named_ior_names};
+pub use metals::{named_metal, named_metal_names};
 pub use obj::{load_obj, parse_obj};
 pub use spectrum::{
     LinearSrgb, MAX_VALUE, MAX_WAVELENGTH, SampledSpectrum, Spectrum, SpectrumRole, parse_spd,

@@ -9,9 +9,9 @@ use ch01_whitted::optics::{reflect, refract};
 use ch06_fuzzy_reflections::FuzzMethod;
 use ch06_fuzzy_reflections::tracer::transmission_exponent;
 use ch08_path_tracing::bsdf::dielectric::side;
-use common::scene::Glossy;
 use common::scene::Material as Smooth;
 use common::scene::Material;
+use common::scene::{Glossy, Microfacet, MicrofacetDistribution, Plastic};
 use glam::Vec3;
 
 /// Matte cases.
@@ -22,8 +22,10 @@ pub const GLOSSY: usize = 5;
 pub const DISC: usize = 2;
 /// Frosted glass cases.
 pub const ROUGH_GLASS: usize = 5;
+/// Rough plastic cases (the coat's stand-in lobe over the matte base).
+pub const ROUGH_PLASTIC: usize = 2;
 /// Every chi-square test of the file, for Šidák's correction.
-pub const TESTS: usize = DIFFUSE + GLOSSY + DISC + ROUGH_GLASS;
+pub const TESTS: usize = DIFFUSE + GLOSSY + DISC + ROUGH_GLASS + ROUGH_PLASTIC;
 
 /// The unit direction at `degrees` from the normal +y, above the floor or below it.
 fn at(degrees: f32, above: bool) -> Vec3 {
@@ -161,5 +163,42 @@ pub fn rough_glass() -> [Case; ROUGH_GLASS] {
         glass_case(10.0, at(45.0, true), "from outside, 45°"),
         glass_case(1000.0, at(20.0, false), "from inside, 20°"),
         glass_case(10.0, at(60.0, false), "from inside, 60° (total reflection)"),
+    ]
+}
+
+/// Rough plastic of coat roughness `alpha` seen from `wo`: the base's cosine lobe and, around
+/// the mirror direction, the `cos^n` lobe standing in for the rough coat.
+fn plastic_case(alpha: f32, two_sided: bool, chart: f32, wo: Vec3, name: &str) -> Case {
+    let roughness = Microfacet {
+        distribution: MicrofacetDistribution::Beckmann,
+        alpha,
+    };
+    let material = Material::Plastic(Plastic {
+        diffuse_reflectance: Vec3::new(0.2, 0.5, 0.8),
+        specular_reflectance: Vec3::ONE,
+        int_ior: 1.49,
+        ext_ior: 1.0,
+        nonlinear: false,
+        two_sided,
+        roughness: Some(roughness),
+    });
+    // One strip (a chart's lobes lie on different sides): around the mirror direction, as for
+    // a lobe of exponent `chart`, wider than the coat's, so that the base's cosine lobe
+    // spreads over the strip too.
+    let normal = facing(wo);
+    let lobes = vec![Lobe {
+        axis: reflect(-wo, normal),
+        side: normal,
+        exponent: chart,
+    }];
+    let name = format!("roughplastic alpha = {alpha}, {name}");
+    case(name, material, FuzzMethod::Lobe, wo, lobes)
+}
+
+/// Near grazing, where the coat reflects most, and from below a two-sided one.
+pub fn rough_plastic() -> [Case; ROUGH_PLASTIC] {
+    [
+        plastic_case(0.3, false, 5.0, at(75.0, true), "75°"),
+        plastic_case(0.1, true, 8.0, at(40.0, false), "two-sided from below, 40°"),
     ]
 }

@@ -83,3 +83,8 @@ fn the_disc_fuzz_delivers_its_density() {
 fn frosted_glass_reflects_and_transmits_with_its_density() {
     assert_all_deliver(&cases::rough_glass());
 }
+
+#[test]
+fn rough_plastic_samples_its_base_and_its_coat_with_their_density() {
+    assert_all_deliver(&cases::rough_plastic());
+}

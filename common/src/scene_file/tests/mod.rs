@@ -4,6 +4,7 @@ mod animation;
 mod broken_files;
 mod cornell;
 mod files_and_references;
+mod materials;
 mod model;
 mod never_panics;
 mod spectra;

@@ -60,7 +60,7 @@ fn still_shapes_come_first_then_moving_ones_each_piece_with_its_surface() {
 }
 
 #[test]
-fn rough_materials_become_lobes_that_remember_their_roughness() {
+fn rough_materials_keep_their_roughness_or_become_lobes_that_remember_it() {
     let rough = scene(&scene_with(
         r#"<shape type="sphere"><bsdf type="twosided"><bsdf type="roughconductor">
              <float name="alpha" value="0.1"/><string name="distribution" value="ggx"/>
@@ -69,10 +69,19 @@ fn rough_materials_become_lobes_that_remember_their_roughness() {
              <float name="alpha" value="0.05"/></bsdf></shape>"#,
     ))
     .unwrap();
-    let Material::Glossy(glossy) = rough.surfaces[0].material else {
+    let Material::Conductor(metal) = rough.surfaces[0].material else {
+        panic!("{:?}", rough.surfaces[0]);
+    };
+    // Mitsuba's material="none": eta 0, k 1, which reflects everything.
+    assert_eq!((metal.eta, metal.k), (Vec3::ZERO, Vec3::ONE));
+    assert!(metal.two_sided);
+    assert_eq!(metal.roughness.unwrap().alpha, 0.1);
+    // Chapters 06 and 07 render chapter 06's lobe in its place.
+    let Some((Material::Glossy(glossy), _)) = rough.surfaces[0].material.lecture_stand_in() else {
         panic!("{:?}", rough.surfaces[0]);
     };
     assert!(glossy.two_sided);
+    assert_eq!(glossy.reflectance, Vec3::ONE);
     approx::assert_relative_eq!(glossy.exponent, 198.0, max_relative = 1e-4);
     let microfacet = glossy.stands_in_for.unwrap();
     assert_eq!(microfacet.distribution, MicrofacetDistribution::Ggx);
@@ -83,12 +92,12 @@ fn rough_materials_become_lobes_that_remember_their_roughness() {
 fn what_no_chapter_renders_is_refused_where_it_is_written() {
     for (body, expected) in [
         (
-            r#"<shape type="sphere"><bsdf type="plastic"/></shape>"#,
-            "test.xml:2:22: the bsdf type \"plastic\" is not one the workbook renders",
+            r#"<shape type="sphere"><bsdf type="measured"/></shape>"#,
+            "test.xml:2:22: the bsdf type \"measured\" is not one the workbook renders",
         ),
         (
-            r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Au"/></bsdf></shape>"#,
-            "perfect mirror",
+            r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Unobtainium"/></bsdf></shape>"#,
+            "unknown material \"Unobtainium\"",
         ),
         (
             r#"<shape type="sphere"><bsdf type="roughconductor"><float name="alpha" value="-0.1"/></bsdf></shape>"#,

@@ -210,7 +210,11 @@ fn reference<W: World>(
                 reference(world, next, depth + 1, slip, counters)
             })
         }
-        Material::Glossy(_) | Material::RoughGlass(_) => Vec3::ZERO,
+        Material::Glossy(_)
+        | Material::RoughGlass(_)
+        | Material::Conductor(_)
+        | Material::ThinDielectric { .. }
+        | Material::Plastic(_) => Vec3::ZERO,
     }
 }
 
