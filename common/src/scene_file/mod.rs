@@ -39,8 +39,10 @@ mod integrator;
 mod lights;
 mod materials;
 mod obj;
+mod ply;
 mod properties;
 mod reader;
+mod serialized;
 mod shapes;
 mod to_geometry;
 mod to_scene;
@@ -62,6 +64,8 @@ pub use description::{
 pub use error::{SceneError, SceneWarning, TextPosition};
 pub use materials::{named_ior, named_ior_names};
 pub use obj::{load_obj, parse_obj};
+pub use ply::{load_ply, parse_ply};
+pub use serialized::{load_serialized, parse_serialized};
 pub use to_geometry::world_shapes;
 
 /// A scene read from a file, with what the loader ignored.

@@ -47,12 +47,47 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
                 face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
             }
         }
+        "ply" => {
+            let filename = properties.string(reader, "filename")?.ok_or_else(|| {
+                reader.error(
+                    node,
+                    "a ply shape needs <string name=\"filename\" value=\"mesh.ply\"/>",
+                )
+            })?;
+            let directory = reader.file.parent().unwrap_or(reader.file);
+            ShapeGeometry::Ply {
+                filename: directory.join(filename),
+                face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
+            }
+        }
+        "serialized" => {
+            let filename = properties.string(reader, "filename")?.ok_or_else(|| {
+                reader.error(
+                    node,
+                    "a serialized shape needs <string name=\"filename\" \
+                     value=\"mesh.serialized\"/>",
+                )
+            })?;
+            let shape_index = properties.integer(reader, "shape_index")?.unwrap_or(0);
+            let shape_index = u32::try_from(shape_index).map_err(|_| {
+                reader.error(
+                    node,
+                    format!("shape_index {shape_index} must be a non-negative integer"),
+                )
+            })?;
+            let directory = reader.file.parent().unwrap_or(reader.file);
+            ShapeGeometry::Serialized {
+                filename: directory.join(filename),
+                shape_index,
+                face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
+            }
+        }
         _ => {
             return Err(reader.error(
                 node,
                 format!(
-                    "unknown shape type \"{type_name}\": expected sphere, rectangle, disk, cube \
-                     or obj"
+                    "unknown shape type \"{type_name}\": expected sphere, rectangle, disk, cube, \
+                     obj, ply or serialized"
                 ),
             ));
         }

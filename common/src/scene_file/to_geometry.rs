@@ -6,11 +6,11 @@
 //! the inverse transpose, which is what keeps them perpendicular under non-uniform scaling.
 
 use super::{ShapeDescription, ShapeGeometry};
-use crate::geometry::{Disc, Parallelogram, Shape, Sphere};
+use crate::geometry::{Disc, Parallelogram, Shape, Sphere, TriangleMesh};
 use glam::{Mat4, Vec3};
 
 /// The world-space shapes of one description: one for a sphere, rectangle or disc, six
-/// parallelograms for a cube, one triangle per face of an OBJ mesh. Any linear map makes a
+/// parallelograms for a cube, one triangle per triangle of an OBJ, PLY or serialized mesh. Any linear map makes a
 /// rectangle a parallelogram and a disc an ellipse, as in Mitsuba; a sphere under a transform
 /// that does not keep it round, or a mesh that cannot be read, is refused with a message
 /// saying why.
@@ -71,37 +71,62 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
         ShapeGeometry::Obj {
             filename,
             face_normals,
+        } => Ok(placed_mesh(
+            super::load_obj(filename)?,
+            shape,
+            *face_normals,
+        )),
+        ShapeGeometry::Ply {
+            filename,
+            face_normals,
+        } => Ok(placed_mesh(
+            super::load_ply(filename)?,
+            shape,
+            *face_normals,
+        )),
+        ShapeGeometry::Serialized {
+            filename,
+            shape_index,
+            face_normals,
         } => {
-            let mut mesh = super::load_obj(filename)?;
-            mesh.positions = mesh
-                .positions
-                .iter()
-                .map(|&p| m.transform_point3(p))
-                .collect();
-            let normal_matrix = m.inverse().transpose();
-            if let Some(normals) = mesh.normals.as_mut() {
-                for n in normals {
-                    let world = normal_matrix.transform_vector3(*n).normalize_or_zero();
-                    *n = if shape.flip_normals { -world } else { world };
-                }
-            }
-            // The geometric normal follows the winding: keep it on the side the transformed
-            // (and possibly flipped) surface faces.
-            if (m.determinant() < 0.0) != shape.flip_normals {
-                for corners in &mut mesh.indices {
-                    corners.swap(1, 2);
-                }
-            }
-            if *face_normals {
-                mesh.normals = None;
-            } else if mesh.normals.is_none() {
-                // In world space, as Mitsuba does: angle weights change under a non-uniform
-                // scale, so computing them before the transform would give other normals.
-                mesh.recompute_vertex_normals();
-            }
-            Ok(mesh.triangles().map(Shape::Triangle).collect())
+            let mesh = super::load_serialized(filename, *shape_index)?;
+            Ok(placed_mesh(mesh, shape, *face_normals))
         }
     }
+}
+
+/// The triangles of a mesh file's `mesh` placed by the shape's `to_world`, with Mitsuba's
+/// treatment of normals: the file's normals transformed (and flipped with `flip_normals`),
+/// none with `face_normals`, and smooth ones computed in world space when the file has none.
+fn placed_mesh(mut mesh: TriangleMesh, shape: &ShapeDescription, face_normals: bool) -> Vec<Shape> {
+    let m = shape.to_world;
+    mesh.positions = mesh
+        .positions
+        .iter()
+        .map(|&p| m.transform_point3(p))
+        .collect();
+    let normal_matrix = m.inverse().transpose();
+    if let Some(normals) = mesh.normals.as_mut() {
+        for n in normals {
+            let world = normal_matrix.transform_vector3(*n).normalize_or_zero();
+            *n = if shape.flip_normals { -world } else { world };
+        }
+    }
+    // The geometric normal follows the winding: keep it on the side the transformed (and
+    // possibly flipped) surface faces.
+    if (m.determinant() < 0.0) != shape.flip_normals {
+        for corners in &mut mesh.indices {
+            corners.swap(1, 2);
+        }
+    }
+    if face_normals {
+        mesh.normals = None;
+    } else if mesh.normals.is_none() {
+        // In world space, as Mitsuba does: angle weights change under a non-uniform scale, so
+        // computing them before the transform would give other normals.
+        mesh.recompute_vertex_normals();
+    }
+    mesh.triangles().map(Shape::Triangle).collect()
 }
 
 /// The rectangle `[-1, 1]^2` (normal +z) placed by `to_world * face` as a parallelogram whose
