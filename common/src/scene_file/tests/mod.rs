@@ -3,6 +3,8 @@
 mod animation;
 mod broken_files;
 mod cornell;
+mod mesh_files;
+mod mesh_writers;
 mod model;
 mod never_panics;
 mod transforms;
