@@ -5,12 +5,12 @@ use glam::{Vec2, Vec3};
 use proptest::collection::vec;
 use proptest::prelude::*;
 
-use super::mesh_writers::{
+use crate::geometry::TriangleMesh;
+use crate::scene_file::{parse_ply, parse_serialized};
+use crate::test_support::mesh_files::{
     PlyEncoding, PlyStyle, SerializedStyle, serialized_file, serialized_payload, write_ply,
     write_serialized,
 };
-use crate::geometry::TriangleMesh;
-use crate::scene_file::{parse_ply, parse_serialized};
 
 /// Cases per property: `SCENE_FUZZ_CASES`, or 256 (as for the scene file's properties).
 fn cases() -> u32 {

@@ -4,7 +4,7 @@ mod animation;
 mod broken_files;
 mod cornell;
 mod mesh_files;
-mod mesh_writers;
+mod mesh_scenes;
 mod model;
 mod never_panics;
 mod transforms;

@@ -1,5 +1,5 @@
-//! Writers of PLY and `.serialized` meshes, for the tests only: the readers are checked against
-//! files these write from known meshes.
+//! Writers of PLY and `.serialized` meshes, for tests: the readers are checked against files
+//! these write from known meshes, and chapters' tests render scenes that use them.
 
 use std::io::Write;
 
@@ -11,14 +11,18 @@ use crate::geometry::TriangleMesh;
 /// How a PLY file stores its records.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PlyEncoding {
+    /// Numbers as text, a record per line.
     Ascii,
+    /// `binary_little_endian`.
     LittleEndian,
+    /// `binary_big_endian`.
     BigEndian,
 }
 
 /// The choices a PLY writer has beyond the mesh itself.
 #[derive(Clone, Debug)]
 pub struct PlyStyle {
+    /// How records are stored.
     pub encoding: PlyEncoding,
     /// The names of the texture coordinates: `("u", "v")`, `("s", "t")`, ...
     pub uv_names: (&'static str, &'static str),
@@ -33,6 +37,7 @@ pub struct PlyStyle {
 }
 
 impl PlyStyle {
+    /// `float` positions, `u`/`v`, `vertex_indices` as `uchar` and `int`, nothing extra.
     pub fn plain(encoding: PlyEncoding) -> Self {
         Self {
             encoding,
@@ -204,6 +209,7 @@ fn binary(value: &Value, big: bool) -> Vec<u8> {
 pub struct SerializedStyle {
     /// 3 or 4.
     pub version: u16,
+    /// Numbers as `f64` rather than `f32`.
     pub double_precision: bool,
     /// Vertex colours the reader must skip.
     pub colours: bool,
