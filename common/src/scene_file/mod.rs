@@ -18,8 +18,9 @@
 //! - `integrator`: `path` (`max_depth`, `rr_depth`), `direct`.
 //! - `sensor`: `perspective`, `thinlens`, with `to_world`, an `hdrfilm` (with `rfilter`) and a
 //!   sampler of any type.
-//! - `shape`: `sphere`, `rectangle`, `disk`, `cube`, `obj`, each with a `bsdf` (inline or
-//!   `<ref>`), an optional `area` emitter and `flip_normals`.
+//! - `shape`: `sphere`, `rectangle`, `disk`, `cube`, and meshes from `obj`, `ply` and
+//!   `serialized` files, each with a `bsdf` (inline or `<ref>`), an optional `area` emitter and
+//!   `flip_normals`.
 //! - `bsdf`: `diffuse`, `conductor` (`material="none"`), `dielectric`, `twosided`,
 //!   `roughconductor` and `roughdielectric` (rendered as `cos^n` lobes of about the same width),
 //!   and the workbook's `phong` (Mitsuba 0.6's name and exponent; the lobe is chapter 06's
