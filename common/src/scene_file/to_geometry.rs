@@ -112,9 +112,11 @@ fn placed_mesh(mut mesh: TriangleMesh, shape: &ShapeDescription, face_normals: b
             *n = if shape.flip_normals { -world } else { world };
         }
     }
-    // The geometric normal follows the winding: keep it on the side the transformed (and
-    // possibly flipped) surface faces.
-    if (m.determinant() < 0.0) != shape.flip_normals {
+    // A mesh's geometric normal is its world-space winding's, `(p1 - p0) × (p2 - p0)`, as in
+    // Mitsuba 3 (checked against 3.9.1): so a mirroring `to_world` turns it over, unlike a
+    // rectangle's or a disc's, which are transformed normals. `flip_normals` turns it over
+    // once more, by reversing the winding.
+    if shape.flip_normals {
         for corners in &mut mesh.indices {
             corners.swap(1, 2);
         }
@@ -126,7 +128,20 @@ fn placed_mesh(mut mesh: TriangleMesh, shape: &ShapeDescription, face_normals: b
         // computing them before the transform would give other normals.
         mesh.recompute_vertex_normals();
     }
-    mesh.triangles().map(Shape::Triangle).collect()
+    // Reversing the winding swaps a triangle's barycentrics b1 and b2; a mesh without texture
+    // coordinates takes its uv from them, which Mitsuba's flipped mesh does not swap. These
+    // corner uvs swap them back.
+    let barycentric_uvs = (shape.flip_normals && mesh.uvs.is_none()).then_some([
+        glam::Vec2::ZERO,
+        glam::Vec2::Y,
+        glam::Vec2::X,
+    ]);
+    mesh.triangles()
+        .map(|t| match barycentric_uvs {
+            Some(uvs) => Shape::Triangle(t.with_uvs(uvs)),
+            None => Shape::Triangle(t),
+        })
+        .collect()
 }
 
 /// The rectangle `[-1, 1]^2` (normal +z) placed by `to_world * face` as a parallelogram whose
@@ -253,7 +268,9 @@ mod tests {
             filename: path,
             face_normals: true,
         };
-        // Mirrored in x and lifted by 2: still two triangles facing +z, now at z = 2.
+        // Mirrored in x and lifted by 2: two triangles at z = 2, now wound clockwise seen from
+        // +z, so facing -z, as in Mitsuba 3 (3.9.1 gives a mirrored OBJ or PLY triangle the
+        // normal -z, and +z with flip_normals).
         let m = Mat4::from_translation(2.0 * Vec3::Z) * Mat4::from_scale(Vec3::new(-3.0, 3.0, 3.0));
         let shapes = world_shapes(&description(obj.clone(), m)).unwrap();
         assert_eq!(shapes.len(), 2);
@@ -263,13 +280,13 @@ mod tests {
             .find_map(|s| s.intersect(&ray))
             .expect("the square is hit");
         assert!(
-            (hit.p.z - 2.0).abs() < 1e-6 && (hit.n - Vec3::Z).length() < 1e-5,
+            (hit.p.z - 2.0).abs() < 1e-6 && (hit.n + Vec3::Z).length() < 1e-5,
             "{hit:?}"
         );
         let mut flipped = description(obj, m);
         flipped.flip_normals = true;
         let n = hit_normal(&world_shapes(&flipped).unwrap(), ray).unwrap();
-        assert!((n + Vec3::Z).length() < 1e-5, "{n}");
+        assert!((n - Vec3::Z).length() < 1e-5, "{n}");
         let missing = ShapeGeometry::Obj {
             filename: "missing.obj".into(),
             face_normals: false,

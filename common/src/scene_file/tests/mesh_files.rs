@@ -344,7 +344,16 @@ fn mitsubas_own_meshes_load_when_present() {
         let path = entry.unwrap().path();
         let mesh = match path.extension().and_then(|e| e.to_str()) {
             Some("ply") => crate::scene_file::load_ply(&path),
-            Some("serialized") => crate::scene_file::load_serialized(&path, 0),
+            Some("serialized") => {
+                // Every mesh of the file, up to the first index out of range.
+                let mut index = 1;
+                while let Ok(mesh) = crate::scene_file::load_serialized(&path, index) {
+                    mesh.validate().unwrap();
+                    index += 1;
+                }
+                eprintln!("{}: {index} meshes", path.display());
+                crate::scene_file::load_serialized(&path, 0)
+            }
             _ => continue,
         };
         let mesh = mesh.unwrap_or_else(|e| panic!("{e}"));

@@ -122,12 +122,15 @@ fn ply_and_serialized_meshes_are_placed_with_their_normals_and_texture_coordinat
     let hit = hit_below(&scene, 4.25, 0.5);
     assert!((hit.uv - Vec2::new(0.25, 0.25)).length() < 1e-6, "{hit:?}");
     assert!(close(hit.shading_n, Vec3::Z), "{hit:?}");
-    // The same file flipped: both normals turn over.
+    // The same file flipped: both normals turn over, and the barycentric uv is the same as
+    // unflipped, as in Mitsuba: (0.25, 0.5) at (0.25, 0.75), not (0.5, 0.25).
     let hit = hit_below(&scene, 6.25, 0.5);
     assert!(
         close(hit.n, -Vec3::Z) && close(hit.shading_n, -tilted),
         "{hit:?}"
     );
+    let hit = hit_below(&scene, 6.25, 0.75);
+    assert!((hit.uv - Vec2::new(0.25, 0.5)).length() < 1e-6, "{hit:?}");
     // The second mesh of the serialized file, then the first (no normals, no uvs).
     let hit = hit_below(&scene, 0.25, 2.5);
     assert!((hit.uv - Vec2::new(0.25, 0.5)).length() < 1e-6, "{hit:?}");
