@@ -190,6 +190,18 @@ fn broken_and_hostile_ply_files_are_refused_with_the_reason() {
 }
 
 #[test]
+fn ascii_ply_files_from_other_tools_are_read() {
+    // Windows line ends, `obj_info`, comments, runs of spaces and trailing blanks.
+    let text = "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\nobj_info tool 1\r\n\
+                element vertex 3\r\nproperty float x\r\nproperty float y\r\n\
+                property float z\r\nelement face 1\r\nproperty list uchar int vertex_index\r\n\
+                end_header\r\n0  0 0 \r\n1 0   0\r\n0 1 0\r\n3 0 1 2 \r\n";
+    let mesh = parse_ply(text.as_bytes()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(mesh.positions, vec![Vec3::ZERO, Vec3::X, Vec3::Y]);
+    assert_eq!(mesh.indices, vec![[0, 1, 2]]);
+}
+
+#[test]
 fn a_binary_element_without_properties_costs_nothing_however_many_it_claims() {
     let mut bytes = b"ply\nformat binary_little_endian 1.0\nelement nothing 18446744073709551615\n\
                       element vertex 3\nproperty float x\nproperty float y\nproperty float z\n\
