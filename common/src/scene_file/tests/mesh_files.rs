@@ -382,6 +382,82 @@ fn mitsubas_own_meshes_load_when_present() {
     assert!(loaded > 0);
 }
 
+/// Our readers against Mitsuba 3's own, when `MITSUBA_MESH_DUMPS` names a directory of JSON
+/// files, each what Mitsuba loaded from one mesh file (`file`, `kind`, `shape_index`, and its
+/// `positions`, `faces`, `normals` and `uvs` as flat arrays, as `mi.traverse` gives them); nothing
+/// otherwise. The positions, triangles and texture coordinates must be the same `f32`s, and
+/// normals the same directions where the file has them (Mitsuba computes them where it has
+/// none). `mitsuba_mesh_dump.py` beside this file writes the dumps.
+#[test]
+fn mitsuba_reads_the_same_meshes_when_its_dumps_are_present() {
+    let Some(directory) = std::env::var_os("MITSUBA_MESH_DUMPS") else {
+        return;
+    };
+    let mut compared = 0;
+    for entry in std::fs::read_dir(directory).unwrap() {
+        let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
+        let dump: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let numbers = |key: &str| -> Vec<f64> {
+            dump[key]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect()
+        };
+        let path = std::path::Path::new(dump["file"].as_str().unwrap());
+        let mesh = match dump["kind"].as_str().unwrap() {
+            "ply" => crate::scene_file::load_ply(path),
+            _ => crate::scene_file::load_serialized(
+                path,
+                dump["shape_index"].as_u64().unwrap() as u32,
+            ),
+        }
+        .unwrap();
+        let label = format!("{} {}", path.display(), dump["shape_index"]);
+        let same = |ours: &[f64], theirs: &[f64], what: &str| {
+            assert_eq!(ours.len(), theirs.len(), "{label}: how many {what}");
+            // As `f32`s: Mitsuba's Python binding hands out some values as doubles a
+            // fraction of an `f32` step away from the `f32` it holds.
+            if let Some(i) = (0..ours.len()).find(|&i| ours[i] as f32 != theirs[i] as f32) {
+                panic!(
+                    "{label}: {what}[{i}] is {} here and {} in Mitsuba",
+                    ours[i], theirs[i]
+                );
+            }
+        };
+        let flat3 = |v: &[Vec3]| -> Vec<f64> {
+            v.iter().flat_map(|p| p.to_array().map(f64::from)).collect()
+        };
+        same(&flat3(&mesh.positions), &numbers("positions"), "positions");
+        let faces: Vec<f64> = mesh.indices.iter().flat_map(|t| t.map(f64::from)).collect();
+        same(&faces, &numbers("faces"), "faces");
+        let uvs: Vec<f64> = mesh
+            .uvs
+            .iter()
+            .flatten()
+            .flat_map(|t| t.to_array().map(f64::from))
+            .collect();
+        same(&uvs, &numbers("uvs"), "uvs");
+        if let Some(normals) = &mesh.normals {
+            let theirs = numbers("normals");
+            // Mitsuba keeps them unit length; here placing the mesh normalises them.
+            let unit: Vec<Vec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
+            let ours = flat3(&unit);
+            assert_eq!(ours.len(), theirs.len(), "{label}");
+            let worst = ours
+                .iter()
+                .zip(&theirs)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max);
+            assert!(worst < 1e-6, "{label}: normals differ by {worst}");
+        }
+        eprintln!("{label}: the same as Mitsuba's");
+        compared += 1;
+    }
+    assert!(compared > 0);
+}
+
 fn finite() -> impl Strategy<Value = f32> {
     any::<f32>().prop_filter("finite", |x| x.is_finite())
 }
