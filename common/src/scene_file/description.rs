@@ -186,6 +186,9 @@ pub enum ShapeGeometry {
         filename: PathBuf,
         /// Mitsuba's `face_normals`, as for [`Obj`](Self::Obj).
         face_normals: bool,
+        /// Mitsuba's `flip_tex_coords` (off for PLY): store each texture coordinate `(u, v)`
+        /// as `(u, 1 - v)`.
+        flip_tex_coords: bool,
     },
     /// A mesh of a Mitsuba `.serialized` file, not loaded yet.
     Serialized {

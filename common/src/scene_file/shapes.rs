@@ -58,6 +58,9 @@ pub(super) fn read_shape(reader: &mut Reader, node: Node) -> Result<ShapeDescrip
             ShapeGeometry::Ply {
                 filename: directory.join(filename),
                 face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
+                flip_tex_coords: properties
+                    .boolean(reader, "flip_tex_coords")?
+                    .unwrap_or(false),
             }
         }
         "serialized" => {

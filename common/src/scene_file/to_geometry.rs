@@ -79,11 +79,16 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
         ShapeGeometry::Ply {
             filename,
             face_normals,
-        } => Ok(placed_mesh(
-            super::load_ply(filename)?,
-            shape,
-            *face_normals,
-        )),
+            flip_tex_coords,
+        } => {
+            let mut mesh = super::load_ply(filename)?;
+            if *flip_tex_coords {
+                for uv in mesh.uvs.iter_mut().flatten() {
+                    uv.y = 1.0 - uv.y;
+                }
+            }
+            Ok(placed_mesh(mesh, shape, *face_normals))
+        }
         ShapeGeometry::Serialized {
             filename,
             shape_index,

@@ -74,6 +74,13 @@ fn ply_and_serialized_meshes_are_placed_with_their_normals_and_texture_coordinat
         mesh_shape("ply", "little.ply", 2.0, 0.0, ""),
         mesh_shape(
             "ply",
+            "little.ply",
+            2.0,
+            4.0,
+            r#"<boolean name="flip_tex_coords" value="true"/>"#,
+        ),
+        mesh_shape(
+            "ply",
             "big.ply",
             4.0,
             0.0,
@@ -99,7 +106,7 @@ fn ply_and_serialized_meshes_are_placed_with_their_normals_and_texture_coordinat
     let scene = parse_scene(&text, &dir.path().join("scene.xml"), &[])
         .unwrap_or_else(|e| panic!("{e}"))
         .scene;
-    assert_eq!(scene.geometry.shapes().len(), 12);
+    assert_eq!(scene.geometry.shapes().len(), 14);
     let tilted = Vec3::new(0.0, 0.6, 0.8);
     let close = |a: Vec3, b: Vec3| (a - b).length() < 1e-5;
 
@@ -116,6 +123,9 @@ fn ply_and_serialized_meshes_are_placed_with_their_normals_and_texture_coordinat
     let hit = hit_below(&scene, 2.25, 0.5);
     assert!((hit.uv - Vec2::new(0.25, 0.5)).length() < 1e-6, "{hit:?}");
     assert!(close(hit.shading_n, Vec3::Z), "{hit:?}");
+    // The same with flip_tex_coords: v becomes 1 - v.
+    let hit = hit_below(&scene, 2.25, 4.75);
+    assert!((hit.uv - Vec2::new(0.25, 0.25)).length() < 1e-6, "{hit:?}");
     // Binary big-endian, normals but no texture coordinates: uv is the barycentric (b1, b2)
     // of the triangle (0, 0), (1, 1), (0, 1) at (0.25, 0.5), which is (0.25, 0.25).
     // `face_normals` drops the file's normals.
