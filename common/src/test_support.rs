@@ -9,6 +9,8 @@ use std::process::{Command, Output};
 
 use crate::image::Image;
 
+pub mod mesh_files;
+
 /// Runs `binary` (a path such as `env!("CARGO_BIN_EXE_ch01-whitted")`) with `args`.
 pub fn run_binary(binary: &str, args: &[&str]) -> Output {
     Command::new(binary)

@@ -195,6 +195,25 @@ pub enum ShapeGeometry {
         /// Mitsuba does), so a faceted mesh looks faceted only with `face_normals` on.
         face_normals: bool,
     },
+    /// A PLY mesh (ASCII or binary), not loaded yet.
+    Ply {
+        /// The mesh file, resolved relative to the scene file's directory.
+        filename: PathBuf,
+        /// Mitsuba's `face_normals`, as for [`Obj`](Self::Obj).
+        face_normals: bool,
+        /// Mitsuba's `flip_tex_coords` (off for PLY): store each texture coordinate `(u, v)`
+        /// as `(u, 1 - v)`.
+        flip_tex_coords: bool,
+    },
+    /// A mesh of a Mitsuba `.serialized` file, not loaded yet.
+    Serialized {
+        /// The mesh file, resolved relative to the scene file's directory.
+        filename: PathBuf,
+        /// Which of the file's meshes (Mitsuba's `shape_index`, 0 for the first).
+        shape_index: u32,
+        /// Mitsuba's `face_normals`, as for [`Obj`](Self::Obj).
+        face_normals: bool,
+    },
 }
 
 /// A light that is not a shape.

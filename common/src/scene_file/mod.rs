@@ -18,8 +18,9 @@
 //! - `integrator`: `path` (`max_depth`, `rr_depth`), `direct`.
 //! - `sensor`: `perspective`, `thinlens`, with `to_world`, an `hdrfilm` (with `rfilter`) and a
 //!   sampler of any type.
-//! - `shape`: `sphere`, `rectangle`, `disk`, `cube`, `obj`, each with a `bsdf` (inline or
-//!   `<ref>`), an optional `area` emitter and `flip_normals`.
+//! - `shape`: `sphere`, `rectangle`, `disk`, `cube`, and meshes from `obj`, `ply` and
+//!   `serialized` files, each with a `bsdf` (inline or `<ref>`), an optional `area` emitter and
+//!   `flip_normals`.
 //! - `bsdf`: `diffuse`, `conductor` (a named `material` of Mitsuba's list, or `eta` and `k`),
 //!   `dielectric` and `thindielectric` (indices of refraction by number or by name), `plastic`,
 //!   `twosided`, `roughconductor`, `roughplastic` and `roughdielectric` (rendered as `cos^n`
@@ -44,8 +45,10 @@ mod lights;
 mod materials;
 mod metals;
 mod obj;
+mod ply;
 mod properties;
 mod reader;
+mod serialized;
 mod shapes;
 mod spectrum;
 mod to_geometry;
@@ -69,6 +72,8 @@ pub use error::{SceneError, SceneWarning, TextPosition};
 pub use materials::{named_ior, named_ior_names};
 pub use metals::{named_metal, named_metal_names};
 pub use obj::{load_obj, parse_obj};
+pub use ply::{load_ply, parse_ply};
+pub use serialized::{load_serialized, parse_serialized};
 pub use spectrum::{
     LinearSrgb, MAX_VALUE, MAX_WAVELENGTH, SampledSpectrum, Spectrum, SpectrumRole, parse_spd,
     parse_spectrum, read_spd_file,

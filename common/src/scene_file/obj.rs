@@ -1,12 +1,18 @@
-//! Wavefront OBJ meshes: the positions, normals and faces of a triangle mesh.
+//! Wavefront OBJ meshes: the positions, normals, texture coordinates and faces of a triangle
+//! mesh.
 //!
-//! Only what a renderer of this workbook needs is read: `v x y z`, `vn x y z` and faces `f`
-//! whose corners are `v`, `v/vt`, `v//vn` or `v/vt/vn` (1-based, or negative to count back
-//! from the last vertex read). A polygon with more than three corners is split into a fan of
-//! triangles. Texture coordinates, groups, materials and smoothing groups are skipped.
+//! Only what a renderer of this workbook needs is read: `v x y z`, `vn x y z`, `vt u v` and
+//! faces `f` whose corners are `v`, `v/vt`, `v//vn` or `v/vt/vn` (1-based, or negative to count
+//! back from the last one read). A polygon with more than three corners is split into a fan of
+//! triangles. Groups, materials and smoothing groups are skipped.
+//!
+//! Texture coordinates follow Mitsuba 3's `obj` plugin (its default `flip_tex_coords`): `v` is
+//! stored as `1 - v`, since most OBJ files put `v = 0` at the bottom of the image and Mitsuba's
+//! textures put it at the top. The mesh has texture coordinates if any corner names one; a
+//! corner without one gets `(0, 0)`, as in Mitsuba.
 
 use crate::geometry::TriangleMesh;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -17,16 +23,27 @@ pub fn load_obj(path: &Path) -> Result<TriangleMesh, String> {
     parse_obj(&text).map_err(|e| format!("{}:{e}", path.display()))
 }
 
+/// The position, texture coordinate and normal a face corner names, 0-based.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct Corner {
+    position: usize,
+    uv: Option<usize>,
+    normal: Option<usize>,
+}
+
 /// Parses OBJ text. An error starts with its line number.
 pub fn parse_obj(text: &str) -> Result<TriangleMesh, String> {
     let mut positions = Vec::new();
     let mut normals = Vec::new();
-    // Corners that share a position and a normal share a vertex of the mesh.
-    let mut vertex_of: HashMap<(usize, Option<usize>), u32> = HashMap::new();
+    let mut uvs = Vec::new();
+    // Corners that name the same position, texture coordinate and normal share a vertex.
+    let mut vertex_of: HashMap<Corner, u32> = HashMap::new();
     let mut mesh_positions = Vec::new();
     let mut mesh_normals = Vec::new();
+    let mut mesh_uvs = Vec::new();
     let mut indices = Vec::new();
     let mut every_corner_has_a_normal = true;
+    let mut some_corner_has_a_uv = false;
     for (number, line) in text.lines().enumerate() {
         let line_number = number + 1;
         let error = |message: String| format!("{line_number}: {message}");
@@ -34,15 +51,22 @@ pub fn parse_obj(text: &str) -> Result<TriangleMesh, String> {
         match words.next() {
             Some("v") => positions.push(vector(words, "a vertex `v x y z`").map_err(error)?),
             Some("vn") => normals.push(vector(words, "a normal `vn x y z`").map_err(error)?),
+            Some("vt") => {
+                let [u, v] = numbers(&mut words, "a texture coordinate `vt u v`").map_err(error)?;
+                uvs.push(Vec2::new(u, 1.0 - v));
+            }
             Some("f") => {
                 let mut corners = Vec::new();
                 for word in words {
-                    let (p, n) = corner(word, positions.len(), normals.len()).map_err(error)?;
-                    every_corner_has_a_normal &= n.is_some();
+                    let counts = [positions.len(), uvs.len(), normals.len()];
+                    let corner = corner(word, counts).map_err(error)?;
+                    every_corner_has_a_normal &= corner.normal.is_some();
+                    some_corner_has_a_uv |= corner.uv.is_some();
                     let next = mesh_positions.len() as u32;
-                    let vertex = *vertex_of.entry((p, n)).or_insert_with(|| {
-                        mesh_positions.push(positions[p]);
-                        mesh_normals.push(n.map_or(Vec3::ZERO, |n| normals[n]));
+                    let vertex = *vertex_of.entry(corner).or_insert_with(|| {
+                        mesh_positions.push(positions[corner.position]);
+                        mesh_normals.push(corner.normal.map_or(Vec3::ZERO, |n| normals[n]));
+                        mesh_uvs.push(corner.uv.map_or(Vec2::ZERO, |t| uvs[t]));
                         next
                     });
                     corners.push(vertex);
@@ -57,45 +81,57 @@ pub fn parse_obj(text: &str) -> Result<TriangleMesh, String> {
                     indices.push([corners[0], corners[i], corners[i + 1]]);
                 }
             }
-            _ => {} // comments, texture coordinates, groups, materials: not needed here
+            _ => {} // comments, groups, materials: not needed here
         }
     }
     if indices.is_empty() {
         return Err("0: the mesh has no faces".to_string());
     }
-    let normals = (every_corner_has_a_normal).then_some(mesh_normals);
-    TriangleMesh::new(mesh_positions, normals, indices).map_err(|e| format!("0: {e}"))
+    let normals = every_corner_has_a_normal.then_some(mesh_normals);
+    let uvs = some_corner_has_a_uv.then_some(mesh_uvs);
+    TriangleMesh::new(mesh_positions, normals, indices)
+        .and_then(|mesh| mesh.with_uvs(uvs))
+        .map_err(|e| format!("0: {e}"))
 }
 
 fn vector<'a>(mut words: impl Iterator<Item = &'a str>, expected: &str) -> Result<Vec3, String> {
-    let mut next = || -> Result<f32, String> {
-        let word = words.next().ok_or_else(|| format!("expected {expected}"))?;
-        let value: f32 = word
-            .parse()
-            .map_err(|_| format!("`{word}` is not a number in {expected}"))?;
-        if value.is_finite() {
-            Ok(value)
-        } else {
-            Err(format!("`{word}` is not finite in {expected}"))
-        }
-    };
-    Ok(Vec3::new(next()?, next()?, next()?))
+    numbers(&mut words, expected).map(Vec3::from_array)
 }
 
-/// A face corner `v`, `v/vt`, `v//vn` or `v/vt/vn` as 0-based position and normal indices.
-fn corner(
-    word: &str,
-    position_count: usize,
-    normal_count: usize,
-) -> Result<(usize, Option<usize>), String> {
+/// The next `N` words as finite numbers; any further words are left.
+fn numbers<'a, const N: usize>(
+    words: &mut impl Iterator<Item = &'a str>,
+    expected: &str,
+) -> Result<[f32; N], String> {
+    let mut values = [0.0f32; N];
+    for value in &mut values {
+        let word = words.next().ok_or_else(|| format!("expected {expected}"))?;
+        *value = word
+            .parse()
+            .map_err(|_| format!("`{word}` is not a number in {expected}"))?;
+        if !value.is_finite() {
+            return Err(format!("`{word}` is not finite in {expected}"));
+        }
+    }
+    Ok(values)
+}
+
+/// A face corner `v`, `v/vt`, `v//vn` or `v/vt/vn`, given how many positions, texture
+/// coordinates and normals were read so far.
+fn corner(word: &str, [positions, uvs, normals]: [usize; 3]) -> Result<Corner, String> {
     let mut parts = word.split('/');
-    let position = index(parts.next().unwrap_or(""), position_count, "vertex", word)?;
-    let _texture = parts.next();
-    let normal = match parts.next() {
-        Some(n) if !n.is_empty() => Some(index(n, normal_count, "normal", word)?),
-        _ => None,
+    let position = index(parts.next().unwrap_or(""), positions, "vertex", word)?;
+    let mut optional = |count: usize, what: &str| match parts.next() {
+        Some(text) if !text.is_empty() => index(text, count, what, word).map(Some),
+        _ => Ok(None),
     };
-    Ok((position, normal))
+    let uv = optional(uvs, "texture coordinate")?;
+    let normal = optional(normals, "normal")?;
+    Ok(Corner {
+        position,
+        uv,
+        normal,
+    })
 }
 
 fn index(text: &str, count: usize, what: &str, corner: &str) -> Result<usize, String> {
@@ -130,10 +166,29 @@ mod tests {
 
     #[test]
     fn negative_indices_count_back_and_missing_normals_mean_flat_shading() {
-        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3/1 -2/2 -1/3\n";
+        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf -3/-3 -2/-2 -1/-1\n";
         let mesh = parse_obj(text).unwrap();
         assert_eq!(mesh.indices, vec![[0, 1, 2]]);
         assert!(mesh.normals.is_none());
+    }
+
+    #[test]
+    fn texture_coordinates_are_read_with_v_flipped_as_mitsuba_does() {
+        // A corner without `vt` gets (0, 0) once any corner has one.
+        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0.25 0.125\nvt 1 1 0\n\
+                    f 1/1 2/2 3/1\nf 2 4 3\n";
+        let mesh = parse_obj(text).unwrap();
+        let uvs = mesh.uvs.as_ref().expect("texture coordinates");
+        let uv_of = |position: Vec3| {
+            let vertex = mesh.positions.iter().position(|&p| p == position).unwrap();
+            uvs[vertex]
+        };
+        assert_eq!(uv_of(Vec3::ZERO), Vec2::new(0.25, 0.875));
+        assert_eq!(uv_of(Vec3::X), Vec2::new(1.0, 0.0));
+        assert_eq!(uv_of(Vec3::new(1.0, 1.0, 0.0)), Vec2::ZERO);
+        // Positions 2 and 3 appear with and without `vt`: two vertices each.
+        assert_eq!(mesh.positions.len(), 6);
+        assert!(parse_obj("v 0 0 0\nf 1 1 1\n").unwrap().uvs.is_none());
     }
 
     #[test]
@@ -153,6 +208,11 @@ mod tests {
             ("v 0 0 0\nf 0 1 1\n", "refers to vertex 0"),
             ("v 0 0 0\n", "no faces"),
             ("v nan 0 0\n", "not finite"),
+            ("vt 0\n", "1: expected a texture coordinate"),
+            (
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n",
+                "5: face corner `2/2` refers to texture coordinate 2",
+            ),
         ];
         for (text, expected) in cases {
             let error = parse_obj(text).unwrap_err();

@@ -1,6 +1,8 @@
 //! `<shape>`: geometry with its transform, material and optional area light.
 
 use super::element::Element;
+use std::path::PathBuf;
+
 use glam::{Mat4, Vec3};
 
 use super::description::{
@@ -39,15 +41,35 @@ pub(super) fn read_shape<'a>(
         "rectangle" => ShapeGeometry::Rectangle,
         "disk" => ShapeGeometry::Disc,
         "cube" => ShapeGeometry::Cube,
-        "obj" => {
-            let filename = properties.string(reader, "filename")?.ok_or_else(|| {
+        "obj" => ShapeGeometry::Obj {
+            filename: mesh_file(reader, &mut properties, node, "obj", "mesh.obj")?,
+            face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
+        },
+        "ply" => ShapeGeometry::Ply {
+            filename: mesh_file(reader, &mut properties, node, "ply", "mesh.ply")?,
+            face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
+            flip_tex_coords: properties
+                .boolean(reader, "flip_tex_coords")?
+                .unwrap_or(false),
+        },
+        "serialized" => {
+            let filename = mesh_file(
+                reader,
+                &mut properties,
+                node,
+                "serialized",
+                "mesh.serialized",
+            )?;
+            let shape_index = properties.integer(reader, "shape_index")?.unwrap_or(0);
+            let shape_index = u32::try_from(shape_index).map_err(|_| {
                 reader.error(
                     node,
-                    "an obj shape needs <string name=\"filename\" value=\"mesh.obj\"/>",
+                    format!("shape_index {shape_index} must be a non-negative integer"),
                 )
             })?;
-            ShapeGeometry::Obj {
-                filename: reader.resolve_file(node, &filename),
+            ShapeGeometry::Serialized {
+                filename,
+                shape_index,
                 face_normals: properties.boolean(reader, "face_normals")?.unwrap_or(false),
             }
         }
@@ -55,8 +77,8 @@ pub(super) fn read_shape<'a>(
             return Err(reader.error(
                 node,
                 format!(
-                    "unknown shape type \"{type_name}\": expected sphere, rectangle, disk, cube \
-                     or obj"
+                    "unknown shape type \"{type_name}\": expected sphere, rectangle, disk, cube, \
+                     obj, ply or serialized"
                 ),
             ));
         }
@@ -109,4 +131,24 @@ pub(super) fn read_shape<'a>(
         flip_normals,
         position: reader.position(node),
     })
+}
+
+/// The mesh file a shape's `filename` names, looked up as Mitsuba does (see
+/// [`Reader::resolve_file`]); `kind` and `example` name the shape and a file in the message
+/// when it is missing.
+fn mesh_file(
+    reader: &Reader,
+    properties: &mut Properties,
+    node: &Element,
+    kind: &str,
+    example: &str,
+) -> Result<PathBuf, SceneError> {
+    let article = if kind.starts_with('o') { "an" } else { "a" };
+    let filename = properties.string(reader, "filename")?.ok_or_else(|| {
+        reader.error(
+            node,
+            format!("{article} {kind} shape needs <string name=\"filename\" value=\"{example}\"/>"),
+        )
+    })?;
+    Ok(reader.resolve_file(node, &filename))
 }

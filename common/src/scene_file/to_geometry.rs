@@ -6,11 +6,11 @@
 //! the inverse transpose, which is what keeps them perpendicular under non-uniform scaling.
 
 use super::{ShapeDescription, ShapeGeometry};
-use crate::geometry::{Disc, Parallelogram, Shape, Sphere};
+use crate::geometry::{Disc, Parallelogram, Shape, Sphere, TriangleMesh};
 use glam::{Mat4, Vec3};
 
 /// The world-space shapes of one description: one for a sphere, rectangle or disc, six
-/// parallelograms for a cube, one triangle per face of an OBJ mesh. Any linear map makes a
+/// parallelograms for a cube, one triangle per triangle of an OBJ, PLY or serialized mesh. Any linear map makes a
 /// rectangle a parallelogram and a disc an ellipse, as in Mitsuba; a sphere under a transform
 /// that does not keep it round, or a mesh that cannot be read, is refused with a message
 /// saying why.
@@ -71,37 +71,82 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
         ShapeGeometry::Obj {
             filename,
             face_normals,
+        } => Ok(placed_mesh(
+            super::load_obj(filename)?,
+            shape,
+            *face_normals,
+        )),
+        ShapeGeometry::Ply {
+            filename,
+            face_normals,
+            flip_tex_coords,
         } => {
-            let mut mesh = super::load_obj(filename)?;
-            mesh.positions = mesh
-                .positions
-                .iter()
-                .map(|&p| m.transform_point3(p))
-                .collect();
-            let normal_matrix = m.inverse().transpose();
-            if let Some(normals) = mesh.normals.as_mut() {
-                for n in normals {
-                    let world = normal_matrix.transform_vector3(*n).normalize_or_zero();
-                    *n = if shape.flip_normals { -world } else { world };
+            let mut mesh = super::load_ply(filename)?;
+            if *flip_tex_coords {
+                for uv in mesh.uvs.iter_mut().flatten() {
+                    uv.y = 1.0 - uv.y;
                 }
             }
-            // The geometric normal follows the winding: keep it on the side the transformed
-            // (and possibly flipped) surface faces.
-            if (m.determinant() < 0.0) != shape.flip_normals {
-                for corners in &mut mesh.indices {
-                    corners.swap(1, 2);
-                }
-            }
-            if *face_normals {
-                mesh.normals = None;
-            } else if mesh.normals.is_none() {
-                // In world space, as Mitsuba does: angle weights change under a non-uniform
-                // scale, so computing them before the transform would give other normals.
-                mesh.recompute_vertex_normals();
-            }
-            Ok(mesh.triangles().map(Shape::Triangle).collect())
+            Ok(placed_mesh(mesh, shape, *face_normals))
+        }
+        ShapeGeometry::Serialized {
+            filename,
+            shape_index,
+            face_normals,
+        } => {
+            let mesh = super::load_serialized(filename, *shape_index)?;
+            Ok(placed_mesh(mesh, shape, *face_normals))
         }
     }
+}
+
+/// The triangles of a mesh file's `mesh` placed by the shape's `to_world`, with Mitsuba's
+/// treatment of normals: the file's normals transformed (and flipped with `flip_normals`),
+/// none with `face_normals`, and smooth ones computed in world space when the file has none.
+fn placed_mesh(mut mesh: TriangleMesh, shape: &ShapeDescription, face_normals: bool) -> Vec<Shape> {
+    let m = shape.to_world;
+    mesh.positions = mesh
+        .positions
+        .iter()
+        .map(|&p| m.transform_point3(p))
+        .collect();
+    let normal_matrix = m.inverse().transpose();
+    if let Some(normals) = mesh.normals.as_mut() {
+        for n in normals {
+            let world = normal_matrix.transform_vector3(*n).normalize_or_zero();
+            *n = if shape.flip_normals { -world } else { world };
+        }
+    }
+    // A mesh's geometric normal is its world-space winding's, `(p1 - p0) × (p2 - p0)`, as in
+    // Mitsuba 3 (checked against 3.9.1): so a mirroring `to_world` turns it over, unlike a
+    // rectangle's or a disc's, which are transformed normals. `flip_normals` turns it over
+    // once more, by reversing the winding.
+    if shape.flip_normals {
+        for corners in &mut mesh.indices {
+            corners.swap(1, 2);
+        }
+    }
+    if face_normals {
+        mesh.normals = None;
+    } else if mesh.normals.is_none() {
+        // In world space, as Mitsuba does: angle weights change under a non-uniform scale, so
+        // computing them before the transform would give other normals.
+        mesh.recompute_vertex_normals();
+    }
+    // Reversing the winding swaps a triangle's barycentrics b1 and b2; a mesh without texture
+    // coordinates takes its uv from them, which Mitsuba's flipped mesh does not swap. These
+    // corner uvs swap them back.
+    let barycentric_uvs = (shape.flip_normals && mesh.uvs.is_none()).then_some([
+        glam::Vec2::ZERO,
+        glam::Vec2::Y,
+        glam::Vec2::X,
+    ]);
+    mesh.triangles()
+        .map(|t| match barycentric_uvs {
+            Some(uvs) => Shape::Triangle(t.with_uvs(uvs)),
+            None => Shape::Triangle(t),
+        })
+        .collect()
 }
 
 /// The rectangle `[-1, 1]^2` (normal +z) placed by `to_world * face` as a parallelogram whose
@@ -228,7 +273,9 @@ mod tests {
             filename: path,
             face_normals: true,
         };
-        // Mirrored in x and lifted by 2: still two triangles facing +z, now at z = 2.
+        // Mirrored in x and lifted by 2: two triangles at z = 2, now wound clockwise seen from
+        // +z, so facing -z, as in Mitsuba 3 (3.9.1 gives a mirrored OBJ or PLY triangle the
+        // normal -z, and +z with flip_normals).
         let m = Mat4::from_translation(2.0 * Vec3::Z) * Mat4::from_scale(Vec3::new(-3.0, 3.0, 3.0));
         let shapes = world_shapes(&description(obj.clone(), m)).unwrap();
         assert_eq!(shapes.len(), 2);
@@ -238,13 +285,13 @@ mod tests {
             .find_map(|s| s.intersect(&ray))
             .expect("the square is hit");
         assert!(
-            (hit.p.z - 2.0).abs() < 1e-6 && (hit.n - Vec3::Z).length() < 1e-5,
+            (hit.p.z - 2.0).abs() < 1e-6 && (hit.n + Vec3::Z).length() < 1e-5,
             "{hit:?}"
         );
         let mut flipped = description(obj, m);
         flipped.flip_normals = true;
         let n = hit_normal(&world_shapes(&flipped).unwrap(), ray).unwrap();
-        assert!((n + Vec3::Z).length() < 1e-5, "{n}");
+        assert!((n - Vec3::Z).length() < 1e-5, "{n}");
         let missing = ShapeGeometry::Obj {
             filename: "missing.obj".into(),
             face_normals: false,

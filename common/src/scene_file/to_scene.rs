@@ -68,6 +68,8 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             ShapeGeometry::Disc => "disk",
             ShapeGeometry::Cube => "cube",
             ShapeGeometry::Obj { .. } => "obj",
+            ShapeGeometry::Ply { .. } => "ply",
+            ShapeGeometry::Serialized { .. } => "serialized",
         };
         if shape.flip_normals && kind == "sphere" {
             return Err(error(

@@ -1,11 +1,11 @@
 //! Indexed triangle meshes, as loaded from model files.
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use super::triangle::Triangle;
 
-/// A triangle mesh: shared vertex positions (and optionally normals) and, for each triangle,
-/// the indices of its three vertices.
+/// A triangle mesh: shared vertex positions (and optionally normals and texture coordinates)
+/// and, for each triangle, the indices of its three vertices.
 ///
 /// The renderer does not intersect meshes directly: [`triangles`](Self::triangles) turns one
 /// into independent [`Triangle`]s, which go into the scene's BVH like every other shape. The
@@ -17,8 +17,11 @@ pub struct TriangleMesh {
     pub positions: Vec<Vec3>,
     /// Unit vertex normals, one per position, for smooth shading.
     pub normals: Option<Vec<Vec3>>,
-    /// Three indices into `positions` (and `normals`) per triangle.
+    /// Three indices into `positions` (and `normals` and `uvs`) per triangle.
     pub indices: Vec<[u32; 3]>,
+    /// Texture coordinates, one per position. A triangle interpolates them into its hits'
+    /// `uv`; without them its `uv` is the barycentric `(b1, b2)`, as in Mitsuba 3.
+    pub uvs: Option<Vec<Vec2>>,
 }
 
 /// Why a [`TriangleMesh`] is malformed.
@@ -44,10 +47,18 @@ pub enum MeshError {
         /// How many normals there are.
         normals: usize,
     },
+    /// There are texture coordinates, but not exactly one per position.
+    #[error("the mesh has {positions} positions but {uvs} texture coordinates")]
+    UvCountMismatch {
+        /// How many positions there are.
+        positions: usize,
+        /// How many texture coordinates there are.
+        uvs: usize,
+    },
 }
 
 impl TriangleMesh {
-    /// A mesh, checked with [`validate`](Self::validate).
+    /// A mesh without texture coordinates, checked with [`validate`](Self::validate).
     pub fn new(
         positions: Vec<Vec3>,
         normals: Option<Vec<Vec3>>,
@@ -57,14 +68,30 @@ impl TriangleMesh {
             positions,
             normals,
             indices,
+            uvs: None,
         };
         mesh.validate()?;
         Ok(mesh)
     }
 
-    /// Checks that every index names an existing vertex and that normals, if present, match
-    /// the positions one to one.
+    /// The same mesh with texture coordinates `uvs` (or none), checked again.
+    pub fn with_uvs(self, uvs: Option<Vec<Vec2>>) -> Result<Self, MeshError> {
+        let mesh = Self { uvs, ..self };
+        mesh.validate()?;
+        Ok(mesh)
+    }
+
+    /// Checks that every index names an existing vertex and that normals and texture
+    /// coordinates, if present, match the positions one to one.
     pub fn validate(&self) -> Result<(), MeshError> {
+        if let Some(uvs) = &self.uvs
+            && uvs.len() != self.positions.len()
+        {
+            return Err(MeshError::UvCountMismatch {
+                positions: self.positions.len(),
+                uvs: uvs.len(),
+            });
+        }
         if let Some(normals) = &self.normals
             && normals.len() != self.positions.len()
         {
@@ -118,7 +145,7 @@ impl TriangleMesh {
     }
     // ANCHOR_END: recompute_vertex_normals
 
-    /// The mesh's triangles, with vertex normals if the mesh has them.
+    /// The mesh's triangles, with vertex normals and texture coordinates if the mesh has them.
     ///
     /// # Panics
     ///
@@ -128,9 +155,13 @@ impl TriangleMesh {
         self.indices.iter().map(|corners| {
             let [i0, i1, i2] = corners.map(|i| i as usize);
             let p = [self.positions[i0], self.positions[i1], self.positions[i2]];
-            match &self.normals {
+            let triangle = match &self.normals {
                 Some(n) => Triangle::with_normals(p, [n[i0], n[i1], n[i2]]),
                 None => Triangle::new(p[0], p[1], p[2]),
+            };
+            match &self.uvs {
+                Some(uv) => triangle.with_uvs([uv[i0], uv[i1], uv[i2]]),
+                None => triangle,
             }
         })
     }
@@ -228,6 +259,25 @@ mod tests {
         assert_eq!(
             error.to_string(),
             "triangle 1 refers to vertex 4, but the mesh has 4 vertices"
+        );
+    }
+
+    #[test]
+    fn texture_coordinates_are_passed_on_and_must_match_the_positions() {
+        let square = TriangleMesh::new(unit_square_positions(), None, vec![[0, 2, 3]]).unwrap();
+        let uvs: Vec<Vec2> = unit_square_positions()
+            .iter()
+            .map(|p| p.truncate())
+            .collect();
+        let mesh = square.clone().with_uvs(Some(uvs)).unwrap();
+        let triangle = mesh.triangles().next().unwrap();
+        assert_eq!(triangle.uvs, Some([Vec2::ZERO, Vec2::ONE, Vec2::Y]));
+        assert_eq!(
+            square.with_uvs(Some(vec![Vec2::ZERO])).unwrap_err(),
+            MeshError::UvCountMismatch {
+                positions: 4,
+                uvs: 1
+            }
         );
     }
 

@@ -8,17 +8,22 @@ use crate::geometry::aabb::Aabb;
 use crate::geometry::float::gamma;
 use crate::geometry::hit::SurfaceHit;
 
-/// A triangle, optionally with a normal at each vertex for smooth shading.
+/// A triangle, optionally with a normal at each vertex for smooth shading and texture
+/// coordinates at each vertex.
 ///
 /// Its geometric normal is `normalize((p1 - p0) × (p2 - p0))`: counter-clockwise vertices seen
-/// from the front. Its surface parameters are the barycentric coordinates `uv = (b1, b2)` of
-/// the hit point `b0 p0 + b1 p1 + b2 p2`.
+/// from the front. Its surface parameters at the hit point `b0 p0 + b1 p1 + b2 p2` are, as in
+/// Mitsuba 3's meshes, the vertices' texture coordinates interpolated,
+/// `uv = b0 uv0 + b1 uv1 + b2 uv2`, when it has them, and else the barycentric coordinates
+/// `uv = (b1, b2)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Triangle {
     /// The three vertices.
     pub p: [Vec3; 3],
     /// Unit normals at the vertices, interpolated into the shading normal.
     pub normals: Option<[Vec3; 3]>,
+    /// Texture coordinates at the vertices, interpolated into the hit's `uv`.
+    pub uvs: Option<[Vec2; 3]>,
 }
 
 impl Triangle {
@@ -27,6 +32,7 @@ impl Triangle {
         Self {
             p: [p0, p1, p2],
             normals: None,
+            uvs: None,
         }
     }
 
@@ -35,6 +41,15 @@ impl Triangle {
         Self {
             p,
             normals: Some(n),
+            uvs: None,
+        }
+    }
+
+    /// The same triangle with texture coordinates `uv` at its vertices.
+    pub fn with_uvs(self, uv: [Vec2; 3]) -> Self {
+        Self {
+            uvs: Some(uv),
+            ..self
         }
     }
 
@@ -91,7 +106,10 @@ impl Triangle {
             p_error,
             n,
             shading_n,
-            uv: Vec2::new(b[1], b[2]),
+            uv: match self.uvs {
+                Some([uv0, uv1, uv2]) => b[0] * uv0 + b[1] * uv1 + b[2] * uv2,
+                None => Vec2::new(b[1], b[2]),
+            },
             shape: 0,
         }
     }
@@ -238,6 +256,19 @@ mod tests {
         assert_relative_eq!(hit.uv, Vec2::new(0.25, 0.5), epsilon = 1e-6);
         assert!(hit.front_face(ray.dir));
         assert!(hit.p_error.cmpgt(Vec3::ZERO).all());
+    }
+
+    #[test]
+    fn texture_coordinates_are_interpolated_with_the_barycentrics() {
+        let ray = Ray::new(Vec3::new(0.25, 0.5, 5.0), -Vec3::Z);
+        let uvs = [
+            Vec2::new(0.5, 1.0),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(0.5, 0.0),
+        ];
+        let hit = right_triangle().with_uvs(uvs).intersect(&ray).unwrap();
+        // b = (0.25, 0.25, 0.5): 0.25 (0.5, 1) + 0.25 (1, 1) + 0.5 (0.5, 0).
+        assert_relative_eq!(hit.uv, Vec2::new(0.625, 0.5), epsilon = 1e-6);
     }
 
     #[test]

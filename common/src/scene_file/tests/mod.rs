@@ -5,6 +5,8 @@ mod broken_files;
 mod cornell;
 mod files_and_references;
 mod materials;
+mod mesh_files;
+mod mesh_scenes;
 mod model;
 mod never_panics;
 mod spectra;
