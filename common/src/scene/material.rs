@@ -143,10 +143,11 @@ pub struct RoughGlass {
 /// A microfacet roughness as Mitsuba 3's rough BSDFs give it: a surface of tiny mirror
 /// facets whose slopes are spread by a width `alpha`.
 ///
-/// The workbook renders it as a `cos^n` lobe of about the same width, `n = 2 / alpha² - 2`
-/// (the correspondence for the Beckmann distribution: Walter et al. 2007, "Microfacet models
-/// for refraction through rough surfaces"), not as Mitsuba's microfacet model: the lobes'
-/// shapes, their brightness at grazing angles and their Fresnel colouring differ.
+/// Chapter 08 renders it as Mitsuba's microfacet model. Chapters 06 and 07 render it as a
+/// `cos^n` lobe of about the same width, `n = 2 / alpha² - 2` (the correspondence for the
+/// Beckmann distribution: Walter et al. 2007, "Microfacet models for refraction through rough
+/// surfaces"): the lobes' shapes, their brightness at grazing angles and their Fresnel
+/// colouring differ from Mitsuba's. Isotropic only: the loader refuses `alpha_u`/`alpha_v`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Microfacet {
     /// The slopes' distribution.
