@@ -285,10 +285,7 @@ mod tests {
     }
 
     fn beckmann(alpha: f32) -> Microfacet {
-        Microfacet {
-            distribution: MicrofacetDistribution::Beckmann,
-            alpha,
-        }
+        Microfacet::isotropic(MicrofacetDistribution::Beckmann, alpha)
     }
 
     fn plastic(alpha: Option<f32>, two_sided: bool) -> Plastic {
