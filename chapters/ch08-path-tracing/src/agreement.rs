@@ -39,7 +39,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
         },
         AgreementScene {
             name: "rough-metals",
-            checks: "roughconductor: GGX gold, Beckmann aluminium and a GGX copper sheet seen at grazing angles; visible-normal sampling, Smith's shadowing and the facets' Fresnel term, with light samples and MIS",
+            checks: "roughconductor: GGX gold, Beckmann aluminium and an anisotropic GGX copper sheet (alpha_u 0.05 along x, alpha_v 0.3) seen at grazing angles; visible-normal sampling, Smith's shadowing and the facets' Fresnel term, with light samples and MIS",
             variant: MITSUBA_VARIANT,
         },
         AgreementScene {

@@ -109,7 +109,7 @@ fn what_no_chapter_renders_is_refused_where_it_is_written() {
         ),
         (
             r#"<shape type="sphere"><bsdf type="roughconductor"><float name="alpha_u" value="0.1"/></bsdf></shape>"#,
-            "test.xml:2:52: alpha_u and alpha_v go together",
+            "test.xml:2:50: alpha_u and alpha_v go together",
         ),
         (
             r#"<shape type="sphere"><bsdf type="roughdielectric"><float name="alpha" value="0.1"/><float name="alpha_u" value="0.1"/><float name="alpha_v" value="0.2"/></bsdf></shape>"#,
