@@ -37,6 +37,16 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "smooth plastic (linear and nonlinear) under an area light, with its light sample and MIS, and a thin glass pane that shows the light in its reflection and casts a shadow",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "rough-metals",
+            checks: "roughconductor: GGX gold, Beckmann aluminium and an anisotropic GGX copper sheet (alpha_u 0.05 along x, alpha_v 0.3) seen at grazing angles; visible-normal sampling, Smith's shadowing and the facets' Fresnel term, with light samples and MIS",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "rough-plastic-and-glass",
+            checks: "roughplastic with Beckmann and GGX coatings (linear and nonlinear) and a GGX roughdielectric sphere: the coating's tabulated transmittance, reflection and refraction through facets",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

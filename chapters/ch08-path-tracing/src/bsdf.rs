@@ -9,14 +9,20 @@
 //! exactly the lobe it is made of. Chapter 08's own (metals, thin glass, plastic) follow
 //! Mitsuba 3's: a metal's weight is its Fresnel reflectance, plastic's varies with `wi`.
 //!
-//! Random numbers, in this order: a choice at glass, a thin pane and plastic (1), a direction
-//! (2) for diffuse, glossy, frosted and plastic surfaces and rough metals; a mirror, a smooth
-//! metal and smooth glass's chosen branch take no direction numbers.
+//! A file's rough metals, rough plastics and rough glass (`roughness` or `stands_in_for`
+//! given) are Mitsuba's microfacet models ([`microfacet`], through [`crate::microfacet`]);
+//! chapter 06's own glossy and frosted materials keep their `cos^n` lobes.
+//!
+//! Random numbers, in this order: a choice at glass, a thin pane, plastic and every microfacet
+//! material (1), a direction (2) for diffuse, glossy, frosted and plastic surfaces and every
+//! microfacet material; a mirror, a smooth metal and smooth glass's chosen branch take no
+//! direction numbers.
 
 pub mod conductor;
 pub mod dielectric;
 pub mod diffuse;
 pub mod glossy;
+pub mod microfacet;
 pub mod mirror;
 pub mod plastic;
 pub mod rough_glass;
@@ -70,26 +76,11 @@ impl Bsdf<'_> {
             Material::Mirror { .. } | Material::Dielectric { .. } => true,
             Material::Diffuse { .. } | Material::CheckeredDiffuse { .. } => false,
             Material::Glossy(g) => !g.exponent.is_finite(),
-            Material::RoughGlass(g) => !g.exponent.is_finite(),
-            Material::Conductor(c) => match c.roughness {
-                None => true,
-                Some(_) => !conductor::stand_in_lobe(c).exponent.is_finite(),
-            },
+            Material::RoughGlass(g) => g.stands_in_for.is_none() && !g.exponent.is_finite(),
+            // A microfacet metal is never a delta: its roughness is at least `MIN_ALPHA`.
+            Material::Conductor(c) => c.roughness.is_none(),
             Material::ThinDielectric { .. } => true,
             Material::Plastic(_) => false,
-        }
-    }
-
-    /// How a plastic's coat reflects: a mirror, or the lobe standing in for its roughness
-    /// until the microfacet BSDF renders it.
-    fn coat(&self, roughness: Option<common::scene::Microfacet>) -> plastic::Coat {
-        match roughness {
-            None => plastic::Coat::Smooth,
-            // The microfacet coat goes here; until then chapter 06's lobe stands in.
-            Some(microfacet) => plastic::Coat::Lobe {
-                exponent: microfacet.lobe_exponent(),
-                fuzz: self.fuzz,
-            },
         }
     }
 
@@ -126,6 +117,10 @@ impl Bsdf<'_> {
             }
             Material::RoughGlass(g) => {
                 let choice = sampler.get_1d();
+                if let Some(roughness) = g.stands_in_for {
+                    let u = sampler.get_2d();
+                    return microfacet::dielectric(hit, &g, roughness).sample(wo, choice, u);
+                }
                 let u = if g.exponent.is_finite() {
                     sampler.get_2d()
                 } else {
@@ -135,15 +130,9 @@ impl Bsdf<'_> {
             }
             Material::Conductor(c) => match c.roughness {
                 None => conductor::sample(hit, wo, &c),
-                // The microfacet BSDF goes here; until then chapter 06's lobe stands in.
-                Some(_) => {
-                    let lobe = conductor::stand_in_lobe(&c);
-                    let u = if lobe.exponent.is_finite() {
-                        sampler.get_2d()
-                    } else {
-                        glam::Vec2::ZERO
-                    };
-                    glossy::sample(hit, wo, &lobe, self.fuzz, u)
+                Some(roughness) => {
+                    let (choice, u) = (sampler.get_1d(), sampler.get_2d());
+                    microfacet::conductor(hit, wo, &c, roughness)?.sample(wo, choice, u)
                 }
             },
             Material::ThinDielectric { int_ior, ext_ior } => Some(thin_dielectric::sample(
@@ -156,7 +145,12 @@ impl Bsdf<'_> {
             Material::Plastic(p) => {
                 let choice = sampler.get_1d();
                 let u = sampler.get_2d();
-                plastic::sample(hit, wo, &p, self.coat(p.roughness), choice, u)
+                match p.roughness {
+                    None => plastic::sample(hit, wo, &p, choice, u),
+                    Some(roughness) => {
+                        microfacet::plastic(hit, wo, &p, roughness)?.sample(wo, choice, u)
+                    }
+                }
             }
         }
     }
@@ -176,13 +170,21 @@ impl Bsdf<'_> {
             } => diffuse::eval(hit, wo, wi, checkerboard.eval(hit.uv), two_sided),
             Material::Mirror { .. } | Material::Dielectric { .. } => Vec3::ZERO,
             Material::Glossy(g) => glossy::eval(hit, wo, wi, &g, self.fuzz),
-            Material::RoughGlass(g) => rough_glass::eval(hit, wo, wi, &g, self.fuzz),
+            Material::RoughGlass(g) => match g.stands_in_for {
+                None => rough_glass::eval(hit, wo, wi, &g, self.fuzz),
+                Some(roughness) => microfacet::dielectric(hit, &g, roughness).eval(wo, wi),
+            },
             Material::Conductor(c) => match c.roughness {
                 None => Vec3::ZERO,
-                Some(_) => glossy::eval(hit, wo, wi, &conductor::stand_in_lobe(&c), self.fuzz),
+                Some(roughness) => microfacet::conductor(hit, wo, &c, roughness)
+                    .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
             },
             Material::ThinDielectric { .. } => Vec3::ZERO,
-            Material::Plastic(p) => plastic::eval(hit, wo, wi, &p, self.coat(p.roughness)),
+            Material::Plastic(p) => match p.roughness {
+                None => plastic::eval(hit, wo, wi, &p),
+                Some(roughness) => microfacet::plastic(hit, wo, &p, roughness)
+                    .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
+            },
         }
     }
 
@@ -196,13 +198,22 @@ impl Bsdf<'_> {
             }
             Material::Mirror { .. } | Material::Dielectric { .. } => 0.0,
             Material::Glossy(g) => glossy::pdf(hit, wo, wi, &g, self.fuzz),
-            Material::RoughGlass(g) => rough_glass::pdf(hit, wo, wi, &g, self.fuzz),
+            Material::RoughGlass(g) => match g.stands_in_for {
+                None => rough_glass::pdf(hit, wo, wi, &g, self.fuzz),
+                Some(roughness) => microfacet::dielectric(hit, &g, roughness).pdf(wo, wi),
+            },
             Material::Conductor(c) => match c.roughness {
                 None => 0.0,
-                Some(_) => glossy::pdf(hit, wo, wi, &conductor::stand_in_lobe(&c), self.fuzz),
+                Some(roughness) => microfacet::conductor(hit, wo, &c, roughness)
+                    .map_or(0.0, |bsdf| bsdf.pdf(wo, wi)),
             },
             Material::ThinDielectric { .. } => 0.0,
-            Material::Plastic(p) => plastic::pdf(hit, wo, wi, &p, self.coat(p.roughness)),
+            Material::Plastic(p) => match p.roughness {
+                None => plastic::pdf(hit, wo, wi, &p),
+                Some(roughness) => {
+                    microfacet::plastic(hit, wo, &p, roughness).map_or(0.0, |bsdf| bsdf.pdf(wo, wi))
+                }
+            },
         }
     }
 }
@@ -274,10 +285,7 @@ mod tests {
     }
 
     fn beckmann(alpha: f32) -> Microfacet {
-        Microfacet {
-            distribution: MicrofacetDistribution::Beckmann,
-            alpha,
-        }
+        Microfacet::isotropic(MicrofacetDistribution::Beckmann, alpha)
     }
 
     fn plastic(alpha: Option<f32>, two_sided: bool) -> Plastic {

@@ -54,7 +54,7 @@ use ch06_fuzzy_reflections::FuzzMethod;
 use ch07_soft_shadows::{AreaLights, LightSampling};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
-use common::scene::{Capabilities, Chapter, Feature};
+use common::scene::{Capabilities, Chapter};
 
 /// Everything about a path-traced render besides the scene and the image settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -79,13 +79,12 @@ impl Method {
 }
 
 /// What chapter 08 renders of a scene: everything the workbook knows, indirect light and the
-/// environment's light on matte surfaces included.
+/// environment's light on matte surfaces included. Nothing is approximated: a file's rough
+/// metals, plastics and glass are Mitsuba's microfacet models ([`microfacet`]), not chapter
+/// 06's lobes, so no note says otherwise.
 pub const CAPABILITIES: Capabilities = Capabilities {
     chapter: Chapter::PATH_TRACING,
-    approximates: &[(
-        Feature::MicrofacetMaterial,
-        ch06_fuzzy_reflections::MICROFACET_AS_LOBE,
-    )],
+    approximates: &[],
 };
 
 // ANCHOR: render_with

@@ -488,13 +488,28 @@ fn fuzzy_detail(material: &Material) -> Option<(String, bool)> {
     Some(match stands_in_for {
         Some(microfacet) => (
             format!(
-                "{kind} with alpha {} as a cos^n lobe of exponent {exponent:.1}",
-                microfacet.alpha
+                "{kind} with {} as a cos^n lobe of exponent {exponent:.1}",
+                describe_alpha(microfacet)
             ),
             true,
         ),
         None => (format!("a cos^n lobe of exponent {exponent}"), false),
     })
+}
+
+/// A roughness in a note's words: `alpha 0.2`, or `alpha_u 0.1, alpha_v 0.4 (a round lobe of
+/// alpha 0.2)` where the lobe cannot follow the two widths.
+fn describe_alpha(microfacet: crate::scene::Microfacet) -> String {
+    if microfacet.is_anisotropic() {
+        format!(
+            "alpha_u {}, alpha_v {} (a round lobe of alpha {})",
+            microfacet.alpha_u,
+            microfacet.alpha_v,
+            microfacet.alpha()
+        )
+    } else {
+        format!("alpha {}", microfacet.alpha_u)
+    }
 }
 
 #[cfg(test)]
@@ -552,10 +567,10 @@ mod tests {
     #[test]
     fn light_left_out_is_noted_and_approximations_say_how() {
         let rough = Material::Glossy(crate::scene::Glossy {
-            stands_in_for: Some(crate::scene::Microfacet {
-                distribution: crate::scene::MicrofacetDistribution::Beckmann,
-                alpha: 0.5,
-            }),
+            stands_in_for: Some(crate::scene::Microfacet::isotropic(
+                crate::scene::MicrofacetDistribution::Beckmann,
+                0.5,
+            )),
             ..match Material::glossy(Vec3::ONE, 6.0) {
                 Material::Glossy(g) => g,
                 _ => unreachable!(),
@@ -623,10 +638,10 @@ mod tests {
         let rough = Material::Conductor(crate::scene::Conductor {
             eta: Vec3::ZERO,
             k: Vec3::ONE,
-            roughness: Some(crate::scene::Microfacet {
-                distribution: crate::scene::MicrofacetDistribution::Beckmann,
-                alpha: 0.5,
-            }),
+            roughness: Some(crate::scene::Microfacet::isotropic(
+                crate::scene::MicrofacetDistribution::Beckmann,
+                0.5,
+            )),
             ..gold
         });
         let rough = scene(SceneBuilder::new().shape(sphere(), rough));

@@ -141,18 +141,23 @@ pub struct RoughGlass {
 }
 
 /// A microfacet roughness as Mitsuba 3's rough BSDFs give it: a surface of tiny mirror
-/// facets whose slopes are spread by a width `alpha`.
+/// facets whose slopes are spread by a width `alpha_u` along the surface's tangent and
+/// `alpha_v` across it (equal for an isotropic roughness, Mitsuba's `alpha`).
 ///
-/// The workbook renders it as a `cos^n` lobe of about the same width, `n = 2 / alpha² - 2`
-/// (the correspondence for the Beckmann distribution: Walter et al. 2007, "Microfacet models
-/// for refraction through rough surfaces"), not as Mitsuba's microfacet model: the lobes'
-/// shapes, their brightness at grazing angles and their Fresnel colouring differ.
+/// Chapter 08 renders it as Mitsuba's microfacet model. Chapters 06 and 07 render it as a
+/// `cos^n` lobe of about the same width, `n = 2 / alpha² - 2` (the correspondence for the
+/// Beckmann distribution: Walter et al. 2007, "Microfacet models for refraction through rough
+/// surfaces"): the lobes' shapes, their brightness at grazing angles and their Fresnel
+/// colouring differ from Mitsuba's, and a lobe is round, so an anisotropic roughness becomes
+/// the round lobe of [`alpha`](Self::alpha).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Microfacet {
     /// The slopes' distribution.
     pub distribution: MicrofacetDistribution,
-    /// The width of the slopes' distribution.
-    pub alpha: f32,
+    /// The width of the slopes' distribution along the tangent (Mitsuba's `alpha_u`).
+    pub alpha_u: f32,
+    /// The width across it, along the bitangent (Mitsuba's `alpha_v`).
+    pub alpha_v: f32,
 }
 
 /// Mitsuba 3's two microfacet distributions.
@@ -165,10 +170,37 @@ pub enum MicrofacetDistribution {
 }
 
 impl Microfacet {
+    /// The same width `alpha` in every direction (Mitsuba's `alpha`).
+    pub fn isotropic(distribution: MicrofacetDistribution, alpha: f32) -> Self {
+        Self {
+            distribution,
+            alpha_u: alpha,
+            alpha_v: alpha,
+        }
+    }
+
+    /// Whether the width differs along and across the tangent.
+    pub fn is_anisotropic(&self) -> bool {
+        self.alpha_u != self.alpha_v
+    }
+
+    /// One width for what can only be round: `sqrt(alpha_u alpha_v)`, the width of the round
+    /// distribution whose facets cover the same solid angle (`D` at the normal is
+    /// `1 / (π alpha_u alpha_v)` for both distributions); `alpha` itself when isotropic.
+    pub fn alpha(&self) -> f32 {
+        if self.is_anisotropic() {
+            (self.alpha_u * self.alpha_v).sqrt()
+        } else {
+            self.alpha_u
+        }
+    }
+
     /// The `cos^n` exponent whose lobe is about as wide as this roughness:
-    /// `n = 2 / alpha² - 2`, never below 0 (alpha above 1 is rougher than any lobe).
+    /// `n = 2 / alpha² - 2` of [`alpha`](Self::alpha), never below 0 (alpha above 1 is rougher
+    /// than any lobe).
     pub fn lobe_exponent(&self) -> f32 {
-        (2.0 / (self.alpha * self.alpha) - 2.0).max(0.0)
+        let alpha = self.alpha();
+        (2.0 / (alpha * alpha) - 2.0).max(0.0)
     }
 }
 
@@ -361,13 +393,8 @@ mod tests {
 
     #[test]
     fn beckmann_roughness_maps_to_lobe_exponents() {
-        let exponent = |alpha| {
-            Microfacet {
-                distribution: MicrofacetDistribution::Beckmann,
-                alpha,
-            }
-            .lobe_exponent()
-        };
+        let exponent =
+            |alpha| Microfacet::isotropic(MicrofacetDistribution::Beckmann, alpha).lobe_exponent();
         approx::assert_relative_eq!(exponent(0.1), 198.0, max_relative = 1e-5);
         approx::assert_relative_eq!(exponent(1e-3), 2e6 - 2.0, max_relative = 1e-5);
         assert_eq!(exponent(1.0), 0.0);

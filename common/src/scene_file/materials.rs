@@ -142,7 +142,7 @@ fn read_bsdf_element<'a>(
         }
         "plastic" => plastic(reader, &mut properties, None)?,
         "roughplastic" => {
-            let microfacet = microfacet(reader, node, &mut properties)?;
+            let microfacet = microfacet(reader, node, &mut properties, Widths::One)?;
             plastic(reader, &mut properties, Some(microfacet))?
         }
         "phong" => {
@@ -165,11 +165,11 @@ fn read_bsdf_element<'a>(
             })
         }
         "roughconductor" => {
-            let microfacet = microfacet(reader, node, &mut properties)?;
+            let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
             conductor(reader, node, &mut properties, Some(microfacet))?
         }
         "roughdielectric" => {
-            let microfacet = microfacet(reader, node, &mut properties)?;
+            let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
             Material::RoughGlass(RoughGlass {
                 int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
                 ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
@@ -343,11 +343,22 @@ fn plastic(
     }))
 }
 
-/// The `distribution` and `alpha` of a rough BSDF.
+/// Whether a rough BSDF may have two widths: Mitsuba's `roughconductor` and
+/// `roughdielectric` read `alpha_u` and `alpha_v`, its `roughplastic` only `alpha`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Widths {
+    /// `alpha`, or `alpha_u` and `alpha_v` together.
+    OneOrTwo,
+    /// `alpha` only.
+    One,
+}
+
+/// The `distribution` and the width (`alpha`, or `alpha_u` and `alpha_v`) of a rough BSDF.
 fn microfacet(
     reader: &Reader,
     node: &Element,
     properties: &mut Properties,
+    widths: Widths,
 ) -> Result<Microfacet, SceneError> {
     let at = |properties: &Properties, name: &str| {
         properties
@@ -366,25 +377,66 @@ fn microfacet(
             ));
         }
     };
-    if properties.position_of("alpha_u").is_some() || properties.position_of("alpha_v").is_some() {
-        return Err(reader.error_at(
-            at(properties, "alpha_u"),
-            "alpha_u and alpha_v (an anisotropic roughness) are not rendered: give one alpha",
-        ));
-    }
     // Mitsuba's `sample_visible` says how it samples, not what the surface is.
     properties.boolean(reader, "sample_visible")?;
-    let alpha = properties.float(reader, "alpha")?.unwrap_or(DEFAULT_ALPHA);
-    if !(alpha.is_finite() && alpha > 0.0) {
+    let width = |properties: &mut Properties, name: &str| -> Result<Option<f32>, SceneError> {
+        let Some(alpha) = properties.float(reader, name)? else {
+            return Ok(None);
+        };
+        if alpha.is_finite() && alpha > 0.0 {
+            Ok(Some(alpha))
+        } else {
+            Err(reader.error_at(
+                at(properties, name),
+                format!("{name} must be a positive number, found {alpha}"),
+            ))
+        }
+    };
+    let alpha = width(properties, "alpha")?;
+    let alpha_u = width(properties, "alpha_u")?;
+    let alpha_v = width(properties, "alpha_v")?;
+    let stretched = alpha_u.is_some() || alpha_v.is_some();
+    if stretched && widths == Widths::One {
+        let name = if alpha_u.is_some() {
+            "alpha_u"
+        } else {
+            "alpha_v"
+        };
         return Err(reader.error_at(
-            at(properties, "alpha"),
-            format!("alpha must be a positive number, found {alpha}"),
+            at(properties, name),
+            "roughplastic has one roughness in Mitsuba 3 (alpha), not alpha_u and alpha_v",
         ));
     }
-    Ok(Microfacet {
-        distribution,
-        alpha,
-    })
+    if stretched && alpha.is_some() {
+        return Err(reader.error_at(
+            at(properties, "alpha"),
+            "give either alpha or alpha_u and alpha_v, not both (Mitsuba 3 would leave alpha_u \
+             and alpha_v unused)",
+        ));
+    }
+    match (alpha_u, alpha_v) {
+        (Some(alpha_u), Some(alpha_v)) => Ok(Microfacet {
+            distribution,
+            alpha_u,
+            alpha_v,
+        }),
+        (None, None) => Ok(Microfacet::isotropic(
+            distribution,
+            alpha.unwrap_or(DEFAULT_ALPHA),
+        )),
+        (Some(_), None) | (None, Some(_)) => {
+            let given = if alpha_u.is_some() {
+                "alpha_u"
+            } else {
+                "alpha_v"
+            };
+            Err(reader.error_at(
+                at(properties, given),
+                "alpha_u and alpha_v go together: give both (an anisotropic roughness) or one \
+                 alpha",
+            ))
+        }
+    }
 }
 
 /// The BSDFs among `objects` (inline `<bsdf>` or `<ref>` to one); any other object is an error.

@@ -3,13 +3,13 @@
 //! times the `specular_reflectance`. Gold reflects 0.9 of red square on but only 0.4 of blue,
 //! and every colour tends to 1 at grazing angles.
 //!
-//! A rough metal (`roughness: Some`) is the microfacet engineer's: until that BSDF lands,
-//! chapter 08 renders the lecture's stand-in lobe for it (see [`super::Bsdf`]).
+//! A rough metal (`roughness: Some`) is Mitsuba's `roughconductor` ([`super::microfacet`]),
+//! whose facets reflect with the same [`fresnel_conductor_rgb`].
 
 use super::{BsdfSample, facing_normal};
 use ch01_whitted::optics::reflect;
 use common::geometry::SurfaceHit;
-use common::scene::{Conductor, Glossy, Material};
+use common::scene::Conductor;
 use glam::Vec3;
 
 /// The unpolarised Fresnel reflectance of light arriving at `cos_i` (in `[0, 1]`) from a
@@ -66,22 +66,6 @@ pub fn sample(hit: &SurfaceHit, wo: Vec3, conductor: &Conductor) -> Option<BsdfS
     })
 }
 
-/// The lobe that stands in for a rough metal until the microfacet BSDF renders it:
-/// the lecture's stand-in ([`Material::lecture_stand_in`]), a `cos^n` lobe of the metal's
-/// normal-incidence reflectance.
-pub fn stand_in_lobe(conductor: &Conductor) -> Glossy {
-    match Material::Conductor(*conductor).lecture_stand_in() {
-        Some((Material::Glossy(lobe), _)) => lobe,
-        // A smooth metal has no lobe: a lobe of infinite exponent is its mirror.
-        _ => Glossy {
-            reflectance: conductor.specular_reflectance * conductor.normal_incidence_fresnel(),
-            exponent: f32::INFINITY,
-            two_sided: conductor.two_sided,
-            stands_in_for: None,
-        },
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -98,6 +82,15 @@ mod tests {
             );
         }
         assert!((fresnel_conductor(1.0, 1.5, 0.0) - 0.04).abs() < 1e-6);
+    }
+
+    /// Square on, a metal reflects `((eta - 1)² + k²) / ((eta + 1)² + k²)`.
+    #[test]
+    fn normal_incidence_is_the_closed_form() {
+        let (eta, k) = (0.2f32, 3.9f32);
+        let expected = ((eta - 1.0).powi(2) + k * k) / ((eta + 1.0).powi(2) + k * k);
+        let got = fresnel_conductor(1.0, eta, k);
+        assert!((got - expected).abs() < 1e-6, "{got} vs {expected}");
     }
 
     #[test]

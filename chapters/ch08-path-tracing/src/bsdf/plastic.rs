@@ -13,13 +13,11 @@
 //! Sampling picks the coat with probability `F_i w / (F_i w + (1 - F_i)(1 - w))`, where
 //! `w = s / (d + s)` weighs the mean specular reflectance `s` against the mean base albedo `d`
 //! (Mitsuba's `specular_sampling_weight`), else a cosine-weighted direction. A rough coat
-//! (`roughplastic`) is the microfacet engineer's: until that BSDF lands its reflection is
-//! chapter 06's `cos^n` lobe around the mirror direction, with the same Fresnel share.
+//! (`roughplastic`) is [`super::microfacet`]'s.
 
 use super::{BsdfSample, facing_normal, to_world};
 use ch01_whitted::optics::{fresnel_dielectric, reflect};
 use ch02_monte_carlo::warps::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
-use ch06_fuzzy_reflections::FuzzMethod;
 use common::geometry::SurfaceHit;
 use common::scene::Plastic;
 use glam::{Vec2, Vec3};
@@ -36,21 +34,6 @@ pub fn diffuse_fresnel_reflectance(eta: f32) -> f32 {
         0.919317
             + inv * (-3.4793 + inv * (6.75335 + inv * (-7.80989 + inv * (4.98554 - 1.36881 * inv))))
     }
-}
-
-/// How the coat reflects: a mirror (smooth plastic) or a `cos^n` lobe of this exponent
-/// standing in for a rough coat.
-#[derive(Clone, Copy, Debug)]
-pub enum Coat {
-    /// The mirror direction only (a delta).
-    Smooth,
-    /// Chapter 06's lobe around the mirror direction.
-    Lobe {
-        /// The lobe's exponent.
-        exponent: f32,
-        /// How it spreads.
-        fuzz: FuzzMethod,
-    },
 }
 
 /// What a plastic is at one hit: the side's normal and the numbers every query needs.
@@ -113,68 +96,47 @@ impl Local {
         self.base * ((1.0 - self.fresnel_o) * (1.0 - fresnel_i) * cos_i * FRAC_1_PI)
             / (self.relative_eta * self.relative_eta)
     }
-
-    /// The lobe's density at `wi` (0 below the surface or for the smooth coat).
-    fn coat_pdf(&self, wo: Vec3, wi: Vec3, coat: Coat) -> f32 {
-        match coat {
-            Coat::Lobe { exponent, fuzz } if wi.dot(self.normal) > 0.0 => {
-                fuzz.pdf(wi.dot(reflect(-wo, self.normal)), exponent)
-            }
-            _ => 0.0,
-        }
-    }
 }
 
 fn mean(c: Vec3) -> f32 {
     (c.x + c.y + c.z) / 3.0
 }
 
-/// Picks the coat or the base with `choice`, then a direction with `u`.
+/// Picks the coat's mirror direction or the base with `choice`, then the base's direction
+/// with `u`.
 pub fn sample(
     hit: &SurfaceHit,
     wo: Vec3,
     plastic: &Plastic,
-    coat: Coat,
     choice: f32,
     u: Vec2,
 ) -> Option<BsdfSample> {
     let local = Local::at(hit, wo, plastic)?;
-    let wi = if choice < local.coat_probability {
-        let mirror = reflect(-wo, local.normal);
-        match coat {
-            Coat::Smooth => {
-                return Some(BsdfSample {
-                    wi: mirror,
-                    weight: plastic.specular_reflectance * local.fresnel_o / local.coat_probability,
-                    pdf: f32::INFINITY,
-                    eta_scale: 1.0,
-                });
-            }
-            Coat::Lobe { exponent, fuzz } => fuzz.sample(mirror, exponent, u),
-        }
-    } else {
-        to_world(local.normal, sample_cosine_hemisphere(u))
-    };
-    let pdf = pdf(hit, wo, wi, plastic, coat);
+    if choice < local.coat_probability {
+        return Some(BsdfSample {
+            wi: reflect(-wo, local.normal),
+            weight: plastic.specular_reflectance * local.fresnel_o / local.coat_probability,
+            pdf: f32::INFINITY,
+            eta_scale: 1.0,
+        });
+    }
+    let wi = to_world(local.normal, sample_cosine_hemisphere(u));
+    let pdf = pdf(hit, wo, wi, plastic);
     (pdf > 0.0).then(|| BsdfSample {
         wi,
-        weight: eval(hit, wo, wi, plastic, coat) / pdf,
+        weight: eval(hit, wo, wi, plastic) / pdf,
         pdf,
         eta_scale: 1.0,
     })
 }
 
-/// `f(wo, wi) cos θ_i` without the smooth coat's delta.
-pub fn eval(hit: &SurfaceHit, wo: Vec3, wi: Vec3, plastic: &Plastic, coat: Coat) -> Vec3 {
-    let Some(local) = Local::at(hit, wo, plastic) else {
-        return Vec3::ZERO;
-    };
-    let coat_part = plastic.specular_reflectance * (local.fresnel_o * local.coat_pdf(wo, wi, coat));
-    local.base_eval(wi) + coat_part
+/// `f(wo, wi) cos θ_i` without the coat's delta: the base's.
+pub fn eval(hit: &SurfaceHit, wo: Vec3, wi: Vec3, plastic: &Plastic) -> Vec3 {
+    Local::at(hit, wo, plastic).map_or(Vec3::ZERO, |local| local.base_eval(wi))
 }
 
 /// The density of [`sample`] at `wi`, the smooth coat's delta left out.
-pub fn pdf(hit: &SurfaceHit, wo: Vec3, wi: Vec3, plastic: &Plastic, coat: Coat) -> f32 {
+pub fn pdf(hit: &SurfaceHit, wo: Vec3, wi: Vec3, plastic: &Plastic) -> f32 {
     let Some(local) = Local::at(hit, wo, plastic) else {
         return 0.0;
     };
@@ -183,7 +145,6 @@ pub fn pdf(hit: &SurfaceHit, wo: Vec3, wi: Vec3, plastic: &Plastic, coat: Coat) 
         return 0.0;
     }
     (1.0 - local.coat_probability) * cosine_hemisphere_pdf(cos_i.min(1.0))
-        + local.coat_probability * local.coat_pdf(wo, wi, coat)
 }
 
 #[cfg(test)]

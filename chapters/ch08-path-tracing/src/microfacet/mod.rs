@@ -8,8 +8,8 @@
 //!
 //! - [`distribution`]: `D`, `G1`, `G` and both samplers; [`visible_facets`]: the core of
 //!   visible-normal sampling.
-//! - [`fresnel`]: the dielectric and conductor Fresnel terms, reflection and refraction about
-//!   a facet.
+//! - [`fresnel`]: the dielectric Fresnel term, reflection and refraction about a facet (the
+//!   conductor's is the smooth metal's, [`crate::bsdf::conductor`]).
 //! - [`rough_conductor`], [`rough_dielectric`], [`rough_plastic`] (with its [`coating`]
 //!   tables and their [`gauss_legendre`] rule): Mitsuba's `roughconductor`,
 //!   `roughdielectric`, `roughplastic`.

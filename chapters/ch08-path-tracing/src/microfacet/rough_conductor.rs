@@ -10,6 +10,7 @@
 use super::distribution::NormalDistribution;
 use super::fresnel;
 use crate::BsdfSample;
+use crate::bsdf::conductor::fresnel_conductor_rgb;
 use glam::{Vec2, Vec3};
 
 /// A rough metal.
@@ -77,6 +78,6 @@ impl RoughConductor {
     }
 
     fn fresnel(&self, cos_theta: f32) -> Vec3 {
-        fresnel::conductor(cos_theta, self.eta, self.k) * self.specular_reflectance
+        fresnel_conductor_rgb(cos_theta, self.eta, self.k) * self.specular_reflectance
     }
 }

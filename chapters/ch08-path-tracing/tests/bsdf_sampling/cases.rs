@@ -11,7 +11,7 @@ use ch06_fuzzy_reflections::tracer::transmission_exponent;
 use ch08_path_tracing::bsdf::dielectric::side;
 use common::scene::Material as Smooth;
 use common::scene::Material;
-use common::scene::{Glossy, Microfacet, MicrofacetDistribution, Plastic};
+use common::scene::{Conductor, Glossy, Microfacet, MicrofacetDistribution, Plastic, RoughGlass};
 use glam::Vec3;
 
 /// Matte cases.
@@ -22,10 +22,12 @@ pub const GLOSSY: usize = 5;
 pub const DISC: usize = 2;
 /// Frosted glass cases.
 pub const ROUGH_GLASS: usize = 5;
-/// Rough plastic cases (the coat's stand-in lobe over the matte base).
+/// Rough plastic cases (Mitsuba's `roughplastic`: the microfacet coat over the matte base).
 pub const ROUGH_PLASTIC: usize = 2;
+/// Microfacet metals and glass placed at the hit (`bsdf::microfacet`).
+pub const MICROFACET: usize = 4;
 /// Every chi-square test of the file, for Šidák's correction.
-pub const TESTS: usize = DIFFUSE + GLOSSY + DISC + ROUGH_GLASS + ROUGH_PLASTIC;
+pub const TESTS: usize = DIFFUSE + GLOSSY + DISC + ROUGH_GLASS + ROUGH_PLASTIC + MICROFACET;
 
 /// The unit direction at `degrees` from the normal +y, above the floor or below it.
 fn at(degrees: f32, above: bool) -> Vec3 {
@@ -167,12 +169,9 @@ pub fn rough_glass() -> [Case; ROUGH_GLASS] {
 }
 
 /// Rough plastic of coat roughness `alpha` seen from `wo`: the base's cosine lobe and, around
-/// the mirror direction, the `cos^n` lobe standing in for the rough coat.
+/// the mirror direction, the microfacet coat's reflection.
 fn plastic_case(alpha: f32, two_sided: bool, chart: f32, wo: Vec3, name: &str) -> Case {
-    let roughness = Microfacet {
-        distribution: MicrofacetDistribution::Beckmann,
-        alpha,
-    };
+    let roughness = Microfacet::isotropic(MicrofacetDistribution::Beckmann, alpha);
     let material = Material::Plastic(Plastic {
         diffuse_reflectance: Vec3::new(0.2, 0.5, 0.8),
         specular_reflectance: Vec3::ONE,
@@ -200,5 +199,84 @@ pub fn rough_plastic() -> [Case; ROUGH_PLASTIC] {
     [
         plastic_case(0.3, false, 5.0, at(75.0, true), "75°"),
         plastic_case(0.1, true, 8.0, at(40.0, false), "two-sided from below, 40°"),
+    ]
+}
+
+/// A rough metal of widths `alpha_u`, `alpha_v` seen from `wo`, its strip around the mirror
+/// direction as wide as a lobe of exponent `chart`.
+fn metal_case(roughness: Microfacet, two_sided: bool, chart: f32, wo: Vec3, name: &str) -> Case {
+    let material = Material::Conductor(Conductor {
+        eta: Vec3::new(0.2, 0.9, 1.1),
+        k: Vec3::new(3.9, 2.4, 2.1),
+        specular_reflectance: Vec3::ONE,
+        two_sided,
+        roughness: Some(roughness),
+    });
+    let normal = facing(wo);
+    let lobes = vec![Lobe {
+        axis: reflect(-wo, normal),
+        side: normal,
+        exponent: chart,
+    }];
+    let name = format!(
+        "roughconductor alpha_u = {}, alpha_v = {}, {name}",
+        roughness.alpha_u, roughness.alpha_v
+    );
+    case(name, material, FuzzMethod::Lobe, wo, lobes)
+}
+
+/// Mitsuba's `roughdielectric` of roughness `alpha` (GGX) seen from `wo`: a strip around the
+/// mirror direction and one around the refracted direction.
+fn microfacet_glass_case(alpha: f32, chart: f32, wo: Vec3, name: &str) -> Case {
+    let roughness = Microfacet::isotropic(MicrofacetDistribution::Ggx, alpha);
+    let glass = RoughGlass {
+        int_ior: 1.5,
+        ext_ior: 1.0,
+        exponent: roughness.lobe_exponent(),
+        stands_in_for: Some(roughness),
+    };
+    let hit = floor_hit();
+    let (normal, eta) = side(&hit, wo, glass.int_ior, glass.ext_ior);
+    let mut lobes = vec![Lobe {
+        axis: reflect(-wo, normal),
+        side: normal,
+        exponent: chart,
+    }];
+    if let Some(refracted) = refract(-wo, normal, eta) {
+        lobes.push(Lobe {
+            axis: refracted,
+            side: -normal,
+            exponent: chart,
+        });
+    }
+    let name = format!("roughdielectric GGX alpha = {alpha}, {name}");
+    case(
+        name,
+        Material::RoughGlass(glass),
+        FuzzMethod::Lobe,
+        wo,
+        lobes,
+    )
+}
+
+/// The microfacet models through `Bsdf`: an anisotropic metal from above and, two-sided, from
+/// below (its frame's `z` turned round), and rough glass from both sides.
+pub fn microfacet() -> [Case; MICROFACET] {
+    let stretched = Microfacet {
+        distribution: MicrofacetDistribution::Beckmann,
+        alpha_u: 0.05,
+        alpha_v: 0.3,
+    };
+    [
+        metal_case(stretched, false, 8.0, at(50.0, true), "50°"),
+        metal_case(
+            stretched,
+            true,
+            8.0,
+            at(30.0, false),
+            "two-sided from below, 30°",
+        ),
+        microfacet_glass_case(0.2, 8.0, at(40.0, true), "from outside, 40°"),
+        microfacet_glass_case(0.1, 20.0, at(30.0, false), "from inside, 30°"),
     ]
 }

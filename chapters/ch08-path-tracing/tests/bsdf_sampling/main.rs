@@ -88,3 +88,8 @@ fn frosted_glass_reflects_and_transmits_with_its_density() {
 fn rough_plastic_samples_its_base_and_its_coat_with_their_density() {
     assert_all_deliver(&cases::rough_plastic());
 }
+
+#[test]
+fn microfacet_metals_and_glass_deliver_their_density_at_the_hit() {
+    assert_all_deliver(&cases::microfacet());
+}

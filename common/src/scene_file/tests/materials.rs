@@ -37,7 +37,7 @@ fn a_named_metal_is_mitsubas_rgb_index() {
            <float name="alpha" value="0.2"/></bsdf>"#,
     );
     assert_eq!(rough.eta.x, 1.6575009);
-    assert_eq!(rough.roughness.unwrap().alpha, 0.2);
+    assert_eq!(rough.roughness.unwrap().alpha(), 0.2);
     let both_sides = conductor(
         r#"<bsdf type="twosided"><bsdf type="conductor"><string name="material" value="Cu"/></bsdf></bsdf>"#,
     );
@@ -203,7 +203,7 @@ fn plastic_has_mitsubas_defaults_and_reads_every_parameter() {
     assert_eq!(shiny.diffuse_reflectance, Vec3::new(0.1, 0.27, 0.36));
     assert_eq!(shiny.int_ior, 1.9);
     assert!(shiny.nonlinear && shiny.two_sided);
-    assert_eq!(shiny.roughness.unwrap().alpha, 0.3);
+    assert_eq!(shiny.roughness.unwrap().alpha(), 0.3);
     let typo =
         material(r#"<bsdf type="plastic"><float name="intior" value="1.5"/></bsdf>"#).unwrap_err();
     assert!(typo.contains("has no property `intior`"), "{typo}");

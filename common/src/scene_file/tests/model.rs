@@ -75,7 +75,7 @@ fn rough_materials_keep_their_roughness_or_become_lobes_that_remember_it() {
     // Mitsuba's material="none": eta 0, k 1, which reflects everything.
     assert_eq!((metal.eta, metal.k), (Vec3::ZERO, Vec3::ONE));
     assert!(metal.two_sided);
-    assert_eq!(metal.roughness.unwrap().alpha, 0.1);
+    assert_eq!(metal.roughness.unwrap().alpha(), 0.1);
     // Chapters 06 and 07 render chapter 06's lobe in its place.
     let Some((Material::Glossy(glossy), _)) = rough.surfaces[0].material.lecture_stand_in() else {
         panic!("{:?}", rough.surfaces[0]);
@@ -108,6 +108,22 @@ fn what_no_chapter_renders_is_refused_where_it_is_written() {
             "unknown microfacet distribution",
         ),
         (
+            r#"<shape type="sphere"><bsdf type="roughconductor"><float name="alpha_u" value="0.1"/></bsdf></shape>"#,
+            "test.xml:2:50: alpha_u and alpha_v go together",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="roughdielectric"><float name="alpha" value="0.1"/><float name="alpha_u" value="0.1"/><float name="alpha_v" value="0.2"/></bsdf></shape>"#,
+            "give either alpha or alpha_u and alpha_v",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="roughplastic"><float name="alpha_u" value="0.1"/><float name="alpha_v" value="0.2"/></bsdf></shape>"#,
+            "roughplastic has one roughness in Mitsuba 3",
+        ),
+        (
+            r#"<shape type="sphere"><bsdf type="roughconductor"><float name="alpha_u" value="0.1"/><float name="alpha_v" value="0"/></bsdf></shape>"#,
+            "alpha_v must be a positive number, found 0",
+        ),
+        (
             r#"<shape type="sphere"><bsdf type="phong"><float name="exponent" value="-3"/></bsdf></shape>"#,
             "lobe exponent",
         ),
@@ -138,4 +154,23 @@ fn what_no_chapter_renders_is_refused_where_it_is_written() {
         error.contains("shutter_close 0.5 is before its shutter_open 1"),
         "{error}"
     );
+}
+
+#[test]
+fn an_anisotropic_roughness_keeps_both_widths_and_its_lobe_takes_their_mean() {
+    let rough = scene(&scene_with(
+        r#"<shape type="sphere"><bsdf type="roughconductor">
+             <float name="alpha_u" value="0.05"/><float name="alpha_v" value="0.2"/>
+           </bsdf></shape>"#,
+    ))
+    .unwrap();
+    let Material::Conductor(metal) = rough.surfaces[0].material else {
+        panic!("{:?}", rough.surfaces[0]);
+    };
+    let roughness = metal.roughness.unwrap();
+    assert_eq!((roughness.alpha_u, roughness.alpha_v), (0.05, 0.2));
+    assert!(roughness.is_anisotropic());
+    // The round lobe of chapters 06 and 07: alpha = sqrt(0.05 * 0.2) = 0.1, n = 2 / 0.01 - 2.
+    approx::assert_relative_eq!(roughness.alpha(), 0.1, max_relative = 1e-6);
+    approx::assert_relative_eq!(roughness.lobe_exponent(), 198.0, max_relative = 1e-4);
 }

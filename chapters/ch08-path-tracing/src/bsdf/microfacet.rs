@@ -1,0 +1,203 @@
+//! A file's rough materials at a hit, rendered by the [`microfacet`](crate::microfacet)
+//! module as Mitsuba 3 renders them: `roughconductor`, `roughplastic` and `roughdielectric`.
+//!
+//! The module works in a local frame (`z` the normal); this file puts that frame at the hit,
+//! turns `wo` and `wi` into it and the sampled direction back out. The frame's normal is the
+//! shading normal, on the side Mitsuba puts it:
+//!
+//! - a metal or a plastic is one-sided unless `twosided`: seen from behind it is black, or,
+//!   two-sided, the frame's `z` turns round and its tangents stay (Mitsuba's `twosided`
+//!   wrapper negates the local `z` of both directions);
+//! - glass is two-sided by nature: the normal stays on the outside and the sign of `wo.z`
+//!   says which medium the path is in.
+//!
+//! An anisotropic roughness (`alpha_u` along the tangent, `alpha_v` across) needs the
+//! tangent. Mitsuba's is the shape's `dp/du` made orthogonal to the shading normal; the
+//! workbook's hits carry no `dp/du`, so the tangent here is the one Mitsuba's `Frame3f(n)`
+//! builds from the normal alone ([`LocalFrame::around`]). Anisotropic surfaces then match
+//! Mitsuba only where its `dp/du` lies along that tangent: on a rectangle facing `+y` with no
+//! rotation about `y` (both give `+x`), not on spheres, where `dp/du` runs along the parallels.
+//!
+//! Random numbers: every sample draws one number that picks a lobe (reflection or refraction,
+//! coat or base; the metal has one lobe and ignores it) and then two for the facet or the
+//! direction, as Mitsuba's `sample(ctx, si, sample1, sample2)`, so the count is the same for
+//! all three.
+
+use super::{BsdfSample, facing_normal};
+use crate::microfacet::{
+    LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
+    RoughPlasticParameters,
+};
+use common::geometry::SurfaceHit;
+use common::scene::{Conductor, Microfacet, Plastic, RoughGlass};
+use glam::{Vec2, Vec3};
+
+/// An orthonormal frame at a hit: `normal` is the local `z`.
+#[derive(Clone, Copy, Debug)]
+pub struct LocalFrame {
+    tangent: Vec3,
+    bitangent: Vec3,
+    normal: Vec3,
+}
+
+impl LocalFrame {
+    /// A frame around the unit `normal` as Mitsuba's `coordinate_system(n)` builds it (Duff
+    /// et al. 2017, "Building an orthonormal basis, revisited", which glam's
+    /// `any_orthonormal_pair` implements with the same signs).
+    pub fn around(normal: Vec3) -> Self {
+        let (tangent, bitangent) = normal.any_orthonormal_pair();
+        Self {
+            tangent,
+            bitangent,
+            normal,
+        }
+    }
+
+    /// The frame at a one-sided or `twosided` surface seen from `wo`: around the shading
+    /// normal, its `z` turned towards `wo` when `two_sided` and `wo` is behind (the tangents
+    /// unchanged, as Mitsuba's `twosided` does); `None` from behind a one-sided surface.
+    pub fn facing(hit: &SurfaceHit, wo: Vec3, two_sided: bool) -> Option<Self> {
+        let normal = facing_normal(hit, wo, two_sided)?;
+        let frame = Self::around(hit.shading_n);
+        Some(Self { normal, ..frame })
+    }
+
+    /// `w` in the frame's coordinates.
+    pub fn to_local(&self, w: Vec3) -> Vec3 {
+        Vec3::new(
+            w.dot(self.tangent),
+            w.dot(self.bitangent),
+            w.dot(self.normal),
+        )
+    }
+
+    /// Local coordinates back in world space.
+    pub fn to_world(&self, v: Vec3) -> Vec3 {
+        v.x * self.tangent + v.y * self.bitangent + v.z * self.normal
+    }
+}
+
+/// The facets' distribution of a file's roughness, `alpha_u` along the frame's tangent.
+fn distribution(roughness: Microfacet) -> NormalDistribution {
+    NormalDistribution::new(roughness.distribution, roughness.alpha_u, roughness.alpha_v)
+}
+
+/// A microfacet material placed at a hit: the BSDF and its frame.
+pub struct Placed<B> {
+    bsdf: B,
+    frame: LocalFrame,
+}
+
+impl<B: LocalBsdf> Placed<B> {
+    /// Draws the lobe choice, then the two direction numbers, and samples.
+    pub fn sample(&self, wo: Vec3, choice: f32, u: Vec2) -> Option<BsdfSample> {
+        let local = self.bsdf.sample(self.frame.to_local(wo), choice, u)?;
+        Some(BsdfSample {
+            wi: self.frame.to_world(local.wi).normalize(),
+            ..local
+        })
+    }
+
+    /// `f(wo, wi) cos θ_i`.
+    pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
+        self.bsdf
+            .eval(self.frame.to_local(wo), self.frame.to_local(wi))
+    }
+
+    /// The density of [`sample`](Self::sample) at `wi`.
+    pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
+        self.bsdf
+            .pdf(self.frame.to_local(wo), self.frame.to_local(wi))
+    }
+}
+
+/// Mitsuba's `roughconductor` at `hit`, seen from `wo`.
+pub fn conductor(
+    hit: &SurfaceHit,
+    wo: Vec3,
+    metal: &Conductor,
+    roughness: Microfacet,
+) -> Option<Placed<RoughConductor>> {
+    let frame = LocalFrame::facing(hit, wo, metal.two_sided)?;
+    Some(Placed {
+        bsdf: RoughConductor {
+            distribution: distribution(roughness),
+            eta: metal.eta,
+            k: metal.k,
+            specular_reflectance: metal.specular_reflectance,
+        },
+        frame,
+    })
+}
+
+/// Mitsuba's `roughplastic` at `hit`, seen from `wo`. Its coating's table is tabulated once
+/// per roughness and index and looked up here ([`crate::microfacet::coating::Coating::shared`]).
+/// Mitsuba's `roughplastic` is isotropic (the loader reads only `alpha` for it); a model built
+/// in code with two widths gets their mean, [`Microfacet::alpha`].
+pub fn plastic(
+    hit: &SurfaceHit,
+    wo: Vec3,
+    plastic: &Plastic,
+    roughness: Microfacet,
+) -> Option<Placed<RoughPlastic>> {
+    let frame = LocalFrame::facing(hit, wo, plastic.two_sided)?;
+    let bsdf = RoughPlastic::new(RoughPlasticParameters {
+        kind: roughness.distribution,
+        alpha: roughness.alpha(),
+        eta: plastic.int_ior / plastic.ext_ior,
+        diffuse_reflectance: plastic.diffuse_reflectance,
+        specular_reflectance: plastic.specular_reflectance,
+        nonlinear: plastic.nonlinear,
+    });
+    Some(Placed { bsdf, frame })
+}
+
+/// Mitsuba's `roughdielectric` at `hit`: the normal on the outside, whichever side `wo` is.
+pub fn dielectric(
+    hit: &SurfaceHit,
+    glass: &RoughGlass,
+    roughness: Microfacet,
+) -> Placed<RoughDielectric> {
+    Placed {
+        bsdf: RoughDielectric::new(distribution(roughness), glass.int_ior, glass.ext_ior),
+        frame: LocalFrame::around(hit.shading_n),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::LocalFrame;
+    use glam::Vec3;
+
+    #[test]
+    fn the_frame_is_mitsubas_coordinate_system() {
+        // Mitsuba 3.9.1's `mi.coordinate_system` of these normals: its first vector.
+        for (n, s) in [
+            (
+                Vec3::new(0.3, 0.2, 0.932738),
+                Vec3::new(0.953434, -0.0310441, -0.3),
+            ),
+            (
+                Vec3::new(0.911043, 0.4, 0.1),
+                Vec3::new(0.245454, -0.331289, -0.911043),
+            ),
+            (Vec3::new(0.0, 1.0, 0.0), Vec3::new(1.0, 0.0, 0.0)),
+        ] {
+            let frame = LocalFrame::around(n.normalize());
+            assert!(
+                (frame.tangent - s).length() < 1e-4,
+                "{n}: {}",
+                frame.tangent
+            );
+        }
+    }
+
+    #[test]
+    fn the_frame_round_trips_and_puts_the_normal_on_z() {
+        let normal = Vec3::new(0.3, -0.5, 0.8).normalize();
+        let frame = LocalFrame::around(normal);
+        assert!((frame.to_local(normal) - Vec3::Z).length() < 1e-6);
+        let w = Vec3::new(-0.2, 0.9, 0.1).normalize();
+        assert!((frame.to_world(frame.to_local(w)) - w).length() < 1e-6);
+    }
+}
