@@ -224,8 +224,8 @@ fn read_bsdf_element<'a>(
 fn two_sided(inner: Material) -> Material {
     match inner {
         Material::Diffuse { albedo, .. } => Material::two_sided_diffuse(albedo),
-        Material::CheckeredDiffuse { checkerboard, .. } => Material::CheckeredDiffuse {
-            checkerboard,
+        Material::TexturedDiffuse { texture, .. } => Material::TexturedDiffuse {
+            texture,
             two_sided: true,
         },
         Material::Glossy(glossy) => Material::Glossy(Glossy {
