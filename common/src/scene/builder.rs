@@ -6,7 +6,6 @@ use super::{
 };
 use crate::geometry::{Geometry, Shape, TriangleMesh};
 use glam::{Mat4, Vec3};
-use std::sync::Arc;
 
 /// Collects shapes with their surfaces, and the lights; [`build`](Self::build) makes the BVH.
 #[derive(Default)]
@@ -16,7 +15,7 @@ pub struct SceneBuilder {
     moving: Vec<(AnimatedShape, Surface)>,
     point_lights: Vec<PointLight>,
     environment: Vec3,
-    bitmaps: Vec<Arc<Bitmap>>,
+    bitmaps: Vec<Bitmap>,
 }
 
 impl SceneBuilder {
@@ -80,7 +79,7 @@ impl SceneBuilder {
     }
 
     /// Adds an image for [`Texture::Bitmap`](super::Texture) to read, returning its number.
-    pub fn bitmap(&mut self, bitmap: Arc<Bitmap>) -> BitmapId {
+    pub fn bitmap(&mut self, bitmap: Bitmap) -> BitmapId {
         self.bitmaps.push(bitmap);
         BitmapId(self.bitmaps.len() as u32 - 1)
     }

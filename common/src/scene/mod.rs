@@ -39,7 +39,6 @@ pub use texture::{Bitmap, BitmapFilter, BitmapId, Checkerboard, Texture, WrapMod
 
 use crate::geometry::{Geometry, Shape};
 use glam::{Mat4, Vec2, Vec3};
-use std::sync::Arc;
 
 /// The recursion limit used for Mitsuba's "unlimited" `max_depth` (-1): mirrors facing each
 /// other would otherwise recurse without end.
@@ -57,7 +56,7 @@ pub struct Scene {
     pub surfaces: Vec<Surface>,
     /// The images the materials' textures read, each once ([`Texture::Bitmap`] holds its
     /// number here).
-    pub bitmaps: Vec<Arc<Bitmap>>,
+    pub bitmaps: Vec<Bitmap>,
     /// The point lights.
     pub point_lights: Vec<PointLight>,
     /// Radiance of every ray that leaves the scene (Mitsuba's `constant` emitter); black for a

@@ -2,7 +2,7 @@ use super::*;
 
 /// A 2 x 2 image: red, green on the top row; blue, white below.
 fn quad(filter: BitmapFilter, wrap: WrapMode) -> Bitmap {
-    let mut bitmap = Bitmap::new(2, 2, vec![Vec3::X, Vec3::Y, Vec3::Z, Vec3::ONE]).unwrap();
+    let mut bitmap = Bitmap::new(2, 2, vec![Vec3::X, Vec3::Y, Vec3::Z, Vec3::ONE].into()).unwrap();
     bitmap.filter = filter;
     bitmap.wrap = wrap;
     bitmap
@@ -79,10 +79,10 @@ fn bilinear_lookups_agree_with_mitsuba() {
 
 #[test]
 fn a_bitmap_needs_one_pixel_per_place() {
-    assert!(Bitmap::new(2, 2, vec![Vec3::ONE; 3]).is_none());
-    assert!(Bitmap::new(0, 0, vec![]).is_none());
+    assert!(Bitmap::new(2, 2, vec![Vec3::ONE; 3].into()).is_none());
+    assert!(Bitmap::new(0, 0, Vec::new().into()).is_none());
     assert_eq!(
-        Bitmap::new(3, 1, vec![Vec3::ONE; 3]).unwrap().size(),
+        Bitmap::new(3, 1, vec![Vec3::ONE; 3].into()).unwrap().size(),
         (3, 1)
     );
 }

@@ -10,6 +10,7 @@ mod mesh_scenes;
 mod model;
 mod never_panics;
 mod spectra;
+mod textures;
 mod transforms;
 mod warnings;
 

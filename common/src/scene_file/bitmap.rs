@@ -1,0 +1,136 @@
+//! Image files for `bitmap` textures: PNG, JPEG and OpenEXR, decoded into linear RGB as
+//! Mitsuba 3 does.
+//!
+//! An 8- or 16-bit image (PNG, JPEG) stores sRGB-encoded values, which Mitsuba turns into
+//! linear ones unless the texture says `raw` (for data that is not a colour); a floating-point
+//! image (EXR) is linear already. Alpha is dropped; a grey image gives three equal channels.
+
+use glam::Vec3;
+use image::{DynamicImage, ImageReader};
+use std::io::Cursor;
+use std::path::Path;
+use std::sync::Arc;
+
+/// The pixels of one image file, decoded, in linear RGB (sRGB decoded unless read `raw`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DecodedImage {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Row by row from the top, each row from the left.
+    pub pixels: Arc<[Vec3]>,
+}
+
+/// Reads and decodes the image file at `path`; errors name it.
+pub fn load_bitmap(path: &Path, raw: bool) -> Result<DecodedImage, String> {
+    let bytes = std::fs::read(path)
+        .map_err(|e| format!("cannot read the image {}: {e}", path.display()))?;
+    parse_bitmap(&bytes, raw).map_err(|e| format!("the image {}: {e}", path.display()))
+}
+
+/// Decodes the bytes of a PNG, JPEG or EXR file (the format is told by its first bytes).
+pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
+    let image = ImageReader::new(Cursor::new(bytes))
+        .with_guessed_format()
+        .map_err(|e| format!("cannot tell its format: {e}"))?
+        .decode()
+        .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
+    let (width, height) = (image.width(), image.height());
+    if width == 0 || height == 0 {
+        return Err(format!(
+            "the image is {width} x {height} pixels: it has no pixel"
+        ));
+    }
+    let is_float = matches!(
+        image,
+        DynamicImage::ImageRgb32F(_) | DynamicImage::ImageRgba32F(_)
+    );
+    let decode = !is_float && !raw;
+    let pixels = image
+        .into_rgb32f()
+        .pixels()
+        .map(|p| {
+            let colour = Vec3::from(p.0);
+            if decode {
+                colour.map(srgb_to_linear)
+            } else {
+                colour
+            }
+        })
+        .collect();
+    Ok(DecodedImage {
+        width,
+        height,
+        pixels,
+    })
+}
+
+/// The sRGB transfer function's inverse: an encoded value in `[0, 1]` to linear light.
+pub fn srgb_to_linear(encoded: f32) -> f32 {
+    if encoded <= 0.04045 {
+        encoded / 12.92
+    } else {
+        ((encoded + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use image::{ImageFormat, Rgb, RgbImage};
+
+    fn png(pixels: &[[u8; 3]], width: u32) -> Vec<u8> {
+        let height = pixels.len() as u32 / width;
+        let image = RgbImage::from_fn(width, height, |x, y| Rgb(pixels[(y * width + x) as usize]));
+        let mut bytes = Vec::new();
+        image
+            .write_to(&mut Cursor::new(&mut bytes), ImageFormat::Png)
+            .unwrap();
+        bytes
+    }
+
+    #[test]
+    fn an_srgb_png_is_decoded_as_mitsuba_decodes_it() {
+        // Mitsuba 3.9.1 reads the 8-bit pixel (187, 123, 243) as (0.496933, 0.198069, 0.896269),
+        // and with `raw` as (0.733333, 0.482353, 0.952941).
+        let bytes = png(&[[187, 123, 243]], 1);
+        let decoded = parse_bitmap(&bytes, false).unwrap();
+        let mitsuba = Vec3::new(0.496933, 0.198069, 0.896269);
+        assert!(
+            decoded.pixels[0].abs_diff_eq(mitsuba, 1e-5),
+            "{}",
+            decoded.pixels[0]
+        );
+        let raw = parse_bitmap(&bytes, true).unwrap();
+        let mitsuba_raw = Vec3::new(0.733333, 0.482353, 0.952941);
+        assert!(
+            raw.pixels[0].abs_diff_eq(mitsuba_raw, 1e-5),
+            "{}",
+            raw.pixels[0]
+        );
+    }
+
+    #[test]
+    fn rows_start_at_the_top() {
+        let decoded = parse_bitmap(&png(&[[255, 0, 0], [0, 0, 255]], 1), true).unwrap();
+        assert_eq!((decoded.width, decoded.height), (1, 2));
+        assert_eq!(decoded.pixels[0], Vec3::X);
+        assert_eq!(decoded.pixels[1], Vec3::Z);
+    }
+
+    #[test]
+    fn bytes_that_are_no_image_are_refused_in_words() {
+        let message = parse_bitmap(b"not an image", false).unwrap_err();
+        assert!(message.contains("PNG, JPEG or EXR"), "{message}");
+        let mut truncated = png(&[[1, 2, 3]; 16], 4);
+        truncated.truncate(truncated.len() / 2);
+        assert!(parse_bitmap(&truncated, false).is_err());
+    }
+
+    #[test]
+    fn a_missing_file_is_named() {
+        let message = load_bitmap(Path::new("/nowhere/wood.png"), false).unwrap_err();
+        assert!(message.contains("/nowhere/wood.png"), "{message}");
+    }
+}
