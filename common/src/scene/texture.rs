@@ -6,6 +6,7 @@
 //! reads a texture at a hit's surface parameters `uv`; every chapter goes through it.
 
 use glam::{Affine2, Vec2, Vec3};
+use std::sync::Arc;
 
 /// A colour over the surface parameters `uv`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -84,8 +85,9 @@ pub enum WrapMode {
 pub struct Bitmap {
     width: u32,
     height: u32,
-    /// Row by row from the top, each row from the left.
-    pixels: Vec<Vec3>,
+    /// Row by row from the top, each row from the left; shared by the textures that read the
+    /// same file.
+    pixels: Arc<[Vec3]>,
     /// How to read between pixels.
     pub filter: BitmapFilter,
     /// What to show outside the image.
@@ -97,7 +99,7 @@ pub struct Bitmap {
 impl Bitmap {
     /// An image of `width` x `height` linear RGB `pixels` (row by row from the top), read
     /// bilinearly and repeated; `None` when the sizes do not match or the image is empty.
-    pub fn new(width: u32, height: u32, pixels: Vec<Vec3>) -> Option<Self> {
+    pub fn new(width: u32, height: u32, pixels: Arc<[Vec3]>) -> Option<Self> {
         let expected = (width as usize).checked_mul(height as usize)?;
         if expected == 0 || pixels.len() != expected {
             return None;
