@@ -2,7 +2,7 @@
 //! `<texture name="reflectance" ...>` or declared apart with an id and named by
 //! `<ref name="reflectance" id="..."/>`.
 
-use glam::{Affine2, Mat2, Mat4, Vec2, Vec3};
+use glam::{Affine2, Mat2, Mat4, Vec3};
 
 use super::bitmap::load_bitmap;
 use super::element::Element;
@@ -229,6 +229,7 @@ pub(super) fn refuse_texture(reader: &Reader, plugin: &str, texture: &NamedTextu
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::Vec2;
 
     #[test]
     fn to_uv_keeps_x_y_and_the_translation() {

@@ -12,6 +12,7 @@ mod never_panics;
 mod spectra;
 mod textures;
 mod transforms;
+mod uv_parameterisations;
 mod warnings;
 
 use std::path::Path;
