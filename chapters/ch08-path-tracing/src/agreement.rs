@@ -37,6 +37,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "smooth plastic (linear and nonlinear) under an area light, with its light sample and MIS, and a thin glass pane that shows the light in its reflection and casts a shadow",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "textured",
+            checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere; each shape's uv as Mitsuba's",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };
