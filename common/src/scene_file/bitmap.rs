@@ -128,6 +128,50 @@ mod tests {
         assert!(parse_bitmap(&truncated, false).is_err());
     }
 
+    /// Cases per property: `SCENE_FUZZ_CASES`, or 256.
+    fn cases() -> u32 {
+        std::env::var("SCENE_FUZZ_CASES")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(256)
+    }
+
+    /// A valid 4 x 4 PNG, to be broken by the property below.
+    fn small_png() -> Vec<u8> {
+        png(&[[200, 100, 50]; 16], 4)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: cases(),
+            failure_persistence: None,
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+
+        /// Any bytes: an error, or an image with one finite pixel per place.
+        #[test]
+        fn random_bytes_never_panic(bytes in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..512), raw: bool) {
+            if let Ok(image) = parse_bitmap(&bytes, raw) {
+                proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
+            }
+        }
+
+        /// A PNG with some bytes changed (past the signature, so the decoder is reached).
+        #[test]
+        fn a_damaged_png_never_panics(
+            changes in proptest::collection::vec((proptest::prelude::any::<proptest::sample::Index>(), proptest::prelude::any::<u8>()), 1..8),
+        ) {
+            let mut bytes = small_png();
+            for (at, byte) in changes {
+                let i = at.index(bytes.len());
+                bytes[i] = byte;
+            }
+            if let Ok(image) = parse_bitmap(&bytes, false) {
+                proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
+            }
+        }
+    }
+
     #[test]
     fn a_missing_file_is_named() {
         let message = load_bitmap(Path::new("/nowhere/wood.png"), false).unwrap_err();
