@@ -140,7 +140,7 @@ impl Slip {
             }
             Slip::CheckerboardIgnored => {
                 "the checkered floor has one colour: its albedo at the hit is \
-                 checkerboard.eval(hit.uv)"
+                 scene.albedo(texture, hit.uv)"
             }
         }
     }
