@@ -66,6 +66,20 @@ pub fn named_ior_names() -> Vec<&'static str> {
     NAMED_IORS.iter().map(|(material, _)| *material).collect()
 }
 
+/// The BSDF types the workbook renders.
+const KNOWN_BSDF_TYPES: &[&str] = &[
+    "diffuse",
+    "conductor",
+    "dielectric",
+    "thindielectric",
+    "plastic",
+    "twosided",
+    "phong",
+    "roughconductor",
+    "roughplastic",
+    "roughdielectric",
+];
+
 /// The BSDF types the workbook renders, for messages.
 const KNOWN_BSDFS: &str = "diffuse, conductor, dielectric, thindielectric, plastic, twosided, \
      phong, roughconductor, roughplastic and roughdielectric";
@@ -114,7 +128,10 @@ fn read_bsdf_element<'a>(
         "diffuse" => take_named(&mut textures, "reflectance"),
         _ => None,
     };
-    if let Some(texture) = textures.first() {
+    // An unknown type is named as such below, before any of its textures.
+    if let Some(texture) = textures.first()
+        && KNOWN_BSDF_TYPES.contains(&type_name.as_str())
+    {
         return Err(refuse_texture(
             reader,
             &format!("{type_name} bsdf"),

@@ -158,6 +158,10 @@ fn textures_are_refused_where_they_cannot_be_rendered_yet() {
             "needs the name of the parameter",
         ),
         (
+            r#"<bsdf type="bumpmap"><texture type="checkerboard" name="map"/></bsdf>"#,
+            "bsdf type \"bumpmap\" is not one the workbook renders",
+        ),
+        (
             r#"<bsdf type="diffuse"><texture type="mesh_attribute" name="reflectance"/></bsdf>"#,
             "texture type \"mesh_attribute\" is not one the workbook renders",
         ),
