@@ -29,15 +29,31 @@ pub fn load_bitmap(path: &Path, raw: bool) -> Result<DecodedImage, String> {
     parse_bitmap(&bytes, raw).map_err(|e| format!("the image {}: {e}", path.display()))
 }
 
+/// The most pixels an image may have: 2^25, such as 8192 x 4096 (about 400 MB once decoded).
+/// A header that claims more is refused before anything is allocated for it.
+pub const MAX_BITMAP_PIXELS: u64 = 1 << 25;
+
 /// Decodes the bytes of a PNG, JPEG or EXR file (the format is told by its first bytes).
 pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
-    let image = ImageReader::new(Cursor::new(bytes))
-        .with_guessed_format()
-        .map_err(|e| format!("cannot tell its format: {e}"))?
+    let reader = || {
+        ImageReader::new(Cursor::new(bytes))
+            .with_guessed_format()
+            .map_err(|e| format!("cannot tell its format: {e}"))
+    };
+    let (width, height) = reader()?
+        .into_dimensions()
+        .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
+    if u64::from(width) * u64::from(height) > MAX_BITMAP_PIXELS {
+        return Err(format!(
+            "the image is {width} x {height} pixels, more than the {MAX_BITMAP_PIXELS} a texture \
+             may have"
+        ));
+    }
+    let image = reader()?
         .decode()
         .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
     let (width, height) = (image.width(), image.height());
-    if width == 0 || height == 0 {
+    if u64::from(width) * u64::from(height) > MAX_BITMAP_PIXELS || width == 0 || height == 0 {
         return Err(format!(
             "the image is {width} x {height} pixels: it has no pixel"
         ));
@@ -170,6 +186,43 @@ mod tests {
                 proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
             }
         }
+    }
+
+    /// The CRC-32 of a PNG chunk's type and data.
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut crc = !0u32;
+        for &byte in bytes {
+            crc ^= u32::from(byte);
+            for _ in 0..8 {
+                crc = if crc & 1 == 1 {
+                    (crc >> 1) ^ 0xEDB8_8320
+                } else {
+                    crc >> 1
+                };
+            }
+        }
+        !crc
+    }
+
+    #[test]
+    fn an_image_claiming_too_many_pixels_is_refused_before_decoding() {
+        // `cargo fuzz run bitmap` found an EXR whose header claimed so many pixels that decoding
+        // it ran out of memory. Here a PNG header claims 65536 x 65536 pixels and no data
+        // follows: the size alone must refuse it.
+        let mut ihdr = b"IHDR".to_vec();
+        ihdr.extend_from_slice(&65536u32.to_be_bytes());
+        ihdr.extend_from_slice(&65536u32.to_be_bytes());
+        ihdr.extend_from_slice(&[8, 2, 0, 0, 0]); // 8-bit RGB, no interlacing
+        let mut bytes = b"\x89PNG\r\n\x1a\n".to_vec();
+        bytes.extend_from_slice(&13u32.to_be_bytes());
+        bytes.extend_from_slice(&ihdr);
+        bytes.extend_from_slice(&crc32(&ihdr).to_be_bytes());
+        // An empty IDAT chunk: where the header ends and the pixels would begin.
+        bytes.extend_from_slice(&0u32.to_be_bytes());
+        bytes.extend_from_slice(b"IDAT");
+        bytes.extend_from_slice(&crc32(b"IDAT").to_be_bytes());
+        let message = parse_bitmap(&bytes, false).unwrap_err();
+        assert!(message.contains("more than"), "{message}");
     }
 
     #[test]
