@@ -6,7 +6,7 @@
 //! image (EXR) is linear already. Alpha is dropped; a grey image gives three equal channels.
 
 use glam::Vec3;
-use image::{DynamicImage, ImageReader};
+use image::{DynamicImage, ImageDecoder, ImageReader};
 use std::io::Cursor;
 use std::path::Path;
 use std::sync::Arc;
@@ -35,27 +35,26 @@ pub const MAX_BITMAP_PIXELS: u64 = 1 << 25;
 
 /// Decodes the bytes of a PNG, JPEG or EXR file (the format is told by its first bytes).
 pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
-    let reader = || {
-        ImageReader::new(Cursor::new(bytes))
-            .with_guessed_format()
-            .map_err(|e| format!("cannot tell its format: {e}"))
-    };
-    let (width, height) = reader()?
-        .into_dimensions()
+    let decoder = ImageReader::new(Cursor::new(bytes))
+        .with_guessed_format()
+        .map_err(|e| format!("cannot tell its format: {e}"))?
+        .into_decoder()
         .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
-    if u64::from(width) * u64::from(height) > MAX_BITMAP_PIXELS {
+    // What the decoder will allocate, asked before it does: a header may claim anything.
+    let (width, height) = decoder.dimensions();
+    let pixels = u64::from(width) * u64::from(height);
+    if pixels > MAX_BITMAP_PIXELS || decoder.total_bytes() > MAX_BITMAP_PIXELS * 16 {
         return Err(format!(
             "the image is {width} x {height} pixels, more than the {MAX_BITMAP_PIXELS} a texture \
              may have"
         ));
     }
-    let image = reader()?
-        .decode()
+    let image = DynamicImage::from_decoder(decoder)
         .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
     let (width, height) = (image.width(), image.height());
     if u64::from(width) * u64::from(height) > MAX_BITMAP_PIXELS || width == 0 || height == 0 {
         return Err(format!(
-            "the image is {width} x {height} pixels: it has no pixel"
+            "the image is {width} x {height} pixels: none, or too many"
         ));
     }
     let is_float = matches!(
