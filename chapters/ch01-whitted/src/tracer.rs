@@ -37,14 +37,11 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
         Material::Diffuse { albedo, two_sided } => {
             direct_light(world, ray, &hit, albedo, two_sided, counters)
         }
-        Material::CheckeredDiffuse {
-            checkerboard,
-            two_sided,
-        } => direct_light(
+        Material::TexturedDiffuse { texture, two_sided } => direct_light(
             world,
             ray,
             &hit,
-            checkerboard.eval(hit.uv),
+            scene.albedo(texture, hit.uv),
             two_sided,
             counters,
         ),

@@ -337,3 +337,40 @@ fn a_gold_sphere_renders_as_the_mirror_of_its_colour_square_on_with_a_note() {
     // And gold is not white: the blue wall in it is darkened more than the rest.
     assert!(reflectance.x > 0.9 && reflectance.z < 0.5, "{reflectance}");
 }
+
+#[test]
+fn a_textured_diffuse_surface_shows_its_texture_at_each_hit() {
+    // A rectangle filling the view, red where u and v are on the same side of 1/2, blue
+    // elsewhere. Looking down -z with +y up, the image's left is world -x: the top-left
+    // quarter has u < 1/2 < v, blue. Mitsuba 3 renders this scene blue at pixel (1, 1) and
+    // red at (6, 1) and (1, 6).
+    let text = scene_with(
+        "",
+        r#"<shape type="rectangle">
+             <transform name="to_world"><scale x="3" y="3"/></transform>
+             <bsdf type="diffuse"><texture type="checkerboard" name="reflectance">
+               <rgb name="color0" value="0.9, 0, 0"/><rgb name="color1" value="0, 0, 0.9"/>
+             </texture></bsdf>
+           </shape>
+           <emitter type="point"><point name="position" x="0" y="0" z="3"/>
+             <rgb name="intensity" value="10"/></emitter>"#,
+    );
+    let loaded = parse_scene(&text, Path::new("test.xml"), &[]).unwrap();
+    let notes = convert(&loaded.scene).expect("chapter 01 renders textures");
+    assert!(
+        !notes.iter().any(|note| note.contains("texture")),
+        "{notes:?}"
+    );
+    let settings = RenderSettings::new(8, 8, 1);
+    let image = render(&loaded.scene, &settings, PixelPattern::Centre, 0)
+        .unwrap()
+        .image;
+    let (top_left, top_right) = (image.get(1, 1), image.get(6, 1));
+    let (bottom_left, bottom_right) = (image.get(1, 6), image.get(6, 6));
+    for red in [top_right, bottom_left] {
+        assert!(red.x > 0.0 && red.z == 0.0, "{red}");
+    }
+    for blue in [top_left, bottom_right] {
+        assert!(blue.z > 0.0 && blue.x == 0.0, "{blue}");
+    }
+}

@@ -9,6 +9,7 @@
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{
     Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
+    Texture,
 };
 use glam::{Vec2, Vec3};
 
@@ -99,11 +100,11 @@ const PLANE_HALF_SIDE: f32 = 1000.0;
 fn checkerboard(max_depth: u32) -> Scene {
     let side = 2.0 * PLANE_HALF_SIDE;
     // One period of the texture is two squares; squares of 1 x 1 world units.
-    let checks = Checkerboard {
-        colour0: Vec3::splat(0.85),
-        colour1: Vec3::splat(0.08),
-        scale: Vec2::splat(side / 2.0),
-    };
+    let checks = Checkerboard::scaled(
+        Vec3::splat(0.85),
+        Vec3::splat(0.08),
+        Vec2::splat(side / 2.0),
+    );
     let floor = Parallelogram::new(
         Vec3::new(-PLANE_HALF_SIDE, 0.0, -PLANE_HALF_SIDE),
         Vec3::new(0.0, 0.0, side),
@@ -113,8 +114,8 @@ fn checkerboard(max_depth: u32) -> Scene {
         .environment(Vec3::new(0.55, 0.7, 0.95))
         .shape(
             Shape::Parallelogram(floor),
-            Material::CheckeredDiffuse {
-                checkerboard: checks,
+            Material::TexturedDiffuse {
+                texture: Texture::Checkerboard(checks),
                 two_sided: false,
             },
         )

@@ -15,6 +15,7 @@ use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH};
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{
     Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
+    Texture,
 };
 use glam::{Mat4, Vec2, Vec3};
 
@@ -74,12 +75,8 @@ impl Builtin {
 
 /// A checkerboard material with squares `1 / (2 scale)` of the surface parameters wide.
 fn checkered(colour0: Vec3, colour1: Vec3, scale: f32) -> Material {
-    Material::CheckeredDiffuse {
-        checkerboard: Checkerboard {
-            colour0,
-            colour1,
-            scale: Vec2::splat(scale),
-        },
+    Material::TexturedDiffuse {
+        texture: Texture::Checkerboard(Checkerboard::scaled(colour0, colour1, Vec2::splat(scale))),
         two_sided: false,
     }
 }

@@ -14,6 +14,7 @@ use ch05_motion_blur::MotionScene;
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{
     Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
+    Texture,
 };
 use glam::{Vec2, Vec3};
 
@@ -119,12 +120,8 @@ fn matte(albedo: Vec3) -> Material {
 }
 
 fn checkered(colour0: Vec3, colour1: Vec3, scale: Vec2) -> Material {
-    Material::CheckeredDiffuse {
-        checkerboard: Checkerboard {
-            colour0,
-            colour1,
-            scale,
-        },
+    Material::TexturedDiffuse {
+        texture: Texture::Checkerboard(Checkerboard::scaled(colour0, colour1, scale)),
         two_sided: false,
     }
 }

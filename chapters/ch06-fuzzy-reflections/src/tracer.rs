@@ -87,14 +87,11 @@ impl<L: Lighting> Tracer<'_, L> {
             Material::Diffuse { albedo, two_sided } => self
                 .lighting
                 .matte(world, ray, &hit, albedo, two_sided, sampler, counters),
-            Material::CheckeredDiffuse {
-                checkerboard,
-                two_sided,
-            } => self.lighting.matte(
+            Material::TexturedDiffuse { texture, two_sided } => self.lighting.matte(
                 world,
                 ray,
                 &hit,
-                checkerboard.eval(hit.uv),
+                world.scene.albedo(texture, hit.uv),
                 two_sided,
                 sampler,
                 counters,

@@ -149,7 +149,7 @@ fn glass_smooth_or_frosted_in_the_furnace_keeps_at_most_what_it_receives() {
                     if matches!(
                         material,
                         Material::Diffuse { .. }
-                            | Material::CheckeredDiffuse { .. }
+                            | Material::TexturedDiffuse { .. }
                             | Material::Mirror { .. }
                             | Material::Dielectric { .. }
                     ) || below == BelowSurface::Reflect

@@ -123,12 +123,12 @@ fn a_lobe_of_exponent_1e6_reflects_the_mirror_image() {
 /// A checkered wall seen through a pane of `pane` (or no pane), lit from between them, so
 /// that the pane casts no shadow on what is seen through it.
 fn pane_scene(pane: Option<Material>) -> MotionScene {
-    let checker = SmoothMaterial::CheckeredDiffuse {
-        checkerboard: common::scene::Checkerboard {
-            colour0: Vec3::splat(0.8),
-            colour1: Vec3::new(0.2, 0.3, 0.6),
-            scale: Vec2::splat(6.0),
-        },
+    let checker = SmoothMaterial::TexturedDiffuse {
+        texture: common::scene::Texture::Checkerboard(common::scene::Checkerboard::scaled(
+            Vec3::splat(0.8),
+            Vec3::new(0.2, 0.3, 0.6),
+            Vec2::splat(6.0),
+        )),
         two_sided: false,
     };
     let wall = Shape::Parallelogram(Parallelogram::new(

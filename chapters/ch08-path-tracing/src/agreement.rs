@@ -47,6 +47,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "roughplastic with Beckmann and GGX coatings (linear and nonlinear) and a GGX roughdielectric sphere: the coating's tabulated transmittance, reflection and refraction through facets",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "textured",
+            checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere; each shape's uv as Mitsuba's",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

@@ -56,11 +56,12 @@ impl BsdfSample {
     }
 }
 
-/// A material at a hit point, ready to scatter: the material, its albedo at the hit (a
-/// checkerboard is read here), the hit and the lobe family.
+/// A material at a hit point, ready to scatter: the material with its texture read at the hit
+/// (`Scene::material_at`), the hit and the lobe family.
 #[derive(Clone, Copy, Debug)]
 pub struct Bsdf<'a> {
-    /// The material.
+    /// The material, its texture read at the hit by `Scene::material_at` (a
+    /// `TexturedDiffuse` that has not been read reflects nothing).
     pub material: &'a Material,
     /// The surface point.
     pub hit: &'a SurfaceHit,
@@ -74,7 +75,7 @@ impl Bsdf<'_> {
     pub fn is_delta(&self) -> bool {
         match self.material {
             Material::Mirror { .. } | Material::Dielectric { .. } => true,
-            Material::Diffuse { .. } | Material::CheckeredDiffuse { .. } => false,
+            Material::Diffuse { .. } | Material::TexturedDiffuse { .. } => false,
             Material::Glossy(g) => !g.exponent.is_finite(),
             Material::RoughGlass(g) => g.stands_in_for.is_none() && !g.exponent.is_finite(),
             // A microfacet metal is never a delta: its roughness is at least `MIN_ALPHA`.
@@ -93,16 +94,8 @@ impl Bsdf<'_> {
             Material::Diffuse { albedo, two_sided } => {
                 diffuse::sample(hit, wo, albedo, two_sided, sampler.get_2d())
             }
-            Material::CheckeredDiffuse {
-                checkerboard,
-                two_sided,
-            } => diffuse::sample(
-                hit,
-                wo,
-                checkerboard.eval(hit.uv),
-                two_sided,
-                sampler.get_2d(),
-            ),
+            // Read by `Scene::material_at` before a `Bsdf` is made: nothing left to sample.
+            Material::TexturedDiffuse { .. } => None,
             Material::Mirror { reflectance } => mirror::sample(hit, wo, reflectance),
             Material::Dielectric { int_ior, ext_ior } => {
                 dielectric::sample(hit, wo, int_ior, ext_ior, sampler.get_1d())
@@ -164,10 +157,7 @@ impl Bsdf<'_> {
             Material::Diffuse { albedo, two_sided } => {
                 diffuse::eval(hit, wo, wi, albedo, two_sided)
             }
-            Material::CheckeredDiffuse {
-                checkerboard,
-                two_sided,
-            } => diffuse::eval(hit, wo, wi, checkerboard.eval(hit.uv), two_sided),
+            Material::TexturedDiffuse { .. } => Vec3::ZERO, // see `sample`
             Material::Mirror { .. } | Material::Dielectric { .. } => Vec3::ZERO,
             Material::Glossy(g) => glossy::eval(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => match g.stands_in_for {
@@ -193,7 +183,7 @@ impl Bsdf<'_> {
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         let hit = self.hit;
         match *self.material {
-            Material::Diffuse { two_sided, .. } | Material::CheckeredDiffuse { two_sided, .. } => {
+            Material::Diffuse { two_sided, .. } | Material::TexturedDiffuse { two_sided, .. } => {
                 diffuse::pdf(hit, wo, wi, two_sided)
             }
             Material::Mirror { .. } | Material::Dielectric { .. } => 0.0,

@@ -148,7 +148,7 @@ impl<'a> DistributionTracer<'a> {
             return radiance; // no segment left to carry reflected light
         }
         let bsdf = Bsdf {
-            material: &self.world.scene.surface(hit.shape).material,
+            material: &self.world.scene.material_at(hit.shape, hit.uv),
             hit: &hit,
             fuzz: self.fuzz,
         };
@@ -211,14 +211,11 @@ impl<'a> DistributionTracer<'a> {
     }
 }
 
-/// The albedo and sidedness of a matte material (its checkerboard read at the hit).
+/// The albedo and sidedness of a matte material (its texture already read at the hit by
+/// `Scene::material_at`).
 fn matte(bsdf: &Bsdf) -> Option<(Vec3, bool)> {
     match *bsdf.material {
         Material::Diffuse { albedo, two_sided } => Some((albedo, two_sided)),
-        Material::CheckeredDiffuse {
-            checkerboard,
-            two_sided,
-        } => Some((checkerboard.eval(bsdf.hit.uv), two_sided)),
         _ => None,
     }
 }

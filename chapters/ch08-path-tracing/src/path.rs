@@ -207,7 +207,7 @@ impl PathTracer<'_> {
             return None; // no segment left for a light sample or a bounce
         }
         let bsdf = Bsdf {
-            material: &self.world.scene.surface(hit.shape).material,
+            material: &self.world.scene.material_at(hit.shape, hit.uv),
             hit: &hit,
             fuzz: self.fuzz,
         };
@@ -820,7 +820,7 @@ mod tests {
             let ray = Ray::new(eye, -eye.normalize());
             let hit = world.intersect(&ray).expect("the floor");
             let bsdf = Bsdf {
-                material: &world.scene.surface(hit.shape).material,
+                material: &world.scene.material_at(hit.shape, hit.uv),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
             };
@@ -928,7 +928,7 @@ mod tests {
             let ray = Ray::new(eye, -eye.normalize());
             let hit = world.intersect(&ray).expect("the floor");
             let bsdf = Bsdf {
-                material: &world.scene.surface(hit.shape).material,
+                material: &world.scene.material_at(hit.shape, hit.uv),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
             };

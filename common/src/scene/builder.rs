@@ -1,8 +1,8 @@
 //! Building a scene in code: the chapters' built-in scenes, and the tests'.
 
 use super::{
-    AnimatedShape, AreaEmitter, Camera, FilmSettings, Integrator, Material, Origins, PointLight,
-    SamplerSettings, Scene, Surface,
+    AnimatedShape, AreaEmitter, Bitmap, BitmapId, Camera, FilmSettings, Integrator, Material,
+    Origins, PointLight, SamplerSettings, Scene, Surface,
 };
 use crate::geometry::{Geometry, Shape, TriangleMesh};
 use glam::{Mat4, Vec3};
@@ -15,6 +15,7 @@ pub struct SceneBuilder {
     moving: Vec<(AnimatedShape, Surface)>,
     point_lights: Vec<PointLight>,
     environment: Vec3,
+    bitmaps: Vec<Bitmap>,
 }
 
 impl SceneBuilder {
@@ -77,6 +78,12 @@ impl SceneBuilder {
         self
     }
 
+    /// Adds an image for [`Texture::Bitmap`](super::Texture) to read, returning its number.
+    pub fn bitmap(&mut self, bitmap: Bitmap) -> BitmapId {
+        self.bitmaps.push(bitmap);
+        BitmapId(self.bitmaps.len() as u32 - 1)
+    }
+
     /// Builds the BVH and the scene, seen by `camera` on `film`, with Mitsuba's `path`
     /// integrator limited to `max_depth` segments and its default sampler.
     pub fn build(self, camera: Camera, film: FilmSettings, max_depth: u32) -> Scene {
@@ -88,6 +95,7 @@ impl SceneBuilder {
             geometry: Geometry::new(self.shapes),
             moving,
             surfaces,
+            bitmaps: self.bitmaps,
             point_lights: self.point_lights,
             environment: self.environment,
             camera,

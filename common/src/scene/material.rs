@@ -8,7 +8,8 @@
 //! or refuse them. How each is traced or sampled is the chapters' business; here they are only
 //! data.
 
-use glam::{Vec2, Vec3};
+use super::Texture;
+use glam::Vec3;
 
 /// How a surface scatters light.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -21,10 +22,12 @@ pub enum Material {
         /// from behind); its `twosided` wrapper makes both sides reflect.
         two_sided: bool,
     },
-    /// Matte with a checkerboard albedo: Whitted's 1980 floor.
-    CheckeredDiffuse {
-        /// The albedo at each point of the surface.
-        checkerboard: Checkerboard,
+    /// Matte with an albedo that varies over the surface: Whitted's checkered floor, a scene
+    /// file's `diffuse` with a `<texture>` as its `reflectance`.
+    TexturedDiffuse {
+        /// The albedo at each point of the surface, read by
+        /// [`Scene::albedo`](super::Scene::albedo).
+        texture: Texture,
         /// Whether the back face reflects too.
         two_sided: bool,
     },
@@ -322,53 +325,9 @@ pub fn check_exponent(exponent: f32) -> Result<f32, String> {
     }
 }
 
-/// Mitsuba 3's `checkerboard` texture: two colours alternating over the surface parameters.
-///
-/// With `uv' = scale * uv`, a point is in colour 0 where the fractional parts of `u'` and `v'`
-/// are on the same side of 1/2, else in colour 1: one period of `uv'` holds 2 x 2 squares.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Checkerboard {
-    /// Mitsuba's `color0`.
-    pub colour0: Vec3,
-    /// Mitsuba's `color1`.
-    pub colour1: Vec3,
-    /// Periods per unit of `u` and `v` (Mitsuba's `to_uv` scale).
-    pub scale: Vec2,
-}
-
-impl Checkerboard {
-    /// The colour at surface parameters `uv`.
-    pub fn eval(&self, uv: Vec2) -> Vec3 {
-        let scaled = self.scale * uv;
-        let upper_half = |t: f32| t - t.floor() > 0.5;
-        if upper_half(scaled.x) == upper_half(scaled.y) {
-            self.colour0
-        } else {
-            self.colour1
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn checkerboard_follows_mitsubas_convention() {
-        let board = Checkerboard {
-            colour0: Vec3::X,
-            colour1: Vec3::Y,
-            scale: Vec2::splat(2.0),
-        };
-        // uv' = (0.5, 0.5): both fractions at 1/2, not above: colour 0.
-        assert_eq!(board.eval(Vec2::new(0.25, 0.25)), Vec3::X);
-        assert_eq!(board.eval(Vec2::new(0.1, 0.1)), Vec3::X);
-        assert_eq!(board.eval(Vec2::new(0.4, 0.1)), Vec3::Y); // uv' = (0.8, 0.2)
-        assert_eq!(board.eval(Vec2::new(0.1, 0.4)), Vec3::Y);
-        assert_eq!(board.eval(Vec2::new(0.4, 0.4)), Vec3::X);
-        assert_eq!(board.eval(Vec2::new(0.6, 0.1)), Vec3::X); // next period
-        assert_eq!(board.eval(Vec2::new(-0.1, 0.1)), Vec3::Y); // uv' = (-0.2, 0.2)
-    }
 
     #[test]
     fn exponents_must_be_finite_and_not_negative() {

@@ -24,19 +24,21 @@ mod capabilities;
 mod light;
 mod material;
 mod settings;
+mod texture;
 
 pub use builder::SceneBuilder;
 pub use camera::{Camera, CameraFrame, CameraModel};
 pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
-    Checkerboard, Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic,
-    RoughGlass, check_exponent,
+    Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
+    check_exponent,
 };
 pub use settings::{FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition};
+pub use texture::{Bitmap, BitmapFilter, BitmapId, Checkerboard, Texture, WrapMode};
 
 use crate::geometry::{Geometry, Shape};
-use glam::{Mat4, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
 /// The recursion limit used for Mitsuba's "unlimited" `max_depth` (-1): mirrors facing each
 /// other would otherwise recurse without end.
@@ -52,6 +54,9 @@ pub struct Scene {
     pub moving: Vec<AnimatedShape>,
     /// What each shape is made of and whether it glows, still shapes first, then moving ones.
     pub surfaces: Vec<Surface>,
+    /// The images the materials' textures read, each once ([`Texture::Bitmap`] holds its
+    /// number here).
+    pub bitmaps: Vec<Bitmap>,
     /// The point lights.
     pub point_lights: Vec<PointLight>,
     /// Radiance of every ray that leaves the scene (Mitsuba's `constant` emitter); black for a
@@ -108,6 +113,35 @@ impl Scene {
     #[inline]
     pub fn surface(&self, shape: u32) -> &Surface {
         &self.surfaces[shape as usize]
+    }
+
+    // ANCHOR: albedo
+    /// The colour of `texture` at surface parameters `uv` (a hit's `uv`): the albedo of a
+    /// textured matte surface there.
+    pub fn albedo(&self, texture: Texture, uv: Vec2) -> Vec3 {
+        match texture {
+            Texture::Checkerboard(checkerboard) => checkerboard.eval(uv),
+            // A number the scene does not hold (a scene put together by hand) reads as black.
+            Texture::Bitmap(BitmapId(index)) => self
+                .bitmaps
+                .get(index as usize)
+                .map_or(Vec3::ZERO, |bitmap| bitmap.eval(uv)),
+        }
+    }
+    // ANCHOR_END: albedo
+
+    /// The material of shape number `shape` with its texture read at `uv`: a textured matte
+    /// surface becomes the plain matte surface of the albedo there; other materials are
+    /// returned as they are. For code that wants one material per hit, such as chapter 08's
+    /// BSDFs.
+    pub fn material_at(&self, shape: u32, uv: Vec2) -> Material {
+        match self.surface(shape).material {
+            Material::TexturedDiffuse { texture, two_sided } => Material::Diffuse {
+                albedo: self.albedo(texture, uv),
+                two_sided,
+            },
+            material => material,
+        }
     }
 
     /// The same scene with every lobe's exponent set to `exponent` (smooth materials stay).

@@ -11,7 +11,7 @@ use glam::{Mat4, Vec2, Vec3};
 
 use super::TextPosition;
 use super::spectrum::Spectrum;
-use crate::scene::{AreaEmitter, CameraModel, FilmFilter, Material};
+use crate::scene::{AreaEmitter, Bitmap, CameraModel, FilmFilter, Material};
 
 /// Everything a scene file describes.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,6 +28,9 @@ pub struct SceneDescription {
     pub shapes: Vec<ShapeDescription>,
     /// The lights that are not shapes (`point` and `constant`), in file order.
     pub emitters: Vec<EmitterDescription>,
+    /// The images the materials' bitmap textures read ([`Texture::Bitmap`](crate::scene::Texture)
+    /// numbers them).
+    pub bitmaps: Vec<Bitmap>,
 }
 
 /// The integrator, the light transport algorithm.

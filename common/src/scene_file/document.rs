@@ -15,7 +15,7 @@ use super::shapes::read_shape;
 
 /// Objects that may stand at the top level only to be referenced from inside another object
 /// (`<sensor>` refers to a `<sampler>`, a `<shape>` to an area `<emitter>`).
-const REFERENCED_ONLY: &[&str] = &["sampler", "rfilter", "film"];
+const REFERENCED_ONLY: &[&str] = &["sampler", "rfilter", "film", "texture"];
 
 /// Parses the text of a scene file; see [`super::parse_scene`].
 pub(super) fn parse_document(
@@ -76,8 +76,8 @@ pub(super) fn parse_document(
                     child,
                     format!(
                         "unknown element <{tag}> in <scene>: expected default, path, include, \
-                         integrator, sensor, shape, bsdf, emitter, or a sampler, rfilter or \
-                         film with an id"
+                         integrator, sensor, shape, bsdf, emitter, or a sampler, rfilter, film \
+                         or texture with an id"
                     ),
                 ));
             }
@@ -109,6 +109,7 @@ pub(super) fn parse_document(
             sensor,
             shapes,
             emitters,
+            bitmaps: reader.bitmaps,
         },
         warnings: reader.warnings,
     })

@@ -7,6 +7,7 @@ use super::error::SceneError;
 use super::metals::{named_metal, named_metal_names};
 use super::properties::Properties;
 use super::reader::Reader;
+use super::textures::{NamedTexture, refuse_texture, take_textures};
 use super::values::parse_float;
 use crate::scene::{
     Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
@@ -65,6 +66,20 @@ pub fn named_ior_names() -> Vec<&'static str> {
     NAMED_IORS.iter().map(|(material, _)| *material).collect()
 }
 
+/// The BSDF types the workbook renders.
+const KNOWN_BSDF_TYPES: &[&str] = &[
+    "diffuse",
+    "conductor",
+    "dielectric",
+    "thindielectric",
+    "plastic",
+    "twosided",
+    "phong",
+    "roughconductor",
+    "roughplastic",
+    "roughdielectric",
+];
+
 /// The BSDF types the workbook renders, for messages.
 const KNOWN_BSDFS: &str = "diffuse, conductor, dielectric, thindielectric, plastic, twosided, \
      phong, roughconductor, roughplastic and roughdielectric";
@@ -108,16 +123,27 @@ fn read_bsdf_element<'a>(
 ) -> Result<Material, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} bsdf"))?;
+    let mut textures = take_textures(reader, &mut properties.objects)?;
+    let reflectance_texture = match type_name.as_str() {
+        "diffuse" => take_named(&mut textures, "reflectance"),
+        _ => None,
+    };
+    // An unknown type is named as such below, before any of its textures.
+    if let Some(texture) = textures.first()
+        && KNOWN_BSDF_TYPES.contains(&type_name.as_str())
+    {
+        return Err(refuse_texture(
+            reader,
+            &format!("{type_name} bsdf"),
+            texture,
+        ));
+    }
     if let (false, Some(object)) = (type_name == "twosided", properties.objects.first()) {
         let tag = object.name();
         return Err(reader.error(object, format!("a {type_name} bsdf cannot contain <{tag}>")));
     }
     let material = match type_name.as_str() {
-        "diffuse" => Material::diffuse(
-            properties
-                .rgb(reader, "reflectance")?
-                .unwrap_or(Vec3::splat(0.5)),
-        ),
+        "diffuse" => diffuse(reader, &mut properties, reflectance_texture)?,
         "conductor" => conductor(reader, node, &mut properties, None)?,
         "dielectric" => Material::Dielectric {
             int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
@@ -218,14 +244,41 @@ fn read_bsdf_element<'a>(
     Ok(material)
 }
 
+/// A `diffuse` bsdf: its reflectance a colour (0.5 when none is given, as in Mitsuba) or a
+/// texture, not both.
+fn diffuse(
+    reader: &Reader,
+    properties: &mut Properties,
+    texture: Option<NamedTexture>,
+) -> Result<Material, SceneError> {
+    let colour = properties.rgb(reader, "reflectance")?;
+    match (colour, texture) {
+        (None, Some(texture)) => Ok(Material::TexturedDiffuse {
+            texture: texture.texture,
+            two_sided: false,
+        }),
+        (Some(_), Some(texture)) => Err(reader.error(
+            texture.node,
+            "the diffuse bsdf's reflectance is given twice: as a colour and as a texture",
+        )),
+        (colour, None) => Ok(Material::diffuse(colour.unwrap_or(Vec3::splat(0.5)))),
+    }
+}
+
+/// The texture given for `name`, taken out of `textures`.
+fn take_named<'a>(textures: &mut Vec<NamedTexture<'a>>, name: &str) -> Option<NamedTexture<'a>> {
+    let index = textures.iter().position(|t| t.name == name)?;
+    Some(textures.remove(index))
+}
+
 /// The material `inner` reflecting on both sides. Matte, glossy, metal and plastic surfaces
 /// get a back face; mirrors and glass are what they were (a mirror reflects on its front side
 /// only, and glass has two sides already).
 fn two_sided(inner: Material) -> Material {
     match inner {
         Material::Diffuse { albedo, .. } => Material::two_sided_diffuse(albedo),
-        Material::CheckeredDiffuse { checkerboard, .. } => Material::CheckeredDiffuse {
-            checkerboard,
+        Material::TexturedDiffuse { texture, .. } => Material::TexturedDiffuse {
+            texture,
             two_sided: true,
         },
         Material::Glossy(glossy) => Material::Glossy(Glossy {

@@ -35,6 +35,7 @@
 //!   or a sensor.
 
 mod animation;
+mod bitmap;
 mod camera;
 mod description;
 mod document;
@@ -51,6 +52,7 @@ mod reader;
 mod serialized;
 mod shapes;
 mod spectrum;
+mod textures;
 mod to_geometry;
 mod to_scene;
 mod transform;
@@ -63,6 +65,7 @@ use std::path::Path;
 
 use crate::scene::Scene;
 
+pub use bitmap::{DecodedImage, load_bitmap, parse_bitmap, srgb_to_linear};
 pub use camera::horizontal_fov;
 pub use description::{
     EmitterDescription, FilmDescription, Integrator, PropertyValue, SamplerDescription,

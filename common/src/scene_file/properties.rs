@@ -30,6 +30,7 @@ const OBJECT_TAGS: &[&str] = &[
     "shape",
     "sensor",
     "integrator",
+    "texture",
 ];
 
 struct Property {

@@ -5,10 +5,11 @@
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
+use super::bitmap::DecodedImage;
 use super::element::{Element, SceneTree, folders_for, resolve_file};
 use super::error::{SceneError, SceneWarning, TextPosition};
 use super::values::{parse_float, parse_vec3, substitute};
-use crate::scene::Material;
+use crate::scene::{Bitmap, Material, Texture};
 use glam::Vec3;
 
 /// Reads attributes with `$name` substitution, follows references and turns problems into
@@ -21,6 +22,12 @@ pub(super) struct Reader<'a> {
     elements_by_id: HashMap<String, &'a Element>,
     /// BSDFs already read, by id, so that each is read once however often it is referenced.
     pub bsdfs_by_id: HashMap<String, Material>,
+    /// Textures with an id, read once.
+    pub textures_by_id: HashMap<String, Texture>,
+    /// The images bitmap textures read, in the order they were first read.
+    pub bitmaps: Vec<Bitmap>,
+    /// Each image file's pixels, decoded once per file and `raw` setting.
+    pub images_by_file: HashMap<(PathBuf, bool), DecodedImage>,
     /// Ids whose object is being read, to refuse an object that refers to itself.
     reading: HashSet<String>,
     /// Ids that were referenced, to warn about objects declared apart and never used.
@@ -38,6 +45,9 @@ impl<'a> Reader<'a> {
             search_folders: &tree.search_folders,
             elements_by_id: tree.elements_by_id(file)?,
             bsdfs_by_id: HashMap::new(),
+            textures_by_id: HashMap::new(),
+            bitmaps: Vec::new(),
+            images_by_file: HashMap::new(),
             reading: HashSet::new(),
             referenced: HashSet::new(),
             warnings: Vec::new(),

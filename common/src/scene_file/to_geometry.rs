@@ -34,8 +34,10 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
                 normal = -normal;
             }
             let center = m.transform_point3(Vec3::ZERO);
-            if let Some(scale) = uniform_scale(m) {
-                return Ok(vec![Shape::Disc(Disc::new(center, normal, scale))]);
+            if uniform_scale(m).is_some() {
+                // A circle whose uv follow to_world's x and y, as Mitsuba's do.
+                let (x, y) = (m.transform_vector3(Vec3::X), m.transform_vector3(Vec3::Y));
+                return Ok(vec![Shape::Disc(Disc::ellipse(center, normal, x, y))]);
             }
             // Under any other linear map the unit circle becomes an ellipse, as in Mitsuba.
             let (axis_t, axis_b) =
@@ -49,19 +51,24 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
             })])
         }
         ShapeGeometry::Cube => {
-            // The six faces of [-1, 1]^3, each the unit rectangle moved onto the face with its
-            // normal pointing out of the cube.
+            // The six faces of [-1, 1]^3, each the unit rectangle moved onto the face: its x
+            // and y go where Mitsuba's cube mesh has u and v grow (measured with Mitsuba 3:
+            // they turn clockwise about the outward normal), its z along the outward normal.
+            let face = |u: Vec3, v: Vec3, outward: Vec3| {
+                Mat4::from_cols(
+                    u.extend(0.0),
+                    v.extend(0.0),
+                    outward.extend(0.0),
+                    outward.extend(1.0),
+                )
+            };
             let faces = [
-                Mat4::from_translation(Vec3::Z),
-                Mat4::from_translation(-Vec3::Z) * Mat4::from_rotation_x(std::f32::consts::PI),
-                Mat4::from_translation(Vec3::X)
-                    * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2),
-                Mat4::from_translation(-Vec3::X)
-                    * Mat4::from_rotation_y(-std::f32::consts::FRAC_PI_2),
-                Mat4::from_translation(Vec3::Y)
-                    * Mat4::from_rotation_x(-std::f32::consts::FRAC_PI_2),
-                Mat4::from_translation(-Vec3::Y)
-                    * Mat4::from_rotation_x(std::f32::consts::FRAC_PI_2),
+                face(Vec3::Y, Vec3::X, Vec3::Z),
+                face(-Vec3::Y, Vec3::X, -Vec3::Z),
+                face(Vec3::Y, -Vec3::Z, Vec3::X),
+                face(Vec3::Y, Vec3::Z, -Vec3::X),
+                face(-Vec3::X, -Vec3::Z, Vec3::Y),
+                face(Vec3::Z, Vec3::X, -Vec3::Y),
             ];
             Ok(faces
                 .iter()
@@ -154,19 +161,22 @@ fn placed_mesh(mut mesh: TriangleMesh, shape: &ShapeDescription, face_normals: b
 fn square_face(to_world: Mat4, face: Mat4, flip: bool) -> Shape {
     let m = to_world * face;
     let corner = m.transform_point3(Vec3::new(-1.0, -1.0, 0.0));
-    let mut e1 = m.transform_point3(Vec3::new(1.0, -1.0, 0.0)) - corner;
-    let mut e2 = m.transform_point3(Vec3::new(-1.0, 1.0, 0.0)) - corner;
-    // A mirroring transform turns e1 x e2 against the true normal; swapping the edges turns it
-    // back. Flipping the normal is the same swap once more.
+    let e1 = m.transform_point3(Vec3::new(1.0, -1.0, 0.0)) - corner;
+    let e2 = m.transform_point3(Vec3::new(-1.0, 1.0, 0.0)) - corner;
+    // A mirroring transform turns e1 x e2 against the true normal; the parallelogram is then
+    // flipped, which keeps its uv where Mitsuba has them. Flipping the normal is the same once
+    // more.
     let want = if flip {
         -world_normal(m, Vec3::Z)
     } else {
         world_normal(m, Vec3::Z)
     };
+    let parallelogram = Parallelogram::new(corner, e1, e2);
     if e1.cross(e2).dot(want) < 0.0 {
-        std::mem::swap(&mut e1, &mut e2);
+        Shape::Parallelogram(parallelogram.flipped())
+    } else {
+        Shape::Parallelogram(parallelogram)
     }
-    Shape::Parallelogram(Parallelogram::new(corner, e1, e2))
 }
 
 /// The principal semi-axes of the ellipse `{cos θ a + sin θ b}`: two perpendicular vectors,

@@ -175,6 +175,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             filter: sensor.film.filter_position.clone(),
             environment: environment_position,
         },
+        bitmaps: description.bitmaps.clone(),
         ..scene
     })
 }

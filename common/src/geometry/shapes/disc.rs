@@ -65,9 +65,14 @@ impl Disc {
         let normal = normal.normalize_or_zero();
         let radii = Vec2::new(axis_t.length(), axis_b.length());
         let tangent = axis_t.normalize_or_zero();
-        // Right-handed about the normal, whichever way `axis_b` points: the ellipse is
-        // symmetric.
-        let bitangent = normal.cross(tangent);
+        // On the side `axis_b` points to, so that the angle in `uv` turns from `axis_t`
+        // towards `axis_b` (the shape is the same either way).
+        let across = normal.cross(tangent);
+        let bitangent = if across.dot(axis_b) < 0.0 {
+            -across
+        } else {
+            across
+        };
         let perpendicular = axis_t.dot(axis_b).abs() <= 1e-4 * radii.x * radii.y;
         Self {
             center,
@@ -105,7 +110,9 @@ impl Disc {
         self.tangent
     }
 
-    /// The in-plane direction where `φ = π/2`: `normal × tangent`.
+    /// The in-plane direction where `φ = π/2`: `normal × tangent` or its opposite (the side
+    /// of the second axis an ellipse was made with, so that `uv` turn as the scene file's
+    /// `to_world` turns them).
     pub fn bitangent(&self) -> Vec3 {
         self.bitangent
     }
@@ -334,7 +341,9 @@ mod tests {
         assert_relative_eq!(b.diagonal().x, 6.0, max_relative = 1e-5);
         assert_relative_eq!(b.diagonal().z, 2.0, max_relative = 1e-5);
         let (t, s) = (ellipse.tangent(), ellipse.bitangent());
-        assert_relative_eq!(t.cross(s), ellipse.normal(), epsilon = 1e-6);
+        // The bitangent is on the side of the second axis given, Z (not Y x X = -Z).
+        assert_relative_eq!(t, Vec3::X, epsilon = 1e-6);
+        assert_relative_eq!(s, Vec3::Z, epsilon = 1e-6);
         // Axes that are not perpendicular describe no ellipse: never hit.
         let skew = Disc::ellipse(Vec3::ZERO, Vec3::Y, Vec3::X, Vec3::X + Vec3::Z);
         assert!(skew.intersect(&Ray::new(Vec3::Y, -Vec3::Y)).is_none());

@@ -46,6 +46,16 @@ impl Parallelogram {
         }
     }
 
+    /// The same parallelogram facing the other way: its normal becomes `-normalize(e1 × e2)`
+    /// and its `uv` stay where they were, as a scene file's `flip_normals` keeps them (and as
+    /// the faces of Mitsuba's cube, whose `uv` turn the other way about their normals, need).
+    pub fn flipped(self) -> Self {
+        Self {
+            normal: -self.normal,
+            ..self
+        }
+    }
+
     /// The corner where `u = v = 0`.
     pub fn corner(&self) -> Vec3 {
         self.corner

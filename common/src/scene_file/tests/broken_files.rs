@@ -37,8 +37,8 @@ const CORPUS: &[Broken] = &[
     },
     Broken {
         name: "unknown element",
-        input: Body("<texture type=\"bitmap\"/>"),
-        fragment: "unknown element <texture>",
+        input: Body("<medium type=\"homogeneous\"/>"),
+        fragment: "unknown element <medium>",
         line: 2,
     },
     Broken {

@@ -10,7 +10,9 @@ mod mesh_scenes;
 mod model;
 mod never_panics;
 mod spectra;
+mod textures;
 mod transforms;
+mod uv_parameterisations;
 mod warnings;
 
 use std::path::Path;

@@ -8,7 +8,7 @@ use common::Ray;
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
 use common::render::SampleCounters;
-use common::scene::{Checkerboard, Material, PointLight, Scene, SceneBuilder};
+use common::scene::{Checkerboard, Material, PointLight, Scene, SceneBuilder, Texture};
 use common::test_support::image_comparison;
 use glam::{Vec2, Vec3};
 
@@ -23,11 +23,8 @@ const TIME: f32 = 0.4;
 const SIZE: (u32, u32) = (24, 18);
 
 fn scene(max_depth: u32) -> Scene {
-    let checkerboard = Checkerboard {
-        colour0: Vec3::splat(0.8),
-        colour1: Vec3::new(0.2, 0.3, 0.2),
-        scale: Vec2::splat(2.0),
-    };
+    let checkerboard =
+        Checkerboard::scaled(Vec3::splat(0.8), Vec3::new(0.2, 0.3, 0.2), Vec2::splat(2.0));
     let builder = SceneBuilder::new()
         .environment(Vec3::new(0.2, 0.3, 0.5))
         .shape(
@@ -36,8 +33,8 @@ fn scene(max_depth: u32) -> Scene {
                 8.0 * Vec3::X,
                 -8.0 * Vec3::Z,
             )),
-            Material::CheckeredDiffuse {
-                checkerboard,
+            Material::TexturedDiffuse {
+                texture: Texture::Checkerboard(checkerboard),
                 two_sided: false,
             },
         )
@@ -143,7 +140,7 @@ impl Slip {
             }
             Slip::CheckerboardIgnored => {
                 "the checkered floor has one colour: its albedo at the hit is \
-                 checkerboard.eval(hit.uv)"
+                 scene.albedo(texture, hit.uv)"
             }
         }
     }
@@ -180,13 +177,12 @@ fn reference<W: World>(
         Material::Diffuse { albedo, two_sided } => {
             direct_light(world, ray, &hit, albedo, two_sided, counters)
         }
-        Material::CheckeredDiffuse {
-            checkerboard,
-            two_sided,
-        } => {
-            let albedo = match slip {
-                Slip::CheckerboardIgnored => checkerboard.colour0,
-                _ => checkerboard.eval(hit.uv),
+        Material::TexturedDiffuse { texture, two_sided } => {
+            let albedo = match (slip, texture) {
+                (Slip::CheckerboardIgnored, Texture::Checkerboard(checkerboard)) => {
+                    checkerboard.colour0
+                }
+                _ => scene.albedo(texture, hit.uv),
             };
             direct_light(world, ray, &hit, albedo, two_sided, counters)
         }

@@ -1,0 +1,232 @@
+//! Image files for `bitmap` textures: PNG, JPEG and OpenEXR, decoded into linear RGB as
+//! Mitsuba 3 does.
+//!
+//! An 8- or 16-bit image (PNG, JPEG) stores sRGB-encoded values, which Mitsuba turns into
+//! linear ones unless the texture says `raw` (for data that is not a colour); a floating-point
+//! image (EXR) is linear already. Alpha is dropped; a grey image gives three equal channels.
+
+use glam::Vec3;
+use image::{DynamicImage, ImageDecoder, ImageReader};
+use std::io::Cursor;
+use std::path::Path;
+use std::sync::Arc;
+
+/// The pixels of one image file, decoded, in linear RGB (sRGB decoded unless read `raw`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DecodedImage {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Row by row from the top, each row from the left.
+    pub pixels: Arc<[Vec3]>,
+}
+
+/// Reads and decodes the image file at `path`; errors name it.
+pub fn load_bitmap(path: &Path, raw: bool) -> Result<DecodedImage, String> {
+    let bytes = std::fs::read(path)
+        .map_err(|e| format!("cannot read the image {}: {e}", path.display()))?;
+    parse_bitmap(&bytes, raw).map_err(|e| format!("the image {}: {e}", path.display()))
+}
+
+/// The most pixels an image may have: 2^25, such as 8192 x 4096 (about 400 MB once decoded).
+/// A header that claims more is refused before anything is allocated for it.
+pub const MAX_BITMAP_PIXELS: u64 = 1 << 25;
+
+/// Decodes the bytes of a PNG, JPEG or EXR file (the format is told by its first bytes).
+pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
+    let decoder = ImageReader::new(Cursor::new(bytes))
+        .with_guessed_format()
+        .map_err(|e| format!("cannot tell its format: {e}"))?
+        .into_decoder()
+        .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
+    // What the decoder will allocate, asked before it does: a header may claim anything.
+    let (width, height) = decoder.dimensions();
+    let pixels = u64::from(width) * u64::from(height);
+    if pixels > MAX_BITMAP_PIXELS || decoder.total_bytes() > MAX_BITMAP_PIXELS * 16 {
+        return Err(format!(
+            "the image is {width} x {height} pixels, more than the {MAX_BITMAP_PIXELS} a texture \
+             may have"
+        ));
+    }
+    let image = DynamicImage::from_decoder(decoder)
+        .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
+    let (width, height) = (image.width(), image.height());
+    if u64::from(width) * u64::from(height) > MAX_BITMAP_PIXELS || width == 0 || height == 0 {
+        return Err(format!(
+            "the image is {width} x {height} pixels: none, or too many"
+        ));
+    }
+    let is_float = matches!(
+        image,
+        DynamicImage::ImageRgb32F(_) | DynamicImage::ImageRgba32F(_)
+    );
+    let decode = !is_float && !raw;
+    let pixels = image
+        .into_rgb32f()
+        .pixels()
+        .map(|p| {
+            let colour = Vec3::from(p.0);
+            if decode {
+                colour.map(srgb_to_linear)
+            } else {
+                colour
+            }
+        })
+        .collect();
+    Ok(DecodedImage {
+        width,
+        height,
+        pixels,
+    })
+}
+
+/// The sRGB transfer function's inverse: an encoded value in `[0, 1]` to linear light.
+pub fn srgb_to_linear(encoded: f32) -> f32 {
+    if encoded <= 0.04045 {
+        encoded / 12.92
+    } else {
+        ((encoded + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use image::{ImageFormat, Rgb, RgbImage};
+
+    fn png(pixels: &[[u8; 3]], width: u32) -> Vec<u8> {
+        let height = pixels.len() as u32 / width;
+        let image = RgbImage::from_fn(width, height, |x, y| Rgb(pixels[(y * width + x) as usize]));
+        let mut bytes = Vec::new();
+        image
+            .write_to(&mut Cursor::new(&mut bytes), ImageFormat::Png)
+            .unwrap();
+        bytes
+    }
+
+    #[test]
+    fn an_srgb_png_is_decoded_as_mitsuba_decodes_it() {
+        // Mitsuba 3.9.1 reads the 8-bit pixel (187, 123, 243) as (0.496933, 0.198069, 0.896269),
+        // and with `raw` as (0.733333, 0.482353, 0.952941).
+        let bytes = png(&[[187, 123, 243]], 1);
+        let decoded = parse_bitmap(&bytes, false).unwrap();
+        let mitsuba = Vec3::new(0.496933, 0.198069, 0.896269);
+        assert!(
+            decoded.pixels[0].abs_diff_eq(mitsuba, 1e-5),
+            "{}",
+            decoded.pixels[0]
+        );
+        let raw = parse_bitmap(&bytes, true).unwrap();
+        let mitsuba_raw = Vec3::new(0.733333, 0.482353, 0.952941);
+        assert!(
+            raw.pixels[0].abs_diff_eq(mitsuba_raw, 1e-5),
+            "{}",
+            raw.pixels[0]
+        );
+    }
+
+    #[test]
+    fn rows_start_at_the_top() {
+        let decoded = parse_bitmap(&png(&[[255, 0, 0], [0, 0, 255]], 1), true).unwrap();
+        assert_eq!((decoded.width, decoded.height), (1, 2));
+        assert_eq!(decoded.pixels[0], Vec3::X);
+        assert_eq!(decoded.pixels[1], Vec3::Z);
+    }
+
+    #[test]
+    fn bytes_that_are_no_image_are_refused_in_words() {
+        let message = parse_bitmap(b"not an image", false).unwrap_err();
+        assert!(message.contains("PNG, JPEG or EXR"), "{message}");
+        let mut truncated = png(&[[1, 2, 3]; 16], 4);
+        truncated.truncate(truncated.len() / 2);
+        assert!(parse_bitmap(&truncated, false).is_err());
+    }
+
+    /// Cases per property: `SCENE_FUZZ_CASES`, or 256.
+    fn cases() -> u32 {
+        std::env::var("SCENE_FUZZ_CASES")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(256)
+    }
+
+    /// A valid 4 x 4 PNG, to be broken by the property below.
+    fn small_png() -> Vec<u8> {
+        png(&[[200, 100, 50]; 16], 4)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: cases(),
+            failure_persistence: None,
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+
+        /// Any bytes: an error, or an image with one finite pixel per place.
+        #[test]
+        fn random_bytes_never_panic(bytes in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..512), raw: bool) {
+            if let Ok(image) = parse_bitmap(&bytes, raw) {
+                proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
+            }
+        }
+
+        /// A PNG with some bytes changed (past the signature, so the decoder is reached).
+        #[test]
+        fn a_damaged_png_never_panics(
+            changes in proptest::collection::vec((proptest::prelude::any::<proptest::sample::Index>(), proptest::prelude::any::<u8>()), 1..8),
+        ) {
+            let mut bytes = small_png();
+            for (at, byte) in changes {
+                let i = at.index(bytes.len());
+                bytes[i] = byte;
+            }
+            if let Ok(image) = parse_bitmap(&bytes, false) {
+                proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
+            }
+        }
+    }
+
+    /// The CRC-32 of a PNG chunk's type and data.
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut crc = !0u32;
+        for &byte in bytes {
+            crc ^= u32::from(byte);
+            for _ in 0..8 {
+                crc = if crc & 1 == 1 {
+                    (crc >> 1) ^ 0xEDB8_8320
+                } else {
+                    crc >> 1
+                };
+            }
+        }
+        !crc
+    }
+
+    #[test]
+    fn an_image_claiming_too_many_pixels_is_refused_before_decoding() {
+        // `cargo fuzz run bitmap` found an EXR whose header claimed so many pixels that decoding
+        // it ran out of memory. Here a PNG header claims 65536 x 65536 pixels and no data
+        // follows: the size alone must refuse it.
+        let mut ihdr = b"IHDR".to_vec();
+        ihdr.extend_from_slice(&65536u32.to_be_bytes());
+        ihdr.extend_from_slice(&65536u32.to_be_bytes());
+        ihdr.extend_from_slice(&[8, 2, 0, 0, 0]); // 8-bit RGB, no interlacing
+        let mut bytes = b"\x89PNG\r\n\x1a\n".to_vec();
+        bytes.extend_from_slice(&13u32.to_be_bytes());
+        bytes.extend_from_slice(&ihdr);
+        bytes.extend_from_slice(&crc32(&ihdr).to_be_bytes());
+        // An empty IDAT chunk: where the header ends and the pixels would begin.
+        bytes.extend_from_slice(&0u32.to_be_bytes());
+        bytes.extend_from_slice(b"IDAT");
+        bytes.extend_from_slice(&crc32(b"IDAT").to_be_bytes());
+        let message = parse_bitmap(&bytes, false).unwrap_err();
+        assert!(message.contains("more than"), "{message}");
+    }
+
+    #[test]
+    fn a_missing_file_is_named() {
+        let message = load_bitmap(Path::new("/nowhere/wood.png"), false).unwrap_err();
+        assert!(message.contains("/nowhere/wood.png"), "{message}");
+    }
+}

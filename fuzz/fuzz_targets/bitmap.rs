@@ -1,0 +1,13 @@
+//! Any bytes given to the bitmap texture's image reader (PNG, JPEG, EXR): an error or an
+//! image with one finite-or-not pixel per place, never a panic.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|bytes: &[u8]| {
+    for raw in [false, true] {
+        if let Ok(image) = common::scene_file::parse_bitmap(bytes, raw) {
+            assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
+        }
+    }
+});
