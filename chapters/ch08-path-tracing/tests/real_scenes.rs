@@ -1,6 +1,6 @@
 //! Scene files written by other people, which the workbook cannot ship: every file under the
 //! folder `REAL_SCENES` names (Mitsuba 3's documentation scenes, say, from its data
-//! repository) must either render, tiny, to a finite image, or be refused with a message that
+//! repository) must either render, tiny, to a finite image with no non-finite sample, or be refused with a message that
 //! names the file, line and column: never a panic, never a broken image. Ignored by default:
 //!
 //! ```text
@@ -11,12 +11,11 @@
 //! It prints one line per file and a count of the reasons for refusal, the list of what to
 //! read next.
 
-use common::output::read_image;
-use common::test_support::run_binary;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-const BIN: &str = env!("CARGO_BIN_EXE_ch08-path-tracing");
+mod support;
+use support::render_tiny;
 
 /// Every `.xml` file under `folder` that may be a whole scene: one with a `<sensor>` or an
 /// `<include>` (a part meant only to be included has neither), sorted.
@@ -55,49 +54,33 @@ fn real_scene_files_render_or_are_refused_with_their_place() {
         panic!("set REAL_SCENES to a folder of Mitsuba 3 scene files");
     };
     let out = tempfile::tempdir().unwrap();
-    let image = out.path().join("image.pfm");
     let mut rendered = 0;
     let mut refusals: BTreeMap<String, usize> = BTreeMap::new();
     for scene in scenes_under(Path::new(&folder)) {
-        let output = run_binary(
-            BIN,
-            &[
-                "render",
-                "--scene",
-                scene.to_str().unwrap(),
-                "--width",
-                "16",
-                "--height",
-                "12",
-                "--spp",
-                "2",
-                "--out",
-                image.to_str().unwrap(),
-            ],
-        );
-        let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+        let result = render_tiny(&scene, out.path());
         let name = scene.strip_prefix(&folder).unwrap_or(&scene).display();
-        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
-        if output.status.success() {
-            let pixels = read_image(&image).unwrap();
-            assert!(
-                pixels.pixels.iter().all(|p| p.is_finite()),
-                "{name}: a pixel is not finite"
-            );
-            rendered += 1;
-            eprintln!("rendered  {name}");
-        } else {
-            let message = stderr
-                .lines()
-                .find(|line| line.starts_with("error"))
-                .unwrap_or(&stderr)
-                .to_string();
-            assert!(
-                message.contains(".xml:") || message.contains(".xml: "),
-                "{name}: the refusal does not name the file: {message}"
-            );
-            eprintln!("refused   {name}: {}", reason(&message));
-            *refusals.entry(reason(&message)).or_default() += 1;
+        match result {
+            Ok(pixels) => {
+                assert!(
+                    pixels.pixels.iter().all(|p| p.is_finite()),
+                    "{name}: a pixel is not finite"
+                );
+                rendered += 1;
+                eprintln!("rendered  {name}");
+            }
+            Err(stderr) => {
+                let message = stderr
+                    .lines()
+                    .find(|line| line.starts_with("error"))
+                    .unwrap_or(&stderr)
+                    .to_string();
+                assert!(
+                    message.contains(".xml:"),
+                    "{name}: the refusal does not name the file: {message}"
+                );
+                eprintln!("refused   {name}: {}", reason(&message));
+                *refusals.entry(reason(&message)).or_default() += 1;
+            }
         }
     }
     eprintln!("\n{rendered} rendered; refusals by reason:");

@@ -5,11 +5,10 @@
 //! The files are found, not listed, so a new scene is tested as soon as it is added, and a
 //! scene that starts to be refused fails until its reason is written down here.
 
-use common::output::read_image;
-use common::test_support::run_binary;
 use std::path::{Path, PathBuf};
 
-const BIN: &str = env!("CARGO_BIN_EXE_ch08-path-tracing");
+mod support;
+use support::render_tiny;
 
 /// Scene files `render` refuses, by file name, with what its message must say. None: every
 /// feature of the subset (motion, lenses, lobes, area and point lights) is the path tracer's.
@@ -37,49 +36,6 @@ fn scene_files() -> Vec<PathBuf> {
     }
     files.sort();
     files
-}
-
-/// Renders `scene` at 16 x 12 pixels and 2 samples per pixel; `Err` with the message if
-/// `render` refuses it.
-fn render_tiny(scene: &Path, out: &Path) -> Result<common::image::Image, String> {
-    let image = out.join("image.pfm");
-    let stats = out.join("stats.json");
-    let output = run_binary(
-        BIN,
-        &[
-            "render",
-            "--scene",
-            scene.to_str().unwrap(),
-            "--width",
-            "16",
-            "--height",
-            "12",
-            "--spp",
-            "2",
-            "--out",
-            image.to_str().unwrap(),
-            "--stats",
-            stats.to_str().unwrap(),
-        ],
-    );
-    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
-    assert!(
-        !stderr.contains("panicked"),
-        "{}: {stderr}",
-        scene.display()
-    );
-    if !output.status.success() {
-        return Err(stderr);
-    }
-    let stats: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
-    assert_eq!(
-        stats["nonfinite_samples"],
-        0,
-        "{}: {stderr}",
-        scene.display()
-    );
-    Ok(read_image(&image).unwrap())
 }
 
 #[test]

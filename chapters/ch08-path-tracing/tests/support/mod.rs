@@ -1,5 +1,5 @@
 //! Shared helpers: the mean radiance of many paths through fixed film positions, with its
-//! standard error, and the chapter's scene files.
+//! standard error, the chapter's scene files, and the binary's `render` at a tiny size.
 #![allow(dead_code)]
 
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
@@ -11,6 +11,7 @@ use ch08_path_tracing::{Method, PathOptions, PathTracer, SceneLights, render_wit
 use common::render::{RenderOutput, RenderSettings, SampleCounters};
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
+use std::path::Path;
 
 /// A scene file of the chapter, made ready for tracing, with its path options.
 pub struct SceneFile {
@@ -105,4 +106,47 @@ pub fn grid(width: u32, height: u32, k: u32) -> Vec<Vec2> {
         }
     }
     points
+}
+
+/// Renders `scene` at 16 x 12 pixels and 2 samples per pixel; `Err` with the message if
+/// `render` refuses it. A panic or a non-finite sample fails the test.
+pub fn render_tiny(scene: &Path, out: &Path) -> Result<common::image::Image, String> {
+    let image = out.join("image.pfm");
+    let stats = out.join("stats.json");
+    let output = common::test_support::run_binary(
+        env!("CARGO_BIN_EXE_ch08-path-tracing"),
+        &[
+            "render",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--width",
+            "16",
+            "--height",
+            "12",
+            "--spp",
+            "2",
+            "--out",
+            image.to_str().unwrap(),
+            "--stats",
+            stats.to_str().unwrap(),
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    assert!(
+        !stderr.contains("panicked"),
+        "{}: {stderr}",
+        scene.display()
+    );
+    if !output.status.success() {
+        return Err(stderr);
+    }
+    let stats: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    assert_eq!(
+        stats["nonfinite_samples"],
+        0,
+        "{}: {stderr}",
+        scene.display()
+    );
+    Ok(common::output::read_image(&image).unwrap())
 }
