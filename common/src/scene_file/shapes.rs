@@ -91,8 +91,9 @@ pub(super) fn read_shape<'a>(
     let mut emitter_nodes = Vec::new();
     let mut bsdf_nodes = Vec::new();
     for &object in &properties.objects {
-        if reader.dereference(object)?.has_name("emitter") {
-            emitter_nodes.push(reader.dereference(object)?);
+        let target = reader.dereference(object)?;
+        if target.has_name("emitter") {
+            emitter_nodes.push(target);
         } else {
             bsdf_nodes.push(object);
         }
