@@ -6,7 +6,8 @@
 //! ```
 //!
 //! With `UPDATE_MITSUBA_RENDERS=1` as well, it replaces the stored renders in
-//! `scenes/mitsuba/` that the test `agreement` and the book compare against.
+//! `scenes/mitsuba/` that the test `agreement` and the book compare against;
+//! `AGREEMENT_ONLY=name1,name2` keeps to those scenes.
 
 use ch01_whitted::agreement::AGREEMENT;
 use common::metrics::refresh_agreement_from_env;

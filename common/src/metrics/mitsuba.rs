@@ -113,17 +113,23 @@ pub fn make_reference_renders(
     })
 }
 
-/// Renders every scene of `set` afresh with Mitsuba, compares ours with the new renders (as
+/// Renders every scene of `set` (or, given `only`, those whose names it lists, separated by
+/// commas) afresh with Mitsuba, compares ours with the new renders (as
 /// [`AgreementSet::check_stored`] does with the stored ones) and, with `update`, stores them.
 /// Returns one line per scene with the numbers, and an error naming the scenes that disagree.
 pub fn refresh_agreement(
     python: &str,
     set: &AgreementSet,
     update: bool,
+    only: Option<&str>,
 ) -> Result<Vec<String>, String> {
     let mut lines = Vec::new();
     let mut failures = Vec::new();
-    for scene in set.scenes {
+    let chosen = set
+        .scenes
+        .iter()
+        .filter(|scene| only.is_none_or(|names| names.split(',').any(|n| n == scene.name)));
+    for scene in chosen {
         let file = set.file(scene);
         let renders = make_reference_renders(
             python,
@@ -165,11 +171,28 @@ pub fn refresh_agreement(
 /// The environment variable that makes [`refresh_agreement_from_env`] store the new renders.
 pub const UPDATE_MITSUBA_RENDERS: &str = "UPDATE_MITSUBA_RENDERS";
 
+/// The environment variable that limits [`refresh_agreement_from_env`] to the scenes it names
+/// (comma-separated), so that one new scene can be rendered without the whole set.
+pub const AGREEMENT_ONLY: &str = "AGREEMENT_ONLY";
+
 /// [`refresh_agreement`] with the Python named by [`MITSUBA_PYTHON`], storing the new renders
-/// when [`UPDATE_MITSUBA_RENDERS`] is `1`: what each chapter's ignored `tests/mitsuba.rs` runs.
+/// when [`UPDATE_MITSUBA_RENDERS`] is `1` and keeping to the scenes [`AGREEMENT_ONLY`] names: what each chapter's ignored `tests/mitsuba.rs` runs.
 pub fn refresh_agreement_from_env(set: &AgreementSet) -> Result<Vec<String>, String> {
     let python = mitsuba_python()
         .ok_or_else(|| format!("set {MITSUBA_PYTHON} to a Python that has the mitsuba package"))?;
     let update = std::env::var(UPDATE_MITSUBA_RENDERS).is_ok_and(|v| v == "1");
-    refresh_agreement(&python, set, update)
+    let only = std::env::var(AGREEMENT_ONLY).ok().filter(|v| !v.is_empty());
+    if let Some(names) = &only {
+        let unknown: Vec<&str> = names
+            .split(',')
+            .filter(|n| !set.scenes.iter().any(|scene| scene.name == *n))
+            .collect();
+        if !unknown.is_empty() {
+            return Err(format!(
+                "{AGREEMENT_ONLY} names {unknown:?}, which {} does not have",
+                set.label
+            ));
+        }
+    }
+    refresh_agreement(&python, set, update, only.as_deref())
 }
