@@ -52,6 +52,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere; each shape's uv as Mitsuba's",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "written-apart",
+            checks: "a scene spread over two files: an <include> found through <path>, a lamp and materials referenced before they are declared, a sensor with focal_length and a principal point offset, hide_emitters, an ellipse (a disc under a non-uniform scale), a sphere with centre and radius moved by to_world",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };
