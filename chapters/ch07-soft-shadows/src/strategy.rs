@@ -71,11 +71,19 @@ impl AreaLight {
     /// everything else by area (discs with `sampling.disc_warp`). `None` when the light has no
     /// area, or subtends too small a cone to describe in `f32`.
     pub fn sample(&self, x: Vec3, u: Vec2, sampling: LightSampling) -> Option<LightSample> {
-        match (self.shape, sampling.strategy) {
+        let sample = match (self.shape, sampling.strategy) {
             (LightShape::Sphere(sphere), Strategy::SolidAngle) => {
                 sample_sphere_solid_angle(&sphere, x, u)
             }
             (shape, _) => shape.sample_area(u, sampling.disc_warp),
-        }
+        }?;
+        // The samplers put the outward normal on a sphere; a flipped sphere's front faces in.
+        Some(match self.shape {
+            LightShape::Sphere(sphere) => LightSample {
+                n: sphere.oriented(sample.n),
+                ..sample
+            },
+            _ => sample,
+        })
     }
 }

@@ -3,10 +3,10 @@
 //! radiance; what the chapter cannot render is refused with the shape's position.
 
 use ch07_soft_shadows::light::LightShape;
-use ch07_soft_shadows::{AreaLights, CAPABILITIES};
+use ch07_soft_shadows::{AreaLights, CAPABILITIES, DiscWarp, LightSampling};
 use common::scene::Scene;
 use common::scene_file::{load_scene_file, parse_scene};
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use std::path::Path;
 
 /// A scene file as this chapter sees it: the scene, its area lights, the notes of the check.
@@ -146,15 +146,31 @@ fn a_scene_without_lights_is_chapter_06s_and_the_integrator_notes_follow_the_dep
 }
 
 #[test]
-fn a_sphere_light_turned_inside_out_is_refused() {
+fn a_sphere_light_turned_inside_out_faces_inwards() {
     let text = format!(
         r#"<scene version="3.0.0">{SENSOR}<shape type="sphere"><boolean name="flip_normals" value="true"/>
+        <float name="radius" value="2"/>
         <emitter type="area"><rgb name="radiance" value="1, 1, 1"/></emitter></shape></scene>"#
     );
-    let error = convert_text(&text).err().unwrap();
-    // The loader refuses it where the shape is written (line 4 of the text).
-    assert!(
-        error.contains("flip_normals") && error.contains("test.xml:4:"),
-        "{error}"
-    );
+    let file = convert_text(&text).unwrap();
+    let light = file.lights.lights[0];
+    let LightShape::Sphere(sphere) = light.shape else {
+        panic!("{:?}", light.shape);
+    };
+    assert!(sphere.inward, "flip_normals reaches the light's sphere");
+    // From inside (no cone there, so by area with either strategy), every light sample faces
+    // the receiver: the light shines inwards.
+    let receiver = Vec3::new(0.3, -0.2, 0.5);
+    for sampling in [LightSampling::solid_angle(), LightSampling::area(DiscWarp::Concentric)] {
+        for i in 0..64 {
+            let u = Vec2::new((i % 8) as f32 + 0.5, (i / 8) as f32 + 0.5) / 8.0;
+            let sample = light.sample(receiver, u, sampling).unwrap();
+            assert!(
+                sample.n.dot(receiver - sample.p) > 0.0,
+                "a sample of a flipped sphere must carry the inward normal, got {} at {}",
+                sample.n,
+                sample.p
+            );
+        }
+    }
 }

@@ -57,6 +57,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "a scene spread over two files: an <include> found through <path>, a lamp and materials referenced before they are declared, a sensor with focal_length and a principal point offset, hide_emitters, an ellipse (a disc under a non-uniform scale), a sphere with centre and radius moved by to_world",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "dome",
+            checks: "spheres with flip_normals: a dome whose area light faces inwards, sampled by area from inside, and a one-sided matte sphere turned inside out, black from outside",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

@@ -19,10 +19,12 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
     match &shape.geometry {
         ShapeGeometry::Sphere { center, radius } => {
             let scale = uniform_scale(m).ok_or("a sphere under a non-uniform scale is an ellipsoid, which Mitsuba 3 refuses too (its to_world may not scale a sphere unevenly)")?;
-            Ok(vec![Shape::Sphere(Sphere::new(
-                m.transform_point3(*center),
-                radius * scale,
-            ))])
+            let sphere = Sphere::new(m.transform_point3(*center), radius * scale);
+            Ok(vec![Shape::Sphere(if shape.flip_normals {
+                sphere.flipped()
+            } else {
+                sphere
+            })])
         }
         ShapeGeometry::Rectangle => Ok(vec![square_face(m, Mat4::IDENTITY, shape.flip_normals)]),
         ShapeGeometry::Disc => {
@@ -329,6 +331,12 @@ mod tests {
                 assert!((s.center - Vec3::new(3.0, 0.0, 0.0)).length() < 1e-6);
                 assert!((s.radius - 1.5).abs() < 1e-6);
             }
+            other => panic!("{other:?}"),
+        }
+        let mut flipped = description(sphere.clone(), Mat4::IDENTITY);
+        flipped.flip_normals = true;
+        match &world_shapes(&flipped).unwrap()[0] {
+            Shape::Sphere(s) => assert!(s.inward, "flip_normals turns a sphere's normals in"),
             other => panic!("{other:?}"),
         }
         let squash = Mat4::from_scale(Vec3::new(1.0, 2.0, 1.0));

@@ -71,12 +71,6 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             ShapeGeometry::Ply { .. } => "ply",
             ShapeGeometry::Serialized { .. } => "serialized",
         };
-        if shape.flip_normals && kind == "sphere" {
-            return Err(error(
-                position,
-                "a sphere with flip_normals: the workbook's spheres have outward normals".into(),
-            ));
-        }
         let surface = Surface {
             material: shape.material,
             emitter: shape.emitter,

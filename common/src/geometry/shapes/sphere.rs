@@ -26,7 +26,7 @@ enum PlainRoot {
     Unsure,
 }
 
-/// A sphere; its normal points outwards.
+/// A sphere; its normal points outwards, or inwards once [`flipped`](Sphere::flipped).
 ///
 /// Its surface parameters are `uv = (φ / 2π, θ / π)`, with `θ` measured from the `+z` pole and
 /// `φ` around `z`, counter-clockwise from `+x`.
@@ -36,12 +36,36 @@ pub struct Sphere {
     pub center: Vec3,
     /// The radius; a sphere whose radius is not positive is never hit.
     pub radius: f32,
+    /// Whether the normal points inwards (a scene file's `flip_normals`): a dome lit from
+    /// inside, or a room's walls, whose one-sided materials and lights then face the centre.
+    pub inward: bool,
 }
 
 impl Sphere {
-    /// The sphere of `radius` around `center`.
+    /// The sphere of `radius` around `center`, its normal pointing outwards.
     pub fn new(center: Vec3, radius: f32) -> Self {
-        Self { center, radius }
+        Self {
+            center,
+            radius,
+            inward: false,
+        }
+    }
+
+    /// The same sphere with its normal turned the other way; `uv` stay where they were, as
+    /// Mitsuba's `flip_normals` keeps them.
+    pub fn flipped(self) -> Self {
+        Self {
+            inward: !self.inward,
+            ..self
+        }
+    }
+
+    /// The unit normal at a point whose outward unit normal is `outward`: `outward`, or its
+    /// opposite for a flipped sphere. Everything that puts a normal on a sphere point (hits,
+    /// light samples) goes through here, so that the two never disagree.
+    #[inline]
+    pub fn oriented(&self, outward: Vec3) -> Vec3 {
+        if self.inward { -outward } else { outward }
     }
 
     /// A box certainly containing the sphere.
@@ -275,7 +299,7 @@ impl Sphere {
         let local = unprojected * (self.radius / length);
         let p = self.center + local;
         let p_error = gamma(5) * local.abs() + gamma(2) * p.abs();
-        let n = local.normalize();
+        let n = self.oriented(local.normalize());
 
         let phi = local.y.atan2(local.x);
         let phi = if phi < 0.0 { phi + TAU } else { phi };
@@ -513,6 +537,25 @@ mod tests {
         assert_relative_eq!(hit.t, expected_t, max_relative = 1e-5);
         assert!(hit.n.dot(Vec3::Y) > 0.9, "normal points outwards");
         assert!(!hit.front_face(ray.dir));
+    }
+
+    #[test]
+    fn a_flipped_sphere_turns_its_normals_inwards_and_keeps_its_uv() {
+        let sphere = unit_sphere_at(Vec3::new(3.0, 0.0, 0.0));
+        let ray = Ray::new(Vec3::new(3.2, 0.0, 0.0), Vec3::Y);
+        let outward = sphere.intersect(&ray).unwrap();
+        let inward = sphere.flipped().intersect(&ray).unwrap();
+        assert_eq!(
+            (inward.t, inward.p, inward.uv),
+            (outward.t, outward.p, outward.uv)
+        );
+        assert_eq!(
+            inward.n, -outward.n,
+            "the geometric normal points to the centre"
+        );
+        assert_eq!(inward.shading_n, -outward.shading_n);
+        assert!(inward.front_face(ray.dir), "from inside, the front is seen");
+        assert_eq!(sphere.flipped().flipped(), sphere);
     }
 
     #[test]

@@ -132,10 +132,6 @@ fn what_no_chapter_renders_is_refused_where_it_is_written() {
             "test.xml:2:50: the roughconductor bsdf has no property `alpah`",
         ),
         (
-            r#"<shape type="sphere"><boolean name="flip_normals" value="true"/></shape>"#,
-            "test.xml:2:1: a sphere with flip_normals",
-        ),
-        (
             r#"<shape type="sphere"><transform name="to_world"><scale x="2"/></transform></shape>"#,
             "ellipsoid",
         ),
