@@ -161,7 +161,10 @@ fn a_sphere_light_turned_inside_out_faces_inwards() {
     // From inside (no cone there, so by area with either strategy), every light sample faces
     // the receiver: the light shines inwards.
     let receiver = Vec3::new(0.3, -0.2, 0.5);
-    for sampling in [LightSampling::solid_angle(), LightSampling::area(DiscWarp::Concentric)] {
+    for sampling in [
+        LightSampling::solid_angle(),
+        LightSampling::area(DiscWarp::Concentric),
+    ] {
         for i in 0..64 {
             let u = Vec2::new((i % 8) as f32 + 0.5, (i / 8) as f32 + 0.5) / 8.0;
             let sample = light.sample(receiver, u, sampling).unwrap();

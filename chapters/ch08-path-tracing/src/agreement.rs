@@ -62,6 +62,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "spheres with flip_normals: a dome whose area light faces inwards, sampled by area from inside, and a one-sided matte sphere turned inside out, black from outside",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "veach-plates",
+            checks: "Veach's multiple-importance plates, our own: the direct integrator (one light and one BSDF sample per hit, power heuristic) on four roughplastic plates from alpha 0.02 to 0.25 under four sphere lights of equal power from radius 0.1 to 0.8, hidden from the camera (which then sees through them, as Mitsuba's hide_emitters does)",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

@@ -17,8 +17,9 @@ pub struct PathOptions {
     /// The longest path in segments, counting the camera ray (Mitsuba's `max_depth`): 1 sees
     /// only what glows, 2 adds direct light, each further step one bounce more.
     pub max_depth: u32,
-    /// Mitsuba's `hide_emitters`: the camera ray's own segment finds no emission (no light
-    /// source, no environment); light still reaches what it sees.
+    /// Mitsuba's `hide_emitters`: the camera ray passes through shapes that emit and its own
+    /// segment finds no emission (no light source, no environment); light still reaches
+    /// what it sees.
     pub hide_emitters: bool,
 }
 

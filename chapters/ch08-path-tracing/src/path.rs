@@ -122,7 +122,8 @@ impl PathTracer<'_> {
     ) -> Vec3 {
         let mut path = PathState::START;
         let mut depth = 1;
-        let mut next = self.segment(camera_ray, depth, &mut path, sampler, counters);
+        let camera_ray = self.past_hidden_emitters(camera_ray, counters);
+        let mut next = self.segment(&camera_ray, depth, &mut path, sampler, counters);
         while let Some(ray) = next {
             depth += 1;
             next = self.segment(&ray, depth, &mut path, sampler, counters);
@@ -130,6 +131,33 @@ impl PathTracer<'_> {
         path.radiance
     }
     // ANCHOR_END: radiance
+
+    /// The camera ray as Mitsuba's `hide_emitters` has it: for the camera, shapes that emit
+    /// light are not there. The ray passes through each one it meets and goes on from its far
+    /// side, so that a hidden lamp shows what is behind it rather than a black silhouette.
+    /// They still block shadow rays and later segments, and still light the scene. Without
+    /// `hide_emitters`, the ray itself. Draws no random number, so every other pixel keeps
+    /// its samples.
+    fn past_hidden_emitters(&self, camera_ray: &Ray, counters: &mut SampleCounters) -> Ray {
+        use ch01_whitted::scene::World;
+        /// More emitting surfaces in a row than any scene stacks; a hostile one that does
+        /// shows the last as a black surface instead of looping on.
+        const MOST_SKIPPED: usize = 1024;
+        let mut ray = *camera_ray;
+        if !self.options.hide_emitters || !self.lights.has_area_lights() {
+            return ray;
+        }
+        for _ in 0..MOST_SKIPPED {
+            counters.rays += 1;
+            match self.world.intersect(&ray) {
+                Some(hit) if self.lights.area_light_of(hit.shape).is_some() => {
+                    ray = hit.spawn_ray(ray.dir, ray.time);
+                }
+                _ => break,
+            }
+        }
+        ray
+    }
 
     // ANCHOR: segment
     /// Segment `depth` of `path` (the camera ray is segment 1), along `ray`: where it ends,

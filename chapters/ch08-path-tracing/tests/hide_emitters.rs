@@ -93,3 +93,46 @@ fn chapters_before_08_refuse_hidden_emitters() {
     assert!(refusal.contains("chapter 08"), "{refusal}");
     assert!(ch08_path_tracing::CAPABILITIES.check(&scene).is_ok());
 }
+
+/// A lamp facing the camera in front of a wall lit by a point light, with `hide`.
+fn lamp_before_a_wall(hide: bool) -> String {
+    format!(
+        r#"<scene version="3.0.0">
+    <integrator type="path"><integer name="max_depth" value="3"/>
+        <boolean name="hide_emitters" value="{hide}"/></integrator>
+    <sensor type="perspective"><float name="fov" value="30"/>
+        <transform name="to_world"><lookat origin="0, 0, 5" target="0, 0, 0" up="0, 1, 0"/></transform>
+        <sampler type="independent"><integer name="sample_count" value="4"/></sampler>
+        <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/>
+            <rfilter type="box"/></film></sensor>
+    <shape type="rectangle"><transform name="to_world"><scale value="3"/></transform>
+        <bsdf type="diffuse"><rgb name="reflectance" value="0.5"/></bsdf></shape>
+    <shape type="rectangle">
+        <transform name="to_world"><scale value="0.4"/><translate z="1"/></transform>
+        <emitter type="area"><rgb name="radiance" value="8"/></emitter></shape>
+    <emitter type="point"><point name="position" x="2" y="2" z="3"/>
+        <rgb name="intensity" value="20"/></emitter>
+</scene>"#
+    )
+}
+
+#[test]
+fn a_hidden_lamp_shows_what_is_behind_it() {
+    let folder = tempfile::tempdir().unwrap();
+    let shown = render(&lamp_before_a_wall(false), folder.path(), "shown");
+    let hidden = render(&lamp_before_a_wall(true), folder.path(), "hidden");
+    let centre = (shown.width / 2, shown.height / 2);
+    assert_eq!(
+        shown.get(centre.0, centre.1),
+        glam::Vec3::splat(8.0),
+        "the camera sees the lamp's face"
+    );
+    let behind = hidden.get(centre.0, centre.1);
+    // The wall, lit by the point light: neither black nor the lamp.
+    assert!(
+        behind.x > 0.05 && behind.x < 1.0,
+        "a hidden lamp must let the camera ray through to the lit wall behind it (Mitsuba's \
+         hide_emitters skips emitting shapes along camera rays), found {behind}: black means \
+         the lamp still stops the ray"
+    );
+}
