@@ -49,7 +49,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
         },
         AgreementScene {
             name: "textured",
-            checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere; each shape's uv as Mitsuba's",
+            checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere turned by its to_world (its uv turn with it); each shape's uv as Mitsuba's",
             variant: MITSUBA_VARIANT,
         },
         AgreementScene {

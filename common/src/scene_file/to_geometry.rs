@@ -7,7 +7,7 @@
 
 use super::{ShapeDescription, ShapeGeometry};
 use crate::geometry::{Disc, Parallelogram, Shape, Sphere, TriangleMesh};
-use glam::{Mat4, Vec3};
+use glam::{Mat3, Mat4, Vec3};
 
 /// The world-space shapes of one description: one for a sphere, rectangle or disc, six
 /// parallelograms for a cube, one triangle per triangle of an OBJ, PLY or serialized mesh. Any linear map makes a
@@ -19,7 +19,9 @@ pub fn world_shapes(shape: &ShapeDescription) -> Result<Vec<Shape>, String> {
     match &shape.geometry {
         ShapeGeometry::Sphere { center, radius } => {
             let scale = uniform_scale(m).ok_or("a sphere under a non-uniform scale is an ellipsoid, which Mitsuba 3 refuses too (its to_world may not scale a sphere unevenly)")?;
-            let sphere = Sphere::new(m.transform_point3(*center), radius * scale);
+            // Its uv turn with to_world, as Mitsuba's do: the linear part without its scale.
+            let rotation = Mat3::from_mat4(m) / scale;
+            let sphere = Sphere::new(m.transform_point3(*center), radius * scale).turned(rotation);
             Ok(vec![Shape::Sphere(if shape.flip_normals {
                 sphere.flipped()
             } else {

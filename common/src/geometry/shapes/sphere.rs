@@ -2,7 +2,7 @@
 
 use std::f32::consts::{PI, TAU};
 
-use glam::{Vec2, Vec3};
+use glam::{Mat3, Vec2, Vec3};
 
 use super::Crossing;
 use crate::Ray;
@@ -29,7 +29,8 @@ enum PlainRoot {
 /// A sphere; its normal points outwards, or inwards once [`flipped`](Sphere::flipped).
 ///
 /// Its surface parameters are `uv = (φ / 2π, θ / π)`, with `θ` measured from the `+z` pole and
-/// `φ` around `z`, counter-clockwise from `+x`.
+/// `φ` around `z`, counter-clockwise from `+x`: the axes of its own frame
+/// ([`to_object`](Sphere::to_object)), the world's unless the sphere was [`turned`](Sphere::turned).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sphere {
     /// The centre.
@@ -39,6 +40,10 @@ pub struct Sphere {
     /// Whether the normal points inwards (a scene file's `flip_normals`): a dome lit from
     /// inside, or a room's walls, whose one-sided materials and lights then face the centre.
     pub inward: bool,
+    /// The rotation from world axes to the sphere's own, in which its `uv` are measured: a
+    /// scene file's sphere turned by its `to_world` carries its texture round with it, as in
+    /// Mitsuba. The identity for a sphere built in world axes.
+    pub to_object: Mat3,
 }
 
 impl Sphere {
@@ -48,6 +53,16 @@ impl Sphere {
             center,
             radius,
             inward: false,
+            to_object: Mat3::IDENTITY,
+        }
+    }
+
+    /// The same sphere with its `uv` measured in the axes `rotation` turns the world's into
+    /// (the rotation of a scene file's `to_world`; a reflection is allowed).
+    pub fn turned(self, rotation: Mat3) -> Self {
+        Self {
+            to_object: rotation.transpose(),
+            ..self
         }
     }
 
@@ -301,9 +316,10 @@ impl Sphere {
         let p_error = gamma(5) * local.abs() + gamma(2) * p.abs();
         let n = self.oriented(local.normalize());
 
-        let phi = local.y.atan2(local.x);
+        let own = self.to_object * local;
+        let phi = own.y.atan2(own.x);
         let phi = if phi < 0.0 { phi + TAU } else { phi };
-        let theta = (local.z / self.radius).clamp(-1.0, 1.0).acos();
+        let theta = (own.z / self.radius).clamp(-1.0, 1.0).acos();
         SurfaceHit {
             t,
             p,
