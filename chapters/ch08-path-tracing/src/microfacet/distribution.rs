@@ -65,6 +65,7 @@ impl NormalDistribution {
         if value * m.z > 1e-20 { value } else { 0.0 }
     }
 
+    // ANCHOR: smith_g1
     /// Smith's `G1(w, m)`: the share of microfacets of normal `m` that the direction `w` sees
     /// unshadowed, in `[0, 1]`. 0 when `w` would see the back of the facet (`w·m` and
     /// `cos θ_w` of opposite signs); 1 at normal incidence.
@@ -94,6 +95,7 @@ impl NormalDistribution {
             MicrofacetDistribution::Ggx => 2.0 / (1.0 + (1.0 + tan2_alpha2).sqrt()),
         }
     }
+    // ANCHOR_END: smith_g1
 
     /// Smith's separable `G(wi, wo, m) = G1(wi, m) G1(wo, m)`, Mitsuba's shadowing-masking
     /// term (it ignores the correlation between the two directions' shadows).

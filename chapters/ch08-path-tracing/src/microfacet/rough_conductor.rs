@@ -26,6 +26,7 @@ pub struct RoughConductor {
 }
 
 impl RoughConductor {
+    // ANCHOR: rough_conductor_eval
     /// `f(wo, wi) cos θ_i`.
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         if wo.z <= 0.0 || wi.z <= 0.0 {
@@ -39,6 +40,7 @@ impl RoughConductor {
         let g = self.distribution.g(wo, wi, h);
         self.fresnel(wo.dot(h)) * (d * g / (4.0 * wo.z))
     }
+    // ANCHOR_END: rough_conductor_eval
 
     /// The density per unit solid angle with which [`sample`](Self::sample) picks `wi`: the
     /// visible-normal density of the half vector, times `dh / dwi = 1 / (4 wi·h)`.
