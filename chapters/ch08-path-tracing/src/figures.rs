@@ -609,9 +609,11 @@ fn microfacet_lobes(out: &Path) -> anyhow::Result<()> {
 /// The white furnace of a rough white mirror: albedo against roughness, the table at three
 /// roughnesses.
 fn microfacet_furnace(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let step = quality.level.pick(0.1, 0.05);
-    let count = (1.0 / step as f64).round() as u32;
-    let alphas: Vec<f32> = (1..=count).map(|i| i as f32 * step).collect();
+    // The table's roughnesses are among the curves' at both levels.
+    let alphas: Vec<f32> = quality.level.pick(
+        vec![0.1, 0.25, 0.5, 0.75, 1.0],
+        (1..=20).map(|i| i as f32 * 0.05).collect(),
+    );
     let incidences = quality
         .level
         .pick(&[0.0, 70.0, 85.0][..], &[0.0, 45.0, 70.0, 85.0]);
