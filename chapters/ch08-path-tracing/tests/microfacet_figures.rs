@@ -15,7 +15,10 @@ fn the_lobe_and_furnace_figures_are_written() {
     let lobes = dir.join("microfacet-lobes.png");
     let furnace = dir.join("microfacet-furnace.png");
     figures::lobes(&lobes, &[0.1, 0.4], 40.0).expect("the lobes figure");
-    figures::furnace(&furnace, &[0.0, 45.0, 70.0, 85.0]).expect("the furnace figure");
+    let alphas = [0.1, 0.5, 1.0];
+    let curves = figures::furnace(&furnace, &[0.0, 85.0], &alphas).expect("the furnace figure");
+    let table = figures::furnace_markdown(&curves, &alphas);
+    assert_eq!(table.lines().count(), 2 + 4, "{table}");
     let visible = dir.join("microfacet-visible-normals.png");
     figures::visible_normals(&visible, MicrofacetDistribution::Ggx, 0.5, 60.0, 200_000)
         .expect("the visible normals figure");

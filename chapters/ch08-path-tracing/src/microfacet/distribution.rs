@@ -59,15 +59,13 @@ impl NormalDistribution {
                 let tan2_over_alpha2 = ((m.x / au).powi(2) + (m.y / av).powi(2)) / cos2;
                 (-tan2_over_alpha2).exp() / (PI * au * av * cos2 * cos2)
             }
-            MicrofacetDistribution::Ggx => {
-                let s = (m.x / au).powi(2) + (m.y / av).powi(2) + cos2;
-                1.0 / (PI * au * av * s * s)
-            }
+            MicrofacetDistribution::Ggx => ggx_density(m, au, av),
         };
         // Also catches the 0/0 at the horizon.
         if value * m.z > 1e-20 { value } else { 0.0 }
     }
 
+    // ANCHOR: smith_g1
     /// Smith's `G1(w, m)`: the share of microfacets of normal `m` that the direction `w` sees
     /// unshadowed, in `[0, 1]`. 0 when `w` would see the back of the facet (`w·m` and
     /// `cos θ_w` of opposite signs); 1 at normal incidence.
@@ -97,6 +95,7 @@ impl NormalDistribution {
             MicrofacetDistribution::Ggx => 2.0 / (1.0 + (1.0 + tan2_alpha2).sqrt()),
         }
     }
+    // ANCHOR_END: smith_g1
 
     /// Smith's separable `G(wi, wo, m) = G1(wi, m) G1(wo, m)`, Mitsuba's shadowing-masking
     /// term (it ignores the correlation between the two directions' shadows).
@@ -174,6 +173,22 @@ impl NormalDistribution {
         self.d(m) * m.z.max(0.0)
     }
 }
+
+// ANCHOR: ggx_density
+/// GGX's density of microfacet normals at the unit normal `m` (above the surface), for the
+/// roughness `alpha_u` along `x` and `alpha_v` along `y`: Walter et al.'s
+/// `D(m) = 1 / (π α_u α_v cos⁴ θ_m (1 + tan² θ_m (cos² φ / α_u² + sin² φ / α_v²))²)`,
+/// written without the angles. Normalised so that `∫ D(m) cos θ_m dm = 1`: the facets'
+/// projected area is the surface's.
+pub fn ggx_density(m: Vec3, alpha_u: f32, alpha_v: f32) -> f32 {
+    // BEGIN SOLUTION
+    // `cos⁴ θ (1 + tan² θ ...)²` is `(cos² θ + sin² θ ...)²`: in the normal's coordinates,
+    // `(x² / α_u² + y² / α_v² + z²)²`, with no angle to compute and nothing to divide by 0.
+    let s = (m.x / alpha_u).powi(2) + (m.y / alpha_v).powi(2) + m.z * m.z;
+    1.0 / (PI * alpha_u * alpha_v * s * s)
+    // END SOLUTION
+}
+// ANCHOR_END: ggx_density
 
 /// `(sin φ, cos φ)` of `v`'s azimuth, and `(0, 1)` for a `v` (almost) on the normal, where the
 /// azimuth is undefined (as Mitsuba's `Frame3f::sincos_phi`).

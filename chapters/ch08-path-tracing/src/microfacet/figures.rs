@@ -1,5 +1,6 @@
 //! The figures of the microfacet page: chapter 06's `cos^n` lobe beside GGX and Beckmann of
-//! the same roughness, and the white furnace of a rough mirror.
+//! the same roughness, and the white furnace of a rough mirror; the
+//! visible normals' histogram; the chi-square test of the normal samplers.
 
 use super::albedo;
 use super::distribution::NormalDistribution;
@@ -53,10 +54,11 @@ pub fn lobes(path: &Path, alphas: &[f32], incidence: f64) -> Result<(), OutputEr
             lobe,
             SeriesStyle::Dashed,
         ));
-        for (name, kind) in [
-            ("GGX", MicrofacetDistribution::Ggx),
-            ("Beckmann", MicrofacetDistribution::Beckmann),
+        for kind in [
+            MicrofacetDistribution::Ggx,
+            MicrofacetDistribution::Beckmann,
         ] {
+            let name = name_of(kind);
             let bsdf = white_conductor(kind, alpha);
             let points = angles
                 .iter()
@@ -78,30 +80,41 @@ pub fn lobes(path: &Path, alphas: &[f32], incidence: f64) -> Result<(), OutputEr
 }
 
 /// The white furnace of a rough mirror that reflects everything: its albedo `∫ f cos θ_i dω_i`
-/// against the roughness, one curve per angle of incidence, for GGX (lines) and Beckmann
-/// (dashed). Below 1 by what the facets shadow: Smith's model scatters once.
-pub fn furnace(path: &Path, incidences: &[f64]) -> Result<(), OutputError> {
-    let alphas: Vec<f32> = (1..=20).map(|i| i as f32 * 0.05).collect();
+/// against the roughness `alphas`, one curve per angle of incidence, for GGX (lines) and
+/// Beckmann (dashed). Below 1 by what the facets shadow: Smith's model scatters once.
+/// Returns the albedos plotted, for [`furnace_markdown`].
+pub fn furnace(
+    path: &Path,
+    incidences: &[f64],
+    alphas: &[f32],
+) -> Result<Vec<FurnaceCurve>, OutputError> {
+    let mut curves = Vec::new();
     let mut series = Vec::new();
-    for (name, kind, style) in [
-        ("GGX", MicrofacetDistribution::Ggx, SeriesStyle::Line),
-        (
-            "Beckmann",
-            MicrofacetDistribution::Beckmann,
-            SeriesStyle::Dashed,
-        ),
+    for (kind, style) in [
+        (MicrofacetDistribution::Ggx, SeriesStyle::Line),
+        (MicrofacetDistribution::Beckmann, SeriesStyle::Dashed),
     ] {
         for &incidence in incidences {
             let wo = in_plane(incidence);
-            let points = alphas
+            let albedos: Vec<(f32, f64)> = alphas
                 .iter()
                 .map(|&alpha| {
                     let bsdf = white_conductor(kind, alpha);
                     let albedo = albedo::reflected(wo, alpha, |wi| bsdf.eval(wo, wi));
-                    (f64::from(alpha), albedo.x)
+                    (alpha, albedo.x)
                 })
                 .collect();
-            series.push(Series::new(format!("{name}, {incidence}°"), points, style));
+            let points = albedos.iter().map(|&(a, v)| (f64::from(a), v)).collect();
+            series.push(Series::new(
+                format!("{}, {incidence}°", name_of(kind)),
+                points,
+                style,
+            ));
+            curves.push(FurnaceCurve {
+                kind,
+                incidence,
+                albedos,
+            });
         }
     }
     line_plot(
@@ -109,7 +122,51 @@ pub fn furnace(path: &Path, incidences: &[f64]) -> Result<(), OutputError> {
         "White furnace of a rough mirror",
         &Axes::linear("roughness alpha", "albedo"),
         &series,
-    )
+    )?;
+    Ok(curves)
+}
+
+/// One curve of the furnace figure: a distribution seen from one angle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FurnaceCurve {
+    /// Beckmann or GGX.
+    pub kind: MicrofacetDistribution,
+    /// The angle of incidence in degrees.
+    pub incidence: f64,
+    /// `(alpha, albedo)` along the curve.
+    pub albedos: Vec<(f32, f64)>,
+}
+
+/// The furnace's numbers at the roughnesses `shown` (those the curves hold), one row per
+/// distribution and angle, for the page to include: the share of the light a white rough
+/// mirror keeps.
+pub fn furnace_markdown(curves: &[FurnaceCurve], shown: &[f32]) -> String {
+    let mut table = String::from("| distribution | incidence |");
+    for alpha in shown {
+        table += &format!(" α = {alpha} |");
+    }
+    table += "\n|---|---|";
+    table += &"---|".repeat(shown.len());
+    table += "\n";
+    for curve in curves {
+        table += &format!("| {} | {}° |", name_of(curve.kind), curve.incidence);
+        for &alpha in shown {
+            match curve.albedos.iter().find(|(a, _)| (a - alpha).abs() < 1e-4) {
+                Some(&(_, albedo)) => table += &format!(" {albedo:.3} |"),
+                None => table += " |",
+            }
+        }
+        table += "\n";
+    }
+    table
+}
+
+/// "GGX" or "Beckmann".
+pub fn name_of(kind: MicrofacetDistribution) -> &'static str {
+    match kind {
+        MicrofacetDistribution::Beckmann => "Beckmann",
+        MicrofacetDistribution::Ggx => "GGX",
+    }
 }
 
 /// The visible normals of `kind` at roughness `alpha` seen from `incidence` degrees: where
@@ -140,13 +197,12 @@ pub fn visible_normals(
         let m = p.extend(z2.sqrt());
         f64::from(d.visible_normal_pdf(w, m) / m.z)
     };
-    let name = match kind {
-        MicrofacetDistribution::Beckmann => "Beckmann",
-        MicrofacetDistribution::Ggx => "GGX",
-    };
     histogram_vs_pdf(
         path,
-        &format!("Visible normals, {name} alpha {alpha}, seen from {incidence}°"),
+        &format!(
+            "Visible normals, {} alpha {alpha}, seen from {incidence}°",
+            name_of(kind)
+        ),
         &points,
         &pdf,
         [Vec2::splat(-1.0), Vec2::splat(1.0)],

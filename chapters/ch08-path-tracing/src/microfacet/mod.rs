@@ -27,6 +27,7 @@
 //! scattering, so rough surfaces lose energy as Mitsuba's do (see the furnace figure).
 
 pub mod albedo;
+pub mod chi2_table;
 pub mod coating;
 pub mod distribution;
 pub mod figures;

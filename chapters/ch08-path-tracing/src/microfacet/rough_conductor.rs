@@ -8,7 +8,6 @@
 //! unless both are above the surface.
 
 use super::distribution::NormalDistribution;
-use super::fresnel;
 use crate::BsdfSample;
 use crate::bsdf::conductor::fresnel_conductor_rgb;
 use glam::{Vec2, Vec3};
@@ -27,6 +26,7 @@ pub struct RoughConductor {
 }
 
 impl RoughConductor {
+    // ANCHOR: rough_conductor_eval
     /// `f(wo, wi) cos θ_i`.
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         if wo.z <= 0.0 || wi.z <= 0.0 {
@@ -40,6 +40,7 @@ impl RoughConductor {
         let g = self.distribution.g(wo, wi, h);
         self.fresnel(wo.dot(h)) * (d * g / (4.0 * wo.z))
     }
+    // ANCHOR_END: rough_conductor_eval
 
     /// The density per unit solid angle with which [`sample`](Self::sample) picks `wi`: the
     /// visible-normal density of the half vector, times `dh / dwi = 1 / (4 wi·h)`.
@@ -55,10 +56,14 @@ impl RoughConductor {
         self.distribution.d(h) * self.distribution.g1(wo, h) / (4.0 * wo.z)
     }
 
+    // ANCHOR: rough_conductor_sample
     /// A direction mirrored about a facet normal visible from `wo`, drawn with the two
-    /// numbers `u`; `None` below the surface (the path ends: that share of the light is what
-    /// the single-scattering model loses).
+    /// numbers `u`, with its density per unit solid angle and its weight `f cos θ_i / pdf`;
+    /// `None` when `wo` is below the surface or the mirrored direction is (the path ends: that
+    /// share of the light is what the single-scattering model loses).
     pub fn sample(&self, wo: Vec3, u: Vec2) -> Option<BsdfSample> {
+        // BEGIN SOLUTION
+        use crate::microfacet::fresnel;
         if wo.z <= 0.0 {
             return None;
         }
@@ -68,6 +73,8 @@ impl RoughConductor {
         if pdf_m == 0.0 || wi.z <= 0.0 {
             return None;
         }
+        // `f cos θ_i / pdf`: of `F D G1(wo) G1(wi) / (4 cos θ_o)` over
+        // `G1(wo) (wo·m) D / (4 cos θ_o (wi·m))` only `F G1(wi)` is left (`wo·m = wi·m`).
         let weight = self.fresnel(wo.dot(m)) * self.distribution.g1(wi, m);
         Some(BsdfSample {
             wi,
@@ -75,9 +82,12 @@ impl RoughConductor {
             pdf: pdf_m / (4.0 * wi.dot(m)),
             eta_scale: 1.0,
         })
+        // END SOLUTION
     }
+    // ANCHOR_END: rough_conductor_sample
 
-    fn fresnel(&self, cos_theta: f32) -> Vec3 {
+    /// The facet's Fresnel reflectance at `cos θ = w·m`, times the specular reflectance.
+    pub fn fresnel(&self, cos_theta: f32) -> Vec3 {
         fresnel_conductor_rgb(cos_theta, self.eta, self.k) * self.specular_reflectance
     }
 }

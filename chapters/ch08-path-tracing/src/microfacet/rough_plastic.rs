@@ -78,6 +78,7 @@ impl RoughPlastic {
         &self.coating
     }
 
+    // ANCHOR: rough_plastic_eval
     /// `f(wo, wi) cos θ_i`.
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         if wo.z <= 0.0 || wi.z <= 0.0 {
@@ -96,6 +97,7 @@ impl RoughPlastic {
         self.specular_reflectance * coating
             + albedo * (FRAC_1_PI / (self.eta * self.eta) * wi.z * through)
     }
+    // ANCHOR_END: rough_plastic_eval
 
     /// The probability of sampling the coating's lobe for `wo` above the surface.
     fn coating_probability(&self, cos_theta_o: f32) -> f32 {

@@ -18,6 +18,7 @@ mod cases;
 mod chart;
 mod check;
 mod quadrature;
+mod strip_chart;
 
 use cases::TESTS;
 use ch02_monte_carlo::chi2::significance_level;

@@ -1,6 +1,6 @@
 //! Every microfacet sampler delivers the density it claims: the normal samplers (visible and
 //! plain) against `D_w(m)` and `D(m) cos θ_m`, and the three BSDFs' `sample` against their
-//! `pdf`, with chapter 02's chi-square test on a [`slope_chart`] whose strips follow each lobe
+//! `pdf`, with chapter 02's chi-square test on a [`strip_chart`] with [`slope_chart`]'s map, whose strips follow each lobe
 //! however narrow and however long its tail, and whose last row counts the samples that give
 //! no direction (their share must be what `∫ pdf` leaves below 1).
 //!
@@ -10,6 +10,8 @@
 
 #[path = "../bsdf_sampling/quadrature.rs"]
 mod quadrature;
+#[path = "../bsdf_sampling/strip_chart.rs"]
+mod strip_chart;
 
 mod cases;
 mod slope_chart;

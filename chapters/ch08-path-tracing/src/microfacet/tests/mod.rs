@@ -4,6 +4,7 @@
 
 mod bsdfs;
 mod distribution;
+mod exercises;
 
 use super::NormalDistribution;
 use common::scene::MicrofacetDistribution;

@@ -1,0 +1,235 @@
+//! The checks of the chapter's microfacet exercises: GGX's density of normals, and the rough
+//! metal's sample by its visible normals. Each names the usual slip when it sees one.
+
+use crate::microfacet::albedo::over_normals;
+use crate::microfacet::distribution::ggx_density;
+use crate::microfacet::fresnel::reflect;
+use crate::microfacet::{NormalDistribution, RoughConductor};
+use common::scene::MicrofacetDistribution::{Beckmann, Ggx};
+use glam::{DVec3, Vec2, Vec3};
+use std::f64::consts::PI;
+
+/// GGX written with the angles, in double precision: the formula as papers print it.
+fn ggx_by_angles(m: Vec3, alpha_u: f32, alpha_v: f32) -> f64 {
+    let m = m.as_dvec3().normalize();
+    let (au, av) = (f64::from(alpha_u), f64::from(alpha_v));
+    let cos2 = m.z * m.z;
+    let sin2 = 1.0 - cos2;
+    let tan2 = sin2 / cos2;
+    let phi = m.y.atan2(m.x);
+    let stretch = phi.cos().powi(2) / (au * au) + phi.sin().powi(2) / (av * av);
+    1.0 / (PI * au * av * cos2 * cos2 * (1.0 + tan2 * stretch).powi(2))
+}
+
+/// Names the slip that turns the right density into `got`, if it is one of the usual ones.
+fn ggx_mistake(got: f64, m: Vec3, alpha_u: f32, alpha_v: f32) -> Option<&'static str> {
+    let (x, y, z) = (f64::from(m.x), f64::from(m.y), f64::from(m.z));
+    let (au, av) = (f64::from(alpha_u), f64::from(alpha_v));
+    let s = (x / au).powi(2) + (y / av).powi(2) + z * z;
+    let close = |value: f64| (got - value).abs() <= 1e-4 * value.abs().max(1e-12);
+    let slopes2 = ((x / au).powi(2) + (y / av).powi(2)) / (z * z);
+    let candidates = [
+        (
+            1.0 / (au * av * s * s),
+            "it is π times too large: the 1/π is missing, and without it the facets' projected \
+             area is π times the surface's",
+        ),
+        (
+            1.0 / (PI * au * av * s),
+            "the sum x²/α_u² + y²/α_v² + z² must be squared (that square is where \
+             cos⁴ θ (1 + tan² θ/α²)² went)",
+        ),
+        (
+            (-slopes2).exp() / (PI * au * av * z.powi(4)),
+            "that is Beckmann's distribution (a Gaussian in the slope); GGX's tail falls like a \
+             power of tan θ, not an exponential",
+        ),
+        (
+            {
+                let t = (x * au).powi(2) + (y * av).powi(2) + z * z;
+                1.0 / (PI * au * av * t * t)
+            },
+            "the tangential parts x and y are multiplied by the roughness; divide them by it (a \
+             rougher surface spreads the normals wider)",
+        ),
+        (
+            {
+                let t = (x / au).powi(2) + (y / au).powi(2) + z * z;
+                1.0 / (PI * au * au * t * t)
+            },
+            "alpha_v is ignored: the roughness along y is alpha_v",
+        ),
+    ];
+    candidates
+        .into_iter()
+        .find(|&(value, _)| close(value))
+        .map(|(_, words)| words)
+}
+
+#[test]
+fn exercise_ggx_density() {
+    let normals = [
+        Vec3::Z,
+        Vec3::new(0.3, 0.0, 1.0).normalize(),
+        Vec3::new(0.2, -0.4, 0.8).normalize(),
+        Vec3::new(-0.9, 0.5, 0.2).normalize(),
+    ];
+    for (au, av) in [(0.5, 0.5), (0.2, 0.2), (1.0, 1.0), (0.1, 0.6)] {
+        for m in normals {
+            let got = f64::from(ggx_density(m, au, av));
+            let expected = ggx_by_angles(m, au, av);
+            if (got - expected).abs() <= 1e-4 * expected {
+                continue;
+            }
+            let why = ggx_mistake(got, m, au, av).unwrap_or(
+                "D(m) = 1 / (π α_u α_v cos⁴ θ_m (1 + tan² θ_m (cos² φ/α_u² + sin² φ/α_v²))²)",
+            );
+            panic!(
+                "ggx_density: {why}.\n  ggx_density(m = {m}, alpha_u = {au}, alpha_v = {av}) gave \
+                 {got}, expected {expected}"
+            );
+        }
+    }
+    // On the horizon a facet stands on edge: its density is finite.
+    let edge = ggx_density(Vec3::X, 0.3, 0.3);
+    assert!(
+        edge.is_finite() && edge >= 0.0,
+        "ggx_density: a facet on edge (m = (1, 0, 0)) has a finite density, but got {edge}: \
+         write it without dividing by cos θ_m"
+    );
+    for (au, av) in [(0.3f32, 0.3f32), (0.1, 0.6)] {
+        let area = over_normals(au.max(av), |m| {
+            DVec3::splat(f64::from(ggx_density(m, au, av) * m.z))
+        })
+        .x;
+        assert!(
+            (area - 1.0).abs() < 2e-3,
+            "ggx_density: ∫ D(m) cos θ_m dm = {area:.4} for alpha ({au}, {av}), not 1: the \
+             facets' projected area must be the surface's"
+        );
+    }
+}
+
+/// The metals of the check: copper-like, GGX and Beckmann, isotropic and not.
+fn metals() -> Vec<RoughConductor> {
+    [
+        NormalDistribution::new(Ggx, 0.3, 0.3),
+        NormalDistribution::new(Beckmann, 0.5, 0.5),
+        NormalDistribution::new(Ggx, 0.1, 0.4),
+    ]
+    .into_iter()
+    .map(|distribution| RoughConductor {
+        distribution,
+        eta: Vec3::new(0.27, 0.68, 1.3),
+        k: Vec3::new(3.6, 2.6, 2.3),
+        specular_reflectance: Vec3::ONE,
+    })
+    .collect()
+}
+
+fn close(a: f32, b: f32) -> bool {
+    (a - b).abs() <= 1e-4 * a.abs().max(b.abs()).max(1e-6)
+}
+
+fn close3(a: Vec3, b: Vec3) -> bool {
+    (a - b).abs().max_element() <= 1e-4 * a.abs().max(b.abs()).max_element().max(1e-6)
+}
+
+/// What the sample at `u` must be, and the words for what it is instead.
+fn check_sample(metal: &RoughConductor, wo: Vec3, u: Vec2) -> Result<(), String> {
+    let d = &metal.distribution;
+    let got = metal.sample(wo, u);
+    let m = d.sample_visible_normal(wo, u);
+    let wi = reflect(wo, m);
+    let call = format!("sample(wo = {wo}, u = {u}) with {d:?}");
+    if wi.z <= 0.0 {
+        return match got {
+            None => Ok(()),
+            Some(s) => Err(format!(
+                "{call} gave {s:?}, but the visible normal m = {m} drawn with u mirrors wo below \
+                 the surface: the path ends there (None)"
+            )),
+        };
+    }
+    let Some(s) = got else {
+        return Err(format!(
+            "{call} gave no direction, but the visible normal m = {m} drawn with u mirrors wo \
+             to {wi}, above the surface"
+        ));
+    };
+    if !close3(s.wi, wi) {
+        let plain = reflect(wo, d.sample_normal(u));
+        let why = if close3(s.wi, plain) {
+            "the normal is drawn from all the facets (sample_normal); draw it from those wo can \
+             see (sample_visible_normal)"
+        } else if close3(s.wi, m) {
+            "wi is the facet normal itself: the light comes from wo mirrored about it"
+        } else {
+            "wi must be wo mirrored about the visible normal that u draws"
+        };
+        return Err(format!("{call}: {why}; wi = {}, expected {wi}", s.wi));
+    }
+    let pdf = metal.pdf(wo, wi);
+    if !close(s.pdf, pdf) {
+        let pdf_m = d.visible_normal_pdf(wo, m);
+        let why = if close(s.pdf, pdf_m) {
+            "that is the density of the normal m, not of the direction wi: mirroring turns \
+             dω_m into dω_i = 4 (wi·m) dω_m"
+        } else if close(s.pdf, d.normal_pdf(m) / (4.0 * wi.dot(m))) {
+            "that is the density of all the normals, D(m) cos θ_m; the visible ones have \
+             D_w(m) = G1(wo, m) (wo·m) D(m) / cos θ_o"
+        } else {
+            "the density of wi is D_w(m) / (4 wi·m)"
+        };
+        return Err(format!("{call}: {why}; pdf = {}, expected {pdf}", s.pdf));
+    }
+    let fresnel = metal.fresnel(wo.dot(m));
+    let expected = fresnel * d.g1(wi, m);
+    if !close3(s.weight, expected) {
+        let why = if close3(s.weight, fresnel * d.g(wo, wi, m)) {
+            "G1(wo, m) is counted twice: the visible-normal density already holds it, so only \
+             G1(wi, m) is left in the weight"
+        } else if close3(s.weight, fresnel) {
+            "G1(wi, m) is missing: the facet may be shadowed from the light's side"
+        } else if close3(s.weight, metal.eval(wo, wi)) {
+            "that is f cos θ_i itself; the weight is f cos θ_i / pdf"
+        } else {
+            "the weight is f cos θ_i / pdf, which comes to F(wo·m) G1(wi, m)"
+        };
+        return Err(format!(
+            "{call}: {why}; weight = {}, expected {expected}",
+            s.weight
+        ));
+    }
+    if s.eta_scale != 1.0 {
+        return Err(format!(
+            "{call}: a reflection does not scale radiance; eta_scale = {}, expected 1",
+            s.eta_scale
+        ));
+    }
+    Ok(())
+}
+
+#[test]
+fn exercise_rough_conductor_sample() {
+    for metal in metals() {
+        let below = metal.sample(Vec3::new(0.3, 0.0, -0.95).normalize(), Vec2::splat(0.5));
+        assert!(
+            below.is_none(),
+            "rough conductor sample: wo below the surface sees no facet of this one-sided \
+             metal, so there is no direction (None), but got {below:?}"
+        );
+        for degrees in [0.0f32, 50.0, 80.0] {
+            let (sin, cos) = degrees.to_radians().sin_cos();
+            let wo = Vec3::new(sin * 0.866, sin * 0.5, cos);
+            for i in 0..8 {
+                for j in 0..8 {
+                    let u = Vec2::new((i as f32 + 0.5) / 8.0, (j as f32 + 0.5) / 8.0);
+                    if let Err(why) = check_sample(&metal, wo, u) {
+                        panic!("rough conductor sample: {why}");
+                    }
+                }
+            }
+        }
+    }
+}
