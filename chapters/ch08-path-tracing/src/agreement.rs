@@ -67,6 +67,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "Veach's multiple-importance plates, our own: the direct integrator (one light and one BSDF sample per hit, power heuristic) on four roughplastic plates from alpha 0.02 to 0.25 under four sphere lights of equal power from radius 0.1 to 0.8, hidden from the camera (which then sees through them, as Mitsuba's hide_emitters does)",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "veach-plates-counts",
+            checks: "the same plates with the direct integrator's emitter_samples 3 and bsdf_samples 2: the multi-sample power heuristic, each density weighed by its count, each estimate divided by it",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

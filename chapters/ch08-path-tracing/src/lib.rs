@@ -28,6 +28,7 @@ pub mod agreement;
 pub mod bsdf;
 pub mod cli;
 pub mod dimensions;
+pub mod direct;
 pub mod distribution;
 pub mod figures;
 pub mod furnace;
@@ -109,7 +110,11 @@ pub fn render_with<S: TimeSampler>(
     };
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
         let ray = camera_rays.generate(world, p_film, sampler);
-        tracer.radiance(&ray, sampler, counters)
+        match method.options.direct {
+            // Mitsuba's `direct` with other sample counts than one of each (beyond the lecture).
+            Some(samples) => tracer.direct(&ray, samples, sampler, counters),
+            None => tracer.radiance(&ray, sampler, counters),
+        }
     })
 }
 // ANCHOR_END: render_with

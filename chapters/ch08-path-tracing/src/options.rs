@@ -1,6 +1,7 @@
 //! What the path tracer does at each bounce: the switches that the chapter compares.
 
 use crate::mis::MisHeuristic;
+use common::scene::DirectSamples;
 
 /// The path tracer's choices, Mitsuba 3's `path` integrator's by default.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,6 +22,10 @@ pub struct PathOptions {
     /// segment finds no emission (no light source, no environment); light still reaches
     /// what it sees.
     pub hide_emitters: bool,
+    /// Mitsuba's `direct` integrator with sample counts other than one of each, which
+    /// [`PathTracer::direct`](crate::PathTracer::direct) renders; `None` for the path (and
+    /// for `direct` with one of each, which is the path cut after one bounce).
+    pub direct: Option<DirectSamples>,
 }
 
 /// Mitsuba's default `rr_depth`.
@@ -35,6 +40,7 @@ impl Default for PathOptions {
             rr_depth: Some(MITSUBA_RR_DEPTH),
             max_depth: 12,
             hide_emitters: false,
+            direct: None,
         }
     }
 }

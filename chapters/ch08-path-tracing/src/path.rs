@@ -138,7 +138,11 @@ impl PathTracer<'_> {
     /// They still block shadow rays and later segments, and still light the scene. Without
     /// `hide_emitters`, the ray itself. Draws no random number, so every other pixel keeps
     /// its samples.
-    fn past_hidden_emitters(&self, camera_ray: &Ray, counters: &mut SampleCounters) -> Ray {
+    pub(crate) fn past_hidden_emitters(
+        &self,
+        camera_ray: &Ray,
+        counters: &mut SampleCounters,
+    ) -> Ray {
         use ch01_whitted::scene::World;
         /// More emitting surfaces in a row than any scene stacks; a hostile one that does
         /// shows the last as a black surface instead of looping on.

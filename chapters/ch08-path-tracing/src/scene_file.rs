@@ -5,11 +5,12 @@
 //! they leave out do not apply here, as the chapter's capabilities say.
 
 use crate::options::PathOptions;
-use common::scene::{Integrator, Scene};
+use common::scene::{DirectSamples, Integrator, Scene};
 
 /// NEE and the power heuristic as Mitsuba's `path` does them, with the scene's depth limit and,
-/// for a `path` integrator, its `rr_depth`; Mitsuba's `direct` is one light and one BSDF
-/// sample with the power heuristic, no bounce (the scene's depth 2).
+/// for a `path` integrator, its `rr_depth`; Mitsuba's `direct` with one light and one BSDF
+/// sample is the path cut after one bounce (the scene's depth 2), with other counts
+/// [`PathTracer::direct`](crate::PathTracer::direct).
 pub fn path_options(scene: &Scene) -> PathOptions {
     match scene.integrator {
         Integrator::Path { rr_depth } => PathOptions {
@@ -18,9 +19,10 @@ pub fn path_options(scene: &Scene) -> PathOptions {
             hide_emitters: scene.hide_emitters,
             ..PathOptions::default()
         },
-        Integrator::Direct => PathOptions {
+        Integrator::Direct(samples) => PathOptions {
             max_depth: scene.max_depth,
             hide_emitters: scene.hide_emitters,
+            direct: (samples != DirectSamples::ONE_EACH).then_some(samples),
             ..PathOptions::default()
         },
     }

@@ -13,7 +13,9 @@
 //! - notes light the chapter leaves out (indirect light before chapter 08), and settings it
 //!   ignores (a film's filter in chapter 01), each from the same declaration.
 
-use super::{Camera, CameraModel, FilmFilter, Integrator, Material, Scene, TextPosition};
+use super::{
+    Camera, CameraModel, DirectSamples, FilmFilter, Integrator, Material, Scene, TextPosition,
+};
 use std::fmt;
 
 /// A chapter of the workbook, named in messages.
@@ -100,6 +102,8 @@ pub enum Feature {
     EnvironmentLight,
     /// Emitters hidden from camera rays (Mitsuba's `hide_emitters`).
     HiddenEmitters,
+    /// A `direct` integrator's sample counts other than one light and one BSDF sample.
+    DirectSampleCounts,
     /// A metal whose reflectance changes with the angle (a complex index of refraction);
     /// chapters before 08 render the lecture's mirror or lobe in its place
     /// ([`Material::lecture_stand_in`]).
@@ -135,6 +139,7 @@ impl Feature {
             Feature::IndirectLight
             | Feature::EnvironmentLight
             | Feature::HiddenEmitters
+            | Feature::DirectSampleCounts
             | Feature::MetalFresnel
             | Feature::ThinDielectric
             | Feature::Plastic => Some(Chapter::PATH_TRACING),
@@ -156,6 +161,7 @@ impl Feature {
             Feature::IndirectLight => "indirect light",
             Feature::EnvironmentLight => "an environment",
             Feature::HiddenEmitters => "emitters hidden from the camera",
+            Feature::DirectSampleCounts => "the direct integrator's sample counts",
             Feature::MetalFresnel => "a metal",
             Feature::ThinDielectric => "a thin pane of glass (thindielectric)",
             Feature::Plastic => "plastic",
@@ -176,6 +182,7 @@ impl Feature {
             Feature::IndirectLight => "indirect light comes",
             Feature::EnvironmentLight => "the environment lights matte surfaces",
             Feature::HiddenEmitters => "the integrator's hide_emitters comes",
+            Feature::DirectSampleCounts => "emitter_samples and bsdf_samples are taken as given",
             Feature::MetalFresnel => "metals' reflectance by angle comes",
             Feature::ThinDielectric | Feature::Plastic => {
                 "materials beyond the lecture's are rendered"
@@ -193,6 +200,9 @@ impl Feature {
             ),
             Feature::EnvironmentLight => WhenMissing::Note(
                 "the constant environment is seen directly and in mirrors and glass, but it does not light matte surfaces here",
+            ),
+            Feature::DirectSampleCounts => WhenMissing::Note(
+                "the direct integrator's emitter_samples and bsdf_samples are not followed: this chapter lights each surface as its lesson does, the same image on average with other noise",
             ),
             Feature::MetalFresnel => WhenMissing::StandIn,
             _ => WhenMissing::Refuse,
@@ -339,6 +349,18 @@ impl Scene {
                 detail,
             })
         };
+        if let Integrator::Direct(samples) = self.integrator
+            && samples != DirectSamples::ONE_EACH
+        {
+            add(
+                Feature::DirectSampleCounts,
+                self.origins.integrator.clone(),
+                format!(
+                    "emitter_samples {}, bsdf_samples {}",
+                    samples.emitter, samples.bsdf
+                ),
+            );
+        }
         if matches!(self.integrator, Integrator::Path { .. }) && self.max_depth > 2 {
             add(
                 Feature::IndirectLight,

@@ -34,7 +34,9 @@ pub use material::{
     Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
     check_exponent,
 };
-pub use settings::{FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition};
+pub use settings::{
+    DirectSamples, FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition,
+};
 pub use texture::{Bitmap, BitmapFilter, BitmapId, Checkerboard, Texture, WrapMode};
 
 use crate::geometry::{Geometry, Shape};

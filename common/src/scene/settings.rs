@@ -74,8 +74,27 @@ pub enum Integrator {
         /// The depth from which Russian roulette may stop a path (Mitsuba's default 5).
         rr_depth: u32,
     },
-    /// Mitsuba's `direct`: direct light only, one light and one BSDF sample per hit.
-    Direct,
+    /// Mitsuba's `direct`: direct light only, from light samples and BSDF samples at the
+    /// surface the camera sees.
+    Direct(DirectSamples),
+}
+
+/// How many samples of each kind Mitsuba's `direct` integrator takes at every surface the
+/// camera sees (its `emitter_samples` and `bsdf_samples`, both 1 by default, not both 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DirectSamples {
+    /// Light samples: a light picked and a point on it, each with a shadow ray.
+    pub emitter: u32,
+    /// BSDF samples: a direction from the surface's BSDF, traced to find a light.
+    pub bsdf: u32,
+}
+
+impl DirectSamples {
+    /// One of each, Mitsuba's default: the path tracer's estimator cut after one bounce.
+    pub const ONE_EACH: DirectSamples = DirectSamples {
+        emitter: 1,
+        bsdf: 1,
+    };
 }
 
 /// Where the parts of a scene were written in its file, for messages that point at them.

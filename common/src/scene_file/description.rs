@@ -43,8 +43,9 @@ pub enum Integrator {
         /// The depth from which Russian roulette may stop a path (default 5).
         rr_depth: i32,
     },
-    /// Mitsuba's `direct`: one light and one BSDF sample per hit.
-    Direct,
+    /// Mitsuba's `direct`: light and BSDF samples at the surface the camera sees, as many
+    /// as it says.
+    Direct(crate::scene::DirectSamples),
 }
 
 /// A property's value as written in the file.

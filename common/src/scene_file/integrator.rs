@@ -6,6 +6,7 @@ use super::description::Integrator;
 use super::error::SceneError;
 use super::properties::Properties;
 use super::reader::Reader;
+use crate::scene::DirectSamples;
 
 /// What Mitsuba 3 uses when the file names no integrator.
 pub(super) fn default_integrator() -> Integrator {
@@ -64,28 +65,7 @@ pub(super) fn read_integrator(
             )?,
             rr_depth: depth("rr_depth", 5, "1 or more")?,
         },
-        "direct" => {
-            // Mitsuba's `shading_samples` sets both counts; each may be given apart.
-            let shading = properties.integer(reader, "shading_samples")?;
-            for name in ["emitter_samples", "bsdf_samples"] {
-                let count = properties.integer(reader, name)?.or(shading).unwrap_or(1);
-                if count != 1 {
-                    let position = properties
-                        .position_of(name)
-                        .or(properties.position_of("shading_samples"))
-                        .unwrap_or(reader.position(node));
-                    reader.warn_at(
-                        position,
-                        format!(
-                            "{name} = {count} is rendered as 1 (one light and one BSDF sample \
-                             per hit): the same image on average, with more noise than \
-                             Mitsuba's at equal samples per pixel"
-                        ),
-                    );
-                }
-            }
-            Integrator::Direct
-        }
+        "direct" => Integrator::Direct(direct_samples(reader, node, &mut properties)?),
         _ => {
             return Err(reader.error(
                 node,
@@ -102,6 +82,60 @@ pub(super) fn read_integrator(
     properties.finish(reader);
     Ok((integrator, hide_emitters))
 }
+
+/// The sample counts of a `direct` integrator, as Mitsuba reads them: `shading_samples` sets
+/// both (it may not be given beside either), `emitter_samples` and `bsdf_samples` one each,
+/// 1 by default; a count is a whole number from 0 up to [`MOST_DIRECT_SAMPLES`], and not both
+/// may be 0.
+fn direct_samples(
+    reader: &Reader,
+    node: &Element,
+    properties: &mut Properties,
+) -> Result<DirectSamples, SceneError> {
+    let shading = properties.integer(reader, "shading_samples")?;
+    let mut count = |name: &str| -> Result<u32, SceneError> {
+        let given = properties.integer(reader, name)?;
+        let position = properties
+            .position_of(name)
+            .or(properties.position_of("shading_samples"))
+            .unwrap_or(reader.position(node));
+        if given.is_some() && shading.is_some() {
+            return Err(reader.error_at(
+                position,
+                format!("{name} cannot be given beside shading_samples, which sets it too"),
+            ));
+        }
+        let value = given.or(shading).unwrap_or(1);
+        u32::try_from(value)
+            .ok()
+            .filter(|&n| n <= MOST_DIRECT_SAMPLES)
+            .ok_or_else(|| {
+                reader.error_at(
+                    position,
+                    format!(
+                        "{name} must be a whole number from 0 to {MOST_DIRECT_SAMPLES}, found \
+                         {value}"
+                    ),
+                )
+            })
+    };
+    let samples = DirectSamples {
+        emitter: count("emitter_samples")?,
+        bsdf: count("bsdf_samples")?,
+    };
+    if samples.emitter + samples.bsdf == 0 {
+        return Err(reader.error(
+            node,
+            "a direct integrator needs at least one emitter or BSDF sample: emitter_samples \
+             and bsdf_samples are both 0",
+        ));
+    }
+    Ok(samples)
+}
+
+/// The most samples of one kind a `direct` integrator may ask for at each hit: every sample
+/// of the film takes that many shadow rays, so more would only hide a typing mistake.
+pub const MOST_DIRECT_SAMPLES: u32 = 4096;
 
 /// What an integrator whose output is not an image of radiance writes instead; `None` for
 /// every other type.

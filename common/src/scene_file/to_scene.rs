@@ -135,7 +135,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             },
         ),
         // Mitsuba's `direct`: the camera ray and one segment to the lights.
-        Integrator::Direct => (Transport::Direct, 2),
+        Integrator::Direct(samples) => (Transport::Direct(samples), 2),
     };
     let camera = Camera {
         frame: CameraFrame::from_matrix(&sensor.to_world),

@@ -56,7 +56,8 @@ pub fn render_pinhole(
 }
 
 /// The mean luminance-free green channel of `n` paths through each film position of
-/// `pixels`, and the standard error of that mean. Panics on a non-finite sample.
+/// `pixels` (or, for `direct` sample counts in `method`, of Mitsuba's direct estimate), and
+/// the standard error of that mean. Panics on a non-finite sample.
 pub fn estimate(
     scene: &MotionScene,
     method: Method,
@@ -81,7 +82,10 @@ pub fn estimate(
             sampler.start_pixel_sample(UVec2::new(p as u32, 0), i);
             let ray = rays.generate(world, p_film, &mut sampler);
             let mut counters = SampleCounters::default();
-            let l = tracer.radiance(&ray, &mut sampler, &mut counters);
+            let l = match method.options.direct {
+                Some(samples) => tracer.direct(&ray, samples, &mut sampler, &mut counters),
+                None => tracer.radiance(&ray, &mut sampler, &mut counters),
+            };
             assert!(l.is_finite(), "radiance {l} at {p_film}");
             let x = f64::from(l.y);
             sum += x;

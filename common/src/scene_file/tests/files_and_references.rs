@@ -330,17 +330,70 @@ fn wrappers_that_do_not_write_radiance_are_refused_with_what_they_write() {
 
 #[test]
 fn direct_reads_its_sample_counts_and_hide_emitters() {
-    let loaded = parse(&scene_with(
-        "<integrator type=\"direct\"><integer name=\"emitter_samples\" value=\"4\"/>\
-         <integer name=\"bsdf_samples\" value=\"1\"/>\
-         <boolean name=\"hide_emitters\" value=\"true\"/></integrator>",
-    ))
+    use crate::scene::DirectSamples;
+    let direct = |body: &str| {
+        parse(&scene_with(&format!(
+            "<integrator type=\"direct\">{body}</integrator>"
+        )))
+        .map(|loaded| {
+            (
+                loaded.scene.integrator,
+                loaded.scene.hide_emitters,
+                loaded.warnings,
+            )
+        })
+    };
+    let (integrator, hide, warnings) = direct(
+        "<integer name=\"emitter_samples\" value=\"4\"/><integer name=\"bsdf_samples\" \
+         value=\"0\"/><boolean name=\"hide_emitters\" value=\"true\"/>",
+    )
     .expect("loads");
-    assert_eq!(loaded.scene.integrator, Integrator::Direct);
-    assert!(loaded.scene.hide_emitters);
-    // One count is not 1: rendered as 1, said once.
-    assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
-    assert!(loaded.warnings[0].message.contains("emitter_samples = 4"));
+    let counts = |emitter, bsdf| Integrator::Direct(DirectSamples { emitter, bsdf });
+    assert_eq!(integrator, counts(4, 0));
+    assert!(hide);
+    assert!(
+        warnings.is_empty(),
+        "the counts are rendered as given: {warnings:?}"
+    );
+    // Defaults, shading_samples for both, one count given alone.
+    assert_eq!(direct("").unwrap().0, counts(1, 1));
+    assert_eq!(
+        direct("<integer name=\"shading_samples\" value=\"3\"/>")
+            .unwrap()
+            .0,
+        counts(3, 3)
+    );
+    assert_eq!(
+        direct("<integer name=\"bsdf_samples\" value=\"2\"/>")
+            .unwrap()
+            .0,
+        counts(1, 2)
+    );
+    // What Mitsuba refuses, refused where it is written.
+    for (body, says) in [
+        (
+            "<integer name=\"shading_samples\" value=\"2\"/>\
+             <integer name=\"emitter_samples\" value=\"2\"/>",
+            "emitter_samples cannot be given beside shading_samples",
+        ),
+        (
+            "<integer name=\"emitter_samples\" value=\"0\"/>\
+             <integer name=\"bsdf_samples\" value=\"0\"/>",
+            "needs at least one emitter or BSDF sample",
+        ),
+        (
+            "<integer name=\"bsdf_samples\" value=\"-1\"/>",
+            "bsdf_samples must be a whole number from 0 to 4096, found -1",
+        ),
+        (
+            "<integer name=\"emitter_samples\" value=\"100000\"/>",
+            "emitter_samples must be a whole number from 0 to 4096, found 100000",
+        ),
+    ] {
+        let error = direct(body).expect_err(body);
+        assert_eq!(error.line, 2, "{error}");
+        assert!(error.message.contains(says), "{body}: {error}");
+    }
 }
 
 #[test]

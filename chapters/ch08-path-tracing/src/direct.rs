@@ -1,0 +1,173 @@
+//! Mitsuba's `direct` integrator with its sample counts: `emitter_samples` light samples and
+//! `bsdf_samples` BSDF samples at the surface the camera sees, and nothing after.
+//!
+//! With one of each it is the path tracer stopped after its first bounce, and the chapter
+//! renders it that way ([`PathTracer::radiance`] with `max_depth` 2). Other counts change how
+//! the two strategies share the work. With `n_l` light samples and `n_b` BSDF samples, each
+//! strategy's density enters the heuristic multiplied by its count (Veach's multi-sample
+//! model): a light sample is weighed by `w(n_l p_l, n_b p_b)`, a BSDF sample by
+//! `w(n_b p_b, n_l p_l)`, and each sample's estimate is divided by the count of its kind. A
+//! count of 0 leaves the other strategy alone, with weight 1: `emitter_samples` 0 is pure
+//! BSDF sampling, `bsdf_samples` 0 pure light sampling.
+//!
+//! Point lights, which no BSDF sample can find, are connected once per hit whenever there
+//! are light samples, as the path tracer does ([`point_lights`]); Mitsuba picks them among its
+//! other emitters and, with several emitter samples, counts each pick of one in full, so its
+//! point lights come out `emitter_samples` times too bright. Ours do not.
+
+use crate::bsdf::Bsdf;
+use crate::mis::MisHeuristic;
+use crate::nee::{light_sample_contribution, point_lights};
+use crate::path::PathTracer;
+use ch01_whitted::scene::World;
+use common::Ray;
+use common::render::SampleCounters;
+use common::sampler::Sampler;
+use common::scene::DirectSamples;
+use glam::Vec3;
+
+impl PathTracer<'_> {
+    /// The radiance arriving along `camera_ray` by Mitsuba's `direct` integrator with
+    /// `samples`: what the surface it meets emits, and the light reaching that surface
+    /// straight from the lights, estimated by both strategies (see the module).
+    pub fn direct<S: Sampler>(
+        &self,
+        camera_ray: &Ray,
+        samples: DirectSamples,
+        sampler: &mut S,
+        counters: &mut SampleCounters,
+    ) -> Vec3 {
+        let ray = self.past_hidden_emitters(camera_ray, counters);
+        let shown = !self.options.hide_emitters;
+        counters.rays += 1;
+        let Some(hit) = self.world.intersect(&ray) else {
+            return if shown {
+                self.lights.environment
+            } else {
+                Vec3::ZERO
+            };
+        };
+        let mut radiance = Vec3::ZERO;
+        if shown && let Some(light) = self.lights.area_light_of(hit.shape) {
+            radiance += light.emitted(hit.n, -ray.dir);
+        }
+        let bsdf = Bsdf {
+            material: &self.world.scene.material_at(hit.shape, hit.uv),
+            hit: &hit,
+            fuzz: self.fuzz,
+        };
+        let wo = -ray.dir;
+        let counts = DirectSamples {
+            emitter: if self.options.nee { samples.emitter } else { 0 },
+            bsdf: samples.bsdf,
+        };
+        if counts.emitter > 0 && !bsdf.is_delta() {
+            if !self.lights.points.is_empty() {
+                radiance += point_lights(self.world, &self.lights, &bsdf, wo, ray.time, counters);
+            }
+            if self.lights.can_be_hit() {
+                for _ in 0..counts.emitter {
+                    radiance +=
+                        self.counted_light_sample(&bsdf, wo, ray.time, counts, sampler, counters);
+                }
+            }
+        }
+        for _ in 0..counts.bsdf {
+            radiance += self.counted_bsdf_sample(&bsdf, wo, ray.time, counts, sampler, counters);
+        }
+        radiance
+    }
+
+    /// One of `counts.emitter` light samples at the surface of `bsdf`, weighed against the
+    /// `counts.bsdf` BSDF samples and divided by its own count.
+    fn counted_light_sample<S: Sampler>(
+        &self,
+        bsdf: &Bsdf,
+        wo: Vec3,
+        time: f32,
+        counts: DirectSamples,
+        sampler: &mut S,
+        counters: &mut SampleCounters,
+    ) -> Vec3 {
+        let u_pick = if self.lights.count() > 1 {
+            sampler.get_1d()
+        } else {
+            0.0
+        };
+        let Some(light) = self.lights.pick(u_pick) else {
+            return Vec3::ZERO;
+        };
+        let Some(sample) = self.lights.sample(light, bsdf.hit, sampler.get_2d()) else {
+            return Vec3::ZERO;
+        };
+        // Each density times its count: the weight is the multi-sample heuristic's, and
+        // dividing by `n_l p_l` divides the estimate by the count as well.
+        let (n_light, n_bsdf) = (counts.emitter as f32, counts.bsdf as f32);
+        let contribution = light_sample_contribution(
+            sample.radiance,
+            bsdf.eval(wo, sample.wi),
+            n_light * sample.pdf,
+            n_bsdf * bsdf.pdf(wo, sample.wi),
+            self.lights.pick_probability(),
+            self.options.mis,
+        );
+        if contribution == Vec3::ZERO {
+            return Vec3::ZERO;
+        }
+        counters.rays += 1;
+        if self.world.occluded(&sample.shadow_ray(bsdf.hit, time)) {
+            Vec3::ZERO
+        } else {
+            contribution
+        }
+    }
+
+    /// One of `counts.bsdf` BSDF samples at the surface of `bsdf`: the light its ray finds
+    /// (a glowing surface or the environment), weighed against the `counts.emitter` light
+    /// samples and divided by its own count.
+    fn counted_bsdf_sample<S: Sampler>(
+        &self,
+        bsdf: &Bsdf,
+        wo: Vec3,
+        time: f32,
+        counts: DirectSamples,
+        sampler: &mut S,
+        counters: &mut SampleCounters,
+    ) -> Vec3 {
+        let Some(sample) = bsdf.sample(wo, sampler) else {
+            return Vec3::ZERO;
+        };
+        counters.rays += 1;
+        let (emitted, light_pdf) = match self.world.intersect(&bsdf.hit.spawn_ray(sample.wi, time))
+        {
+            Some(found) => match self.lights.area_light_of(found.shape) {
+                Some(light) => (
+                    light.emitted(found.n, -sample.wi),
+                    self.lights.area_pdf(light, bsdf.hit.p, found.p, found.n),
+                ),
+                None => return Vec3::ZERO,
+            },
+            None if self.lights.has_environment() => {
+                (self.lights.environment, self.lights.environment_pdf())
+            }
+            None => return Vec3::ZERO,
+        };
+        // A delta direction no light sample could have drawn, and no light samples at all,
+        // leave the BSDF sample alone; otherwise the heuristic shares the light.
+        let (n_light, n_bsdf) = (counts.emitter as f32, counts.bsdf as f32);
+        let weight = if sample.is_delta() || counts.emitter == 0 {
+            1.0
+        } else {
+            match self.options.mis {
+                MisHeuristic::None => 0.0,
+                mis => mis.weight(n_bsdf * sample.pdf, n_light * light_pdf),
+            }
+        };
+        let contribution = sample.weight * emitted * (weight / n_bsdf);
+        if contribution.is_finite() {
+            contribution
+        } else {
+            Vec3::ZERO
+        }
+    }
+}
