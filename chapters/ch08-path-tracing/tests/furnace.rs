@@ -60,7 +60,7 @@ fn assert_one(materials: &[Material], max_depth: u32, n: u64) {
 fn a_white_matte_sphere_gives_one_at_every_depth_from_two() {
     let white = Smooth::diffuse(Vec3::ONE);
     for depth in [2, 3, 8, 1000] {
-        assert_one(&[white], depth, 400);
+        assert_one(std::slice::from_ref(&white), depth, 400);
     }
 }
 
@@ -79,7 +79,7 @@ fn touching_spheres_glass_and_glossy_give_one_with_enough_bounces() {
     let white = Smooth::diffuse(Vec3::ONE);
     let glass = Smooth::glass(1.5);
     let glossy = Material::glossy(Vec3::ONE, 20.0);
-    assert_one(&[white, white, white], 1000, 300);
-    assert_one(&[glass, glossy, white], 1000, 300);
-    assert_one(&[glass, glass, glass], 1000, 300);
+    assert_one(&[white.clone(), white.clone(), white.clone()], 1000, 300);
+    assert_one(&[glass.clone(), glossy, white], 1000, 300);
+    assert_one(&[glass.clone(), glass.clone(), glass], 1000, 300);
 }

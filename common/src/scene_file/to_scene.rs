@@ -78,7 +78,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             ));
         }
         let surface = Surface {
-            material: shape.material,
+            material: shape.material.clone(),
             emitter: shape.emitter,
             origin: Some(position.clone()),
         };
