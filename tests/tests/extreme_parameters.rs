@@ -267,7 +267,7 @@ proptest! {
         let mut scene = scene.unwrap();
         if let Some(exponent) = exponent {
             for surface in &mut scene.surfaces {
-                surface.material = match surface.material {
+                surface.material = match surface.material.clone() {
                     Material::Mirror { reflectance } => Material::glossy(reflectance, exponent),
                     Material::Dielectric { int_ior, .. } => Material::rough_glass(int_ior, exponent),
                     other => other,

@@ -52,6 +52,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere; each shape's uv as Mitsuba's",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "masked",
+            checks: "mask: a two-sided card with holes cut by a checkerboard opacity and a one-sided card of opacity 0.4, with the sphere and box behind them seen through, their shadows (shadow rays stopped by a mask, as in Mitsuba) and light passing through them",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

@@ -156,13 +156,23 @@ impl Scene {
         }
     }
 
-    /// A mask's opacity at `uv`, in [0, 1], read as Mitsuba reads a texture for one value
+    /// A mask's opacity at `uv`, in [0, 1], read as Mitsuba 3 reads a texture for one value
     /// (`eval_1`): a checkerboard's colour by its mean, an image's by its luminance.
+    ///
+    /// Mitsuba's checkerboard puts its colours the other way round when read for one value:
+    /// `color0` where the fractional parts of `u` and `v` are on *different* sides of 1/2,
+    /// the squares its colour reading gives `color1`. Opacity follows it, so that a file's
+    /// holes are where Mitsuba cuts them.
     pub fn opacity(&self, opacity: Opacity, uv: Vec2) -> f32 {
         let value = match opacity {
             Opacity::Uniform(value) => value,
-            Opacity::Texture(texture @ Texture::Checkerboard(_)) => {
-                self.albedo(texture, uv).element_sum() / 3.0
+            Opacity::Texture(Texture::Checkerboard(squares)) => {
+                let swapped = Checkerboard {
+                    colour0: squares.colour1,
+                    colour1: squares.colour0,
+                    ..squares
+                };
+                swapped.eval(uv).element_sum() / 3.0
             }
             Opacity::Texture(texture @ Texture::Bitmap(_)) => {
                 self.albedo(texture, uv).dot(LUMINANCE)

@@ -63,3 +63,64 @@ pub fn eval(alpha: f32, nested: &Bsdf, wo: Vec3, wi: Vec3) -> Vec3 {
 pub fn pdf(alpha: f32, nested: &Bsdf, wo: Vec3, wi: Vec3) -> f32 {
     alpha * nested.pdf(wo, wi)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_support::check_consistent;
+    use common::scene::{Mask, Material, Opacity};
+    use glam::Vec3;
+
+    fn masked(opacity: f32, nested: Material) -> Material {
+        Material::Mask(Mask {
+            opacity: Opacity::Uniform(opacity),
+            nested: Box::new(nested),
+        })
+    }
+
+    #[test]
+    fn a_mask_passes_on_one_minus_opacity_of_the_rays_and_scatters_the_rest_as_its_material() {
+        let n = 20_000;
+        let wo = Vec3::new(0.0, 0.8, 0.6);
+        for opacity in [0.0, 0.3, 1.0] {
+            // Matte: every sample weighs its albedo, passing on weighs 1; eval and pdf are
+            // the matte ones times the opacity (checked sample by sample).
+            let (weight, passed) =
+                check_consistent(&masked(opacity, Material::diffuse(Vec3::splat(0.5))), wo, n);
+            // The share passed on is binomial: 5 standard errors.
+            let se = (opacity * (1.0 - opacity) / n as f32).sqrt();
+            assert!(
+                (passed - (1.0 - opacity)).abs() <= 5.0 * se + 1e-6,
+                "{opacity}: {passed}"
+            );
+            let expected = passed + (1.0 - passed) * 0.5;
+            assert!((weight.x - expected).abs() < 1e-4, "{opacity}: {weight}");
+        }
+    }
+
+    #[test]
+    fn the_opacity_scales_what_a_light_sample_sees() {
+        let hit = super::super::test_support::floor_hit();
+        let white = Material::diffuse(Vec3::ONE);
+        let (wo, wi) = (Vec3::Y, Vec3::new(0.6, 0.8, 0.0));
+        let bsdf = |material| {
+            let plain = super::super::Bsdf {
+                material,
+                hit: &hit,
+                fuzz: ch06_fuzzy_reflections::FuzzMethod::Lobe,
+            };
+            (plain.eval(wo, wi), plain.pdf(wo, wi), plain.is_delta())
+        };
+        let (f, pdf, delta) = bsdf(&white);
+        assert!(!delta);
+        let (f_masked, pdf_masked, delta_masked) = bsdf(&masked(0.25, white.clone()));
+        assert_eq!(
+            (f_masked, pdf_masked, delta_masked),
+            (0.25 * f, 0.25 * pdf, false)
+        );
+        // Around a mirror, both of its lobes are deltas: no light sample.
+        assert!(bsdf(&masked(0.25, Material::mirror())).2);
+        // A texture left unread is opaque; a NaN opacity is no surface.
+        assert_eq!(super::opacity(Opacity::Uniform(f32::NAN)), 0.0);
+        assert_eq!(super::opacity(Opacity::Uniform(3.0)), 1.0);
+    }
+}

@@ -70,7 +70,8 @@ fn a_uniform_opacity_is_a_number_a_colours_mean_or_mitsubas_half() {
 #[test]
 fn a_textured_opacity_is_read_as_mitsuba_reads_one_value() {
     let dir = tempfile::tempdir().unwrap();
-    // A checkerboard's colours by their mean: (0.1 + 0.2 + 0.6) / 3 and (1 + 1 + 1) / 3.
+    // A checkerboard's colours by their mean: (0.1 + 0.2 + 0.6) / 3 and (1 + 1 + 1) / 3, each
+    // where Mitsuba's `eval_1` puts it: color0 where u and v are on different sides of 1/2.
     let scene = scene_in(
         dir.path(),
         r#"<shape type="rectangle"><bsdf type="mask">
@@ -88,8 +89,9 @@ fn a_textured_opacity_is_read_as_mitsuba_reads_one_value() {
         Opacity::Texture(Texture::Checkerboard(_))
     ));
     let at = |u, v| scene.opacity(mask.opacity, Vec2::new(u, v));
-    approx::assert_relative_eq!(at(0.25, 0.25), 0.3, max_relative = 1e-6);
-    assert_eq!(at(0.75, 0.25), 1.0);
+    approx::assert_relative_eq!(at(0.75, 0.25), 0.3, max_relative = 1e-6);
+    assert_eq!(at(0.25, 0.25), 1.0);
+    assert_eq!(at(0.75, 0.75), 1.0);
     // An image by its luminance: a grey image by its grey, a colour by Mitsuba's weights.
     let grey = image::GrayImage::from_pixel(1, 1, Luma([255]));
     grey.save_with_format(dir.path().join("grey.png"), ImageFormat::Png)
@@ -128,15 +130,16 @@ fn a_scene_hands_chapter_08_the_mask_read_at_the_hit() {
            </bsdf></shape>"#,
     )
     .unwrap();
-    // Opacity clamped to [0, 1] as Mitsuba clamps it; the nested texture read too.
+    // Opacity clamped to [0, 1] as Mitsuba clamps it (color1 where u and v are on one side
+    // of 1/2), and the nested texture read too (as a colour: color0 there, Mitsuba's 0.4).
     assert_eq!(
-        scene.material_at(0, Vec2::new(0.75, 0.25)),
+        scene.material_at(0, Vec2::new(0.25, 0.25)),
         Material::Mask(Mask {
             opacity: Opacity::Uniform(1.0),
-            nested: Box::new(Material::diffuse(Vec3::splat(0.2))),
+            nested: Box::new(Material::diffuse(Vec3::splat(0.4))),
         })
     );
-    let Material::Mask(clear) = scene.material_at(0, Vec2::new(0.25, 0.25)) else {
+    let Material::Mask(clear) = scene.material_at(0, Vec2::new(0.75, 0.25)) else {
         panic!("not a mask");
     };
     assert_eq!(clear.opacity, Opacity::Uniform(0.0));
