@@ -10,9 +10,16 @@
 //! Two choices follow Mitsuba 3's `path` integrator. Passing through the surface counts as a
 //! segment towards `max_depth` and the roulette. And a shadow ray is stopped by a masked
 //! surface wherever it crosses it, however transparent the surface is there: light reaches a
-//! point behind a cut-out only by paths that pass through it. (Mitsuba's `mask` reports the
-//! nested density without the factor `α` when it samples the nested material; its light
-//! samples use the density with it, as here.)
+//! point behind a cut-out only by paths that pass through it.
+//!
+//! Two things Mitsuba's `path` does are not copied, because they change the mean: its `mask`
+//! reports the nested density without the factor `α` when it samples the nested material
+//! (while its light samples use the density with it, as here, so the two MIS weights need
+//! not add up to 1), and a path whose rays have all passed through masks and then left a
+//! scene without an environment is set to black, the light sampled at those masks with it
+//! (the `path` integrator keeps a path's radiance only once it has scattered off something:
+//! `valid_ray`, meant for the image's alpha). Mitsuba's `volpath` gives what is computed here
+//! for a card in front of nothing; the agreement scene has an environment.
 //!
 //! One number is drawn for the choice, before the nested material's own.
 
@@ -102,23 +109,23 @@ mod tests {
         let hit = super::super::test_support::floor_hit();
         let white = Material::diffuse(Vec3::ONE);
         let (wo, wi) = (Vec3::Y, Vec3::new(0.6, 0.8, 0.0));
-        let bsdf = |material| {
+        let bsdf = |material: Material| {
             let plain = super::super::Bsdf {
-                material,
+                material: &material,
                 hit: &hit,
                 fuzz: ch06_fuzzy_reflections::FuzzMethod::Lobe,
             };
             (plain.eval(wo, wi), plain.pdf(wo, wi), plain.is_delta())
         };
-        let (f, pdf, delta) = bsdf(&white);
+        let (f, pdf, delta) = bsdf(white.clone());
         assert!(!delta);
-        let (f_masked, pdf_masked, delta_masked) = bsdf(&masked(0.25, white.clone()));
+        let (f_masked, pdf_masked, delta_masked) = bsdf(masked(0.25, white));
         assert_eq!(
             (f_masked, pdf_masked, delta_masked),
             (0.25 * f, 0.25 * pdf, false)
         );
         // Around a mirror, both of its lobes are deltas: no light sample.
-        assert!(bsdf(&masked(0.25, Material::mirror())).2);
+        assert!(bsdf(masked(0.25, Material::mirror())).2);
         // A texture left unread is opaque; a NaN opacity is no surface.
         assert_eq!(super::opacity(Opacity::Uniform(f32::NAN)), 0.0);
         assert_eq!(super::opacity(Opacity::Uniform(3.0)), 1.0);
