@@ -232,10 +232,15 @@ fn chapter_08_path_tracing_is_thread_independent_with_every_estimator() {
     let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
     for builtin in Builtin::ALL {
         let scene = builtin.build(DEFAULT_DEPTH, 1.0);
-        for (nee, mis, rr_depth) in [
-            (true, MisHeuristic::Power, Some(2)),
-            (true, MisHeuristic::None, None),
-            (false, MisHeuristic::Balance, Some(1)),
+        let counts = Some(common::scene::DirectSamples {
+            emitter: 3,
+            bsdf: 2,
+        });
+        for (nee, mis, rr_depth, direct) in [
+            (true, MisHeuristic::Power, Some(2), None),
+            (true, MisHeuristic::None, None, None),
+            (false, MisHeuristic::Balance, Some(1), None),
+            (true, MisHeuristic::Power, None, counts),
         ] {
             let method = Method::new(PathOptions {
                 nee,
@@ -243,6 +248,7 @@ fn chapter_08_path_tracing_is_thread_independent_with_every_estimator() {
                 rr_depth,
                 max_depth: 8,
                 hide_emitters: false,
+                direct,
             });
             let sampler = PixelSampler::new(PixelSamplerKind::Stratified, 4, 11).unwrap();
             assert_thread_independent(&format!("ch08 {} {method:?}", builtin.name()), |t| {

@@ -233,10 +233,16 @@ proptest! {
         spp in 1u64..=4,
         (width, height) in (1u32..=6, 1u32..=5),
         seed in any::<u64>(),
+        direct in prop_oneof![
+            Just(None),
+            (0u32..=3, 0u32..=3)
+                .prop_filter("one sample at least", |(e, b)| e + b > 0)
+                .prop_map(|(emitter, bsdf)| Some(common::scene::DirectSamples { emitter, bsdf })),
+        ],
     ) {
         use ch08_path_tracing::{Method, PathOptions, render_with};
         let scene = builtin.build(12, light_scale);
-        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth, hide_emitters: false });
+        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth, hide_emitters: false, direct });
         let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
         let settings = RenderSettings::new(width, height, spp);
         let pixels = PixelSampler::new(PixelSamplerKind::Random, spp, seed).unwrap();
@@ -267,7 +273,7 @@ proptest! {
         let mut scene = scene.unwrap();
         if let Some(exponent) = exponent {
             for surface in &mut scene.surfaces {
-                surface.material = match surface.material {
+                surface.material = match surface.material.clone() {
                     Material::Mirror { reflectance } => Material::glossy(reflectance, exponent),
                     Material::Dielectric { int_ior, .. } => Material::rough_glass(int_ior, exponent),
                     other => other,
@@ -275,7 +281,7 @@ proptest! {
             }
         }
         let scene = MotionScene::still(scene);
-        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth: params.max_depth, hide_emitters: false });
+        let method = Method::new(PathOptions { nee, mis, rr_depth, max_depth: params.max_depth, hide_emitters: false, direct: None });
         let lens = Lens::new(radius, focus).unwrap();
         let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
         let settings = RenderSettings::new(params.width, params.height, spp);

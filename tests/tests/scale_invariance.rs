@@ -138,7 +138,7 @@ fn fuzzy_at(scale: f32) -> Image {
     use ch06_fuzzy_reflections::{PointLights, render_with};
     let mut whitted = scaled_whitted_scene(scale, Vec3::ZERO, SIZE);
     for surface in &mut whitted.surfaces {
-        surface.material = match surface.material {
+        surface.material = match surface.material.clone() {
             Material::Mirror { reflectance } => Material::glossy(reflectance, 200.0),
             Material::Dielectric { int_ior, .. } => Material::rough_glass(int_ior, 50.0),
             other => other,

@@ -97,11 +97,11 @@ fn cornell(max_depth: u32) -> Scene {
     let scene = SceneBuilder::new()
         .shape(
             wall(Vec3::new(-1.0, -1.0, 1.0), 2.0 * Vec3::X, -2.0 * Vec3::Z),
-            white,
+            white.clone(),
         ) // floor
         .shape(
             wall(Vec3::new(-1.0, 1.0, -1.0), 2.0 * Vec3::X, 2.0 * Vec3::Z),
-            white,
+            white.clone(),
         ) // ceiling
         .shape(
             wall(Vec3::new(-1.0, -1.0, -1.0), 2.0 * Vec3::X, 2.0 * Vec3::Y),

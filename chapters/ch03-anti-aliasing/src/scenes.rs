@@ -71,11 +71,14 @@ fn edges(max_depth: u32) -> Scene {
         .enumerate()
     {
         let centre = Vec3::new(-0.35, 0.75 - 0.35 * i as f32, 0.0);
-        builder = builder.shape(bar(centre, 2.6, width, degrees), dark);
+        builder = builder.shape(bar(centre, 2.6, width, degrees), dark.clone());
     }
     // A steep bar, nearly vertical, and a sphere: edges at every angle.
     builder = builder
-        .shape(bar(Vec3::new(-1.2, -0.55, 0.0), 1.2, 0.02, 80.0), dark)
+        .shape(
+            bar(Vec3::new(-1.2, -0.55, 0.0), 1.2, 0.02, 80.0),
+            dark.clone(),
+        )
         .shape(
             Shape::Sphere(Sphere::new(Vec3::new(0.7, -0.55, 0.0), 0.5)),
             Material::diffuse(Vec3::new(0.15, 0.2, 0.35)),

@@ -147,7 +147,7 @@ fn far_wall_with_holes(mut builder: SceneBuilder, wall_z: f32) -> SceneBuilder {
                 (x1 - x0) * Vec3::X,
                 (y1 - y0) * Vec3::Y,
             )),
-            dark,
+            dark.clone(),
         )
     };
     let (left, right, top) = (-16.0, 16.0, 14.0);

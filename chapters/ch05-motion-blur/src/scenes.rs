@@ -145,7 +145,7 @@ fn spinning_cube(
         .map(|keyframe| (keyframe.time, keyframe.matrix))
         .collect();
     for face in cube_faces(h) {
-        builder = builder.moving(face, keyframes.clone(), material);
+        builder = builder.moving(face, keyframes.clone(), material.clone());
     }
     builder
 }

@@ -137,7 +137,7 @@ fn absurdly_fast_and_far_motion_stays_finite() {
         base,
         Shape::Sphere(Sphere::new(Vec3::ZERO, 0.5)),
         streak,
-        material,
+        material.clone(),
     );
     let scene = with_moving(
         scene,

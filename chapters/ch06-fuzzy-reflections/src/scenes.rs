@@ -97,9 +97,9 @@ impl Builder {
     }
 
     fn shapes(self, shapes: impl IntoIterator<Item = Shape>, material: Material) -> Self {
-        shapes
-            .into_iter()
-            .fold(self, |builder, shape| builder.shape(shape, material))
+        shapes.into_iter().fold(self, |builder, shape| {
+            builder.shape(shape, material.clone())
+        })
     }
 
     fn light(mut self, position: Vec3, intensity: Vec3) -> Self {
@@ -244,7 +244,7 @@ fn plates(max_depth: u32, exponent: f32) -> Scene {
         // Two plates facing each other across x = 0, 2.4 apart: normals +x and -x.
         .shape(
             quad(Vec3::new(-1.2, 0.0, -5.0), 2.0 * Vec3::Y, 8.0 * Vec3::Z),
-            plate,
+            plate.clone(),
         )
         .shape(
             quad(Vec3::new(1.2, 0.0, -5.0), 8.0 * Vec3::Z, 2.0 * Vec3::Y),
@@ -276,12 +276,12 @@ fn panes(max_depth: u32) -> Scene {
             wall(-3.0, 16.0, 6.0),
             checkered(WALL_LIGHT, WALL_DARK, Vec2::new(16.0, 6.0)),
         )
-        .shape(sphere(Vec3::new(-0.9, 0.5, 0.6), 0.5), glass);
+        .shape(sphere(Vec3::new(-0.9, 0.5, 0.6), 0.5), glass.clone());
     for k in 0..4 {
         let z = -2.2 + 0.5 * k as f32;
         builder = builder.shapes(
             box_faces(Vec3::new(-0.2, 0.0, z), Vec3::new(1.8, 1.6, z + 0.06)),
-            glass,
+            glass.clone(),
         );
     }
     builder

@@ -121,7 +121,7 @@ fn glass_smooth_or_frosted_in_the_furnace_keeps_at_most_what_it_receives() {
     ];
     for material in materials {
         let scene = scene_of(
-            vec![(sphere, material)],
+            vec![(sphere, material.clone())],
             Vec3::ONE,
             Vec3::new(0.0, 0.0, 5.0),
             Vec3::ZERO,
@@ -186,8 +186,8 @@ fn inter_reflections_between_rough_plates_never_create_energy() {
             let material = Material::glossy(Vec3::ONE, exponent);
             let scene = scene_of(
                 vec![
-                    (Shape::Parallelogram(bottom), material),
-                    (Shape::Parallelogram(top), material),
+                    (Shape::Parallelogram(bottom), material.clone()),
+                    (Shape::Parallelogram(top), material.clone()),
                 ],
                 Vec3::ONE,
                 Vec3::new(0.0, 0.5, 5.0),

@@ -142,7 +142,7 @@ fn pane_scene(pane: Option<Material>) -> MotionScene {
             Vec3::new(-2.0, -2.0, 1.9),
             Vec3::new(2.0, 2.0, 2.0),
         ) {
-            shapes.push((face, pane));
+            shapes.push((face, pane.clone()));
         }
     }
     let mut scene = scene_of(
@@ -187,7 +187,7 @@ fn glass_of_index_one_vanishes_however_frosted() {
                 glass,
                 ..TraceOptions::default()
             };
-            let with = render(&pane_scene(Some(pane)), options, 48, 36, 4, 3).image;
+            let with = render(&pane_scene(Some(pane.clone())), options, 48, 36, 4, 3).image;
             // The rays cross the pane unbent; only where a re-spawned ray's last bit of
             // rounding flips a sample across a checker edge may a pixel differ.
             let differing = with
@@ -236,8 +236,8 @@ fn rays_at_and_around_the_critical_angle_stay_finite() {
     ] {
         let scene = scene_of(
             vec![
-                (Shape::Parallelogram(top), material),
-                (Shape::Parallelogram(bottom), material),
+                (Shape::Parallelogram(top), material.clone()),
+                (Shape::Parallelogram(bottom), material.clone()),
             ],
             Vec3::ONE,
             Vec3::new(0.0, 2.0, 5.0),

@@ -89,7 +89,7 @@ fn convert_with(bsdf: &str) -> Result<Scene, String> {
 
 #[test]
 fn every_rough_material_is_read_and_wrong_ones_are_refused() {
-    let material = |bsdf: &str| convert_with(bsdf).unwrap().surfaces[0].material;
+    let material = |bsdf: &str| convert_with(bsdf).unwrap().surfaces[0].material.clone();
     let glossy = material(r#"<bsdf type="phong"><float name="exponent" value="50"/></bsdf>"#);
     assert!(matches!(glossy, Material::Glossy(g) if g.exponent == 50.0));
     let two_sided = material(
@@ -108,10 +108,17 @@ fn every_rough_material_is_read_and_wrong_ones_are_refused() {
     // Plastic waits for chapter 08.
     let plastic = convert_with(r#"<bsdf type="plastic"/>"#).unwrap_err();
     assert!(plastic.contains("chapter 08"), "{plastic}");
+    // So do cut-outs, named where the file writes them.
+    let mask = convert_with(r#"<bsdf type="mask"><bsdf type="diffuse"/></bsdf>"#).unwrap_err();
+    assert!(
+        mask.starts_with("line 3, column 14: a cut-out (mask) (shape 1);")
+            && mask.contains("in chapter 08 (ch08-path-tracing)"),
+        "{mask}"
+    );
     for (bsdf, expected) in [
         (
             r#"<bsdf type="measured"/>"#,
-            "is not one the workbook renders",
+            "unknown bsdf type \"measured\"",
         ),
         (
             r#"<bsdf type="roughconductor"><string name="material" value="gold"/></bsdf>"#,

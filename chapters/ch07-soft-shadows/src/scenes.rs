@@ -95,7 +95,7 @@ impl Builder {
     pub fn block(self, min: Vec3, max: Vec3, material: Material) -> Self {
         box_faces(min, max)
             .into_iter()
-            .fold(self, |builder, face| builder.shape(face, material))
+            .fold(self, |builder, face| builder.shape(face, material.clone()))
     }
 
     /// Adds an area light: `shape` glowing with `radiance` on its front side, its surface

@@ -72,6 +72,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "the same plates with the direct integrator's emitter_samples 3 and bsdf_samples 2: the multi-sample power heuristic, each density weighed by its count, each estimate divided by it",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "masked",
+            checks: "mask: a two-sided card with holes cut by a checkerboard opacity and a one-sided card of opacity 0.4, with the sphere and box behind them seen through, their shadows (shadow rays stopped by a mask, as in Mitsuba) and light passing through them",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

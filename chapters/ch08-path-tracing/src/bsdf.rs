@@ -16,12 +16,14 @@
 //! Random numbers, in this order: a choice at glass, a thin pane, plastic and every microfacet
 //! material (1), a direction (2) for diffuse, glossy, frosted and plastic surfaces and every
 //! microfacet material; a mirror, a smooth metal and smooth glass's chosen branch take no
-//! direction numbers.
+//! direction numbers. A mask ([`mask`]) draws one number for its choice, then, when the ray
+//! meets the surface, the nested material's.
 
 pub mod conductor;
 pub mod dielectric;
 pub mod diffuse;
 pub mod glossy;
+pub mod mask;
 pub mod microfacet;
 pub mod mirror;
 pub mod plastic;
@@ -82,6 +84,16 @@ impl Bsdf<'_> {
             Material::Conductor(c) => c.roughness.is_none(),
             Material::ThinDielectric { .. } => true,
             Material::Plastic(_) => false,
+            // Passing through is a delta, but the nested material may want a light sample.
+            Material::Mask(mask) => self.nested(&mask.nested).is_delta(),
+        }
+    }
+
+    /// The BSDF of a mask's `nested` material at the same hit.
+    fn nested<'b>(&'b self, nested: &'b Material) -> Bsdf<'b> {
+        Bsdf {
+            material: nested,
+            ..*self
         }
     }
 
@@ -145,6 +157,12 @@ impl Bsdf<'_> {
                     }
                 }
             }
+            Material::Mask(ref m) => mask::sample(
+                mask::opacity(m.opacity),
+                &self.nested(&m.nested),
+                wo,
+                sampler,
+            ),
         }
     }
 
@@ -175,6 +193,9 @@ impl Bsdf<'_> {
                 Some(roughness) => microfacet::plastic(hit, wo, &p, roughness)
                     .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
             },
+            Material::Mask(ref m) => {
+                mask::eval(mask::opacity(m.opacity), &self.nested(&m.nested), wo, wi)
+            }
         }
     }
 
@@ -204,6 +225,9 @@ impl Bsdf<'_> {
                     microfacet::plastic(hit, wo, &p, roughness).map_or(0.0, |bsdf| bsdf.pdf(wo, wi))
                 }
             },
+            Material::Mask(ref m) => {
+                mask::pdf(mask::opacity(m.opacity), &self.nested(&m.nested), wo, wi)
+            }
         }
     }
 }

@@ -15,9 +15,12 @@ pub fn spheres(materials: &[Material], max_depth: u32) -> MotionScene {
     let shapes = materials
         .iter()
         .enumerate()
-        .map(|(i, &m)| {
+        .map(|(i, m)| {
             let x = 2.0 * i as f32 - (n - 1.0);
-            (Shape::Sphere(Sphere::new(Vec3::new(x, 0.0, 0.0), 1.0)), m)
+            (
+                Shape::Sphere(Sphere::new(Vec3::new(x, 0.0, 0.0), 1.0)),
+                m.clone(),
+            )
         })
         .collect();
     scene_of(

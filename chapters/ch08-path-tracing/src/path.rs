@@ -457,7 +457,7 @@ mod tests {
             throughput: Vec3::new(0.5, 1.0, 2.0),
             eta_scale: 1.0,
         };
-        with_tracer(grey, options, |tracer| {
+        with_tracer(grey.clone(), options, |tracer| {
             let next = extensions(tracer, &grey, 1, carried, 64);
             assert_eq!(
                 next.len(),
@@ -538,7 +538,7 @@ mod tests {
             throughput: Vec3::splat(0.2 * 2.25),
             eta_scale: 2.25,
         };
-        with_tracer(white, options, |tracer| {
+        with_tracer(white.clone(), options, |tracer| {
             let before_rr = extensions(tracer, &white, 2, carried, 1000);
             assert_eq!(
                 before_rr.len(),
@@ -584,7 +584,7 @@ mod tests {
             throughput: Vec3::ONE,
             eta_scale: 1.0,
         };
-        with_tracer(black, PathOptions::with_depth(8), |tracer| {
+        with_tracer(black.clone(), PathOptions::with_depth(8), |tracer| {
             let went_on = extensions(tracer, &black, 1, carried, 16).len();
             assert!(
                 went_on == 0,
@@ -604,7 +604,7 @@ mod tests {
             rr_depth: None,
             ..PathOptions::with_depth(64)
         };
-        with_tracer(white, options, |tracer| {
+        with_tracer(white.clone(), options, |tracer| {
             let world = tracer.world;
             let eye = Vec3::new(0.0, 0.5, 4.0);
             let mut sampler = IndependentSampler::new(5);
@@ -680,7 +680,7 @@ mod tests {
         // max_depth 1: the camera ray alone, which sees what glows and nothing lit.
         let grey = Smooth::diffuse(Vec3::splat(0.5));
         let (to_sphere, to_sky) = furnace_rays();
-        with_tracer(grey, PathOptions::with_depth(1), |tracer| {
+        with_tracer(grey.clone(), PathOptions::with_depth(1), |tracer| {
             let (sky, _) = mean_radiance(tracer, &to_sky, 16, 1);
             assert!(
                 (sky - 1.0).abs() < 1e-6,
@@ -736,7 +736,7 @@ mod tests {
         let a = 17f64.ln() / 16.0;
         let albedo = f64::from(albedo);
         for max_depth in [2, 3, 6] {
-            with_tracer(grey, PathOptions::with_depth(max_depth), |tracer| {
+            with_tracer(grey.clone(), PathOptions::with_depth(max_depth), |tracer| {
                 let (mean, se) = mean_radiance(tracer, &to_sphere, 4000, 4);
                 let tolerance = 5.0 * se + 1e-3;
                 if (mean - albedo).abs() < tolerance {

@@ -58,7 +58,7 @@ fn an_all_glass_world_and_a_light_through_glass_stay_finite() {
     let glass = Smooth::glass(1.5);
     let rough = Material::rough_glass(1.5, 5.0);
     render_finite(
-        &spheres(&[glass, rough, glass], 1000),
+        &spheres(&[glass.clone(), rough, glass], 1000),
         PathOptions {
             rr_depth: None,
             ..PathOptions::with_depth(1000)

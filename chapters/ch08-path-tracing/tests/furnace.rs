@@ -60,8 +60,31 @@ fn assert_one(materials: &[Material], max_depth: u32, n: u64) {
 fn a_white_matte_sphere_gives_one_at_every_depth_from_two() {
     let white = Smooth::diffuse(Vec3::ONE);
     for depth in [2, 3, 8, 1000] {
-        assert_one(&[white], depth, 400);
+        assert_one(std::slice::from_ref(&white), depth, 400);
     }
+}
+
+/// `nested` behind a mask of uniform `opacity`.
+fn masked(opacity: f32, nested: Material) -> Material {
+    Material::Mask(common::scene::Mask {
+        opacity: common::scene::Opacity::Uniform(opacity),
+        nested: Box::new(nested),
+    })
+}
+
+#[test]
+fn a_white_sphere_with_a_cut_out_gives_one_and_a_transparent_black_one_is_not_seen() {
+    // Light passes through where the surface is not: inside, the two-sided white sphere's
+    // back face scatters the rest, so the furnace stays white at every opacity.
+    for opacity in [0.3, 1.0] {
+        assert_one(
+            &[masked(opacity, Smooth::two_sided_diffuse(Vec3::ONE))],
+            1000,
+            300,
+        );
+    }
+    // Opacity 0: a black sphere that is not there; paths pass on and find the sky.
+    assert_one(&[masked(0.0, Smooth::diffuse(Vec3::ZERO))], 8, 50);
 }
 
 #[test]
@@ -79,7 +102,7 @@ fn touching_spheres_glass_and_glossy_give_one_with_enough_bounces() {
     let white = Smooth::diffuse(Vec3::ONE);
     let glass = Smooth::glass(1.5);
     let glossy = Material::glossy(Vec3::ONE, 20.0);
-    assert_one(&[white, white, white], 1000, 300);
-    assert_one(&[glass, glossy, white], 1000, 300);
-    assert_one(&[glass, glass, glass], 1000, 300);
+    assert_one(&[white.clone(), white.clone(), white.clone()], 1000, 300);
+    assert_one(&[glass.clone(), glossy, white], 1000, 300);
+    assert_one(&[glass.clone(), glass.clone(), glass], 1000, 300);
 }

@@ -106,7 +106,10 @@ fn roulette_at_throughput_one_keeps_the_white_furnace_at_one() {
     // bounce plays at q = 0.95 and multiplies by 1 / 0.95.
     let white = Smooth::diffuse(Vec3::ONE);
     let glass = Smooth::glass(1.5);
-    for materials in [[white, white, white], [glass, white, glass]] {
+    for materials in [
+        [white.clone(), white.clone(), white.clone()],
+        [glass.clone(), white, glass],
+    ] {
         let scene = spheres(&materials, 1000);
         let method = Method::new(roulette_from_the_start());
         let (mean, se) = support::estimate(&scene, method, &PIXELS, 5000, 11);
@@ -133,7 +136,7 @@ fn roulette_at_throughput_near_zero_is_unbiased_and_finite() {
     );
     // Far darker, touching spheres: throughputs of 1e-6, 1e-12 ... 1e-40 and their survivors.
     for albedo in [1e-6, 1e-20] {
-        let materials = [Smooth::diffuse(Vec3::splat(albedo)); 3];
+        let materials = vec![Smooth::diffuse(Vec3::splat(albedo)); 3];
         let out = render_with(
             &spheres(&materials, 1000),
             method,

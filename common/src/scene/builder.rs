@@ -49,7 +49,7 @@ impl SceneBuilder {
     /// Adds every triangle of a mesh, all made of `material`.
     pub fn mesh(mut self, mesh: &TriangleMesh, material: Material) -> Self {
         for triangle in mesh.triangles() {
-            self = self.shape(Shape::Triangle(triangle), material);
+            self = self.shape(Shape::Triangle(triangle), material.clone());
         }
         self
     }

@@ -112,6 +112,9 @@ pub enum Feature {
     ThinDielectric,
     /// A matte base under a clear coat (Mitsuba's `plastic`, `roughplastic`).
     Plastic,
+    /// A cut-out surface that light passes through where it is not opaque (Mitsuba's
+    /// `mask`): only a path tracer picks, at random, whether a ray meets it or passes on.
+    Mask,
 }
 
 /// What a chapter that does not render a feature does with a scene that uses it.
@@ -142,7 +145,8 @@ impl Feature {
             | Feature::DirectSampleCounts
             | Feature::MetalFresnel
             | Feature::ThinDielectric
-            | Feature::Plastic => Some(Chapter::PATH_TRACING),
+            | Feature::Plastic
+            | Feature::Mask => Some(Chapter::PATH_TRACING),
             Feature::MovingAreaLight => None,
         }
     }
@@ -165,6 +169,7 @@ impl Feature {
             Feature::MetalFresnel => "a metal",
             Feature::ThinDielectric => "a thin pane of glass (thindielectric)",
             Feature::Plastic => "plastic",
+            Feature::Mask => "a cut-out (mask)",
         }
     }
 
@@ -187,6 +192,7 @@ impl Feature {
             Feature::ThinDielectric | Feature::Plastic => {
                 "materials beyond the lecture's are rendered"
             }
+            Feature::Mask => "surfaces that light may pass through at random are rendered",
         }
     }
 
@@ -411,8 +417,13 @@ impl Scene {
                 };
                 add(feature, surface.origin.clone(), name.clone());
             }
-            if let Some((stand_in, how)) = surface.material.lecture_stand_in()
-                && let Material::Conductor(conductor) = surface.material
+            if let Material::Mask(_) = surface.material {
+                add(Feature::Mask, surface.origin.clone(), name.clone());
+            }
+            // What the mask lets be seen is checked as any other material.
+            let material = surface.material.unmasked();
+            if let Some((stand_in, how)) = material.lecture_stand_in()
+                && let Material::Conductor(conductor) = material
                 && conductor.eta != glam::Vec3::ZERO
             {
                 add(
@@ -424,7 +435,7 @@ impl Scene {
                     ),
                 );
             }
-            match surface.material {
+            match material {
                 Material::ThinDielectric { .. } => add(
                     Feature::ThinDielectric,
                     surface.origin.clone(),
@@ -433,7 +444,7 @@ impl Scene {
                 Material::Plastic(_) => add(Feature::Plastic, surface.origin.clone(), name.clone()),
                 _ => {}
             }
-            if let Some((detail, stands_in)) = fuzzy_detail(&surface.material) {
+            if let Some((detail, stands_in)) = fuzzy_detail(material) {
                 let feature = if stands_in {
                     Feature::MicrofacetMaterial
                 } else {
@@ -699,6 +710,13 @@ mod tests {
                     roughness: None,
                 }),
                 "plastic (shape 1)",
+            ),
+            (
+                Material::Mask(crate::scene::Mask {
+                    opacity: crate::scene::Opacity::Uniform(0.5),
+                    nested: Box::new(Material::diffuse(Vec3::ONE)),
+                }),
+                "a cut-out (mask) (shape 1)",
             ),
         ] {
             let beyond = scene(SceneBuilder::new().shape(sphere(), material));

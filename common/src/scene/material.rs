@@ -12,7 +12,7 @@ use super::Texture;
 use glam::Vec3;
 
 /// How a surface scatters light.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Material {
     /// Matte: reflects `albedo / pi` of the incident irradiance into every direction.
     Diffuse {
@@ -64,6 +64,32 @@ pub enum Material {
     },
     /// A matte base under a smooth dielectric coat (Mitsuba's `plastic` and `roughplastic`).
     Plastic(Plastic),
+    /// A cut-out: the nested material where the surface is opaque, nothing where it is not
+    /// (Mitsuba's `mask`), as for a leaf cut out of a card by a texture.
+    Mask(Mask),
+}
+
+/// Mitsuba 3's `mask`: at each point the surface is there with probability `opacity` (and
+/// scatters as `nested`) and absent otherwise (light passes straight on). The nested material
+/// is boxed because a mask may wrap any material, which is why [`Material`] is `Clone` and
+/// not `Copy`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mask {
+    /// How opaque the surface is, from 0 (invisible) to 1 (the nested material alone).
+    pub opacity: Opacity,
+    /// The material where the surface is opaque.
+    pub nested: Box<Material>,
+}
+
+/// A mask's opacity: one number, or a texture read as one number per point, as Mitsuba reads
+/// a texture for a single value (`eval_1`): a colour's mean, an image's luminance. Values
+/// outside [0, 1] are clamped, as Mitsuba clamps them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Opacity {
+    /// The same opacity everywhere.
+    Uniform(f32),
+    /// An opacity that varies over the surface (a checkerboard, an image).
+    Texture(Texture),
 }
 
 /// A metal's parameters, as Mitsuba 3's `conductor` takes them.
@@ -290,6 +316,15 @@ impl Material {
         ))
     }
 
+    /// The material without its mask: the nested material of a [`Material::Mask`] (through
+    /// any number of masks), the material itself otherwise.
+    pub fn unmasked(&self) -> &Material {
+        match self {
+            Material::Mask(mask) => mask.nested.unmasked(),
+            other => other,
+        }
+    }
+
     /// Whether the material scatters with a lobe (chapter 06's materials).
     pub fn is_fuzzy(&self) -> bool {
         matches!(self, Material::Glossy(_) | Material::RoughGlass(_))
@@ -308,6 +343,10 @@ impl Material {
                 exponent,
                 stands_in_for: None,
                 ..g
+            }),
+            Material::Mask(mask) => Material::Mask(Mask {
+                nested: Box::new(mask.nested.with_exponent(exponent)),
+                ..mask
             }),
             smooth => smooth,
         }

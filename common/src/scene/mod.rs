@@ -31,8 +31,8 @@ pub use camera::{Camera, CameraFrame, CameraModel};
 pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
-    Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
-    check_exponent,
+    Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity, Plastic,
+    RoughGlass, check_exponent,
 };
 pub use settings::{
     DirectSamples, FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition,
@@ -41,6 +41,9 @@ pub use texture::{Bitmap, BitmapFilter, BitmapId, Checkerboard, Texture, WrapMod
 
 use crate::geometry::{Geometry, Shape};
 use glam::{Mat4, Vec2, Vec3};
+
+/// The luminance of a linear sRGB colour, with the weights Mitsuba 3 uses (`luminance()`).
+const LUMINANCE: Vec3 = Vec3::new(0.212671, 0.715160, 0.072169);
 
 /// The recursion limit used for Mitsuba's "unlimited" `max_depth` (-1): mirrors facing each
 /// other would otherwise recurse without end.
@@ -137,19 +140,54 @@ impl Scene {
     /// returned as they are. For code that wants one material per hit, such as chapter 08's
     /// BSDFs.
     pub fn material_at(&self, shape: u32, uv: Vec2) -> Material {
-        match self.surface(shape).material {
-            Material::TexturedDiffuse { texture, two_sided } => Material::Diffuse {
+        self.read_at(&self.surface(shape).material, uv)
+    }
+
+    /// `material` with its textures read at `uv` (a mask's opacity and nested material too).
+    fn read_at(&self, material: &Material, uv: Vec2) -> Material {
+        match material {
+            &Material::TexturedDiffuse { texture, two_sided } => Material::Diffuse {
                 albedo: self.albedo(texture, uv),
                 two_sided,
             },
-            material => material,
+            Material::Mask(mask) => Material::Mask(Mask {
+                opacity: Opacity::Uniform(self.opacity(mask.opacity, uv)),
+                nested: Box::new(self.read_at(&mask.nested, uv)),
+            }),
+            material => material.clone(),
         }
+    }
+
+    /// A mask's opacity at `uv`, in [0, 1], read as Mitsuba 3 reads a texture for one value
+    /// (`eval_1`): a checkerboard's colour by its mean, an image's by its luminance.
+    ///
+    /// Mitsuba's checkerboard puts its colours the other way round when read for one value:
+    /// `color0` where the fractional parts of `u` and `v` are on *different* sides of 1/2,
+    /// the squares its colour reading gives `color1`. Opacity follows it, so that a file's
+    /// holes are where Mitsuba cuts them.
+    pub fn opacity(&self, opacity: Opacity, uv: Vec2) -> f32 {
+        let value = match opacity {
+            Opacity::Uniform(value) => value,
+            Opacity::Texture(Texture::Checkerboard(squares)) => {
+                let swapped = Checkerboard {
+                    colour0: squares.colour1,
+                    colour1: squares.colour0,
+                    ..squares
+                };
+                swapped.eval(uv).element_sum() / 3.0
+            }
+            Opacity::Texture(texture @ Texture::Bitmap(_)) => {
+                self.albedo(texture, uv).dot(LUMINANCE)
+            }
+        };
+        // Also a NaN becomes 0 (no surface), not a NaN in the path's weight.
+        if value >= 0.0 { value.min(1.0) } else { 0.0 }
     }
 
     /// The same scene with every lobe's exponent set to `exponent` (smooth materials stay).
     pub fn with_exponent(mut self, exponent: f32) -> Self {
         for surface in &mut self.surfaces {
-            surface.material = surface.material.with_exponent(exponent);
+            surface.material = surface.material.clone().with_exponent(exponent);
         }
         self
     }

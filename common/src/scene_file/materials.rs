@@ -10,8 +10,8 @@ use super::reader::Reader;
 use super::textures::{NamedTexture, refuse_texture, take_textures};
 use super::values::parse_float;
 use crate::scene::{
-    Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
-    check_exponent,
+    Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity, Plastic,
+    RoughGlass, check_exponent,
 };
 
 /// Mitsuba's default interior index of refraction of glass, BK7.
@@ -78,11 +78,12 @@ const KNOWN_BSDF_TYPES: &[&str] = &[
     "roughconductor",
     "roughplastic",
     "roughdielectric",
+    "mask",
 ];
 
 /// The BSDF types the workbook renders, for messages.
 const KNOWN_BSDFS: &str = "diffuse, conductor, dielectric, thindielectric, plastic, twosided, \
-     phong, roughconductor, roughplastic and roughdielectric";
+     phong, roughconductor, roughplastic, roughdielectric and mask";
 
 /// Mitsuba 3's default `alpha` of its rough BSDFs.
 const DEFAULT_ALPHA: f32 = 0.1;
@@ -106,13 +107,13 @@ pub(super) fn read_bsdf<'a>(
         return read_bsdf_element(reader, node);
     };
     if let Some(material) = reader.bsdfs_by_id.get(&id) {
-        return Ok(*material);
+        return Ok(material.clone());
     }
     reader.start_reading(node, &id)?;
     let material = read_bsdf_element(reader, node);
     reader.done_reading(&id);
     let material = material?;
-    reader.bsdfs_by_id.insert(id, material);
+    reader.bsdfs_by_id.insert(id, material.clone());
     Ok(material)
 }
 
@@ -122,23 +123,35 @@ fn read_bsdf_element<'a>(
     node: &'a Element,
 ) -> Result<Material, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
+    // Named first, before its contents: a nested <bsdf> or a texture says nothing.
+    let unknown_type = |reader: &Reader| {
+        reader.error(
+            node,
+            format!("unknown bsdf type \"{type_name}\": the workbook renders {KNOWN_BSDFS}"),
+        )
+    };
+    if !KNOWN_BSDF_TYPES.contains(&type_name.as_str()) {
+        return Err(unknown_type(reader));
+    }
     let mut properties = Properties::read(reader, node, format!("{type_name} bsdf"))?;
     let mut textures = take_textures(reader, &mut properties.objects)?;
     let reflectance_texture = match type_name.as_str() {
         "diffuse" => take_named(&mut textures, "reflectance"),
         _ => None,
     };
-    // An unknown type is named as such below, before any of its textures.
-    if let Some(texture) = textures.first()
-        && KNOWN_BSDF_TYPES.contains(&type_name.as_str())
-    {
+    let opacity_texture = match type_name.as_str() {
+        "mask" => take_named(&mut textures, "opacity"),
+        _ => None,
+    };
+    if let Some(texture) = textures.first() {
         return Err(refuse_texture(
             reader,
             &format!("{type_name} bsdf"),
             texture,
         ));
     }
-    if let (false, Some(object)) = (type_name == "twosided", properties.objects.first()) {
+    let wraps_bsdfs = matches!(type_name.as_str(), "twosided" | "mask");
+    if let (false, Some(object)) = (wraps_bsdfs, properties.objects.first()) {
         let tag = object.name();
         return Err(reader.error(object, format!("a {type_name} bsdf cannot contain <{tag}>")));
     }
@@ -206,7 +219,14 @@ fn read_bsdf_element<'a>(
         "twosided" => {
             let nested = nested_bsdfs(reader, &properties.objects, node)?;
             match nested.as_slice() {
-                [inner] => two_sided(*inner),
+                [Material::Mask(_)] => {
+                    return Err(reader.error(
+                        node,
+                        "a twosided bsdf cannot wrap a mask (Mitsuba 3 refuses a nested material \
+                         that lets light through); put the twosided inside the mask instead",
+                    ));
+                }
+                [inner] => two_sided(inner.clone()),
                 _ => {
                     return Err(reader.error(
                         node,
@@ -218,15 +238,8 @@ fn read_bsdf_element<'a>(
                 }
             }
         }
-        _ => {
-            return Err(reader.error(
-                node,
-                format!(
-                    "the bsdf type \"{type_name}\" is not one the workbook renders: it knows \
-                     {KNOWN_BSDFS}"
-                ),
-            ));
-        }
+        "mask" => mask(reader, node, &mut properties, opacity_texture)?,
+        _ => return Err(unknown_type(reader)),
     };
     if matches!(
         type_name.as_str(),
@@ -236,6 +249,7 @@ fn read_bsdf_element<'a>(
             | "thindielectric"
             | "plastic"
             | "roughplastic"
+            | "mask"
     ) {
         properties.finish_strict(reader)?;
     } else {
@@ -263,6 +277,42 @@ fn diffuse(
         )),
         (colour, None) => Ok(Material::diffuse(colour.unwrap_or(Vec3::splat(0.5)))),
     }
+}
+
+/// A `mask` (Mitsuba 3's cut-out): one nested `<bsdf>` or `<ref>`, and its `opacity` a
+/// number, a colour (read as its mean, as Mitsuba reads one value of a colour) or a texture,
+/// 0.5 when none is given, as in Mitsuba.
+fn mask<'a>(
+    reader: &mut Reader<'a>,
+    node: &'a Element,
+    properties: &mut Properties<'a>,
+    texture: Option<NamedTexture>,
+) -> Result<Material, SceneError> {
+    let colour = properties.rgb(reader, "opacity")?;
+    let opacity = match (colour, texture) {
+        (None, Some(texture)) => Opacity::Texture(texture.texture),
+        (Some(_), Some(texture)) => {
+            return Err(reader.error(
+                texture.node,
+                "the mask's opacity is given twice: as a value and as a texture",
+            ));
+        }
+        (colour, None) => Opacity::Uniform(colour.map_or(0.5, |c| c.element_sum() / 3.0)),
+    };
+    let nested = nested_bsdfs(reader, &properties.objects, node)?;
+    let [nested] = <[Material; 1]>::try_from(nested).map_err(|nested| {
+        reader.error(
+            node,
+            format!(
+                "a mask bsdf wraps exactly one nested <bsdf> or <ref>, found {}",
+                nested.len()
+            ),
+        )
+    })?;
+    Ok(Material::Mask(Mask {
+        opacity,
+        nested: Box::new(nested),
+    }))
 }
 
 /// The texture given for `name`, taken out of `textures`.

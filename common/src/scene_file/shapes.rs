@@ -101,7 +101,7 @@ pub(super) fn read_shape<'a>(
     let material = match nested_bsdfs(reader, &bsdf_nodes, node)?.as_slice() {
         [] if emitter_nodes.is_empty() => mitsuba_default_material(),
         [] => mitsuba_default_emitter_material(),
-        [material] => *material,
+        [material] => material.clone(),
         [_, ..] => {
             return Err(reader.error(bsdf_nodes[1], "a shape has at most one bsdf"));
         }

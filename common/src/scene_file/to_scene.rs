@@ -72,7 +72,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             ShapeGeometry::Serialized { .. } => "serialized",
         };
         let surface = Surface {
-            material: shape.material,
+            material: shape.material.clone(),
             emitter: shape.emitter,
             origin: Some(position.clone()),
         };

@@ -13,7 +13,7 @@ use crate::scene::{Conductor, Material, Plastic};
 fn material(bsdf: &str) -> Result<Material, String> {
     let text = scene_with(&format!(r#"<shape type="sphere">{bsdf}</shape>"#));
     parse_scene(&text, Path::new("test.xml"), &[])
-        .map(|loaded| loaded.scene.surfaces[0].material)
+        .map(|loaded| loaded.scene.surfaces[0].material.clone())
         .map_err(|e| e.to_string())
 }
 

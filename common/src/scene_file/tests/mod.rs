@@ -4,6 +4,7 @@ mod animation;
 mod broken_files;
 mod cornell;
 mod files_and_references;
+mod masks;
 mod materials;
 mod mesh_files;
 mod mesh_scenes;

@@ -93,7 +93,7 @@ fn what_no_chapter_renders_is_refused_where_it_is_written() {
     for (body, expected) in [
         (
             r#"<shape type="sphere"><bsdf type="measured"/></shape>"#,
-            "test.xml:2:22: the bsdf type \"measured\" is not one the workbook renders",
+            "test.xml:2:22: unknown bsdf type \"measured\": the workbook renders diffuse,",
         ),
         (
             r#"<shape type="sphere"><bsdf type="conductor"><string name="material" value="Unobtainium"/></bsdf></shape>"#,

@@ -159,7 +159,7 @@ fn textures_are_refused_where_they_cannot_be_rendered_yet() {
         ),
         (
             r#"<bsdf type="bumpmap"><texture type="checkerboard" name="map"/></bsdf>"#,
-            "bsdf type \"bumpmap\" is not one the workbook renders",
+            "unknown bsdf type \"bumpmap\"",
         ),
         (
             r#"<bsdf type="diffuse"><texture type="mesh_attribute" name="reflectance"/></bsdf>"#,
