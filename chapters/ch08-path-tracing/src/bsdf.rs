@@ -282,6 +282,8 @@ mod tests {
         Plastic {
             diffuse_reflectance: Vec3::new(0.9, 0.5, 0.1),
             specular_reflectance: Vec3::ONE,
+            diffuse_texture: None,
+            specular_texture: None,
             int_ior: 1.49,
             ext_ior: 1.000277,
             nonlinear: false,
@@ -296,6 +298,7 @@ mod tests {
             eta,
             k,
             specular_reflectance: Vec3::ONE,
+            specular_texture: None,
             two_sided: false,
             roughness: None,
         }

@@ -108,6 +108,11 @@ pub enum Feature {
     ThinDielectric,
     /// A matte base under a clear coat (Mitsuba's `plastic`, `roughplastic`).
     Plastic,
+    /// A texture on a material's parameter other than a matte surface's albedo (a metal's
+    /// `specular_reflectance`, plastic's `diffuse_reflectance`, ...).
+    TexturedMaterial,
+    /// An area light whose radiance is a texture, so that it varies over the light.
+    TexturedAreaLight,
 }
 
 /// What a chapter that does not render a feature does with a scene that uses it.
@@ -137,7 +142,9 @@ impl Feature {
             | Feature::HiddenEmitters
             | Feature::MetalFresnel
             | Feature::ThinDielectric
-            | Feature::Plastic => Some(Chapter::PATH_TRACING),
+            | Feature::Plastic
+            | Feature::TexturedMaterial
+            | Feature::TexturedAreaLight => Some(Chapter::PATH_TRACING),
             Feature::MovingAreaLight => None,
         }
     }
@@ -159,6 +166,8 @@ impl Feature {
             Feature::MetalFresnel => "a metal",
             Feature::ThinDielectric => "a thin pane of glass (thindielectric)",
             Feature::Plastic => "plastic",
+            Feature::TexturedMaterial => "a texture",
+            Feature::TexturedAreaLight => "an area light whose radiance is a texture",
         }
     }
 
@@ -180,6 +189,10 @@ impl Feature {
             Feature::ThinDielectric | Feature::Plastic => {
                 "materials beyond the lecture's are rendered"
             }
+            Feature::TexturedMaterial => {
+                "textures on other parameters than a matte surface's reflectance are read"
+            }
+            Feature::TexturedAreaLight => "lights that vary over their surface are sampled",
         }
     }
 
@@ -411,6 +424,20 @@ impl Scene {
                 Material::Plastic(_) => add(Feature::Plastic, surface.origin.clone(), name.clone()),
                 _ => {}
             }
+            if let Some(parameter) = surface.material.textured_beyond_albedo() {
+                add(
+                    Feature::TexturedMaterial,
+                    surface.origin.clone(),
+                    format!("{name}: {parameter}"),
+                );
+            }
+            if surface.emitter.is_some_and(|e| e.texture.is_some()) {
+                add(
+                    Feature::TexturedAreaLight,
+                    surface.origin.clone(),
+                    name.clone(),
+                );
+            }
             if let Some((detail, stands_in)) = fuzzy_detail(&surface.material) {
                 let feature = if stands_in {
                     Feature::MicrofacetMaterial
@@ -613,6 +640,7 @@ mod tests {
             eta: Vec3::new(0.143, 0.375, 1.442),
             k: Vec3::new(3.983, 2.386, 1.603),
             specular_reflectance: Vec3::ONE,
+            specular_texture: None,
             two_sided: false,
             roughness: None,
         };
@@ -670,6 +698,8 @@ mod tests {
                 Material::Plastic(crate::scene::Plastic {
                     diffuse_reflectance: Vec3::splat(0.5),
                     specular_reflectance: Vec3::ONE,
+                    diffuse_texture: None,
+                    specular_texture: None,
                     int_ior: 1.49,
                     ext_ior: 1.0,
                     nonlinear: false,
@@ -697,9 +727,7 @@ mod tests {
         ];
         let mut moving =
             scene(SceneBuilder::new().moving(sphere(), keyframes, Material::diffuse(Vec3::ONE)));
-        moving.surfaces[0].emitter = Some(crate::scene::AreaEmitter {
-            radiance: Vec3::ONE,
-        });
+        moving.surfaces[0].emitter = Some(crate::scene::AreaEmitter::uniform(Vec3::ONE));
         let refusal = SOFT_SHADOWS.check(&moving).unwrap_err();
         assert!(
             refusal.contains("an area light that moves (shape 1); no chapter samples"),

@@ -79,6 +79,10 @@ pub struct Conductor {
     pub k: Vec3,
     /// A factor on the reflection, per colour channel (1 for a physical metal).
     pub specular_reflectance: Vec3,
+    /// A texture that multiplies `specular_reflectance` point by point (a scene file's
+    /// `<texture name="specular_reflectance">`); [`Scene::material_at`](super::Scene::material_at)
+    /// reads it at a hit.
+    pub specular_texture: Option<Texture>,
     /// Whether the back face reflects too (Mitsuba's `twosided`); else it is black.
     pub two_sided: bool,
     /// The microfacet roughness of a `roughconductor`; `None` for a smooth metal.
@@ -94,6 +98,11 @@ pub struct Plastic {
     pub diffuse_reflectance: Vec3,
     /// A factor on the coat's reflection (1 for a physical coat).
     pub specular_reflectance: Vec3,
+    /// A texture that multiplies `diffuse_reflectance` point by point; read at a hit by
+    /// [`Scene::material_at`](super::Scene::material_at).
+    pub diffuse_texture: Option<Texture>,
+    /// A texture that multiplies `specular_reflectance` point by point, read the same way.
+    pub specular_texture: Option<Texture>,
     /// Index of refraction of the coat.
     pub int_ior: f32,
     /// Index of refraction outside.
@@ -288,6 +297,24 @@ impl Material {
             "its reflectance at normal incidence at every angle (no brightening towards \
              grazing angles)",
         ))
+    }
+
+    /// The first parameter, other than a matte surface's albedo, that a texture varies over
+    /// the surface, in a scene file's words ("a metal's specular_reflectance"); `None` when
+    /// there is none. Chapter 08 reads these textures; the chapters before it refuse them.
+    pub fn textured_beyond_albedo(&self) -> Option<&'static str> {
+        match self {
+            Material::Conductor(c) if c.specular_texture.is_some() => {
+                Some("a metal's specular_reflectance")
+            }
+            Material::Plastic(p) if p.diffuse_texture.is_some() => {
+                Some("plastic's diffuse_reflectance")
+            }
+            Material::Plastic(p) if p.specular_texture.is_some() => {
+                Some("plastic's specular_reflectance")
+            }
+            _ => None,
+        }
     }
 
     /// Whether the material scatters with a lobe (chapter 06's materials).

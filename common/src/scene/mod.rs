@@ -134,13 +134,48 @@ impl Scene {
     /// surface becomes the plain matte surface of the albedo there; other materials are
     /// returned as they are. For code that wants one material per hit, such as chapter 08's
     /// BSDFs.
+    ///
+    /// The textures of plastic and metals (a [`Plastic`]'s `diffuse_texture` and
+    /// `specular_texture`, a [`Conductor`]'s `specular_texture`) are read the same way: each
+    /// multiplies its colour, and the material returned has no texture left.
     pub fn material_at(&self, shape: u32, uv: Vec2) -> Material {
+        let factor = |texture: Option<Texture>| texture.map_or(Vec3::ONE, |t| self.albedo(t, uv));
         match self.surface(shape).material {
             Material::TexturedDiffuse { texture, two_sided } => Material::Diffuse {
                 albedo: self.albedo(texture, uv),
                 two_sided,
             },
+            Material::Conductor(c) if c.specular_texture.is_some() => {
+                Material::Conductor(Conductor {
+                    specular_reflectance: c.specular_reflectance * factor(c.specular_texture),
+                    specular_texture: None,
+                    ..c
+                })
+            }
+            Material::Plastic(p) if p.diffuse_texture.is_some() || p.specular_texture.is_some() => {
+                Material::Plastic(Plastic {
+                    diffuse_reflectance: p.diffuse_reflectance * factor(p.diffuse_texture),
+                    specular_reflectance: p.specular_reflectance * factor(p.specular_texture),
+                    diffuse_texture: None,
+                    specular_texture: None,
+                    ..p
+                })
+            }
             material => material,
+        }
+    }
+
+    /// The radiance the emitter of shape number `shape` sends from its front side at surface
+    /// parameters `uv`: its radiance times its texture there; black for a shape that does
+    /// not glow.
+    pub fn emitted_at(&self, shape: u32, uv: Vec2) -> Vec3 {
+        match self.surface(shape).emitter {
+            Some(AreaEmitter {
+                radiance,
+                texture: Some(texture),
+            }) => radiance * self.albedo(texture, uv),
+            Some(AreaEmitter { radiance, .. }) => radiance,
+            None => Vec3::ZERO,
         }
     }
 

@@ -10,7 +10,7 @@ use super::reader::Reader;
 use super::textures::{NamedTexture, refuse_texture, take_textures};
 use super::values::parse_float;
 use crate::scene::{
-    Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
+    Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass, Texture,
     check_exponent,
 };
 
@@ -124,10 +124,15 @@ fn read_bsdf_element<'a>(
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} bsdf"))?;
     let mut textures = take_textures(reader, &mut properties.objects)?;
-    let reflectance_texture = match type_name.as_str() {
-        "diffuse" => take_named(&mut textures, "reflectance"),
-        _ => None,
+    let mut texture_of = |name: &str| {
+        texturable_parameters(&type_name)
+            .contains(&name)
+            .then(|| take_named(&mut textures, name))
+            .flatten()
     };
+    let reflectance_texture = texture_of("reflectance");
+    let diffuse_texture = texture_of("diffuse_reflectance");
+    let specular_texture = texture_of("specular_reflectance");
     // An unknown type is named as such below, before any of its textures.
     if let Some(texture) = textures.first()
         && KNOWN_BSDF_TYPES.contains(&type_name.as_str())
@@ -144,7 +149,7 @@ fn read_bsdf_element<'a>(
     }
     let material = match type_name.as_str() {
         "diffuse" => diffuse(reader, &mut properties, reflectance_texture)?,
-        "conductor" => conductor(reader, node, &mut properties, None)?,
+        "conductor" => conductor(reader, node, &mut properties, specular_texture, None)?,
         "dielectric" => Material::Dielectric {
             int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
             ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
@@ -166,10 +171,20 @@ fn read_bsdf_element<'a>(
                 ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
             }
         }
-        "plastic" => plastic(reader, &mut properties, None)?,
+        "plastic" => plastic(
+            reader,
+            &mut properties,
+            [diffuse_texture, specular_texture],
+            None,
+        )?,
         "roughplastic" => {
             let microfacet = microfacet(reader, node, &mut properties, Widths::One)?;
-            plastic(reader, &mut properties, Some(microfacet))?
+            plastic(
+                reader,
+                &mut properties,
+                [diffuse_texture, specular_texture],
+                Some(microfacet),
+            )?
         }
         "phong" => {
             let exponent = properties
@@ -192,7 +207,13 @@ fn read_bsdf_element<'a>(
         }
         "roughconductor" => {
             let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
-            conductor(reader, node, &mut properties, Some(microfacet))?
+            conductor(
+                reader,
+                node,
+                &mut properties,
+                specular_texture,
+                Some(microfacet),
+            )?
         }
         "roughdielectric" => {
             let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
@@ -251,17 +272,52 @@ fn diffuse(
     properties: &mut Properties,
     texture: Option<NamedTexture>,
 ) -> Result<Material, SceneError> {
-    let colour = properties.rgb(reader, "reflectance")?;
-    match (colour, texture) {
-        (None, Some(texture)) => Ok(Material::TexturedDiffuse {
-            texture: texture.texture,
+    let reflectance = colour_or_texture(
+        reader,
+        properties,
+        "reflectance",
+        Vec3::splat(0.5),
+        texture,
+        "diffuse",
+    )?;
+    Ok(match reflectance {
+        (_, Some(texture)) => Material::TexturedDiffuse {
+            texture,
             two_sided: false,
-        }),
+        },
+        (albedo, None) => Material::diffuse(albedo),
+    })
+}
+
+/// The parameters of a BSDF type that may be textures: each then multiplies the parameter's
+/// colour point by point, read at every hit by `Scene::material_at`.
+fn texturable_parameters(type_name: &str) -> &'static [&'static str] {
+    match type_name {
+        "diffuse" => &["reflectance"],
+        "conductor" | "roughconductor" => &["specular_reflectance"],
+        "plastic" | "roughplastic" => &["diffuse_reflectance", "specular_reflectance"],
+        _ => &[],
+    }
+}
+
+/// A colour parameter that may be a texture: the colour (`default` when absent) and the
+/// texture, which then multiplies a colour of 1; both at once is an error, as in Mitsuba.
+fn colour_or_texture(
+    reader: &Reader,
+    properties: &mut Properties,
+    name: &str,
+    default: Vec3,
+    texture: Option<NamedTexture>,
+    type_name: &str,
+) -> Result<(Vec3, Option<Texture>), SceneError> {
+    let colour = properties.rgb(reader, name)?;
+    match (colour, texture) {
         (Some(_), Some(texture)) => Err(reader.error(
             texture.node,
-            "the diffuse bsdf's reflectance is given twice: as a colour and as a texture",
+            format!("the {type_name} bsdf's {name} is given twice: as a colour and as a texture"),
         )),
-        (colour, None) => Ok(Material::diffuse(colour.unwrap_or(Vec3::splat(0.5)))),
+        (None, Some(texture)) => Ok((Vec3::ONE, Some(texture.texture))),
+        (colour, None) => Ok((colour.unwrap_or(default), None)),
     }
 }
 
@@ -307,6 +363,7 @@ fn conductor(
     reader: &Reader,
     node: &Element,
     properties: &mut Properties,
+    specular_texture: Option<NamedTexture>,
     roughness: Option<Microfacet>,
 ) -> Result<Material, SceneError> {
     let type_name = if roughness.is_some() {
@@ -319,16 +376,21 @@ fn conductor(
             .position_of(name)
             .unwrap_or(reader.position(node))
     };
-    let specular_reflectance = properties
-        .rgb(reader, "specular_reflectance")?
-        .unwrap_or(Vec3::ONE);
+    let (specular_reflectance, specular_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_reflectance",
+        Vec3::ONE,
+        specular_texture,
+        type_name,
+    )?;
     let material = properties
         .string(reader, "material")?
         .unwrap_or_else(|| "none".to_string());
     let eta = properties.rgb(reader, "eta")?;
     let k = properties.rgb(reader, "k")?;
     let (eta, k) = if material == "none" {
-        if roughness.is_none() && eta.is_none() && k.is_none() {
+        if roughness.is_none() && eta.is_none() && k.is_none() && specular_texture.is_none() {
             return Ok(Material::Mirror {
                 reflectance: specular_reflectance,
             });
@@ -368,6 +430,7 @@ fn conductor(
         eta,
         k,
         specular_reflectance,
+        specular_texture,
         two_sided: false,
         roughness,
     }))
@@ -379,15 +442,35 @@ fn conductor(
 fn plastic(
     reader: &Reader,
     properties: &mut Properties,
+    [diffuse_texture, specular_texture]: [Option<NamedTexture>; 2],
     roughness: Option<Microfacet>,
 ) -> Result<Material, SceneError> {
+    let type_name = if roughness.is_some() {
+        "roughplastic"
+    } else {
+        "plastic"
+    };
+    let (diffuse_reflectance, diffuse_texture) = colour_or_texture(
+        reader,
+        properties,
+        "diffuse_reflectance",
+        Vec3::splat(0.5),
+        diffuse_texture,
+        type_name,
+    )?;
+    let (specular_reflectance, specular_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_reflectance",
+        Vec3::ONE,
+        specular_texture,
+        type_name,
+    )?;
     Ok(Material::Plastic(Plastic {
-        diffuse_reflectance: properties
-            .rgb(reader, "diffuse_reflectance")?
-            .unwrap_or(Vec3::splat(0.5)),
-        specular_reflectance: properties
-            .rgb(reader, "specular_reflectance")?
-            .unwrap_or(Vec3::ONE),
+        diffuse_reflectance,
+        specular_reflectance,
+        diffuse_texture,
+        specular_texture,
         int_ior: ior(reader, properties, "int_ior", POLYPROPYLENE_IOR)?,
         ext_ior: ior(reader, properties, "ext_ior", AIR_IOR)?,
         nonlinear: properties.boolean(reader, "nonlinear")?.unwrap_or(false),
