@@ -52,6 +52,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere; each shape's uv as Mitsuba's",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "textured-more",
+            checks: "textures beyond a diffuse reflectance: a bitmap as a rough plastic's base, a checkerboard as a smooth plastic's base and as a factor on rough gold's reflection, the bitmap again as a mirror's reflectance, and two lights whose radiance is a checkerboard (a wall seen directly, the main light above), read where rays hit them and where light samples land on them",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };
