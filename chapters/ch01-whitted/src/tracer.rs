@@ -63,7 +63,8 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
         | Material::RoughGlass(_)
         | Material::Conductor(_)
         | Material::ThinDielectric { .. }
-        | Material::Plastic(_) => Vec3::ZERO,
+        | Material::Plastic(_)
+        | Material::TintedGlass(_) => Vec3::ZERO,
     }
     // END SOLUTION
 }

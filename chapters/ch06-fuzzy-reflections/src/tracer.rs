@@ -126,9 +126,10 @@ impl<L: Lighting> Tracer<'_, L> {
             ),
             // Chapter 08's materials: the capability check refuses them or puts the lecture's
             // stand-in (a mirror or a lobe for a metal) in their place.
-            Material::Conductor(_) | Material::ThinDielectric { .. } | Material::Plastic(_) => {
-                Vec3::ZERO
-            }
+            Material::Conductor(_)
+            | Material::ThinDielectric { .. }
+            | Material::Plastic(_)
+            | Material::TintedGlass(_) => Vec3::ZERO,
         };
         emitted + scattered
     }

@@ -54,7 +54,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
         },
         AgreementScene {
             name: "textured-more",
-            checks: "textures beyond a diffuse reflectance: a bitmap as a rough plastic's base, a checkerboard as a smooth plastic's base and as a factor on rough gold's reflection, the bitmap again as a mirror's reflectance, and two lights whose radiance is a checkerboard (a wall seen directly, the main light above), read where rays hit them and where light samples land on them",
+            checks: "textures beyond a diffuse reflectance: a bitmap as a rough plastic's base, a checkerboard as a smooth plastic's base and as a factor on rough gold's reflection, the bitmap again as a mirror's reflectance, smooth and rough glass with factors on their reflection and transmission (one a checkerboard), and two lights whose radiance is a checkerboard (a wall seen directly, the main light above), read where rays hit them and where light samples land on them",
             variant: MITSUBA_VARIANT,
         },
     ],

@@ -113,6 +113,9 @@ pub enum Feature {
     TexturedMaterial,
     /// An area light whose radiance is a texture, so that it varies over the light.
     TexturedAreaLight,
+    /// Glass whose reflection or transmission is scaled (Mitsuba's `specular_reflectance`,
+    /// `specular_transmittance` on `dielectric` and `roughdielectric`).
+    TintedGlass,
 }
 
 /// What a chapter that does not render a feature does with a scene that uses it.
@@ -144,7 +147,8 @@ impl Feature {
             | Feature::ThinDielectric
             | Feature::Plastic
             | Feature::TexturedMaterial
-            | Feature::TexturedAreaLight => Some(Chapter::PATH_TRACING),
+            | Feature::TexturedAreaLight
+            | Feature::TintedGlass => Some(Chapter::PATH_TRACING),
             Feature::MovingAreaLight => None,
         }
     }
@@ -168,6 +172,7 @@ impl Feature {
             Feature::Plastic => "plastic",
             Feature::TexturedMaterial => "a texture",
             Feature::TexturedAreaLight => "an area light whose radiance is a texture",
+            Feature::TintedGlass => "glass with a specular_reflectance or specular_transmittance",
         }
     }
 
@@ -186,7 +191,7 @@ impl Feature {
             Feature::EnvironmentLight => "the environment lights matte surfaces",
             Feature::HiddenEmitters => "the integrator's hide_emitters comes",
             Feature::MetalFresnel => "metals' reflectance by angle comes",
-            Feature::ThinDielectric | Feature::Plastic => {
+            Feature::ThinDielectric | Feature::Plastic | Feature::TintedGlass => {
                 "materials beyond the lecture's are rendered"
             }
             Feature::TexturedMaterial => {
@@ -422,6 +427,9 @@ impl Scene {
                     name.clone(),
                 ),
                 Material::Plastic(_) => add(Feature::Plastic, surface.origin.clone(), name.clone()),
+                Material::TintedGlass(_) => {
+                    add(Feature::TintedGlass, surface.origin.clone(), name.clone())
+                }
                 _ => {}
             }
             if let Some(parameter) = surface.material.textured_beyond_albedo() {

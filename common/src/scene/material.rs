@@ -64,6 +64,34 @@ pub enum Material {
     },
     /// A matte base under a smooth dielectric coat (Mitsuba's `plastic` and `roughplastic`).
     Plastic(Plastic),
+    /// Glass whose reflection and transmission are scaled by factors against physics, or by
+    /// textures (Mitsuba's `specular_reflectance` and `specular_transmittance` on
+    /// `dielectric` and `roughdielectric`); glass without them is [`Material::Dielectric`]
+    /// or, rough, [`Material::RoughGlass`].
+    TintedGlass(TintedGlass),
+}
+
+/// The parameters of glass with factors on its two lobes, as Mitsuba 3's `dielectric` and
+/// `roughdielectric` take them: the Fresnel split is unchanged (and so is how a direction is
+/// chosen), then the reflected light is multiplied by `specular_reflectance` and the
+/// transmitted light by `specular_transmittance`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TintedGlass {
+    /// Index of refraction inside (where the normal points away from).
+    pub int_ior: f32,
+    /// Index of refraction outside.
+    pub ext_ior: f32,
+    /// A factor on the reflected light, per colour channel.
+    pub specular_reflectance: Vec3,
+    /// A factor on the transmitted light, per colour channel.
+    pub specular_transmittance: Vec3,
+    /// A texture that multiplies `specular_reflectance` point by point, read at a hit by
+    /// [`Scene::material_at`](super::Scene::material_at).
+    pub reflectance_texture: Option<Texture>,
+    /// A texture that multiplies `specular_transmittance` point by point, read the same way.
+    pub transmittance_texture: Option<Texture>,
+    /// The microfacet roughness of a `roughdielectric`; `None` for smooth glass.
+    pub roughness: Option<Microfacet>,
 }
 
 /// A metal's parameters, as Mitsuba 3's `conductor` takes them.
@@ -312,6 +340,12 @@ impl Material {
             }
             Material::Plastic(p) if p.specular_texture.is_some() => {
                 Some("plastic's specular_reflectance")
+            }
+            Material::TintedGlass(g) if g.reflectance_texture.is_some() => {
+                Some("glass's specular_reflectance")
+            }
+            Material::TintedGlass(g) if g.transmittance_texture.is_some() => {
+                Some("glass's specular_transmittance")
             }
             _ => None,
         }

@@ -32,7 +32,7 @@ pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
     Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass,
-    check_exponent,
+    TintedGlass, check_exponent,
 };
 pub use settings::{FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition};
 pub use texture::{Bitmap, BitmapFilter, BitmapId, Checkerboard, Texture, WrapMode};
@@ -135,8 +135,9 @@ impl Scene {
     /// returned as they are. For code that wants one material per hit, such as chapter 08's
     /// BSDFs.
     ///
-    /// The textures of plastic and metals (a [`Plastic`]'s `diffuse_texture` and
-    /// `specular_texture`, a [`Conductor`]'s `specular_texture`) are read the same way: each
+    /// The textures of plastic, metals and glass (a [`Plastic`]'s `diffuse_texture` and
+    /// `specular_texture`, a [`Conductor`]'s `specular_texture`, a [`TintedGlass`]'s two) are
+    /// read the same way: each
     /// multiplies its colour, and the material returned has no texture left.
     pub fn material_at(&self, shape: u32, uv: Vec2) -> Material {
         let factor = |texture: Option<Texture>| texture.map_or(Vec3::ONE, |t| self.albedo(t, uv));
@@ -159,6 +160,18 @@ impl Scene {
                     diffuse_texture: None,
                     specular_texture: None,
                     ..p
+                })
+            }
+            Material::TintedGlass(g)
+                if g.reflectance_texture.is_some() || g.transmittance_texture.is_some() =>
+            {
+                Material::TintedGlass(TintedGlass {
+                    specular_reflectance: g.specular_reflectance * factor(g.reflectance_texture),
+                    specular_transmittance: g.specular_transmittance
+                        * factor(g.transmittance_texture),
+                    reflectance_texture: None,
+                    transmittance_texture: None,
+                    ..g
                 })
             }
             material => material,

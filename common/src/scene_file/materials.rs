@@ -11,7 +11,7 @@ use super::textures::{NamedTexture, refuse_texture, take_textures};
 use super::values::parse_float;
 use crate::scene::{
     Conductor, Glossy, Material, Microfacet, MicrofacetDistribution, Plastic, RoughGlass, Texture,
-    check_exponent,
+    TintedGlass, check_exponent,
 };
 
 /// Mitsuba's default interior index of refraction of glass, BK7.
@@ -133,6 +133,7 @@ fn read_bsdf_element<'a>(
     let reflectance_texture = texture_of("reflectance");
     let diffuse_texture = texture_of("diffuse_reflectance");
     let specular_texture = texture_of("specular_reflectance");
+    let transmittance_texture = texture_of("specular_transmittance");
     // An unknown type is named as such below, before any of its textures.
     if let Some(texture) = textures.first()
         && KNOWN_BSDF_TYPES.contains(&type_name.as_str())
@@ -150,10 +151,12 @@ fn read_bsdf_element<'a>(
     let material = match type_name.as_str() {
         "diffuse" => diffuse(reader, &mut properties, reflectance_texture)?,
         "conductor" => conductor(reader, node, &mut properties, specular_texture, None)?,
-        "dielectric" => Material::Dielectric {
-            int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
-            ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
-        },
+        "dielectric" => glass(
+            reader,
+            &mut properties,
+            [specular_texture, transmittance_texture],
+            None,
+        )?,
         "thindielectric" => {
             for unrendered in ["specular_reflectance", "specular_transmittance"] {
                 if let Some(position) = properties.position_of(unrendered) {
@@ -217,12 +220,12 @@ fn read_bsdf_element<'a>(
         }
         "roughdielectric" => {
             let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
-            Material::RoughGlass(RoughGlass {
-                int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
-                ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
-                exponent: microfacet.lobe_exponent(),
-                stands_in_for: Some(microfacet),
-            })
+            glass(
+                reader,
+                &mut properties,
+                [specular_texture, transmittance_texture],
+                Some(microfacet),
+            )?
         }
         "twosided" => {
             let nested = nested_bsdfs(reader, &properties.objects, node)?;
@@ -296,6 +299,7 @@ fn texturable_parameters(type_name: &str) -> &'static [&'static str] {
         "diffuse" => &["reflectance"],
         "conductor" | "roughconductor" => &["specular_reflectance"],
         "plastic" | "roughplastic" => &["diffuse_reflectance", "specular_reflectance"],
+        "dielectric" | "roughdielectric" => &["specular_reflectance", "specular_transmittance"],
         _ => &[],
     }
 }
@@ -477,6 +481,63 @@ fn plastic(
         two_sided: false,
         roughness,
     }))
+}
+
+/// A `dielectric` (`roughness` `None`) or `roughdielectric`: plain glass, or, with a
+/// `specular_reflectance` or `specular_transmittance` other than 1 (a colour or a texture), a
+/// [`TintedGlass`]. Rough plain glass is a [`RoughGlass`] whose `cos^n` lobe (chapters 06
+/// and 07) stands in for its roughness.
+fn glass(
+    reader: &Reader,
+    properties: &mut Properties,
+    [reflectance_texture, transmittance_texture]: [Option<NamedTexture>; 2],
+    roughness: Option<Microfacet>,
+) -> Result<Material, SceneError> {
+    let type_name = if roughness.is_some() {
+        "roughdielectric"
+    } else {
+        "dielectric"
+    };
+    let int_ior = ior(reader, properties, "int_ior", BK7_IOR)?;
+    let ext_ior = ior(reader, properties, "ext_ior", AIR_IOR)?;
+    let (specular_reflectance, reflectance_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_reflectance",
+        Vec3::ONE,
+        reflectance_texture,
+        type_name,
+    )?;
+    let (specular_transmittance, transmittance_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_transmittance",
+        Vec3::ONE,
+        transmittance_texture,
+        type_name,
+    )?;
+    let tinted = specular_reflectance != Vec3::ONE
+        || specular_transmittance != Vec3::ONE
+        || reflectance_texture.is_some()
+        || transmittance_texture.is_some();
+    Ok(match (tinted, roughness) {
+        (true, roughness) => Material::TintedGlass(TintedGlass {
+            int_ior,
+            ext_ior,
+            specular_reflectance,
+            specular_transmittance,
+            reflectance_texture,
+            transmittance_texture,
+            roughness,
+        }),
+        (false, None) => Material::Dielectric { int_ior, ext_ior },
+        (false, Some(microfacet)) => Material::RoughGlass(RoughGlass {
+            int_ior,
+            ext_ior,
+            exponent: microfacet.lobe_exponent(),
+            stands_in_for: Some(microfacet),
+        }),
+    })
 }
 
 /// Whether a rough BSDF may have two widths: Mitsuba's `roughconductor` and

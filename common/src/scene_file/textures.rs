@@ -221,8 +221,10 @@ pub(super) fn refuse_texture(reader: &Reader, plugin: &str, texture: &NamedTextu
         format!(
             "the {plugin}'s `{}` cannot be a texture yet: the workbook reads textures as a \
              diffuse bsdf's reflectance, plastic's and roughplastic's diffuse_reflectance and \
-             specular_reflectance, a conductor's and roughconductor's specular_reflectance \
-             and an area emitter's radiance; give a plain <rgb> or <float>",
+             specular_reflectance, a conductor's and roughconductor's specular_reflectance, \
+             a dielectric's and roughdielectric's specular_reflectance and \
+             specular_transmittance, and an area emitter's radiance; give a plain <rgb> or \
+             <float>",
             texture.name
         ),
     )

@@ -10,7 +10,7 @@ use image::{ImageFormat, Rgb, RgbImage};
 
 use super::super::parse_scene;
 use super::scene_with;
-use crate::scene::{Capabilities, Chapter, Conductor, Material, Plastic, Scene};
+use crate::scene::{Capabilities, Chapter, Conductor, Material, Plastic, Scene, TintedGlass};
 
 /// A red and blue checkerboard of one square per half of `uv` along `u`: red where
 /// `u < 0.5` (and `v < 0.5`), blue to its right.
@@ -191,9 +191,14 @@ fn what_cannot_be_a_texture_or_is_given_twice_is_refused() {
             "roughplastic bsdf's `alpha` cannot be a texture yet",
         ),
         (
-            r#"<bsdf type="dielectric">TEXTURE</bsdf>"#,
+            r#"<bsdf type="dielectric"><rgb name="specular_transmittance" value="0.5"/>TEXTURE</bsdf>"#,
             "specular_transmittance",
-            "dielectric bsdf's `specular_transmittance` cannot be a texture yet",
+            "dielectric bsdf's specular_transmittance is given twice",
+        ),
+        (
+            r#"<bsdf type="roughdielectric">TEXTURE</bsdf>"#,
+            "alpha_u",
+            "roughdielectric bsdf's `alpha_u` cannot be a texture yet",
         ),
         (
             r#"<emitter type="area"><rgb name="radiance" value="2"/>TEXTURE</emitter>"#,
@@ -251,6 +256,10 @@ fn chapters_before_08_refuse_these_textures_naming_chapter_08() {
             r#"<emitter type="area"><texture type="checkerboard" name="radiance"/></emitter>"#,
             "an area light whose radiance is a texture (shape 1); lights that vary",
         ),
+        (
+            r#"<bsdf type="dielectric"><rgb name="specular_transmittance" value="0.5"/></bsdf>"#,
+            "glass with a specular_reflectance or specular_transmittance (shape 1)",
+        ),
     ] {
         let scene = one_shape(shape);
         let refusal = soft_shadows.check(&scene).unwrap_err();
@@ -260,4 +269,51 @@ fn chapters_before_08_refuse_these_textures_naming_chapter_08() {
         );
         assert!(path_tracing.check(&scene).is_ok());
     }
+}
+
+#[test]
+fn glass_with_factors_or_textures_on_its_lobes_is_tinted_glass() {
+    // Plain glass stays the lecture's glass, or a lobe standing in for its roughness.
+    assert!(matches!(
+        one_shape(r#"<bsdf type="dielectric"><rgb name="specular_reflectance" value="1"/></bsdf>"#)
+            .surfaces[0]
+            .material,
+        Material::Dielectric { .. }
+    ));
+    assert!(matches!(
+        one_shape(r#"<bsdf type="roughdielectric"/>"#).surfaces[0].material,
+        Material::RoughGlass(_)
+    ));
+    let scene = one_shape(
+        r#"<bsdf type="dielectric"><float name="int_ior" value="1.33"/>
+             <rgb name="specular_reflectance" value="0.5"/></bsdf>"#,
+    );
+    assert_eq!(
+        scene.surfaces[0].material,
+        Material::TintedGlass(TintedGlass {
+            int_ior: 1.33,
+            ext_ior: 1.000277,
+            specular_reflectance: Vec3::splat(0.5),
+            specular_transmittance: Vec3::ONE,
+            reflectance_texture: None,
+            transmittance_texture: None,
+            roughness: None,
+        })
+    );
+    let scene = one_shape(&format!(
+        r#"<bsdf type="roughdielectric"><float name="alpha" value="0.2"/>
+             <texture type="checkerboard" name="specular_transmittance">{BOARD}</texture></bsdf>"#
+    ));
+    let Material::TintedGlass(glass) = scene.surfaces[0].material else {
+        panic!("{:?}", scene.surfaces[0].material)
+    };
+    assert_eq!(glass.roughness.map(|r| r.alpha()), Some(0.2));
+    let Material::TintedGlass(right) = scene.material_at(0, RIGHT) else {
+        panic!()
+    };
+    assert_eq!(
+        (right.specular_reflectance, right.specular_transmittance),
+        (Vec3::ONE, Vec3::Z)
+    );
+    assert_eq!(right.transmittance_texture, None);
 }

@@ -210,7 +210,8 @@ fn reference<W: World>(
         | Material::RoughGlass(_)
         | Material::Conductor(_)
         | Material::ThinDielectric { .. }
-        | Material::Plastic(_) => Vec3::ZERO,
+        | Material::Plastic(_)
+        | Material::TintedGlass(_) => Vec3::ZERO,
     }
 }
 
