@@ -64,7 +64,8 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
         | Material::Conductor(_)
         | Material::ThinDielectric { .. }
         | Material::Plastic(_)
-        | Material::Mask(_) => Vec3::ZERO,
+        | Material::Mask(_)
+        | Material::TintedGlass(_) => Vec3::ZERO,
     }
     // END SOLUTION
 }

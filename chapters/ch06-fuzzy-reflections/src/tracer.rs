@@ -129,7 +129,8 @@ impl<L: Lighting> Tracer<'_, L> {
             Material::Conductor(_)
             | Material::ThinDielectric { .. }
             | Material::Plastic(_)
-            | Material::Mask(_) => Vec3::ZERO,
+            | Material::Mask(_)
+            | Material::TintedGlass(_) => Vec3::ZERO,
         };
         emitted + scattered
     }

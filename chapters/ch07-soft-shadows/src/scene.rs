@@ -18,6 +18,9 @@ pub struct AreaLights {
     pub lights: Vec<AreaLight>,
     /// For every shape of the scene, the index of the light it is, if any.
     pub light_of_shape: Vec<Option<u32>>,
+    /// For every light, the number of its shape: where its emitter (and a texture on its
+    /// radiance, which chapter 08 reads) is found in the scene.
+    pub shape_of_light: Vec<u32>,
 }
 
 /// The light shape of a world shape: every shape of `common` has a surface to sample.
@@ -36,15 +39,18 @@ impl AreaLights {
     pub fn of(scene: &Scene) -> Self {
         let mut light_of_shape = vec![None; scene.shape_count()];
         let mut lights = Vec::new();
+        let mut shape_of_light = Vec::new();
         for (index, shape) in scene.geometry.shapes().iter().enumerate() {
             if let Some(emitter) = scene.surfaces[index].emitter {
                 light_of_shape[index] = Some(lights.len() as u32);
+                shape_of_light.push(index as u32);
                 lights.push(AreaLight::new(light_shape(shape), emitter.radiance));
             }
         }
         Self {
             lights,
             light_of_shape,
+            shape_of_light,
         }
     }
 

@@ -77,6 +77,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "mask: a two-sided card with holes cut by a checkerboard opacity and a one-sided card of opacity 0.4, with the sphere and box behind them seen through, their shadows (shadow rays stopped by a mask, as in Mitsuba) and light passing through them",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "textured-more",
+            checks: "textures beyond a diffuse reflectance: a bitmap as a rough plastic's base, a checkerboard as a smooth plastic's base and as a factor on rough gold's reflection, the bitmap again as a mirror's reflectance, smooth and rough glass with factors on their reflection and transmission (one a checkerboard), and two lights whose radiance is a checkerboard (a wall seen directly, the main light above), read where rays hit them and where light samples land on them",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

@@ -84,6 +84,7 @@ impl Bsdf<'_> {
             Material::Conductor(c) => c.roughness.is_none(),
             Material::ThinDielectric { .. } => true,
             Material::Plastic(_) => false,
+            Material::TintedGlass(g) => g.roughness.is_none(),
             // Passing through is a delta, but the nested material may want a light sample.
             Material::Mask(mask) => self.nested(&mask.nested).is_delta(),
         }
@@ -147,6 +148,17 @@ impl Bsdf<'_> {
                 ext_ior,
                 sampler.get_1d(),
             )),
+            Material::TintedGlass(g) => {
+                let choice = sampler.get_1d();
+                match g.roughness {
+                    None => dielectric::sample_tinted(hit, wo, &g, choice),
+                    Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).sample(
+                        wo,
+                        choice,
+                        sampler.get_2d(),
+                    ),
+                }
+            }
             Material::Plastic(p) => {
                 let choice = sampler.get_1d();
                 let u = sampler.get_2d();
@@ -188,6 +200,10 @@ impl Bsdf<'_> {
                     .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
             },
             Material::ThinDielectric { .. } => Vec3::ZERO,
+            Material::TintedGlass(g) => match g.roughness {
+                None => Vec3::ZERO,
+                Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).eval(wo, wi),
+            },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::eval(hit, wo, wi, &p),
                 Some(roughness) => microfacet::plastic(hit, wo, &p, roughness)
@@ -219,6 +235,10 @@ impl Bsdf<'_> {
                     .map_or(0.0, |bsdf| bsdf.pdf(wo, wi)),
             },
             Material::ThinDielectric { .. } => 0.0,
+            Material::TintedGlass(g) => match g.roughness {
+                None => 0.0,
+                Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).pdf(wo, wi),
+            },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::pdf(hit, wo, wi, &p),
                 Some(roughness) => {
@@ -306,6 +326,8 @@ mod tests {
         Plastic {
             diffuse_reflectance: Vec3::new(0.9, 0.5, 0.1),
             specular_reflectance: Vec3::ONE,
+            diffuse_texture: None,
+            specular_texture: None,
             int_ior: 1.49,
             ext_ior: 1.000277,
             nonlinear: false,
@@ -320,6 +342,7 @@ mod tests {
             eta,
             k,
             specular_reflectance: Vec3::ONE,
+            specular_texture: None,
             two_sided: false,
             roughness: None,
         }

@@ -49,7 +49,9 @@ impl PathTracer<'_> {
         };
         let mut radiance = Vec3::ZERO;
         if shown && let Some(light) = self.lights.area_light_of(hit.shape) {
-            radiance += light.emitted(hit.n, -ray.dir);
+            radiance += self
+                .lights
+                .emitted(light, hit.shape, hit.n, || Some(hit.uv), -ray.dir);
         }
         let bsdf = Bsdf {
             material: &self.world.scene.material_at(hit.shape, hit.uv),
@@ -142,7 +144,8 @@ impl PathTracer<'_> {
         {
             Some(found) => match self.lights.area_light_of(found.shape) {
                 Some(light) => (
-                    light.emitted(found.n, -sample.wi),
+                    self.lights
+                        .emitted(light, found.shape, found.n, || Some(found.uv), -sample.wi),
                     self.lights.area_pdf(light, bsdf.hit.p, found.p, found.n),
                 ),
                 None => return Vec3::ZERO,

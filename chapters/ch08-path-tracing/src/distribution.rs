@@ -81,6 +81,10 @@ impl DistributionOptions {
 }
 
 /// The branching tracer over a chapter 07 scene.
+///
+/// Its area lights are chapter 07's, whose radiance is the same at every point: a light whose
+/// radiance is a texture is read by the path tracer only ([`crate::lights`]); this tracer
+/// renders the chapter's own scenes, which have none.
 #[derive(Clone, Copy)]
 pub struct DistributionTracer<'a> {
     /// The scene.

@@ -14,6 +14,14 @@
 //! included. The expected image is the same; ours is less noisy where a scene has point
 //! lights, and a scene without area lights or environment pays for no pick and no light
 //! sample at all.
+//!
+//! An area light's radiance may be a texture (Mitsuba's `<texture name="radiance">`): then
+//! what it sends depends on the point, read at the point's surface parameters both where a
+//! ray hits the light ([`SceneLights::emitted`]) and at the point a light sample picks. The
+//! point is still picked by area (or, on a sphere, by solid angle), whatever the texture:
+//! the same mean as Mitsuba 3, which instead picks the point by the texture's own
+//! distribution over `uv` (a bitmap's brightness) when the radiance varies, so its noise is
+//! lower on a light with bright spots.
 
 use ch02_monte_carlo::warps::{sample_uniform_sphere, uniform_sphere_pdf};
 use ch05_motion_blur::MotionScene;
@@ -23,7 +31,7 @@ use ch07_soft_shadows::solid_angle::{pdf_area_to_solid_angle, sphere_solid_angle
 use ch07_soft_shadows::{AreaLight, AreaLights, LightSampling, Strategy};
 use common::Ray;
 use common::geometry::SurfaceHit;
-use common::scene::PointLight;
+use common::scene::{AreaEmitter, PointLight, Scene};
 use glam::{Vec2, Vec3};
 
 /// One of the lights a light sample picks from.
@@ -77,6 +85,10 @@ pub struct SceneLights<'a> {
     pub area: &'a [AreaLight],
     /// For every shape, the area light it is.
     pub light_of_shape: &'a [Option<u32>],
+    /// For every area light, its shape.
+    shape_of_light: &'a [u32],
+    /// The scene, for the textures of lights whose radiance varies.
+    scene: &'a Scene,
     /// Point lights.
     pub points: &'a [PointLight],
     /// The environment's radiance; black means there is none.
@@ -101,6 +113,8 @@ impl<'a> SceneLights<'a> {
         let mut lights = Self {
             area: &area_lights.lights,
             light_of_shape: &area_lights.light_of_shape,
+            shape_of_light: &area_lights.shape_of_light,
+            scene,
             points: &scene.point_lights,
             environment: scene.environment,
             sampling,
@@ -164,6 +178,47 @@ impl<'a> SceneLights<'a> {
         self.area.get(index as usize)
     }
 
+    /// The radiance the area light `light`, which is shape number `shape`, sends from its
+    /// point of normal `n` and surface parameters `uv` towards `towards_viewer`: its
+    /// radiance on the front side, times its texture at `uv` if it has one.
+    #[inline]
+    pub fn emitted(
+        &self,
+        light: &AreaLight,
+        shape: u32,
+        n: Vec3,
+        uv: impl FnOnce() -> Option<Vec2>,
+        towards_viewer: Vec3,
+    ) -> Vec3 {
+        let front = light.emitted(n, towards_viewer);
+        if front == Vec3::ZERO {
+            return front;
+        }
+        match self.scene.surface(shape).emitter {
+            Some(AreaEmitter {
+                texture: Some(texture),
+                ..
+            }) => match uv() {
+                Some(uv) => front * self.scene.albedo(texture, uv),
+                None => Vec3::ZERO,
+            },
+            _ => front,
+        }
+    }
+
+    /// The surface parameters of the point `p` of shape number `shape`, seen from `x`: those
+    /// of the hit of the ray from `x` towards `p` on that shape alone, so that they follow
+    /// the shape's own `uv` exactly as a hit there would. `None` if the ray misses it (a
+    /// point on the very edge, by rounding), which then sends nothing: a set of no area.
+    fn uv_of(&self, shape: u32, x: Vec3, p: Vec3) -> Option<Vec2> {
+        let shape = self.scene.geometry.shapes().get(shape as usize)?;
+        let to_p = p - x;
+        let distance = to_p.length();
+        let mut ray = Ray::new(x, to_p / distance);
+        ray.t_max = distance * (1.0 + 1e-3);
+        shape.intersect(&ray).map(|hit| hit.uv)
+    }
+
     /// A direction to `light` from `receiver` with the numbers `u`, or `None` when the light
     /// offers nothing there (no area, a degenerate sample).
     #[inline]
@@ -185,9 +240,11 @@ impl<'a> SceneLights<'a> {
                 let pdf = sample
                     .pdf_solid_angle
                     .unwrap_or_else(|| pdf_area_to_solid_angle(sample.pdf, d2, sample.n.dot(wi)));
+                let shape = self.shape_of_light[i];
+                let uv = || self.uv_of(shape, x, sample.p);
                 LightDirection {
                     wi,
-                    radiance: light.emitted(sample.n, -wi),
+                    radiance: self.emitted(light, shape, sample.n, uv, -wi),
                     pdf: pick * pdf,
                     target: ShadowTarget::Surface(sample),
                 }

@@ -224,7 +224,9 @@ impl PathTracer<'_> {
             && self.lights.has_area_lights()
             && let Some(light) = self.lights.area_light_of(hit.shape)
         {
-            let le = light.emitted(hit.n, -ray.dir);
+            let le = self
+                .lights
+                .emitted(light, hit.shape, hit.n, || Some(hit.uv), -ray.dir);
             if le != Vec3::ZERO {
                 let light_pdf = match previous {
                     Some(previous) if weighted(previous) => {

@@ -57,7 +57,7 @@ fn scene(builder: SceneBuilder, shutter: Shutter) -> MotionScene {
 
 /// `world` with shape number `shape` glowing with `radiance`.
 fn with_lamp(mut world: MotionScene, shape: usize, radiance: Vec3) -> MotionScene {
-    world.scene.surfaces[shape].emitter = Some(AreaEmitter { radiance });
+    world.scene.surfaces[shape].emitter = Some(AreaEmitter::uniform(radiance));
     world
 }
 

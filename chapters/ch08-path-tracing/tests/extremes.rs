@@ -112,9 +112,7 @@ fn a_small_light_behind_glass() -> MotionScene {
         ),
     ];
     let mut world = scene_of(shapes, Vec3::ZERO, Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, 12);
-    world.scene.surfaces[2].emitter = Some(AreaEmitter {
-        radiance: Vec3::splat(1e4),
-    });
+    world.scene.surfaces[2].emitter = Some(AreaEmitter::uniform(Vec3::splat(1e4)));
     world
 }
 

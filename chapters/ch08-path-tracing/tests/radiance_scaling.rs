@@ -103,9 +103,8 @@ fn outside_glass_around_an_emitter_of_eta_squared_the_world_looks_uniform() {
         Vec3::ZERO,
         MAX_DEPTH,
     );
-    scene.scene.surfaces[1].emitter = Some(common::scene::AreaEmitter {
-        radiance: Vec3::splat(IOR * IOR),
-    });
+    scene.scene.surfaces[1].emitter =
+        Some(common::scene::AreaEmitter::uniform(Vec3::splat(IOR * IOR)));
     // Every path ends by its third segment (the world, or the black emitter): none is cut off.
     assert_every_pixel(&scene, 1.0, 0.0);
 }

@@ -40,7 +40,7 @@ impl SceneBuilder {
     /// an area light (chapter 07).
     pub fn area_light(self, shape: Shape, material: Material, radiance: Vec3) -> Self {
         let surface = Surface {
-            emitter: Some(AreaEmitter { radiance }),
+            emitter: Some(AreaEmitter::uniform(radiance)),
             ..plain(material)
         };
         self.surface(shape, surface)
@@ -142,9 +142,7 @@ mod tests {
         assert_eq!(scene.surface(0).material, Material::glass(1.5));
         assert_eq!(
             scene.surface(1).emitter,
-            Some(AreaEmitter {
-                radiance: Vec3::splat(2.0)
-            })
+            Some(AreaEmitter::uniform(Vec3::splat(2.0)))
         );
         assert_eq!(scene.surface(2).material, Material::mirror());
         assert_eq!(scene.moving.len(), 1);

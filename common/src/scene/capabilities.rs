@@ -115,6 +115,14 @@ pub enum Feature {
     /// A cut-out surface that light passes through where it is not opaque (Mitsuba's
     /// `mask`): only a path tracer picks, at random, whether a ray meets it or passes on.
     Mask,
+    /// A texture on a material's parameter other than a matte surface's albedo (a metal's
+    /// `specular_reflectance`, plastic's `diffuse_reflectance`, ...).
+    TexturedMaterial,
+    /// An area light whose radiance is a texture, so that it varies over the light.
+    TexturedAreaLight,
+    /// Glass whose reflection or transmission is scaled (Mitsuba's `specular_reflectance`,
+    /// `specular_transmittance` on `dielectric` and `roughdielectric`).
+    TintedGlass,
 }
 
 /// What a chapter that does not render a feature does with a scene that uses it.
@@ -146,7 +154,10 @@ impl Feature {
             | Feature::MetalFresnel
             | Feature::ThinDielectric
             | Feature::Plastic
-            | Feature::Mask => Some(Chapter::PATH_TRACING),
+            | Feature::Mask
+            | Feature::TexturedMaterial
+            | Feature::TexturedAreaLight
+            | Feature::TintedGlass => Some(Chapter::PATH_TRACING),
             Feature::MovingAreaLight => None,
         }
     }
@@ -170,6 +181,9 @@ impl Feature {
             Feature::ThinDielectric => "a thin pane of glass (thindielectric)",
             Feature::Plastic => "plastic",
             Feature::Mask => "a cut-out (mask)",
+            Feature::TexturedMaterial => "a texture",
+            Feature::TexturedAreaLight => "an area light whose radiance is a texture",
+            Feature::TintedGlass => "glass with a specular_reflectance or specular_transmittance",
         }
     }
 
@@ -189,10 +203,14 @@ impl Feature {
             Feature::HiddenEmitters => "the integrator's hide_emitters comes",
             Feature::DirectSampleCounts => "emitter_samples and bsdf_samples are taken as given",
             Feature::MetalFresnel => "metals' reflectance by angle comes",
-            Feature::ThinDielectric | Feature::Plastic => {
+            Feature::ThinDielectric | Feature::Plastic | Feature::TintedGlass => {
                 "materials beyond the lecture's are rendered"
             }
             Feature::Mask => "surfaces that light may pass through at random are rendered",
+            Feature::TexturedMaterial => {
+                "textures on other parameters than a matte surface's reflectance are read"
+            }
+            Feature::TexturedAreaLight => "lights that vary over their surface are sampled",
         }
     }
 
@@ -442,7 +460,24 @@ impl Scene {
                     name.clone(),
                 ),
                 Material::Plastic(_) => add(Feature::Plastic, surface.origin.clone(), name.clone()),
+                Material::TintedGlass(_) => {
+                    add(Feature::TintedGlass, surface.origin.clone(), name.clone())
+                }
                 _ => {}
+            }
+            if let Some(parameter) = material.textured_beyond_albedo() {
+                add(
+                    Feature::TexturedMaterial,
+                    surface.origin.clone(),
+                    format!("{name}: {parameter}"),
+                );
+            }
+            if surface.emitter.is_some_and(|e| e.texture.is_some()) {
+                add(
+                    Feature::TexturedAreaLight,
+                    surface.origin.clone(),
+                    name.clone(),
+                );
             }
             if let Some((detail, stands_in)) = fuzzy_detail(material) {
                 let feature = if stands_in {
@@ -646,6 +681,7 @@ mod tests {
             eta: Vec3::new(0.143, 0.375, 1.442),
             k: Vec3::new(3.983, 2.386, 1.603),
             specular_reflectance: Vec3::ONE,
+            specular_texture: None,
             two_sided: false,
             roughness: None,
         };
@@ -703,6 +739,8 @@ mod tests {
                 Material::Plastic(crate::scene::Plastic {
                     diffuse_reflectance: Vec3::splat(0.5),
                     specular_reflectance: Vec3::ONE,
+                    diffuse_texture: None,
+                    specular_texture: None,
                     int_ior: 1.49,
                     ext_ior: 1.0,
                     nonlinear: false,
@@ -737,9 +775,7 @@ mod tests {
         ];
         let mut moving =
             scene(SceneBuilder::new().moving(sphere(), keyframes, Material::diffuse(Vec3::ONE)));
-        moving.surfaces[0].emitter = Some(crate::scene::AreaEmitter {
-            radiance: Vec3::ONE,
-        });
+        moving.surfaces[0].emitter = Some(crate::scene::AreaEmitter::uniform(Vec3::ONE));
         let refusal = SOFT_SHADOWS.check(&moving).unwrap_err();
         assert!(
             refusal.contains("an area light that moves (shape 1); no chapter samples"),

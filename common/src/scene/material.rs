@@ -67,6 +67,34 @@ pub enum Material {
     /// A cut-out: the nested material where the surface is opaque, nothing where it is not
     /// (Mitsuba's `mask`), as for a leaf cut out of a card by a texture.
     Mask(Mask),
+    /// Glass whose reflection and transmission are scaled by factors against physics, or by
+    /// textures (Mitsuba's `specular_reflectance` and `specular_transmittance` on
+    /// `dielectric` and `roughdielectric`); glass without them is [`Material::Dielectric`]
+    /// or, rough, [`Material::RoughGlass`].
+    TintedGlass(TintedGlass),
+}
+
+/// The parameters of glass with factors on its two lobes, as Mitsuba 3's `dielectric` and
+/// `roughdielectric` take them: the Fresnel split is unchanged (and so is how a direction is
+/// chosen), then the reflected light is multiplied by `specular_reflectance` and the
+/// transmitted light by `specular_transmittance`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TintedGlass {
+    /// Index of refraction inside (where the normal points away from).
+    pub int_ior: f32,
+    /// Index of refraction outside.
+    pub ext_ior: f32,
+    /// A factor on the reflected light, per colour channel.
+    pub specular_reflectance: Vec3,
+    /// A factor on the transmitted light, per colour channel.
+    pub specular_transmittance: Vec3,
+    /// A texture that multiplies `specular_reflectance` point by point, read at a hit by
+    /// [`Scene::material_at`](super::Scene::material_at).
+    pub reflectance_texture: Option<Texture>,
+    /// A texture that multiplies `specular_transmittance` point by point, read the same way.
+    pub transmittance_texture: Option<Texture>,
+    /// The microfacet roughness of a `roughdielectric`; `None` for smooth glass.
+    pub roughness: Option<Microfacet>,
 }
 
 /// Mitsuba 3's `mask`: at each point the surface is there with probability `opacity` (and
@@ -105,6 +133,10 @@ pub struct Conductor {
     pub k: Vec3,
     /// A factor on the reflection, per colour channel (1 for a physical metal).
     pub specular_reflectance: Vec3,
+    /// A texture that multiplies `specular_reflectance` point by point (a scene file's
+    /// `<texture name="specular_reflectance">`); [`Scene::material_at`](super::Scene::material_at)
+    /// reads it at a hit.
+    pub specular_texture: Option<Texture>,
     /// Whether the back face reflects too (Mitsuba's `twosided`); else it is black.
     pub two_sided: bool,
     /// The microfacet roughness of a `roughconductor`; `None` for a smooth metal.
@@ -120,6 +152,11 @@ pub struct Plastic {
     pub diffuse_reflectance: Vec3,
     /// A factor on the coat's reflection (1 for a physical coat).
     pub specular_reflectance: Vec3,
+    /// A texture that multiplies `diffuse_reflectance` point by point; read at a hit by
+    /// [`Scene::material_at`](super::Scene::material_at).
+    pub diffuse_texture: Option<Texture>,
+    /// A texture that multiplies `specular_reflectance` point by point, read the same way.
+    pub specular_texture: Option<Texture>,
     /// Index of refraction of the coat.
     pub int_ior: f32,
     /// Index of refraction outside.
@@ -322,6 +359,31 @@ impl Material {
         match self {
             Material::Mask(mask) => mask.nested.unmasked(),
             other => other,
+        }
+    }
+
+    /// The first parameter, other than a matte surface's albedo, that a texture varies over
+    /// the surface, in a scene file's words ("a metal's specular_reflectance"); `None` when
+    /// there is none. Chapter 08 reads these textures; the chapters before it refuse them.
+    pub fn textured_beyond_albedo(&self) -> Option<&'static str> {
+        match self {
+            Material::Conductor(c) if c.specular_texture.is_some() => {
+                Some("a metal's specular_reflectance")
+            }
+            Material::Plastic(p) if p.diffuse_texture.is_some() => {
+                Some("plastic's diffuse_reflectance")
+            }
+            Material::Plastic(p) if p.specular_texture.is_some() => {
+                Some("plastic's specular_reflectance")
+            }
+            Material::TintedGlass(g) if g.reflectance_texture.is_some() => {
+                Some("glass's specular_reflectance")
+            }
+            Material::TintedGlass(g) if g.transmittance_texture.is_some() => {
+                Some("glass's specular_transmittance")
+            }
+            Material::Mask(mask) => mask.nested.textured_beyond_albedo(),
+            _ => None,
         }
     }
 

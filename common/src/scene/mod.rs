@@ -32,7 +32,7 @@ pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
     Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity, Plastic,
-    RoughGlass, check_exponent,
+    RoughGlass, TintedGlass, check_exponent,
 };
 pub use settings::{
     DirectSamples, FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition,
@@ -139,17 +139,53 @@ impl Scene {
     /// surface becomes the plain matte surface of the albedo there; other materials are
     /// returned as they are. For code that wants one material per hit, such as chapter 08's
     /// BSDFs.
+    ///
+    /// The textures of plastic, metals and glass (a [`Plastic`]'s `diffuse_texture` and
+    /// `specular_texture`, a [`Conductor`]'s `specular_texture`, a [`TintedGlass`]'s two) are
+    /// read the same way: each
+    /// multiplies its colour, and the material returned has no texture left.
     pub fn material_at(&self, shape: u32, uv: Vec2) -> Material {
         self.read_at(&self.surface(shape).material, uv)
     }
 
     /// `material` with its textures read at `uv` (a mask's opacity and nested material too).
     fn read_at(&self, material: &Material, uv: Vec2) -> Material {
+        let factor = |texture: Option<Texture>| texture.map_or(Vec3::ONE, |t| self.albedo(t, uv));
         match material {
             &Material::TexturedDiffuse { texture, two_sided } => Material::Diffuse {
                 albedo: self.albedo(texture, uv),
                 two_sided,
             },
+            &Material::Conductor(c) if c.specular_texture.is_some() => {
+                Material::Conductor(Conductor {
+                    specular_reflectance: c.specular_reflectance * factor(c.specular_texture),
+                    specular_texture: None,
+                    ..c
+                })
+            }
+            &Material::Plastic(p)
+                if p.diffuse_texture.is_some() || p.specular_texture.is_some() =>
+            {
+                Material::Plastic(Plastic {
+                    diffuse_reflectance: p.diffuse_reflectance * factor(p.diffuse_texture),
+                    specular_reflectance: p.specular_reflectance * factor(p.specular_texture),
+                    diffuse_texture: None,
+                    specular_texture: None,
+                    ..p
+                })
+            }
+            &Material::TintedGlass(g)
+                if g.reflectance_texture.is_some() || g.transmittance_texture.is_some() =>
+            {
+                Material::TintedGlass(TintedGlass {
+                    specular_reflectance: g.specular_reflectance * factor(g.reflectance_texture),
+                    specular_transmittance: g.specular_transmittance
+                        * factor(g.transmittance_texture),
+                    reflectance_texture: None,
+                    transmittance_texture: None,
+                    ..g
+                })
+            }
             Material::Mask(mask) => Material::Mask(Mask {
                 opacity: Opacity::Uniform(self.opacity(mask.opacity, uv)),
                 nested: Box::new(self.read_at(&mask.nested, uv)),
@@ -182,6 +218,20 @@ impl Scene {
         };
         // Also a NaN becomes 0 (no surface), not a NaN in the path's weight.
         if value >= 0.0 { value.min(1.0) } else { 0.0 }
+    }
+
+    /// The radiance the emitter of shape number `shape` sends from its front side at surface
+    /// parameters `uv`: its radiance times its texture there; black for a shape that does
+    /// not glow.
+    pub fn emitted_at(&self, shape: u32, uv: Vec2) -> Vec3 {
+        match self.surface(shape).emitter {
+            Some(AreaEmitter {
+                radiance,
+                texture: Some(texture),
+            }) => radiance * self.albedo(texture, uv),
+            Some(AreaEmitter { radiance, .. }) => radiance,
+            None => Vec3::ZERO,
+        }
     }
 
     /// The same scene with every lobe's exponent set to `exponent` (smooth materials stay).

@@ -7,6 +7,7 @@ use super::description::EmitterDescription;
 use super::error::SceneError;
 use super::properties::Properties;
 use super::reader::Reader;
+use super::textures::{refuse_texture, take_textures};
 use crate::scene::AreaEmitter;
 
 /// An `<emitter>` is either attached to a shape (area) or stands alone (point, constant).
@@ -18,16 +19,51 @@ pub(super) enum Emitter {
 }
 
 /// Reads an `<emitter>` of type `area`, `point` or `constant`.
-pub(super) fn read_emitter(reader: &mut Reader, node: &Element) -> Result<Emitter, SceneError> {
+pub(super) fn read_emitter<'a>(
+    reader: &mut Reader<'a>,
+    node: &'a Element,
+) -> Result<Emitter, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} emitter"))?;
+    let mut textures = take_textures(reader, &mut properties.objects)?;
+    // Only an area light's radiance may vary over its surface.
+    let radiance_texture = match textures.iter().position(|t| t.name == "radiance") {
+        Some(index) if type_name == "area" => Some(textures.remove(index)),
+        _ => None,
+    };
+    if let Some(texture) = textures.first() {
+        return Err(refuse_texture(
+            reader,
+            &format!("{type_name} emitter"),
+            texture,
+        ));
+    }
     if let Some(object) = properties.objects.first() {
         let tag = object.name();
         return Err(reader.error(object, format!("<{tag}> is not allowed inside <emitter>")));
     }
     let emitter = match type_name.as_str() {
-        "area" => Emitter::Area(AreaEmitter {
-            radiance: emission(reader, node, &mut properties, "radiance", "an area light's")?,
+        "area" => Emitter::Area(match radiance_texture {
+            None => AreaEmitter::uniform(emission(
+                reader,
+                node,
+                &mut properties,
+                "radiance",
+                "an area light's",
+            )?),
+            Some(texture) => {
+                if properties.position_of("radiance").is_some() {
+                    return Err(reader.error(
+                        texture.node,
+                        "the area emitter's radiance is given twice: as a colour and as a \
+                         texture",
+                    ));
+                }
+                AreaEmitter {
+                    radiance: Vec3::ONE,
+                    texture: Some(texture.texture),
+                }
+            }
         }),
         "constant" => Emitter::Standalone(EmitterDescription::Constant {
             radiance: emission(

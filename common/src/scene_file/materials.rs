@@ -11,7 +11,7 @@ use super::textures::{NamedTexture, refuse_texture, take_textures};
 use super::values::parse_float;
 use crate::scene::{
     Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity, Plastic,
-    RoughGlass, check_exponent,
+    RoughGlass, Texture, TintedGlass, check_exponent,
 };
 
 /// Mitsuba's default interior index of refraction of glass, BK7.
@@ -135,14 +135,17 @@ fn read_bsdf_element<'a>(
     }
     let mut properties = Properties::read(reader, node, format!("{type_name} bsdf"))?;
     let mut textures = take_textures(reader, &mut properties.objects)?;
-    let reflectance_texture = match type_name.as_str() {
-        "diffuse" => take_named(&mut textures, "reflectance"),
-        _ => None,
+    let mut texture_of = |name: &str| {
+        texturable_parameters(&type_name)
+            .contains(&name)
+            .then(|| take_named(&mut textures, name))
+            .flatten()
     };
-    let opacity_texture = match type_name.as_str() {
-        "mask" => take_named(&mut textures, "opacity"),
-        _ => None,
-    };
+    let reflectance_texture = texture_of("reflectance");
+    let diffuse_texture = texture_of("diffuse_reflectance");
+    let specular_texture = texture_of("specular_reflectance");
+    let transmittance_texture = texture_of("specular_transmittance");
+    let opacity_texture = texture_of("opacity");
     if let Some(texture) = textures.first() {
         return Err(refuse_texture(
             reader,
@@ -157,11 +160,13 @@ fn read_bsdf_element<'a>(
     }
     let material = match type_name.as_str() {
         "diffuse" => diffuse(reader, &mut properties, reflectance_texture)?,
-        "conductor" => conductor(reader, node, &mut properties, None)?,
-        "dielectric" => Material::Dielectric {
-            int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
-            ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
-        },
+        "conductor" => conductor(reader, node, &mut properties, specular_texture, None)?,
+        "dielectric" => glass(
+            reader,
+            &mut properties,
+            [specular_texture, transmittance_texture],
+            None,
+        )?,
         "thindielectric" => {
             for unrendered in ["specular_reflectance", "specular_transmittance"] {
                 if let Some(position) = properties.position_of(unrendered) {
@@ -179,10 +184,20 @@ fn read_bsdf_element<'a>(
                 ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
             }
         }
-        "plastic" => plastic(reader, &mut properties, None)?,
+        "plastic" => plastic(
+            reader,
+            &mut properties,
+            [diffuse_texture, specular_texture],
+            None,
+        )?,
         "roughplastic" => {
             let microfacet = microfacet(reader, node, &mut properties, Widths::One)?;
-            plastic(reader, &mut properties, Some(microfacet))?
+            plastic(
+                reader,
+                &mut properties,
+                [diffuse_texture, specular_texture],
+                Some(microfacet),
+            )?
         }
         "phong" => {
             let exponent = properties
@@ -205,16 +220,22 @@ fn read_bsdf_element<'a>(
         }
         "roughconductor" => {
             let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
-            conductor(reader, node, &mut properties, Some(microfacet))?
+            conductor(
+                reader,
+                node,
+                &mut properties,
+                specular_texture,
+                Some(microfacet),
+            )?
         }
         "roughdielectric" => {
             let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
-            Material::RoughGlass(RoughGlass {
-                int_ior: ior(reader, &mut properties, "int_ior", BK7_IOR)?,
-                ext_ior: ior(reader, &mut properties, "ext_ior", AIR_IOR)?,
-                exponent: microfacet.lobe_exponent(),
-                stands_in_for: Some(microfacet),
-            })
+            glass(
+                reader,
+                &mut properties,
+                [specular_texture, transmittance_texture],
+                Some(microfacet),
+            )?
         }
         "twosided" => {
             let nested = nested_bsdfs(reader, &properties.objects, node)?;
@@ -265,17 +286,54 @@ fn diffuse(
     properties: &mut Properties,
     texture: Option<NamedTexture>,
 ) -> Result<Material, SceneError> {
-    let colour = properties.rgb(reader, "reflectance")?;
-    match (colour, texture) {
-        (None, Some(texture)) => Ok(Material::TexturedDiffuse {
-            texture: texture.texture,
+    let reflectance = colour_or_texture(
+        reader,
+        properties,
+        "reflectance",
+        Vec3::splat(0.5),
+        texture,
+        "diffuse",
+    )?;
+    Ok(match reflectance {
+        (_, Some(texture)) => Material::TexturedDiffuse {
+            texture,
             two_sided: false,
-        }),
+        },
+        (albedo, None) => Material::diffuse(albedo),
+    })
+}
+
+/// The parameters of a BSDF type that may be textures: each then multiplies the parameter's
+/// colour point by point, read at every hit by `Scene::material_at`.
+fn texturable_parameters(type_name: &str) -> &'static [&'static str] {
+    match type_name {
+        "diffuse" => &["reflectance"],
+        "conductor" | "roughconductor" => &["specular_reflectance"],
+        "plastic" | "roughplastic" => &["diffuse_reflectance", "specular_reflectance"],
+        "dielectric" | "roughdielectric" => &["specular_reflectance", "specular_transmittance"],
+        "mask" => &["opacity"],
+        _ => &[],
+    }
+}
+
+/// A colour parameter that may be a texture: the colour (`default` when absent) and the
+/// texture, which then multiplies a colour of 1; both at once is an error, as in Mitsuba.
+fn colour_or_texture(
+    reader: &Reader,
+    properties: &mut Properties,
+    name: &str,
+    default: Vec3,
+    texture: Option<NamedTexture>,
+    type_name: &str,
+) -> Result<(Vec3, Option<Texture>), SceneError> {
+    let colour = properties.rgb(reader, name)?;
+    match (colour, texture) {
         (Some(_), Some(texture)) => Err(reader.error(
             texture.node,
-            "the diffuse bsdf's reflectance is given twice: as a colour and as a texture",
+            format!("the {type_name} bsdf's {name} is given twice: as a colour and as a texture"),
         )),
-        (colour, None) => Ok(Material::diffuse(colour.unwrap_or(Vec3::splat(0.5)))),
+        (None, Some(texture)) => Ok((Vec3::ONE, Some(texture.texture))),
+        (colour, None) => Ok((colour.unwrap_or(default), None)),
     }
 }
 
@@ -357,6 +415,7 @@ fn conductor(
     reader: &Reader,
     node: &Element,
     properties: &mut Properties,
+    specular_texture: Option<NamedTexture>,
     roughness: Option<Microfacet>,
 ) -> Result<Material, SceneError> {
     let type_name = if roughness.is_some() {
@@ -369,16 +428,21 @@ fn conductor(
             .position_of(name)
             .unwrap_or(reader.position(node))
     };
-    let specular_reflectance = properties
-        .rgb(reader, "specular_reflectance")?
-        .unwrap_or(Vec3::ONE);
+    let (specular_reflectance, specular_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_reflectance",
+        Vec3::ONE,
+        specular_texture,
+        type_name,
+    )?;
     let material = properties
         .string(reader, "material")?
         .unwrap_or_else(|| "none".to_string());
     let eta = properties.rgb(reader, "eta")?;
     let k = properties.rgb(reader, "k")?;
     let (eta, k) = if material == "none" {
-        if roughness.is_none() && eta.is_none() && k.is_none() {
+        if roughness.is_none() && eta.is_none() && k.is_none() && specular_texture.is_none() {
             return Ok(Material::Mirror {
                 reflectance: specular_reflectance,
             });
@@ -418,6 +482,7 @@ fn conductor(
         eta,
         k,
         specular_reflectance,
+        specular_texture,
         two_sided: false,
         roughness,
     }))
@@ -429,21 +494,98 @@ fn conductor(
 fn plastic(
     reader: &Reader,
     properties: &mut Properties,
+    [diffuse_texture, specular_texture]: [Option<NamedTexture>; 2],
     roughness: Option<Microfacet>,
 ) -> Result<Material, SceneError> {
+    let type_name = if roughness.is_some() {
+        "roughplastic"
+    } else {
+        "plastic"
+    };
+    let (diffuse_reflectance, diffuse_texture) = colour_or_texture(
+        reader,
+        properties,
+        "diffuse_reflectance",
+        Vec3::splat(0.5),
+        diffuse_texture,
+        type_name,
+    )?;
+    let (specular_reflectance, specular_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_reflectance",
+        Vec3::ONE,
+        specular_texture,
+        type_name,
+    )?;
     Ok(Material::Plastic(Plastic {
-        diffuse_reflectance: properties
-            .rgb(reader, "diffuse_reflectance")?
-            .unwrap_or(Vec3::splat(0.5)),
-        specular_reflectance: properties
-            .rgb(reader, "specular_reflectance")?
-            .unwrap_or(Vec3::ONE),
+        diffuse_reflectance,
+        specular_reflectance,
+        diffuse_texture,
+        specular_texture,
         int_ior: ior(reader, properties, "int_ior", POLYPROPYLENE_IOR)?,
         ext_ior: ior(reader, properties, "ext_ior", AIR_IOR)?,
         nonlinear: properties.boolean(reader, "nonlinear")?.unwrap_or(false),
         two_sided: false,
         roughness,
     }))
+}
+
+/// A `dielectric` (`roughness` `None`) or `roughdielectric`: plain glass, or, with a
+/// `specular_reflectance` or `specular_transmittance` other than 1 (a colour or a texture), a
+/// [`TintedGlass`]. Rough plain glass is a [`RoughGlass`] whose `cos^n` lobe (chapters 06
+/// and 07) stands in for its roughness.
+fn glass(
+    reader: &Reader,
+    properties: &mut Properties,
+    [reflectance_texture, transmittance_texture]: [Option<NamedTexture>; 2],
+    roughness: Option<Microfacet>,
+) -> Result<Material, SceneError> {
+    let type_name = if roughness.is_some() {
+        "roughdielectric"
+    } else {
+        "dielectric"
+    };
+    let int_ior = ior(reader, properties, "int_ior", BK7_IOR)?;
+    let ext_ior = ior(reader, properties, "ext_ior", AIR_IOR)?;
+    let (specular_reflectance, reflectance_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_reflectance",
+        Vec3::ONE,
+        reflectance_texture,
+        type_name,
+    )?;
+    let (specular_transmittance, transmittance_texture) = colour_or_texture(
+        reader,
+        properties,
+        "specular_transmittance",
+        Vec3::ONE,
+        transmittance_texture,
+        type_name,
+    )?;
+    let tinted = specular_reflectance != Vec3::ONE
+        || specular_transmittance != Vec3::ONE
+        || reflectance_texture.is_some()
+        || transmittance_texture.is_some();
+    Ok(match (tinted, roughness) {
+        (true, roughness) => Material::TintedGlass(TintedGlass {
+            int_ior,
+            ext_ior,
+            specular_reflectance,
+            specular_transmittance,
+            reflectance_texture,
+            transmittance_texture,
+            roughness,
+        }),
+        (false, None) => Material::Dielectric { int_ior, ext_ior },
+        (false, Some(microfacet)) => Material::RoughGlass(RoughGlass {
+            int_ior,
+            ext_ior,
+            exponent: microfacet.lobe_exponent(),
+            stands_in_for: Some(microfacet),
+        }),
+    })
 }
 
 /// Whether a rough BSDF may have two widths: Mitsuba's `roughconductor` and

@@ -219,8 +219,12 @@ pub(super) fn refuse_texture(reader: &Reader, plugin: &str, texture: &NamedTextu
     reader.error(
         texture.node,
         format!(
-            "the {plugin}'s `{}` cannot be a texture yet: the workbook reads textures only as a \
-             diffuse bsdf's reflectance; give a plain <rgb> or <float>",
+            "the {plugin}'s `{}` cannot be a texture yet: the workbook reads textures as a \
+             diffuse bsdf's reflectance, plastic's and roughplastic's diffuse_reflectance and \
+             specular_reflectance, a conductor's and roughconductor's specular_reflectance, \
+             a dielectric's and roughdielectric's specular_reflectance and \
+             specular_transmittance, and an area emitter's radiance; give a plain <rgb> or \
+             <float>",
             texture.name
         ),
     )

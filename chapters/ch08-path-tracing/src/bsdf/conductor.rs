@@ -114,6 +114,7 @@ mod tests {
             eta: Vec3::new(0.14303598, 0.37530708, 1.4420453),
             k: Vec3::new(3.982997, 2.3855565, 1.6033592),
             specular_reflectance: Vec3::ONE,
+            specular_texture: None,
             two_sided: false,
             roughness: None,
         };

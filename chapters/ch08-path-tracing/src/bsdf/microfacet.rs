@@ -29,7 +29,7 @@ use crate::microfacet::{
     RoughPlasticParameters,
 };
 use common::geometry::SurfaceHit;
-use common::scene::{Conductor, Microfacet, Plastic, RoughGlass};
+use common::scene::{Conductor, Microfacet, Plastic, RoughGlass, TintedGlass};
 use glam::{Vec2, Vec3};
 
 /// An orthonormal frame at a hit: `normal` is the local `z`.
@@ -160,6 +160,21 @@ pub fn dielectric(
 ) -> Placed<RoughDielectric> {
     Placed {
         bsdf: RoughDielectric::new(distribution(roughness), glass.int_ior, glass.ext_ior),
+        frame: LocalFrame::around(hit.shading_n),
+    }
+}
+
+/// Mitsuba's `roughdielectric` with factors on its lobes, at `hit`.
+pub fn tinted_dielectric(
+    hit: &SurfaceHit,
+    glass: &TintedGlass,
+    roughness: Microfacet,
+) -> Placed<RoughDielectric> {
+    let mut bsdf = RoughDielectric::new(distribution(roughness), glass.int_ior, glass.ext_ior);
+    bsdf.specular_reflectance = glass.specular_reflectance;
+    bsdf.specular_transmittance = glass.specular_transmittance;
+    Placed {
+        bsdf,
         frame: LocalFrame::around(hit.shading_n),
     }
 }

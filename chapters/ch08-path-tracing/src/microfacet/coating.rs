@@ -20,8 +20,9 @@ use super::fresnel;
 use super::gauss_legendre::nodes_and_weights;
 use common::scene::MicrofacetDistribution;
 use glam::Vec3;
+use std::cell::Cell;
 use std::collections::HashMap;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Mutex, OnceLock};
 
 /// Entries of the transmittance table, Mitsuba's `MI_ROUGH_TRANSMITTANCE_RES`.
 pub const RESOLUTION: usize = 64;
@@ -61,10 +62,20 @@ impl Coating {
     /// The coating of `distribution` over `eta`, tabulated once per process for each
     /// roughness and index: a Beckmann table takes about a second in a debug build, and a
     /// scene's plastics often share one.
-    pub fn shared(distribution: &NormalDistribution, eta: f32) -> Arc<Self> {
+    ///
+    /// A rough plastic is made at every hit (its base's albedo may be a texture read there),
+    /// so this is asked millions of times a second by every thread. Each thread remembers the
+    /// last table it was given, and asks the shared map behind a lock only when the
+    /// roughness or the index changes. The tables live as long as the process (a few hundred
+    /// bytes for each roughness and index it meets), so a plastic borrows its table and no
+    /// count is kept: a lookup that hits the thread's table touches nothing shared.
+    pub fn shared(distribution: &NormalDistribution, eta: f32) -> &'static Self {
         // The distribution by number: the scene model's enum is not `Hash`.
         type Key = (u8, u32, u32, u32);
-        static TABLES: OnceLock<Mutex<HashMap<Key, Arc<Coating>>>> = OnceLock::new();
+        static TABLES: OnceLock<Mutex<HashMap<Key, &'static Coating>>> = OnceLock::new();
+        thread_local! {
+            static LAST: Cell<Option<(Key, &'static Coating)>> = const { Cell::new(None) };
+        }
         let kind = match distribution.kind {
             MicrofacetDistribution::Beckmann => 0,
             MicrofacetDistribution::Ggx => 1,
@@ -75,19 +86,29 @@ impl Coating {
             distribution.alpha_v.to_bits(),
             eta.to_bits(),
         );
-        let tables = TABLES.get_or_init(Default::default);
-        if let Some(table) = tables.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
-            return Arc::clone(table);
+        if let Some((last_key, table)) = LAST.get()
+            && last_key == key
+        {
+            return table;
         }
-        // Tabulated outside the lock, so that other threads' lookups do not wait; two
-        // threads may both tabulate the same coating once, with the same result.
-        let table = Arc::new(Self::new(distribution, eta));
-        tables
+        let tables = TABLES.get_or_init(Default::default);
+        let known = tables
             .lock()
             .unwrap_or_else(|e| e.into_inner())
-            .entry(key)
-            .or_insert(table)
-            .clone()
+            .get(&key)
+            .copied();
+        let table = known.unwrap_or_else(|| {
+            // Tabulated outside the lock, so that other threads' lookups do not wait; two
+            // threads may both tabulate the same coating once, and one copy is then unused.
+            let table: &'static Coating = Box::leak(Box::new(Self::new(distribution, eta)));
+            *tables
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .entry(key)
+                .or_insert(table)
+        });
+        LAST.set(Some((key, table)));
+        table
     }
 
     /// `T(cos θ)`, interpolated linearly between the entries (`cos θ` in `[0, 1]`).
@@ -211,10 +232,16 @@ mod tests {
             assert!((0.0..1.0).contains(&coating.internal_reflectance));
             let d = NormalDistribution::isotropic(kind, 0.5);
             assert_eq!(*Coating::shared(&d, 1.5), coating);
-            assert!(Arc::ptr_eq(
-                &Coating::shared(&d, 1.5),
-                &Coating::shared(&d, 1.5)
-            ));
+            // One table per roughness and index, whichever thread asks and whatever was
+            // asked in between.
+            let first = Coating::shared(&d, 1.5);
+            assert!(std::ptr::eq(first, Coating::shared(&d, 1.5)));
+            let other = Coating::shared(&d, 1.3);
+            assert!(!std::ptr::eq(first, other));
+            assert!(std::ptr::eq(first, Coating::shared(&d, 1.5)));
+            let elsewhere =
+                std::thread::scope(|s| s.spawn(|| Coating::shared(&d, 1.5)).join().unwrap());
+            assert!(std::ptr::eq(first, elsewhere));
             // Out-of-range cosines never read past the table.
             assert!(coating.transmittance(1.5).is_finite());
             assert!(coating.transmittance(-0.5).is_finite());

@@ -23,7 +23,6 @@ use ch02_monte_carlo::warps::cosine::{cosine_hemisphere_pdf, sample_cosine_hemis
 use common::scene::MicrofacetDistribution;
 use glam::{Vec2, Vec3};
 use std::f32::consts::FRAC_1_PI;
-use std::sync::Arc;
 
 /// A rough plastic with its coating tabulated.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,7 +32,7 @@ pub struct RoughPlastic {
     diffuse_reflectance: Vec3,
     specular_reflectance: Vec3,
     nonlinear: bool,
-    coating: Arc<Coating>,
+    coating: &'static Coating,
     specular_sampling_weight: f32,
 }
 
@@ -75,7 +74,7 @@ impl RoughPlastic {
 
     /// The coating's tables.
     pub fn coating(&self) -> &Coating {
-        &self.coating
+        self.coating
     }
 
     // ANCHOR: rough_plastic_eval

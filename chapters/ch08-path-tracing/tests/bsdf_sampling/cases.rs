@@ -175,6 +175,8 @@ fn plastic_case(alpha: f32, two_sided: bool, chart: f32, wo: Vec3, name: &str) -
     let material = Material::Plastic(Plastic {
         diffuse_reflectance: Vec3::new(0.2, 0.5, 0.8),
         specular_reflectance: Vec3::ONE,
+        diffuse_texture: None,
+        specular_texture: None,
         int_ior: 1.49,
         ext_ior: 1.0,
         nonlinear: false,
@@ -209,6 +211,7 @@ fn metal_case(roughness: Microfacet, two_sided: bool, chart: f32, wo: Vec3, name
         eta: Vec3::new(0.2, 0.9, 1.1),
         k: Vec3::new(3.9, 2.4, 2.1),
         specular_reflectance: Vec3::ONE,
+        specular_texture: None,
         two_sided,
         roughness: Some(roughness),
     });

@@ -184,6 +184,8 @@ fn plastic_has_mitsubas_defaults_and_reads_every_parameter() {
         Ok(Material::Plastic(Plastic {
             diffuse_reflectance: Vec3::splat(0.5),
             specular_reflectance: Vec3::ONE,
+            diffuse_texture: None,
+            specular_texture: None,
             int_ior: 1.49,
             ext_ior: 1.000277,
             nonlinear: false,

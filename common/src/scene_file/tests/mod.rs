@@ -10,6 +10,7 @@ mod mesh_files;
 mod mesh_scenes;
 mod model;
 mod never_panics;
+mod parameter_textures;
 mod spectra;
 mod textures;
 mod transforms;

@@ -211,7 +211,8 @@ fn reference<W: World>(
         | Material::Conductor(_)
         | Material::ThinDielectric { .. }
         | Material::Plastic(_)
-        | Material::Mask(_) => Vec3::ZERO,
+        | Material::Mask(_)
+        | Material::TintedGlass(_) => Vec3::ZERO,
     }
 }
 
