@@ -82,6 +82,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "textures beyond a diffuse reflectance: a bitmap as a rough plastic's base, a checkerboard as a smooth plastic's base and as a factor on rough gold's reflection, the bitmap again as a mirror's reflectance, smooth and rough glass with factors on their reflection and transmission (one a checkerboard), and two lights whose radiance is a checkerboard (a wall seen directly, the main light above), read where rays hit them and where light samples land on them",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "rough-textured",
+            checks: "roughness as a texture: a GGX gold floor whose alpha is a checkerboard of 0.1 and 0.35, a Beckmann glass sphere whose alpha is a checkerboard of 0.05 and 0.4; each width read as Mitsuba reads one number from a texture",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

@@ -14,12 +14,13 @@ use support::render_tiny;
 /// feature of the subset (motion, lenses, lobes, area and point lights) is the path tracer's.
 const REFUSED: &[(&str, &str)] = &[];
 
-/// Every `.xml` file under `chapters/*/scenes/`, at any depth, sorted.
+/// Every `.xml` file under `chapters/*/scenes/`, at any depth outside `parts/` folders, sorted.
 fn scene_files() -> Vec<PathBuf> {
     fn walk(dir: &Path, files: &mut Vec<PathBuf>) {
         for entry in std::fs::read_dir(dir).unwrap() {
             let path = entry.unwrap().path();
-            if path.is_dir() {
+            // `parts/` holds pieces that other scene files include, not scenes of their own.
+            if path.is_dir() && !path.ends_with("parts") {
                 walk(&path, files);
             } else if path.extension().is_some_and(|e| e == "xml") {
                 files.push(path);

@@ -224,6 +224,21 @@ pub struct Microfacet {
     pub alpha_u: f32,
     /// The width across it, along the bitangent (Mitsuba's `alpha_v`).
     pub alpha_v: f32,
+    /// Widths that vary over the surface, when a scene file gives `alpha`, `alpha_u` or
+    /// `alpha_v` as a texture; [`Scene::material_at`](super::Scene::material_at) reads them
+    /// at a hit into `alpha_u` and `alpha_v`, and chapters before 08 refuse them.
+    pub alpha_texture: Option<AlphaTexture>,
+}
+
+/// A rough surface's widths as textures, each read as Mitsuba reads one number from a
+/// texture ([`Scene::texture_value`](super::Scene::texture_value)); a width without a texture
+/// keeps its number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AlphaTexture {
+    /// The width along the tangent.
+    pub u: Option<Texture>,
+    /// The width across it.
+    pub v: Option<Texture>,
 }
 
 /// Mitsuba 3's two microfacet distributions.
@@ -242,6 +257,7 @@ impl Microfacet {
             distribution,
             alpha_u: alpha,
             alpha_v: alpha,
+            alpha_texture: None,
         }
     }
 
@@ -383,6 +399,16 @@ impl Material {
                 Some("glass's specular_transmittance")
             }
             Material::Mask(mask) => mask.nested.textured_beyond_albedo(),
+            Material::Conductor(Conductor {
+                roughness: Some(m), ..
+            })
+            | Material::RoughGlass(RoughGlass {
+                stands_in_for: Some(m),
+                ..
+            })
+            | Material::TintedGlass(TintedGlass {
+                roughness: Some(m), ..
+            }) if m.alpha_texture.is_some() => Some("a rough bsdf's alpha"),
             _ => None,
         }
     }

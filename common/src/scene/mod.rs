@@ -31,8 +31,8 @@ pub use camera::{Camera, CameraFrame, CameraModel};
 pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
-    Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity, Plastic,
-    RoughGlass, TintedGlass, check_exponent,
+    AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
+    Plastic, RoughGlass, TintedGlass, check_exponent,
 };
 pub use settings::{
     DirectSamples, FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition,
@@ -44,6 +44,9 @@ use glam::{Mat4, Vec2, Vec3};
 
 /// The luminance of a linear sRGB colour, with the weights Mitsuba 3 uses (`luminance()`).
 const LUMINANCE: Vec3 = Vec3::new(0.212671, 0.715160, 0.072169);
+
+/// The smallest microfacet width Mitsuba 3 uses: a textured width below it is raised to it.
+const MICROFACET_MIN_ALPHA: f32 = 1e-4;
 
 /// The recursion limit used for Mitsuba's "unlimited" `max_depth` (-1): mirrors facing each
 /// other would otherwise recurse without end.
@@ -156,11 +159,23 @@ impl Scene {
                 albedo: self.albedo(texture, uv),
                 two_sided,
             },
-            &Material::Conductor(c) if c.specular_texture.is_some() => {
+            &Material::Conductor(c)
+                if c.specular_texture.is_some()
+                    || c.roughness.is_some_and(|m| m.alpha_texture.is_some()) =>
+            {
                 Material::Conductor(Conductor {
                     specular_reflectance: c.specular_reflectance * factor(c.specular_texture),
                     specular_texture: None,
+                    roughness: c.roughness.map(|m| self.microfacet_at(m, uv)),
                     ..c
+                })
+            }
+            &Material::RoughGlass(g)
+                if g.stands_in_for.is_some_and(|m| m.alpha_texture.is_some()) =>
+            {
+                Material::RoughGlass(RoughGlass {
+                    stands_in_for: g.stands_in_for.map(|m| self.microfacet_at(m, uv)),
+                    ..g
                 })
             }
             &Material::Plastic(p)
@@ -175,9 +190,12 @@ impl Scene {
                 })
             }
             &Material::TintedGlass(g)
-                if g.reflectance_texture.is_some() || g.transmittance_texture.is_some() =>
+                if g.reflectance_texture.is_some()
+                    || g.transmittance_texture.is_some()
+                    || g.roughness.is_some_and(|m| m.alpha_texture.is_some()) =>
             {
                 Material::TintedGlass(TintedGlass {
+                    roughness: g.roughness.map(|m| self.microfacet_at(m, uv)),
                     specular_reflectance: g.specular_reflectance * factor(g.reflectance_texture),
                     specular_transmittance: g.specular_transmittance
                         * factor(g.transmittance_texture),
@@ -204,7 +222,22 @@ impl Scene {
     pub fn opacity(&self, opacity: Opacity, uv: Vec2) -> f32 {
         let value = match opacity {
             Opacity::Uniform(value) => value,
-            Opacity::Texture(Texture::Checkerboard(squares)) => {
+            Opacity::Texture(texture) => self.texture_value(texture, uv),
+        };
+        // Also a NaN becomes 0 (no surface), not a NaN in the path's weight.
+        if value >= 0.0 { value.min(1.0) } else { 0.0 }
+    }
+
+    /// The one number `texture` holds at `uv`, read as Mitsuba 3 reads a texture for a single
+    /// value (`eval_1`: a mask's opacity, a rough surface's width): a checkerboard's colour
+    /// by its mean, an image's by its luminance.
+    ///
+    /// Mitsuba's checkerboard puts its colours the other way round when read for one value:
+    /// `color0` where the fractional parts of `u` and `v` are on *different* sides of 1/2,
+    /// the squares its colour reading gives `color1`. This follows it.
+    pub fn texture_value(&self, texture: Texture, uv: Vec2) -> f32 {
+        match texture {
+            Texture::Checkerboard(squares) => {
                 let swapped = Checkerboard {
                     colour0: squares.colour1,
                     colour1: squares.colour0,
@@ -212,12 +245,27 @@ impl Scene {
                 };
                 swapped.eval(uv).element_sum() / 3.0
             }
-            Opacity::Texture(texture @ Texture::Bitmap(_)) => {
-                self.albedo(texture, uv).dot(LUMINANCE)
-            }
+            Texture::Bitmap(_) => self.albedo(texture, uv).dot(LUMINANCE),
+        }
+    }
+
+    /// `microfacet` with its textured widths read at `uv`, each at least `10⁻⁴` as Mitsuba
+    /// keeps them (a width of 0 is a mirror no microfacet model describes).
+    fn microfacet_at(&self, microfacet: Microfacet, uv: Vec2) -> Microfacet {
+        let Some(textures) = microfacet.alpha_texture else {
+            return microfacet;
         };
-        // Also a NaN becomes 0 (no surface), not a NaN in the path's weight.
-        if value >= 0.0 { value.min(1.0) } else { 0.0 }
+        let width = |texture: Option<Texture>, number: f32| {
+            let alpha = texture.map_or(number, |t| self.texture_value(t, uv));
+            // `max` also turns a NaN into the smallest width.
+            alpha.max(MICROFACET_MIN_ALPHA)
+        };
+        Microfacet {
+            alpha_u: width(textures.u, microfacet.alpha_u),
+            alpha_v: width(textures.v, microfacet.alpha_v),
+            alpha_texture: None,
+            ..microfacet
+        }
     }
 
     /// The radiance the emitter of shape number `shape` sends from its front side at surface

@@ -10,8 +10,8 @@ use super::reader::Reader;
 use super::textures::{NamedTexture, refuse_texture, take_textures};
 use super::values::parse_float;
 use crate::scene::{
-    Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity, Plastic,
-    RoughGlass, Texture, TintedGlass, check_exponent,
+    AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
+    Plastic, RoughGlass, Texture, TintedGlass, check_exponent,
 };
 
 /// Mitsuba's default interior index of refraction of glass, BK7.
@@ -146,6 +146,7 @@ fn read_bsdf_element<'a>(
     let specular_texture = texture_of("specular_reflectance");
     let transmittance_texture = texture_of("specular_transmittance");
     let opacity_texture = texture_of("opacity");
+    let width_textures = ["alpha", "alpha_u", "alpha_v"].map(&mut texture_of);
     if let Some(texture) = textures.first() {
         return Err(refuse_texture(
             reader,
@@ -191,7 +192,8 @@ fn read_bsdf_element<'a>(
             None,
         )?,
         "roughplastic" => {
-            let microfacet = microfacet(reader, node, &mut properties, Widths::One)?;
+            let microfacet =
+                microfacet(reader, node, &mut properties, Widths::One, width_textures)?;
             plastic(
                 reader,
                 &mut properties,
@@ -219,7 +221,13 @@ fn read_bsdf_element<'a>(
             })
         }
         "roughconductor" => {
-            let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
+            let microfacet = microfacet(
+                reader,
+                node,
+                &mut properties,
+                Widths::OneOrTwo,
+                width_textures,
+            )?;
             conductor(
                 reader,
                 node,
@@ -229,7 +237,13 @@ fn read_bsdf_element<'a>(
             )?
         }
         "roughdielectric" => {
-            let microfacet = microfacet(reader, node, &mut properties, Widths::OneOrTwo)?;
+            let microfacet = microfacet(
+                reader,
+                node,
+                &mut properties,
+                Widths::OneOrTwo,
+                width_textures,
+            )?;
             glass(
                 reader,
                 &mut properties,
@@ -308,9 +322,17 @@ fn diffuse(
 fn texturable_parameters(type_name: &str) -> &'static [&'static str] {
     match type_name {
         "diffuse" => &["reflectance"],
-        "conductor" | "roughconductor" => &["specular_reflectance"],
+        "conductor" => &["specular_reflectance"],
+        "roughconductor" => &["specular_reflectance", "alpha", "alpha_u", "alpha_v"],
         "plastic" | "roughplastic" => &["diffuse_reflectance", "specular_reflectance"],
-        "dielectric" | "roughdielectric" => &["specular_reflectance", "specular_transmittance"],
+        "dielectric" => &["specular_reflectance", "specular_transmittance"],
+        "roughdielectric" => &[
+            "specular_reflectance",
+            "specular_transmittance",
+            "alpha",
+            "alpha_u",
+            "alpha_v",
+        ],
         "mask" => &["opacity"],
         _ => &[],
     }
@@ -598,12 +620,23 @@ enum Widths {
     One,
 }
 
-/// The `distribution` and the width (`alpha`, or `alpha_u` and `alpha_v`) of a rough BSDF.
+/// One width of a rough BSDF as the file gives it.
+#[derive(Clone, Copy, Debug)]
+enum Width {
+    /// A number, the same everywhere.
+    Number(f32),
+    /// A texture, read at each hit.
+    Texture(Texture),
+}
+
+/// The `distribution` and the width (`alpha`, or `alpha_u` and `alpha_v`, each a number or,
+/// in `textures` in that order, a texture) of a rough BSDF.
 fn microfacet(
     reader: &Reader,
     node: &Element,
     properties: &mut Properties,
     widths: Widths,
+    textures: [Option<NamedTexture>; 3],
 ) -> Result<Microfacet, SceneError> {
     let at = |properties: &Properties, name: &str| {
         properties
@@ -637,9 +670,39 @@ fn microfacet(
             ))
         }
     };
-    let alpha = width(properties, "alpha")?;
-    let alpha_u = width(properties, "alpha_u")?;
-    let alpha_v = width(properties, "alpha_v")?;
+    let [alpha_texture, alpha_u_texture, alpha_v_texture] = textures;
+    let mut width_or_texture =
+        |name: &str, texture: Option<NamedTexture>| -> Result<Option<Width>, SceneError> {
+            match (width(properties, name)?, texture) {
+                (Some(_), Some(texture)) => Err(reader.error(
+                    texture.node,
+                    format!("{name} is given twice: as a number and as a texture"),
+                )),
+                (Some(alpha), None) => Ok(Some(Width::Number(alpha))),
+                (None, Some(texture)) => Ok(Some(Width::Texture(texture.texture))),
+                (None, None) => Ok(None),
+            }
+        };
+    let alpha = width_or_texture("alpha", alpha_texture)?;
+    let alpha_u = width_or_texture("alpha_u", alpha_u_texture)?;
+    let alpha_v = width_or_texture("alpha_v", alpha_v_texture)?;
+    // A textured width keeps a number too, unused, so that the stand-ins of chapters before
+    // 08 (which refuse textured widths) have one.
+    let number = |width: Width| match width {
+        Width::Number(alpha) => alpha,
+        Width::Texture(_) => DEFAULT_ALPHA,
+    };
+    let texture = |width: Width| match width {
+        Width::Number(_) => None,
+        Width::Texture(texture) => Some(texture),
+    };
+    let with_textures = |microfacet: Microfacet, u: Width, v: Width| Microfacet {
+        alpha_texture: (texture(u).is_some() || texture(v).is_some()).then_some(AlphaTexture {
+            u: texture(u),
+            v: texture(v),
+        }),
+        ..microfacet
+    };
     let stretched = alpha_u.is_some() || alpha_v.is_some();
     if stretched && widths == Widths::One {
         let name = if alpha_u.is_some() {
@@ -660,15 +723,24 @@ fn microfacet(
         ));
     }
     match (alpha_u, alpha_v) {
-        (Some(alpha_u), Some(alpha_v)) => Ok(Microfacet {
-            distribution,
-            alpha_u,
-            alpha_v,
-        }),
-        (None, None) => Ok(Microfacet::isotropic(
-            distribution,
-            alpha.unwrap_or(DEFAULT_ALPHA),
+        (Some(u), Some(v)) => Ok(with_textures(
+            Microfacet {
+                distribution,
+                alpha_u: number(u),
+                alpha_v: number(v),
+                alpha_texture: None,
+            },
+            u,
+            v,
         )),
+        (None, None) => {
+            let alpha = alpha.unwrap_or(Width::Number(DEFAULT_ALPHA));
+            Ok(with_textures(
+                Microfacet::isotropic(distribution, number(alpha)),
+                alpha,
+                alpha,
+            ))
+        }
         (Some(_), None) | (None, Some(_)) => {
             let given = if alpha_u.is_some() {
                 "alpha_u"

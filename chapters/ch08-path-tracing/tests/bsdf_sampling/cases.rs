@@ -269,6 +269,7 @@ pub fn microfacet() -> [Case; MICROFACET] {
         distribution: MicrofacetDistribution::Beckmann,
         alpha_u: 0.05,
         alpha_v: 0.3,
+        alpha_texture: None,
     };
     [
         metal_case(stretched, false, 8.0, at(50.0, true), "50°"),

@@ -196,9 +196,9 @@ fn what_cannot_be_a_texture_or_is_given_twice_is_refused() {
             "dielectric bsdf's specular_transmittance is given twice",
         ),
         (
-            r#"<bsdf type="roughdielectric">TEXTURE</bsdf>"#,
-            "alpha_u",
-            "roughdielectric bsdf's `alpha_u` cannot be a texture yet",
+            r#"<bsdf type="roughplastic">TEXTURE</bsdf>"#,
+            "alpha",
+            "roughplastic bsdf's `alpha` cannot be a texture yet",
         ),
         (
             r#"<emitter type="area"><rgb name="radiance" value="2"/>TEXTURE</emitter>"#,
@@ -316,4 +316,83 @@ fn glass_with_factors_or_textures_on_its_lobes_is_tinted_glass() {
         (Vec3::ONE, Vec3::Z)
     );
     assert_eq!(right.transmittance_texture, None);
+}
+
+/// The microfacet roughness of the first shape's material at `uv`, as chapter 08 reads it.
+fn roughness_at(scene: &Scene, uv: Vec2) -> crate::scene::Microfacet {
+    match scene.material_at(0, uv) {
+        Material::Conductor(Conductor {
+            roughness: Some(m), ..
+        }) => m,
+        Material::RoughGlass(g) => g.stands_in_for.unwrap(),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn rough_metals_and_glass_take_their_widths_from_textures() {
+    // A checkerboard read for one number swaps its colours, as Mitsuba's does: color1 where
+    // the fractional parts of u and v are on the same side of 1/2.
+    let board = r#"<float name="color0" value="0.05"/><float name="color1" value="0.3"/>"#;
+    for type_name in ["roughconductor", "roughdielectric"] {
+        let scene = one_shape(&format!(
+            r#"<bsdf type="{type_name}"><texture type="checkerboard" name="alpha">{board}</texture></bsdf>"#
+        ));
+        let (same_side, other_side) = (roughness_at(&scene, LEFT), roughness_at(&scene, RIGHT));
+        assert!(
+            (same_side.alpha_u - 0.3).abs() < 1e-6,
+            "{type_name}: {same_side:?}"
+        );
+        assert!(
+            (other_side.alpha_u - 0.05).abs() < 1e-6,
+            "{type_name}: {other_side:?}"
+        );
+        assert_eq!(
+            same_side.alpha_u, same_side.alpha_v,
+            "alpha sets both widths"
+        );
+        assert!(
+            same_side.alpha_texture.is_none(),
+            "read at the hit, none is left"
+        );
+        // Chapter 07's lobes cannot vary over a surface: refused, naming chapter 08.
+        let refusal = Capabilities {
+            chapter: Chapter::SOFT_SHADOWS,
+            approximates: &[],
+        }
+        .check(&scene)
+        .unwrap_err();
+        assert!(
+            refusal.contains("alpha") && refusal.contains("chapter 08"),
+            "{refusal}"
+        );
+    }
+    // One width a texture, the other a number; a width of 0 rises to Mitsuba's 1e-4.
+    let scene = one_shape(
+        r#"<bsdf type="roughconductor"><float name="alpha_u" value="0.2"/>
+             <texture type="checkerboard" name="alpha_v"><float name="color0" value="0"/>
+               <float name="color1" value="0"/></texture></bsdf>"#,
+    );
+    let m = roughness_at(&scene, LEFT);
+    assert_eq!((m.alpha_u, m.alpha_v), (0.2, 1e-4));
+    // What Mitsuba refuses, or what the workbook does not read, in words.
+    for (bsdf, says) in [
+        (
+            r#"<bsdf type="roughconductor"><float name="alpha" value="0.2"/>
+                 <texture type="checkerboard" name="alpha"/></bsdf>"#,
+            "alpha is given twice: as a number and as a texture",
+        ),
+        (
+            r#"<bsdf type="roughplastic"><texture type="checkerboard" name="alpha"/></bsdf>"#,
+            "alpha",
+        ),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let error = scene_in(
+            dir.path(),
+            &format!(r#"<shape type="rectangle">{bsdf}</shape>"#),
+        )
+        .unwrap_err();
+        assert!(error.contains(says), "{bsdf}: {error}");
+    }
 }
