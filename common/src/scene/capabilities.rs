@@ -98,6 +98,8 @@ pub enum Feature {
     IndirectLight,
     /// The environment lighting matte surfaces (not only seen directly or in mirrors).
     EnvironmentLight,
+    /// Light from an image around the scene (Mitsuba's `envmap`).
+    EnvironmentMap,
     /// Emitters hidden from camera rays (Mitsuba's `hide_emitters`).
     HiddenEmitters,
     /// A metal whose reflectance changes with the angle (a complex index of refraction);
@@ -134,6 +136,7 @@ impl Feature {
             Feature::AreaLight => Some(Chapter::SOFT_SHADOWS),
             Feature::IndirectLight
             | Feature::EnvironmentLight
+            | Feature::EnvironmentMap
             | Feature::HiddenEmitters
             | Feature::MetalFresnel
             | Feature::ThinDielectric
@@ -155,6 +158,7 @@ impl Feature {
             Feature::MovingAreaLight => "an area light that moves",
             Feature::IndirectLight => "indirect light",
             Feature::EnvironmentLight => "an environment",
+            Feature::EnvironmentMap => "an environment map (envmap)",
             Feature::HiddenEmitters => "emitters hidden from the camera",
             Feature::MetalFresnel => "a metal",
             Feature::ThinDielectric => "a thin pane of glass (thindielectric)",
@@ -175,6 +179,7 @@ impl Feature {
             Feature::MovingAreaLight => "no chapter samples lights that move",
             Feature::IndirectLight => "indirect light comes",
             Feature::EnvironmentLight => "the environment lights matte surfaces",
+            Feature::EnvironmentMap => "light from an image around the scene comes",
             Feature::HiddenEmitters => "the integrator's hide_emitters comes",
             Feature::MetalFresnel => "metals' reflectance by angle comes",
             Feature::ThinDielectric | Feature::Plastic => {
@@ -427,7 +432,15 @@ impl Scene {
                 String::new(),
             );
         }
+        if self.environment_map.is_some() {
+            add(
+                Feature::EnvironmentMap,
+                self.origins.environment_map.clone(),
+                String::new(),
+            );
+        }
         let something_glows = self.environment != glam::Vec3::ZERO
+            || self.environment_map.is_some()
             || self
                 .surfaces
                 .iter()

@@ -21,7 +21,7 @@ use std::f32::consts::{PI, TAU};
 use std::sync::Arc;
 
 /// An image of radiance around the scene, infinitely far away.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct EnvironmentMap {
     width: u32,
     height: u32,

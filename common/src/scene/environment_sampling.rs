@@ -24,7 +24,7 @@ pub fn luminance(rgb: Vec3) -> f32 {
 }
 
 /// A piecewise-constant density over the cells of an environment map.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct EnvironmentSampling {
     /// Cells around the circle (the map's width).
     columns: usize,
