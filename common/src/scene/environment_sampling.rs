@@ -4,16 +4,20 @@
 //! ([`EnvironmentMap`](super::EnvironmentMap)): between neighbouring pixel centres around the
 //! circle, and between neighbouring rows from pole to pole. A cell is chosen with a chance
 //! proportional to its **power**, the mean luminance of its four corner pixels times its
-//! **solid angle** `Δφ (cos θ₀ - cos θ₁)`, and a direction is then drawn uniformly by solid
-//! angle inside it (uniform in `φ` and in `cos θ`). So the density per unit solid angle is the
-//! cell's mean luminance over the whole map's: constant in a cell, proportional to the sky's
-//! brightness, finite at the poles, and never zero where the lookup gives light.
+//! **solid angle** `Δφ (cos θ₀ - cos θ₁)`; inside it, a point `(x, y)` of the unit square is
+//! drawn with a density proportional to the corners' luminance interpolated bilinearly, and
+//! becomes the direction of azimuth `φ₀ + x Δφ` and height `cos θ₀ + y (cos θ₁ - cos θ₀)`.
+//! The square is uniform by solid angle (uniform in `φ` and in `cos θ`), so the density per
+//! unit solid angle is the interpolated luminance over the whole map's: close to
+//! proportional to the light the lookup gives (which interpolates in `θ`, not `cos θ`),
+//! finite at the poles, and never zero where the lookup gives light. A single bright pixel,
+//! a sun, is thus sampled nearly as its light falls off, as Mitsuba 3's bilinear warp does;
+//! a density constant over each cell would put four times too many samples at its edges.
 //!
 //! The solid angle is the `sin θ` of pbrt's and Mitsuba's constructions, integrated over the
 //! cell: without it the thin cells near the poles would be chosen as often as the wide ones
 //! at the horizon, and the estimate would be noisier there (still unbiased: the density below
-//! is the one samples are drawn with). Mitsuba 3 builds a bilinear density over the same
-//! grid; ours is constant per cell, which is simpler and equally unbiased.
+//! is the one samples are drawn with).
 
 use super::environment_map::{direction_of, direction_to_uv};
 use glam::{Vec2, Vec3};
@@ -30,8 +34,10 @@ pub struct EnvironmentSampling {
     columns: usize,
     /// Cells from pole to pole (the map's height minus one, at least one).
     rows: usize,
-    /// Each cell's mean corner luminance, row by row from the north pole.
-    cell_luminance: Vec<f32>,
+    /// Each pixel's luminance (of its channels' sizes), row by row from the top.
+    pixel_luminance: Vec<f32>,
+    /// The map's height in pixels.
+    height: usize,
     /// `cos θ` at the rows' edges, from 1 (north) down to -1 (south): `rows + 1` values.
     cos_edges: Vec<f64>,
     /// The chance of each row and those before it: `rows + 1` values from 0 to 1.
@@ -57,11 +63,10 @@ impl EnvironmentSampling {
         let cos_edges: Vec<f64> = (0..=rows)
             .map(|j| (std::f64::consts::PI * j as f64 / rows as f64).cos())
             .collect();
-        let pixel_luminance = |row: usize, column: usize| {
-            let row = row.min(height - 1);
-            f64::from(luminance(pixels[row * width + column % width].abs()))
-        };
-        let mut cell_luminance = Vec::with_capacity(rows * columns);
+        let pixel_luminance: Vec<f32> = pixels[..width * height]
+            .iter()
+            .map(|p| luminance(p.abs()))
+            .collect();
         let mut column_cdf = Vec::with_capacity(rows * (columns + 1));
         let mut row_power = Vec::with_capacity(rows);
         let cell_angle = std::f64::consts::TAU / columns as f64;
@@ -69,12 +74,8 @@ impl EnvironmentSampling {
             let solid_angle = cell_angle * (cos_edges[j] - cos_edges[j + 1]).max(0.0);
             let mut running = vec![0.0];
             for i in 0..columns {
-                let corners = pixel_luminance(j, i)
-                    + pixel_luminance(j, i + 1)
-                    + pixel_luminance(j + 1, i)
-                    + pixel_luminance(j + 1, i + 1);
-                let mean = corners / 4.0;
-                cell_luminance.push(mean as f32);
+                let corners = corners_of(&pixel_luminance, width, height, j, i);
+                let mean = corners.iter().map(|&c| f64::from(c)).sum::<f64>() / 4.0;
                 running.push(running[i] + mean * solid_angle);
             }
             row_power.push(running[columns]);
@@ -89,7 +90,8 @@ impl EnvironmentSampling {
         Self {
             columns,
             rows,
-            cell_luminance,
+            pixel_luminance,
+            height,
             cos_edges,
             row_cdf: normalised(row_cdf),
             column_cdf,
@@ -112,13 +114,15 @@ impl EnvironmentSampling {
         let (row, fy) = pick(&self.row_cdf, f64::from(u.y))?;
         let cdf = &self.column_cdf[row * (self.columns + 1)..(row + 1) * (self.columns + 1)];
         let (column, fx) = pick(cdf, f64::from(u.x))?;
-        // Uniform in φ across the cell (which starts at pixel centre `column`), uniform in
-        // cos θ between the row's edges: uniform by solid angle.
-        let u_map = (column as f64 + 0.5 + fx) / self.columns as f64;
+        // Where in the cell, by its corners' light; the cell starts at pixel centre `column`
+        // in φ and at the row's upper edge in cos θ.
+        let corners = self.corners(row, column);
+        let (x, y) = sample_bilinear(fx, fy, corners);
+        let u_map = (column as f64 + 0.5 + x) / self.columns as f64;
         let (top, bottom) = (self.cos_edges[row], self.cos_edges[row + 1]);
-        let cos_theta = top + fy * (bottom - top);
+        let cos_theta = top + y * (bottom - top);
         let direction = direction_of(u_map as f32, cos_theta as f32);
-        let pdf = self.cell_pdf(row, column);
+        let pdf = self.density(corners, x, y);
         (pdf > 0.0 && pdf.is_finite()).then_some((direction, pdf))
     }
 
@@ -133,18 +137,69 @@ impl EnvironmentSampling {
         if !uv.is_finite() || !cos_theta.is_finite() {
             return 0.0;
         }
-        let x = (uv.x - uv.x.floor()) * self.columns as f32 - 0.5;
-        let column = (x.floor().rem_euclid(self.columns as f32) as usize).min(self.columns - 1);
+        let x = f64::from((uv.x - uv.x.floor()) * self.columns as f32) - 0.5;
+        let column = (x.floor().rem_euclid(self.columns as f64) as usize).min(self.columns - 1);
+        let x = (x - x.floor()).clamp(0.0, 1.0);
         // The row whose edges hold cos θ, found as the sample placed it: by cos θ.
         let row = self.cos_edges[1..self.rows].partition_point(|&edge| edge > cos_theta);
-        self.cell_pdf(row, column)
+        let (top, bottom) = (self.cos_edges[row], self.cos_edges[row + 1]);
+        let y = if top > bottom {
+            ((top - cos_theta) / (top - bottom)).clamp(0.0, 1.0)
+        } else {
+            0.5
+        };
+        self.density(self.corners(row, column), x, y)
     }
 
-    /// The density per unit solid angle inside cell (`row`, `column`).
-    fn cell_pdf(&self, row: usize, column: usize) -> f32 {
-        let mean = f64::from(self.cell_luminance[row * self.columns + column]);
-        (mean / self.integral) as f32
+    /// The luminance at the corners of cell (`row`, `column`): upper left, upper right,
+    /// lower left, lower right.
+    fn corners(&self, row: usize, column: usize) -> [f32; 4] {
+        corners_of(&self.pixel_luminance, self.columns, self.height, row, column)
     }
+
+    /// The density per unit solid angle at `(x, y)` of the cell with luminance `corners`.
+    fn density(&self, corners: [f32; 4], x: f64, y: f64) -> f32 {
+        (bilinear(corners, x, y) / self.integral) as f32
+    }
+}
+
+/// The luminance at the corners of cell (`row`, `column`) of a `width` x `height` map:
+/// pixels `column` and the next one around the circle, in rows `row` and the next one (the
+/// same row again in a map of one row).
+fn corners_of(luminance: &[f32], width: usize, height: usize, row: usize, column: usize) -> [f32; 4] {
+    let at = |r: usize, c: usize| luminance[r.min(height - 1) * width + c % width];
+    [
+        at(row, column),
+        at(row, column + 1),
+        at(row + 1, column),
+        at(row + 1, column + 1),
+    ]
+}
+
+/// `corners` (upper left, upper right, lower left, lower right) interpolated at `(x, y)`.
+fn bilinear(corners: [f32; 4], x: f64, y: f64) -> f64 {
+    let [a, b, c, d] = corners.map(f64::from);
+    (1.0 - y) * ((1.0 - x) * a + x * b) + y * ((1.0 - x) * c + x * d)
+}
+
+/// A point of `[0, 1]` drawn with `u` with a density proportional to the line from `a` at 0
+/// to `b` at 1 (both not negative), by inverting its distribution in the form that does not
+/// cancel when `a` and `b` are close.
+fn sample_linear(u: f64, a: f64, b: f64) -> f64 {
+    if a + b <= 0.0 {
+        return u;
+    }
+    let x = u * (a + b) / (a + ((1.0 - u) * a * a + u * b * b).sqrt());
+    x.clamp(0.0, 1.0)
+}
+
+/// A point of the unit square drawn with `(u, v)` with a density proportional to `corners`
+/// interpolated bilinearly: `y` by its marginal (a line), then `x` given `y` (a line).
+fn sample_bilinear(u: f64, v: f64, corners: [f32; 4]) -> (f64, f64) {
+    let [a, b, c, d] = corners.map(f64::from);
+    let y = sample_linear(v, a + b, c + d);
+    let x = sample_linear(u, (1.0 - y) * a + y * c, (1.0 - y) * b + y * d);
+    (x, y)
 }
 
 /// `running` sums divided by the last, so they end at exactly 1 (all 0 if the last is 0).

@@ -176,3 +176,29 @@ fn black_maps_and_extreme_maps_never_give_nan() {
     // A map whose only light is negative still offers samples where it is not zero.
     assert!(negative.sample(Vec2::new(0.5, 0.5)).is_some());
 }
+
+#[test]
+fn near_a_sun_the_density_follows_the_light_inside_each_cell() {
+    // The lookup's light over the density is nearly constant around a one-pixel sun, as with
+    // Mitsuba's bilinear warp: a density constant per cell would swing it between 0 and 4.
+    let (pixels, sampling) = map(16, 9, |x, y| {
+        if (x, y) == (5, 4) { Vec3::splat(1e4) } else { Vec3::splat(0.01) }
+    });
+    let map = super::super::EnvironmentMap::new(16, 9, &pixels, 1.0, glam::Mat3::IDENTITY).unwrap();
+    let mut rng = Pcg32::seed_from_u64(5);
+    let mut checked = 0;
+    for _ in 0..200 {
+        // Within a pixel and a half of the sun's centre (u = 5.5 / 16, θ = π / 2).
+        let u = (5.5 + 1.5 * (2.0 * rng.random::<f32>() - 1.0)) / 16.0;
+        let theta = PI as f32 * (0.5 + 0.15 * (2.0 * rng.random::<f32>() - 1.0));
+        let d = direction_of(u, theta.cos());
+        let light = f64::from(luminance(map.radiance(d)));
+        if light < 100.0 {
+            continue; // too far from the sun for it to dominate
+        }
+        let ratio = f64::from(sampling.pdf(d)) * sampling.integral() / light;
+        assert!((0.8..1.25).contains(&ratio), "towards {d}: density / light = {ratio}");
+        checked += 1;
+    }
+    assert!(checked > 50, "{checked}");
+}
