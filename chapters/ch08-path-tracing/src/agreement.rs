@@ -67,6 +67,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "Veach's multiple-importance plates, our own: the direct integrator (one light and one BSDF sample per hit, power heuristic) on four roughplastic plates from alpha 0.02 to 0.25 under four sphere lights of equal power from radius 0.1 to 0.8, hidden from the camera (which then sees through them, as Mitsuba's hide_emitters does)",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "envmap",
+            checks: "an environment map (envmap): a Radiance HDR sky with a small sun, scaled and turned by its to_world, seen directly, in a smooth chromium sphere and a rough gold one, and lighting a matte sphere and floor; its lookup, its light samples and their density in MIS",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };
