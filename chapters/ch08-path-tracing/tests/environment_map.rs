@@ -10,9 +10,9 @@
 
 mod support;
 
+use ch05_motion_blur::MotionScene;
 use ch08_path_tracing::furnace::spheres;
 use ch08_path_tracing::{Method, MisHeuristic, PathOptions};
-use ch05_motion_blur::MotionScene;
 use common::scene::{EnvironmentMap, Material};
 use glam::{Mat3, Vec2, Vec3};
 
@@ -20,7 +20,12 @@ use glam::{Mat3, Vec2, Vec3};
 const CENTRE: Vec2 = Vec2::new(32.5, 24.5);
 
 /// A `width` x `height` map of `colour(x, y)`, turned by `to_world`.
-fn map_of(width: u32, height: u32, to_world: Mat3, colour: impl Fn(u32, u32) -> Vec3) -> EnvironmentMap {
+fn map_of(
+    width: u32,
+    height: u32,
+    to_world: Mat3,
+    colour: impl Fn(u32, u32) -> Vec3,
+) -> EnvironmentMap {
     let mut pixels = Vec::new();
     for y in 0..height {
         for x in 0..width {
@@ -31,7 +36,12 @@ fn map_of(width: u32, height: u32, to_world: Mat3, colour: impl Fn(u32, u32) -> 
 }
 
 /// The furnace's white spheres with `constant` and `map` for environment.
-fn furnace(materials: &[Material], max_depth: u32, constant: Vec3, map: EnvironmentMap) -> MotionScene {
+fn furnace(
+    materials: &[Material],
+    max_depth: u32,
+    constant: Vec3,
+    map: EnvironmentMap,
+) -> MotionScene {
     let mut world = spheres(materials, max_depth);
     world.scene.environment = constant;
     world.scene.environment_map = Some(map);
@@ -55,7 +65,11 @@ fn estimators(max_depth: u32) -> [PathOptions; 4] {
 }
 
 fn pixels() -> [Vec2; 3] {
-    [CENTRE, CENTRE + Vec2::new(-3.0, 5.0), CENTRE + Vec2::new(4.0, -2.0)]
+    [
+        CENTRE,
+        CENTRE + Vec2::new(-3.0, 5.0),
+        CENTRE + Vec2::new(4.0, -2.0),
+    ]
 }
 
 #[test]
@@ -63,9 +77,21 @@ fn a_constant_map_is_the_constant_environment_in_the_furnace() {
     let white = Material::diffuse(Vec3::ONE);
     let turned = Mat3::from_rotation_x(0.7) * Mat3::from_rotation_y(2.0);
     let cases = [
-        ("a map of 1", Vec3::ZERO, map_of(8, 5, Mat3::IDENTITY, |_, _| Vec3::ONE)),
-        ("a turned map of 1", Vec3::ZERO, map_of(7, 4, turned, |_, _| Vec3::ONE)),
-        ("0.25 and a map of 0.75", Vec3::splat(0.25), map_of(6, 3, turned, |_, _| Vec3::splat(0.75))),
+        (
+            "a map of 1",
+            Vec3::ZERO,
+            map_of(8, 5, Mat3::IDENTITY, |_, _| Vec3::ONE),
+        ),
+        (
+            "a turned map of 1",
+            Vec3::ZERO,
+            map_of(7, 4, turned, |_, _| Vec3::ONE),
+        ),
+        (
+            "0.25 and a map of 0.75",
+            Vec3::splat(0.25),
+            map_of(6, 3, turned, |_, _| Vec3::splat(0.75)),
+        ),
     ];
     for (what, constant, map) in cases {
         for depth in [2, 5] {
@@ -97,7 +123,10 @@ fn sunny(sun: f32, to_world: Mat3) -> EnvironmentMap {
 fn light_samples_bsdf_rays_and_mis_agree_under_a_sky_with_a_sun() {
     let turned = Mat3::from_rotation_z(0.4) * Mat3::from_rotation_y(-1.1);
     let scene = furnace(
-        &[Material::diffuse(Vec3::splat(0.7)), Material::diffuse(Vec3::splat(0.5))],
+        &[
+            Material::diffuse(Vec3::splat(0.7)),
+            Material::diffuse(Vec3::splat(0.5)),
+        ],
         3,
         Vec3::splat(0.05),
         sunny(40.0, turned),
@@ -122,12 +151,22 @@ fn light_samples_bsdf_rays_and_mis_agree_under_a_sky_with_a_sun() {
 #[test]
 fn extreme_maps_never_give_nan_or_infinity() {
     let hot = map_of(32, 16, Mat3::IDENTITY, |x, y| {
-        if (x, y) == (3, 2) { Vec3::splat(1e20) } else { Vec3::ZERO }
+        if (x, y) == (3, 2) {
+            Vec3::splat(1e20)
+        } else {
+            Vec3::ZERO
+        }
     });
     let black = map_of(4, 2, Mat3::IDENTITY, |_, _| Vec3::ZERO);
-    let polar = map_of(3, 2, Mat3::IDENTITY, |_, y| if y == 0 { Vec3::ONE } else { Vec3::ZERO });
+    let polar = map_of(3, 2, Mat3::IDENTITY, |_, y| {
+        if y == 0 { Vec3::ONE } else { Vec3::ZERO }
+    });
     let metal = Material::mirror();
-    for (what, map) in [("a hot pixel", hot), ("black", black), ("light at the pole only", polar)] {
+    for (what, map) in [
+        ("a hot pixel", hot),
+        ("black", black),
+        ("light at the pole only", polar),
+    ] {
         let scene = furnace(&[Material::diffuse(Vec3::ONE), metal], 6, Vec3::ZERO, map);
         let out = support::render_pinhole(&scene, PathOptions::with_depth(6), (32, 24, 16), 5);
         assert_eq!(out.stats.nonfinite_samples, 0, "{what}");

@@ -1,8 +1,8 @@
 //! Building a scene in code: the chapters' built-in scenes, and the tests'.
 
 use super::{
-    AnimatedShape, AreaEmitter, Bitmap, BitmapId, Camera, EnvironmentMap, FilmSettings,
-    Integrator, Material, Origins, PointLight, SamplerSettings, Scene, Surface,
+    AnimatedShape, AreaEmitter, Bitmap, BitmapId, Camera, EnvironmentMap, FilmSettings, Integrator,
+    Material, Origins, PointLight, SamplerSettings, Scene, Surface,
 };
 use crate::geometry::{Geometry, Shape, TriangleMesh};
 use glam::{Mat4, Vec3};

@@ -154,7 +154,13 @@ impl EnvironmentSampling {
     /// The luminance at the corners of cell (`row`, `column`): upper left, upper right,
     /// lower left, lower right.
     fn corners(&self, row: usize, column: usize) -> [f32; 4] {
-        corners_of(&self.pixel_luminance, self.columns, self.height, row, column)
+        corners_of(
+            &self.pixel_luminance,
+            self.columns,
+            self.height,
+            row,
+            column,
+        )
     }
 
     /// The density per unit solid angle at `(x, y)` of the cell with luminance `corners`.
@@ -166,7 +172,13 @@ impl EnvironmentSampling {
 /// The luminance at the corners of cell (`row`, `column`) of a `width` x `height` map:
 /// pixels `column` and the next one around the circle, in rows `row` and the next one (the
 /// same row again in a map of one row).
-fn corners_of(luminance: &[f32], width: usize, height: usize, row: usize, column: usize) -> [f32; 4] {
+fn corners_of(
+    luminance: &[f32],
+    width: usize,
+    height: usize,
+    row: usize,
+    column: usize,
+) -> [f32; 4] {
     let at = |r: usize, c: usize| luminance[r.min(height - 1) * width + c % width];
     [
         at(row, column),

@@ -238,8 +238,8 @@ pub enum EmitterDescription {
     },
     /// Radiance from an image around the scene (Mitsuba's `envmap`), its scale applied.
     EnvironmentMap {
-        /// The image, read and ready to sample.
-        map: EnvironmentMap,
+        /// The image, read and ready to sample (boxed: it is large beside the other lights).
+        map: Box<EnvironmentMap>,
         /// Where the `<emitter>` element is.
         position: TextPosition,
     },

@@ -27,8 +27,11 @@ pub(super) fn read_environment_map(
     };
     // Where each property is written (the element itself when it is not), for errors.
     let node_position = reader.position(node);
-    let [filename_at, scale_at, to_world_at] = ["filename", "scale", "to_world"]
-        .map(|name| properties.position_of(name).unwrap_or(node_position.clone()));
+    let [filename_at, scale_at, to_world_at] = ["filename", "scale", "to_world"].map(|name| {
+        properties
+            .position_of(name)
+            .unwrap_or(node_position.clone())
+    });
     let scale = properties.float(reader, "scale")?.unwrap_or(1.0);
     if !scale.is_finite() || scale < 0.0 {
         return Err(reader.error_at(
@@ -43,13 +46,13 @@ pub(super) fn read_environment_map(
     let image = match reader.images_by_file.get(&key) {
         Some(image) => image.clone(),
         None => {
-            let image = load_bitmap(&path, false)
-                .map_err(|e| reader.error_at(filename_at.clone(), e))?;
+            let image =
+                load_bitmap(&path, false).map_err(|e| reader.error_at(filename_at.clone(), e))?;
             reader.images_by_file.insert(key, image.clone());
             image
         }
     };
-    let rotation = to_world.map_or(Mat3::IDENTITY, |m| Mat3::from_mat4(m));
+    let rotation = to_world.map_or(Mat3::IDENTITY, Mat3::from_mat4);
     let map = EnvironmentMap::new(image.width, image.height, &image.pixels, scale, rotation)
         .map_err(|error| {
             let (at, whose) = match error {
@@ -59,7 +62,7 @@ pub(super) fn read_environment_map(
             reader.error_at(at, format!("{whose} {error} ({})", path.display()))
         })?;
     Ok(EmitterDescription::EnvironmentMap {
-        map,
+        map: Box::new(map),
         position: node_position,
     })
 }

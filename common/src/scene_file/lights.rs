@@ -71,7 +71,9 @@ pub(super) fn read_emitter(reader: &mut Reader, node: &Element) -> Result<Emitte
         _ => {
             return Err(reader.error(
                 node,
-                format!("unknown emitter type \"{type_name}\": expected area, point, constant or envmap"),
+                format!(
+                    "unknown emitter type \"{type_name}\": expected area, point, constant or envmap"
+                ),
             ));
         }
     };

@@ -130,7 +130,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
                         ),
                     ));
                 }
-                environment_map = Some(map.clone());
+                environment_map = Some(map.as_ref().clone());
                 environment_map_position = Some(position.clone());
             }
         }

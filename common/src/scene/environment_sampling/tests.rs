@@ -4,7 +4,11 @@ use rand_pcg::Pcg32;
 use std::f64::consts::PI;
 
 /// A map of `width` x `height` pixels of colour `colour(x, y)`.
-fn map(width: u32, height: u32, colour: impl Fn(u32, u32) -> Vec3) -> (Vec<Vec3>, EnvironmentSampling) {
+fn map(
+    width: u32,
+    height: u32,
+    colour: impl Fn(u32, u32) -> Vec3,
+) -> (Vec<Vec3>, EnvironmentSampling) {
     let mut pixels = Vec::new();
     for y in 0..height {
         for x in 0..width {
@@ -29,7 +33,9 @@ fn sky_with_sun() -> EnvironmentSampling {
 
 fn numbers(seed: u64, n: usize) -> Vec<Vec2> {
     let mut rng = Pcg32::seed_from_u64(seed);
-    (0..n).map(|_| Vec2::new(rng.random(), rng.random())).collect()
+    (0..n)
+        .map(|_| Vec2::new(rng.random(), rng.random()))
+        .collect()
 }
 
 #[test]
@@ -38,7 +44,9 @@ fn a_sample_carries_the_density_that_pdf_gives_its_direction() {
     let mut matches = 0;
     let samples = numbers(1, 20_000);
     for &u in &samples {
-        let (d, pdf) = sampling.sample(u).expect("a bright map always offers a sample");
+        let (d, pdf) = sampling
+            .sample(u)
+            .expect("a bright map always offers a sample");
         assert!((d.length() - 1.0).abs() < 1e-5 && pdf.is_finite() && pdf > 0.0);
         if (sampling.pdf(d) / pdf - 1.0).abs() < 1e-4 {
             matches += 1;
@@ -93,7 +101,10 @@ fn a_constant_map_is_sampled_uniformly_over_the_sphere() {
         .map(|&c| (f64::from(c) - expected).powi(2) / expected)
         .sum();
     // χ² with 19 degrees of freedom: mean 19, standard deviation √38 ≈ 6.2.
-    assert!(chi2 < 19.0 + 6.0 * 38f64.sqrt(), "χ² = {chi2}, counts by cos θ {counts:?}");
+    assert!(
+        chi2 < 19.0 + 6.0 * 38f64.sqrt(),
+        "χ² = {chi2}, counts by cos θ {counts:?}"
+    );
 }
 
 #[test]
@@ -133,7 +144,10 @@ fn samples_follow_the_density_in_a_chi_square_test() {
         }
     }
     let dof = f64::from(dof - 1);
-    assert!(chi2 < dof + 6.0 * (2.0 * dof).sqrt(), "χ² = {chi2} with {dof} degrees of freedom");
+    assert!(
+        chi2 < dof + 6.0 * (2.0 * dof).sqrt(),
+        "χ² = {chi2} with {dof} degrees of freedom"
+    );
 }
 
 #[test]
@@ -154,18 +168,34 @@ fn black_maps_and_extreme_maps_never_give_nan() {
     assert_eq!(black.sample(Vec2::new(0.5, 0.5)), None);
     assert_eq!(black.pdf(Vec3::Y), 0.0);
     assert_eq!(black.integral(), 0.0);
-    let hot = map(32, 16, |x, y| if (x, y) == (0, 0) { Vec3::splat(3e37) } else { Vec3::ZERO }).1;
+    let hot = map(32, 16, |x, y| {
+        if (x, y) == (0, 0) {
+            Vec3::splat(3e37)
+        } else {
+            Vec3::ZERO
+        }
+    })
+    .1;
     let tiny = map(32, 16, |_, _| Vec3::splat(1e-40)).1;
     let single = map(1, 1, |_, _| Vec3::ONE).1;
     let negative = map(3, 2, |x, _| Vec3::new(-1.0, 0.0, x as f32)).1;
     for sampling in [&hot, &tiny, &single, &negative] {
-        for u in numbers(4, 2000).into_iter().chain([Vec2::ZERO, Vec2::splat(0.99999994)]) {
+        for u in numbers(4, 2000)
+            .into_iter()
+            .chain([Vec2::ZERO, Vec2::splat(0.99999994)])
+        {
             if let Some((d, pdf)) = sampling.sample(u) {
                 assert!(d.is_finite() && pdf.is_finite() && pdf > 0.0, "{d} {pdf}");
                 assert!(sampling.pdf(d).is_finite());
             }
         }
-        for d in [Vec3::Y, -Vec3::Y, Vec3::ZERO, Vec3::NAN, Vec3::new(1.0, 1e-8, 0.0)] {
+        for d in [
+            Vec3::Y,
+            -Vec3::Y,
+            Vec3::ZERO,
+            Vec3::NAN,
+            Vec3::new(1.0, 1e-8, 0.0),
+        ] {
             let pdf = sampling.pdf(d);
             assert!(pdf.is_finite() && pdf >= 0.0, "{d}: {pdf}");
         }
@@ -182,7 +212,11 @@ fn near_a_sun_the_density_follows_the_light_inside_each_cell() {
     // The lookup's light over the density is nearly constant around a one-pixel sun, as with
     // Mitsuba's bilinear warp: a density constant per cell would swing it between 0 and 4.
     let (pixels, sampling) = map(16, 9, |x, y| {
-        if (x, y) == (5, 4) { Vec3::splat(1e4) } else { Vec3::splat(0.01) }
+        if (x, y) == (5, 4) {
+            Vec3::splat(1e4)
+        } else {
+            Vec3::splat(0.01)
+        }
     });
     let map = super::super::EnvironmentMap::new(16, 9, &pixels, 1.0, glam::Mat3::IDENTITY).unwrap();
     let mut rng = Pcg32::seed_from_u64(5);
@@ -197,7 +231,10 @@ fn near_a_sun_the_density_follows_the_light_inside_each_cell() {
             continue; // too far from the sun for it to dominate
         }
         let ratio = f64::from(sampling.pdf(d)) * sampling.integral() / light;
-        assert!((0.8..1.25).contains(&ratio), "towards {d}: density / light = {ratio}");
+        assert!(
+            (0.8..1.25).contains(&ratio),
+            "towards {d}: density / light = {ratio}"
+        );
         checked += 1;
     }
     assert!(checked > 50, "{checked}");

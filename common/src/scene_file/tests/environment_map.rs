@@ -51,8 +51,14 @@ fn an_exr_envmap_is_read_with_its_scale_and_rotation() {
     let map = scene.environment_map.as_ref().expect("an environment map");
     assert_eq!(map.size(), (4, 3));
     // Mitsuba 3.9.1's radiance for these directions (see the scene model's tests).
-    assert!(map.radiance(Vec3::NEG_Z).abs_diff_eq(Vec3::new(3.0, 40.0, 3.0), 1e-4));
-    assert!(map.radiance(Vec3::X).abs_diff_eq(Vec3::new(5.0, 40.0, 5.0), 1e-4));
+    assert!(
+        map.radiance(Vec3::NEG_Z)
+            .abs_diff_eq(Vec3::new(3.0, 40.0, 3.0), 1e-4)
+    );
+    assert!(
+        map.radiance(Vec3::X)
+            .abs_diff_eq(Vec3::new(5.0, 40.0, 5.0), 1e-4)
+    );
     assert_eq!(scene.background(Vec3::X), map.radiance(Vec3::X));
     assert_eq!(scene.environment, Vec3::ZERO);
     assert_eq!(scene.origins.environment_map.as_ref().unwrap().line, 2);
@@ -95,7 +101,10 @@ fn radiance_hdr_and_srgb_png_maps_are_read_as_mitsuba_reads_them() {
              <float name="scale" value="10"/></emitter>"#,
     );
     let png = scene.environment_map.unwrap().radiance(Vec3::X);
-    assert!(png.abs_diff_eq(Vec3::new(4.96933, 1.98069, 8.96269), 1e-4), "{png}");
+    assert!(
+        png.abs_diff_eq(Vec3::new(4.96933, 1.98069, 8.96269), 1e-4),
+        "{png}"
+    );
 }
 
 #[test]
@@ -154,7 +163,10 @@ fn bad_envmaps_are_refused_with_line_and_column() {
             continue;
         }
         let error = error_in(dir.path(), body);
-        assert!(error.contains(expected), "{body}\ngave: {error}\nexpected: {expected}");
+        assert!(
+            error.contains(expected),
+            "{body}\ngave: {error}\nexpected: {expected}"
+        );
     }
 }
 
@@ -166,7 +178,11 @@ fn chapters_before_08_refuse_an_envmap_and_name_chapter_08() {
         dir.path(),
         r#"<emitter type="envmap"><string name="filename" value="sky.exr"/></emitter>"#,
     );
-    for chapter in [Chapter::WHITTED, Chapter::MOTION_BLUR, Chapter::SOFT_SHADOWS] {
+    for chapter in [
+        Chapter::WHITTED,
+        Chapter::MOTION_BLUR,
+        Chapter::SOFT_SHADOWS,
+    ] {
         let capabilities = Capabilities {
             chapter,
             approximates: &[],
