@@ -220,6 +220,40 @@ mod tests {
         }
     }
 
+    /// A valid 16 x 3 Radiance HDR file signed as Mitsuba signs it, to be broken below.
+    fn small_hdr() -> Vec<u8> {
+        let mut bytes = Vec::new();
+        image::Rgb32FImage::from_fn(16, 3, |x, y| image::Rgb([x as f32, y as f32 * 0.3, 2.0]))
+            .write_to(&mut Cursor::new(&mut bytes), ImageFormat::Hdr)
+            .unwrap();
+        [b"#?RGBE".as_slice(), &bytes[10..]].concat()
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: cases(),
+            failure_persistence: None,
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+
+        /// A Radiance HDR file with some bytes changed, or cut short: an error or an image.
+        #[test]
+        fn a_damaged_radiance_file_never_panics(
+            changes in proptest::collection::vec((proptest::prelude::any::<proptest::sample::Index>(), proptest::prelude::any::<u8>()), 0..8),
+            keep in 0.0..=1.0f64,
+        ) {
+            let mut bytes = small_hdr();
+            for (at, byte) in changes {
+                let i = at.index(bytes.len());
+                bytes[i] = byte;
+            }
+            bytes.truncate((bytes.len() as f64 * keep) as usize);
+            if let Ok(image) = parse_bitmap(&bytes, false) {
+                proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
+            }
+        }
+    }
+
     /// The CRC-32 of a PNG chunk's type and data.
     fn crc32(bytes: &[u8]) -> u32 {
         let mut crc = !0u32;
