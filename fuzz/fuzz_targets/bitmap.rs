@@ -1,5 +1,5 @@
-//! Any bytes given to the bitmap texture's image reader (PNG, JPEG, EXR): an error or an
-//! image with one finite-or-not pixel per place, never a panic.
+//! Any bytes given to the image reader of bitmap textures and envmaps (PNG, JPEG, EXR,
+//! Radiance HDR): an error or an image with one finite-or-not pixel per place, never a panic.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;

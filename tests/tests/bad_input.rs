@@ -75,6 +75,15 @@ const CH01: &[&str] = &["ch01-whitted"];
 const CH02: &[&str] = &["ch02-monte-carlo"];
 /// The chapters before chapter 04, which have no lens.
 const BEFORE_CH04: &[&str] = &["ch01-whitted", "ch03-anti-aliasing"];
+/// The chapters that render scene files but no environment map (Mitsuba's `envmap`).
+const BEFORE_CH08: &[&str] = &[
+    "ch01-whitted",
+    "ch03-anti-aliasing",
+    "ch04-depth-of-field",
+    "ch05-motion-blur",
+    "ch06-fuzzy-reflections",
+    "ch07-soft-shadows",
+];
 
 const fn case(
     chapters: &'static [&'static str],
@@ -171,7 +180,8 @@ const CASES: &[Case] = &[
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/negative-point-light.xml"], "a point light's intensity must be finite and not negative"),
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/negative-sky.xml"], "a constant emitter's radiance must be finite and not negative"),
     case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/integrator-child.xml"], "<bsdf> is not allowed inside <integrator>"),
-    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/envmap.xml"], "unknown emitter type \"envmap\""),
+    case(RENDERING, &["render", "--out", "{out}", "--scene", "{bad}/envmap.xml"], "envmap.xml:7:5: cannot read the image"),
+    case(BEFORE_CH08, &["render", "--out", "{out}", "--scene", "{bad}/envmap-before-08.xml"], "line 6, column 3: an environment map (envmap); light from an image around the scene comes in chapter 08 (ch08-path-tracing)"),
     case(BEFORE_CH04, &["render", "--out", "{out}", "--scene", "{ch04}/thinlens-spheres.xml"], "thinlens"),
     // Chapter 01's pixel pattern.
     case(CH01, &["render", "--out", "{out}", "--pixel", "grid", "--spp", "8"], "square"),

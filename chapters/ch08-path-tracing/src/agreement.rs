@@ -87,6 +87,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "roughness as a texture: a GGX gold floor whose alpha is a checkerboard of 0.1 and 0.35, a Beckmann glass sphere whose alpha is a checkerboard of 0.05 and 0.4; each width read as Mitsuba reads one number from a texture",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "envmap",
+            checks: "an environment map (envmap): a Radiance HDR sky with a small sun, scaled and turned by its to_world, seen directly, in a smooth chromium sphere and a rough gold one, and lighting a matte sphere and floor; its lookup, its light samples and their density in MIS",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

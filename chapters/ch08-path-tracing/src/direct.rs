@@ -42,7 +42,7 @@ impl PathTracer<'_> {
         counters.rays += 1;
         let Some(hit) = self.world.intersect(&ray) else {
             return if shown {
-                self.lights.environment
+                self.lights.environment.radiance(ray.dir)
             } else {
                 Vec3::ZERO
             };
@@ -150,9 +150,10 @@ impl PathTracer<'_> {
                 ),
                 None => return Vec3::ZERO,
             },
-            None if self.lights.has_environment() => {
-                (self.lights.environment, self.lights.environment_pdf())
-            }
+            None if self.lights.has_environment() => (
+                self.lights.environment.radiance(sample.wi),
+                self.lights.environment_pdf(sample.wi),
+            ),
             None => return Vec3::ZERO,
         };
         // A delta direction no light sample could have drawn, and no light samples at all,

@@ -141,7 +141,7 @@ impl<'a> DistributionTracer<'a> {
         counters.rays += 1;
         let world = self.world;
         let Some(hit) = world.intersect(ray) else {
-            return world.scene.environment;
+            return world.scene.background(ray.dir);
         };
         let mut radiance = if count_emission {
             self.lighting.emitted(&hit, ray)

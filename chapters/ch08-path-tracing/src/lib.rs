@@ -9,7 +9,8 @@
 //!
 //! - [`bsdf`]: every chapter 06 material's sample, `f cos θ` and density, one module each.
 //! - [`lights`]: area lights, point lights and the environment; every point light is
-//!   connected, one of the others picked uniformly.
+//!   connected, one of the others picked uniformly; [`environment`]: the constant environment
+//!   and the environment map as one light.
 //! - [`mis`]: the balance and the power heuristic; [`nee`]: one light sample's contribution
 //!   and the point lights'.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
@@ -30,6 +31,7 @@ pub mod cli;
 pub mod dimensions;
 pub mod direct;
 pub mod distribution;
+pub mod environment;
 pub mod figures;
 pub mod furnace;
 pub mod lights;

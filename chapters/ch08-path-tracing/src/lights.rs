@@ -1,5 +1,6 @@
 //! Every light of a scene, for next-event estimation: the area lights (chapter 07), the point
-//! lights (chapter 01) and the constant environment (the scene's background).
+//! lights (chapter 01) and the environment (the scene's background: a constant radiance, an
+//! image around the scene, or both; [`EnvironmentLight`]).
 //!
 //! The two kinds are treated differently. A point light is a delta: no BSDF sample can find
 //! it and there is no point on it to choose, so next-event estimation connects **every**
@@ -23,7 +24,7 @@
 //! distribution over `uv` (a bitmap's brightness) when the radiance varies, so its noise is
 //! lower on a light with bright spots.
 
-use ch02_monte_carlo::warps::{sample_uniform_sphere, uniform_sphere_pdf};
+use crate::environment::EnvironmentLight;
 use ch05_motion_blur::MotionScene;
 use ch07_soft_shadows::light::LightShape;
 use ch07_soft_shadows::light_sample::LightSample;
@@ -39,7 +40,7 @@ use glam::{Vec2, Vec3};
 pub enum LightRef {
     /// An area light, by its index in the scene's list.
     Area(usize),
-    /// The constant environment.
+    /// The environment: constant, an image, or both.
     Environment,
 }
 
@@ -91,8 +92,8 @@ pub struct SceneLights<'a> {
     scene: &'a Scene,
     /// Point lights.
     pub points: &'a [PointLight],
-    /// The environment's radiance; black means there is none.
-    pub environment: Vec3,
+    /// The light from outside the scene.
+    pub environment: EnvironmentLight<'a>,
     /// How area lights are sampled (chapter 07).
     pub sampling: LightSampling,
     /// How many lights there are to pick from (area lights and the environment), counted
@@ -116,7 +117,7 @@ impl<'a> SceneLights<'a> {
             shape_of_light: &area_lights.shape_of_light,
             scene,
             points: &scene.point_lights,
-            environment: scene.environment,
+            environment: EnvironmentLight::of(scene),
             sampling,
             count: 0,
             pick_probability: 1.0,
@@ -147,8 +148,9 @@ impl<'a> SceneLights<'a> {
     }
 
     /// Whether the scene has a (non-black) environment.
+    #[inline]
     pub fn has_environment(&self) -> bool {
-        self.environment != Vec3::ZERO
+        !self.environment.is_black()
     }
 
     /// The chance of picking any one of the lights a light sample picks from.
@@ -251,11 +253,11 @@ impl<'a> SceneLights<'a> {
             }
             LightRef::Environment => {
                 let pick = self.pick_probability();
-                let wi = sample_uniform_sphere(u);
+                let (wi, pdf) = self.environment.sample(u)?;
                 LightDirection {
                     wi,
-                    radiance: self.environment,
-                    pdf: pick * uniform_sphere_pdf(),
+                    radiance: self.environment.radiance(wi),
+                    pdf: pick * pdf,
                     target: ShadowTarget::Direction(wi),
                 }
             }
@@ -282,8 +284,9 @@ impl<'a> SceneLights<'a> {
         self.pick_probability() * pdf
     }
 
-    /// The density with which the environment is sampled in any direction, pick included.
-    pub fn environment_pdf(&self) -> f32 {
-        self.pick_probability() * uniform_sphere_pdf()
+    /// The density with which the environment is sampled in `direction`, pick included.
+    #[inline]
+    pub fn environment_pdf(&self, direction: Vec3) -> f32 {
+        self.pick_probability() * self.environment.pdf(direction)
     }
 }

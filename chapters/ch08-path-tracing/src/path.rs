@@ -213,8 +213,8 @@ impl PathTracer<'_> {
         counters.rays += 1;
         let Some(hit) = self.world.intersect(ray) else {
             if finds_emission && self.lights.has_environment() {
-                let weight = emission_weight(self.lights.environment_pdf());
-                path.gather(self.lights.environment * weight);
+                let weight = emission_weight(self.lights.environment_pdf(ray.dir));
+                path.gather(self.lights.environment.radiance(ray.dir) * weight);
             }
             return None;
         };

@@ -1,8 +1,8 @@
 //! What a scene file asks of the path tracer: the integrator's depth and roulette.
 //!
 //! Everything else of the file (materials, lens, filter, motion, point and area lights, the
-//! `constant` environment) is in the scene itself; the earlier chapters' notes about light
-//! they leave out do not apply here, as the chapter's capabilities say.
+//! `constant` environment and the `envmap`) is in the scene itself; the earlier chapters'
+//! notes about light they leave out do not apply here, as the chapter's capabilities say.
 
 use crate::options::PathOptions;
 use common::scene::{DirectSamples, Integrator, Scene};

@@ -1,8 +1,8 @@
 //! Building a scene in code: the chapters' built-in scenes, and the tests'.
 
 use super::{
-    AnimatedShape, AreaEmitter, Bitmap, BitmapId, Camera, FilmSettings, Integrator, Material,
-    Origins, PointLight, SamplerSettings, Scene, Surface,
+    AnimatedShape, AreaEmitter, Bitmap, BitmapId, Camera, EnvironmentMap, FilmSettings, Integrator,
+    Material, Origins, PointLight, SamplerSettings, Scene, Surface,
 };
 use crate::geometry::{Geometry, Shape, TriangleMesh};
 use glam::{Mat4, Vec3};
@@ -15,6 +15,7 @@ pub struct SceneBuilder {
     moving: Vec<(AnimatedShape, Surface)>,
     point_lights: Vec<PointLight>,
     environment: Vec3,
+    environment_map: Option<EnvironmentMap>,
     bitmaps: Vec<Bitmap>,
 }
 
@@ -78,6 +79,12 @@ impl SceneBuilder {
         self
     }
 
+    /// Sets the image of light around the scene (chapter 08), added to the environment.
+    pub fn environment_map(mut self, map: EnvironmentMap) -> Self {
+        self.environment_map = Some(map);
+        self
+    }
+
     /// Adds an image for [`Texture::Bitmap`](super::Texture) to read, returning its number.
     pub fn bitmap(&mut self, bitmap: Bitmap) -> BitmapId {
         self.bitmaps.push(bitmap);
@@ -98,6 +105,7 @@ impl SceneBuilder {
             bitmaps: self.bitmaps,
             point_lights: self.point_lights,
             environment: self.environment,
+            environment_map: self.environment_map,
             camera,
             film,
             sampler: SamplerSettings::default(),

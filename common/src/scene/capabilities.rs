@@ -100,6 +100,8 @@ pub enum Feature {
     IndirectLight,
     /// The environment lighting matte surfaces (not only seen directly or in mirrors).
     EnvironmentLight,
+    /// Light from an image around the scene (Mitsuba's `envmap`).
+    EnvironmentMap,
     /// Emitters hidden from camera rays (Mitsuba's `hide_emitters`).
     HiddenEmitters,
     /// A `direct` integrator's sample counts other than one light and one BSDF sample.
@@ -149,6 +151,7 @@ impl Feature {
             Feature::AreaLight => Some(Chapter::SOFT_SHADOWS),
             Feature::IndirectLight
             | Feature::EnvironmentLight
+            | Feature::EnvironmentMap
             | Feature::HiddenEmitters
             | Feature::DirectSampleCounts
             | Feature::MetalFresnel
@@ -175,6 +178,7 @@ impl Feature {
             Feature::MovingAreaLight => "an area light that moves",
             Feature::IndirectLight => "indirect light",
             Feature::EnvironmentLight => "an environment",
+            Feature::EnvironmentMap => "an environment map (envmap)",
             Feature::HiddenEmitters => "emitters hidden from the camera",
             Feature::DirectSampleCounts => "the direct integrator's sample counts",
             Feature::MetalFresnel => "a metal",
@@ -200,6 +204,7 @@ impl Feature {
             Feature::MovingAreaLight => "no chapter samples lights that move",
             Feature::IndirectLight => "indirect light comes",
             Feature::EnvironmentLight => "the environment lights matte surfaces",
+            Feature::EnvironmentMap => "light from an image around the scene comes",
             Feature::HiddenEmitters => "the integrator's hide_emitters comes",
             Feature::DirectSampleCounts => "emitter_samples and bsdf_samples are taken as given",
             Feature::MetalFresnel => "metals' reflectance by angle comes",
@@ -495,7 +500,15 @@ impl Scene {
                 String::new(),
             );
         }
+        if self.environment_map.is_some() {
+            add(
+                Feature::EnvironmentMap,
+                self.origins.environment_map.clone(),
+                String::new(),
+            );
+        }
         let something_glows = self.environment != glam::Vec3::ZERO
+            || self.environment_map.is_some()
             || self
                 .surfaces
                 .iter()

@@ -21,6 +21,8 @@
 mod builder;
 mod camera;
 mod capabilities;
+mod environment_map;
+mod environment_sampling;
 mod light;
 mod material;
 mod settings;
@@ -29,6 +31,8 @@ mod texture;
 pub use builder::SceneBuilder;
 pub use camera::{Camera, CameraFrame, CameraModel};
 pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
+pub use environment_map::{EnvironmentMap, EnvironmentMapError, direction_of, direction_to_uv};
+pub use environment_sampling::{EnvironmentSampling, luminance};
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
     AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
@@ -70,6 +74,9 @@ pub struct Scene {
     /// Radiance of every ray that leaves the scene (Mitsuba's `constant` emitter); black for a
     /// closed room or a scene without an environment.
     pub environment: Vec3,
+    /// Light from an image around the scene (Mitsuba's `envmap`), added to `environment`;
+    /// chapters before 08 refuse it.
+    pub environment_map: Option<EnvironmentMap>,
     /// Where the camera is, its lens, its shutter and its motion.
     pub camera: Camera,
     /// The image the camera records.
@@ -115,6 +122,15 @@ impl Scene {
     /// How many shapes the scene has, still and moving.
     pub fn shape_count(&self) -> usize {
         self.surfaces.len()
+    }
+
+    /// The radiance arriving along direction `direction` from outside the scene: the
+    /// constant environment plus the environment map's light from there.
+    pub fn background(&self, direction: Vec3) -> Vec3 {
+        match &self.environment_map {
+            Some(map) => self.environment + map.radiance(direction),
+            None => self.environment,
+        }
     }
 
     /// The surface of shape number `shape`, as a hit reports it.

@@ -110,6 +110,8 @@ pub struct Origins {
     pub filter: Option<TextPosition>,
     /// The `constant` `<emitter>` element, for a scene with an environment.
     pub environment: Option<TextPosition>,
+    /// The `envmap` `<emitter>` element, for a scene with an environment map.
+    pub environment_map: Option<TextPosition>,
 }
 
 /// A place in a scene file: 1-based line and column, as an editor shows them, and the file

@@ -3,7 +3,7 @@
 //!
 //! An 8- or 16-bit image (PNG, JPEG) stores sRGB-encoded values, which Mitsuba turns into
 //! linear ones unless the texture says `raw` (for data that is not a colour); a floating-point
-//! image (EXR) is linear already. Alpha is dropped; a grey image gives three equal channels.
+//! image (EXR, Radiance HDR) is linear already. Alpha is dropped; a grey image gives three equal channels.
 
 use glam::Vec3;
 use image::{DynamicImage, ImageDecoder, ImageReader};
@@ -33,9 +33,11 @@ pub fn load_bitmap(path: &Path, raw: bool) -> Result<DecodedImage, String> {
 /// A header that claims more is refused before anything is allocated for it.
 pub const MAX_BITMAP_PIXELS: u64 = 1 << 25;
 
-/// Decodes the bytes of a PNG, JPEG or EXR file (the format is told by its first bytes).
+/// Decodes the bytes of a PNG, JPEG, EXR or Radiance HDR file (the format is told by its first
+/// bytes).
 pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
-    let decoder = ImageReader::new(Cursor::new(bytes))
+    let bytes = radiance_signature(bytes);
+    let decoder = ImageReader::new(Cursor::new(&*bytes))
         .with_guessed_format()
         .map_err(|e| format!("cannot tell its format: {e}"))?
         .into_decoder()
@@ -81,6 +83,22 @@ pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
     })
 }
 
+/// A Radiance HDR file starts with `#?` and the name of the program that wrote it: `#?RADIANCE`
+/// usually, `#?RGBE` from Mitsuba. The decoder knows only the first, so any other first line
+/// of that form is replaced by it; other files are left as they are.
+fn radiance_signature(bytes: &[u8]) -> std::borrow::Cow<'_, [u8]> {
+    const RADIANCE: &[u8] = b"#?RADIANCE";
+    let end_of_line = bytes.iter().take(64).position(|&b| b == b'\n');
+    match end_of_line {
+        Some(end) if bytes.starts_with(b"#?") && !bytes.starts_with(RADIANCE) => {
+            let mut fixed = RADIANCE.to_vec();
+            fixed.extend_from_slice(&bytes[end..]);
+            std::borrow::Cow::Owned(fixed)
+        }
+        _ => std::borrow::Cow::Borrowed(bytes),
+    }
+}
+
 /// The sRGB transfer function's inverse: an encoded value in `[0, 1]` to linear light.
 pub fn srgb_to_linear(encoded: f32) -> f32 {
     if encoded <= 0.04045 {
@@ -124,6 +142,21 @@ mod tests {
             "{}",
             raw.pixels[0]
         );
+    }
+
+    #[test]
+    fn a_radiance_file_signed_by_mitsuba_is_read() {
+        let mut bytes = Vec::new();
+        image::Rgb32FImage::from_pixel(9, 2, image::Rgb([2.0, 0.5, 1.0]))
+            .write_to(&mut Cursor::new(&mut bytes), ImageFormat::Hdr)
+            .unwrap();
+        assert!(bytes.starts_with(b"#?RADIANCE\n"));
+        let mitsuba = [b"#?RGBE".as_slice(), &bytes[10..]].concat();
+        for bytes in [bytes, mitsuba] {
+            let image = parse_bitmap(&bytes, false).unwrap();
+            assert_eq!((image.width, image.height), (9, 2));
+            assert_eq!(image.pixels[17], Vec3::new(2.0, 0.5, 1.0));
+        }
     }
 
     #[test]
@@ -181,6 +214,40 @@ mod tests {
                 let i = at.index(bytes.len());
                 bytes[i] = byte;
             }
+            if let Ok(image) = parse_bitmap(&bytes, false) {
+                proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
+            }
+        }
+    }
+
+    /// A valid 16 x 3 Radiance HDR file signed as Mitsuba signs it, to be broken below.
+    fn small_hdr() -> Vec<u8> {
+        let mut bytes = Vec::new();
+        image::Rgb32FImage::from_fn(16, 3, |x, y| image::Rgb([x as f32, y as f32 * 0.3, 2.0]))
+            .write_to(&mut Cursor::new(&mut bytes), ImageFormat::Hdr)
+            .unwrap();
+        [b"#?RGBE".as_slice(), &bytes[10..]].concat()
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: cases(),
+            failure_persistence: None,
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+
+        /// A Radiance HDR file with some bytes changed, or cut short: an error or an image.
+        #[test]
+        fn a_damaged_radiance_file_never_panics(
+            changes in proptest::collection::vec((proptest::prelude::any::<proptest::sample::Index>(), proptest::prelude::any::<u8>()), 0..8),
+            keep in 0.0..=1.0f64,
+        ) {
+            let mut bytes = small_hdr();
+            for (at, byte) in changes {
+                let i = at.index(bytes.len());
+                bytes[i] = byte;
+            }
+            bytes.truncate((bytes.len() as f64 * keep) as usize);
             if let Ok(image) = parse_bitmap(&bytes, false) {
                 proptest::prop_assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
             }

@@ -11,7 +11,7 @@ use glam::{Mat4, Vec2, Vec3};
 
 use super::TextPosition;
 use super::spectrum::Spectrum;
-use crate::scene::{AreaEmitter, Bitmap, CameraModel, FilmFilter, Material};
+use crate::scene::{AreaEmitter, Bitmap, CameraModel, EnvironmentMap, FilmFilter, Material};
 
 /// Everything a scene file describes.
 #[derive(Clone, Debug, PartialEq)]
@@ -234,6 +234,13 @@ pub enum EmitterDescription {
     Constant {
         /// Radiance (default 1).
         radiance: Vec3,
+        /// Where the `<emitter>` element is.
+        position: TextPosition,
+    },
+    /// Radiance from an image around the scene (Mitsuba's `envmap`), its scale applied.
+    EnvironmentMap {
+        /// The image, read and ready to sample (boxed: it is large beside the other lights).
+        map: Box<EnvironmentMap>,
         /// Where the `<emitter>` element is.
         position: TextPosition,
     },

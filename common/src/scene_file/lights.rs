@@ -1,16 +1,19 @@
-//! `<emitter>`: area lights attached to shapes, and point and constant lights on their own.
+//! `<emitter>`: area lights attached to shapes, and point, constant and environment-map
+//! lights on their own.
 
 use super::element::Element;
 use glam::Vec3;
 
 use super::description::EmitterDescription;
+use super::environment_map::read_environment_map;
 use super::error::SceneError;
 use super::properties::Properties;
 use super::reader::Reader;
 use super::textures::{refuse_texture, take_textures};
 use crate::scene::AreaEmitter;
 
-/// An `<emitter>` is either attached to a shape (area) or stands alone (point, constant).
+/// An `<emitter>` is either attached to a shape (area) or stands alone (point, constant,
+/// envmap).
 pub(super) enum Emitter {
     /// Must be inside a `<shape>`.
     Area(AreaEmitter),
@@ -18,7 +21,7 @@ pub(super) enum Emitter {
     Standalone(EmitterDescription),
 }
 
-/// Reads an `<emitter>` of type `area`, `point` or `constant`.
+/// Reads an `<emitter>` of type `area`, `point`, `constant` or `envmap`.
 pub(super) fn read_emitter<'a>(
     reader: &mut Reader<'a>,
     node: &'a Element,
@@ -75,6 +78,7 @@ pub(super) fn read_emitter<'a>(
             )?,
             position: reader.position(node),
         }),
+        "envmap" => Emitter::Standalone(read_environment_map(reader, node, &mut properties)?),
         "point" => {
             let position = properties.point(reader, "position")?;
             let to_world = properties.transform(reader, "to_world")?;
@@ -103,7 +107,9 @@ pub(super) fn read_emitter<'a>(
         _ => {
             return Err(reader.error(
                 node,
-                format!("unknown emitter type \"{type_name}\": expected area, point or constant"),
+                format!(
+                    "unknown emitter type \"{type_name}\": expected area, point, constant or envmap"
+                ),
             ));
         }
     };

@@ -40,6 +40,7 @@ mod camera;
 mod description;
 mod document;
 mod element;
+mod environment_map;
 mod error;
 mod integrator;
 mod lights;

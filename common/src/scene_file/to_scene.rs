@@ -103,6 +103,8 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
     }
     let mut environment = Vec3::ZERO;
     let mut environment_position = None;
+    let mut environment_map = None;
+    let mut environment_map_position = None;
     for emitter in &description.emitters {
         match emitter {
             EmitterDescription::Point {
@@ -117,6 +119,19 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             EmitterDescription::Constant { radiance, position } => {
                 environment += *radiance;
                 environment_position.get_or_insert(position.clone());
+            }
+            EmitterDescription::EnvironmentMap { map, position } => {
+                if let Some(first) = &environment_map_position {
+                    return Err(error(
+                        position.clone(),
+                        format!(
+                            "a second envmap emitter: the workbook renders one, and the first \
+                             is at {first}"
+                        ),
+                    ));
+                }
+                environment_map = Some(map.as_ref().clone());
+                environment_map_position = Some(position.clone());
             }
         }
     }
@@ -168,8 +183,10 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             sensor: Some(sensor.position.clone()),
             filter: sensor.film.filter_position.clone(),
             environment: environment_position,
+            environment_map: environment_map_position,
         },
         bitmaps: description.bitmaps.clone(),
+        environment_map,
         ..scene
     })
 }

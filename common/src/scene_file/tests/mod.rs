@@ -3,6 +3,7 @@
 mod animation;
 mod broken_files;
 mod cornell;
+mod environment_map;
 mod files_and_references;
 mod masks;
 mod materials;
