@@ -1,7 +1,7 @@
-//! Image files for `bitmap` textures: PNG, JPEG and OpenEXR, decoded into linear RGB as
-//! Mitsuba 3 does.
+//! Image files for `bitmap` textures and `envmap` emitters: PNG, JPEG, BMP, OpenEXR and
+//! Radiance HDR, decoded into linear RGB as Mitsuba 3 does.
 //!
-//! An 8- or 16-bit image (PNG, JPEG) stores sRGB-encoded values, which Mitsuba turns into
+//! An 8- or 16-bit image (PNG, JPEG, BMP) stores sRGB-encoded values, which Mitsuba turns into
 //! linear ones unless the texture says `raw` (for data that is not a colour); a floating-point
 //! image (EXR, Radiance HDR) is linear already. Alpha is dropped; a grey image gives three equal channels.
 
@@ -33,15 +33,17 @@ pub fn load_bitmap(path: &Path, raw: bool) -> Result<DecodedImage, String> {
 /// A header that claims more is refused before anything is allocated for it.
 pub const MAX_BITMAP_PIXELS: u64 = 1 << 25;
 
-/// Decodes the bytes of a PNG, JPEG, EXR or Radiance HDR file (the format is told by its first
-/// bytes).
+/// Decodes the bytes of a PNG, JPEG, BMP, EXR or Radiance HDR file (the format is told by its
+/// first bytes).
 pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
     let bytes = radiance_signature(bytes);
     let decoder = ImageReader::new(Cursor::new(&*bytes))
         .with_guessed_format()
         .map_err(|e| format!("cannot tell its format: {e}"))?
         .into_decoder()
-        .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
+        .map_err(|e| {
+            format!("not a PNG, JPEG, BMP, EXR or HDR image the workbook can read: {e}")
+        })?;
     // What the decoder will allocate, asked before it does: a header may claim anything.
     let (width, height) = decoder.dimensions();
     let pixels = u64::from(width) * u64::from(height);
@@ -51,8 +53,9 @@ pub fn parse_bitmap(bytes: &[u8], raw: bool) -> Result<DecodedImage, String> {
              may have"
         ));
     }
-    let image = DynamicImage::from_decoder(decoder)
-        .map_err(|e| format!("not a PNG, JPEG or EXR image the workbook can read: {e}"))?;
+    let image = DynamicImage::from_decoder(decoder).map_err(|e| {
+        format!("not a PNG, JPEG, BMP, EXR or HDR image the workbook can read: {e}")
+    })?;
     let (width, height) = (image.width(), image.height());
     if u64::from(width) * u64::from(height) > MAX_BITMAP_PIXELS || width == 0 || height == 0 {
         return Err(format!(
@@ -160,6 +163,22 @@ mod tests {
     }
 
     #[test]
+    fn a_bmp_is_decoded_like_a_png() {
+        // Mitsuba reads BMP files too (its documentation's flower texture is one): 8-bit sRGB.
+        let image = RgbImage::from_fn(2, 1, |x, _| {
+            Rgb(if x == 0 { [187, 123, 243] } else { [0, 0, 0] })
+        });
+        let mut bmp = Vec::new();
+        image
+            .write_to(&mut Cursor::new(&mut bmp), ImageFormat::Bmp)
+            .unwrap();
+        assert!(bmp.starts_with(b"BM"));
+        let from_bmp = parse_bitmap(&bmp, false).unwrap();
+        let from_png = parse_bitmap(&png(&[[187, 123, 243], [0, 0, 0]], 2), false).unwrap();
+        assert_eq!(from_bmp, from_png);
+    }
+
+    #[test]
     fn rows_start_at_the_top() {
         let decoded = parse_bitmap(&png(&[[255, 0, 0], [0, 0, 255]], 1), true).unwrap();
         assert_eq!((decoded.width, decoded.height), (1, 2));
@@ -170,7 +189,7 @@ mod tests {
     #[test]
     fn bytes_that_are_no_image_are_refused_in_words() {
         let message = parse_bitmap(b"not an image", false).unwrap_err();
-        assert!(message.contains("PNG, JPEG or EXR"), "{message}");
+        assert!(message.contains("PNG, JPEG, BMP, EXR or HDR"), "{message}");
         let mut truncated = png(&[[1, 2, 3]; 16], 4);
         truncated.truncate(truncated.len() / 2);
         assert!(parse_bitmap(&truncated, false).is_err());

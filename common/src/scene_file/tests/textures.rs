@@ -182,7 +182,7 @@ fn textures_are_refused_where_they_cannot_be_rendered_yet() {
         (
             r#"<bsdf type="diffuse"><texture type="bitmap" name="reflectance">
                  <string name="filename" value="garbage.png"/></texture></bsdf>"#,
-            "garbage.png: not a PNG, JPEG or EXR",
+            "garbage.png: not a PNG, JPEG, BMP, EXR or HDR",
         ),
         (
             r#"<bsdf type="diffuse"><texture type="bitmap" name="reflectance">
