@@ -92,6 +92,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "an environment map (envmap): a Radiance HDR sky with a small sun, scaled and turned by its to_world, seen directly, in a smooth chromium sphere and a rough gold one, and lighting a matte sphere and floor; its lookup, its light samples and their density in MIS",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "smooth-mesh",
+            checks: "a coarse mesh sphere with vertex normals as glass and as a mirror: both turn light about the interpolated shading normal, as Mitsuba's shading frame does, so they look round rather than cut",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

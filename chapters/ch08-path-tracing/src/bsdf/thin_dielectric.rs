@@ -21,8 +21,13 @@ pub fn reflectance(cos_i: f32, eta: f32) -> f32 {
 
 /// The mirror direction with probability `R'`, else `-wo` (straight on), with the number `u`.
 pub fn sample(hit: &SurfaceHit, wo: Vec3, int_ior: f32, ext_ior: f32, u: f32) -> BsdfSample {
-    let cos_o = wo.dot(hit.n);
-    let normal = if cos_o >= 0.0 { hit.n } else { -hit.n };
+    // About the shading normal, as Mitsuba's shading frame has it.
+    let cos_o = wo.dot(hit.shading_n);
+    let normal = if cos_o >= 0.0 {
+        hit.shading_n
+    } else {
+        -hit.shading_n
+    };
     let wi = if u < reflectance(cos_o.abs().min(1.0), int_ior / ext_ior) {
         reflect(-wo, normal)
     } else {
