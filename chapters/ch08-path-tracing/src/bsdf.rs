@@ -254,9 +254,13 @@ impl Bsdf<'_> {
 
 /// The shading normal turned to the side `wo` is on, or `None` for the back of a one-sided
 /// surface (Mitsuba's `diffuse`, `conductor` and `roughconductor` are black from behind).
+///
+/// The side is the shading normal's, as in Mitsuba's shading frame: a mesh whose triangles
+/// are wound every which way but whose vertex normals agree (many a PLY teapot) is lit by its
+/// normals, not darkened wherever a triangle happens to face the other way.
 #[inline]
 pub fn facing_normal(hit: &SurfaceHit, wo: Vec3, two_sided: bool) -> Option<Vec3> {
-    if wo.dot(hit.n) > 0.0 {
+    if wo.dot(hit.shading_n) > 0.0 {
         Some(hit.shading_n)
     } else if two_sided {
         Some(-hit.shading_n)
@@ -276,8 +280,10 @@ pub(crate) mod test_support;
 
 #[cfg(test)]
 mod tests {
-    use super::Bsdf;
     use super::test_support::check_consistent;
+    use super::{Bsdf, test_support};
+    use ch06_fuzzy_reflections::FuzzMethod;
+    use common::geometry::SurfaceHit;
     use common::scene::Material as Smooth;
     use common::scene::{Conductor, Material, Microfacet, MicrofacetDistribution, Plastic};
     use glam::Vec3;
@@ -316,6 +322,36 @@ mod tests {
                 assert!(albedo.max_element() <= 2.3, "{material:?} {wo}: {albedo}");
             }
         }
+    }
+
+    #[test]
+    fn a_surface_faces_where_its_shading_normal_points_as_in_mitsuba() {
+        // A triangle wound the other way round than its vertex normals: its geometric normal
+        // points down, the interpolated one up. Mitsuba decides the side in its shading
+        // frame, so a one-sided matte surface seen from above reflects.
+        let hit = SurfaceHit {
+            n: -Vec3::Y,
+            ..test_support::floor_hit()
+        };
+        let one_sided = Material::diffuse(Vec3::ONE);
+        let bsdf = Bsdf {
+            material: &one_sided,
+            hit: &hit,
+            fuzz: FuzzMethod::Lobe,
+        };
+        let f = bsdf.eval(Vec3::Y, Vec3::new(0.0, 0.8, 0.6));
+        assert!(
+            (f - Vec3::splat(0.8 / std::f32::consts::PI))
+                .abs()
+                .max_element()
+                < 1e-6,
+            "seen from its shading normal's side the surface is lit, got {f}"
+        );
+        assert_eq!(
+            bsdf.eval(-Vec3::Y, -Vec3::Y),
+            Vec3::ZERO,
+            "and black from behind"
+        );
     }
 
     fn beckmann(alpha: f32) -> Microfacet {

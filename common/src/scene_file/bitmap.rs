@@ -195,25 +195,13 @@ mod tests {
         assert!(parse_bitmap(&truncated, false).is_err());
     }
 
-    /// Cases per property: `SCENE_FUZZ_CASES`, or 256.
-    fn cases() -> u32 {
-        std::env::var("SCENE_FUZZ_CASES")
-            .ok()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(256)
-    }
-
     /// A valid 4 x 4 PNG, to be broken by the property below.
     fn small_png() -> Vec<u8> {
         png(&[[200, 100, 50]; 16], 4)
     }
 
     proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig {
-            cases: cases(),
-            failure_persistence: None,
-            ..proptest::prelude::ProptestConfig::default()
-        })]
+        #![proptest_config(crate::scene_file::tests::property_config())]
 
         /// Any bytes: an error, or an image with one finite pixel per place.
         #[test]
@@ -249,11 +237,7 @@ mod tests {
     }
 
     proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig {
-            cases: cases(),
-            failure_persistence: None,
-            ..proptest::prelude::ProptestConfig::default()
-        })]
+        #![proptest_config(crate::scene_file::tests::property_config())]
 
         /// A Radiance HDR file with some bytes changed, or cut short: an error or an image.
         #[test]

@@ -22,6 +22,22 @@ use std::path::Path;
 
 use super::{LoadedDescription, SceneError, parse_description};
 
+/// The configuration of the readers' property tests: `SCENE_FUZZ_CASES` cases (256 by
+/// default) drawn from the seed `SCENE_FUZZ_SEED` (a fixed one by default, so that a run is
+/// repeatable and CI never fails by the luck of the draw; set another seed to explore), with
+/// a shrunk failure printed and nothing written into the source tree.
+pub(crate) fn property_config() -> proptest::prelude::ProptestConfig {
+    let number = |name: &str| std::env::var(name).ok().and_then(|v| v.parse().ok());
+    proptest::prelude::ProptestConfig {
+        cases: number("SCENE_FUZZ_CASES").map_or(256, |n: u64| n as u32),
+        rng_seed: proptest::test_runner::RngSeed::Fixed(
+            number("SCENE_FUZZ_SEED").unwrap_or(20_261_203),
+        ),
+        failure_persistence: None,
+        ..proptest::prelude::ProptestConfig::default()
+    }
+}
+
 /// Wraps `body` in a scene with a minimal sensor. The body starts on **line 2**, so a broken
 /// element on the body's first line is reported on line 2.
 fn scene_with(body: &str) -> String {

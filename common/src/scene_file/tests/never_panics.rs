@@ -58,16 +58,8 @@ fn edit() -> impl Strategy<Value = Edit> {
     ]
 }
 
-/// Cases per property: `SCENE_FUZZ_CASES`, or 256.
-fn cases() -> u32 {
-    std::env::var("SCENE_FUZZ_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(256)
-}
-
 proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(), failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(super::property_config())]
 
     #[test]
     fn random_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..512)) {
