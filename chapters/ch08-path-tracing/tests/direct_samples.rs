@@ -7,7 +7,7 @@
 mod support;
 use ch08_path_tracing::{Method, PathOptions};
 use common::scene::DirectSamples;
-use support::{estimate, grid, scene_file};
+use support::{estimate, grid, render_text, scene_file};
 
 #[test]
 fn every_sample_count_estimates_the_same_direct_light() {
@@ -44,12 +44,8 @@ fn every_sample_count_estimates_the_same_direct_light() {
 /// A matte floor under one point light, rendered by the binary with `emitter_samples` light
 /// samples and no BSDF sample; the image's mean.
 fn point_lit_floor(emitter_samples: u32) -> f64 {
-    let folder = tempfile::tempdir().unwrap();
-    let file = folder.path().join("floor.xml");
-    std::fs::write(
-        &file,
-        format!(
-            r#"<scene version="3.0.0">
+    let image = render_text(&format!(
+        r#"<scene version="3.0.0">
     <integrator type="direct"><integer name="emitter_samples" value="{emitter_samples}"/>
         <integer name="bsdf_samples" value="0"/></integrator>
     <sensor type="perspective"><float name="fov" value="40"/>
@@ -61,26 +57,7 @@ fn point_lit_floor(emitter_samples: u32) -> f64 {
         <bsdf type="diffuse"><rgb name="reflectance" value="0.5"/></bsdf></shape>
     <emitter type="point"><point name="position" x="0" y="2" z="0"/><rgb name="intensity" value="5"/></emitter>
 </scene>"#
-        ),
-    )
-    .unwrap();
-    let image = folder.path().join("floor.pfm");
-    let output = common::test_support::run_binary(
-        env!("CARGO_BIN_EXE_ch08-path-tracing"),
-        &[
-            "render",
-            "--scene",
-            file.to_str().unwrap(),
-            "--out",
-            image.to_str().unwrap(),
-        ],
-    );
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    let image = common::output::read_image(&image).unwrap();
+    ));
     image.pixels.iter().map(|p| f64::from(p.y)).sum::<f64>() / image.pixels.len() as f64
 }
 

@@ -6,10 +6,8 @@
 //! with an outward normal on light samples only, next-event estimation finds no light and
 //! the multiple-importance weights of the BSDF samples leave the disc too dark.
 
-use common::output::read_image;
-use common::test_support::run_binary;
-
-const BIN: &str = env!("CARGO_BIN_EXE_ch08-path-tracing");
+mod support;
+use support::render_text;
 
 const ALBEDO: f32 = 0.5;
 const RADIANCE: f32 = 2.0;
@@ -34,32 +32,9 @@ fn scene(flip: bool) -> String {
     )
 }
 
-fn render(flip: bool) -> common::image::Image {
-    let folder = tempfile::tempdir().unwrap();
-    let file = folder.path().join("dome.xml");
-    std::fs::write(&file, scene(flip)).unwrap();
-    let image = folder.path().join("dome.pfm");
-    let output = run_binary(
-        BIN,
-        &[
-            "render",
-            "--scene",
-            file.to_str().unwrap(),
-            "--out",
-            image.to_str().unwrap(),
-        ],
-    );
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    read_image(&image).unwrap()
-}
-
 #[test]
 fn a_flipped_emitting_sphere_is_a_dome_that_lights_what_is_inside() {
-    let image = render(true);
+    let image = render_text(&scene(true));
     let (mut dome, mut disc) = (Vec::new(), Vec::new());
     for p in &image.pixels {
         // A pixel wholly on the dome shows its radiance exactly; the rest is (partly) disc.
@@ -97,7 +72,7 @@ fn a_flipped_emitting_sphere_is_a_dome_that_lights_what_is_inside() {
 
 #[test]
 fn without_flip_normals_the_dome_is_dark_from_inside() {
-    let image = render(false);
+    let image = render_text(&scene(false));
     assert!(
         image.pixels.iter().all(|p| p.max_element() == 0.0),
         "a sphere's outside is its front: seen from inside, its one-sided light shows nothing"

@@ -2,11 +2,8 @@
 //! and nothing else changes. The same samples are drawn either way, so every pixel that does
 //! not look straight at something glowing must come out bit for bit the same.
 
-use common::output::read_image;
-use common::test_support::run_binary;
-use std::path::Path;
-
-const BIN: &str = env!("CARGO_BIN_EXE_ch08-path-tracing");
+mod support;
+use support::render_text;
 
 /// A floor under a square light, seen from the side, with a grey sky around.
 fn scene(hide: bool) -> String {
@@ -28,33 +25,10 @@ fn scene(hide: bool) -> String {
     )
 }
 
-fn render(text: &str, folder: &Path, name: &str) -> common::image::Image {
-    let scene = folder.join(format!("{name}.xml"));
-    std::fs::write(&scene, text).unwrap();
-    let image = folder.join(format!("{name}.pfm"));
-    let output = run_binary(
-        BIN,
-        &[
-            "render",
-            "--scene",
-            scene.to_str().unwrap(),
-            "--out",
-            image.to_str().unwrap(),
-        ],
-    );
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    read_image(&image).unwrap()
-}
-
 #[test]
 fn hidden_emitters_darken_only_what_the_camera_sees_glowing() {
-    let folder = tempfile::tempdir().unwrap();
-    let shown = render(&scene(false), folder.path(), "shown");
-    let hidden = render(&scene(true), folder.path(), "hidden");
+    let shown = render_text(&scene(false));
+    let hidden = render_text(&scene(true));
     let (mut same, mut darker) = (0, 0);
     for y in 0..shown.height {
         for x in 0..shown.width {
@@ -118,9 +92,8 @@ fn lamp_before_a_wall(hide: bool) -> String {
 
 #[test]
 fn a_hidden_lamp_shows_what_is_behind_it() {
-    let folder = tempfile::tempdir().unwrap();
-    let shown = render(&lamp_before_a_wall(false), folder.path(), "shown");
-    let hidden = render(&lamp_before_a_wall(true), folder.path(), "hidden");
+    let shown = render_text(&lamp_before_a_wall(false));
+    let hidden = render_text(&lamp_before_a_wall(true));
     let centre = (shown.width / 2, shown.height / 2);
     assert_eq!(
         shown.get(centre.0, centre.1),

@@ -1,5 +1,6 @@
 //! Shared helpers: the mean radiance of many paths through fixed film positions, with its
-//! standard error, the chapter's scene files, and the binary's `render` at a tiny size.
+//! standard error, the chapter's scene files, and the binary's `render` at a tiny size or
+//! on a scene written in the test.
 #![allow(dead_code)]
 
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
@@ -153,4 +154,30 @@ pub fn render_tiny(scene: &Path, out: &Path) -> Result<common::image::Image, Str
         scene.display()
     );
     Ok(common::output::read_image(&image).unwrap())
+}
+
+/// The image the binary's `render` makes of the scene file `text` (written to a temporary
+/// folder), at the file's own size and sample count. A refusal fails the test with its
+/// message.
+pub fn render_text(text: &str) -> common::image::Image {
+    let folder = tempfile::tempdir().unwrap();
+    let file = folder.path().join("scene.xml");
+    std::fs::write(&file, text).unwrap();
+    let image = folder.path().join("image.pfm");
+    let output = common::test_support::run_binary(
+        env!("CARGO_BIN_EXE_ch08-path-tracing"),
+        &[
+            "render",
+            "--scene",
+            file.to_str().unwrap(),
+            "--out",
+            image.to_str().unwrap(),
+        ],
+    );
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    common::output::read_image(&image).unwrap()
 }
