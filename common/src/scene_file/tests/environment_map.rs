@@ -7,8 +7,8 @@ use glam::Vec3;
 use image::{ImageFormat, Rgb, Rgb32FImage, RgbImage};
 
 use super::super::parse_scene;
-use super::scene_with;
-use crate::scene::{Capabilities, Chapter, Scene};
+use super::{error_in, scene_in, scene_with};
+use crate::scene::{Capabilities, Chapter};
 
 /// The 4 x 3 map of the scene model's tests: pixel (x, y) holds
 /// `(1 + x, 10 (1 + y), (x + 1)(y + 1) / 2)`, with `bad` NaN at one pixel.
@@ -23,19 +23,6 @@ fn write_exr(path: &Path, bad: bool) {
         Rgb([1.0 + x, green, 0.5 * (x + 1.0) * (y + 1.0)])
     });
     image.save_with_format(path, ImageFormat::OpenExr).unwrap();
-}
-
-fn scene_in(dir: &Path, body: &str) -> Scene {
-    parse_scene(&scene_with(body), &dir.join("scene.xml"), &[])
-        .unwrap_or_else(|e| panic!("{e}"))
-        .scene
-}
-
-fn error_in(dir: &Path, body: &str) -> String {
-    parse_scene(&scene_with(body), &dir.join("scene.xml"), &[])
-        .map(|_| ())
-        .unwrap_err()
-        .to_string()
 }
 
 #[test]

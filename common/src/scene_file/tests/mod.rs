@@ -38,6 +38,22 @@ pub(crate) fn property_config() -> proptest::prelude::ProptestConfig {
     }
 }
 
+/// The scene of `body` (see [`scene_with`]) read as if from `dir`; a loading error fails the
+/// test with its message.
+fn scene_in(dir: &Path, body: &str) -> crate::scene::Scene {
+    super::parse_scene(&scene_with(body), &dir.join("scene.xml"), &[])
+        .unwrap_or_else(|e| panic!("{e}"))
+        .scene
+}
+
+/// The error that reading the scene of `body` from `dir` must give.
+fn error_in(dir: &Path, body: &str) -> String {
+    super::parse_scene(&scene_with(body), &dir.join("scene.xml"), &[])
+        .map(|_| ())
+        .unwrap_err()
+        .to_string()
+}
+
 /// Wraps `body` in a scene with a minimal sensor. The body starts on **line 2**, so a broken
 /// element on the body's first line is reported on line 2.
 fn scene_with(body: &str) -> String {

@@ -6,9 +6,8 @@ use std::path::Path;
 use glam::{Vec2, Vec3};
 use image::{ImageFormat, Rgb, RgbImage};
 
-use super::super::parse_scene;
-use super::{parse, scene_with};
-use crate::scene::{BitmapFilter, Material, Scene, Texture, WrapMode};
+use super::{error_in, parse, scene_in, scene_with};
+use crate::scene::{BitmapFilter, Material, Texture, WrapMode};
 
 /// A 2 x 1 PNG: red on the left, blue on the right.
 fn write_png(path: &Path) {
@@ -25,19 +24,6 @@ fn write_png(path: &Path) {
 /// A rectangle made of `bsdf`.
 fn rectangle(bsdf: &str) -> String {
     format!(r#"<shape type="rectangle">{bsdf}</shape>"#)
-}
-
-fn scene_in(dir: &Path, body: &str) -> Scene {
-    parse_scene(&scene_with(body), &dir.join("scene.xml"), &[])
-        .unwrap_or_else(|e| panic!("{e}"))
-        .scene
-}
-
-fn error_in(dir: &Path, body: &str) -> String {
-    parse_scene(&scene_with(body), &dir.join("scene.xml"), &[])
-        .map(|_| ())
-        .unwrap_err()
-        .to_string()
 }
 
 #[test]
