@@ -62,6 +62,12 @@ fn profile_dir() -> PathBuf {
 }
 
 /// Builds every chapter binary once per process, with the profile of this test.
+///
+/// It builds the whole workspace's binaries, not only the chapters': cargo settles a
+/// dependency's features over the packages it is asked to build, so `-p` with the chapters
+/// alone would compile `common` and every chapter once more with other features (two minutes
+/// on a 2-core machine) and replace the binaries `cargo test --workspace` has just built.
+/// Asked for the whole workspace, it finds them up to date.
 static BUILT: LazyLock<PathBuf> = LazyLock::new(|| {
     let dir = profile_dir();
     let profile = match dir.file_name().and_then(|n| n.to_str()) {
@@ -70,10 +76,14 @@ static BUILT: LazyLock<PathBuf> = LazyLock::new(|| {
     };
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut command = Command::new(cargo);
-    command.args(["build", "--quiet", "--bins", "--profile", &profile]);
-    for chapter in CHAPTERS {
-        command.args(["-p", chapter]);
-    }
+    command.args([
+        "build",
+        "--quiet",
+        "--workspace",
+        "--bins",
+        "--profile",
+        &profile,
+    ]);
     let status = command
         .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")))
         .status()
