@@ -97,6 +97,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "a coarse mesh sphere with vertex normals as glass and as a mirror: both turn light about the interpolated shading normal, as Mitsuba's shading frame does, so they look round rather than cut",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "brushed",
+            checks: "anisotropic roughness (alpha_u and alpha_v) brushed along each shape's dp/du as Mitsuba's shading frame takes it: a turned sphere along its parallels, a mesh along its texture's u (not its edges), a disk along its radii, a copper panel and a rough glass pane turned about their normals",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

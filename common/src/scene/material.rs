@@ -228,6 +228,13 @@ pub struct Microfacet {
     /// `alpha_v` as a texture; [`Scene::material_at`](super::Scene::material_at) reads them
     /// at a hit into `alpha_u` and `alpha_v`, and chapters before 08 refuse them.
     pub alpha_texture: Option<AlphaTexture>,
+    /// The tangent `alpha_u` runs along at a hit: the shape's `dp/du` there
+    /// ([`Shape::dp_du`](crate::geometry::Shape::dp_du)), made perpendicular to the shading
+    /// normal where the frame is built, as Mitsuba builds its shading frame.
+    /// [`Scene::material_at`](super::Scene::material_at) fills it in where the widths differ;
+    /// zero in a material as written, and then the frame is built from the normal alone (as
+    /// Mitsuba's is where `dp/du` vanishes), which for a round roughness changes nothing.
+    pub dp_du: Vec3,
 }
 
 /// A rough surface's widths as textures, each read as Mitsuba reads one number from a
@@ -258,6 +265,17 @@ impl Microfacet {
             alpha_u: alpha,
             alpha_v: alpha,
             alpha_texture: None,
+            dp_du: Vec3::ZERO,
+        }
+    }
+
+    /// Width `alpha_u` along the surface's tangent and `alpha_v` across it (Mitsuba's
+    /// `alpha_u` and `alpha_v`).
+    pub fn anisotropic(distribution: MicrofacetDistribution, alpha_u: f32, alpha_v: f32) -> Self {
+        Self {
+            alpha_u,
+            alpha_v,
+            ..Self::isotropic(distribution, alpha_u)
         }
     }
 

@@ -162,35 +162,37 @@ impl Scene {
     /// The textures of plastic, metals and glass (a [`Plastic`]'s `diffuse_texture` and
     /// `specular_texture`, a [`Conductor`]'s `specular_texture`, a [`TintedGlass`]'s two) are
     /// read the same way: each
-    /// multiplies its colour, and the material returned has no texture left.
+    /// multiplies its colour, and the material returned has no texture left. A rough
+    /// material's textured widths are read too, and where its two widths differ it gets the
+    /// shape's `dp/du` at `uv` ([`Microfacet::dp_du`]), the tangent they are measured along.
     pub fn material_at(&self, shape: u32, uv: Vec2) -> Material {
-        self.read_at(&self.surface(shape).material, uv)
+        self.read_at(&self.surface(shape).material, shape, uv)
     }
 
-    /// `material` with its textures read at `uv` (a mask's opacity and nested material too).
-    fn read_at(&self, material: &Material, uv: Vec2) -> Material {
+    /// `material` of shape number `shape` with its textures read at `uv` (a mask's opacity and
+    /// nested material too).
+    fn read_at(&self, material: &Material, shape: u32, uv: Vec2) -> Material {
         let factor = |texture: Option<Texture>| texture.map_or(Vec3::ONE, |t| self.albedo(t, uv));
+        // Whether a roughness must be read at the hit: its widths' textures, or its tangent.
+        let varies = |m: Option<Microfacet>| {
+            m.is_some_and(|m| m.alpha_texture.is_some() || m.is_anisotropic())
+        };
         match material {
             &Material::TexturedDiffuse { texture, two_sided } => Material::Diffuse {
                 albedo: self.albedo(texture, uv),
                 two_sided,
             },
-            &Material::Conductor(c)
-                if c.specular_texture.is_some()
-                    || c.roughness.is_some_and(|m| m.alpha_texture.is_some()) =>
-            {
+            &Material::Conductor(c) if c.specular_texture.is_some() || varies(c.roughness) => {
                 Material::Conductor(Conductor {
                     specular_reflectance: c.specular_reflectance * factor(c.specular_texture),
                     specular_texture: None,
-                    roughness: c.roughness.map(|m| self.microfacet_at(m, uv)),
+                    roughness: c.roughness.map(|m| self.microfacet_at(m, shape, uv)),
                     ..c
                 })
             }
-            &Material::RoughGlass(g)
-                if g.stands_in_for.is_some_and(|m| m.alpha_texture.is_some()) =>
-            {
+            &Material::RoughGlass(g) if varies(g.stands_in_for) => {
                 Material::RoughGlass(RoughGlass {
-                    stands_in_for: g.stands_in_for.map(|m| self.microfacet_at(m, uv)),
+                    stands_in_for: g.stands_in_for.map(|m| self.microfacet_at(m, shape, uv)),
                     ..g
                 })
             }
@@ -208,10 +210,10 @@ impl Scene {
             &Material::TintedGlass(g)
                 if g.reflectance_texture.is_some()
                     || g.transmittance_texture.is_some()
-                    || g.roughness.is_some_and(|m| m.alpha_texture.is_some()) =>
+                    || varies(g.roughness) =>
             {
                 Material::TintedGlass(TintedGlass {
-                    roughness: g.roughness.map(|m| self.microfacet_at(m, uv)),
+                    roughness: g.roughness.map(|m| self.microfacet_at(m, shape, uv)),
                     specular_reflectance: g.specular_reflectance * factor(g.reflectance_texture),
                     specular_transmittance: g.specular_transmittance
                         * factor(g.transmittance_texture),
@@ -222,7 +224,7 @@ impl Scene {
             }
             Material::Mask(mask) => Material::Mask(Mask {
                 opacity: Opacity::Uniform(self.opacity(mask.opacity, uv)),
-                nested: Box::new(self.read_at(&mask.nested, uv)),
+                nested: Box::new(self.read_at(&mask.nested, shape, uv)),
             }),
             material => material.clone(),
         }
@@ -265,23 +267,36 @@ impl Scene {
         }
     }
 
-    /// `microfacet` with its textured widths read at `uv`, each at least `10⁻⁴` as Mitsuba
-    /// keeps them (a width of 0 is a mirror no microfacet model describes).
-    fn microfacet_at(&self, microfacet: Microfacet, uv: Vec2) -> Microfacet {
-        let Some(textures) = microfacet.alpha_texture else {
-            return microfacet;
-        };
-        let width = |texture: Option<Texture>, number: f32| {
-            let alpha = texture.map_or(number, |t| self.texture_value(t, uv));
-            // `max` also turns a NaN into the smallest width.
-            alpha.max(MICROFACET_MIN_ALPHA)
-        };
-        Microfacet {
-            alpha_u: width(textures.u, microfacet.alpha_u),
-            alpha_v: width(textures.v, microfacet.alpha_v),
-            alpha_texture: None,
-            ..microfacet
+    /// `microfacet` on shape number `shape` at `uv`: its textured widths read there, each at
+    /// least `10⁻⁴` as Mitsuba keeps them (a width of 0 is a mirror no microfacet model
+    /// describes), and, where the two widths differ, the shape's `dp/du` they run along.
+    fn microfacet_at(&self, microfacet: Microfacet, shape: u32, uv: Vec2) -> Microfacet {
+        let mut read = microfacet;
+        if let Some(textures) = microfacet.alpha_texture {
+            let width = |texture: Option<Texture>, number: f32| {
+                let alpha = texture.map_or(number, |t| self.texture_value(t, uv));
+                // `max` also turns a NaN into the smallest width.
+                alpha.max(MICROFACET_MIN_ALPHA)
+            };
+            read.alpha_u = width(textures.u, microfacet.alpha_u);
+            read.alpha_v = width(textures.v, microfacet.alpha_v);
+            read.alpha_texture = None;
         }
+        if read.is_anisotropic() {
+            read.dp_du = self.dp_du(shape, uv);
+        }
+        read
+    }
+
+    /// The `dp/du` of shape number `shape` at surface parameters `uv`
+    /// ([`Shape::dp_du`](crate::geometry::Shape::dp_du)); zero on a moving shape, whose
+    /// surface runs in a direction that changes with the time (its rough material's frame is
+    /// then built from the normal alone).
+    pub fn dp_du(&self, shape: u32, uv: Vec2) -> Vec3 {
+        self.geometry
+            .shapes()
+            .get(shape as usize)
+            .map_or(Vec3::ZERO, |still| still.dp_du(uv))
     }
 
     /// The radiance the emitter of shape number `shape` sends from its front side at surface

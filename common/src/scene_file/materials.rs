@@ -724,12 +724,7 @@ fn microfacet(
     }
     match (alpha_u, alpha_v) {
         (Some(u), Some(v)) => Ok(with_textures(
-            Microfacet {
-                distribution,
-                alpha_u: number(u),
-                alpha_v: number(v),
-                alpha_texture: None,
-            },
+            Microfacet::anisotropic(distribution, number(u), number(v)),
             u,
             v,
         )),

@@ -12,11 +12,12 @@
 //!   says which medium the path is in.
 //!
 //! An anisotropic roughness (`alpha_u` along the tangent, `alpha_v` across) needs the
-//! tangent. Mitsuba's is the shape's `dp/du` made orthogonal to the shading normal; the
-//! workbook's hits carry no `dp/du`, so the tangent here is the one Mitsuba's `Frame3f(n)`
-//! builds from the normal alone ([`LocalFrame::around`]). Anisotropic surfaces then match
-//! Mitsuba only where its `dp/du` lies along that tangent: on a rectangle facing `+y` with no
-//! rotation about `y` (both give `+x`), not on spheres, where `dp/du` runs along the parallels.
+//! tangent. As in Mitsuba, it is the shape's `dp/du` made perpendicular to the shading normal
+//! ([`LocalFrame::along`]): a sphere is brushed along its parallels, a mesh along its
+//! texture's `u`. `Scene::material_at` puts `dp/du` in the roughness ([`Microfacet::dp_du`])
+//! only where the widths differ; a round roughness looks the same about any tangent, and its
+//! frame is the one Mitsuba's `coordinate_system(n)` builds from the normal alone
+//! ([`LocalFrame::around`]).
 //!
 //! Random numbers: every sample draws one number that picks a lobe (reflection or refraction,
 //! coat or base; the metal has one lobe and ignores it) and then two for the facet or the
@@ -53,12 +54,31 @@ impl LocalFrame {
         }
     }
 
+    /// A frame around the unit `normal` whose tangent is `dp_du` made perpendicular to it, as
+    /// Mitsuba's shading frame (`s` the normalised remainder of `dp/du`, `t = n × s`); the frame
+    /// [`around`](Self::around) the normal where nothing of `dp_du` remains (it is zero, or
+    /// along the normal, where what is left is rounding error that points anywhere).
+    pub fn along(normal: Vec3, dp_du: Vec3) -> Self {
+        let remainder = dp_du - normal * normal.dot(dp_du);
+        let enough = remainder.length_squared() > 1e-10 * dp_du.length_squared();
+        if !enough {
+            return Self::around(normal); // also for a NaN
+        }
+        let tangent = remainder.normalize();
+        Self {
+            tangent,
+            bitangent: normal.cross(tangent),
+            normal,
+        }
+    }
+
     /// The frame at a one-sided or `twosided` surface seen from `wo`: around the shading
-    /// normal, its `z` turned towards `wo` when `two_sided` and `wo` is behind (the tangents
-    /// unchanged, as Mitsuba's `twosided` does); `None` from behind a one-sided surface.
-    pub fn facing(hit: &SurfaceHit, wo: Vec3, two_sided: bool) -> Option<Self> {
+    /// normal with its tangent along `dp_du`, its `z` turned towards `wo` when `two_sided`
+    /// and `wo` is behind (the tangents unchanged, as Mitsuba's `twosided` does); `None` from
+    /// behind a one-sided surface.
+    pub fn facing(hit: &SurfaceHit, wo: Vec3, two_sided: bool, dp_du: Vec3) -> Option<Self> {
         let normal = facing_normal(hit, wo, two_sided)?;
-        let frame = Self::around(hit.shading_n);
+        let frame = Self::along(hit.shading_n, dp_du);
         Some(Self { normal, ..frame })
     }
 
@@ -118,7 +138,7 @@ pub fn conductor(
     metal: &Conductor,
     roughness: Microfacet,
 ) -> Option<Placed<RoughConductor>> {
-    let frame = LocalFrame::facing(hit, wo, metal.two_sided)?;
+    let frame = LocalFrame::facing(hit, wo, metal.two_sided, roughness.dp_du)?;
     Some(Placed {
         bsdf: RoughConductor {
             distribution: distribution(roughness),
@@ -140,7 +160,7 @@ pub fn plastic(
     plastic: &Plastic,
     roughness: Microfacet,
 ) -> Option<Placed<RoughPlastic>> {
-    let frame = LocalFrame::facing(hit, wo, plastic.two_sided)?;
+    let frame = LocalFrame::facing(hit, wo, plastic.two_sided, roughness.dp_du)?;
     let bsdf = RoughPlastic::new(RoughPlasticParameters {
         kind: roughness.distribution,
         alpha: roughness.alpha(),
@@ -160,7 +180,7 @@ pub fn dielectric(
 ) -> Placed<RoughDielectric> {
     Placed {
         bsdf: RoughDielectric::new(distribution(roughness), glass.int_ior, glass.ext_ior),
-        frame: LocalFrame::around(hit.shading_n),
+        frame: LocalFrame::along(hit.shading_n, roughness.dp_du),
     }
 }
 
@@ -175,7 +195,7 @@ pub fn tinted_dielectric(
     bsdf.specular_transmittance = glass.specular_transmittance;
     Placed {
         bsdf,
-        frame: LocalFrame::around(hit.shading_n),
+        frame: LocalFrame::along(hit.shading_n, roughness.dp_du),
     }
 }
 
@@ -214,5 +234,31 @@ mod tests {
         assert!((frame.to_local(normal) - Vec3::Z).length() < 1e-6);
         let w = Vec3::new(-0.2, 0.9, 0.1).normalize();
         assert!((frame.to_world(frame.to_local(w)) - w).length() < 1e-6);
+    }
+
+    #[test]
+    fn the_tangent_is_dp_du_made_perpendicular_to_the_normal() {
+        let normal = Vec3::new(0.0, 0.6, 0.8);
+        // dp/du leans out of the tangent plane; what is left of it runs along +x.
+        let frame = LocalFrame::along(normal, Vec3::new(2.0, 0.3, 0.4));
+        assert!(
+            (frame.tangent - Vec3::X).length() < 1e-6,
+            "{}",
+            frame.tangent
+        );
+        // Right-handed, as Mitsuba's frame (s, n × s, n).
+        assert!((frame.bitangent - normal.cross(Vec3::X)).length() < 1e-6);
+        assert!((frame.to_local(normal) - Vec3::Z).length() < 1e-6);
+    }
+
+    #[test]
+    fn without_a_tangent_the_frame_is_built_from_the_normal() {
+        let normal = Vec3::new(0.3, -0.5, 0.8).normalize();
+        let around = LocalFrame::around(normal);
+        for dp_du in [Vec3::ZERO, normal * 3.0, Vec3::NAN] {
+            let frame = LocalFrame::along(normal, dp_du);
+            assert_eq!(frame.tangent, around.tangent, "dp/du {dp_du}");
+            assert_eq!(frame.bitangent, around.bitangent, "dp/du {dp_du}");
+        }
     }
 }

@@ -265,12 +265,7 @@ fn microfacet_glass_case(alpha: f32, chart: f32, wo: Vec3, name: &str) -> Case {
 /// The microfacet models through `Bsdf`: an anisotropic metal from above and, two-sided, from
 /// below (its frame's `z` turned round), and rough glass from both sides.
 pub fn microfacet() -> [Case; MICROFACET] {
-    let stretched = Microfacet {
-        distribution: MicrofacetDistribution::Beckmann,
-        alpha_u: 0.05,
-        alpha_v: 0.3,
-        alpha_texture: None,
-    };
+    let stretched = Microfacet::anisotropic(MicrofacetDistribution::Beckmann, 0.05, 0.3);
     [
         metal_case(stretched, false, 8.0, at(50.0, true), "50°"),
         metal_case(

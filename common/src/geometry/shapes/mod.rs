@@ -5,6 +5,7 @@
 //! and know its area (for sampling area lights).
 
 mod disc;
+mod dp_du;
 mod mesh;
 mod parallelogram;
 mod plane;

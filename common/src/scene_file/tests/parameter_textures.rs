@@ -396,3 +396,32 @@ fn rough_metals_and_glass_take_their_widths_from_textures() {
         assert!(error.contains(says), "{bsdf}: {error}");
     }
 }
+
+#[test]
+fn an_anisotropic_roughness_runs_along_the_shapes_dp_du() {
+    // The rectangle's dp/du is its first edge, to_world's x scaled by 2.
+    let stretched = one_shape(
+        r#"<bsdf type="roughconductor"><float name="alpha_u" value="0.05"/>
+             <float name="alpha_v" value="0.3"/></bsdf>"#,
+    );
+    assert_eq!(
+        roughness_at(&stretched, LEFT).dp_du,
+        Vec3::new(2.0, 0.0, 0.0)
+    );
+    // A round roughness needs no tangent, and gets none.
+    let round =
+        one_shape(r#"<bsdf type="roughdielectric"><float name="alpha" value="0.2"/></bsdf>"#);
+    assert_eq!(roughness_at(&round, LEFT).dp_du, Vec3::ZERO);
+    // Textured widths that differ at a hit get it there, and not where they agree.
+    let scene = one_shape(
+        r#"<bsdf type="roughconductor"><float name="alpha_u" value="0.3"/>
+             <texture type="checkerboard" name="alpha_v"><float name="color0" value="0.1"/>
+               <float name="color1" value="0.3"/></texture></bsdf>"#,
+    );
+    assert_eq!(roughness_at(&scene, LEFT).dp_du, Vec3::ZERO, "0.3 and 0.3");
+    assert_eq!(
+        roughness_at(&scene, RIGHT).dp_du,
+        Vec3::new(2.0, 0.0, 0.0),
+        "0.3 and 0.1"
+    );
+}
