@@ -16,6 +16,8 @@ use roxmltree::Document;
 use super::error::{SceneError, TextPosition};
 use super::values::substitute;
 
+mod upgrade;
+
 /// How deep includes may nest before the loader assumes a file includes itself.
 const MAX_INCLUDE_DEPTH: usize = 16;
 
@@ -183,13 +185,22 @@ impl TreeBuilder<'_> {
                 message: format!("malformed XML: {error}"),
             }
         })?;
-        let root = convert(&document, document.root_element(), included);
+        let mut root = convert(&document, document.root_element(), included);
         if !root.has_name("scene") {
             let message = format!(
                 "expected <scene> as the outer element, found <{}>",
                 root.name
             );
             return Err(SceneError::at(self.scene_file, &root.position, message));
+        }
+        // A file written for Mitsuba 0.6 is upgraded as Mitsuba 3 upgrades it, before its
+        // includes (which have versions of their own) are read in.
+        if let Some(version) = root.attribute("version") {
+            let old = upgrade::is_before_version_2(version)
+                .map_err(|message| self.error(&root, message))?;
+            if old {
+                upgrade::upgrade_from_version_1(&mut root);
+            }
         }
         let mut children = Vec::new();
         for child in root.children {

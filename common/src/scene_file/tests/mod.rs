@@ -11,6 +11,7 @@ mod mesh_files;
 mod mesh_scenes;
 mod model;
 mod never_panics;
+mod old_versions;
 mod parameter_textures;
 mod spectra;
 mod textures;
