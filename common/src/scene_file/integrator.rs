@@ -1,4 +1,9 @@
-//! `<integrator>`: `path` and `direct`.
+//! `<integrator>`: `path` and `direct`; `volpath` and `volpathmis` are `path`.
+//!
+//! Mitsuba's volumetric path tracers differ from its `path` only inside participating media,
+//! which the loader refuses (a `<medium>` is no element it reads): on surfaces alone they
+//! sample lights, BSDFs, MIS and the roulette as `path` does, with the same `max_depth`,
+//! `rr_depth` and `hide_emitters`, so a file that names one renders as with `path`.
 
 use super::element::Element;
 
@@ -57,7 +62,7 @@ pub(super) fn read_integrator(
             })
     };
     let integrator = match type_name.as_str() {
-        "path" => Integrator::Path {
+        "path" | "volpath" | "volpathmis" => Integrator::Path {
             max_depth: depth(
                 "max_depth",
                 -1,
@@ -71,7 +76,8 @@ pub(super) fn read_integrator(
                 node,
                 format!(
                     "the integrator type \"{type_name}\" is not one the workbook renders: it \
-                     knows Mitsuba's path and direct"
+                     knows Mitsuba's path and direct (and volpath and volpathmis, which are path \
+                     where there are no participating media)"
                 ),
             ));
         }

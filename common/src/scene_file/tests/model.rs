@@ -136,8 +136,8 @@ fn what_no_chapter_renders_is_refused_where_it_is_written() {
             "ellipsoid",
         ),
         (
-            r#"<integrator type="volpath"/>"#,
-            "the integrator type \"volpath\"",
+            r#"<integrator type="ptracer"/>"#,
+            "the integrator type \"ptracer\"",
         ),
     ] {
         let error = scene(&scene_with(body)).expect_err(body);
@@ -169,4 +169,23 @@ fn an_anisotropic_roughness_keeps_both_widths_and_its_lobe_takes_their_mean() {
     // The round lobe of chapters 06 and 07: alpha = sqrt(0.05 * 0.2) = 0.1, n = 2 / 0.01 - 2.
     approx::assert_relative_eq!(roughness.alpha(), 0.1, max_relative = 1e-6);
     approx::assert_relative_eq!(roughness.lobe_exponent(), 198.0, max_relative = 1e-4);
+}
+
+#[test]
+fn the_volumetric_path_tracers_are_the_path_tracer_where_there_are_no_media() {
+    let with = |integrator: &str| {
+        scene(&scene_with(&format!(
+            r#"<integrator type="{integrator}"><integer name="max_depth" value="7"/>
+                 <integer name="rr_depth" value="3"/><boolean name="hide_emitters" value="true"/>
+               </integrator>"#
+        )))
+        .unwrap_or_else(|e| panic!("{integrator}: {e}"))
+    };
+    let path = with("path");
+    for integrator in ["volpath", "volpathmis"] {
+        let volumetric = with(integrator);
+        assert_eq!(volumetric.integrator, path.integrator, "{integrator}");
+        assert_eq!(volumetric.max_depth, path.max_depth, "{integrator}");
+        assert!(volumetric.hide_emitters, "{integrator}");
+    }
 }
