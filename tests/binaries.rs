@@ -63,11 +63,12 @@ fn profile_dir() -> PathBuf {
 
 /// Builds every chapter binary once per process, with the profile of this test.
 ///
-/// It builds the whole workspace's binaries, not only the chapters': cargo settles a
-/// dependency's features over the packages it is asked to build, so `-p` with the chapters
-/// alone would compile `common` and every chapter once more with other features (two minutes
-/// on a 2-core machine) and replace the binaries `cargo test --workspace` has just built.
-/// Asked for the whole workspace, it finds them up to date.
+/// It asks for what `cargo test --workspace` builds (every package's binaries and tests), not
+/// for the chapters' binaries alone: cargo settles a dependency's features over the packages
+/// and targets it is asked to build, so a narrower request would compile `common`, every
+/// chapter and the book's binary once more with other features (three minutes on a 2-core
+/// machine), replacing the binaries `cargo test --workspace` has just built and that the
+/// book's own run reuses. Asked for the same, it finds them up to date.
 static BUILT: LazyLock<PathBuf> = LazyLock::new(|| {
     let dir = profile_dir();
     let profile = match dir.file_name().and_then(|n| n.to_str()) {
@@ -81,6 +82,7 @@ static BUILT: LazyLock<PathBuf> = LazyLock::new(|| {
         "--quiet",
         "--workspace",
         "--bins",
+        "--tests",
         "--profile",
         &profile,
     ]);

@@ -98,6 +98,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             variant: MITSUBA_VARIANT,
         },
         AgreementScene {
+            name: "textured-light",
+            checks: "a panel light whose radiance is an image with bright patches on a dim background: its light samples picked where the image is bright, as Mitsuba picks them by the texture (by area they were 3.8 times as noisy)",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
             name: "brushed",
             checks: "anisotropic roughness (alpha_u and alpha_v) brushed along each shape's dp/du as Mitsuba's shading frame takes it: a turned sphere along its parallels, a mesh along its texture's u (not its edges), a disk along its radii, a copper panel and a rough glass pane turned about their normals",
             variant: MITSUBA_VARIANT,

@@ -18,21 +18,25 @@
 //!
 //! An area light's radiance may be a texture (Mitsuba's `<texture name="radiance">`): then
 //! what it sends depends on the point, read at the point's surface parameters both where a
-//! ray hits the light ([`SceneLights::emitted`]) and at the point a light sample picks. The
-//! point is still picked by area (or, on a sphere, by solid angle), whatever the texture:
-//! the same mean as Mitsuba 3, which instead picks the point by the texture's own
-//! distribution over `uv` (a bitmap's brightness) when the radiance varies, so its noise is
-//! lower on a light with bright spots.
+//! ray hits the light ([`SceneLights::emitted`]) and at the point a light sample picks. On a
+//! parallelogram (a panel, a window, a screen) the point is picked where the texture is
+//! bright (`Scene::emission_grid`), as Mitsuba 3 picks it by the texture: a panel with a few
+//! bright spots would otherwise spend most samples on its dark parts. On other shapes it is
+//! still picked by area (or, on a sphere, by solid angle): the same mean, more noise where
+//! the texture has bright spots.
 
 use crate::environment::EnvironmentLight;
 use ch05_motion_blur::MotionScene;
+use ch07_soft_shadows::area_sampling::parallelogram_point_error;
 use ch07_soft_shadows::light::LightShape;
 use ch07_soft_shadows::light_sample::LightSample;
 use ch07_soft_shadows::solid_angle::{pdf_area_to_solid_angle, sphere_solid_angle_pdf};
 use ch07_soft_shadows::{AreaLight, AreaLights, LightSampling, Strategy};
 use common::Ray;
-use common::geometry::SurfaceHit;
-use common::scene::{AreaEmitter, PointLight, Scene};
+use common::geometry::{Parallelogram, SurfaceHit};
+#[cfg(test)]
+use common::scene::luminance;
+use common::scene::{AreaEmitter, GridDistribution, PointLight, Scene};
 use glam::{Vec2, Vec3};
 
 /// One of the lights a light sample picks from.
@@ -235,14 +239,22 @@ impl<'a> SceneLights<'a> {
             LightRef::Area(i) => {
                 let pick = self.pick_probability();
                 let light = &self.area[i];
-                let sample = light.sample(x, u, self.sampling)?;
+                let shape = self.shape_of_light[i];
+                let sample = match self.textured_panel(light, shape) {
+                    Some((quad, grid)) => {
+                        let (uv, density) = grid.sample(u);
+                        let error = parallelogram_point_error(&quad, uv);
+                        let p = quad.point_at(uv.x, uv.y);
+                        LightSample::by_area(p, error, quad.normal(), density / quad.area())?
+                    }
+                    None => light.sample(x, u, self.sampling)?,
+                };
                 let to_light = sample.p - x;
                 let d2 = to_light.length_squared();
                 let wi = to_light / d2.sqrt();
                 let pdf = sample
                     .pdf_solid_angle
                     .unwrap_or_else(|| pdf_area_to_solid_angle(sample.pdf, d2, sample.n.dot(wi)));
-                let shape = self.shape_of_light[i];
                 let uv = || self.uv_of(shape, x, sample.p);
                 LightDirection {
                     wi,
@@ -271,6 +283,15 @@ impl<'a> SceneLights<'a> {
     /// that hit the light needs for its MIS weight.
     pub fn area_pdf(&self, light: &AreaLight, x: Vec3, y: Vec3, n_y: Vec3) -> f32 {
         let to_light = y - x;
+        if let Some((quad, grid)) = self
+            .index_of(light)
+            .and_then(|i| self.textured_panel(light, self.shape_of_light[i]))
+        {
+            let d2 = to_light.length_squared();
+            let density = grid.density(quad.uv_of(y)) / quad.area();
+            return self.pick_probability()
+                * pdf_area_to_solid_angle(density, d2, n_y.dot(to_light / d2.sqrt()));
+        }
         let pdf = match (light.shape, self.sampling.strategy) {
             (LightShape::Sphere(sphere), Strategy::SolidAngle) => {
                 sphere_solid_angle_pdf(&sphere, x, to_light)
@@ -284,9 +305,106 @@ impl<'a> SceneLights<'a> {
         self.pick_probability() * pdf
     }
 
+    /// The parallelogram of `light` (shape number `shape`) and the density over its `uv` its
+    /// light samples are drawn with, when its radiance is a texture; `None` for every other
+    /// light.
+    #[inline]
+    fn textured_panel(
+        &self,
+        light: &AreaLight,
+        shape: u32,
+    ) -> Option<(Parallelogram, &'a GridDistribution)> {
+        match light.shape {
+            LightShape::Parallelogram(quad) => Some((quad, self.scene.emission_grid(shape)?)),
+            _ => None,
+        }
+    }
+
+    /// The index in [`area`](Self::area) of `light`, a reference into it (as
+    /// [`area_light_of`](Self::area_light_of) gives), found by its place in memory.
+    fn index_of(&self, light: &AreaLight) -> Option<usize> {
+        let offset =
+            (light as *const AreaLight as usize).checked_sub(self.area.as_ptr() as usize)?;
+        let index = offset / std::mem::size_of::<AreaLight>();
+        self.area
+            .get(index)
+            .filter(|candidate| std::ptr::eq(*candidate, light))
+            .map(|_| index)
+    }
+
     /// The density with which the environment is sampled in `direction`, pick included.
     #[inline]
     pub fn environment_pdf(&self, direction: Vec3) -> f32 {
         self.pick_probability() * self.environment.pdf(direction)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ch07_soft_shadows::LightSampling;
+    use common::scene_file::parse_scene;
+
+    /// The chapter's scene with a textured panel light.
+    fn textured_light_world() -> MotionScene {
+        let file = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/textured-light.xml");
+        let text = std::fs::read_to_string(file).unwrap();
+        let loaded = parse_scene(&text, std::path::Path::new(file), &[]).unwrap();
+        MotionScene::new(loaded.scene).unwrap()
+    }
+
+    /// A light sample's density is the one `area_pdf` gives for the point it picked, or MIS
+    /// would weigh the two ways of finding the light wrongly; and the samples gather where
+    /// the image is bright.
+    #[test]
+    fn a_textured_panel_is_sampled_where_it_is_bright_with_the_density_area_pdf_gives() {
+        let world = textured_light_world();
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        let (index, light) = lights
+            .area
+            .iter()
+            .enumerate()
+            .find(|(_, light)| matches!(light.shape, LightShape::Parallelogram(_)))
+            .unwrap();
+        assert!(
+            lights
+                .textured_panel(light, lights.shape_of_light[index])
+                .is_some()
+        );
+        let receiver = world
+            .scene
+            .geometry
+            .intersect(&Ray::new(
+                Vec3::new(1.5, 1.0, 1.5),
+                Vec3::new(0.0, -1.0, 0.0),
+            ))
+            .unwrap();
+        // The numbers on a 64 x 64 grid over the square.
+        let (mut bright, n) = (0, 64 * 64);
+        for k in 0..n {
+            let u = Vec2::new((k % 64) as f32 + 0.5, (k / 64) as f32 + 0.5) / 64.0;
+            let Some(sample) = lights.sample(LightRef::Area(index), &receiver, u) else {
+                continue;
+            };
+            let ShadowTarget::Surface(point) = sample.target else {
+                panic!("an area light's sample has a point")
+            };
+            let pdf = lights.area_pdf(light, receiver.p, point.p, point.n);
+            assert!(
+                (pdf - sample.pdf).abs() <= 1e-4 * sample.pdf,
+                "sampled with {} but area_pdf says {pdf}",
+                sample.pdf
+            );
+            if luminance(sample.radiance) > 1.0 {
+                bright += 1;
+            }
+        }
+        // The bright patches are under a tenth of the panel; picked by area, a tenth of the
+        // samples would land there.
+        assert!(
+            bright > n * 8 / 10,
+            "only {bright} of {n} samples on the bright patches"
+        );
     }
 }

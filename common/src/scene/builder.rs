@@ -113,6 +113,7 @@ impl SceneBuilder {
             max_depth,
             hide_emitters: false,
             origins: Origins::default(),
+            emission_grids: Default::default(),
         }
     }
 }

@@ -21,8 +21,10 @@
 mod builder;
 mod camera;
 mod capabilities;
+mod emission_sampling;
 mod environment_map;
 mod environment_sampling;
+mod grid_distribution;
 mod light;
 mod material;
 mod settings;
@@ -31,8 +33,10 @@ mod texture;
 pub use builder::SceneBuilder;
 pub use camera::{Camera, CameraFrame, CameraModel};
 pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
+pub use emission_sampling::{EMISSION_GRID, UNIFORM_SHARE};
 pub use environment_map::{EnvironmentMap, EnvironmentMapError, direction_of, direction_to_uv};
 pub use environment_sampling::{EnvironmentSampling, luminance};
+pub use grid_distribution::GridDistribution;
 pub use light::{AreaEmitter, PointLight};
 pub use material::{
     AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
@@ -95,6 +99,9 @@ pub struct Scene {
     /// Where the scene's parts are written in its file, for messages; empty for built-in
     /// scenes.
     pub origins: Origins,
+    /// For each shape, the density its light samples are drawn with when its radiance is a
+    /// texture ([`Scene::emission_grid`]), worked out on first use.
+    pub emission_grids: std::sync::OnceLock<Vec<Option<GridDistribution>>>,
 }
 
 /// What the surface of one shape is made of, whether it glows, and where it was written.

@@ -76,6 +76,13 @@ impl Parallelogram {
         self.normal
     }
 
+    /// The surface parameters `(u, v)` of the point `p` of its plane (of its projection
+    /// onto the plane, for a point off it).
+    pub fn uv_of(&self, p: Vec3) -> Vec2 {
+        let d = p - self.corner;
+        Vec2::new(d.dot(self.dual_u), d.dot(self.dual_v))
+    }
+
     /// The point with surface parameters `(u, v)`.
     pub fn point_at(&self, u: f32, v: f32) -> Vec3 {
         self.corner + u * self.e1 + v * self.e2
