@@ -82,7 +82,10 @@ pub fn render_with_mitsuba(
             String::from_utf8_lossy(&output.stderr)
         ));
     }
-    let version = String::from_utf8_lossy(&output.stdout).trim().to_string();
+    // The version is the script's last line; Mitsuba's warnings (a bitmap brighter than 1)
+    // may come before it on the same stream.
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let version = stdout.lines().last().unwrap_or_default().trim().to_string();
     let image = read_image(&out).map_err(|e| e.to_string())?;
     Ok((image, version))
 }
