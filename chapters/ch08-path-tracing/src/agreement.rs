@@ -103,6 +103,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             variant: MITSUBA_VARIANT,
         },
         AgreementScene {
+            name: "sunlit",
+            checks: "two directional lights (Mitsuba's directional: infinitely far away, one given by its direction, one by its to_world) with a constant sky: deltas connected through one shadow ray each, sharp shadows, their highlights on rough gold",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
             name: "brushed",
             checks: "anisotropic roughness (alpha_u and alpha_v) brushed along each shape's dp/du as Mitsuba's shading frame takes it: a turned sphere along its parallels, a mesh along its texture's u (not its edges), a disk along its radii, a copper panel and a rough glass pane turned about their normals",
             variant: MITSUBA_VARIANT,

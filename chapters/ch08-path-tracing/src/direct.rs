@@ -22,7 +22,7 @@
 
 use crate::bsdf::Bsdf;
 use crate::mis::MisHeuristic;
-use crate::nee::{light_sample_contribution, point_lights};
+use crate::nee::{directional_lights, light_sample_contribution, point_lights};
 use crate::path::PathTracer;
 use ch01_whitted::scene::World;
 use common::Ray;
@@ -69,11 +69,13 @@ impl PathTracer<'_> {
             bsdf: samples.bsdf,
         };
         if counts.emitter > 0 && !bsdf.is_delta() {
-            if !self.lights.points.is_empty() {
+            if !self.lights.points.is_empty() || !self.lights.directionals.is_empty() {
                 // Mitsuba's count, `emitter_samples` times (see the module).
                 let mitsuba_count = counts.emitter as f32;
+                let (world, lights, time) = (self.world, &self.lights, ray.time);
                 radiance += mitsuba_count
-                    * point_lights(self.world, &self.lights, &bsdf, wo, ray.time, counters);
+                    * (point_lights(world, lights, &bsdf, wo, time, counters)
+                        + directional_lights(world, lights, &bsdf, wo, time, counters));
             }
             if self.lights.can_be_hit() {
                 for _ in 0..counts.emitter {

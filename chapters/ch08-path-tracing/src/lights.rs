@@ -5,7 +5,8 @@
 //! The two kinds are treated differently. A point light is a delta: no BSDF sample can find
 //! it and there is no point on it to choose, so next-event estimation connects **every**
 //! point light through its own shadow ray, as chapters 01 to 07 do
-//! ([`crate::nee::point_lights`]), and draws no number for it. The lights a ray *can* find,
+//! ([`crate::nee::point_lights`]), and draws no number for it; so is a directional light
+//! ([`crate::nee::directional_lights`]), a delta in direction. The lights a ray *can* find,
 //! the area lights and the environment, are *sampled*: one of them is **picked uniformly**
 //! and divided by the chance `1/N`, so a bounce sends one shadow ray to them whatever their
 //! number, which keeps a path a path. (Sampling every one would make each bounce cost `N`
@@ -36,7 +37,7 @@ use common::Ray;
 use common::geometry::{Parallelogram, SurfaceHit};
 #[cfg(test)]
 use common::scene::luminance;
-use common::scene::{AreaEmitter, GridDistribution, PointLight, Scene};
+use common::scene::{AreaEmitter, DirectionalLight, GridDistribution, PointLight, Scene};
 use glam::{Vec2, Vec3};
 
 /// One of the lights a light sample picks from.
@@ -96,6 +97,8 @@ pub struct SceneLights<'a> {
     scene: &'a Scene,
     /// Point lights.
     pub points: &'a [PointLight],
+    /// Lights infinitely far away that shine one way: deltas, connected like point lights.
+    pub directionals: &'a [DirectionalLight],
     /// The light from outside the scene.
     pub environment: EnvironmentLight<'a>,
     /// How area lights are sampled (chapter 07).
@@ -121,6 +124,7 @@ impl<'a> SceneLights<'a> {
             shape_of_light: &area_lights.shape_of_light,
             scene,
             points: &scene.point_lights,
+            directionals: &scene.directional_lights,
             environment: EnvironmentLight::of(scene),
             sampling,
             count: 0,

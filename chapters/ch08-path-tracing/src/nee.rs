@@ -1,5 +1,5 @@
-//! Next-event estimation: at each bounce, a shadow ray to every point light and one to one
-//! sampled light.
+//! Next-event estimation: at each bounce, a shadow ray to every point light (and every
+//! directional light) and one to one sampled light.
 //!
 //! The light sample estimates `∫ L_e f cos θ dω` by `L_e f cos θ / p_light`, weighted by MIS
 //! against the BSDF sample that could have found the same light. A point light is a delta:
@@ -83,6 +83,41 @@ pub fn point_lights<W: World>(
     sum
 }
 // ANCHOR_END: point_lights
+
+/// The light of every directional light (the sun's model, infinitely far away) at the surface
+/// of `bsdf`, seen from `wo`: like a point light, a delta counted with certainty through one
+/// shadow ray, but from one direction everywhere and with no fall-off: its irradiance on a
+/// surface facing it. The shadow ray leaves the scene unbounded.
+#[inline]
+pub fn directional_lights<W: World>(
+    world: &W,
+    lights: &SceneLights,
+    bsdf: &Bsdf,
+    wo: Vec3,
+    time: f32,
+    counters: &mut SampleCounters,
+) -> Vec3 {
+    let mut sum = Vec3::ZERO;
+    for light in lights.directionals {
+        let wi = -light.direction;
+        let contribution = light_sample_contribution(
+            light.irradiance,
+            bsdf.eval(wo, wi),
+            f32::INFINITY,
+            0.0,
+            1.0,
+            MisHeuristic::None,
+        );
+        if contribution == Vec3::ZERO || !contribution.is_finite() {
+            continue; // behind the surface: no shadow ray
+        }
+        counters.rays += 1;
+        if !world.occluded(&bsdf.hit.spawn_ray(wi, time)) {
+            sum += contribution;
+        }
+    }
+    sum
+}
 
 #[cfg(test)]
 mod tests {

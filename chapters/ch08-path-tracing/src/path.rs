@@ -28,7 +28,7 @@
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
-use crate::nee::point_lights;
+use crate::nee::{directional_lights, point_lights};
 use crate::options::PathOptions;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
@@ -311,9 +311,9 @@ impl PathTracer<'_> {
     // ANCHOR_END: extend_path
 
     // ANCHOR: next_event
-    /// Next-event estimation at the surface of `bsdf`, seen from `wo`: every point light
-    /// through its own shadow ray (a delta has nothing to sample), and one light sample among
-    /// the lights a ray can find.
+    /// Next-event estimation at the surface of `bsdf`, seen from `wo`: every point light and
+    /// every directional light through its own shadow ray (a delta has nothing to sample),
+    /// and one light sample among the lights a ray can find.
     #[inline]
     pub fn next_event<S: Sampler>(
         &self,
@@ -327,6 +327,9 @@ impl PathTracer<'_> {
         let mut light = Vec3::ZERO;
         if !self.lights.points.is_empty() {
             light += point_lights(world, &self.lights, bsdf, wo, time, counters);
+        }
+        if !self.lights.directionals.is_empty() {
+            light += directional_lights(world, &self.lights, bsdf, wo, time, counters);
         }
         if self.lights.can_be_hit() {
             light += self.light_sample(bsdf, wo, time, sampler, counters);

@@ -1,8 +1,8 @@
 //! Building a scene in code: the chapters' built-in scenes, and the tests'.
 
 use super::{
-    AnimatedShape, AreaEmitter, Bitmap, BitmapId, Camera, EnvironmentMap, FilmSettings, Integrator,
-    Material, Origins, PointLight, SamplerSettings, Scene, Surface,
+    AnimatedShape, AreaEmitter, Bitmap, BitmapId, Camera, DirectionalLight, EnvironmentMap,
+    FilmSettings, Integrator, Material, Origins, PointLight, SamplerSettings, Scene, Surface,
 };
 use crate::geometry::{Geometry, Shape, TriangleMesh};
 use glam::{Mat4, Vec3};
@@ -14,6 +14,7 @@ pub struct SceneBuilder {
     surfaces: Vec<Surface>,
     moving: Vec<(AnimatedShape, Surface)>,
     point_lights: Vec<PointLight>,
+    directional_lights: Vec<DirectionalLight>,
     environment: Vec3,
     environment_map: Option<EnvironmentMap>,
     bitmaps: Vec<Bitmap>,
@@ -73,6 +74,12 @@ impl SceneBuilder {
         self
     }
 
+    /// Adds a light infinitely far away that shines one way.
+    pub fn directional_light(mut self, light: DirectionalLight) -> Self {
+        self.directional_lights.push(light);
+        self
+    }
+
     /// Sets the radiance seen where rays leave the scene.
     pub fn environment(mut self, radiance: Vec3) -> Self {
         self.environment = radiance;
@@ -104,6 +111,7 @@ impl SceneBuilder {
             surfaces,
             bitmaps: self.bitmaps,
             point_lights: self.point_lights,
+            directional_lights: self.directional_lights,
             environment: self.environment,
             environment_map: self.environment_map,
             camera,

@@ -102,6 +102,8 @@ pub enum Feature {
     EnvironmentLight,
     /// Light from an image around the scene (Mitsuba's `envmap`).
     EnvironmentMap,
+    /// A light infinitely far away that shines one way (Mitsuba's `directional`).
+    DirectionalLight,
     /// Emitters hidden from camera rays (Mitsuba's `hide_emitters`).
     HiddenEmitters,
     /// A `direct` integrator's sample counts other than one light and one BSDF sample.
@@ -152,6 +154,7 @@ impl Feature {
             Feature::IndirectLight
             | Feature::EnvironmentLight
             | Feature::EnvironmentMap
+            | Feature::DirectionalLight
             | Feature::HiddenEmitters
             | Feature::DirectSampleCounts
             | Feature::MetalFresnel
@@ -179,6 +182,7 @@ impl Feature {
             Feature::IndirectLight => "indirect light",
             Feature::EnvironmentLight => "an environment",
             Feature::EnvironmentMap => "an environment map (envmap)",
+            Feature::DirectionalLight => "a directional light",
             Feature::HiddenEmitters => "emitters hidden from the camera",
             Feature::DirectSampleCounts => "the direct integrator's sample counts",
             Feature::MetalFresnel => "a metal",
@@ -205,6 +209,7 @@ impl Feature {
             Feature::IndirectLight => "indirect light comes",
             Feature::EnvironmentLight => "the environment lights matte surfaces",
             Feature::EnvironmentMap => "light from an image around the scene comes",
+            Feature::DirectionalLight => "light from infinitely far away comes",
             Feature::HiddenEmitters => "the integrator's hide_emitters comes",
             Feature::DirectSampleCounts => "emitter_samples and bsdf_samples are taken as given",
             Feature::MetalFresnel => "metals' reflectance by angle comes",
@@ -507,6 +512,13 @@ impl Scene {
                 String::new(),
             );
         }
+        if !self.directional_lights.is_empty() {
+            add(
+                Feature::DirectionalLight,
+                self.origins.directional_light.clone(),
+                String::new(),
+            );
+        }
         let something_glows = self.environment != glam::Vec3::ZERO
             || self.environment_map.is_some()
             || self
@@ -643,6 +655,28 @@ mod tests {
             "{refusal}"
         );
         assert_eq!(SOFT_SHADOWS.check(&lit), Ok(Vec::new()));
+    }
+
+    #[test]
+    fn a_directional_light_waits_for_chapter_08() {
+        let sunlit = scene(
+            SceneBuilder::new()
+                .shape(sphere(), Material::diffuse(Vec3::ONE))
+                .directional_light(crate::scene::DirectionalLight {
+                    direction: -Vec3::Y,
+                    irradiance: Vec3::ONE,
+                }),
+        );
+        let refusal = SOFT_SHADOWS.check(&sunlit).unwrap_err();
+        assert!(
+            refusal.contains("a directional light") && refusal.contains("chapter 08"),
+            "{refusal}"
+        );
+        let path_tracing = Capabilities {
+            chapter: Chapter::PATH_TRACING,
+            approximates: &[],
+        };
+        assert_eq!(path_tracing.check(&sunlit), Ok(Vec::new()));
     }
 
     #[test]

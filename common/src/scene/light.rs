@@ -1,5 +1,5 @@
-//! Lights as data: point lights (chapter 01) and the area emitters of glowing shapes
-//! (chapter 07). The environment is a colour on the scene itself.
+//! Lights as data: point lights (chapter 01), the area emitters of glowing shapes (chapter 07)
+//! and directional lights (chapter 08). The environment is a colour on the scene itself.
 
 use super::Texture;
 use glam::Vec3;
@@ -13,6 +13,17 @@ pub struct PointLight {
     pub position: Vec3,
     /// Radiant intensity in W/sr.
     pub intensity: Vec3,
+}
+
+/// A light infinitely far away that shines one way, as the sun does (Mitsuba 3's
+/// `directional`): every point it reaches receives the irradiance `irradiance` on a surface
+/// that faces it, from the one direction `-direction`, wherever the point is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DirectionalLight {
+    /// The unit direction the light travels in.
+    pub direction: Vec3,
+    /// Irradiance on a surface facing the light, per colour channel (watts per square metre).
+    pub irradiance: Vec3,
 }
 
 /// What a glowing shape emits (Mitsuba 3's `area` emitter): the radiance `radiance` from

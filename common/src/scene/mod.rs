@@ -37,7 +37,7 @@ pub use emission_sampling::{EMISSION_GRID, UNIFORM_SHARE};
 pub use environment_map::{EnvironmentMap, EnvironmentMapError, direction_of, direction_to_uv};
 pub use environment_sampling::{EnvironmentSampling, luminance};
 pub use grid_distribution::GridDistribution;
-pub use light::{AreaEmitter, PointLight};
+pub use light::{AreaEmitter, DirectionalLight, PointLight};
 pub use material::{
     AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
     Plastic, RoughGlass, TintedGlass, check_exponent,
@@ -75,6 +75,8 @@ pub struct Scene {
     pub bitmaps: Vec<Bitmap>,
     /// The point lights.
     pub point_lights: Vec<PointLight>,
+    /// The lights infinitely far away that shine one way (chapter 08 only).
+    pub directional_lights: Vec<DirectionalLight>,
     /// Radiance of every ray that leaves the scene (Mitsuba's `constant` emitter); black for a
     /// closed room or a scene without an environment.
     pub environment: Vec3,

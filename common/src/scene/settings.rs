@@ -112,6 +112,8 @@ pub struct Origins {
     pub environment: Option<TextPosition>,
     /// The `envmap` `<emitter>` element, for a scene with an environment map.
     pub environment_map: Option<TextPosition>,
+    /// The first `directional` `<emitter>` element, for a scene with directional lights.
+    pub directional_light: Option<TextPosition>,
 }
 
 /// A place in a scene file: 1-based line and column, as an editor shows them, and the file

@@ -230,6 +230,15 @@ pub enum EmitterDescription {
         /// Radiant intensity in W/sr (default 1).
         intensity: Vec3,
     },
+    /// A light infinitely far away that shines one way.
+    Directional {
+        /// The unit direction the light travels in.
+        direction: Vec3,
+        /// Irradiance on a surface facing it (default 1).
+        irradiance: Vec3,
+        /// Where the `<emitter>` element is.
+        position: TextPosition,
+    },
     /// Radiance arriving from every direction that leaves the scene.
     Constant {
         /// Radiance (default 1).

@@ -1,5 +1,5 @@
-//! `<emitter>`: area lights attached to shapes, and point, constant and environment-map
-//! lights on their own.
+//! `<emitter>`: area lights attached to shapes, and point, directional, constant and
+//! environment-map lights on their own.
 
 use super::element::Element;
 use glam::Vec3;
@@ -79,6 +79,42 @@ pub(super) fn read_emitter<'a>(
             position: reader.position(node),
         }),
         "envmap" => Emitter::Standalone(read_environment_map(reader, node, &mut properties)?),
+        "directional" => {
+            // Mitsuba's: `direction`, or the `z` axis of `to_world` (+z without either).
+            let direction = properties.vector(reader, "direction")?;
+            let to_world = properties.transform(reader, "to_world")?;
+            let direction = match (direction, to_world) {
+                (Some(_), Some(_)) => {
+                    return Err(reader.error(
+                        node,
+                        "a directional emitter takes \"direction\" or \"to_world\", not both",
+                    ));
+                }
+                (Some(direction), None) => direction,
+                (None, Some(to_world)) => to_world.transform_vector3(Vec3::Z),
+                (None, None) => Vec3::Z,
+            };
+            let Some(direction) = direction.try_normalize() else {
+                let position = properties
+                    .position_of("direction")
+                    .unwrap_or(reader.position(node));
+                return Err(reader.error_at(
+                    position,
+                    format!("a directional emitter needs a direction, found {direction}"),
+                ));
+            };
+            Emitter::Standalone(EmitterDescription::Directional {
+                direction,
+                irradiance: emission(
+                    reader,
+                    node,
+                    &mut properties,
+                    "irradiance",
+                    "a directional light's",
+                )?,
+                position: reader.position(node),
+            })
+        }
         "point" => {
             let position = properties.point(reader, "position")?;
             let to_world = properties.transform(reader, "to_world")?;
@@ -108,7 +144,8 @@ pub(super) fn read_emitter<'a>(
             return Err(reader.error(
                 node,
                 format!(
-                    "unknown emitter type \"{type_name}\": expected area, point, constant or envmap"
+                    "unknown emitter type \"{type_name}\": expected area, point, directional, \
+                     constant or envmap"
                 ),
             ));
         }

@@ -212,6 +212,14 @@ impl<'a> Properties<'a> {
         })
     }
 
+    /// A `<vector>` (or a `<point>`: Mitsuba 3 keeps both as three numbers).
+    pub fn vector(&mut self, reader: &Reader, name: &str) -> Result<Option<Vec3>, SceneError> {
+        self.typed(reader, name, "a <vector>", |value| match value {
+            PropertyValue::Vector(v) | PropertyValue::Point(v) => Some(*v),
+            _ => None,
+        })
+    }
+
     /// A `<transform>`.
     pub fn transform(&mut self, reader: &Reader, name: &str) -> Result<Option<Mat4>, SceneError> {
         self.typed(reader, name, "a <transform>", |value| match value {

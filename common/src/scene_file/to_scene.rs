@@ -12,8 +12,9 @@ use super::description::{EmitterDescription, Integrator, SceneDescription, Shape
 use super::error::{SceneError, TextPosition};
 use super::to_geometry::world_shapes;
 use crate::scene::{
-    AnimatedShape, Camera, CameraFrame, CameraModel, FilmSettings, Integrator as Transport,
-    Origins, PointLight, SamplerSettings, Scene, SceneBuilder, Surface, UNLIMITED_DEPTH,
+    AnimatedShape, Camera, CameraFrame, CameraModel, DirectionalLight, FilmSettings,
+    Integrator as Transport, Origins, PointLight, SamplerSettings, Scene, SceneBuilder, Surface,
+    UNLIMITED_DEPTH,
 };
 use glam::{Mat4, Vec3};
 
@@ -105,6 +106,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
     let mut environment_position = None;
     let mut environment_map = None;
     let mut environment_map_position = None;
+    let mut directional_position = None;
     for emitter in &description.emitters {
         match emitter {
             EmitterDescription::Point {
@@ -115,6 +117,17 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
                     position: *position,
                     intensity: *intensity,
                 });
+            }
+            EmitterDescription::Directional {
+                direction,
+                irradiance,
+                position,
+            } => {
+                builder = builder.directional_light(DirectionalLight {
+                    direction: *direction,
+                    irradiance: *irradiance,
+                });
+                directional_position.get_or_insert(position.clone());
             }
             EmitterDescription::Constant { radiance, position } => {
                 environment += *radiance;
@@ -184,6 +197,7 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             filter: sensor.film.filter_position.clone(),
             environment: environment_position,
             environment_map: environment_map_position,
+            directional_light: directional_position,
         },
         bitmaps: description.bitmaps.clone(),
         environment_map,

@@ -189,3 +189,45 @@ fn the_volumetric_path_tracers_are_the_path_tracer_where_there_are_no_media() {
         assert!(volumetric.hide_emitters, "{integrator}");
     }
 }
+
+#[test]
+fn a_directional_light_shines_along_its_direction_or_its_to_worlds_z() {
+    let light = |body: &str| {
+        let scene = scene(&scene_with(body)).unwrap_or_else(|e| panic!("{body}: {e}"));
+        assert_eq!(scene.directional_lights.len(), 1, "{body}");
+        scene.directional_lights[0]
+    };
+    let given = light(
+        r#"<emitter type="directional"><vector name="direction" x="0" y="-2" z="0"/>
+             <rgb name="irradiance" value="3, 2, 1"/></emitter>"#,
+    );
+    assert_eq!(given.direction, Vec3::new(0.0, -1.0, 0.0));
+    assert_eq!(given.irradiance, Vec3::new(3.0, 2.0, 1.0));
+    let turned = light(
+        r#"<emitter type="directional"><transform name="to_world"><rotate x="1" angle="90"/></transform></emitter>"#,
+    );
+    assert!(
+        (turned.direction - Vec3::new(0.0, -1.0, 0.0)).length() < 1e-6,
+        "{turned:?}"
+    );
+    assert_eq!(turned.irradiance, Vec3::ONE, "Mitsuba's default irradiance");
+    assert_eq!(light(r#"<emitter type="directional"/>"#).direction, Vec3::Z);
+    for (body, says) in [
+        (
+            r#"<emitter type="directional"><vector name="direction" x="0" y="0" z="0"/></emitter>"#,
+            "needs a direction",
+        ),
+        (
+            r#"<emitter type="directional"><vector name="direction" x="0" y="0" z="1"/>
+                 <transform name="to_world"><rotate x="1" angle="90"/></transform></emitter>"#,
+            "\"direction\" or \"to_world\", not both",
+        ),
+        (
+            r#"<emitter type="directional"><rgb name="irradiance" value="-1"/></emitter>"#,
+            "irradiance must be finite and not negative",
+        ),
+    ] {
+        let error = scene(&scene_with(body)).expect_err(body);
+        assert!(error.contains(says), "{body}: {error}");
+    }
+}
