@@ -106,6 +106,12 @@ pub fn filter_of(filter: FilmFilter) -> Result<ReconstructionFilter, String> {
         FilmFilter::Gaussian { stddev } => {
             ReconstructionFilter::new(FilterKind::Gaussian, Some(4.0 * stddev)).map_err(in_file)
         }
+        FilmFilter::Mitchell { b, c } => {
+            if !(b.is_finite() && c.is_finite()) {
+                return Err(in_file(format!("B {b} and C {c} must be numbers")));
+            }
+            Ok(ReconstructionFilter::Mitchell { radius: 2.0, b, c })
+        }
     }
 }
 

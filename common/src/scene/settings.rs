@@ -42,6 +42,14 @@ pub enum FilmFilter {
         /// Standard deviation in pixels.
         stddev: f32,
     },
+    /// Mitchell and Netravali's cubic of radius 2 pixels with parameters `b` and `c` (Mitsuba's
+    /// `mitchell`, `B = C = 1/3` by default; its `catmullrom` is `b = 0`, `c = 1/2`).
+    Mitchell {
+        /// The cubic's `B`: more blur.
+        b: f32,
+        /// The cubic's `C`: more ringing.
+        c: f32,
+    },
 }
 
 /// The sampler a scene asks for: any type is recorded; chapter 03 picks its closest.

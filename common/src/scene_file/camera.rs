@@ -260,7 +260,7 @@ fn read_film<'a>(
     Ok(film)
 }
 
-/// Reads an `rfilter`: box, tent or gaussian.
+/// Reads an `rfilter`: box, tent, gaussian, mitchell or catmullrom.
 fn read_filter(reader: &mut Reader, node: &Element) -> Result<FilmFilter, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} rfilter"))?;
@@ -272,10 +272,18 @@ fn read_filter(reader: &mut Reader, node: &Element) -> Result<FilmFilter, SceneE
         "gaussian" => FilmFilter::Gaussian {
             stddev: properties.float(reader, "stddev")?.unwrap_or(0.5),
         },
+        "mitchell" => FilmFilter::Mitchell {
+            b: properties.float(reader, "B")?.unwrap_or(1.0 / 3.0),
+            c: properties.float(reader, "C")?.unwrap_or(1.0 / 3.0),
+        },
+        "catmullrom" => FilmFilter::Mitchell { b: 0.0, c: 0.5 },
         _ => {
             return Err(reader.error(
                 node,
-                format!("unknown rfilter type \"{type_name}\": expected box, tent or gaussian"),
+                format!(
+                    "unknown rfilter type \"{type_name}\": expected box, tent, gaussian, mitchell \
+                     or catmullrom"
+                ),
             ));
         }
     };

@@ -231,3 +231,37 @@ fn a_directional_light_shines_along_its_direction_or_its_to_worlds_z() {
         assert!(error.contains(says), "{body}: {error}");
     }
 }
+
+#[test]
+fn mitchell_and_catmull_rom_filters_are_read_with_mitsubas_parameters() {
+    let filter = |rfilter: &str| {
+        let text = format!(
+            r#"<scene version="3.0.0"><sensor type="perspective"><float name="fov" value="40"/>
+                 <film type="hdrfilm">{rfilter}</film></sensor></scene>"#
+        );
+        scene(&text).map(|scene| scene.film.filter)
+    };
+    use crate::scene::FilmFilter;
+    assert_eq!(
+        filter(r#"<rfilter type="mitchell"/>"#),
+        Ok(FilmFilter::Mitchell {
+            b: 1.0 / 3.0,
+            c: 1.0 / 3.0
+        })
+    );
+    assert_eq!(
+        filter(
+            r#"<rfilter type="mitchell"><float name="B" value="0.5"/><float name="C" value="0.25"/></rfilter>"#
+        ),
+        Ok(FilmFilter::Mitchell { b: 0.5, c: 0.25 })
+    );
+    assert_eq!(
+        filter(r#"<rfilter type="catmullrom"/>"#),
+        Ok(FilmFilter::Mitchell { b: 0.0, c: 0.5 })
+    );
+    let error = filter(r#"<rfilter type="lanczos"/>"#).unwrap_err();
+    assert!(
+        error.contains("unknown rfilter type \"lanczos\""),
+        "{error}"
+    );
+}
