@@ -3,8 +3,8 @@
 //! Cargo hands a package's integration tests only that package's own binaries
 //! (`CARGO_BIN_EXE_<name>`). This crate tests every chapter's, so it finds them where cargo
 //! puts them, `target/<profile>/`, next to the `deps/` directory holding the test itself, and
-//! asks cargo once per test process to bring them up to date (a no-op after
-//! `cargo test --workspace`, which has built them already).
+//! asks cargo once per test process to bring them up to date when a source is newer than
+//! they are (after `cargo test --workspace`, which has built them, none is).
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -61,31 +61,31 @@ fn profile_dir() -> PathBuf {
     dir.to_path_buf()
 }
 
-/// Builds every chapter binary once per process, with the profile of this test.
+/// Builds every chapter binary once per process, with the profile of this test, unless every
+/// one of them is newer than every file it is built from.
 ///
-/// It asks for what `cargo test --workspace` builds (every package's binaries and tests), not
-/// for the chapters' binaries alone: cargo settles a dependency's features over the packages
-/// and targets it is asked to build, so a narrower request would compile `common`, every
-/// chapter and the book's binary once more with other features (three minutes on a 2-core
-/// machine), replacing the binaries `cargo test --workspace` has just built and that the
-/// book's own run reuses. Asked for the same, it finds them up to date.
+/// After `cargo test --workspace`, which has just built them, nothing is asked of cargo. Asking
+/// would not be free: cargo settles a dependency's features over the packages it is asked to
+/// build, so a build of the chapters' binaries alone gives `common` and every chapter other
+/// features than the whole workspace's test build did, compiles them all again (two to three
+/// minutes on a 2-core machine), and replaces the binaries that build made. Run alone
+/// (`cargo test -p workbook-tests`) after a change to a chapter, the binaries are older than
+/// the change and cargo brings them up to date.
 static BUILT: LazyLock<PathBuf> = LazyLock::new(|| {
     let dir = profile_dir();
+    if binaries_are_newer_than_their_sources(&dir) {
+        return dir;
+    }
     let profile = match dir.file_name().and_then(|n| n.to_str()) {
         Some("debug") | None => "dev".to_string(),
         Some(other) => other.to_string(),
     };
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut command = Command::new(cargo);
-    command.args([
-        "build",
-        "--quiet",
-        "--workspace",
-        "--bins",
-        "--tests",
-        "--profile",
-        &profile,
-    ]);
+    command.args(["build", "--quiet", "--bins", "--profile", &profile]);
+    for chapter in CHAPTERS {
+        command.args(["-p", chapter]);
+    }
     let status = command
         .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")))
         .status()
@@ -93,6 +93,50 @@ static BUILT: LazyLock<PathBuf> = LazyLock::new(|| {
     assert!(status.success(), "building the chapter binaries failed");
     dir
 });
+
+/// Whether every chapter binary in `dir` exists and was written after the last change to any
+/// file it is built from: the Rust sources and manifests of `common` and the chapters, and the
+/// workspace's manifest and lock file.
+fn binaries_are_newer_than_their_sources(dir: &Path) -> bool {
+    let modified = |path: &Path| std::fs::metadata(path).and_then(|m| m.modified()).ok();
+    let oldest_binary = CHAPTERS
+        .iter()
+        .map(|chapter| modified(&dir.join(format!("{chapter}{}", std::env::consts::EXE_SUFFIX))))
+        .collect::<Option<Vec<_>>>()
+        .and_then(|times| times.into_iter().min());
+    let Some(oldest_binary) = oldest_binary else {
+        return false; // one is missing
+    };
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("the tests live in the workspace");
+    let mut sources = vec![root.join("Cargo.toml"), root.join("Cargo.lock")];
+    let packages = std::iter::once(root.join("common"))
+        .chain(CHAPTERS.iter().map(|c| root.join("chapters").join(c)));
+    let mut folders = Vec::new();
+    for package in packages {
+        sources.push(package.join("Cargo.toml"));
+        folders.push(package.join("src"));
+    }
+    // Every file under each package's `src/` (scenes and snapshots are read when a binary
+    // runs, not built into it).
+    while let Some(folder) = folders.pop() {
+        let Ok(entries) = std::fs::read_dir(&folder) else {
+            return false;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                folders.push(path);
+            } else {
+                sources.push(path);
+            }
+        }
+    }
+    sources
+        .iter()
+        .all(|source| modified(source).is_some_and(|time| time < oldest_binary))
+}
 
 /// The path of a chapter's binary, built and up to date.
 pub fn chapter_binary(chapter: &str) -> PathBuf {
