@@ -490,13 +490,16 @@ impl EditionBuild {
     }
 }
 
-/// Compiles, with all their targets, the student edition's packages that hold exercises.
+/// Compiles the libraries of the student edition's packages that hold exercises.
 ///
-/// Only those packages can break: a stub changes a function's body, never its signature, so
-/// nothing that depends on them notices. They and their dependencies are also exactly what the
-/// checks need, so nothing is built that the checks would not build anyway.
+/// Only those libraries can break: a stub changes a function's body, never its signature, so
+/// nothing that calls it notices, neither the package's binaries, benchmarks and tests nor
+/// the packages that depend on it; and a stub's warnings (a variable the stub leaves unused,
+/// code after its `todo!`) are the library's own. The checks then compile the libraries'
+/// unit tests, which is all they run. Building every target as well would compile each
+/// binary, benchmark and integration test of the edition and could find nothing more.
 fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -> Result<()> {
-    let mut args = vec!["build", "--all-targets"];
+    let mut args = vec!["build", "--lib"];
     let mut packages: Vec<&str> = exercises.iter().map(|e| e.chapter.as_str()).collect();
     packages.sort_unstable();
     packages.dedup();

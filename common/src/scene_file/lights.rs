@@ -81,19 +81,10 @@ pub(super) fn read_emitter<'a>(
         "envmap" => Emitter::Standalone(read_environment_map(reader, node, &mut properties)?),
         "directional" => {
             // Mitsuba's: `direction`, or the `z` axis of `to_world` (+z without either).
-            let direction = properties.vector(reader, "direction")?;
-            let to_world = properties.transform(reader, "to_world")?;
-            let direction = match (direction, to_world) {
-                (Some(_), Some(_)) => {
-                    return Err(reader.error(
-                        node,
-                        "a directional emitter takes \"direction\" or \"to_world\", not both",
-                    ));
-                }
-                (Some(direction), None) => direction,
-                (None, Some(to_world)) => to_world.transform_vector3(Vec3::Z),
-                (None, None) => Vec3::Z,
-            };
+            let names = ("directional", "direction");
+            let direction = given_or_placed(reader, node, &mut properties, names, |m| {
+                m.transform_vector3(Vec3::Z)
+            })?;
             let Some(direction) = direction.try_normalize() else {
                 let position = properties
                     .position_of("direction")
@@ -116,19 +107,10 @@ pub(super) fn read_emitter<'a>(
             })
         }
         "point" => {
-            let position = properties.point(reader, "position")?;
-            let to_world = properties.transform(reader, "to_world")?;
-            let position = match (position, to_world) {
-                (Some(_), Some(_)) => {
-                    return Err(reader.error(
-                        node,
-                        "a point emitter takes \"position\" or \"to_world\", not both",
-                    ));
-                }
-                (Some(position), None) => position,
-                (None, Some(to_world)) => to_world.transform_point3(Vec3::ZERO),
-                (None, None) => Vec3::ZERO,
-            };
+            let names = ("point", "position");
+            let position = given_or_placed(reader, node, &mut properties, names, |m| {
+                m.transform_point3(Vec3::ZERO)
+            })?;
             Emitter::Standalone(EmitterDescription::Point {
                 position,
                 intensity: emission(
@@ -152,6 +134,32 @@ pub(super) fn read_emitter<'a>(
     };
     properties.finish(reader);
     Ok(emitter)
+}
+
+/// A light's position or direction, the property `given_name` (a `<point>` or a `<vector>`)
+/// of a `type_name` emitter, or else what `from_to_world` makes of its `to_world` (the
+/// identity when neither is given: the origin, or `+z`); both given is refused, as Mitsuba
+/// refuses it.
+fn given_or_placed(
+    reader: &Reader,
+    node: &Element,
+    properties: &mut Properties,
+    (type_name, given_name): (&str, &str),
+    from_to_world: impl Fn(glam::Mat4) -> Vec3,
+) -> Result<Vec3, SceneError> {
+    let given = match given_name {
+        "direction" => properties.vector(reader, given_name)?,
+        _ => properties.point(reader, given_name)?,
+    };
+    let to_world = properties.transform(reader, "to_world")?;
+    match (given, to_world) {
+        (Some(_), Some(_)) => Err(reader.error(
+            node,
+            format!("a {type_name} emitter takes \"{given_name}\" or \"to_world\", not both"),
+        )),
+        (Some(given), None) => Ok(given),
+        (None, to_world) => Ok(from_to_world(to_world.unwrap_or(glam::Mat4::IDENTITY))),
+    }
 }
 
 /// An emitter's colour property `name` (1 if absent), refused unless every channel is finite

@@ -220,7 +220,12 @@ fn a_directional_light_shines_along_its_direction_or_its_to_worlds_z() {
         (
             r#"<emitter type="directional"><vector name="direction" x="0" y="0" z="1"/>
                  <transform name="to_world"><rotate x="1" angle="90"/></transform></emitter>"#,
-            "\"direction\" or \"to_world\", not both",
+            "a directional emitter takes \"direction\" or \"to_world\", not both",
+        ),
+        (
+            r#"<emitter type="point"><point name="position" x="0" y="0" z="1"/>
+                 <transform name="to_world"><translate x="1"/></transform></emitter>"#,
+            "a point emitter takes \"position\" or \"to_world\", not both",
         ),
         (
             r#"<emitter type="directional"><rgb name="irradiance" value="-1"/></emitter>"#,
