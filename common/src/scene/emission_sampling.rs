@@ -28,12 +28,17 @@ impl Scene {
     /// light: `Some` for a still parallelogram whose emitter's radiance is a texture with some
     /// light in it, `None` for every other shape (sampled as its shape says).
     pub fn emission_grid(&self, shape: u32) -> Option<&GridDistribution> {
+        // Most lights have no texture: they are answered without building anything.
+        self.surface(shape).emitter?.texture?;
         let grids = self.emission_grids.get_or_init(|| {
             (0..self.shape_count() as u32)
-                .map(|shape| self.build_emission_grid(shape))
+                .filter_map(|shape| Some((shape, self.build_emission_grid(shape)?)))
                 .collect()
         });
-        grids.get(shape as usize)?.as_ref()
+        grids
+            .iter()
+            .find(|(textured, _)| *textured == shape)
+            .map(|(_, grid)| grid)
     }
 
     fn build_emission_grid(&self, shape: u32) -> Option<GridDistribution> {

@@ -101,9 +101,9 @@ pub struct Scene {
     /// Where the scene's parts are written in its file, for messages; empty for built-in
     /// scenes.
     pub origins: Origins,
-    /// For each shape, the density its light samples are drawn with when its radiance is a
-    /// texture ([`Scene::emission_grid`]), worked out on first use.
-    pub emission_grids: std::sync::OnceLock<Vec<Option<GridDistribution>>>,
+    /// The shapes whose light samples follow their radiance's texture, each with the density
+    /// they are drawn with ([`Scene::emission_grid`]), worked out on first use.
+    pub emission_grids: std::sync::OnceLock<Vec<(u32, GridDistribution)>>,
 }
 
 /// What the surface of one shape is made of, whether it glows, and where it was written.
