@@ -4,6 +4,7 @@
 //! conservative bound on the error of the hit point), give a box that certainly contains it,
 //! and know its area (for sampling area lights).
 
+mod bumpy_sphere;
 mod disc;
 mod dp_du;
 mod mesh;
