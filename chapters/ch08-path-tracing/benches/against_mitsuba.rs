@@ -54,6 +54,10 @@ struct Args {
     /// Mitsuba's variants to time beside ours.
     #[arg(long, value_delimiter = ',', default_value = "scalar_rgb,llvm_ad_rgb")]
     variants: Vec<String>,
+    /// Keeps the mesh scene and the images in this directory (for profiling one renderer on
+    /// the same files) instead of a temporary one.
+    #[arg(long, value_name = "DIR")]
+    keep: Option<PathBuf>,
     /// Passed by `cargo bench`; ignored.
     #[arg(long, hide = true)]
     bench: bool,
@@ -75,8 +79,15 @@ struct Run {
 fn main() {
     let args = Args::parse();
     let python = mitsuba_python();
-    let dir = tempfile::tempdir().expect("a temporary directory");
-    let scenes = [cornell(), mesh_scene(dir.path(), args.triangles)];
+    let temporary = tempfile::tempdir().expect("a temporary directory");
+    let dir = match &args.keep {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).expect("the --keep directory can be made");
+            dir.as_path()
+        }
+        None => temporary.path(),
+    };
+    let scenes = [cornell(), mesh_scene(dir, args.triangles)];
     if python.is_none() {
         println!("MITSUBA_PYTHON is not set: timing ours alone.");
     }
@@ -92,12 +103,10 @@ fn main() {
             }
         }
         for seed in 0..args.pairs {
-            renderers[0]
-                .1
-                .push(render_ours(scene, &args, seed, dir.path()));
+            renderers[0].1.push(render_ours(scene, &args, seed, dir));
             if let Some(python) = &python {
                 for (k, variant) in args.variants.iter().enumerate() {
-                    let run = render_mitsuba(python, variant, scene, &args, seed, dir.path());
+                    let run = render_mitsuba(python, variant, scene, &args, seed, dir);
                     renderers[k + 1].1.push(run);
                 }
             }

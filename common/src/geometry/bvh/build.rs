@@ -10,7 +10,7 @@
 
 use glam::Vec3;
 
-use super::{Bvh, MAX_PRIMITIVES_PER_LEAF, Node, NodeKind};
+use super::{Bvh, MAX_PRIMITIVES_PER_LEAF};
 use crate::geometry::aabb::Aabb;
 
 /// How many slices the centroid range is cut into; 12 is pbrt-v4's choice.
@@ -28,6 +28,34 @@ const MAX_SAH_DEPTH: usize = 32;
 
 /// No tree is deeper than this; the traversal's fixed-size stack relies on it.
 pub(super) const MAX_DEPTH: usize = MAX_SAH_DEPTH + 32;
+
+/// The binary tree the SAH builds, before [`super::wide`] collapses it into nodes of four.
+#[derive(Clone, Debug, Default)]
+pub(super) struct BinaryTree {
+    /// The nodes in depth-first order: an interior node's first child is the next node.
+    pub nodes: Vec<Node>,
+    /// Primitive indices, ordered so that every leaf's primitives are one contiguous run.
+    pub primitive_indices: Vec<u32>,
+    /// Number of nodes on the longest path from the root to a leaf.
+    pub depth: usize,
+}
+
+/// One node of the binary tree.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Node {
+    /// Contains every primitive below the node.
+    pub bounds: Aabb,
+    pub kind: NodeKind,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum NodeKind {
+    /// The primitives `primitive_indices[first..first + count]`.
+    Leaf { first: u32, count: u32 },
+    /// Two children: the first is the next node in the array (depth-first order), so only the
+    /// second needs an index.
+    Interior { second_child: u32 },
+}
 
 /// A primitive while the tree is being built.
 #[derive(Clone, Copy, Debug)]
@@ -47,7 +75,17 @@ impl Bvh {
     ///
     /// Any input works: no boxes, one box, flat or zero-size boxes, boxes whose centres all
     /// coincide. Empty (or NaN) boxes can never be hit and are left out of the tree.
+    ///
+    /// The SAH splits in two; the binary tree is then collapsed into nodes of four children
+    /// ([`super::wide`]), which a ray tests at once.
     pub fn build(primitive_bounds: &[Aabb]) -> Bvh {
+        Bvh::from_binary(BinaryTree::build(primitive_bounds))
+    }
+}
+
+impl BinaryTree {
+    /// The binary SAH tree over the boxes (see [`Bvh::build`]).
+    fn build(primitive_bounds: &[Aabb]) -> BinaryTree {
         let mut primitives: Vec<BuildPrimitive> = primitive_bounds
             .iter()
             .enumerate()
@@ -58,16 +96,16 @@ impl Bvh {
                 centroid: bounds.centroid(),
             })
             .collect();
-        let mut bvh = Bvh {
+        let mut tree = BinaryTree {
             nodes: Vec::with_capacity(2 * primitives.len()),
             primitive_indices: Vec::with_capacity(primitives.len()),
             depth: 0,
         };
         if !primitives.is_empty() {
-            bvh.add_subtree(&mut primitives, 1);
+            tree.add_subtree(&mut primitives, 1);
         }
-        debug_assert!(bvh.depth <= MAX_DEPTH);
-        bvh
+        debug_assert!(tree.depth <= MAX_DEPTH);
+        tree
     }
 
     /// Appends the subtree over `primitives` (in depth-first order) and returns its root's index.

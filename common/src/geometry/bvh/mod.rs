@@ -5,44 +5,32 @@
 //! closure to test the primitives it cannot rule out. So the same code serves the static
 //! scene (boxes of shapes) and chapter 05's moving objects (boxes of whole motion paths).
 //!
-//! * [`build`](Bvh::build) (in `build.rs`) splits primitives with the surface-area heuristic.
+//! * [`build`](Bvh::build) (in `build.rs`) splits primitives in two with the surface-area
+//!   heuristic, and `wide.rs` collapses that binary tree into nodes of four children.
 //! * [`intersect`](Bvh::intersect) and [`any_hit`](Bvh::any_hit) (in `traverse.rs`) walk the
-//!   tree, nearest child first, with a fixed-size stack.
+//!   tree, testing a node's four boxes at once, nearest child first, with a fixed-size stack.
 
 mod build;
 mod traverse;
+mod wide;
 
 use super::aabb::Aabb;
+use wide::WideNode;
 
 /// Leaves hold at most this many primitives.
 pub const MAX_PRIMITIVES_PER_LEAF: usize = 4;
 
 /// A bounding volume hierarchy over primitives known only by their index and box.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Bvh {
-    /// The nodes in depth-first order: an interior node's first child is the next node.
-    nodes: Vec<Node>,
+    /// The nodes, the root first; each holds up to four children.
+    nodes: Vec<WideNode>,
     /// Primitive indices, ordered so that every leaf's primitives are one contiguous run.
     primitive_indices: Vec<u32>,
     /// Number of nodes on the longest path from the root to a leaf.
     depth: usize,
-}
-
-/// One node of the flattened tree.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Node {
-    /// Contains every primitive below the node.
+    /// The box around every primitive.
     bounds: Aabb,
-    kind: NodeKind,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum NodeKind {
-    /// The primitives `primitive_indices[first..first + count]`.
-    Leaf { first: u32, count: u32 },
-    /// Two children: the first is the next node in the array (depth-first order), so only the
-    /// second needs an index.
-    Interior { second_child: u32 },
 }
 
 /// The result of [`Bvh::intersect`]: which primitive was hit first, and where along the ray.
@@ -54,7 +42,30 @@ pub struct BvhHit {
     pub t: f32,
 }
 
+impl Default for Bvh {
+    /// The tree over no primitives.
+    fn default() -> Self {
+        Self {
+            nodes: Vec::new(),
+            primitive_indices: Vec::new(),
+            depth: 0,
+            bounds: Aabb::empty(),
+        }
+    }
+}
+
 impl Bvh {
+    /// The wide tree over the binary tree's boxes and leaves.
+    fn from_binary(tree: build::BinaryTree) -> Self {
+        let (nodes, depth) = wide::collapse(&tree);
+        Self {
+            nodes,
+            primitive_indices: tree.primitive_indices,
+            depth,
+            bounds: tree.nodes.first().map_or(Aabb::empty(), |root| root.bounds),
+        }
+    }
+
     /// How many nodes the tree has (0 for no primitives).
     pub fn node_count(&self) -> usize {
         self.nodes.len()
@@ -67,7 +78,13 @@ impl Bvh {
 
     /// The box around all primitives ([`Aabb::empty`] for none).
     pub fn bounds(&self) -> Aabb {
-        self.nodes.first().map_or(Aabb::empty(), |root| root.bounds)
+        self.bounds
+    }
+
+    /// The bytes the tree takes: its nodes and its primitive indices.
+    pub fn memory_bytes(&self) -> usize {
+        std::mem::size_of_val(self.nodes.as_slice())
+            + std::mem::size_of_val(self.primitive_indices.as_slice())
     }
 }
 

@@ -10,29 +10,49 @@ use super::traverse::SHALLOW_STACK;
 use super::*;
 use crate::Ray;
 
-/// Checks the invariants of the subtree at `index`; returns the primitives below it.
-fn check_subtree(bvh: &Bvh, boxes: &[Aabb], index: usize, depth: usize) -> Vec<u32> {
+/// Checks the invariants of the subtree of the node at `index`, whose box is `bounds`;
+/// returns the primitives below it.
+fn check_subtree(bvh: &Bvh, boxes: &[Aabb], index: usize, bounds: Aabb, depth: usize) -> Vec<u32> {
     assert!(depth <= bvh.depth());
     let node = bvh.nodes[index];
-    match node.kind {
-        NodeKind::Leaf { first, count } => {
-            assert!((1..=MAX_PRIMITIVES_PER_LEAF as u32).contains(&count));
-            let primitives = &bvh.primitive_indices[first as usize..(first + count) as usize];
-            for &p in primitives {
-                assert!(node.bounds.contains_box(&boxes[p as usize]));
+    let mut below = Vec::new();
+    let mut children = 0;
+    for lane in 0..wide::WIDTH {
+        let child_bounds = node.bounds(lane);
+        match node.child(lane) {
+            None => {
+                assert!(
+                    child_bounds.is_empty(),
+                    "a lane without a child has an empty box"
+                );
+                continue;
             }
-            primitives.to_vec()
+            Some(_) => assert!(bounds.contains_box(&child_bounds)),
         }
-        NodeKind::Interior { second_child, .. } => {
-            for child in [index + 1, second_child as usize] {
-                assert!(child > index, "children come after their parent");
-                assert!(node.bounds.contains_box(&bvh.nodes[child].bounds));
+        children += 1;
+        match node.child(lane).unwrap() {
+            wide::Child::Leaf { first, count } => {
+                assert!((1..=MAX_PRIMITIVES_PER_LEAF as u32).contains(&count));
+                let primitives = &bvh.primitive_indices[first as usize..(first + count) as usize];
+                for &p in primitives {
+                    assert!(child_bounds.contains_box(&boxes[p as usize]));
+                }
+                below.extend_from_slice(primitives);
             }
-            let mut below = check_subtree(bvh, boxes, index + 1, depth + 1);
-            below.extend(check_subtree(bvh, boxes, second_child as usize, depth + 1));
-            below
+            wide::Child::Node(child) => {
+                assert!(child as usize > index, "children come after their parent");
+                below.extend(check_subtree(
+                    bvh,
+                    boxes,
+                    child as usize,
+                    child_bounds,
+                    depth + 1,
+                ));
+            }
         }
     }
+    assert!(children >= 1, "node {index} has no child");
+    below
 }
 
 /// Builds a BVH and checks that it is a well-formed tree holding every non-empty box once.
@@ -42,7 +62,7 @@ fn build_and_check(boxes: &[Aabb]) -> Bvh {
     let mut held = if bvh.node_count() == 0 {
         Vec::new()
     } else {
-        check_subtree(&bvh, boxes, 0, 1)
+        check_subtree(&bvh, boxes, 0, bvh.bounds(), 1)
     };
     held.sort_unstable();
     let expected: Vec<u32> = (0..boxes.len() as u32)
@@ -129,7 +149,7 @@ fn deep_trees_are_walked_whole() {
         .map(|k| cube_at(Vec3::X * 1.3f32.powi(k), 0.5))
         .collect();
     let bvh = Bvh::build(&boxes);
-    assert!(bvh.depth() > SHALLOW_STACK, "depth {}", bvh.depth());
+    assert!(3 * bvh.depth() > SHALLOW_STACK, "depth {}", bvh.depth());
     for (origin, dir) in [(-1.0, Vec3::X), (1e15, -Vec3::X)] {
         let ray = Ray::new(Vec3::new(origin, 0.0, 0.0), dir);
         let mut visited = vec![0; boxes.len()];

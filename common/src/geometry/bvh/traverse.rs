@@ -2,13 +2,19 @@
 
 use std::ops::ControlFlow;
 
-use super::build::MAX_DEPTH;
-use super::{Bvh, BvhHit, NodeKind};
-use crate::Ray;
-use crate::geometry::aabb::SlabRay;
+use glam::Vec4;
 
-/// The stack size of the walk through trees at most this deep.
-pub(super) const SHALLOW_STACK: usize = 16;
+use super::build::MAX_DEPTH;
+use super::wide::{WIDTH, WideNode};
+use super::{Bvh, BvhHit};
+use crate::Ray;
+use crate::geometry::float::gamma;
+
+/// The stack of the walk through trees at most a third of this deep.
+pub(super) const SHALLOW_STACK: usize = 24;
+
+/// The stack of the walk through trees of meshes (at most a third of this deep).
+const MEDIUM_STACK: usize = 64;
 
 impl Bvh {
     /// The primitive the ray hits first, found by asking `hit_primitive` about the candidates.
@@ -60,97 +66,150 @@ impl Bvh {
     /// current `t_max`, nearer subtrees first. `visit_leaf` returns the new `t_max`, or
     /// `Break` to stop.
     ///
-    /// At an interior node both children's boxes are tested, and the one the ray enters first
-    /// is visited first: a close hit found early shrinks `t_max`, which then culls most of the
-    /// farther subtree. The farther child waits on the stack with the ray parameter where the
-    /// ray enters its box. When its turn comes, that entry is compared with the `t_max` of the
-    /// moment, which is the box test repeated for free: the box was entered before its exit
-    /// (the first test said so), so it is still reached exactly when its entry is before the
-    /// new `t_max`.
+    /// At a node, the ray is tested against its four children's boxes at once, and the ones it
+    /// enters are visited nearest first: a close hit found early shrinks `t_max`, which then
+    /// culls most of the farther subtrees. The farther children wait on the stack with the ray
+    /// parameter where the ray enters their box. When a child's turn comes, that entry is
+    /// compared with the `t_max` of the moment, which is the box test repeated for free: the
+    /// box was entered before its exit (the first test said so), so it is still reached
+    /// exactly when its entry is before the new `t_max`.
     fn walk<F>(&self, ray: &Ray, visit_leaf: F)
     where
         F: FnMut(&[u32], f32) -> ControlFlow<(), f32>,
     {
-        // The stack is an array, so it is filled with zeros before the walk starts: for a
-        // `MAX_DEPTH` stack that is 512 bytes per ray, a `memset` that cost 2.6 % of a
-        // Cornell-box render. Shallow trees (every scene of this book but large meshes) get
-        // a stack a quarter of that size, which the compiler clears with a few stores.
-        if self.depth <= SHALLOW_STACK {
+        // The stack is an array, so it is filled with zeros before the walk starts. Each
+        // level of the current path defers at most three children, so shallow trees (every
+        // scene of this book but large meshes) get a short stack, which costs a few stores.
+        let needed = 3 * self.depth;
+        if needed <= SHALLOW_STACK {
             self.walk_with_stack::<SHALLOW_STACK, F>(ray, visit_leaf);
+        } else if needed <= MEDIUM_STACK {
+            self.walk_with_stack::<MEDIUM_STACK, F>(ray, visit_leaf);
         } else {
-            self.walk_with_stack::<MAX_DEPTH, F>(ray, visit_leaf);
+            self.walk_with_stack::<{ 3 * MAX_DEPTH }, F>(ray, visit_leaf);
         }
     }
 
-    /// [`walk`](Self::walk) with a stack of `STACK` entries, which must be at least the tree's
-    /// depth.
+    /// [`walk`](Self::walk) with a stack of `STACK` entries, which must be at least three
+    /// times the tree's depth.
     fn walk_with_stack<const STACK: usize, F>(&self, ray: &Ray, mut visit_leaf: F)
     where
         F: FnMut(&[u32], f32) -> ControlFlow<(), f32>,
     {
-        debug_assert!(self.depth <= STACK);
-        let Some(root) = self.nodes.first() else {
-            return;
-        };
-        let slab = SlabRay::new(ray);
+        debug_assert!(3 * self.depth <= STACK);
         let mut t_max = ray.t_max;
-        if root.bounds.entry(&slab, t_max).is_none() {
+        // A NaN `t_max` reaches nothing (and would make every comparison below false).
+        if self.nodes.is_empty() || t_max.is_nan() {
             return;
         }
-        // Each level of the current path defers at most one child, so the depth bounds the
-        // stack. Each deferred node is kept with the ray parameter where the ray enters it.
-        let mut deferred = [(0u32, 0.0f32); STACK];
+        let slabs = WideRay::new(ray);
+        // A lane: a node's index and 0, or a leaf's first primitive and count.
+        let mut deferred = [(0u32, 0u32, 0.0f32); STACK];
         let mut deferred_count = 0;
-        let mut current = 0;
+        let mut current = (0u32, 0u32);
         loop {
-            match self.nodes[current].kind {
-                NodeKind::Interior { second_child } => {
-                    let (first, second) = (current + 1, second_child as usize);
-                    let enter_first = self.nodes[first].bounds.entry(&slab, t_max);
-                    let enter_second = self.nodes[second].bounds.entry(&slab, t_max);
-                    match (enter_first, enter_second) {
-                        (Some(t_first), Some(t_second)) => {
-                            let (near, far, t_far) = if t_second < t_first {
-                                (second, first, t_first)
-                            } else {
-                                (first, second, t_second)
-                            };
-                            deferred[deferred_count] = (far as u32, t_far);
-                            deferred_count += 1;
-                            current = near;
-                            continue;
-                        }
-                        (Some(_), None) => {
-                            current = first;
-                            continue;
-                        }
-                        (None, Some(_)) => {
-                            current = second;
-                            continue;
-                        }
-                        (None, None) => {}
+            let (index, count) = current;
+            if count == 0 {
+                let node = &self.nodes[index as usize];
+                let (entered, t_enter) = node.entries(&slabs, t_max);
+                // The children the ray enters, then sorted farthest first.
+                let mut hits = [(0u32, 0u32, 0.0f32); WIDTH];
+                let mut hit_count = 0;
+                for lane in 0..WIDTH {
+                    if entered & (1 << lane) != 0 {
+                        hits[hit_count] =
+                            (node.child[lane], u32::from(node.count[lane]), t_enter[lane]);
+                        hit_count += 1;
                     }
                 }
-                NodeKind::Leaf { first, count } => {
-                    let range = first as usize..(first + count) as usize;
-                    match visit_leaf(&self.primitive_indices[range], t_max) {
-                        ControlFlow::Continue(new_t_max) => t_max = new_t_max,
-                        ControlFlow::Break(()) => return,
+                if hit_count > 0 {
+                    for i in 1..hit_count {
+                        let mut j = i;
+                        while j > 0 && hits[j - 1].2 < hits[j].2 {
+                            hits.swap(j - 1, j);
+                            j -= 1;
+                        }
                     }
+                    // The nearest is visited now; the others wait, the farthest deepest.
+                    deferred[deferred_count..deferred_count + hit_count - 1]
+                        .copy_from_slice(&hits[..hit_count - 1]);
+                    deferred_count += hit_count - 1;
+                    let (child, child_count, _) = hits[hit_count - 1];
+                    current = (child, child_count);
+                    continue;
+                }
+            } else {
+                let range = index as usize..(index + count) as usize;
+                match visit_leaf(&self.primitive_indices[range], t_max) {
+                    ControlFlow::Continue(new_t_max) => t_max = new_t_max,
+                    ControlFlow::Break(()) => return,
                 }
             }
-            // The latest deferred subtree that the ray still reaches.
+            // The latest deferred child that the ray still reaches.
             loop {
                 if deferred_count == 0 {
                     return;
                 }
                 deferred_count -= 1;
-                let (node, t_enter) = deferred[deferred_count];
+                let (child, child_count, t_enter) = deferred[deferred_count];
                 if t_enter <= t_max {
-                    current = node as usize;
+                    current = (child, child_count);
                     break;
                 }
             }
         }
+    }
+}
+
+/// A ray prepared for testing four boxes at once: each of its coordinates in all four lanes.
+struct WideRay {
+    origin: [Vec4; 3],
+    /// `1 / dir`, componentwise; `±∞` where `dir` is `±0`.
+    inv_dir: [Vec4; 3],
+    /// Whether the ray travels towards smaller coordinates on each axis (then a box's `max`
+    /// is its near side). Decided from the sign of `1 / dir`, so `dir = -0` counts as
+    /// negative, matching `inv_dir = -∞`.
+    negative: [bool; 3],
+}
+
+impl WideRay {
+    fn new(ray: &Ray) -> Self {
+        let inv_dir = ray.dir.recip();
+        Self {
+            origin: ray.origin.to_array().map(Vec4::splat),
+            inv_dir: inv_dir.to_array().map(Vec4::splat),
+            negative: inv_dir.to_array().map(|d| d < 0.0),
+        }
+    }
+}
+
+impl WideNode {
+    /// Which of the four boxes the ray passes through before `t_max` (bit `i` for lane `i`),
+    /// and where it enters each (0 if it starts inside).
+    ///
+    /// The slab test of [`Aabb::entry`](crate::geometry::Aabb::entry), made robust the same
+    /// way, in four lanes at once: each exit is widened by `1 + 2 γ(3)` so that rounding never
+    /// loses a box the exact ray touches, and a `0 × ∞` (a ray parallel to a slab, starting
+    /// on its plane) counts as inside that slab. Each lane rounds exactly as the scalar test
+    /// does, so the answer does not depend on the instruction set. `t_max` must not be NaN.
+    #[inline]
+    fn entries(&self, ray: &WideRay, t_max: f32) -> (u32, Vec4) {
+        const EXIT_SLACK: f32 = 1.0 + 2.0 * gamma(3);
+        let mut t_enter = Vec4::ZERO;
+        let mut t_exit = Vec4::splat(t_max);
+        for axis in 0..3 {
+            let (near, far) = if ray.negative[axis] {
+                (self.max[axis], self.min[axis])
+            } else {
+                (self.min[axis], self.max[axis])
+            };
+            let t_near = (near - ray.origin[axis]) * ray.inv_dir[axis];
+            let t_far = (far - ray.origin[axis]) * ray.inv_dir[axis] * EXIT_SLACK;
+            let t_near = Vec4::select(t_near.is_nan_mask(), Vec4::ZERO, t_near);
+            let t_far = Vec4::select(t_far.is_nan_mask(), Vec4::INFINITY, t_far);
+            t_enter = t_enter.max(t_near);
+            t_exit = t_exit.min(t_far);
+        }
+        (t_enter.cmple(t_exit).bitmask(), t_enter)
     }
 }

@@ -128,7 +128,10 @@ mod tests {
             assert_eq!(edges.get(&(b, a)), Some(&1), "edge {a}->{b} has no twin");
         }
         for (p, n) in mesh.positions.iter().zip(mesh.normals.as_ref().unwrap()) {
-            assert!(n.dot(p.normalize()) > 0.7, "normal {n} at {p} does not point outwards");
+            assert!(
+                n.dot(p.normalize()) > 0.7,
+                "normal {n} at {p} does not point outwards"
+            );
             let r = p.length();
             assert!((r - 1.0).abs() <= 1.5 * BUMP_HEIGHT + 1e-6, "radius {r}");
         }
