@@ -3,8 +3,9 @@
 use super::aabb::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
-use super::shapes::{Crossing, Shape};
+use super::shapes::{Crossing, Shape, watertight_crossing};
 use crate::Ray;
+use glam::Vec3;
 
 /// All the shapes of a scene and the BVH that finds which one a ray meets first.
 ///
@@ -15,14 +16,62 @@ use crate::Ray;
 pub struct Geometry {
     shapes: Vec<Shape>,
     bvh: Bvh,
+    /// What the ray tests need of the shapes in the BVH, in its leaf order: a leaf's shapes
+    /// lie side by side, and a triangle's three vertices are all a test reads of it.
+    tests: Vec<ShapeTest>,
+}
+
+/// A shape as the walk of the BVH tests it.
+#[derive(Clone, Copy, Debug)]
+enum ShapeTest {
+    /// A triangle with area: its vertices, and its index in `shapes`.
+    Triangle { p: [Vec3; 3], shape: u32 },
+    /// Any other shape, tested as `shapes[shape]`.
+    Other { shape: u32 },
+}
+
+impl ShapeTest {
+    fn shape(&self) -> usize {
+        match *self {
+            ShapeTest::Triangle { shape, .. } | ShapeTest::Other { shape } => shape as usize,
+        }
+    }
 }
 
 impl Geometry {
     /// Takes ownership of the shapes and builds the BVH over them.
     pub fn new(shapes: Vec<Shape>) -> Self {
-        let bounds: Vec<Aabb> = shapes.iter().map(Shape::bounds).collect();
+        // A triangle without area (or with a NaN vertex) is never hit: its box is left empty,
+        // so the BVH leaves it out, and the walk tests the others without asking.
+        let bounds: Vec<Aabb> = shapes
+            .iter()
+            .map(|shape| match shape {
+                Shape::Triangle(triangle) if !(triangle.area() > 0.0) => Aabb::empty(),
+                _ => shape.bounds(),
+            })
+            .collect();
         let bvh = Bvh::build(&bounds);
-        Self { shapes, bvh }
+        let tests = bvh
+            .leaf_order()
+            .iter()
+            .map(|&index| match &shapes[index as usize] {
+                Shape::Triangle(triangle) => ShapeTest::Triangle {
+                    p: triangle.p,
+                    shape: index,
+                },
+                _ => ShapeTest::Other { shape: index },
+            })
+            .collect();
+        Self { shapes, bvh, tests }
+    }
+
+    /// Where the ray crosses the shape at `position` in the BVH's leaf order.
+    #[inline]
+    fn crossing(&self, position: usize, ray: &Ray) -> Option<Crossing> {
+        match &self.tests[position] {
+            ShapeTest::Triangle { p, .. } => watertight_crossing(p, ray),
+            ShapeTest::Other { shape } => self.shapes[*shape as usize].crossing(ray),
+        }
     }
 
     /// The nearest hit with `0 < t < ray.t_max`; its `shape` is an index into
@@ -30,12 +79,13 @@ impl Geometry {
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         // Every closer crossing replaces the last; the record is built for the nearest only.
         let mut nearest: Option<(usize, Crossing)> = None;
-        self.bvh.intersect(ray, |index, t_max| {
-            let crossing = self.shapes[index].crossing(&Ray { t_max, ..*ray })?;
-            nearest = Some((index, crossing));
+        self.bvh.intersect_in_leaf_order(ray, |position, t_max| {
+            let crossing = self.crossing(position, &Ray { t_max, ..*ray })?;
+            nearest = Some((position, crossing));
             Some(crossing.t)
         });
-        let (index, crossing) = nearest?;
+        let (position, crossing) = nearest?;
+        let index = self.tests[position].shape();
         Some(SurfaceHit {
             shape: index as u32,
             ..self.shapes[index].surface_hit(crossing)
@@ -46,7 +96,7 @@ impl Geometry {
     /// [`intersect`](Self::intersect): it stops at the first hit found, nearest or not.
     pub fn occluded(&self, ray: &Ray) -> bool {
         self.bvh
-            .any_hit(ray, |index| self.shapes[index].crossing(ray).is_some())
+            .any_hit_in_leaf_order(ray, |position| self.crossing(position, ray).is_some())
     }
 
     /// The shapes, in the order given to [`new`](Self::new).

@@ -85,7 +85,7 @@ impl Bvh {
 
 impl BinaryTree {
     /// The binary SAH tree over the boxes (see [`Bvh::build`]).
-    fn build(primitive_bounds: &[Aabb]) -> BinaryTree {
+    pub(super) fn build(primitive_bounds: &[Aabb]) -> BinaryTree {
         let mut primitives: Vec<BuildPrimitive> = primitive_bounds
             .iter()
             .enumerate()

@@ -81,6 +81,12 @@ impl Bvh {
         self.bounds
     }
 
+    /// The primitives' indices in the order of the leaves: each leaf's primitives are a
+    /// contiguous run. The `*_in_leaf_order` walks name primitives by their position here.
+    pub fn leaf_order(&self) -> &[u32] {
+        &self.primitive_indices
+    }
+
     /// The bytes the tree takes: its nodes and its primitive indices.
     pub fn memory_bytes(&self) -> usize {
         std::mem::size_of_val(self.nodes.as_slice())

@@ -109,6 +109,24 @@ fn random_boxes_make_a_shallow_tree() {
     let bvh = build_and_check(&boxes);
     assert!(bvh.depth() < 30, "depth {}", bvh.depth());
     assert!(bvh.node_count() < 2 * boxes.len());
+
+    // Collapsing into nodes of four keeps the leaves and roughly halves the depth: up to three
+    // binary inner nodes fit in one wide node (fewer near the leaves, where a subtree may
+    // hold only two or three leaves).
+    let binary = build::BinaryTree::build(&boxes);
+    let leaves = |kind: &build::NodeKind| matches!(kind, build::NodeKind::Leaf { .. });
+    let binary_inner = binary.nodes.iter().filter(|n| !leaves(&n.kind)).count();
+    assert!(
+        2 * bvh.node_count() <= binary_inner,
+        "{} wide nodes for {binary_inner} binary inner nodes",
+        bvh.node_count()
+    );
+    assert!(
+        bvh.depth() <= binary.depth / 2 + 1,
+        "depth {} from a binary depth of {}",
+        bvh.depth(),
+        binary.depth
+    );
 }
 
 #[test]

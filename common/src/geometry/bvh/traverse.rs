@@ -1,6 +1,6 @@
 //! Walking the BVH: nearest child first, with a stack that never allocates.
 
-use std::ops::ControlFlow;
+use std::ops::{ControlFlow, Range};
 
 use glam::Vec4;
 
@@ -28,10 +28,37 @@ impl Bvh {
     where
         F: FnMut(usize, f32) -> Option<f32>,
     {
+        let order = &self.primitive_indices;
+        self.intersect_in_leaf_order(ray, |position, t_max| {
+            hit_primitive(order[position] as usize, t_max)
+        })
+        .map(|hit| BvhHit {
+            primitive: order[hit.primitive] as usize,
+            t: hit.t,
+        })
+    }
+
+    /// Whether `hit_primitive(i)` holds for some primitive whose box the ray passes through
+    /// before `ray.t_max`. Stops at the first one: a shadow ray needs no more.
+    pub fn any_hit<F>(&self, ray: &Ray, mut hit_primitive: F) -> bool
+    where
+        F: FnMut(usize) -> bool,
+    {
+        let order = &self.primitive_indices;
+        self.any_hit_in_leaf_order(ray, |position| hit_primitive(order[position] as usize))
+    }
+
+    /// [`intersect`](Self::intersect) with primitives named by their position in
+    /// [`leaf_order`](Self::leaf_order) rather than by their index, and the hit's `primitive`
+    /// such a position: for a caller that keeps its primitives in that order, so that a leaf's
+    /// primitives lie side by side in memory.
+    pub fn intersect_in_leaf_order<F>(&self, ray: &Ray, mut hit_primitive: F) -> Option<BvhHit>
+    where
+        F: FnMut(usize, f32) -> Option<f32>,
+    {
         let mut nearest = None;
-        self.walk(ray, |primitives, mut t_max| {
-            for &primitive in primitives {
-                let primitive = primitive as usize;
+        self.walk(ray, |positions, mut t_max| {
+            for primitive in positions {
                 if let Some(t) = hit_primitive(primitive, t_max)
                     && t < t_max
                 {
@@ -44,15 +71,15 @@ impl Bvh {
         nearest
     }
 
-    /// Whether `hit_primitive(i)` holds for some primitive whose box the ray passes through
-    /// before `ray.t_max`. Stops at the first one: a shadow ray needs no nearest hit.
-    pub fn any_hit<F>(&self, ray: &Ray, mut hit_primitive: F) -> bool
+    /// [`any_hit`](Self::any_hit) with primitives named by their position in
+    /// [`leaf_order`](Self::leaf_order).
+    pub fn any_hit_in_leaf_order<F>(&self, ray: &Ray, mut hit_primitive: F) -> bool
     where
         F: FnMut(usize) -> bool,
     {
         let mut found = false;
-        self.walk(ray, |primitives, t_max| {
-            if primitives.iter().any(|&p| hit_primitive(p as usize)) {
+        self.walk(ray, |mut positions, t_max| {
+            if positions.any(&mut hit_primitive) {
                 found = true;
                 ControlFlow::Break(())
             } else {
@@ -62,7 +89,7 @@ impl Bvh {
         found
     }
 
-    /// Hands `visit_leaf` the primitives of every leaf whose box the ray enters before the
+    /// Hands `visit_leaf` the positions (in leaf order) of the primitives of every leaf whose box the ray enters before the
     /// current `t_max`, nearer subtrees first. `visit_leaf` returns the new `t_max`, or
     /// `Break` to stop.
     ///
@@ -75,7 +102,7 @@ impl Bvh {
     /// exactly when its entry is before the new `t_max`.
     fn walk<F>(&self, ray: &Ray, visit_leaf: F)
     where
-        F: FnMut(&[u32], f32) -> ControlFlow<(), f32>,
+        F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
         // The stack is an array, so it is filled with zeros before the walk starts. Each
         // level of the current path defers at most three children, so shallow trees (every
@@ -94,7 +121,7 @@ impl Bvh {
     /// times the tree's depth.
     fn walk_with_stack<const STACK: usize, F>(&self, ray: &Ray, mut visit_leaf: F)
     where
-        F: FnMut(&[u32], f32) -> ControlFlow<(), f32>,
+        F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
         debug_assert!(3 * self.depth <= STACK);
         let mut t_max = ray.t_max;
@@ -139,8 +166,7 @@ impl Bvh {
                     continue;
                 }
             } else {
-                let range = index as usize..(index + count) as usize;
-                match visit_leaf(&self.primitive_indices[range], t_max) {
+                match visit_leaf(index as usize..(index + count) as usize, t_max) {
                     ControlFlow::Continue(new_t_max) => t_max = new_t_max,
                     ControlFlow::Break(()) => return,
                 }

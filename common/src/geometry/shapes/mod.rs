@@ -18,6 +18,7 @@ pub use mesh::{MeshError, TriangleMesh};
 pub use parallelogram::Parallelogram;
 pub use sphere::Sphere;
 pub use triangle::Triangle;
+pub(crate) use triangle::watertight_crossing;
 
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
