@@ -43,10 +43,11 @@ impl Geometry {
     pub fn new(shapes: Vec<Shape>) -> Self {
         // A triangle without area (or with a NaN vertex) is never hit: its box is left empty,
         // so the BVH leaves it out, and the walk tests the others without asking.
+        let has_area = |triangle: &super::Triangle| triangle.area() > 0.0; // false for NaN
         let bounds: Vec<Aabb> = shapes
             .iter()
             .map(|shape| match shape {
-                Shape::Triangle(triangle) if !(triangle.area() > 0.0) => Aabb::empty(),
+                Shape::Triangle(triangle) if !has_area(triangle) => Aabb::empty(),
                 _ => shape.bounds(),
             })
             .collect();
