@@ -1,10 +1,10 @@
 //! The chapter's figures: what recursion adds, what one ray per pixel misses, Fresnel's
 //! curves, how the ray tree grows, and error against time; and, for the appendices, the
-//! agreement with Mitsuba 3 and the tracer's speed.
+//! agreement with Mitsuba 3, the tracer's speed and the BVH's cost against its size.
 //!
 //! Every number the book's prose quotes from a run is written here into a small Markdown file
-//! (`ray_tree.md`, `convergence.md`, `speed.md`, `mitsuba-noise.md`) that the pages include,
-//! so the text always matches the figures beside it, quick or full.
+//! (`ray_tree.md`, `convergence.md`, `speed.md`, `mitsuba-noise.md`, `bvh-cost.md`) that the
+//! pages include, so the text always matches the figures beside it, quick or full.
 
 use crate::agreement::AGREEMENT;
 use crate::optics::fresnel_dielectric;
@@ -67,6 +67,9 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     })?;
     figures.agreement(&AGREEMENT)?;
     figures.make("the Mitsuba noise sentence", mitsuba_noise)?;
+    figures.make("the BVH's cost against its size", |out| {
+        bvh_cost(out, level)
+    })?;
     figures.finish()
 }
 
@@ -451,4 +454,100 @@ mod tests {
             "{sentence}"
         );
     }
+}
+
+/// The BVH's build time, memory and time per ray against the number of triangles, for the
+/// appendix on acceleration structures: generated bumpy spheres of 10^3 to 10^6 triangles
+/// (10^5 for quick figures), each beside the slope its structure promises.
+fn bvh_cost(out: &Path, level: Level) -> anyhow::Result<()> {
+    use common::geometry::{TriangleMesh, measure_bvh_cost};
+    let sizes: &[usize] = level.pick(
+        &[1_000, 10_000, 100_000],
+        &[1_000, 3_000, 10_000, 30_000, 100_000, 300_000, 1_000_000],
+    );
+    let rays = level.pick(20_000, 200_000);
+    let costs: Vec<_> = sizes
+        .iter()
+        .map(|&n| measure_bvh_cost(&TriangleMesh::bumpy_sphere(n), rays, 1))
+        .collect();
+
+    let mut csv = String::from(
+        "triangles,build_seconds,bytes_per_triangle,nanoseconds_per_ray,\
+         rays_per_second_1_thread,rays_per_second_2_threads,hit_fraction\n",
+    );
+    let mut table = String::from(
+        "| triangles | build | bytes per triangle | per ray, 1 thread | rays per second, 1 thread | 2 threads |\n\
+         |---:|---:|---:|---:|---:|---:|\n",
+    );
+    for c in &costs {
+        csv += &format!(
+            "{},{:.6e},{:.1},{:.1},{:.0},{:.0},{:.4}\n",
+            c.triangles,
+            c.build_seconds,
+            c.bytes_per_triangle,
+            c.nanoseconds_per_ray,
+            c.rays_per_second[0],
+            c.rays_per_second[1],
+            c.hit_fraction
+        );
+        table += &format!(
+            "| {} | {:.2} ms | {:.0} | {:.0} ns | {:.2} M | {:.2} M |\n",
+            c.triangles,
+            1e3 * c.build_seconds,
+            c.bytes_per_triangle,
+            c.nanoseconds_per_ray,
+            c.rays_per_second[0] / 1e6,
+            c.rays_per_second[1] / 1e6
+        );
+    }
+    write_text(&out.join("bvh-cost.csv"), &csv)?;
+    write_text(&out.join("bvh-cost.md"), &table)?;
+
+    // A reference curve through the middle measurement, with the shape `shape(n)`.
+    let reference = |measured: &[(f64, f64)], shape: &dyn Fn(f64) -> f64| {
+        let (n_mid, y_mid) = measured[measured.len() / 2];
+        let scale = y_mid / shape(n_mid);
+        measured
+            .iter()
+            .map(|&(n, _)| (n, scale * shape(n)))
+            .collect::<Vec<_>>()
+    };
+    let build: Vec<(f64, f64)> = costs
+        .iter()
+        .map(|c| (c.triangles as f64, c.build_seconds))
+        .collect();
+    line_plot(
+        &out.join("bvh-build.png"),
+        "Building the BVH",
+        &Axes::log_log("triangles", "build time (s)"),
+        &[
+            Series::new("measured", build.clone(), SeriesStyle::LineAndPoints),
+            Series::new(
+                "n log n",
+                reference(&build, &|n| n * n.log2()),
+                SeriesStyle::Dashed,
+            ),
+        ],
+    )?;
+    let per_ray = |threads: usize| -> Vec<(f64, f64)> {
+        costs
+            .iter()
+            .map(|c| (c.triangles as f64, 1e9 / c.rays_per_second[threads]))
+            .collect()
+    };
+    line_plot(
+        &out.join("bvh-trace.png"),
+        "Nearest hit through the BVH",
+        &Axes::log_log("triangles", "time per ray (ns)"),
+        &[
+            Series::new("1 thread", per_ray(0), SeriesStyle::LineAndPoints),
+            Series::new("2 threads", per_ray(1), SeriesStyle::LineAndPoints),
+            Series::new(
+                "log n",
+                reference(&per_ray(0), &|n| n.log2()),
+                SeriesStyle::Dashed,
+            ),
+        ],
+    )?;
+    Ok(())
 }

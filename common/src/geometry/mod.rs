@@ -25,6 +25,7 @@
 
 mod aabb;
 mod bvh;
+mod cost;
 mod float;
 mod hit;
 mod interval;
@@ -37,6 +38,7 @@ mod tests;
 
 pub use aabb::{Aabb, SlabRay};
 pub use bvh::{Bvh, BvhHit, MAX_PRIMITIVES_PER_LEAF};
+pub use cost::{BvhCost, measure_bvh_cost};
 pub use float::{MACHINE_EPSILON, gamma, next_float_down, next_float_up};
 pub use hit::SurfaceHit;
 pub use scene_geometry::Geometry;

@@ -110,6 +110,13 @@ impl Geometry {
         self.bvh.bounds()
     }
 
+    /// The bytes the geometry takes: its shapes, its BVH and the walk's copy of them.
+    pub fn memory_bytes(&self) -> usize {
+        std::mem::size_of_val(self.shapes.as_slice())
+            + self.bvh.memory_bytes()
+            + std::mem::size_of_val(self.tests.as_slice())
+    }
+
     /// The BVH, for statistics.
     pub fn bvh(&self) -> &Bvh {
         &self.bvh
