@@ -18,7 +18,11 @@ pub const WIDTH: usize = 4;
 /// A node: up to four children's boxes, one per lane, and where each child is.
 ///
 /// A lane without a child holds an empty box (`min = +∞`, `max = -∞`), which no ray enters.
+///
+/// A node is 116 bytes; aligned to 64, it fills exactly two cache lines, which a walk that
+/// waits on memory loads together, instead of straddling three.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(align(64))]
 pub(super) struct WideNode {
     /// The children's lower corners, axis by axis: `min[axis]` holds lane `i`'s `min[axis]`.
     pub min: [Vec4; 3],
