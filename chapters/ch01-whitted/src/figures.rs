@@ -436,26 +436,6 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     Ok(())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_ray_tree_sentence_says_less_or_more_as_the_numbers_say() {
-        let sentence = ray_tree_sentence(&[("slow", 2.0, 6.0), ("bushy", 1.0, 2048.0)]);
-        assert!(
-            sentence.contains(
-                "the slow scene's tree grew from 2.00 to 6.00 rays per pixel, 3.0 times (less"
-            ),
-            "{sentence}"
-        );
-        assert!(
-            sentence.contains("2048.0 times (more than a tree that doubles)"),
-            "{sentence}"
-        );
-    }
-}
-
 /// The BVH's build time, memory and time per ray against the number of triangles, for the
 /// appendix on acceleration structures: generated bumpy spheres of 10^3 to 10^6 triangles
 /// (10^5 for quick figures), each beside the slope its structure promises.
@@ -550,4 +530,24 @@ fn bvh_cost(out: &Path, level: Level) -> anyhow::Result<()> {
         ],
     )?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ray_tree_sentence_says_less_or_more_as_the_numbers_say() {
+        let sentence = ray_tree_sentence(&[("slow", 2.0, 6.0), ("bushy", 1.0, 2048.0)]);
+        assert!(
+            sentence.contains(
+                "the slow scene's tree grew from 2.00 to 6.00 rays per pixel, 3.0 times (less"
+            ),
+            "{sentence}"
+        );
+        assert!(
+            sentence.contains("2048.0 times (more than a tree that doubles)"),
+            "{sentence}"
+        );
+    }
 }

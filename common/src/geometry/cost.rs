@@ -72,8 +72,7 @@ pub fn measure_bvh_cost(mesh: &TriangleMesh, ray_count: usize, seed: u64) -> Bvh
     let mut best_parallel = f64::INFINITY;
     for _ in 0..3 {
         let started = Instant::now();
-        let parallel_hits: usize =
-            two_threads.install(|| rays.par_chunks(1024).map(|chunk| trace(chunk)).sum());
+        let parallel_hits: usize = two_threads.install(|| rays.par_chunks(1024).map(&trace).sum());
         best_parallel = best_parallel.min(started.elapsed().as_secs_f64());
         assert_eq!(parallel_hits, hits, "the same rays hit the same triangles");
     }
