@@ -89,9 +89,9 @@ impl Bvh {
         found
     }
 
-    /// Hands `visit_leaf` the positions (in leaf order) of the primitives of every leaf whose box the ray enters before the
-    /// current `t_max`, nearer subtrees first. `visit_leaf` returns the new `t_max`, or
-    /// `Break` to stop.
+    /// Hands `visit_leaf` the positions (in leaf order) of the primitives of every leaf whose
+    /// box the ray enters before the current `t_max`, nearer subtrees first. `visit_leaf`
+    /// returns the new `t_max`, or `Break` to stop.
     ///
     /// At a node, the ray is tested against its four children's boxes at once, and the ones it
     /// enters are visited nearest first: a close hit found early shrinks `t_max`, which then
