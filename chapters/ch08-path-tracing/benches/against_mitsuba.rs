@@ -40,17 +40,17 @@ use common::test_support::mesh_files::{PlyEncoding, PlyStyle, write_ply};
 #[command(about = "Chapter 08 against Mitsuba 3: samples per second at equal noise per sample")]
 struct Args {
     /// Render threads of both renderers.
-    #[arg(long, default_value_t = 2)]
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: u32,
     /// Back-to-back rounds per scene (the median is reported).
-    #[arg(long, default_value_t = 3)]
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u64).range(1..=100))]
     pairs: u64,
     /// Samples per pixel.
-    #[arg(long, default_value_t = 64)]
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
     spp: u64,
     /// Triangles of the mesh scene's bumpy sphere (at least).
-    #[arg(long, default_value_t = 100_000)]
-    triangles: usize,
+    #[arg(long, default_value_t = 100_000, value_parser = clap::value_parser!(u64).range(1..=50_000_000))]
+    triangles: u64,
     /// Mitsuba's variants to time beside ours.
     #[arg(long, value_delimiter = ',', default_value = "scalar_rgb,llvm_ad_rgb")]
     variants: Vec<String>,
@@ -87,7 +87,7 @@ fn main() {
         }
         None => temporary.path(),
     };
-    let scenes = [cornell(), mesh_scene(dir, args.triangles)];
+    let scenes = [cornell(), mesh_scene(dir, args.triangles as usize)];
     if python.is_none() {
         println!("MITSUBA_PYTHON is not set: timing ours alone.");
     }
