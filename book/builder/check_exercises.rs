@@ -56,7 +56,7 @@ pub fn run(
     let edition_build = EditionBuild {
         target_dir: student_dir.join("target"),
         build_dir: target_dir,
-        incremental: false,
+        incremental: true,
     };
 
     println!("Writing the student edition to {}", edition.display());
@@ -96,7 +96,7 @@ pub fn run(
             chosen.len(),
             started.elapsed().as_secs_f64()
         );
-        let mut trial = Trial::new(root, &student_dir)?;
+        let mut trial = Trial::over_edition(root, edition, edition_build, exercises);
         prove_in_order(&mut trial, exercises, selected)?;
         println!("({:.0} s so far)", started.elapsed().as_secs_f64());
         prove_wrong_answers(&mut trial, &chosen)?;
@@ -122,13 +122,14 @@ pub fn run(
 /// Proves that every recorded wrong answer fails its exercise's check, and that the check
 /// says so in the recorded words.
 ///
-/// The answers are tried in a copy of the workspace, all solutions in place but the ones being
-/// tried, in rounds: round `r` puts in the `r`-th wrong answer of every exercise that has one,
+/// The answers are tried in a copy of the workspace (the student edition with its solutions
+/// put back, or a fresh copy when only the wrong answers are checked), all solutions in place
+/// but the ones being tried, in rounds: round `r` puts in the `r`-th wrong answer of every exercise that has one,
 /// so a round costs one build of the changed crates, not one per answer. A later exercise's
 /// check may call an earlier exercise of its chapter, so an answer that surprises in a round
 /// where its chapter had another wrong answer too is tried again alone before it counts. The
-/// copy is built with settings of its own (see [`TRIALS_CONFIG`]) in the shared build
-/// directory.
+/// copy's crates have names of their own in the shared build directory (see
+/// [`SEPARATE_CRATES_CONFIG`] and [`TRIALS_CONFIG`]).
 fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<()> {
     let rounds = exercises.iter().map(|e| e.wrong.len()).max().unwrap_or(0);
     if rounds == 0 {
@@ -203,8 +204,8 @@ fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<
 }
 
 /// The copy of the workspace where stubs and wrong answers are put in place of solutions, and
-/// the files the last round changed. It is built with settings of its own (see
-/// [`TRIALS_CONFIG`]) in the shared build directory.
+/// the files it holds that differ from the workspace's. Its crates are built with settings of
+/// their own, so they have names of their own in the shared build directory.
 struct Trial<'a> {
     root: &'a Path,
     copy: PathBuf,
@@ -213,7 +214,8 @@ struct Trial<'a> {
 }
 
 impl<'a> Trial<'a> {
-    /// Writes a fresh copy of the workspace, every solution in place.
+    /// Writes a fresh copy of the workspace, every solution in place: for checking the wrong
+    /// answers alone, without the student edition.
     fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
         let copy = student_dir.join("trials");
         student_edition::write_copy(root, &copy)?;
@@ -228,6 +230,32 @@ impl<'a> Trial<'a> {
             },
             changed: Vec::new(),
         })
+    }
+
+    /// Takes over the student edition at `edition`, already built with `build`, for the trials:
+    /// putting back the solutions of its exercise files makes it the workspace as far as the
+    /// checks can tell (it differs only in the notes its build scripts print and in an
+    /// exercise list without wrong answers, which no check reads). Its crates, compiled
+    /// incrementally, are then rebuilt in seconds per round, where a fresh copy would compile
+    /// `common` and every chapter once more.
+    fn over_edition(
+        root: &'a Path,
+        edition: PathBuf,
+        build: EditionBuild,
+        exercises: &[Exercise],
+    ) -> Self {
+        let mut changed: Vec<PathBuf> = Vec::new();
+        for exercise in exercises {
+            if !changed.contains(&exercise.file) {
+                changed.push(exercise.file.clone());
+            }
+        }
+        Self {
+            root,
+            copy: edition,
+            build,
+            changed,
+        }
     }
 
     /// Puts each `(exercise, code)` in, `code` standing where the exercise's solution stands,
@@ -471,7 +499,7 @@ struct EditionBuild {
     /// Whether its crates are compiled incrementally. The trials are: each round changes a few
     /// function bodies and rebuilds every chapter that holds one, which from scratch costs
     /// about 20 s per round on a 2-core machine and with rustc's incremental caches about 2 s.
-    /// The edition is built once, so there the caches would only cost time and disk.
+    /// So is the edition, since the trials take it over once its checks have run.
     incremental: bool,
 }
 
