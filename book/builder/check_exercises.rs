@@ -49,7 +49,7 @@ pub fn run(
     let student_dir = target_dir.join("student");
     let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
     if wrong_answers_only {
-        let mut trial = Trial::new(root, &student_dir)?;
+        let mut trial = Trial::new(root, &student_dir, exercises)?;
         return prove_wrong_answers(&mut trial, &chosen);
     }
     let edition = student_dir.join("edition");
@@ -73,8 +73,9 @@ pub fn run(
     );
     let mut surprises = Vec::new();
     let all: Vec<&Exercise> = chosen.iter().collect();
-    let stubs = run_checks(&all, &edition, Some(&edition_build))?;
-    let solutions = run_checks(&all, root, None)?;
+    let every_package = packages_checked(exercises);
+    let stubs = run_checks(&all, &every_package, &edition, Some(&edition_build))?;
+    let solutions = run_checks(&all, &every_package, root, None)?;
     for ((exercise, stub), solution) in chosen.iter().zip(stubs).zip(solutions) {
         println!(
             "{:<28} {:<28} {:<28}",
@@ -211,12 +212,14 @@ struct Trial<'a> {
     copy: PathBuf,
     build: EditionBuild,
     changed: Vec<PathBuf>,
+    /// Every package with checks, all tested in each round (see [`run_checks`]).
+    packages: Vec<String>,
 }
 
 impl<'a> Trial<'a> {
     /// Writes a fresh copy of the workspace, every solution in place: for checking the wrong
     /// answers alone, without the student edition.
-    fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
+    fn new(root: &'a Path, student_dir: &Path, exercises: &[Exercise]) -> Result<Self> {
         let copy = student_dir.join("trials");
         student_edition::write_copy(root, &copy)?;
         write_config(&copy, TRIALS_CONFIG)?;
@@ -229,6 +232,7 @@ impl<'a> Trial<'a> {
                 incremental: true,
             },
             changed: Vec::new(),
+            packages: packages_checked(exercises),
         })
     }
 
@@ -255,6 +259,7 @@ impl<'a> Trial<'a> {
             copy: edition,
             build,
             changed,
+            packages: packages_checked(exercises),
         }
     }
 
@@ -294,7 +299,7 @@ impl<'a> Trial<'a> {
             .collect();
         self.put_in(&splices)?;
         let exercises: Vec<&Exercise> = answers.iter().map(|(exercise, _)| *exercise).collect();
-        let outcomes = run_checks(&exercises, &self.copy, Some(&self.build))?;
+        let outcomes = run_checks(&exercises, &self.packages, &self.copy, Some(&self.build))?;
         Ok(answers
             .iter()
             .zip(outcomes)
@@ -379,7 +384,7 @@ fn prove_in_order<'e>(
         }
         trial.put_in(&stubs)?;
         let to_run: Vec<&Exercise> = checks.iter().map(|(_, exercise)| *exercise).collect();
-        let outcomes = run_checks(&to_run, &trial.copy, Some(&trial.build))?;
+        let outcomes = run_checks(&to_run, &trial.packages, &trial.copy, Some(&trial.build))?;
         for ((chapter, exercise), outcome) in checks.into_iter().zip(outcomes) {
             let later = chapter.len() - solved;
             if outcome.passed {
@@ -523,11 +528,13 @@ impl EditionBuild {
 /// Only those libraries can break: a stub changes a function's body, never its signature, so
 /// nothing that calls it notices, neither the package's binaries, benchmarks and tests nor
 /// the packages that depend on it; and a stub's warnings (a variable the stub leaves unused,
-/// code after its `todo!`) are the library's own. The checks then compile the libraries'
-/// unit tests, which is all they run. Building every target as well would compile each
+/// code after its `todo!`) are the library's own. The libraries are compiled with their unit
+/// tests, which is all the checks run, and as the checks compile them: `cargo test` turns on
+/// the dev-dependencies' features, so a `cargo build` of the same libraries would compile
+/// `common` and every chapter once more. Building every target as well would compile each
 /// binary, benchmark and integration test of the edition and could find nothing more.
 fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -> Result<()> {
-    let mut args = vec!["build", "--lib"];
+    let mut args = vec!["test", "--no-run", "--lib"];
     let mut packages: Vec<&str> = exercises.iter().map(|e| e.chapter.as_str()).collect();
     packages.sort_unstable();
     packages.dedup();
@@ -572,13 +579,18 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
 
 /// Runs the checks of `exercises` in `dir` and returns their outcomes in the same order.
 ///
-/// Checks of the usual form (`cargo test -p PACKAGE --lib exercise_...`) are run together, one
-/// `cargo test` per package: an exercise's check passes when every test its filter picks
-/// passed, and its output is what those tests printed. That is what its own command would
-/// report, at the cost of one cargo run per package rather than per exercise. Other checks run
-/// as they are.
+/// Checks of the usual form (`cargo test -p PACKAGE --lib exercise_...`) are run together: an
+/// exercise's check passes when every test its filter picks passed, and its output is what
+/// those tests printed. That is what its own command would report, at the cost of one cargo
+/// run, which compiles the packages side by side. That run always tests `every_package`, even
+/// those without a check this time: the dev-dependencies of the packages tested decide the
+/// features of their dependencies, and a run over fewer packages could compile `common` and
+/// every chapter again with other features. If that run compiled nothing (one package's code
+/// does not build), each package is run on its own, so one package's error is not blamed on
+/// the others. Other checks run as they are.
 fn run_checks(
     exercises: &[&Exercise],
+    every_package: &[String],
     dir: &Path,
     build: Option<&EditionBuild>,
 ) -> Result<Vec<Outcome>> {
@@ -591,9 +603,30 @@ fn run_checks(
             None => outcomes[index] = Some(run_check(&exercise.check, dir, build)?),
         }
     }
-    for package in packages {
-        let command = format!("cargo test -p {package} --lib {}", progress::CHECK_PREFIX);
-        let run = run_check(&command, dir, build)?;
+    let mut runs: Vec<(&str, Outcome)> = Vec::new();
+    if !packages.is_empty() {
+        let every_package: Vec<&str> = every_package.iter().map(String::as_str).collect();
+        let selection: Vec<String> = every_package.iter().map(|p| format!("-p {p}")).collect();
+        let command = format!(
+            "cargo test --no-fail-fast {} --lib {} 2>&1",
+            selection.join(" "),
+            progress::CHECK_PREFIX
+        );
+        let joint = run_check(&command, dir, build)?;
+        if let Some(sections) = package_sections(&joint.output, &every_package) {
+            runs = sections
+                .into_iter()
+                .filter(|(package, _)| packages.contains(package))
+                .collect();
+        }
+    }
+    if runs.is_empty() {
+        for &package in &packages {
+            let command = format!("cargo test -p {package} --lib {}", progress::CHECK_PREFIX);
+            runs.push((package, run_check(&command, dir, build)?));
+        }
+    }
+    for (package, run) in &runs {
         let compiled = run.output.contains("\nrunning ");
         let results = progress::test_results(&run.output);
         let printed = failure_sections(&run.output);
@@ -601,7 +634,7 @@ fn run_checks(
             let Some((this_package, filter)) = progress::standard_check(&exercise.check) else {
                 continue;
             };
-            if this_package != package {
+            if this_package != *package {
                 continue;
             }
             let picked: Vec<&(String, bool)> = results
@@ -640,6 +673,63 @@ fn run_checks(
         .into_iter()
         .map(|outcome| outcome.expect("every exercise ran"))
         .collect())
+}
+
+/// The packages of the exercises whose checks have the usual form, in the list's order.
+fn packages_checked(exercises: &[Exercise]) -> Vec<String> {
+    let mut packages: Vec<String> = Vec::new();
+    for exercise in exercises {
+        if let Some((package, _)) = progress::standard_check(&exercise.check)
+            && !packages.iter().any(|p| p == package)
+        {
+            packages.push(package.to_owned());
+        }
+    }
+    packages
+}
+
+/// Splits the output of one `cargo test` run over several packages' libraries (stdout and
+/// stderr as one stream) into each package's part: from the line where cargo starts its test
+/// binary to the next such line. `None` unless every package has exactly one part, as when
+/// something did not compile.
+fn package_sections<'p>(output: &str, packages: &[&'p str]) -> Option<Vec<(&'p str, Outcome)>> {
+    let mut sections: Vec<(&'p str, String)> = Vec::new();
+    for line in output.lines() {
+        if let Some(binary) = line
+            .trim_start()
+            .strip_prefix("Running unittests ")
+            .and_then(|rest| rest.rsplit_once('/'))
+            .map(|(_, file)| file.trim_end_matches(')'))
+        {
+            // The binary is named after the crate and a hash: `ch01_whitted-0123abcd`.
+            let crate_name = binary.rsplit_once('-').map_or(binary, |(name, _)| name);
+            let package = packages
+                .iter()
+                .find(|package| package.replace('-', "_") == crate_name)?;
+            sections.push((package, String::new()));
+        } else if let Some((_, text)) = sections.last_mut() {
+            text.push_str(line);
+            text.push('\n');
+        }
+    }
+    let every_one_once = packages
+        .iter()
+        .all(|package| sections.iter().filter(|(p, _)| p == package).count() == 1);
+    every_one_once.then(|| {
+        sections
+            .into_iter()
+            .map(|(package, text)| {
+                let passed = text.contains("\ntest result: ok.");
+                (
+                    package,
+                    Outcome {
+                        passed,
+                        output: format!("\n{text}"),
+                    },
+                )
+            })
+            .collect()
+    })
 }
 
 /// What each failed test printed: the `---- NAME stdout ----` sections of a `cargo test` run.
@@ -737,6 +827,28 @@ mod tests {
         assert_eq!(wrong, toml::Value::String("limited".into()));
         assert_ne!(Some(&wrong), workspace.as_ref());
         assert_ne!(wrong, edition);
+    }
+
+    #[test]
+    fn a_joint_run_is_split_by_package() {
+        let output = "   Compiling ch01-whitted v0.1.0\n    Finished `test` profile\n     \
+                      Running unittests src/lib.rs (target/debug/deps/ch01_whitted-0a1b)\n\n\
+                      running 1 test\ntest a::exercise_x ... ok\n\ntest result: ok. 1 passed\n     \
+                      Running unittests src/lib.rs (target/debug/deps/ch02_monte_carlo-9f8e)\n\n\
+                      running 1 test\ntest b::exercise_y ... FAILED\n\nfailures:\n\n\
+                      ---- b::exercise_y stdout ----\nthe sign is wrong\n\ntest result: FAILED.\n";
+        let sections = package_sections(output, &["ch01-whitted", "ch02-monte-carlo"]).unwrap();
+        assert_eq!(sections.len(), 2);
+        assert_eq!(sections[0].0, "ch01-whitted");
+        assert!(sections[0].1.passed);
+        assert!(sections[0].1.output.contains("exercise_x"));
+        assert!(!sections[0].1.output.contains("exercise_y"));
+        assert_eq!(sections[1].0, "ch02-monte-carlo");
+        assert!(!sections[1].1.passed);
+        assert!(sections[1].1.output.contains("the sign is wrong"));
+        // A package that did not get as far as its tests: no split, each is run on its own.
+        assert!(package_sections(output, &["ch01-whitted", "ch03-anti-aliasing"]).is_none());
+        assert!(package_sections("error: could not compile", &["ch01-whitted"]).is_none());
     }
 
     #[test]
