@@ -10,9 +10,9 @@
 //! - `cargo run -p book -- checkpoint NAME --from WORKBOOK` puts one reference solution back.
 //! - `cargo run -p book -- check-prose` finds numbers typed into the pages that a run measured
 //!   (the site build runs it too).
-//! - `cargo run -p book -- check-site` opens every page of the built site in headless Chromium,
-//!   offline, and fails on broken images, links and formulas, script errors, or a search that
-//!   finds nothing; it leaves a screenshot of every page (CI runs it).
+//! - `cargo run -p book --features browser -- check-site` opens every page of the built site in
+//!   headless Chromium, offline, and fails on broken images, links and formulas, script errors,
+//!   or a search that finds nothing; it leaves a screenshot of every page (CI runs it).
 
 mod check_exercises;
 mod checkpoint;
@@ -26,6 +26,7 @@ mod offline_check;
 mod progress;
 mod prose_numbers;
 mod site;
+#[cfg(feature = "browser")]
 mod site_check;
 mod solution_markers;
 mod student_edition;
@@ -206,20 +207,38 @@ fn main() -> Result<()> {
             no_alt_check,
             search,
         }) => {
-            let options = site_check::Options {
-                site: site.unwrap_or_else(|| root.join("book").join("site")),
-                screenshots: screenshots
-                    .unwrap_or_else(|| workspace::target_dir(&root).join("site-screenshots")),
-                alt_check: !no_alt_check,
-                search_word: Some(search),
-            };
-            check_site(&options)
+            let site = site.unwrap_or_else(|| root.join("book").join("site"));
+            let screenshots = screenshots
+                .unwrap_or_else(|| workspace::target_dir(&root).join("site-screenshots"));
+            check_site(site, screenshots, !no_alt_check, search)
         }
     }
 }
 
+/// Without the browser driver, `check-site` says how to build it in.
+#[cfg(not(feature = "browser"))]
+fn check_site(
+    _site: PathBuf,
+    _screenshots: PathBuf,
+    _alt_check: bool,
+    _search: String,
+) -> Result<()> {
+    anyhow::bail!(
+        "check-site drives headless Chromium, and this build of the book leaves the browser \
+         driver out (it is the slowest part to compile): run `cargo run -p book --features \
+         browser -- check-site`"
+    )
+}
+
 /// Runs the browser check and prints what it found; fails if anything is wrong.
-fn check_site(options: &site_check::Options) -> Result<()> {
+#[cfg(feature = "browser")]
+fn check_site(site: PathBuf, screenshots: PathBuf, alt_check: bool, search: String) -> Result<()> {
+    let options = &site_check::Options {
+        site,
+        screenshots,
+        alt_check,
+        search_word: Some(search),
+    };
     let started = Instant::now();
     println!(
         "Opening every page of {} in headless Chromium, offline ...",
