@@ -126,11 +126,11 @@ pub fn run(
 /// The answers are tried in a copy of the workspace (the student edition with its solutions
 /// put back, or a fresh copy when only the wrong answers are checked), all solutions in place
 /// but the ones being tried, in rounds: round `r` puts in the `r`-th wrong answer of every
-/// exercise that has one, so a round costs one build of the changed crates, not one per answer. A later exercise's
-/// check may call an earlier exercise of its chapter, so an answer that surprises in a round
-/// where its chapter had another wrong answer too is tried again alone before it counts. The
-/// copy's crates have names of their own in the shared build directory (see
-/// [`SEPARATE_CRATES_CONFIG`] and [`TRIALS_CONFIG`]).
+/// exercise that has one, so a round costs one build of the changed crates, not one per answer.
+/// A later exercise's check may call an earlier exercise of its chapter, so an answer that
+/// surprises in a round where its chapter had another wrong answer too is tried again alone
+/// before it counts. The copy's crates have names of their own in the shared build directory
+/// (see [`SEPARATE_CRATES_CONFIG`] and [`TRIALS_CONFIG`]).
 fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<()> {
     let rounds = exercises.iter().map(|e| e.wrong.len()).max().unwrap_or(0);
     if rounds == 0 {
