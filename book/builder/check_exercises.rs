@@ -848,6 +848,8 @@ mod tests {
         assert!(sections[1].1.output.contains("the sign is wrong"));
         // A package that did not get as far as its tests: no split, each is run on its own.
         assert!(package_sections(output, &["ch01-whitted", "ch03-anti-aliasing"]).is_none());
+        let first_only = &output[..output.rfind("     Running").unwrap()];
+        assert!(package_sections(first_only, &["ch01-whitted", "ch02-monte-carlo"]).is_none());
         assert!(package_sections("error: could not compile", &["ch01-whitted"]).is_none());
     }
 
