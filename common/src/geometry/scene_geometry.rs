@@ -3,7 +3,7 @@
 use super::aabb::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
-use super::shapes::{Crossing, Shape, watertight_crossing};
+use super::shapes::{Crossing, RaySpace, Shape};
 use crate::Ray;
 use glam::Vec3;
 
@@ -66,11 +66,13 @@ impl Geometry {
         Self { shapes, bvh, tests }
     }
 
-    /// Where the ray crosses the shape at `position` in the BVH's leaf order.
+    /// Where the ray crosses the shape at `position` in the BVH's leaf order. `space` is the
+    /// ray's [`RaySpace`], worked out once per ray for all the triangles it meets (none for
+    /// a zero direction, which crosses no triangle).
     #[inline]
-    fn crossing(&self, position: usize, ray: &Ray) -> Option<Crossing> {
+    fn crossing(&self, position: usize, ray: &Ray, space: Option<&RaySpace>) -> Option<Crossing> {
         match &self.tests[position] {
-            ShapeTest::Triangle { p, .. } => watertight_crossing(p, ray),
+            ShapeTest::Triangle { p, .. } => space?.crossing(p, ray.t_max),
             ShapeTest::Other { shape } => self.shapes[*shape as usize].crossing(ray),
         }
     }
@@ -80,8 +82,9 @@ impl Geometry {
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         // Every closer crossing replaces the last; the record is built for the nearest only.
         let mut nearest: Option<(usize, Crossing)> = None;
+        let space = RaySpace::new(ray);
         self.bvh.intersect_in_leaf_order(ray, |position, t_max| {
-            let crossing = self.crossing(position, &Ray { t_max, ..*ray })?;
+            let crossing = self.crossing(position, &Ray { t_max, ..*ray }, space.as_ref())?;
             nearest = Some((position, crossing));
             Some(crossing.t)
         });
@@ -96,8 +99,10 @@ impl Geometry {
     /// Whether anything lies on the ray before `ray.t_max` (a shadow test). Cheaper than
     /// [`intersect`](Self::intersect): it stops at the first hit found, nearest or not.
     pub fn occluded(&self, ray: &Ray) -> bool {
-        self.bvh
-            .any_hit_in_leaf_order(ray, |position| self.crossing(position, ray).is_some())
+        let space = RaySpace::new(ray);
+        self.bvh.any_hit_in_leaf_order(ray, |position| {
+            self.crossing(position, ray, space.as_ref()).is_some()
+        })
     }
 
     /// The shapes, in the order given to [`new`](Self::new).

@@ -15,8 +15,12 @@ use crate::geometry::interval::{self, Interval, IntervalVec3};
 pub(crate) struct SpannedPlane {
     anchor: Vec3,
     normal: IntervalVec3,
-    /// The normal's lower ends, which the plain-float first look computes with.
-    normal_lo: Vec3,
+    /// A member of each component's interval, which the plain-float first look computes
+    /// with: the lower end, or 0 where the interval holds 0. An exact zero component (every
+    /// axis-aligned plane has two) becomes an interval of the two smallest subnormal numbers
+    /// around 0, and a multiplication by a subnormal number costs x86 processors a microcode
+    /// assist of about a hundred cycles; 0 costs nothing and is as good a member.
+    normal_plain: Vec3,
     /// `|e1_j e2_k| + |e1_k e2_j|` for each component `i` of `e1 × e2`: the size of the
     /// numbers the component is made of, which bounds its interval's width even where the two
     /// products cancel.
@@ -53,7 +57,13 @@ impl SpannedPlane {
         Self {
             anchor,
             normal,
-            normal_lo: Vec3::new(normal[0].lo, normal[1].lo, normal[2].lo),
+            normal_plain: Vec3::from_array(normal.map(|component| {
+                if component.contains_zero() {
+                    0.0
+                } else {
+                    component.lo
+                }
+            })),
             normal_size: Vec3::new(
                 products(e1.y, e1.z, e2.y, e2.z),
                 products(e1.z, e1.x, e2.z, e2.x),
@@ -86,9 +96,9 @@ impl SpannedPlane {
     /// certainly not ahead of the origin, so that [`interval_crossing`](Self::interval_crossing)
     /// would reject it too.
     ///
-    /// It repeats the interval computation operation by operation, in the same order, with the
-    /// normal's lower ends. Rounding is monotone, so each plain result lies inside the interval
-    /// of the same operation, and so does the plain `t` (when the denominator's interval holds
+    /// It repeats the interval computation operation by operation, in the same order, with a
+    /// member of each of the normal's intervals. Rounding is monotone, so each plain result
+    /// lies inside the interval of the same operation, and so does the plain `t` (when the denominator's interval holds
     /// zero the interval test rejects anyway). A plain `t` that is not positive therefore
     /// means an interval whose lower end is not positive. Most rays tested against a plane
     /// that is behind them stop here.
@@ -104,7 +114,7 @@ impl SpannedPlane {
     /// bound of the plain `t`. The bound is doubled, which covers its own rounding; when
     /// `d_min` is not positive (a ray nearly parallel to the plane) it is infinite.
     fn rough_crossing(&self, ray: &Ray) -> Option<RoughCrossing> {
-        let n = self.normal_lo;
+        let n = self.normal_plain;
         let dot = |a: Vec3| a.x * n.x + a.y * n.y + a.z * n.z;
         let towards_anchor = self.anchor - ray.origin;
         let numerator = dot(towards_anchor);
@@ -170,6 +180,28 @@ mod tests {
         let parallel = Ray::new(Vec3::new(0.3, 2.0, 0.1), Vec3::X);
         assert_eq!(floor.crossing(&parallel), None);
         assert_eq!(floor.crossing(&Ray { t_max: 2.0, ..down }), None);
+    }
+
+    #[test]
+    fn the_plain_normal_has_no_subnormal_components() {
+        // The intervals of an axis-aligned wall's zero components reach the smallest
+        // subnormal numbers on either side; the plain normal takes 0 from them.
+        let wall = SpannedPlane::new(Vec3::new(1.0, 2.0, 3.0), 2.0 * Vec3::X, 2.0 * Vec3::Y);
+        assert!(wall.normal[0].lo < 0.0 && wall.normal[1].hi > 0.0);
+        assert_eq!((wall.normal_plain.x, wall.normal_plain.y), (0.0, 0.0));
+        assert!(wall.normal_plain.z > 3.99);
+        for (e1, e2) in [(Vec3::X, Vec3::Z), (Vec3::new(1.0, 1e-30, 0.0), Vec3::Y)] {
+            let plane = SpannedPlane::new(Vec3::ZERO, e1, e2);
+            assert!(
+                plane
+                    .normal_plain
+                    .to_array()
+                    .iter()
+                    .all(|c| !c.is_subnormal()),
+                "{:?}",
+                plane.normal_plain
+            );
+        }
     }
 
     /// Random planes and rays for checking the plain-float first look against the intervals:

@@ -134,78 +134,114 @@ impl Triangle {
 /// products of `f32`s are exact: so its sign is exact, and the two triangles see exactly
 /// opposite values and cannot both reject the ray.
 ///
-/// It takes the vertices alone, so that the BVH's walk can keep them apart from the rest of a
-/// triangle; a triangle without area must be left out before (it is never hit).
-pub(crate) fn watertight_crossing(p: &[Vec3; 3], ray: &Ray) -> Option<Crossing> {
-    let kz = ray.dir.abs().max_position();
-    let kx = (kz + 1) % 3;
-    let ky = (kx + 1) % 3;
-    let permute = |v: Vec3| Vec3::new(v[kx], v[ky], v[kz]);
-    let d = permute(ray.dir);
-    if d.z == 0.0 {
-        return None; // a zero direction
-    }
-    let shear_x = -d.x / d.z;
-    let shear_y = -d.y / d.z;
-    let scale_z = 1.0 / d.z;
-    // Translated and permuted, then sheared and scaled; the depths before scaling are kept
-    // for the error bound of the shear below.
-    let [v0, v1, v2] = p.map(|p| permute(p - ray.origin));
-    let to_ray_space = |v: Vec3| Vec3::new(v.x + shear_x * v.z, v.y + shear_y * v.z, v.z * scale_z);
-    let [p0, p1, p2] = [v0, v1, v2].map(to_ray_space);
+/// A triangle without area must be left out before (it is never hit). The BVH's walk calls
+/// [`RaySpace`] itself, with the vertices alone (which it keeps apart from the rest of a
+/// triangle) and the ray's part worked out once for all the triangles the ray meets.
+fn watertight_crossing(p: &[Vec3; 3], ray: &Ray) -> Option<Crossing> {
+    RaySpace::new(ray)?.crossing(p, ray.t_max)
+}
 
-    let e = [
-        edge_function(p1, p2),
-        edge_function(p2, p0),
-        edge_function(p0, p1),
-    ];
-    let any_negative = e.iter().any(|&e| e < 0.0);
-    let any_positive = e.iter().any(|&e| e > 0.0);
-    if any_negative && any_positive {
-        return None;
-    }
-    let det = e[0] + e[1] + e[2];
-    if det == 0.0 {
-        return None;
+/// The coordinate system of the watertight test for one ray: which axis becomes z and the
+/// shear that turns the direction into `(0, 0, 1)`.
+///
+/// It depends on the ray alone, so a walk through a mesh works it out once per ray and
+/// tests every triangle it meets with [`crossing`](Self::crossing).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RaySpace {
+    origin: Vec3,
+    /// The axes that become x, y and z.
+    axes: [usize; 3],
+    shear_x: f32,
+    shear_y: f32,
+    scale_z: f32,
+}
+
+impl RaySpace {
+    /// The ray's space; none for a zero direction, which crosses nothing.
+    #[inline]
+    pub(crate) fn new(ray: &Ray) -> Option<Self> {
+        let kz = ray.dir.abs().max_position();
+        let kx = (kz + 1) % 3;
+        let ky = (kx + 1) % 3;
+        let d = Vec3::new(ray.dir[kx], ray.dir[ky], ray.dir[kz]);
+        if d.z == 0.0 {
+            return None; // a zero direction
+        }
+        Some(Self {
+            origin: ray.origin,
+            axes: [kx, ky, kz],
+            shear_x: -d.x / d.z,
+            shear_y: -d.y / d.z,
+            scale_z: 1.0 / d.z,
+        })
     }
 
-    // t = (Σ e_i z_i) / det, but compared before dividing to avoid the division on misses.
-    let t_scaled = e[0] * p0.z + e[1] * p1.z + e[2] * p2.z;
-    let t_max_scaled = ray.t_max * det;
-    let out_of_range = if det < 0.0 {
-        t_scaled >= 0.0 || t_scaled < t_max_scaled
-    } else {
-        t_scaled <= 0.0 || t_scaled > t_max_scaled
-    };
-    if out_of_range {
-        return None;
-    }
-    let inv_det = 1.0 / det;
-    let b = e.map(|e| e * inv_det);
-    let t = t_scaled * inv_det;
+    /// Where the ray crosses the triangle `p` at some `0 < t < t_max`, if it certainly does.
+    #[inline]
+    pub(crate) fn crossing(&self, p: &[Vec3; 3], t_max: f32) -> Option<Crossing> {
+        let [kx, ky, kz] = self.axes;
+        let permute = |v: Vec3| Vec3::new(v[kx], v[ky], v[kz]);
+        let (shear_x, shear_y, scale_z) = (self.shear_x, self.shear_y, self.scale_z);
+        // Translated and permuted, then sheared and scaled; the depths before scaling are
+        // kept for the error bound of the shear below.
+        let [v0, v1, v2] = p.map(|p| permute(p - self.origin));
+        let to_ray_space =
+            |v: Vec3| Vec3::new(v.x + shear_x * v.z, v.y + shear_y * v.z, v.z * scale_z);
+        let [p0, p1, p2] = [v0, v1, v2].map(to_ray_space);
 
-    // Accept t only if it is positive beyond its rounding error (pbrt-v4, section 6.8.7).
-    let max_abs = |a: f32, b: f32, c: f32| a.abs().max(b.abs()).max(c.abs());
-    let max_z = max_abs(p0.z, p1.z, p2.z);
-    let max_x = max_abs(p0.x, p1.x, p2.x);
-    let max_y = max_abs(p0.y, p1.y, p2.y);
-    let delta_z = gamma(3) * max_z;
-    // The shear `x + shear_x z` rounds relative to the depth *before* scaling (|shear| <= 1).
-    // pbrt-v4 uses the scaled depth, which is the same for a unit direction, but far too
-    // large for a short one (a ray taken into the space of an object scaled up 1e5 times
-    // has a direction 1e-5 long, and every hit was rejected) and too small for a long one.
-    let max_depth = max_abs(v0.z, v1.z, v2.z);
-    let delta_x = gamma(5) * (max_x + max_depth);
-    let delta_y = gamma(5) * (max_y + max_depth);
-    let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-    let max_e = max_abs(e[0], e[1], e[2]);
-    let delta_t =
-        3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
-    let certainly_in_range = delta_t < t && t < ray.t_max; // false for NaN too
-    if !certainly_in_range {
-        return None;
+        let e = [
+            edge_function(p1, p2),
+            edge_function(p2, p0),
+            edge_function(p0, p1),
+        ];
+        let any_negative = e.iter().any(|&e| e < 0.0);
+        let any_positive = e.iter().any(|&e| e > 0.0);
+        if any_negative && any_positive {
+            return None;
+        }
+        let det = e[0] + e[1] + e[2];
+        if det == 0.0 {
+            return None;
+        }
+
+        // t = (Σ e_i z_i) / det, but compared before dividing to avoid the division on misses.
+        let t_scaled = e[0] * p0.z + e[1] * p1.z + e[2] * p2.z;
+        let t_max_scaled = t_max * det;
+        let out_of_range = if det < 0.0 {
+            t_scaled >= 0.0 || t_scaled < t_max_scaled
+        } else {
+            t_scaled <= 0.0 || t_scaled > t_max_scaled
+        };
+        if out_of_range {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        let b = e.map(|e| e * inv_det);
+        let t = t_scaled * inv_det;
+
+        // Accept t only if it is positive beyond its rounding error (pbrt-v4, section 6.8.7).
+        let max_abs = |a: f32, b: f32, c: f32| a.abs().max(b.abs()).max(c.abs());
+        let max_z = max_abs(p0.z, p1.z, p2.z);
+        let max_x = max_abs(p0.x, p1.x, p2.x);
+        let max_y = max_abs(p0.y, p1.y, p2.y);
+        let delta_z = gamma(3) * max_z;
+        // The shear `x + shear_x z` rounds relative to the depth *before* scaling (|shear| <= 1).
+        // pbrt-v4 uses the scaled depth, which is the same for a unit direction, but far too
+        // large for a short one (a ray taken into the space of an object scaled up 1e5 times
+        // has a direction 1e-5 long, and every hit was rejected) and too small for a long one.
+        let max_depth = max_abs(v0.z, v1.z, v2.z);
+        let delta_x = gamma(5) * (max_x + max_depth);
+        let delta_y = gamma(5) * (max_y + max_depth);
+        let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        let max_e = max_abs(e[0], e[1], e[2]);
+        let delta_t =
+            3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
+        let certainly_in_range = delta_t < t && t < t_max; // false for NaN too
+        if !certainly_in_range {
+            return None;
+        }
+        Some(Crossing { t, coords: b })
     }
-    Some(Crossing { t, coords: b })
 }
 
 /// `a.x b.y - a.y b.x`: twice the signed area of the 2D triangle `(0, 0), a, b`.
