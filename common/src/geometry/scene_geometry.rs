@@ -19,6 +19,8 @@ pub struct Geometry {
     /// What the ray tests need of the shapes in the BVH, in its leaf order: a leaf's shapes
     /// lie side by side, and a triangle's three vertices are all a test reads of it.
     tests: Vec<ShapeTest>,
+    /// Whether any shape is a triangle: the walk then works out each ray's [`RaySpace`].
+    has_triangles: bool,
 }
 
 /// A shape as the walk of the BVH tests it.
@@ -63,12 +65,19 @@ impl Geometry {
                 _ => ShapeTest::Other { shape: index },
             })
             .collect();
-        Self { shapes, bvh, tests }
+        let has_triangles = shapes
+            .iter()
+            .any(|shape| matches!(shape, Shape::Triangle(_)));
+        Self {
+            shapes,
+            bvh,
+            tests,
+            has_triangles,
+        }
     }
 
     /// Where the ray crosses the shape at `position` in the BVH's leaf order. `space` is the
-    /// ray's [`RaySpace`], worked out once per ray for all the triangles it meets (none for
-    /// a zero direction, which crosses no triangle).
+    /// ray's [`RaySpace`] ([`ray_space`](Self::ray_space)).
     #[inline]
     fn crossing(&self, position: usize, ray: &Ray, space: Option<&RaySpace>) -> Option<Crossing> {
         match &self.tests[position] {
@@ -77,12 +86,22 @@ impl Geometry {
         }
     }
 
+    /// The ray's [`RaySpace`], worked out once per ray for all the triangles it meets: none
+    /// for a zero direction, which crosses no triangle, or where there are no triangles.
+    fn ray_space(&self, ray: &Ray) -> Option<RaySpace> {
+        if self.has_triangles {
+            RaySpace::new(ray)
+        } else {
+            None
+        }
+    }
+
     /// The nearest hit with `0 < t < ray.t_max`; its `shape` is an index into
     /// [`shapes`](Self::shapes).
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         // Every closer crossing replaces the last; the record is built for the nearest only.
         let mut nearest: Option<(usize, Crossing)> = None;
-        let space = RaySpace::new(ray);
+        let space = self.ray_space(ray);
         self.bvh.intersect_in_leaf_order(ray, |position, t_max| {
             let crossing = self.crossing(position, &Ray { t_max, ..*ray }, space.as_ref())?;
             nearest = Some((position, crossing));
@@ -99,7 +118,7 @@ impl Geometry {
     /// Whether anything lies on the ray before `ray.t_max` (a shadow test). Cheaper than
     /// [`intersect`](Self::intersect): it stops at the first hit found, nearest or not.
     pub fn occluded(&self, ray: &Ray) -> bool {
-        let space = RaySpace::new(ray);
+        let space = self.ray_space(ray);
         self.bvh.any_hit_in_leaf_order(ray, |position| {
             self.crossing(position, ray, space.as_ref()).is_some()
         })

@@ -6,7 +6,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg32;
 
 use super::build::MAX_DEPTH;
-use super::traverse::SHALLOW_STACK;
+use super::traverse::{SHALLOW_STACK, stack_needed};
 use super::*;
 use crate::Ray;
 
@@ -158,6 +158,39 @@ fn exponentially_spaced_boxes_cannot_make_the_tree_too_deep() {
     assert!(bvh.depth() <= MAX_DEPTH);
 }
 
+/// A ray that enters every box of a row fills the walk's stack as far as it goes: at each
+/// level three children wait, and the deepest node puts all four of its children on the stack
+/// at once. Trees of every depth are walked whole, on whichever stack their depth picks.
+#[test]
+fn rays_entering_every_box_are_walked_whole() {
+    for count in [2, 5, 8, 16, 17, 64, 65, 300] {
+        let boxes: Vec<Aabb> = (0..count)
+            .map(|k| cube_at(Vec3::X * 2.0 * k as f32, 0.5))
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        let ray = Ray::new(Vec3::new(-1.0, 0.0, 0.0), Vec3::X);
+        let mut visited = vec![0; count];
+        assert!(!bvh.any_hit(&ray, |k| {
+            visited[k] += 1;
+            false
+        }));
+        assert!(
+            visited.iter().all(|&n| n == 1),
+            "{count} boxes: {visited:?}"
+        );
+        let mut visited = vec![0; count];
+        let nearest = bvh.intersect(&ray, |k, _| {
+            visited[k] += 1;
+            None
+        });
+        assert_eq!(nearest, None);
+        assert!(
+            visited.iter().all(|&n| n == 1),
+            "{count} boxes: {visited:?}"
+        );
+    }
+}
+
 /// A tree deeper than the short stack of shallow trees is walked with the long one: every
 /// box along the ray is visited once, whichever end the ray starts from, and nothing
 /// overflows.
@@ -167,7 +200,11 @@ fn deep_trees_are_walked_whole() {
         .map(|k| cube_at(Vec3::X * 1.3f32.powi(k), 0.5))
         .collect();
     let bvh = Bvh::build(&boxes);
-    assert!(3 * bvh.depth() > SHALLOW_STACK, "depth {}", bvh.depth());
+    assert!(
+        stack_needed(bvh.depth()) > SHALLOW_STACK,
+        "depth {}",
+        bvh.depth()
+    );
     for (origin, dir) in [(-1.0, Vec3::X), (1e15, -Vec3::X)] {
         let ray = Ray::new(Vec3::new(origin, 0.0, 0.0), dir);
         let mut visited = vec![0; boxes.len()];

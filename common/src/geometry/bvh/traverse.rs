@@ -5,16 +5,26 @@ use std::ops::{ControlFlow, Range};
 use glam::Vec4;
 
 use super::build::MAX_DEPTH;
-use super::wide::{WIDTH, WideNode};
+use super::wide::WideNode;
 use super::{Bvh, BvhHit};
 use crate::Ray;
 use crate::geometry::float::gamma;
 
-/// The stack of the walk through trees at most a third of this deep.
+/// The stack of the walk through the smallest trees (a room of a few shapes).
+const TINY_STACK: usize = 8;
+
+/// The stack of the walk through shallow trees.
 pub(super) const SHALLOW_STACK: usize = 24;
 
-/// The stack of the walk through trees of meshes (at most a third of this deep).
+/// The stack of the walk through trees of meshes.
 const MEDIUM_STACK: usize = 64;
+
+/// The entries a walk's stack needs for a tree `depth` nodes deep: each level of the current
+/// path defers at most three children, and the deepest node puts all four of its children on
+/// the stack before it takes the nearest off.
+pub(super) const fn stack_needed(depth: usize) -> usize {
+    3 * depth + 1
+}
 
 impl Bvh {
     /// The primitive the ray hits first, found by asking `hit_primitive` about the candidates.
@@ -104,26 +114,28 @@ impl Bvh {
     where
         F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
-        // The stack is an array, so it is filled with zeros before the walk starts. Each
-        // level of the current path defers at most three children, so shallow trees (every
-        // scene of this book but large meshes) get a short stack, which costs a few stores.
-        let needed = 3 * self.depth;
-        if needed <= SHALLOW_STACK {
+        // The stack is an array, so it is filled with zeros before the walk starts: shallow
+        // trees (every scene of this book but large meshes) get a short one, which costs a
+        // few stores.
+        let needed = stack_needed(self.depth);
+        if needed <= TINY_STACK {
+            self.walk_with_stack::<TINY_STACK, F>(ray, visit_leaf);
+        } else if needed <= SHALLOW_STACK {
             self.walk_with_stack::<SHALLOW_STACK, F>(ray, visit_leaf);
         } else if needed <= MEDIUM_STACK {
             self.walk_with_stack::<MEDIUM_STACK, F>(ray, visit_leaf);
         } else {
-            self.walk_with_stack::<{ 3 * MAX_DEPTH }, F>(ray, visit_leaf);
+            self.walk_with_stack::<{ stack_needed(MAX_DEPTH) }, F>(ray, visit_leaf);
         }
     }
 
-    /// [`walk`](Self::walk) with a stack of `STACK` entries, which must be at least three
-    /// times the tree's depth.
+    /// [`walk`](Self::walk) with a stack of `STACK` entries, at least
+    /// [`stack_needed`]`(depth)`.
     fn walk_with_stack<const STACK: usize, F>(&self, ray: &Ray, mut visit_leaf: F)
     where
         F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
-        debug_assert!(3 * self.depth <= STACK);
+        debug_assert!(stack_needed(self.depth) <= STACK);
         let mut t_max = ray.t_max;
         // A NaN `t_max` reaches nothing (and would make every comparison below false).
         if self.nodes.is_empty() || t_max.is_nan() {
@@ -139,29 +151,25 @@ impl Bvh {
             if count == 0 {
                 let node = &self.nodes[index as usize];
                 let (entered, t_enter) = node.entries(&slabs, t_max);
-                // The children the ray enters, then sorted farthest first.
-                let mut hits = [(0u32, 0u32, 0.0f32); WIDTH];
-                let mut hit_count = 0;
-                for lane in 0..WIDTH {
-                    if entered & (1 << lane) != 0 {
-                        hits[hit_count] =
-                            (node.child[lane], u32::from(node.count[lane]), t_enter[lane]);
-                        hit_count += 1;
-                    }
-                }
-                if hit_count > 0 {
-                    for i in 1..hit_count {
-                        let mut j = i;
-                        while j > 0 && hits[j - 1].2 < hits[j].2 {
-                            hits.swap(j - 1, j);
+                if entered != 0 {
+                    // The children the ray enters go on the stack, sorted so that the nearest
+                    // is on top; it is visited now, and the others wait, the farthest deepest.
+                    let first = deferred_count;
+                    let mut lanes = entered;
+                    while lanes != 0 {
+                        let lane = lanes.trailing_zeros() as usize;
+                        lanes &= lanes - 1;
+                        let child = (node.child[lane], u32::from(node.count[lane]), t_enter[lane]);
+                        let mut j = deferred_count;
+                        while j > first && deferred[j - 1].2 < child.2 {
+                            deferred[j] = deferred[j - 1];
                             j -= 1;
                         }
+                        deferred[j] = child;
+                        deferred_count += 1;
                     }
-                    // The nearest is visited now; the others wait, the farthest deepest.
-                    deferred[deferred_count..deferred_count + hit_count - 1]
-                        .copy_from_slice(&hits[..hit_count - 1]);
-                    deferred_count += hit_count - 1;
-                    let (child, child_count, _) = hits[hit_count - 1];
+                    deferred_count -= 1;
+                    let (child, child_count, _) = deferred[deferred_count];
                     current = (child, child_count);
                     continue;
                 }
