@@ -2,7 +2,7 @@
 
 use std::ops::{ControlFlow, Range};
 
-use glam::Vec4;
+use glam::{Vec3, Vec4};
 
 use super::build::MAX_DEPTH;
 use super::wide::WideNode;
@@ -204,6 +204,10 @@ struct WideRay {
     /// is its near side). Decided from the sign of `1 / dir`, so `dir = -0` counts as
     /// negative, matching `inv_dir = -∞`.
     negative: [bool; 3],
+    /// Whether no slab computation can give NaN: the origin is finite and every `1 / dir`
+    /// finite and not zero. Then `(x - o) / dir` is a number or `±∞` for every `x`, even the
+    /// `±∞` of an empty lane, and the walk skips the NaN checks (nearly every ray).
+    nan_free: bool,
 }
 
 impl WideRay {
@@ -213,6 +217,9 @@ impl WideRay {
             origin: ray.origin.to_array().map(Vec4::splat),
             inv_dir: inv_dir.to_array().map(Vec4::splat),
             negative: inv_dir.to_array().map(|d| d < 0.0),
+            nan_free: ray.origin.is_finite()
+                && inv_dir.is_finite()
+                && inv_dir.cmpne(Vec3::ZERO).all(),
         }
     }
 }
@@ -239,8 +246,14 @@ impl WideNode {
             };
             let t_near = (near - ray.origin[axis]) * ray.inv_dir[axis];
             let t_far = (far - ray.origin[axis]) * ray.inv_dir[axis] * EXIT_SLACK;
-            let t_near = Vec4::select(t_near.is_nan_mask(), Vec4::ZERO, t_near);
-            let t_far = Vec4::select(t_far.is_nan_mask(), Vec4::INFINITY, t_far);
+            let (t_near, t_far) = if ray.nan_free {
+                (t_near, t_far)
+            } else {
+                (
+                    Vec4::select(t_near.is_nan_mask(), Vec4::ZERO, t_near),
+                    Vec4::select(t_far.is_nan_mask(), Vec4::INFINITY, t_far),
+                )
+            };
             t_enter = t_enter.max(t_near);
             t_exit = t_exit.min(t_far);
         }
