@@ -158,6 +158,34 @@ fn exponentially_spaced_boxes_cannot_make_the_tree_too_deep() {
     assert!(bvh.depth() <= MAX_DEPTH);
 }
 
+/// A ray parallel to a face, starting in that face's plane, computes `0 × ∞` for that axis:
+/// the walk must count it as inside the slab, whichever axis it is, and not lose the box.
+#[test]
+fn rays_along_a_face_find_the_box() {
+    let boxes: Vec<Aabb> = (0..9)
+        .map(|k| cube_at(Vec3::new(0.5 + 3.0 * k as f32, 0.5, 0.5), 0.5))
+        .collect();
+    let bvh = Bvh::build(&boxes);
+    for axis in 0..3 {
+        for side in [0.0, 1.0] {
+            // Along the next axis, from outside the unit cube, in its face `axis = side`.
+            let along = (axis + 1) % 3;
+            let mut origin = Vec3::splat(0.5);
+            origin[axis] = side;
+            origin[along] = -1.0;
+            let mut dir = Vec3::ZERO;
+            dir[along] = 1.0;
+            let ray = Ray::new(origin, dir);
+            assert!(
+                bvh.any_hit(&ray, |k| k == 0),
+                "axis {axis}, side {side}: the cube was lost"
+            );
+            let nearest = bvh.intersect(&ray, |k, _| (k == 0).then_some(1.0));
+            assert_eq!(nearest.map(|hit| hit.primitive), Some(0), "axis {axis}");
+        }
+    }
+}
+
 /// A ray that enters every box of a row fills the walk's stack as far as it goes: at each
 /// level three children wait, and the deepest node puts all four of its children on the stack
 /// at once. Trees of every depth are walked whole, on whichever stack their depth picks.
