@@ -151,6 +151,12 @@ impl Bvh {
             if count == 0 {
                 let node = &self.nodes[index as usize];
                 let (entered, t_enter) = node.entries(&slabs, t_max);
+                if entered.is_power_of_two() {
+                    // One child: nothing to order and nothing to defer.
+                    let lane = entered.trailing_zeros() as usize;
+                    current = (node.child[lane], u32::from(node.count[lane]));
+                    continue;
+                }
                 if entered != 0 {
                     // The children the ray enters go on the stack, sorted so that the nearest
                     // is on top; it is visited now, and the others wait, the farthest deepest.
