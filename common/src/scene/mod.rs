@@ -49,6 +49,7 @@ pub use texture::{Bitmap, BitmapFilter, BitmapId, Checkerboard, Texture, WrapMod
 
 use crate::geometry::{Geometry, Shape};
 use glam::{Mat4, Vec2, Vec3};
+use std::borrow::Cow;
 
 /// The luminance of a linear sRGB colour, with the weights Mitsuba 3 uses (`luminance()`).
 const LUMINANCE: Vec3 = Vec3::new(0.212671, 0.715160, 0.072169);
@@ -174,19 +175,21 @@ impl Scene {
     /// multiplies its colour, and the material returned has no texture left. A rough
     /// material's textured widths are read too, and where its two widths differ it gets the
     /// shape's `dp/du` at `uv` ([`Microfacet::dp_du`]), the tangent they are measured along.
-    pub fn material_at(&self, shape: u32, uv: Vec2) -> Material {
+    ///
+    /// A material with nothing to read is lent as it is, not copied: that is nearly every hit.
+    pub fn material_at(&self, shape: u32, uv: Vec2) -> Cow<'_, Material> {
         self.read_at(&self.surface(shape).material, shape, uv)
     }
 
     /// `material` of shape number `shape` with its textures read at `uv` (a mask's opacity and
     /// nested material too).
-    fn read_at(&self, material: &Material, shape: u32, uv: Vec2) -> Material {
+    fn read_at<'a>(&'a self, material: &'a Material, shape: u32, uv: Vec2) -> Cow<'a, Material> {
         let factor = |texture: Option<Texture>| texture.map_or(Vec3::ONE, |t| self.albedo(t, uv));
         // Whether a roughness must be read at the hit: its widths' textures, or its tangent.
         let varies = |m: Option<Microfacet>| {
             m.is_some_and(|m| m.alpha_texture.is_some() || m.is_anisotropic())
         };
-        match material {
+        let read = match material {
             &Material::TexturedDiffuse { texture, two_sided } => Material::Diffuse {
                 albedo: self.albedo(texture, uv),
                 two_sided,
@@ -233,10 +236,12 @@ impl Scene {
             }
             Material::Mask(mask) => Material::Mask(Mask {
                 opacity: Opacity::Uniform(self.opacity(mask.opacity, uv)),
-                nested: Box::new(self.read_at(&mask.nested, shape, uv)),
+                nested: Box::new(self.read_at(&mask.nested, shape, uv).into_owned()),
             }),
-            material => material.clone(),
-        }
+            // Nothing to read: the material is lent as it is.
+            material => return Cow::Borrowed(material),
+        };
+        Cow::Owned(read)
     }
 
     /// A mask's opacity at `uv`, in [0, 1], read as Mitsuba 3 reads a texture for one value

@@ -57,7 +57,7 @@ fn plastic_takes_textures_for_its_base_and_its_coat() {
         // The colours are 1, the textures' factors everything.
         assert_eq!(plastic.diffuse_reflectance, Vec3::ONE);
         assert!(plastic.diffuse_texture.is_some() && plastic.specular_texture.is_some());
-        let at = |uv| match scene.material_at(0, uv) {
+        let at = |uv| match scene.material_at(0, uv).into_owned() {
             Material::Plastic(p) => p,
             other => panic!("{other:?}"),
         };
@@ -114,7 +114,7 @@ fn a_metals_reflection_may_be_a_texture_and_then_is_no_plain_mirror() {
             metal.eta
         );
         assert!(metal.specular_texture.is_some());
-        let Material::Conductor(left) = scene.material_at(0, LEFT) else {
+        let Material::Conductor(left) = scene.material_at(0, LEFT).into_owned() else {
             panic!()
         };
         assert_eq!(
@@ -162,7 +162,7 @@ fn one_image_named_by_several_parameters_is_one_bitmap() {
     )
     .unwrap();
     assert_eq!(scene.bitmaps.len(), 1);
-    let Material::Plastic(left) = scene.material_at(0, LEFT) else {
+    let Material::Plastic(left) = scene.material_at(0, LEFT).into_owned() else {
         panic!()
     };
     assert_eq!(left.diffuse_reflectance, Vec3::ONE);
@@ -308,7 +308,7 @@ fn glass_with_factors_or_textures_on_its_lobes_is_tinted_glass() {
         panic!("{:?}", scene.surfaces[0].material)
     };
     assert_eq!(glass.roughness.map(|r| r.alpha()), Some(0.2));
-    let Material::TintedGlass(right) = scene.material_at(0, RIGHT) else {
+    let Material::TintedGlass(right) = scene.material_at(0, RIGHT).into_owned() else {
         panic!()
     };
     assert_eq!(
@@ -320,7 +320,7 @@ fn glass_with_factors_or_textures_on_its_lobes_is_tinted_glass() {
 
 /// The microfacet roughness of the first shape's material at `uv`, as chapter 08 reads it.
 fn roughness_at(scene: &Scene, uv: Vec2) -> crate::scene::Microfacet {
-    match scene.material_at(0, uv) {
+    match scene.material_at(0, uv).into_owned() {
         Material::Conductor(Conductor {
             roughness: Some(m), ..
         }) => m,

@@ -49,7 +49,7 @@ fn an_inline_checkerboard_is_a_textured_diffuse_reflectance() {
     assert_eq!(board.to_uv.transform_point2(Vec2::ONE), Vec2::new(4.0, 2.0));
     // Through the one function every chapter uses: uv (0.2, 0.1) -> (0.8, 0.2): colour 1.
     assert_eq!(
-        scene.material_at(0, Vec2::new(0.2, 0.1)),
+        scene.material_at(0, Vec2::new(0.2, 0.1)).into_owned(),
         Material::diffuse(Vec3::Z)
     );
 }
@@ -64,7 +64,7 @@ fn a_checkerboard_has_mitsubas_default_colours() {
         ),
     );
     // Mitsuba 3.9.1: 0.4 at uv (0.1, 0.1), 0.2 at (0.6, 0.1).
-    let at = |u, v| scene.material_at(0, Vec2::new(u, v));
+    let at = |u, v| scene.material_at(0, Vec2::new(u, v)).into_owned();
     assert_eq!(at(0.1, 0.1), Material::diffuse(Vec3::splat(0.4)));
     assert_eq!(at(0.6, 0.1), Material::diffuse(Vec3::splat(0.2)));
 }
@@ -114,11 +114,11 @@ fn a_bitmap_declared_apart_is_read_once_per_file_and_shared() {
     });
     // uv (0, 0) is the image's top-left: red; the right half is blue (clamped beyond).
     assert_eq!(
-        scene.material_at(1, Vec2::new(0.2, 0.5)),
+        scene.material_at(1, Vec2::new(0.2, 0.5)).into_owned(),
         Material::diffuse(Vec3::X)
     );
     assert_eq!(
-        scene.material_at(1, Vec2::new(1.7, 0.5)),
+        scene.material_at(1, Vec2::new(1.7, 0.5)).into_owned(),
         Material::diffuse(Vec3::Z)
     );
 }
