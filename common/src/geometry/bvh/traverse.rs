@@ -211,8 +211,8 @@ struct WideRay {
     /// negative, matching `inv_dir = -∞`.
     negative: [bool; 3],
     /// Whether no slab computation can give NaN: the origin is finite and every `1 / dir`
-    /// finite and not zero. Then `(x - o) / dir` is a number or `±∞` for every `x`, even the
-    /// `±∞` of an empty lane, and the walk skips the NaN checks (nearly every ray).
+    /// finite and not zero. Then `(x - o) · (1 / dir)` is a number or `±∞` for every `x`,
+    /// even the `±∞` of an empty lane, and the walk skips the NaN checks (nearly every ray).
     nan_free: bool,
 }
 

@@ -98,10 +98,10 @@ impl SpannedPlane {
     ///
     /// It repeats the interval computation operation by operation, in the same order, with a
     /// member of each of the normal's intervals. Rounding is monotone, so each plain result
-    /// lies inside the interval of the same operation, and so does the plain `t` (when the denominator's interval holds
-    /// zero the interval test rejects anyway). A plain `t` that is not positive therefore
-    /// means an interval whose lower end is not positive. Most rays tested against a plane
-    /// that is behind them stop here.
+    /// lies inside the interval of the same operation, and so does the plain `t` (when the
+    /// denominator's interval holds zero the interval test rejects anyway). A plain `t` that
+    /// is not positive therefore means an interval whose lower end is not positive. Most rays
+    /// tested against a plane that is behind them stop here.
     ///
     /// The error bound: the plain numerator `n` and denominator `d` lie in their intervals,
     /// whose widths are at most `w_n = W Σ |anchor - o|_i size_i` and `w_d = W Σ |d|_i size_i`

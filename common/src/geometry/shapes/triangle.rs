@@ -114,9 +114,9 @@ impl Triangle {
         }
     }
 
-    /// The watertight test of [`watertight_crossing`].
+    /// The watertight test of [`RaySpace`].
     fn crossing(&self, ray: &Ray) -> Option<Crossing> {
-        watertight_crossing(&self.p, ray)
+        RaySpace::new(ray)?.crossing(&self.p, ray.t_max)
     }
 }
 
@@ -134,18 +134,11 @@ impl Triangle {
 /// products of `f32`s are exact: so its sign is exact, and the two triangles see exactly
 /// opposite values and cannot both reject the ray.
 ///
-/// A triangle without area must be left out before (it is never hit). The BVH's walk calls
-/// [`RaySpace`] itself, with the vertices alone (which it keeps apart from the rest of a
-/// triangle) and the ray's part worked out once for all the triangles the ray meets.
-fn watertight_crossing(p: &[Vec3; 3], ray: &Ray) -> Option<Crossing> {
-    RaySpace::new(ray)?.crossing(p, ray.t_max)
-}
-
-/// The coordinate system of the watertight test for one ray: which axis becomes z and the
-/// shear that turns the direction into `(0, 0, 1)`.
-///
-/// It depends on the ray alone, so a walk through a mesh works it out once per ray and
-/// tests every triangle it meets with [`crossing`](Self::crossing).
+/// The test is split at what depends on the ray alone, which is this coordinate system: which
+/// axis becomes z and the shear that turns the direction into `(0, 0, 1)`. A walk through a
+/// mesh works it out once per ray and tests every triangle it meets with
+/// [`crossing`](Self::crossing), which takes the vertices alone (the walk keeps them apart from
+/// the rest of a triangle). A triangle without area must be left out before (it is never hit).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RaySpace {
     origin: Vec3,
