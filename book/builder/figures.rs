@@ -46,5 +46,88 @@ pub fn regenerate_all(figures_dir: &Path, quick: bool) -> Result<()> {
 
         println!("  done in {:.1} s", started.elapsed().as_secs_f64());
     }
+    let table = cost_table(figures_dir)?;
+    common::output::write_text(&figures_dir.join("figure-times.md"), &table)
+        .context("cannot write the table of figure times")?;
     Ok(())
+}
+
+/// What every figure of this run cost, from each chapter's `figure-times.csv`: a Markdown
+/// table for the speed appendix, one row per figure and a total per chapter, so that the
+/// expensive figures are named on every build.
+fn cost_table(figures_dir: &Path) -> Result<String> {
+    let mut table = String::from("| chapter | figure | seconds |\n|---|---|---:|\n");
+    let mut total = 0.0;
+    for (chapter, _) in CHAPTERS {
+        let path = figures_dir.join(chapter).join("figure-times.csv");
+        let csv = std::fs::read_to_string(&path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        let mut chapter_total = 0.0;
+        for (number, line) in csv.lines().enumerate().skip(1) {
+            let (figure, seconds) = line
+                .rsplit_once(',')
+                .and_then(|(figure, seconds)| Some((figure, seconds.parse::<f64>().ok()?)))
+                .with_context(|| {
+                    format!("{}:{}: not `figure,seconds`", path.display(), number + 1)
+                })?;
+            table += &format!("| {chapter} | {figure} | {seconds:.2} |\n");
+            chapter_total += seconds;
+        }
+        table += &format!(
+            "| **{chapter}** | **all of the chapter's figures** | **{chapter_total:.2}** |\n"
+        );
+        total += chapter_total;
+    }
+    table += &format!("| **all** | **every figure of the book** | **{total:.2}** |\n");
+    Ok(table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_cost_table_lists_every_figure_and_the_totals() {
+        let dir = tempfile::tempdir().unwrap();
+        for (index, (chapter, _)) in CHAPTERS.iter().enumerate() {
+            std::fs::create_dir_all(dir.path().join(chapter)).unwrap();
+            let csv = format!(
+                "figure,seconds\nthe gallery,{}.3\nthe plot,0.5\n",
+                index + 1
+            );
+            std::fs::write(dir.path().join(chapter).join("figure-times.csv"), csv).unwrap();
+        }
+        let table = cost_table(dir.path()).unwrap();
+        assert!(table.contains("| ch01 | the gallery | 1.30 |"), "{table}");
+        assert!(
+            table.contains("| **ch01** | **all of the chapter's figures** | **1.80** |"),
+            "{table}"
+        );
+        // 1.3 + ... + 8.3 and eight halves.
+        assert!(
+            table.contains("| **every figure of the book** | **42.40** |"),
+            "{table}"
+        );
+        assert_eq!(table.lines().count(), 2 + CHAPTERS.len() * 3 + 1);
+    }
+
+    #[test]
+    fn a_malformed_line_is_named_with_its_file_and_line() {
+        let dir = tempfile::tempdir().unwrap();
+        for (chapter, _) in CHAPTERS {
+            std::fs::create_dir_all(dir.path().join(chapter)).unwrap();
+            std::fs::write(
+                dir.path().join(chapter).join("figure-times.csv"),
+                "figure,seconds\n",
+            )
+            .unwrap();
+        }
+        std::fs::write(
+            dir.path().join("ch03").join("figure-times.csv"),
+            "figure,seconds\na,1\nb;2\n",
+        )
+        .unwrap();
+        let error = format!("{:#}", cost_table(dir.path()).unwrap_err());
+        assert!(error.contains("ch03") && error.contains(":3:"), "{error}");
+    }
 }
