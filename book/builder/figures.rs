@@ -59,17 +59,8 @@ fn cost_table(figures_dir: &Path) -> Result<String> {
     let mut table = String::from("| chapter | figure | seconds |\n|---|---|---:|\n");
     let mut total = 0.0;
     for (chapter, _) in CHAPTERS {
-        let path = figures_dir.join(chapter).join("figure-times.csv");
-        let csv = std::fs::read_to_string(&path)
-            .with_context(|| format!("cannot read {}", path.display()))?;
         let mut chapter_total = 0.0;
-        for (number, line) in csv.lines().enumerate().skip(1) {
-            let (figure, seconds) = line
-                .rsplit_once(',')
-                .and_then(|(figure, seconds)| Some((figure, seconds.parse::<f64>().ok()?)))
-                .with_context(|| {
-                    format!("{}:{}: not `figure,seconds`", path.display(), number + 1)
-                })?;
+        for (figure, seconds) in common::figure_set::read_times(&figures_dir.join(chapter))? {
             table += &format!("| {chapter} | {figure} | {seconds:.2} |\n");
             chapter_total += seconds;
         }
@@ -85,6 +76,7 @@ fn cost_table(figures_dir: &Path) -> Result<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use common::figure_set::TIMES_FILE;
 
     #[test]
     fn the_cost_table_lists_every_figure_and_the_totals() {
@@ -95,7 +87,7 @@ mod tests {
                 "figure,seconds\nthe gallery,{}.3\nthe plot,0.5\n",
                 index + 1
             );
-            std::fs::write(dir.path().join(chapter).join("figure-times.csv"), csv).unwrap();
+            std::fs::write(dir.path().join(chapter).join(TIMES_FILE), csv).unwrap();
         }
         let table = cost_table(dir.path()).unwrap();
         assert!(table.contains("| ch01 | the gallery | 1.30 |"), "{table}");
@@ -109,25 +101,5 @@ mod tests {
             "{table}"
         );
         assert_eq!(table.lines().count(), 2 + CHAPTERS.len() * 3 + 1);
-    }
-
-    #[test]
-    fn a_malformed_line_is_named_with_its_file_and_line() {
-        let dir = tempfile::tempdir().unwrap();
-        for (chapter, _) in CHAPTERS {
-            std::fs::create_dir_all(dir.path().join(chapter)).unwrap();
-            std::fs::write(
-                dir.path().join(chapter).join("figure-times.csv"),
-                "figure,seconds\n",
-            )
-            .unwrap();
-        }
-        std::fs::write(
-            dir.path().join("ch03").join("figure-times.csv"),
-            "figure,seconds\na,1\nb;2\n",
-        )
-        .unwrap();
-        let error = format!("{:#}", cost_table(dir.path()).unwrap_err());
-        assert!(error.contains("ch03") && error.contains(":3:"), "{error}");
     }
 }

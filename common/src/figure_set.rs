@@ -15,6 +15,26 @@ use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+/// The file beside a chapter's figures with each figure's name and seconds.
+pub const TIMES_FILE: &str = "figure-times.csv";
+
+/// The times [`FigureSet::finish`] wrote into `dir`: each figure's name and seconds, in the
+/// order they were made. A line that is not `figure,seconds` is named by file and line.
+pub fn read_times(dir: &Path) -> anyhow::Result<Vec<(String, f64)>> {
+    let path = dir.join(TIMES_FILE);
+    let csv = std::fs::read_to_string(&path)
+        .with_context(|| format!("cannot read {}", path.display()))?;
+    csv.lines()
+        .enumerate()
+        .skip(1)
+        .map(|(number, line)| {
+            line.rsplit_once(',')
+                .and_then(|(figure, seconds)| Some((figure.to_string(), seconds.parse().ok()?)))
+                .with_context(|| format!("{}:{}: not `figure,seconds`", path.display(), number + 1))
+        })
+        .collect()
+}
+
 /// How much work the figures get.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Level {
@@ -137,7 +157,7 @@ impl FigureSet {
         for (what, seconds) in &self.times {
             csv.push_str(&format!("{},{seconds:.3}\n", what.replace(',', ";")));
         }
-        write_text(&self.out.join("figure-times.csv"), &csv)?;
+        write_text(&self.out.join(TIMES_FILE), &csv)?;
         eprintln!(
             "{} figures written to {} in {:.1} s",
             self.chapter,
@@ -180,5 +200,20 @@ mod tests {
         assert_eq!(lines.len(), 2, "{times}");
         assert!(lines[1].starts_with("a plot; with a comma,"), "{times}");
         assert!(dir.path().join("plot.txt").exists());
+        let read = read_times(dir.path()).unwrap();
+        assert_eq!(read.len(), 1);
+        assert_eq!(read[0].0, "a plot; with a comma");
+        assert!(read[0].1 >= 0.0);
+    }
+
+    #[test]
+    fn a_malformed_line_of_times_is_named_with_its_file_and_line() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join(TIMES_FILE), "figure,seconds\na,1\nb;2\n").unwrap();
+        let error = format!("{:#}", read_times(dir.path()).unwrap_err());
+        assert!(
+            error.contains(TIMES_FILE) && error.contains(":3:"),
+            "{error}"
+        );
     }
 }
