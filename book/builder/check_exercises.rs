@@ -582,10 +582,12 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
 /// Checks of the usual form (`cargo test -p PACKAGE --lib exercise_...`) are run together: an
 /// exercise's check passes when every test its filter picks passed, and its output is what
 /// those tests printed. That is what its own command would report, at the cost of one cargo
-/// run, which compiles the packages side by side. That run always tests `every_package`, even
-/// those without a check this time: the dev-dependencies of the packages tested decide the
-/// features of their dependencies, and a run over fewer packages could compile `common` and
-/// every chapter again with other features. If that run compiled nothing (one package's code
+/// run, which compiles the packages side by side. In a copy (`build` given) that run always
+/// tests `every_package`, even those without a check this time: the dev-dependencies of the
+/// packages tested decide the features of their dependencies, and a run over fewer packages
+/// could compile `common` and every chapter again with other features. In the workspace it
+/// tests what the README's test command tests ([`WORKSPACE_SELECTION`]), which has compiled it
+/// all before (in CI, the step before). If that run compiled nothing (one package's code
 /// does not build), each package is run on its own, so one package's error is not blamed on
 /// the others. Other checks run as they are.
 fn run_checks(
@@ -606,10 +608,20 @@ fn run_checks(
     let mut runs: Vec<(&str, Outcome)> = Vec::new();
     if !packages.is_empty() {
         let every_package: Vec<&str> = every_package.iter().map(String::as_str).collect();
-        let selection: Vec<String> = every_package.iter().map(|p| format!("-p {p}")).collect();
+        let selection = match build {
+            // The workspace itself: built as the README's test command builds it, so that the
+            // run compiles nothing that command compiled (fewer packages or features would
+            // unify their dependencies' features otherwise, and compile `common` and every
+            // chapter again). Only the exercises' tests run, whatever the packages.
+            None => WORKSPACE_SELECTION.to_owned(),
+            Some(_) => every_package
+                .iter()
+                .map(|p| format!("-p {p}"))
+                .collect::<Vec<_>>()
+                .join(" "),
+        };
         let command = format!(
-            "cargo test --no-fail-fast {} --lib {} 2>&1",
-            selection.join(" "),
+            "cargo test --no-fail-fast {selection} --lib {} 2>&1",
             progress::CHECK_PREFIX
         );
         let joint = run_check(&command, dir, build)?;
@@ -675,6 +687,10 @@ fn run_checks(
         .collect())
 }
 
+/// The packages and features of the README's test command (`cargo test --workspace
+/// --all-features`), with which the checks run on the workspace.
+const WORKSPACE_SELECTION: &str = "--workspace --all-features";
+
 /// The packages of the exercises whose checks have the usual form, in the list's order.
 fn packages_checked(exercises: &[Exercise]) -> Vec<String> {
     let mut packages: Vec<String> = Vec::new();
@@ -690,10 +706,10 @@ fn packages_checked(exercises: &[Exercise]) -> Vec<String> {
 
 /// Splits the output of one `cargo test` run over several packages' libraries (stdout and
 /// stderr as one stream) into each package's part: from the line where cargo starts its test
-/// binary to the next such line. `None` unless every package has exactly one part, as when
-/// something did not compile.
+/// binary to the next such line; the parts of packages not in `packages` are left out. `None`
+/// unless every package of `packages` has exactly one part, as when something did not compile.
 fn package_sections<'p>(output: &str, packages: &[&'p str]) -> Option<Vec<(&'p str, Outcome)>> {
-    let mut sections: Vec<(&'p str, String)> = Vec::new();
+    let mut sections: Vec<(Option<&'p str>, String)> = Vec::new();
     for line in output.lines() {
         if let Some(binary) = line
             .trim_start()
@@ -701,11 +717,13 @@ fn package_sections<'p>(output: &str, packages: &[&'p str]) -> Option<Vec<(&'p s
             .and_then(|rest| rest.rsplit_once('/'))
             .map(|(_, file)| file.trim_end_matches(')'))
         {
-            // The binary is named after the crate and a hash: `ch01_whitted-0123abcd`.
+            // The binary is named after the crate and a hash: `ch01_whitted-0123abcd`. Other
+            // packages' parts are split off and left out.
             let crate_name = binary.rsplit_once('-').map_or(binary, |(name, _)| name);
             let package = packages
                 .iter()
-                .find(|package| package.replace('-', "_") == crate_name)?;
+                .find(|package| package.replace('-', "_") == crate_name)
+                .copied();
             sections.push((package, String::new()));
         } else if let Some((_, text)) = sections.last_mut() {
             text.push_str(line);
@@ -714,10 +732,11 @@ fn package_sections<'p>(output: &str, packages: &[&'p str]) -> Option<Vec<(&'p s
     }
     let every_one_once = packages
         .iter()
-        .all(|package| sections.iter().filter(|(p, _)| p == package).count() == 1);
+        .all(|package| sections.iter().filter(|(p, _)| *p == Some(package)).count() == 1);
     every_one_once.then(|| {
         sections
             .into_iter()
+            .filter_map(|(package, text)| Some((package?, text)))
             .map(|(package, text)| {
                 let passed = text.contains("\ntest result: ok.");
                 (
@@ -846,6 +865,11 @@ mod tests {
         assert_eq!(sections[1].0, "ch02-monte-carlo");
         assert!(!sections[1].1.passed);
         assert!(sections[1].1.output.contains("the sign is wrong"));
+        // A run over the whole workspace: the other packages' parts are left out.
+        let second_only = package_sections(output, &["ch02-monte-carlo"]).unwrap();
+        assert_eq!(second_only.len(), 1);
+        assert_eq!(second_only[0].0, "ch02-monte-carlo");
+        assert!(!second_only[0].1.output.contains("exercise_x"));
         // A package that did not get as far as its tests: no split, each is run on its own.
         assert!(package_sections(output, &["ch01-whitted", "ch03-anti-aliasing"]).is_none());
         let first_only = &output[..output.rfind("     Running").unwrap()];

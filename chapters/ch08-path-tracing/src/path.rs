@@ -143,14 +143,21 @@ impl PathTracer<'_> {
         camera_ray: &Ray,
         counters: &mut SampleCounters,
     ) -> Ray {
+        if self.options.hide_emitters && self.lights.has_area_lights() {
+            self.through_emitters(camera_ray, counters)
+        } else {
+            *camera_ray
+        }
+    }
+
+    /// The camera ray continued through every emitting shape it meets, for
+    /// [`past_hidden_emitters`](Self::past_hidden_emitters).
+    fn through_emitters(&self, camera_ray: &Ray, counters: &mut SampleCounters) -> Ray {
         use ch01_whitted::scene::World;
         /// More emitting surfaces in a row than any scene stacks; a hostile one that does
         /// shows the last as a black surface instead of looping on.
         const MOST_SKIPPED: usize = 1024;
         let mut ray = *camera_ray;
-        if !self.options.hide_emitters || !self.lights.has_area_lights() {
-            return ray;
-        }
         for _ in 0..MOST_SKIPPED {
             counters.rays += 1;
             match self.world.intersect(&ray) {

@@ -176,9 +176,19 @@ impl Scene {
     /// material's textured widths are read too, and where its two widths differ it gets the
     /// shape's `dp/du` at `uv` ([`Microfacet::dp_du`]), the tangent they are measured along.
     ///
-    /// A material with nothing to read is lent as it is, not copied: that is nearly every hit.
+    /// A material with nothing to read is lent as it is, not copied: that is nearly every hit,
+    /// and the test for the plainest of them is made where the hit is shaded.
+    #[inline]
     pub fn material_at(&self, shape: u32, uv: Vec2) -> Cow<'_, Material> {
-        self.read_at(&self.surface(shape).material, shape, uv)
+        let material = &self.surface(shape).material;
+        match material {
+            Material::Diffuse { .. }
+            | Material::Mirror { .. }
+            | Material::Dielectric { .. }
+            | Material::ThinDielectric { .. }
+            | Material::Glossy(_) => Cow::Borrowed(material),
+            _ => self.read_at(material, shape, uv),
+        }
     }
 
     /// `material` of shape number `shape` with its textures read at `uv` (a mask's opacity and
