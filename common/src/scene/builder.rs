@@ -164,4 +164,40 @@ mod tests {
         assert_eq!(scene.surface(2).material, Material::mirror());
         assert_eq!(scene.moving.len(), 1);
     }
+
+    #[test]
+    fn the_materials_lent_without_reading_are_those_read_at_lends() {
+        // `material_at` lends five kinds of material without asking `read_at`: each must be
+        // one that `read_at` would lend as it is, or a texture added to it later is skipped.
+        let frame = CameraFrame::look_at(Vec3::Z, Vec3::ZERO, Vec3::Y).unwrap();
+        let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0));
+        let plain = [
+            Material::diffuse(Vec3::ONE),
+            Material::mirror(),
+            Material::glass(1.5),
+            Material::ThinDielectric {
+                int_ior: 1.5,
+                ext_ior: 1.0,
+            },
+            Material::glossy(Vec3::ONE, 10.0),
+        ];
+        let mut builder = SceneBuilder::new();
+        for material in &plain {
+            builder = builder.shape(sphere, material.clone());
+        }
+        let scene = builder.build(Camera::pinhole(frame, 40.0), FilmSettings::new(8, 8), 4);
+        for (shape, material) in plain.iter().enumerate() {
+            let read = scene.read_at(material, shape as u32, glam::Vec2::splat(0.5));
+            assert!(
+                matches!(read, std::borrow::Cow::Borrowed(_)),
+                "read_at reads something of {material:?}: material_at must not lend it unread"
+            );
+            assert_eq!(
+                scene
+                    .material_at(shape as u32, glam::Vec2::splat(0.5))
+                    .as_ref(),
+                material
+            );
+        }
+    }
 }
