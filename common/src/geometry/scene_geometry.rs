@@ -3,9 +3,8 @@
 use super::aabb::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
-use super::shapes::{Crossing, RaySpace, Shape};
+use super::shapes::{Corners, Crossing, RaySpace, Shape};
 use crate::Ray;
-use glam::Vec3;
 
 /// All the shapes of a scene and the BVH that finds which one a ray meets first.
 ///
@@ -26,8 +25,8 @@ pub struct Geometry {
 /// A shape as the walk of the BVH tests it.
 #[derive(Clone, Copy, Debug)]
 enum ShapeTest {
-    /// A triangle with area: its vertices, and its index in `shapes`.
-    Triangle { p: [Vec3; 3], shape: u32 },
+    /// A triangle with area: its vertices, axis by axis, and its index in `shapes`.
+    Triangle { corners: Corners, shape: u32 },
     /// Any other shape, tested as `shapes[shape]`.
     Other { shape: u32 },
 }
@@ -59,7 +58,7 @@ impl Geometry {
             .iter()
             .map(|&index| match &shapes[index as usize] {
                 Shape::Triangle(triangle) => ShapeTest::Triangle {
-                    p: triangle.p,
+                    corners: Corners::new(&triangle.p),
                     shape: index,
                 },
                 _ => ShapeTest::Other { shape: index },
@@ -81,7 +80,7 @@ impl Geometry {
     #[inline]
     fn crossing(&self, position: usize, ray: &Ray, space: Option<&RaySpace>) -> Option<Crossing> {
         match &self.tests[position] {
-            ShapeTest::Triangle { p, .. } => space?.crossing(p, ray.t_max),
+            ShapeTest::Triangle { corners, .. } => space?.crossing(corners, ray.t_max),
             ShapeTest::Other { shape } => self.shapes[*shape as usize].crossing(ray),
         }
     }

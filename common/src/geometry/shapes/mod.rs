@@ -17,8 +17,8 @@ pub use disc::Disc;
 pub use mesh::{MeshError, TriangleMesh};
 pub use parallelogram::Parallelogram;
 pub use sphere::Sphere;
-pub(crate) use triangle::RaySpace;
 pub use triangle::Triangle;
+pub(crate) use triangle::{Corners, RaySpace};
 
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
