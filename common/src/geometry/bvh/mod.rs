@@ -8,7 +8,8 @@
 //! * [`build`](Bvh::build) (in `build.rs`) splits primitives in two with the surface-area
 //!   heuristic, and `wide.rs` collapses that binary tree into nodes of four children.
 //! * [`intersect`](Bvh::intersect) and [`any_hit`](Bvh::any_hit) (in `traverse.rs`) walk the
-//!   tree, testing a node's four boxes at once, nearest child first, with a fixed-size stack.
+//!   tree, testing a node's four boxes at once, with a fixed-size stack: nearest child first
+//!   for the nearest hit, in stored order for a shadow ray.
 
 mod build;
 mod traverse;

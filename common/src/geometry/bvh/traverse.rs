@@ -1,4 +1,5 @@
-//! Walking the BVH: nearest child first, with a stack that never allocates.
+//! Walking the BVH with a stack that never allocates: nearest child first for the nearest
+//! hit, in the order the children are stored for a shadow ray, which any hit ends.
 
 use std::ops::{ControlFlow, Range};
 
@@ -67,7 +68,7 @@ impl Bvh {
         F: FnMut(usize, f32) -> Option<f32>,
     {
         let mut nearest = None;
-        self.walk(ray, |positions, mut t_max| {
+        self.walk::<true, _>(ray, |positions, mut t_max| {
             for primitive in positions {
                 if let Some(t) = hit_primitive(primitive, t_max)
                     && t < t_max
@@ -88,7 +89,7 @@ impl Bvh {
         F: FnMut(usize) -> bool,
     {
         let mut found = false;
-        self.walk(ray, |mut positions, t_max| {
+        self.walk::<false, _>(ray, |mut positions, t_max| {
             if positions.any(&mut hit_primitive) {
                 found = true;
                 ControlFlow::Break(())
@@ -100,8 +101,8 @@ impl Bvh {
     }
 
     /// Hands `visit_leaf` the positions (in leaf order) of the primitives of every leaf whose
-    /// box the ray enters before the current `t_max`, nearer subtrees first. `visit_leaf`
-    /// returns the new `t_max`, or `Break` to stop.
+    /// box the ray enters before the current `t_max`, nearer subtrees first if
+    /// `NEAREST_FIRST`. `visit_leaf` returns the new `t_max`, or `Break` to stop.
     ///
     /// At a node, the ray is tested against its four children's boxes at once, and the ones it
     /// enters are visited nearest first: a close hit found early shrinks `t_max`, which then
@@ -110,7 +111,11 @@ impl Bvh {
     /// compared with the `t_max` of the moment, which is the box test repeated for free: the
     /// box was entered before its exit (the first test said so), so it is still reached
     /// exactly when its entry is before the new `t_max`.
-    fn walk<F>(&self, ray: &Ray, visit_leaf: F)
+    ///
+    /// A shadow ray's `t_max` never shrinks and its first hit ends the walk, so nothing is
+    /// gained by sorting: without `NEAREST_FIRST` the children wait in the order their node
+    /// stores them, which saves the comparisons and the mispredicted branches of the sort.
+    fn walk<const NEAREST_FIRST: bool, F>(&self, ray: &Ray, visit_leaf: F)
     where
         F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
@@ -119,20 +124,23 @@ impl Bvh {
         // few stores.
         let needed = stack_needed(self.depth);
         if needed <= TINY_STACK {
-            self.walk_with_stack::<TINY_STACK, F>(ray, visit_leaf);
+            self.walk_with_stack::<TINY_STACK, NEAREST_FIRST, F>(ray, visit_leaf);
         } else if needed <= SHALLOW_STACK {
-            self.walk_with_stack::<SHALLOW_STACK, F>(ray, visit_leaf);
+            self.walk_with_stack::<SHALLOW_STACK, NEAREST_FIRST, F>(ray, visit_leaf);
         } else if needed <= MEDIUM_STACK {
-            self.walk_with_stack::<MEDIUM_STACK, F>(ray, visit_leaf);
+            self.walk_with_stack::<MEDIUM_STACK, NEAREST_FIRST, F>(ray, visit_leaf);
         } else {
-            self.walk_with_stack::<{ stack_needed(MAX_DEPTH) }, F>(ray, visit_leaf);
+            self.walk_with_stack::<{ stack_needed(MAX_DEPTH) }, NEAREST_FIRST, F>(ray, visit_leaf);
         }
     }
 
     /// [`walk`](Self::walk) with a stack of `STACK` entries, at least
     /// [`stack_needed`]`(depth)`.
-    fn walk_with_stack<const STACK: usize, F>(&self, ray: &Ray, mut visit_leaf: F)
-    where
+    fn walk_with_stack<const STACK: usize, const NEAREST_FIRST: bool, F>(
+        &self,
+        ray: &Ray,
+        mut visit_leaf: F,
+    ) where
         F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
         debug_assert!(stack_needed(self.depth) <= STACK);
@@ -167,7 +175,7 @@ impl Bvh {
                         lanes &= lanes - 1;
                         let child = (node.child[lane], u32::from(node.count[lane]), t_enter[lane]);
                         let mut j = deferred_count;
-                        while j > first && deferred[j - 1].2 < child.2 {
+                        while NEAREST_FIRST && j > first && deferred[j - 1].2 < child.2 {
                             deferred[j] = deferred[j - 1];
                             j -= 1;
                         }
@@ -240,7 +248,7 @@ impl WideNode {
     /// on its plane) counts as inside that slab. Each lane rounds exactly as the scalar test
     /// does, so the answer does not depend on the instruction set. `t_max` must not be NaN.
     #[inline]
-    fn entries(&self, ray: &WideRay, t_max: f32) -> (u32, Vec4) {
+    fn entries(&self, ray: &WideRay, t_max: f32) -> (u32, [f32; 4]) {
         const EXIT_SLACK: f32 = 1.0 + 2.0 * gamma(3);
         let mut t_enter = Vec4::ZERO;
         let mut t_exit = Vec4::splat(t_max);
@@ -263,6 +271,8 @@ impl WideNode {
             t_enter = t_enter.max(t_near);
             t_exit = t_exit.min(t_far);
         }
-        (t_enter.cmple(t_exit).bitmask(), t_enter)
+        // The entries as an array: a lane picked at run time is then a load, where indexing
+        // the vector would jump through a table on the lane.
+        (t_enter.cmple(t_exit).bitmask(), t_enter.to_array())
     }
 }

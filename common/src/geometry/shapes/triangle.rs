@@ -185,7 +185,10 @@ impl RaySpace {
         let kz = ray.dir.abs().max_position();
         let kx = (kz + 1) % 3;
         let ky = (kx + 1) % 3;
-        let permute = |v: Vec3| Vec3::new(v[kx], v[ky], v[kz]);
+        let permute = |v: Vec3| {
+            let v = v.to_array();
+            Vec3::new(v[kx], v[ky], v[kz])
+        };
         let d = permute(ray.dir);
         if d.z == 0.0 {
             return None; // a zero direction
