@@ -54,22 +54,33 @@ pub fn regenerate_all(figures_dir: &Path, quick: bool) -> Result<()> {
 
 /// What every figure of this run cost, from each chapter's `figure-times.csv`: a Markdown
 /// table for the speed appendix, one row per figure and a total per chapter, so that the
-/// expensive figures are named on every build.
+/// expensive figures are named on every build. Beside each time stands the figure's quality
+/// where it has a reference: the smallest RMSE its error-against-time runs measured, which
+/// a cheaper reference or fewer samples would raise.
 fn cost_table(figures_dir: &Path) -> Result<String> {
-    let mut table = String::from("| chapter | figure | seconds |\n|---|---|---:|\n");
+    let mut table = String::from(
+        "| chapter | figure | seconds | smallest RMSE against its reference |\n|---|---|---:|---:|\n",
+    );
     let mut total = 0.0;
     for (chapter, _) in CHAPTERS {
         let mut chapter_total = 0.0;
-        for (figure, seconds) in common::figure_set::read_times(&figures_dir.join(chapter))? {
-            table += &format!("| {chapter} | {figure} | {seconds:.2} |\n");
-            chapter_total += seconds;
+        for cost in common::figure_set::read_times(&figures_dir.join(chapter))? {
+            let rmse = cost
+                .rmse
+                .map(|rmse| format!("{rmse:.2e}"))
+                .unwrap_or_else(|| "no reference".to_string());
+            table += &format!(
+                "| {chapter} | {} | {:.2} | {rmse} |\n",
+                cost.figure, cost.seconds
+            );
+            chapter_total += cost.seconds;
         }
         table += &format!(
-            "| **{chapter}** | **all of the chapter's figures** | **{chapter_total:.2}** |\n"
+            "| **{chapter}** | **all of the chapter's figures** | **{chapter_total:.2}** | |\n"
         );
         total += chapter_total;
     }
-    table += &format!("| **all** | **every figure of the book** | **{total:.2}** |\n");
+    table += &format!("| **all** | **every figure of the book** | **{total:.2}** | |\n");
     Ok(table)
 }
 
@@ -84,20 +95,27 @@ mod tests {
         for (index, (chapter, _)) in CHAPTERS.iter().enumerate() {
             std::fs::create_dir_all(dir.path().join(chapter)).unwrap();
             let csv = format!(
-                "figure,seconds\nthe gallery,{}.3\nthe plot,0.5\n",
+                "figure,seconds,rmse\nthe gallery,{}.3,\nthe plot,0.5,1.25e-3\n",
                 index + 1
             );
             std::fs::write(dir.path().join(chapter).join(TIMES_FILE), csv).unwrap();
         }
         let table = cost_table(dir.path()).unwrap();
-        assert!(table.contains("| ch01 | the gallery | 1.30 |"), "{table}");
         assert!(
-            table.contains("| **ch01** | **all of the chapter's figures** | **1.80** |"),
+            table.contains("| ch01 | the gallery | 1.30 | no reference |"),
+            "{table}"
+        );
+        assert!(
+            table.contains("| ch01 | the plot | 0.50 | 1.25e-3 |"),
+            "{table}"
+        );
+        assert!(
+            table.contains("| **ch01** | **all of the chapter's figures** | **1.80** | |"),
             "{table}"
         );
         // 1.3 + ... + 8.3 and eight halves.
         assert!(
-            table.contains("| **every figure of the book** | **42.40** |"),
+            table.contains("| **every figure of the book** | **42.40** | |"),
             "{table}"
         );
         assert_eq!(table.lines().count(), 2 + CHAPTERS.len() * 3 + 1);

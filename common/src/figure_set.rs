@@ -5,22 +5,39 @@
 //! A chapter's `write_all` starts a [`FigureSet`], picks its sizes and budgets for the
 //! [`Level`], and makes each figure with [`FigureSet::make`]: the figure's failure is reported
 //! with its name, and its time is kept. [`FigureSet::finish`] writes those times to
-//! `figure-times.csv` beside the figures, so that what a figure costs is on record.
+//! `figure-times.csv` beside the figures, so that what a figure costs is on record, together
+//! with the figure's quality where it is measured: the smallest RMSE against a reference that
+//! an error-against-time run of the figure found (see [`note_rmse`]). A figure made cheaper
+//! at equal quality shows the same RMSE there for less time.
 
 use crate::cli::prepare_output_dir;
 use crate::metrics::AgreementSet;
 use crate::output::write_text;
 use crate::render::RenderSettings;
 use anyhow::Context;
+use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// The file beside a chapter's figures with each figure's name and seconds.
 pub const TIMES_FILE: &str = "figure-times.csv";
 
-/// The times [`FigureSet::finish`] wrote into `dir`: each figure's name and seconds, in the
-/// order they were made. A line that is not `figure,seconds` is named by file and line.
-pub fn read_times(dir: &Path) -> anyhow::Result<Vec<(String, f64)>> {
+/// One figure's line of `figure-times.csv`: what it cost and, where the figure measures it,
+/// how close its renders came to their reference.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FigureCost {
+    /// The figure's name, as given to [`FigureSet::make`].
+    pub figure: String,
+    /// Wall-clock seconds it took.
+    pub seconds: f64,
+    /// The smallest RMSE against a reference noted while it was made (see [`note_rmse`]);
+    /// `None` for a figure without a reference (a gallery, a plot of samples).
+    pub rmse: Option<f64>,
+}
+
+/// The costs [`FigureSet::finish`] wrote into `dir`, in the order the figures were made. A line
+/// that is not `figure,seconds,rmse` (the RMSE may be empty) is named by file and line.
+pub fn read_times(dir: &Path) -> anyhow::Result<Vec<FigureCost>> {
     let path = dir.join(TIMES_FILE);
     let csv = std::fs::read_to_string(&path)
         .with_context(|| format!("cannot read {}", path.display()))?;
@@ -28,11 +45,47 @@ pub fn read_times(dir: &Path) -> anyhow::Result<Vec<(String, f64)>> {
         .enumerate()
         .skip(1)
         .map(|(number, line)| {
-            line.rsplit_once(',')
-                .and_then(|(figure, seconds)| Some((figure.to_string(), seconds.parse().ok()?)))
-                .with_context(|| format!("{}:{}: not `figure,seconds`", path.display(), number + 1))
+            parse_cost(line).with_context(|| {
+                format!(
+                    "{}:{}: not `figure,seconds,rmse`",
+                    path.display(),
+                    number + 1
+                )
+            })
         })
         .collect()
+}
+
+/// One line of `figure-times.csv`, or `None` if it is malformed.
+fn parse_cost(line: &str) -> Option<FigureCost> {
+    let (rest, rmse) = line.rsplit_once(',')?;
+    let (figure, seconds) = rest.rsplit_once(',')?;
+    let rmse = match rmse {
+        "" => None,
+        number => Some(number.parse().ok()?),
+    };
+    Some(FigureCost {
+        figure: figure.to_string(),
+        seconds: seconds.parse().ok()?,
+        rmse,
+    })
+}
+
+thread_local! {
+    /// The RMSEs noted on this thread by the figure being made, or `None` between figures.
+    static NOTED_RMSE: RefCell<Option<Vec<f64>>> = const { RefCell::new(None) };
+}
+
+/// Notes an RMSE measured against a reference while a figure is being made, so that the
+/// figure's line in `figure-times.csv` records its quality beside its time.
+/// [`run_convergence`](crate::metrics::run_convergence) notes every error it measures; outside
+/// [`FigureSet::make`] (in a test, say) nothing is kept.
+pub fn note_rmse(rmse: f64) {
+    NOTED_RMSE.with(|noted| {
+        if let Some(noted) = noted.borrow_mut().as_mut() {
+            noted.push(rmse);
+        }
+    });
 }
 
 /// How much work the figures get.
@@ -101,7 +154,7 @@ pub struct FigureSet {
     out: PathBuf,
     level: Level,
     started: Instant,
-    times: Vec<(&'static str, f64)>,
+    costs: Vec<FigureCost>,
 }
 
 impl FigureSet {
@@ -114,7 +167,7 @@ impl FigureSet {
             out: out.to_path_buf(),
             level: Level::of(quick),
             started: Instant::now(),
-            times: Vec::new(),
+            costs: Vec::new(),
         })
     }
 
@@ -128,16 +181,26 @@ impl FigureSet {
         &self.out
     }
 
-    /// Makes one figure: runs `figure` with the output folder, keeps how long it took, and
-    /// names the figure (`what`, e.g. "the shutter series") in its error.
+    /// Makes one figure: runs `figure` with the output folder, keeps how long it took and the
+    /// smallest RMSE it [noted](note_rmse), and names the figure (`what`, e.g. "the shutter
+    /// series") in its error.
     pub fn make(
         &mut self,
         what: &'static str,
         figure: impl FnOnce(&Path) -> anyhow::Result<()>,
     ) -> anyhow::Result<()> {
         let started = Instant::now();
-        figure(&self.out).with_context(|| format!("{} figures: {what}", self.chapter))?;
-        self.times.push((what, started.elapsed().as_secs_f64()));
+        NOTED_RMSE.with(|noted| *noted.borrow_mut() = Some(Vec::new()));
+        let made = figure(&self.out);
+        let noted = NOTED_RMSE
+            .with(|noted| noted.borrow_mut().take())
+            .unwrap_or_default();
+        made.with_context(|| format!("{} figures: {what}", self.chapter))?;
+        self.costs.push(FigureCost {
+            figure: what.to_string(),
+            seconds: started.elapsed().as_secs_f64(),
+            rmse: noted.into_iter().reduce(f64::min),
+        });
         Ok(())
     }
 
@@ -150,12 +213,20 @@ impl FigureSet {
         })
     }
 
-    /// Writes `figure-times.csv` (each figure's name and seconds) and says where the figures
-    /// are and how long they took.
+    /// Writes `figure-times.csv` (each figure's name, seconds and smallest RMSE) and says where
+    /// the figures are and how long they took.
     pub fn finish(self) -> anyhow::Result<()> {
-        let mut csv = String::from("figure,seconds\n");
-        for (what, seconds) in &self.times {
-            csv.push_str(&format!("{},{seconds:.3}\n", what.replace(',', ";")));
+        let mut csv = String::from("figure,seconds,rmse\n");
+        for cost in &self.costs {
+            let rmse = cost
+                .rmse
+                .map(|rmse| format!("{rmse:.4e}"))
+                .unwrap_or_default();
+            csv.push_str(&format!(
+                "{},{:.3},{rmse}\n",
+                cost.figure.replace(',', ";"),
+                cost.seconds
+            ));
         }
         write_text(&self.out.join(TIMES_FILE), &csv)?;
         eprintln!(
@@ -202,17 +273,58 @@ mod tests {
         assert!(dir.path().join("plot.txt").exists());
         let read = read_times(dir.path()).unwrap();
         assert_eq!(read.len(), 1);
-        assert_eq!(read[0].0, "a plot; with a comma");
-        assert!(read[0].1 >= 0.0);
+        assert_eq!(read[0].figure, "a plot; with a comma");
+        assert!(read[0].seconds >= 0.0);
+        assert_eq!(read[0].rmse, None, "a plot measures no error");
+    }
+
+    #[test]
+    fn a_figure_records_the_smallest_rmse_it_noted_and_only_its_own() {
+        let dir = tempfile::tempdir().unwrap();
+        note_rmse(1e-9); // outside a figure: kept nowhere
+        let mut figures = FigureSet::start("ch00", dir.path(), true).unwrap();
+        figures
+            .make("the error-against-time figure", |_| {
+                for rmse in [0.5, 0.125, 0.25] {
+                    note_rmse(rmse);
+                }
+                Ok(())
+            })
+            .unwrap();
+        figures.make("the gallery", |_| Ok(())).unwrap();
+        // A failing figure's notes do not leak into the next one.
+        let _ = figures.make("the broken figure", |_| {
+            note_rmse(1e-6);
+            anyhow::bail!("no data")
+        });
+        figures.make("the plot", |_| Ok(())).unwrap();
+        figures.finish().unwrap();
+        let read = read_times(dir.path()).unwrap();
+        let rmse: Vec<_> = read
+            .iter()
+            .map(|cost| (cost.figure.as_str(), cost.rmse))
+            .collect();
+        assert_eq!(
+            rmse,
+            [
+                ("the error-against-time figure", Some(0.125)),
+                ("the gallery", None),
+                ("the plot", None)
+            ]
+        );
     }
 
     #[test]
     fn a_malformed_line_of_times_is_named_with_its_file_and_line() {
         let dir = tempfile::tempdir().unwrap();
-        std::fs::write(dir.path().join(TIMES_FILE), "figure,seconds\na,1\nb;2\n").unwrap();
+        std::fs::write(
+            dir.path().join(TIMES_FILE),
+            "figure,seconds,rmse\na,1,\nb,2,0.5\nc;3\n",
+        )
+        .unwrap();
         let error = format!("{:#}", read_times(dir.path()).unwrap_err());
         assert!(
-            error.contains(TIMES_FILE) && error.contains(":3:"),
+            error.contains(TIMES_FILE) && error.contains(":4:"),
             "{error}"
         );
     }

@@ -51,7 +51,8 @@ impl<'a> Technique<'a> {
 
 /// Renders every technique at every budget (samples per pixel), timing each render, and records
 /// its errors against `reference`: one record per technique and budget, technique by technique,
-/// budgets in the order given.
+/// budgets in the order given. Each RMSE is also [noted](crate::figure_set::note_rmse) for the
+/// figure being made, whose quality it measures.
 ///
 /// Times are wall-clock ([`Instant`]), since wall-clock time is what a user waits for; they
 /// include everything the render function does, so setup it repeats on every call counts
@@ -71,11 +72,13 @@ pub fn run_convergence(
             let start = Instant::now();
             let image = (technique.render)(spp);
             let seconds = start.elapsed().as_secs_f64();
+            let error = rmse(&image, reference);
+            crate::figure_set::note_rmse(error);
             records.push(ConvergenceRecord {
                 technique: technique.name.clone(),
                 spp,
                 seconds,
-                rmse: rmse(&image, reference),
+                rmse: error,
                 relmse: relmse(&image, reference),
             });
         }
@@ -165,6 +168,24 @@ mod tests {
         }
         // RMSE halves whenever the budget quadruples.
         assert_relative_eq!(records[0].rmse / records[1].rmse, 2.0, max_relative = 1e-5);
+    }
+
+    #[test]
+    fn the_errors_measured_inside_a_figure_are_noted_for_its_line_of_costs() {
+        let reference = Image::filled(4, 3, Vec3::new(0.5, 1.0, 2.0));
+        let dir = tempfile::tempdir().unwrap();
+        let mut figures = crate::figure_set::FigureSet::start("ch00", dir.path(), true).unwrap();
+        figures
+            .make("the error-against-time figure", |_| {
+                let techniques = [offset_technique("plain", &reference, 1.0)];
+                run_convergence(&techniques, &[1, 4, 16], &reference);
+                Ok(())
+            })
+            .unwrap();
+        figures.finish().unwrap();
+        let costs = crate::figure_set::read_times(dir.path()).unwrap();
+        // The smallest error, at 16 samples: 1 / sqrt(16).
+        assert_relative_eq!(costs[0].rmse.unwrap(), 0.25, max_relative = 1e-3);
     }
 
     #[test]
