@@ -23,7 +23,7 @@ pub use convergence::{ConvergenceRecord, Technique, convergence_markdown, run_co
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use error_metrics::{RELMSE_EPSILON, mean, relmse, rmse};
 pub use mitsuba::{
-    MITSUBA_JIT_VARIANT, MITSUBA_PYTHON, MITSUBA_VARIANT, UPDATE_MITSUBA_RENDERS,
+    AGREEMENT_ONLY, MITSUBA_JIT_VARIANT, MITSUBA_PYTHON, MITSUBA_VARIANT, UPDATE_MITSUBA_RENDERS,
     make_reference_renders, mitsuba_python, refresh_agreement, refresh_agreement_from_env,
     render_with_mitsuba,
 };

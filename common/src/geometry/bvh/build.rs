@@ -77,7 +77,7 @@ impl Bvh {
     /// coincide. Empty (or NaN) boxes can never be hit and are left out of the tree.
     ///
     /// The SAH splits in two; the binary tree is then collapsed into nodes of four children
-    /// ([`super::wide`]), which a ray tests at once.
+    /// (the `wide` module), which a ray tests at once.
     pub fn build(primitive_bounds: &[Aabb]) -> Bvh {
         Bvh::from_binary(BinaryTree::build(primitive_bounds))
     }

@@ -24,7 +24,7 @@ use super::{Disc, Shape, Sphere, Triangle};
 
 impl Shape {
     /// `dp/du` at surface parameters `uv` (a hit's [`uv`](crate::geometry::SurfaceHit::uv)),
-    /// in world space; zero where it has no direction. See the [module](self).
+    /// in world space; zero where it has no direction. The `dp_du` module says why.
     pub fn dp_du(&self, uv: Vec2) -> Vec3 {
         match self {
             Shape::Sphere(sphere) => sphere_dp_du(sphere, uv),
