@@ -128,18 +128,25 @@ impl Aabb {
     /// outwards like this, so that the box certainly contains the exact surface even though
     /// each computed corner may have been rounded inwards by half a float.
     pub fn rounded_outward(self) -> Self {
-        let tiny = |v: f32| v.abs() < SMALLEST_BOUND;
-        let down = |v: f32| match next_float_down(v) {
-            below if tiny(below) => -SMALLEST_BOUND,
-            below => below,
-        };
-        let up = |v: f32| match next_float_up(v) {
-            above if tiny(above) => SMALLEST_BOUND,
-            above => above,
+        // A rounded bound closer to zero than `SMALLEST_BOUND` goes out to `outmost`.
+        let at_least = |bound: f32, outmost: f32| {
+            if bound.abs() < SMALLEST_BOUND {
+                outmost
+            } else {
+                bound
+            }
         };
         Self {
-            min: self.min.to_array().map(down).into(),
-            max: self.max.to_array().map(up).into(),
+            min: self
+                .min
+                .to_array()
+                .map(|v| at_least(next_float_down(v), -SMALLEST_BOUND))
+                .into(),
+            max: self
+                .max
+                .to_array()
+                .map(|v| at_least(next_float_up(v), SMALLEST_BOUND))
+                .into(),
         }
     }
 
