@@ -55,8 +55,9 @@ pub fn regenerate_all(figures_dir: &Path, quick: bool) -> Result<()> {
 /// What every figure of this run cost, from each chapter's `figure-times.csv`: a Markdown
 /// table for the speed appendix, one row per figure and a total per chapter, so that the
 /// expensive figures are named on every build. Beside each time stands the figure's quality
-/// where it has a reference: the smallest RMSE its error-against-time runs measured, which
-/// a cheaper reference or fewer samples would raise.
+/// where its error-against-time runs measure one: the smallest RMSE against their reference,
+/// which a cheaper reference or fewer samples would raise. Other figures say "not measured"
+/// (a gallery has no reference; the comparison with Mitsuba 3 reports its own numbers).
 fn cost_table(figures_dir: &Path) -> Result<String> {
     let mut table = String::from(
         "| chapter | figure | seconds | smallest RMSE against its reference |\n|---|---|---:|---:|\n",
@@ -68,7 +69,7 @@ fn cost_table(figures_dir: &Path) -> Result<String> {
             let rmse = cost
                 .rmse
                 .map(|rmse| format!("{rmse:.2e}"))
-                .unwrap_or_else(|| "no reference".to_string());
+                .unwrap_or_else(|| "not measured".to_string());
             table += &format!(
                 "| {chapter} | {} | {:.2} | {rmse} |\n",
                 cost.figure, cost.seconds
@@ -102,7 +103,7 @@ mod tests {
         }
         let table = cost_table(dir.path()).unwrap();
         assert!(
-            table.contains("| ch01 | the gallery | 1.30 | no reference |"),
+            table.contains("| ch01 | the gallery | 1.30 | not measured |"),
             "{table}"
         );
         assert!(

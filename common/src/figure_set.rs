@@ -19,7 +19,7 @@ use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// The file beside a chapter's figures with each figure's name and seconds.
+/// The file beside a chapter's figures with each figure's name, seconds and smallest RMSE.
 pub const TIMES_FILE: &str = "figure-times.csv";
 
 /// One figure's line of `figure-times.csv`: what it cost and, where the figure measures it,
@@ -31,7 +31,7 @@ pub struct FigureCost {
     /// Wall-clock seconds it took.
     pub seconds: f64,
     /// The smallest RMSE against a reference noted while it was made (see [`note_rmse`]);
-    /// `None` for a figure without a reference (a gallery, a plot of samples).
+    /// `None` for a figure that noted none (a gallery, a plot of samples).
     pub rmse: Option<f64>,
 }
 
