@@ -1,9 +1,9 @@
 //! The scene's shapes together with the BVH over them.
 
 use super::aabb::Aabb;
-use super::bvh::Bvh;
+use super::bvh::{Bvh, EMPTY_SLOT, LEAF_BLOCK};
 use super::hit::SurfaceHit;
-use super::shapes::{Corners, Crossing, RaySpace, Shape};
+use super::shapes::{Crossing, FourTriangles, RaySpace, Shape, TRIANGLE_LANES};
 use crate::Ray;
 
 /// All the shapes of a scene and the BVH that finds which one a ray meets first.
@@ -15,26 +15,40 @@ use crate::Ray;
 pub struct Geometry {
     shapes: Vec<Shape>,
     bvh: Bvh,
-    /// What the ray tests need of the shapes in the BVH, in its leaf order: a leaf's shapes
-    /// lie side by side, and a triangle's three vertices are all a test reads of it.
-    tests: Vec<ShapeTest>,
-    /// Whether any shape is a triangle: the walk then works out each ray's [`RaySpace`].
+    /// What the ray tests need of each leaf of the BVH, one record per leaf block: a leaf's
+    /// triangles are tested together, and their vertices are all a test reads of them.
+    leaves: Vec<LeafTest>,
+    /// The indices in `shapes` of each leaf's shapes, one record per leaf block; read for the
+    /// hit alone, so kept apart from what every test reads.
+    leaf_shapes: Vec<[u32; LEAF_BLOCK]>,
+    /// Whether any leaf holds triangles: the walk then works out each ray's [`RaySpace`].
     has_triangles: bool,
 }
 
-/// A shape as the walk of the BVH tests it.
+/// The shapes of one leaf, as the walk of the BVH tests them.
 #[derive(Clone, Copy, Debug)]
-enum ShapeTest {
-    /// A triangle with area: its vertices, axis by axis, and its index in `shapes`.
-    Triangle { corners: Corners, shape: u32 },
-    /// Any other shape, tested as `shapes[shape]`.
-    Other { shape: u32 },
+enum LeafTest {
+    /// Triangles (each with area), one per lane: their vertices, tested four at once.
+    Triangles(FourTriangles),
+    /// Other shapes, or a mix, tested one by one.
+    Shapes,
 }
 
-impl ShapeTest {
-    fn shape(&self) -> usize {
-        match *self {
-            ShapeTest::Triangle { shape, .. } | ShapeTest::Other { shape } => shape as usize,
+impl LeafTest {
+    /// The record of the leaf whose shapes are `leaf`.
+    fn new(leaf: &[u32], shapes: &[Shape]) -> Self {
+        let vertices: Option<Vec<[glam::Vec3; 3]>> = leaf
+            .iter()
+            .map(|&i| match &shapes[i as usize] {
+                Shape::Triangle(triangle) => Some(triangle.p),
+                _ => None,
+            })
+            .collect();
+        match vertices {
+            Some(vertices) if leaf.len() <= TRIANGLE_LANES => {
+                LeafTest::Triangles(FourTriangles::new(&vertices))
+            }
+            _ => LeafTest::Shapes,
         }
     }
 }
@@ -52,36 +66,33 @@ impl Geometry {
                 _ => shape.bounds(),
             })
             .collect();
-        let bvh = Bvh::build(&bounds);
-        let tests = bvh
-            .leaf_order()
+        // Triangles are tested a leaf at a time (`FourTriangles`), every other shape alone.
+        let batched: Vec<bool> = shapes
             .iter()
-            .map(|&index| match &shapes[index as usize] {
-                Shape::Triangle(triangle) => ShapeTest::Triangle {
-                    corners: Corners::new(&triangle.p),
-                    shape: index,
-                },
-                _ => ShapeTest::Other { shape: index },
+            .map(|shape| matches!(shape, Shape::Triangle(_)))
+            .collect();
+        let bvh = Bvh::build_batched(&bounds, &batched);
+        let leaf_shapes: Vec<[u32; LEAF_BLOCK]> = bvh
+            .leaf_order()
+            .chunks(LEAF_BLOCK)
+            .map(|block| std::array::from_fn(|k| block.get(k).copied().unwrap_or(EMPTY_SLOT)))
+            .collect();
+        let leaves: Vec<LeafTest> = leaf_shapes
+            .iter()
+            .map(|block| {
+                let count = block.iter().take_while(|&&i| i != EMPTY_SLOT).count();
+                LeafTest::new(&block[..count], &shapes)
             })
             .collect();
-        let has_triangles = shapes
+        let has_triangles = leaves
             .iter()
-            .any(|shape| matches!(shape, Shape::Triangle(_)));
+            .any(|leaf| matches!(leaf, LeafTest::Triangles(_)));
         Self {
             shapes,
             bvh,
-            tests,
+            leaves,
+            leaf_shapes,
             has_triangles,
-        }
-    }
-
-    /// Where the ray crosses the shape at `position` in the BVH's leaf order. `space` is the
-    /// ray's [`RaySpace`] ([`ray_space`](Self::ray_space)).
-    #[inline]
-    fn crossing(&self, position: usize, ray: &Ray, space: Option<&RaySpace>) -> Option<Crossing> {
-        match &self.tests[position] {
-            ShapeTest::Triangle { corners, .. } => space?.crossing(corners, ray.t_max),
-            ShapeTest::Other { shape } => self.shapes[*shape as usize].crossing(ray),
         }
     }
 
@@ -99,28 +110,57 @@ impl Geometry {
     /// [`shapes`](Self::shapes).
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         // Every closer crossing replaces the last; the record is built for the nearest only.
-        let mut nearest: Option<(usize, Crossing)> = None;
+        let mut nearest: Option<(u32, Crossing)> = None;
         let space = self.ray_space(ray);
-        self.bvh.intersect_in_leaf_order(ray, |position, t_max| {
-            let crossing = self.crossing(position, &Ray { t_max, ..*ray }, space.as_ref())?;
-            nearest = Some((position, crossing));
+        self.bvh.nearest_leaves(ray, |leaf, count, t_max| {
+            let (shape, crossing) = match &self.leaves[leaf] {
+                LeafTest::Triangles(triangles) => {
+                    let (lane, crossing) =
+                        space.as_ref()?.nearest_crossing(triangles, count, t_max)?;
+                    (self.leaf_shapes[leaf][lane], crossing)
+                }
+                LeafTest::Shapes => {
+                    self.nearest_of(&self.leaf_shapes[leaf][..count], ray, t_max)?
+                }
+            };
+            nearest = Some((shape, crossing));
             Some(crossing.t)
         });
-        let (position, crossing) = nearest?;
-        let index = self.tests[position].shape();
+        let (shape, crossing) = nearest?;
         Some(SurfaceHit {
-            shape: index as u32,
-            ..self.shapes[index].surface_hit(crossing)
+            shape,
+            ..self.shapes[shape as usize].surface_hit(crossing)
         })
+    }
+
+    /// The nearest crossing of the ray limited to `t < t_max` with one of `shapes`, tested in
+    /// order, and that shape.
+    fn nearest_of(&self, shapes: &[u32], ray: &Ray, mut t_max: f32) -> Option<(u32, Crossing)> {
+        let mut nearest = None;
+        for &shape in shapes {
+            if let Some(crossing) = self.shapes[shape as usize].crossing(&Ray { t_max, ..*ray })
+                && crossing.t < t_max
+            {
+                t_max = crossing.t;
+                nearest = Some((shape, crossing));
+            }
+        }
+        nearest
     }
 
     /// Whether anything lies on the ray before `ray.t_max` (a shadow test). Cheaper than
     /// [`intersect`](Self::intersect): it stops at the first hit found, nearest or not.
     pub fn occluded(&self, ray: &Ray) -> bool {
         let space = self.ray_space(ray);
-        self.bvh.any_hit_in_leaf_order(ray, |position| {
-            self.crossing(position, ray, space.as_ref()).is_some()
-        })
+        self.bvh
+            .any_leaf(ray, |leaf, count| match &self.leaves[leaf] {
+                LeafTest::Triangles(triangles) => space
+                    .as_ref()
+                    .is_some_and(|space| space.any_crossing(triangles, count, ray.t_max)),
+                LeafTest::Shapes => self.leaf_shapes[leaf][..count]
+                    .iter()
+                    .any(|&shape| self.shapes[shape as usize].crossing(ray).is_some()),
+            })
     }
 
     /// The shapes, in the order given to [`new`](Self::new).
@@ -137,7 +177,8 @@ impl Geometry {
     pub fn memory_bytes(&self) -> usize {
         std::mem::size_of_val(self.shapes.as_slice())
             + self.bvh.memory_bytes()
-            + std::mem::size_of_val(self.tests.as_slice())
+            + std::mem::size_of_val(self.leaves.as_slice())
+            + std::mem::size_of_val(self.leaf_shapes.as_slice())
     }
 
     /// The BVH, for statistics.

@@ -10,7 +10,7 @@
 
 use glam::Vec3;
 
-use super::{Bvh, MAX_PRIMITIVES_PER_LEAF};
+use super::{Bvh, EMPTY_SLOT, LEAF_BLOCK, MAX_PRIMITIVES_PER_LEAF};
 use crate::geometry::aabb::Aabb;
 
 /// How many slices the centroid range is cut into; 12 is pbrt-v4's choice.
@@ -34,7 +34,8 @@ pub(super) const MAX_DEPTH: usize = MAX_SAH_DEPTH + 32;
 pub(super) struct BinaryTree {
     /// The nodes in depth-first order: an interior node's first child is the next node.
     pub nodes: Vec<Node>,
-    /// Primitive indices, ordered so that every leaf's primitives are one contiguous run.
+    /// Primitive indices, each leaf's at the start of a block of [`LEAF_BLOCK`] (see
+    /// [`Bvh::leaf_order`]).
     pub primitive_indices: Vec<u32>,
     /// Number of nodes on the longest path from the root to a leaf.
     pub depth: usize,
@@ -61,6 +62,8 @@ pub(super) enum NodeKind {
 #[derive(Clone, Copy, Debug)]
 struct BuildPrimitive {
     index: u32,
+    /// Whether the caller tests this primitive together with the rest of its leaf's.
+    batched: bool,
     bounds: Aabb,
     centroid: Vec3,
 }
@@ -79,19 +82,29 @@ impl Bvh {
     /// The SAH splits in two; the binary tree is then collapsed into nodes of four children
     /// (the `wide` module), which a ray tests at once.
     pub fn build(primitive_bounds: &[Aabb]) -> Bvh {
-        Bvh::from_binary(BinaryTree::build(primitive_bounds))
+        Bvh::build_batched(primitive_bounds, &[])
+    }
+
+    /// [`build`](Self::build) for a caller that tests some primitives a leaf at a time:
+    /// primitive `i` is one of them if `batched[i]` (missing entries are `false`). Testing a
+    /// leaf of up to [`LEAF_BLOCK`] of them costs about one test, so the SAH weighs them by
+    /// the block rather than one by one, and their leaves come out fuller and the tree
+    /// shallower.
+    pub fn build_batched(primitive_bounds: &[Aabb], batched: &[bool]) -> Bvh {
+        Bvh::from_binary(BinaryTree::build(primitive_bounds, batched))
     }
 }
 
 impl BinaryTree {
     /// The binary SAH tree over the boxes (see [`Bvh::build`]).
-    pub(super) fn build(primitive_bounds: &[Aabb]) -> BinaryTree {
+    pub(super) fn build(primitive_bounds: &[Aabb], batched: &[bool]) -> BinaryTree {
         let mut primitives: Vec<BuildPrimitive> = primitive_bounds
             .iter()
             .enumerate()
             .filter(|(_, bounds)| !bounds.is_empty())
             .map(|(index, &bounds)| BuildPrimitive {
                 index: u32::try_from(index).expect("at most u32::MAX primitives"),
+                batched: batched.get(index).copied().unwrap_or(false),
                 bounds,
                 centroid: bounds.centroid(),
             })
@@ -117,9 +130,12 @@ impl BinaryTree {
         let index = self.nodes.len();
         match choose_split(primitives, &bounds, depth) {
             None => {
-                let first = self.primitive_indices.len() as u32;
+                // Every leaf starts a block of its own (see `Bvh::leaf_order`).
+                let first = self.primitive_indices.len().next_multiple_of(LEAF_BLOCK);
+                self.primitive_indices.resize(first, EMPTY_SLOT);
                 self.primitive_indices
                     .extend(primitives.iter().map(|p| p.index));
+                let first = first as u32;
                 self.nodes.push(Node {
                     bounds,
                     kind: NodeKind::Leaf {
@@ -168,33 +184,37 @@ fn choose_split(primitives: &mut [BuildPrimitive], bounds: &Aabb, depth: usize) 
         ((relative * BIN_COUNT as f32) as usize).min(BIN_COUNT - 1)
     };
     let mut bin_bounds = [Aabb::empty(); BIN_COUNT];
-    let mut bin_counts = [0usize; BIN_COUNT];
+    let mut bin_counts = [Tests::default(); BIN_COUNT];
     for p in primitives.iter() {
         let bin = bin_of(p);
         bin_bounds[bin] = bin_bounds[bin].union(p.bounds);
-        bin_counts[bin] += 1;
+        bin_counts[bin].add(p);
     }
 
     // cost[i]: SAH cost (up to the common factor 1 / area(bounds)) of splitting after bin i.
     let mut cost = [0.0f32; BIN_COUNT - 1];
-    let (mut below, mut below_count) = (Aabb::empty(), 0);
+    let (mut below, mut below_count) = (Aabb::empty(), Tests::default());
     for i in 0..BIN_COUNT - 1 {
         below = below.union(bin_bounds[i]);
-        below_count += bin_counts[i];
-        cost[i] = below_count as f32 * below.surface_area();
+        below_count = below_count.and(bin_counts[i]);
+        cost[i] = below_count.cost() * below.surface_area();
     }
-    let (mut above, mut above_count) = (Aabb::empty(), 0);
+    let (mut above, mut above_count) = (Aabb::empty(), Tests::default());
     for i in (1..BIN_COUNT).rev() {
         above = above.union(bin_bounds[i]);
-        above_count += bin_counts[i];
-        cost[i - 1] += above_count as f32 * above.surface_area();
+        above_count = above_count.and(bin_counts[i]);
+        cost[i - 1] += above_count.cost() * above.surface_area();
     }
     let best_boundary = (0..BIN_COUNT - 1)
         .min_by(|&a, &b| cost[a].total_cmp(&cost[b]))
         .expect("there are BIN_COUNT - 1 boundaries");
 
     let area = bounds.surface_area();
-    let leaf_cost = count as f32 * area;
+    let leaf_cost = primitives
+        .iter()
+        .fold(Tests::default(), |tests, p| tests.and(Tests::of(p)))
+        .cost()
+        * area;
     let split_cost = TRAVERSAL_COST * area + cost[best_boundary];
     let split_pays_off = split_cost < leaf_cost;
     if count <= MAX_PRIMITIVES_PER_LEAF && !split_pays_off {
@@ -207,6 +227,41 @@ fn choose_split(primitives: &mut [BuildPrimitive], bounds: &Aabb, depth: usize) 
         return Some(median_split(primitives, axis));
     }
     Some(Split { mid })
+}
+
+/// How many primitives of each kind a set holds, for the cost of testing them.
+#[derive(Clone, Copy, Debug, Default)]
+struct Tests {
+    /// Primitives tested one by one.
+    single: usize,
+    /// Primitives tested a block of [`LEAF_BLOCK`] at a time.
+    batched: usize,
+}
+
+impl Tests {
+    fn of(p: &BuildPrimitive) -> Self {
+        Self {
+            single: usize::from(!p.batched),
+            batched: usize::from(p.batched),
+        }
+    }
+
+    fn add(&mut self, p: &BuildPrimitive) {
+        *self = self.and(Self::of(p));
+    }
+
+    fn and(self, other: Self) -> Self {
+        Self {
+            single: self.single + other.single,
+            batched: self.batched + other.batched,
+        }
+    }
+
+    /// The cost of the tests, in tests of one primitive: one per single primitive, one per
+    /// block of batched ones.
+    fn cost(self) -> f32 {
+        (self.single + self.batched.div_ceil(LEAF_BLOCK)) as f32
+    }
 }
 
 /// Splits at the median centroid along `axis`: both halves non-empty, whatever the centroids.

@@ -9,7 +9,9 @@
 //!   heuristic, and `wide.rs` collapses that binary tree into nodes of four children.
 //! * [`intersect`](Bvh::intersect) and [`any_hit`](Bvh::any_hit) (in `traverse.rs`) walk the
 //!   tree, testing a node's four boxes at once, with a fixed-size stack: nearest child first
-//!   for the nearest hit, in stored order for a shadow ray.
+//!   for the nearest hit, in stored order for a shadow ray. [`nearest_leaves`](Bvh::nearest_leaves)
+//!   and [`any_leaf`](Bvh::any_leaf) do the same a leaf at a time, for a caller that tests a
+//!   leaf's primitives together ([`build_batched`](Bvh::build_batched) builds its tree).
 
 mod build;
 mod traverse;
@@ -21,12 +23,20 @@ use wide::WideNode;
 /// Leaves hold at most this many primitives.
 pub const MAX_PRIMITIVES_PER_LEAF: usize = 4;
 
+/// Positions per block of [`Bvh::leaf_order`]: each leaf starts a block of its own, so that a
+/// caller can keep one record per leaf (four triangles tested at once, say) and find it as
+/// `first / LEAF_BLOCK`.
+pub const LEAF_BLOCK: usize = MAX_PRIMITIVES_PER_LEAF;
+
+/// What [`Bvh::leaf_order`] holds in the positions of a block after its leaf's primitives.
+pub const EMPTY_SLOT: u32 = u32::MAX;
+
 /// A bounding volume hierarchy over primitives known only by their index and box.
 #[derive(Clone, Debug)]
 pub struct Bvh {
     /// The nodes, the root first; each holds up to four children.
     nodes: Vec<WideNode>,
-    /// Primitive indices, ordered so that every leaf's primitives are one contiguous run.
+    /// Primitive indices in leaf order (see [`leaf_order`](Self::leaf_order)).
     primitive_indices: Vec<u32>,
     /// Number of nodes on the longest path from the root to a leaf.
     depth: usize,
@@ -83,7 +93,9 @@ impl Bvh {
     }
 
     /// The primitives' indices in the order of the leaves: each leaf's primitives are a
-    /// contiguous run. The `*_in_leaf_order` walks name primitives by their position here.
+    /// contiguous run at the start of a block of [`LEAF_BLOCK`] positions, and the rest of
+    /// the block holds [`EMPTY_SLOT`]. The leaf walks ([`nearest_leaves`](Self::nearest_leaves),
+    /// [`any_leaf`](Self::any_leaf)) name a leaf by its block, `position / LEAF_BLOCK`.
     pub fn leaf_order(&self) -> &[u32] {
         &self.primitive_indices
     }

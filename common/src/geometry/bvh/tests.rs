@@ -33,6 +33,14 @@ fn check_subtree(bvh: &Bvh, boxes: &[Aabb], index: usize, bounds: Aabb, depth: u
         match node.child(lane).unwrap() {
             wide::Child::Leaf { first, count } => {
                 assert!((1..=MAX_PRIMITIVES_PER_LEAF as u32).contains(&count));
+                assert_eq!(first as usize % LEAF_BLOCK, 0, "a leaf starts a block");
+                let block_end = (first as usize + LEAF_BLOCK).min(bvh.primitive_indices.len());
+                assert!(
+                    bvh.primitive_indices[(first + count) as usize..block_end]
+                        .iter()
+                        .all(|&slot| slot == EMPTY_SLOT),
+                    "the rest of a leaf's block is empty"
+                );
                 let primitives = &bvh.primitive_indices[first as usize..(first + count) as usize];
                 for &p in primitives {
                     assert!(child_bounds.contains_box(&boxes[p as usize]));
@@ -65,6 +73,16 @@ fn build_and_check(boxes: &[Aabb]) -> Bvh {
         check_subtree(&bvh, boxes, 0, bvh.bounds(), 1)
     };
     held.sort_unstable();
+    let occupied = bvh
+        .leaf_order()
+        .iter()
+        .filter(|&&i| i != EMPTY_SLOT)
+        .count();
+    assert_eq!(
+        occupied,
+        held.len(),
+        "every position outside a leaf is an empty slot"
+    );
     let expected: Vec<u32> = (0..boxes.len() as u32)
         .filter(|&i| !boxes[i as usize].is_empty())
         .collect();
@@ -113,7 +131,7 @@ fn random_boxes_make_a_shallow_tree() {
     // Collapsing into nodes of four keeps the leaves and roughly halves the depth: up to three
     // binary inner nodes fit in one wide node (fewer near the leaves, where a subtree may
     // hold only two or three leaves).
-    let binary = build::BinaryTree::build(&boxes);
+    let binary = build::BinaryTree::build(&boxes, &[]);
     let leaves = |kind: &build::NodeKind| matches!(kind, build::NodeKind::Leaf { .. });
     let binary_inner = binary.nodes.iter().filter(|n| !leaves(&n.kind)).count();
     assert!(
@@ -145,7 +163,13 @@ fn degenerate_inputs_do_not_break_the_build() {
         max: Vec3::ONE,
     };
     let bvh = build_and_check(&[point, Aabb::empty(), nan, flat]);
-    assert_eq!(bvh.primitive_indices.len(), 2);
+    let held: Vec<u32> = bvh
+        .leaf_order()
+        .iter()
+        .copied()
+        .filter(|&i| i != EMPTY_SLOT)
+        .collect();
+    assert_eq!(held.len(), 2);
 }
 
 #[test]

@@ -6,8 +6,8 @@ use std::ops::{ControlFlow, Range};
 use glam::{Vec3, Vec4};
 
 use super::build::MAX_DEPTH;
-use super::wide::WideNode;
-use super::{Bvh, BvhHit};
+use super::wide::{WideNode, slab_sides};
+use super::{Bvh, BvhHit, LEAF_BLOCK};
 use crate::Ray;
 use crate::geometry::float::gamma;
 
@@ -40,36 +40,10 @@ impl Bvh {
         F: FnMut(usize, f32) -> Option<f32>,
     {
         let order = &self.primitive_indices;
-        self.intersect_in_leaf_order(ray, |position, t_max| {
-            hit_primitive(order[position] as usize, t_max)
-        })
-        .map(|hit| BvhHit {
-            primitive: order[hit.primitive] as usize,
-            t: hit.t,
-        })
-    }
-
-    /// Whether `hit_primitive(i)` holds for some primitive whose box the ray passes through
-    /// before `ray.t_max`. Stops at the first one: a shadow ray needs no more.
-    pub fn any_hit<F>(&self, ray: &Ray, mut hit_primitive: F) -> bool
-    where
-        F: FnMut(usize) -> bool,
-    {
-        let order = &self.primitive_indices;
-        self.any_hit_in_leaf_order(ray, |position| hit_primitive(order[position] as usize))
-    }
-
-    /// [`intersect`](Self::intersect) with primitives named by their position in
-    /// [`leaf_order`](Self::leaf_order) rather than by their index, and the hit's `primitive`
-    /// such a position: for a caller that keeps its primitives in that order, so that a leaf's
-    /// primitives lie side by side in memory.
-    pub fn intersect_in_leaf_order<F>(&self, ray: &Ray, mut hit_primitive: F) -> Option<BvhHit>
-    where
-        F: FnMut(usize, f32) -> Option<f32>,
-    {
         let mut nearest = None;
         self.walk::<true, _>(ray, |positions, mut t_max| {
-            for primitive in positions {
+            for &primitive in &order[positions] {
+                let primitive = primitive as usize;
                 if let Some(t) = hit_primitive(primitive, t_max)
                     && t < t_max
                 {
@@ -82,15 +56,51 @@ impl Bvh {
         nearest
     }
 
-    /// [`any_hit`](Self::any_hit) with primitives named by their position in
-    /// [`leaf_order`](Self::leaf_order).
-    pub fn any_hit_in_leaf_order<F>(&self, ray: &Ray, mut hit_primitive: F) -> bool
+    /// Whether `hit_primitive(i)` holds for some primitive whose box the ray passes through
+    /// before `ray.t_max`. Stops at the first one: a shadow ray needs no more.
+    pub fn any_hit<F>(&self, ray: &Ray, mut hit_primitive: F) -> bool
     where
         F: FnMut(usize) -> bool,
     {
+        let order = &self.primitive_indices;
+        self.any_leaf(ray, |leaf, count| {
+            let first = leaf * LEAF_BLOCK;
+            order[first..first + count]
+                .iter()
+                .any(|&primitive| hit_primitive(primitive as usize))
+        })
+    }
+
+    /// [`intersect`](Self::intersect) a leaf at a time, for a caller that keeps a record per
+    /// leaf: `visit_leaf(leaf, count, t_max)` tests the `count` primitives of the leaf whose
+    /// block is `leaf` (see [`leaf_order`](Self::leaf_order)) against the ray limited to
+    /// `t < t_max`, and returns the `t` of the nearest hit among them. The walk goes on with
+    /// that `t` as its `t_max`, so every answer it accepts is nearer than all earlier ones: the
+    /// closure may keep its latest hit, knowing that it is the nearest when the walk ends.
+    /// Answers with `t >= t_max` (or NaN) are ignored.
+    pub fn nearest_leaves<F>(&self, ray: &Ray, mut visit_leaf: F)
+    where
+        F: FnMut(usize, usize, f32) -> Option<f32>,
+    {
+        self.walk::<true, _>(ray, |positions, t_max| {
+            let hit = visit_leaf(positions.start / LEAF_BLOCK, positions.len(), t_max);
+            ControlFlow::Continue(match hit {
+                Some(t) if t < t_max => t,
+                _ => t_max,
+            })
+        });
+    }
+
+    /// [`any_hit`](Self::any_hit) a leaf at a time: whether `hit_leaf(leaf, count)` holds for
+    /// some leaf whose box the ray passes through before `ray.t_max` (`leaf` and `count` as in
+    /// [`nearest_leaves`](Self::nearest_leaves)).
+    pub fn any_leaf<F>(&self, ray: &Ray, mut hit_leaf: F) -> bool
+    where
+        F: FnMut(usize, usize) -> bool,
+    {
         let mut found = false;
-        self.walk::<false, _>(ray, |mut positions, t_max| {
-            if positions.any(&mut hit_primitive) {
+        self.walk::<false, _>(ray, |positions, t_max| {
+            if hit_leaf(positions.start / LEAF_BLOCK, positions.len()) {
                 found = true;
                 ControlFlow::Break(())
             } else {
@@ -214,10 +224,12 @@ struct WideRay {
     origin: [Vec4; 3],
     /// `1 / dir`, componentwise; `±∞` where `dir` is `±0`.
     inv_dir: [Vec4; 3],
-    /// Whether the ray travels towards smaller coordinates on each axis (then a box's `max`
-    /// is its near side). Decided from the sign of `1 / dir`, so `dir = -0` counts as
-    /// negative, matching `inv_dir = -∞`.
-    negative: [bool; 3],
+    /// Where in a node's `slabs` each axis's near side is: a box's `max` where the ray travels
+    /// towards smaller coordinates, decided from the sign of `1 / dir`, so that `dir = -0`
+    /// counts as negative, matching `inv_dir = -∞`.
+    near: [usize; 3],
+    /// Where each axis's far side is.
+    far: [usize; 3],
     /// Whether no slab computation can give NaN: the origin is finite and every `1 / dir`
     /// finite and not zero. Then `(x - o) · (1 / dir)` is a number or `±∞` for every `x`,
     /// even the `±∞` of an empty lane, and the walk skips the NaN checks (nearly every ray).
@@ -227,10 +239,12 @@ struct WideRay {
 impl WideRay {
     fn new(ray: &Ray) -> Self {
         let inv_dir = ray.dir.recip();
+        let (near, far) = slab_sides(inv_dir.to_array().map(|d| d < 0.0));
         Self {
             origin: ray.origin.to_array().map(Vec4::splat),
             inv_dir: inv_dir.to_array().map(Vec4::splat),
-            negative: inv_dir.to_array().map(|d| d < 0.0),
+            near,
+            far,
             nan_free: ray.origin.is_finite()
                 && inv_dir.is_finite()
                 && inv_dir.cmpne(Vec3::ZERO).all(),
@@ -253,11 +267,7 @@ impl WideNode {
         let mut t_enter = Vec4::ZERO;
         let mut t_exit = Vec4::splat(t_max);
         for axis in 0..3 {
-            let (near, far) = if ray.negative[axis] {
-                (self.max[axis], self.min[axis])
-            } else {
-                (self.min[axis], self.max[axis])
-            };
+            let (near, far) = (self.slabs[ray.near[axis]], self.slabs[ray.far[axis]]);
             let t_near = (near - ray.origin[axis]) * ray.inv_dir[axis];
             let t_far = (far - ray.origin[axis]) * ray.inv_dir[axis] * EXIT_SLACK;
             let (t_near, t_far) = if ray.nan_free {

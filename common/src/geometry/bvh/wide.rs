@@ -24,15 +24,25 @@ pub const WIDTH: usize = 4;
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(align(64))]
 pub(super) struct WideNode {
-    /// The children's lower corners, axis by axis: `min[axis]` holds lane `i`'s `min[axis]`.
-    pub min: [Vec4; 3],
-    /// The children's upper corners, axis by axis.
-    pub max: [Vec4; 3],
+    /// The children's boxes, side by side: `slabs[axis]` holds each lane's `min[axis]` and
+    /// `slabs[3 + axis]` its `max[axis]`. One array, so that a walk picks a ray's near and far
+    /// side of each axis by index ([`slab_sides`]) instead of by a branch at every node.
+    pub slabs: [Vec4; 6],
     /// For each lane: the child node's index if `count` is 0, or the first of its primitives
     /// in `primitive_indices` if it is a leaf.
     pub child: [u32; WIDTH],
     /// For each lane: how many primitives the leaf holds; 0 for an inner node or no child.
     pub count: [u8; WIDTH],
+}
+
+/// Where in [`WideNode::slabs`] a ray meets each axis's slab first and last: `(min, max)`
+/// for a ray travelling towards larger coordinates, `(max, min)` otherwise.
+pub(super) fn slab_sides(negative: [bool; 3]) -> ([usize; 3], [usize; 3]) {
+    let side = |axis: usize, upper: bool| axis + if upper { 3 } else { 0 };
+    (
+        std::array::from_fn(|axis| side(axis, negative[axis])),
+        std::array::from_fn(|axis| side(axis, !negative[axis])),
+    )
 }
 
 /// What sits in one lane of a node.
@@ -46,8 +56,14 @@ pub(super) enum Child {
 
 impl WideNode {
     const EMPTY: WideNode = WideNode {
-        min: [Vec4::INFINITY; 3],
-        max: [Vec4::NEG_INFINITY; 3],
+        slabs: [
+            Vec4::INFINITY,
+            Vec4::INFINITY,
+            Vec4::INFINITY,
+            Vec4::NEG_INFINITY,
+            Vec4::NEG_INFINITY,
+            Vec4::NEG_INFINITY,
+        ],
         child: [u32::MAX; WIDTH],
         count: [0; WIDTH],
     };
@@ -69,15 +85,15 @@ impl WideNode {
     #[cfg(test)]
     pub fn bounds(&self, lane: usize) -> Aabb {
         Aabb {
-            min: glam::Vec3::new(self.min[0][lane], self.min[1][lane], self.min[2][lane]),
-            max: glam::Vec3::new(self.max[0][lane], self.max[1][lane], self.max[2][lane]),
+            min: glam::Vec3::from_array(std::array::from_fn(|axis| self.slabs[axis][lane])),
+            max: glam::Vec3::from_array(std::array::from_fn(|axis| self.slabs[3 + axis][lane])),
         }
     }
 
     fn set(&mut self, lane: usize, bounds: Aabb, child: Child) {
         for axis in 0..3 {
-            self.min[axis][lane] = bounds.min[axis];
-            self.max[axis][lane] = bounds.max[axis];
+            self.slabs[axis][lane] = bounds.min[axis];
+            self.slabs[3 + axis][lane] = bounds.max[axis];
         }
         (self.child[lane], self.count[lane]) = match child {
             Child::Node(index) => (index, 0),

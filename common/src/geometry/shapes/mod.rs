@@ -7,6 +7,7 @@
 mod bumpy_sphere;
 mod disc;
 mod dp_du;
+mod four_triangles;
 mod mesh;
 mod parallelogram;
 mod plane;
@@ -14,11 +15,12 @@ mod sphere;
 mod triangle;
 
 pub use disc::Disc;
+pub(crate) use four_triangles::{FourTriangles, LANES as TRIANGLE_LANES};
 pub use mesh::{MeshError, TriangleMesh};
 pub use parallelogram::Parallelogram;
 pub use sphere::Sphere;
+pub(crate) use triangle::RaySpace;
 pub use triangle::Triangle;
-pub(crate) use triangle::{Corners, RaySpace};
 
 use crate::Ray;
 use crate::geometry::aabb::Aabb;

@@ -1,8 +1,9 @@
 //! The triangle, with the watertight ray–triangle test of Woop, Benthin and Wald (2013).
 
-use glam::{Vec2, Vec3, Vec3A};
+use glam::{Vec2, Vec3};
 
 use super::Crossing;
+use super::four_triangles::FourTriangles;
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
 use crate::geometry::float::gamma;
@@ -114,36 +115,11 @@ impl Triangle {
         }
     }
 
-    /// The watertight test of [`RaySpace`].
+    /// The watertight test of [`RaySpace`], in the first of four lanes.
     fn crossing(&self, ray: &Ray) -> Option<Crossing> {
-        RaySpace::new(ray)?.crossing(&Corners::new(&self.p), ray.t_max)
-    }
-}
-
-/// A triangle's three vertices stored axis by axis: `by_axis[0]` holds the three `x`s,
-/// `by_axis[1]` the `y`s, `by_axis[2]` the `z`s.
-///
-/// The watertight test renames the axes for every ray; stored this way, the vertices'
-/// coordinates along one renamed axis are one load, and the test transforms all three
-/// vertices at once, lane by lane, instead of gathering nine coordinates one at a time.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Corners {
-    by_axis: [Vec3; 3],
-}
-
-impl Corners {
-    /// The corners of triangle `p`.
-    pub(crate) fn new(p: &[Vec3; 3]) -> Self {
-        let [p0, p1, p2] = *p;
-        Self {
-            by_axis: [0, 1, 2].map(|axis| Vec3::new(p0[axis], p1[axis], p2[axis])),
-        }
-    }
-
-    /// The three vertices' coordinates along `axis`, one vertex per lane.
-    #[inline]
-    fn along(&self, axis: usize) -> Vec3A {
-        Vec3A::from(self.by_axis[axis])
+        let space = RaySpace::new(ray)?;
+        let (_, crossing) = space.nearest_crossing(&FourTriangles::new(&[self.p]), 1, ray.t_max)?;
+        Some(crossing)
     }
 }
 
@@ -163,19 +139,20 @@ impl Corners {
 ///
 /// The test is split at what depends on the ray alone, which is this coordinate system: which
 /// axis becomes z and the shear that turns the direction into `(0, 0, 1)`. A walk through a
-/// mesh works it out once per ray and tests every triangle it meets with
-/// [`crossing`](Self::crossing), which takes the vertices alone, axis by axis ([`Corners`]:
-/// the walk keeps them apart from the rest of a triangle). A triangle without area must be
-/// left out before (it is never hit).
+/// mesh works it out once per ray and tests the triangles of each leaf it meets four at a time
+/// ([`nearest_crossing`](Self::nearest_crossing) and [`any_crossing`](Self::any_crossing), in
+/// `four_triangles.rs`), from their vertices alone ([`FourTriangles`]: the walk keeps them apart
+/// from the rest of a triangle). A triangle without area must be left out before (it is never
+/// hit).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RaySpace {
     /// The ray's origin, its axes renamed: `origin.x` is its coordinate along `axes[0]`.
-    origin: Vec3,
+    pub(super) origin: Vec3,
     /// The axes that become x, y and z.
-    axes: [usize; 3],
-    shear_x: f32,
-    shear_y: f32,
-    scale_z: f32,
+    pub(super) axes: [usize; 3],
+    pub(super) shear_x: f32,
+    pub(super) shear_y: f32,
+    pub(super) scale_z: f32,
 }
 
 impl RaySpace {
@@ -201,83 +178,6 @@ impl RaySpace {
             scale_z: 1.0 / d.z,
         })
     }
-
-    /// Where the ray crosses the triangle with corners `corners` at some `0 < t < t_max`, if
-    /// it certainly does.
-    #[inline]
-    pub(crate) fn crossing(&self, corners: &Corners, t_max: f32) -> Option<Crossing> {
-        let [kx, ky, kz] = self.axes;
-        // Lane i of each is vertex i: translated and permuted (`x`, `y`, `depth`), then
-        // sheared and scaled (`p_x`, `p_y`, `p_z`); the depths before scaling are kept for
-        // the error bound of the shear below. Each lane rounds as a vertex on its own would.
-        let x = corners.along(kx) - Vec3A::splat(self.origin.x);
-        let y = corners.along(ky) - Vec3A::splat(self.origin.y);
-        let depth = corners.along(kz) - Vec3A::splat(self.origin.z);
-        let p_x = x + self.shear_x * depth;
-        let p_y = y + self.shear_y * depth;
-        let p_z = depth * self.scale_z;
-        let vertex = |i: usize| Vec2::new(p_x[i], p_y[i]);
-        let [p0, p1, p2] = [vertex(0), vertex(1), vertex(2)];
-
-        let e = [
-            edge_function(p1, p2),
-            edge_function(p2, p0),
-            edge_function(p0, p1),
-        ];
-        let any_negative = e.iter().any(|&e| e < 0.0);
-        let any_positive = e.iter().any(|&e| e > 0.0);
-        if any_negative && any_positive {
-            return None;
-        }
-        let det = e[0] + e[1] + e[2];
-        if det == 0.0 {
-            return None;
-        }
-
-        // t = (Σ e_i z_i) / det, but compared before dividing to avoid the division on misses.
-        let t_scaled = e[0] * p_z.x + e[1] * p_z.y + e[2] * p_z.z;
-        let t_max_scaled = t_max * det;
-        let out_of_range = if det < 0.0 {
-            t_scaled >= 0.0 || t_scaled < t_max_scaled
-        } else {
-            t_scaled <= 0.0 || t_scaled > t_max_scaled
-        };
-        if out_of_range {
-            return None;
-        }
-        let inv_det = 1.0 / det;
-        let b = e.map(|e| e * inv_det);
-        let t = t_scaled * inv_det;
-
-        // Accept t only if it is positive beyond its rounding error (pbrt-v4, section 6.8.7).
-        let max_z = p_z.abs().max_element();
-        let max_x = p_x.abs().max_element();
-        let max_y = p_y.abs().max_element();
-        let delta_z = gamma(3) * max_z;
-        // The shear `x + shear_x z` rounds relative to the depth *before* scaling (|shear| <= 1).
-        // pbrt-v4 uses the scaled depth, which is the same for a unit direction, but far too
-        // large for a short one (a ray taken into the space of an object scaled up 1e5 times
-        // has a direction 1e-5 long, and every hit was rejected) and too small for a long one.
-        let max_depth = depth.abs().max_element();
-        let delta_x = gamma(5) * (max_x + max_depth);
-        let delta_y = gamma(5) * (max_y + max_depth);
-        let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-        let max_e = e[0].abs().max(e[1].abs()).max(e[2].abs());
-        let delta_t =
-            3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
-        let certainly_in_range = delta_t < t && t < t_max; // false for NaN too
-        if !certainly_in_range {
-            return None;
-        }
-        Some(Crossing { t, coords: b })
-    }
-}
-
-/// `a.x b.y - a.y b.x`: twice the signed area of the 2D triangle `(0, 0), a, b`.
-///
-/// Computed in `f64`, where the two products are exact, so the result has the exact sign.
-fn edge_function(a: Vec2, b: Vec2) -> f32 {
-    (f64::from(a.x) * f64::from(b.y) - f64::from(a.y) * f64::from(b.x)) as f32
 }
 
 #[cfg(test)]
@@ -437,22 +337,6 @@ mod tests {
         let midway = Ray::new(Vec3::new(0.5, 0.0, 2.0), -Vec3::Z);
         let hit = cancelling.intersect(&midway).unwrap();
         assert!(hit.shading_n.is_finite() && hit.shading_n.is_normalized());
-    }
-
-    #[test]
-    fn corners_hold_each_axis_of_the_three_vertices_in_order() {
-        let p = [
-            Vec3::new(1.0, 2.0, 3.0),
-            Vec3::new(4.0, 5.0, 6.0),
-            Vec3::new(7.0, 8.0, 9.0),
-        ];
-        let corners = Corners::new(&p);
-        for axis in 0..3 {
-            let lanes = corners.along(axis);
-            for (vertex, point) in p.iter().enumerate() {
-                assert_eq!(lanes[vertex], point[axis], "vertex {vertex}, axis {axis}");
-            }
-        }
     }
 
     #[test]

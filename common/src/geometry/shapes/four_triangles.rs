@@ -1,0 +1,347 @@
+//! Four triangles tested against one ray at once: the watertight test of [`RaySpace`] with a
+//! triangle in each SIMD lane.
+//!
+//! A BVH leaf of a mesh holds up to four triangles, and a ray misses nearly all of the
+//! triangles it is tested against. Tested one by one, each miss costs a pass through the test's
+//! branches; side by side, the four share every instruction up to the first question that
+//! rules a lane out, and the test ends for all four when none is left. Each lane computes
+//! exactly what the one-triangle test computes, operation by operation, so a leaf's answer is
+//! bit for bit the answer of testing its triangles in order.
+
+use glam::{Vec3, Vec4};
+
+use super::Crossing;
+use super::triangle::RaySpace;
+use crate::geometry::float::gamma;
+
+/// Lanes: triangles side by side.
+pub(crate) const LANES: usize = 4;
+
+/// Up to four triangles' vertices, stored so that one SIMD register holds the same coordinate
+/// of the same vertex of all four: `corners[v][axis]` is lane `i`'s vertex `v` along `axis`.
+///
+/// Lanes beyond the triangles hold zeros; the tests are told how many lanes count.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct FourTriangles {
+    corners: [[Vec4; 3]; 3],
+}
+
+impl FourTriangles {
+    /// The triangles `triangles` (at most four; their vertices `p0 p1 p2`) in lanes `0, 1, ...`.
+    pub(crate) fn new(triangles: &[[Vec3; 3]]) -> Self {
+        assert!(triangles.len() <= LANES, "at most four triangles");
+        let mut corners = [[Vec4::ZERO; 3]; 3];
+        for (lane, p) in triangles.iter().enumerate() {
+            for (vertex, point) in p.iter().enumerate() {
+                for axis in 0..3 {
+                    corners[vertex][axis][lane] = point[axis];
+                }
+            }
+        }
+        Self { corners }
+    }
+}
+
+/// What a ray's test of four triangles leaves to decide lane by lane: the quantities that do
+/// not depend on `t_max`, for the lanes that may still hold a crossing.
+struct LaneCrossings {
+    /// Bit `i` for lane `i`: the ray passes inside its edges, and its crossing is in front of
+    /// the origin and before the `t_max` the test was given.
+    candidates: u32,
+    /// The edge functions `e0, e1, e2`, lane by lane.
+    e: [[f32; LANES]; 3],
+    /// Their sum, the determinant.
+    det: [f32; LANES],
+    /// `t` times the determinant, before dividing.
+    t_scaled: [f32; LANES],
+    /// The ray parameter of the crossing.
+    t: [f32; LANES],
+    /// The bound on the error of `t`.
+    delta_t: [f32; LANES],
+    /// `1 / det`.
+    inv_det: [f32; LANES],
+}
+
+impl LaneCrossings {
+    /// Whether lane `lane`'s crossing is certainly at `0 < t < t_max`. The first test was
+    /// given a `t_max` at least this large, so only its comparisons with `t_max` are redone.
+    #[inline]
+    fn in_range(&self, lane: usize, t_max: f32) -> bool {
+        let (t_scaled, det, t) = (self.t_scaled[lane], self.det[lane], self.t[lane]);
+        !out_of_range(t_scaled, det, t_max) && self.delta_t[lane] < t && t < t_max
+    }
+
+    /// Lane `lane`'s crossing.
+    fn crossing(&self, lane: usize) -> Crossing {
+        let inv_det = self.inv_det[lane];
+        Crossing {
+            t: self.t[lane],
+            coords: self.e.map(|e| e[lane] * inv_det),
+        }
+    }
+}
+
+/// Whether `t = t_scaled / det` is outside `(0, t_max]`, decided before dividing (for a lane
+/// whose `t_scaled` and `det` are not NaN; a NaN one is ruled out later, by its `t`).
+#[inline]
+fn out_of_range(t_scaled: f32, det: f32, t_max: f32) -> bool {
+    let t_max_scaled = t_max * det;
+    if det < 0.0 {
+        t_scaled >= 0.0 || t_scaled < t_max_scaled
+    } else {
+        t_scaled <= 0.0 || t_scaled > t_max_scaled
+    }
+}
+
+impl RaySpace {
+    /// The nearest crossing at `0 < t < t_max` among the first `count` lanes of `triangles`,
+    /// with its lane: the one testing them in lane order would keep, each hit shrinking
+    /// `t_max` (so of two crossings at the same `t`, the first lane's).
+    #[inline]
+    pub(crate) fn nearest_crossing(
+        &self,
+        triangles: &FourTriangles,
+        count: usize,
+        mut t_max: f32,
+    ) -> Option<(usize, Crossing)> {
+        let lanes = self.lane_crossings(triangles, count, t_max)?;
+        let mut nearest = None;
+        let mut candidates = lanes.candidates;
+        while candidates != 0 {
+            let lane = candidates.trailing_zeros() as usize;
+            candidates &= candidates - 1;
+            if lanes.in_range(lane, t_max) {
+                t_max = lanes.t[lane];
+                nearest = Some(lane);
+            }
+        }
+        nearest.map(|lane| (lane, lanes.crossing(lane)))
+    }
+
+    /// Whether the ray crosses any of the first `count` lanes of `triangles` at
+    /// `0 < t < t_max`.
+    #[inline]
+    pub(crate) fn any_crossing(&self, triangles: &FourTriangles, count: usize, t_max: f32) -> bool {
+        self.lane_crossings(triangles, count, t_max)
+            .is_some_and(|lanes| {
+                (0..LANES)
+                    .any(|lane| lanes.candidates & (1 << lane) != 0 && lanes.in_range(lane, t_max))
+            })
+    }
+
+    /// The test of [`RaySpace`] in four lanes, up to what depends on `t_max`; none if no lane
+    /// of the first `count` can hold a crossing before `t_max`.
+    ///
+    /// The vertices are moved into the ray's space (translated, axes renamed, sheared), and
+    /// the three edge functions decide whether `(0, 0)` is inside the projected triangle. Each
+    /// edge function is a difference of two products evaluated in `f64`, where the products
+    /// of `f32`s are exact: so its sign is exact, and two triangles sharing an edge see
+    /// exactly opposite values and cannot both reject a ray through it (watertightness).
+    #[inline(always)]
+    fn lane_crossings(
+        &self,
+        triangles: &FourTriangles,
+        count: usize,
+        t_max: f32,
+    ) -> Option<LaneCrossings> {
+        let [kx, ky, kz] = self.axes;
+        // Vertex v of every lane: translated and permuted (`x`, `y`, `depth`), then sheared
+        // and scaled (`p_x`, `p_y`, `p_z`); the depths before scaling are kept for the error
+        // bound of the shear below.
+        let corners = &triangles.corners;
+        let x: [Vec4; 3] = std::array::from_fn(|v| corners[v][kx] - Vec4::splat(self.origin.x));
+        let y: [Vec4; 3] = std::array::from_fn(|v| corners[v][ky] - Vec4::splat(self.origin.y));
+        let depth: [Vec4; 3] = std::array::from_fn(|v| corners[v][kz] - Vec4::splat(self.origin.z));
+        let p_x: [Vec4; 3] = std::array::from_fn(|v| x[v] + self.shear_x * depth[v]);
+        let p_y: [Vec4; 3] = std::array::from_fn(|v| y[v] + self.shear_y * depth[v]);
+        let p_z = depth.map(|d| d * self.scale_z);
+
+        let edge = |a: usize, b: usize| edge_functions(p_x[a], p_y[a], p_x[b], p_y[b]);
+        let e = [edge(1, 2), edge(2, 0), edge(0, 1)];
+        let any_negative = e[0].cmplt(Vec4::ZERO) | e[1].cmplt(Vec4::ZERO) | e[2].cmplt(Vec4::ZERO);
+        let any_positive = e[0].cmpgt(Vec4::ZERO) | e[1].cmpgt(Vec4::ZERO) | e[2].cmpgt(Vec4::ZERO);
+        let det = e[0] + e[1] + e[2];
+        let inside = !(any_negative & any_positive).bitmask() & det.cmpne(Vec4::ZERO).bitmask();
+        let mut candidates = inside & ((1 << count) - 1);
+        if candidates == 0 {
+            return None;
+        }
+
+        // t = (Σ e_i z_i) / det, but compared before dividing to avoid the division on misses.
+        let t_scaled = e[0] * p_z[0] + e[1] * p_z[1] + e[2] * p_z[2];
+        let (t_scaled_lanes, det_lanes) = (t_scaled.to_array(), det.to_array());
+        for lane in 0..LANES {
+            if candidates & (1 << lane) != 0
+                && out_of_range(t_scaled_lanes[lane], det_lanes[lane], t_max)
+            {
+                candidates &= !(1 << lane);
+            }
+        }
+        if candidates == 0 {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        let t = t_scaled * inv_det;
+
+        // Accept t only if it is positive beyond its rounding error (pbrt-v4, section 6.8.7).
+        let largest = |v: [Vec4; 3]| v[0].abs().max(v[1].abs()).max(v[2].abs());
+        let max_z = largest(p_z);
+        let max_x = largest(p_x);
+        let max_y = largest(p_y);
+        let delta_z = gamma(3) * max_z;
+        // The shear `x + shear_x z` rounds relative to the depth *before* scaling (|shear| <= 1).
+        // pbrt-v4 uses the scaled depth, which is the same for a unit direction, but far too
+        // large for a short one (a ray taken into the space of an object scaled up 1e5 times
+        // has a direction 1e-5 long, and every hit was rejected) and too small for a long one.
+        let max_depth = largest(depth);
+        let delta_x = gamma(5) * (max_x + max_depth);
+        let delta_y = gamma(5) * (max_y + max_depth);
+        let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        let max_e = largest(e);
+        let delta_t =
+            3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
+        Some(LaneCrossings {
+            candidates,
+            e: e.map(|e| e.to_array()),
+            det: det_lanes,
+            t_scaled: t_scaled_lanes,
+            t: t.to_array(),
+            delta_t: delta_t.to_array(),
+            inv_det: inv_det.to_array(),
+        })
+    }
+}
+
+/// `a.x b.y - a.y b.x` in each lane: twice the signed area of the 2D triangle `(0, 0), a, b`.
+///
+/// Computed in `f64`, where the two products are exact, so each result has the exact sign.
+#[inline]
+fn edge_functions(a_x: Vec4, a_y: Vec4, b_x: Vec4, b_y: Vec4) -> Vec4 {
+    let exact = |a: f32, b: f32| f64::from(a) * f64::from(b);
+    let [a_x, a_y, b_x, b_y] = [a_x, a_y, b_x, b_y].map(|v| v.to_array());
+    Vec4::from_array(std::array::from_fn(|lane| {
+        (exact(a_x[lane], b_y[lane]) - exact(a_y[lane], b_x[lane])) as f32
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use rand::{RngExt, SeedableRng};
+    use rand_pcg::Pcg32;
+
+    use super::*;
+    use crate::Ray;
+    use crate::geometry::Triangle;
+
+    /// Triangles around the origin, small enough that rays through the unit cube often miss
+    /// them and large enough that they often hit, with shared vertices (fans) among them.
+    fn random_triangles(rng: &mut Pcg32) -> [[Vec3; 3]; 4] {
+        let mut point = || Vec3::new(rng.random(), rng.random(), rng.random()) * 2.0 - 1.0;
+        let shared = point();
+        let (a, b) = (point(), point());
+        [
+            [shared, a, b],
+            [shared, b, point()],
+            [point(), point(), point()],
+            [a, point(), shared],
+        ]
+    }
+
+    fn random_ray(rng: &mut Pcg32) -> Ray {
+        let mut point = || Vec3::new(rng.random(), rng.random(), rng.random()) * 4.0 - 2.0;
+        let (origin, target) = (point(), point() * 0.25);
+        Ray {
+            t_max: rng.random_range(0.5..2.0),
+            ..Ray::new(origin, target - origin)
+        }
+    }
+
+    /// The answer of testing the first `count` triangles one by one in order, each hit
+    /// shrinking `t_max`.
+    fn one_by_one(triangles: &[[Vec3; 3]], count: usize, ray: &Ray) -> Option<(usize, Crossing)> {
+        let mut t_max = ray.t_max;
+        let mut nearest = None;
+        for (lane, p) in triangles[..count].iter().enumerate() {
+            let triangle = Triangle::new(p[0], p[1], p[2]);
+            if let Some(crossing) = triangle.checked_crossing(&Ray { t_max, ..*ray }) {
+                t_max = crossing.t;
+                nearest = Some((lane, crossing));
+            }
+        }
+        nearest
+    }
+
+    #[test]
+    fn four_lanes_answer_as_the_triangles_tested_one_by_one_in_order() {
+        let mut rng = Pcg32::seed_from_u64(7);
+        let (mut hits, mut several) = (0, 0);
+        for _ in 0..20_000 {
+            let triangles = random_triangles(&mut rng);
+            let ray = random_ray(&mut rng);
+            let space = RaySpace::new(&ray).expect("a non-zero direction");
+            let four = FourTriangles::new(&triangles);
+            for count in 1..=LANES {
+                let expected = one_by_one(&triangles, count, &ray);
+                assert_eq!(
+                    space.nearest_crossing(&four, count, ray.t_max),
+                    expected,
+                    "{count} lanes of {triangles:?}, {ray:?}"
+                );
+                assert_eq!(
+                    space.any_crossing(&four, count, ray.t_max),
+                    expected.is_some(),
+                    "{count} lanes of {triangles:?}, {ray:?}"
+                );
+            }
+            hits += usize::from(one_by_one(&triangles, LANES, &ray).is_some());
+            let crossed = (0..LANES)
+                .filter(|&lane| one_by_one(&triangles[lane..], 1, &ray).is_some())
+                .count();
+            several += usize::from(crossed > 1);
+        }
+        // The comparison means something only if rays hit, and often more than one lane.
+        assert!(
+            hits > 2_000 && several > 500,
+            "{hits} hits, {several} with several"
+        );
+    }
+
+    #[test]
+    fn lanes_beyond_the_count_are_never_hit() {
+        let near = [
+            Vec3::new(-1.0, -1.0, 1.0),
+            Vec3::new(1.0, -1.0, 1.0),
+            Vec3::new(0.0, 1.0, 1.0),
+        ];
+        let far = near.map(|p| p - Vec3::Z);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, 5.0), -Vec3::Z);
+        let space = RaySpace::new(&ray).unwrap();
+        let four = FourTriangles::new(&[far, far, far, near]);
+        let (lane, crossing) = space.nearest_crossing(&four, 3, ray.t_max).unwrap();
+        assert_eq!(
+            (lane, crossing.t),
+            (0, 5.0),
+            "the nearest of the first three"
+        );
+        assert_eq!(space.nearest_crossing(&four, 4, ray.t_max).unwrap().0, 3);
+        let only_near = FourTriangles::new(&[far, near]);
+        assert!(
+            !space.any_crossing(&only_near, 1, 5.0),
+            "lane 0 is at t = 5, not before"
+        );
+        assert!(space.any_crossing(&only_near, 2, 5.0));
+    }
+
+    #[test]
+    fn of_two_crossings_at_the_same_t_the_first_lane_is_kept() {
+        let triangle = [
+            Vec3::new(-1.0, -1.0, 0.0),
+            Vec3::new(1.0, -1.0, 0.0),
+            Vec3::new(0.0, 1.0, 0.0),
+        ];
+        let ray = Ray::new(Vec3::new(0.1, 0.0, 2.0), -Vec3::Z);
+        let space = RaySpace::new(&ray).unwrap();
+        let four = FourTriangles::new(&[triangle, triangle, triangle]);
+        assert_eq!(space.nearest_crossing(&four, 3, ray.t_max).unwrap().0, 0);
+    }
+}
