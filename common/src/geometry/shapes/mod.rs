@@ -9,6 +9,7 @@ mod disc;
 mod dp_du;
 mod four_triangles;
 mod mesh;
+mod mesh_split;
 mod parallelogram;
 mod plane;
 mod sphere;
