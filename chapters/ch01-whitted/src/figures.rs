@@ -472,28 +472,32 @@ fn bvh_cost(out: &Path, level: Level) -> anyhow::Result<()> {
 
     let mut csv = String::from(
         "mesh,triangles,build_seconds,bytes_per_triangle,nanoseconds_per_ray,\
-         rays_per_second_1_thread,rays_per_second_2_threads,hit_fraction\n",
+         rays_per_second_1_thread,rays_per_second_2_threads,hit_fraction,nodes_per_ray,\
+         leaves_per_ray\n",
     );
     let mut table = String::from(
-        "| mesh | triangles | build | bytes per triangle | per ray, 1 thread | rays per second, 1 thread | 2 threads |\n\
-         |---|---:|---:|---:|---:|---:|---:|\n",
+        "| mesh | triangles | build | bytes per triangle | nodes per ray | per ray, 1 thread | rays per second, 1 thread | 2 threads |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for (mesh, c) in &costs {
         csv += &format!(
-            "{mesh},{},{:.6e},{:.1},{:.1},{:.0},{:.0},{:.4}\n",
+            "{mesh},{},{:.6e},{:.1},{:.1},{:.0},{:.0},{:.4},{:.3},{:.3}\n",
             c.triangles,
             c.build_seconds,
             c.bytes_per_triangle,
             c.nanoseconds_per_ray,
             c.rays_per_second[0],
             c.rays_per_second[1],
-            c.hit_fraction
+            c.hit_fraction,
+            c.nodes_per_ray,
+            c.leaves_per_ray
         );
         table += &format!(
-            "| {mesh} | {} | {:.2} ms | {:.0} | {:.0} ns | {:.2} M | {:.2} M |\n",
+            "| {mesh} | {} | {:.2} ms | {:.0} | {:.1} | {:.0} ns | {:.2} M | {:.2} M |\n",
             c.triangles,
             1e3 * c.build_seconds,
             c.bytes_per_triangle,
+            c.nodes_per_ray,
             c.nanoseconds_per_ray,
             c.rays_per_second[0] / 1e6,
             c.rays_per_second[1] / 1e6
@@ -537,6 +541,29 @@ fn bvh_cost(out: &Path, level: Level) -> anyhow::Result<()> {
             ),
         ],
     )?;
+    // The walk's steps on a logarithmic count axis: `a + b log n` is a straight line there.
+    let steps = |mesh: &str| of_mesh(mesh, &|c| c.nodes_per_ray);
+    line_plot(
+        &out.join("bvh-steps.png"),
+        "Nodes a ray is tested against",
+        &Axes {
+            log_y: false,
+            ..Axes::log_log("triangles", "nodes per ray")
+        },
+        &[
+            Series::new(
+                "bumpy sphere",
+                steps("bumpy sphere"),
+                SeriesStyle::LineAndPoints,
+            ),
+            Series::new("Spot", steps("Spot"), SeriesStyle::LineAndPoints),
+            Series::new(
+                "a + b log n, fitted",
+                fitted_log_line(&steps("bumpy sphere")),
+                SeriesStyle::Dashed,
+            ),
+        ],
+    )?;
     let per_ray = |mesh: &str, threads: usize| of_mesh(mesh, &|c| 1e9 / c.rays_per_second[threads]);
     line_plot(
         &out.join("bvh-trace.png"),
@@ -573,9 +600,47 @@ fn bvh_cost(out: &Path, level: Level) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The least-squares line `y = a + b log n` through `points` (`(n, y)`), at their `n`s.
+fn fitted_log_line(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let count = points.len() as f64;
+    let x: Vec<f64> = points.iter().map(|&(n, _)| n.ln()).collect();
+    let mean_x = x.iter().sum::<f64>() / count;
+    let mean_y = points.iter().map(|&(_, y)| y).sum::<f64>() / count;
+    let covariance: f64 = x
+        .iter()
+        .zip(points)
+        .map(|(x, &(_, y))| (x - mean_x) * (y - mean_y))
+        .sum();
+    let variance: f64 = x.iter().map(|x| (x - mean_x).powi(2)).sum();
+    let slope = if variance > 0.0 {
+        covariance / variance
+    } else {
+        0.0
+    };
+    points
+        .iter()
+        .zip(&x)
+        .map(|(&(n, _), x)| (n, mean_y + slope * (x - mean_x)))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_fitted_line_goes_through_points_on_a_log_line() {
+        let on_line: Vec<(f64, f64)> = [1e3, 1e4, 1e5, 1e6]
+            .iter()
+            .map(|&n: &f64| (n, 2.0 + 0.5 * n.ln()))
+            .collect();
+        for ((n, y), (fitted_n, fitted_y)) in on_line.iter().zip(fitted_log_line(&on_line)) {
+            assert_eq!(*n, fitted_n);
+            assert!((y - fitted_y).abs() < 1e-9, "{y} against {fitted_y}");
+        }
+        let flat = fitted_log_line(&[(10.0, 3.0), (10.0, 5.0)]);
+        assert!(flat.iter().all(|&(_, y)| y == 4.0), "{flat:?}");
+    }
 
     #[test]
     fn the_built_in_spot_is_the_whole_closed_model() {

@@ -3,8 +3,9 @@
 //! A BVH promises a build in `O(n log n)` (the SAH sorts primitives into bins at every level
 //! of a tree `log n` deep) and a walk in `O(log n)` per ray for rays that meet the surface
 //! (a path down the tree, and a few leaves around the hit). [`measure_bvh_cost`] measures the
-//! three numbers a user of a mesh feels, for one mesh, so that a figure can plot them against
-//! the triangle count beside those slopes.
+//! three numbers a user of a mesh feels, for one mesh, and counts the walk's steps, so that a
+//! figure can plot them against the triangle count beside those slopes: the count shows the
+//! structure's promise, the time what the machine's caches make of it.
 
 use std::time::Instant;
 
@@ -13,7 +14,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
 
-use super::{Geometry, Shape, TriangleMesh};
+use super::{Geometry, Shape, TriangleMesh, WalkCount};
 use crate::Ray;
 
 /// The measured cost of one mesh's geometry.
@@ -31,6 +32,11 @@ pub struct BvhCost {
     pub rays_per_second: [f64; 2],
     /// The fraction of the rays that hit the mesh.
     pub hit_fraction: f64,
+    /// BVH nodes a ray is tested against, on average: the walk's steps, which the structure
+    /// promises to grow as `log n` whatever the machine.
+    pub nodes_per_ray: f64,
+    /// Leaves a ray opens, on average.
+    pub leaves_per_ray: f64,
 }
 
 /// Measures `mesh` with `ray_count` rays from a sphere around it, aimed at random points of its
@@ -76,6 +82,13 @@ pub fn measure_bvh_cost(mesh: &TriangleMesh, ray_count: usize, seed: u64) -> Bvh
         best_parallel = best_parallel.min(started.elapsed().as_secs_f64());
         assert_eq!(parallel_hits, hits, "the same rays hit the same triangles");
     }
+    let counted = rays.iter().fold(WalkCount::default(), |sum, ray| {
+        let (_, count) = geometry.intersect_counted(ray);
+        WalkCount {
+            nodes: sum.nodes + count.nodes,
+            leaves: sum.leaves + count.leaves,
+        }
+    });
     BvhCost {
         triangles: mesh.indices.len(),
         build_seconds,
@@ -83,6 +96,8 @@ pub fn measure_bvh_cost(mesh: &TriangleMesh, ray_count: usize, seed: u64) -> Bvh
         nanoseconds_per_ray: 1e9 * best / rays.len() as f64,
         rays_per_second: [rays.len() as f64 / best, rays.len() as f64 / best_parallel],
         hit_fraction: hits as f64 / rays.len() as f64,
+        nodes_per_ray: counted.nodes as f64 / rays.len() as f64,
+        leaves_per_ray: counted.leaves as f64 / rays.len() as f64,
     }
 }
 
@@ -108,4 +123,43 @@ fn rays_at(geometry: &Geometry, count: usize, seed: u64) -> Vec<Ray> {
             Ray::new(origin, (target - origin).normalize())
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ray_walks_about_log_n_nodes() {
+        let small = measure_bvh_cost(&TriangleMesh::bumpy_sphere(1_000), 2_000, 1);
+        let large = measure_bvh_cost(&TriangleMesh::bumpy_sphere(64_000), 2_000, 1);
+        // Nodes of four: 64 times the triangles is three more levels. A walk that grew with
+        // n (a list, or a tree whose boxes all overlap) would take about 64 times the steps.
+        let more_steps = large.nodes_per_ray - small.nodes_per_ray;
+        assert!(
+            (1.0..6.0).contains(&more_steps),
+            "{} nodes per ray at 1k triangles, {} at 64k",
+            small.nodes_per_ray,
+            large.nodes_per_ray
+        );
+        // And few steps at all: a tree of nodes of four is about log4(n) levels deep, and a
+        // ray walks about one path down it (a tree built badly, one triangle split off at a
+        // time, walks three times as many).
+        for cost in [small, large] {
+            let levels = (cost.triangles as f64).log(4.0);
+            assert!(
+                cost.nodes_per_ray < 2.0 * levels,
+                "{} nodes per ray at {} triangles, about {levels:.1} levels",
+                cost.nodes_per_ray,
+                cost.triangles
+            );
+        }
+        // A ray that meets the surface opens a few leaves around its hit, at any size.
+        assert!(small.leaves_per_ray < 4.0 && large.leaves_per_ray < 4.0);
+        assert!(
+            (0.5..1.0).contains(&small.hit_fraction),
+            "{}",
+            small.hit_fraction
+        );
+    }
 }

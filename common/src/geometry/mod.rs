@@ -41,6 +41,6 @@ pub use bvh::{Bvh, BvhHit, EMPTY_SLOT, LEAF_BLOCK, MAX_PRIMITIVES_PER_LEAF};
 pub use cost::{BvhCost, measure_bvh_cost};
 pub use float::{MACHINE_EPSILON, gamma, next_float_down, next_float_up};
 pub use hit::SurfaceHit;
-pub use scene_geometry::Geometry;
+pub use scene_geometry::{Geometry, WalkCount};
 pub use shapes::{Crossing, Disc, MeshError, Parallelogram, Shape, Sphere, Triangle, TriangleMesh};
 pub use spawn::{SHADOW_EPSILON, offset_ray_origin};

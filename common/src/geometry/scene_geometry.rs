@@ -25,6 +25,15 @@ pub struct Geometry {
     has_triangles: bool,
 }
 
+/// What one nearest-hit query cost the structure ([`Geometry::intersect_counted`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WalkCount {
+    /// BVH nodes the ray was tested against (each four boxes at once).
+    pub nodes: usize,
+    /// Leaves whose shapes were tested.
+    pub leaves: usize,
+}
+
 /// The shapes of one leaf, as the walk of the BVH tests them.
 #[derive(Clone, Copy, Debug)]
 enum LeafTest {
@@ -108,11 +117,20 @@ impl Geometry {
 
     /// The nearest hit with `0 < t < ray.t_max`; its `shape` is an index into
     /// [`shapes`](Self::shapes).
+    #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        self.intersect_counted(ray).0
+    }
+
+    /// [`intersect`](Self::intersect), and what the query cost the structure: for measuring
+    /// how the work grows with the scene ([`measure_bvh_cost`](super::measure_bvh_cost)).
+    pub fn intersect_counted(&self, ray: &Ray) -> (Option<SurfaceHit>, WalkCount) {
         // Every closer crossing replaces the last; the record is built for the nearest only.
         let mut nearest: Option<(u32, Crossing)> = None;
+        let mut leaves = 0;
         let space = self.ray_space(ray);
-        self.bvh.nearest_leaves(ray, |leaf, count, t_max| {
+        let nodes = self.bvh.nearest_leaves(ray, |leaf, count, t_max| {
+            leaves += 1;
             let (shape, crossing) = match &self.leaves[leaf] {
                 LeafTest::Triangles(triangles) => {
                     let (lane, crossing) =
@@ -126,11 +144,11 @@ impl Geometry {
             nearest = Some((shape, crossing));
             Some(crossing.t)
         });
-        let (shape, crossing) = nearest?;
-        Some(SurfaceHit {
+        let hit = nearest.map(|(shape, crossing)| SurfaceHit {
             shape,
             ..self.shapes[shape as usize].surface_hit(crossing)
-        })
+        });
+        (hit, WalkCount { nodes, leaves })
     }
 
     /// The nearest crossing of the ray limited to `t < t_max` with one of `shapes`, tested in

@@ -78,7 +78,10 @@ impl Bvh {
     /// that `t` as its `t_max`, so every answer it accepts is nearer than all earlier ones: the
     /// closure may keep its latest hit, knowing that it is the nearest when the walk ends.
     /// Answers with `t >= t_max` (or NaN) are ignored.
-    pub fn nearest_leaves<F>(&self, ray: &Ray, mut visit_leaf: F)
+    ///
+    /// Returns how many nodes the walk tested the ray against: the structure's share of the
+    /// work, which measurements count (a renderer ignores it).
+    pub fn nearest_leaves<F>(&self, ray: &Ray, mut visit_leaf: F) -> usize
     where
         F: FnMut(usize, usize, f32) -> Option<f32>,
     {
@@ -88,7 +91,7 @@ impl Bvh {
                 Some(t) if t < t_max => t,
                 _ => t_max,
             })
-        });
+        })
     }
 
     /// [`any_hit`](Self::any_hit) a leaf at a time: whether `hit_leaf(leaf, count)` holds for
@@ -125,7 +128,9 @@ impl Bvh {
     /// A shadow ray's `t_max` never shrinks and its first hit ends the walk, so nothing is
     /// gained by sorting: without `NEAREST_FIRST` the children wait in the order their node
     /// stores them, which saves the comparisons and the mispredicted branches of the sort.
-    fn walk<const NEAREST_FIRST: bool, F>(&self, ray: &Ray, visit_leaf: F)
+    ///
+    /// Returns how many nodes it tested the ray against.
+    fn walk<const NEAREST_FIRST: bool, F>(&self, ray: &Ray, visit_leaf: F) -> usize
     where
         F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
@@ -134,13 +139,13 @@ impl Bvh {
         // few stores.
         let needed = stack_needed(self.depth);
         if needed <= TINY_STACK {
-            self.walk_with_stack::<TINY_STACK, NEAREST_FIRST, F>(ray, visit_leaf);
+            self.walk_with_stack::<TINY_STACK, NEAREST_FIRST, F>(ray, visit_leaf)
         } else if needed <= SHALLOW_STACK {
-            self.walk_with_stack::<SHALLOW_STACK, NEAREST_FIRST, F>(ray, visit_leaf);
+            self.walk_with_stack::<SHALLOW_STACK, NEAREST_FIRST, F>(ray, visit_leaf)
         } else if needed <= MEDIUM_STACK {
-            self.walk_with_stack::<MEDIUM_STACK, NEAREST_FIRST, F>(ray, visit_leaf);
+            self.walk_with_stack::<MEDIUM_STACK, NEAREST_FIRST, F>(ray, visit_leaf)
         } else {
-            self.walk_with_stack::<{ stack_needed(MAX_DEPTH) }, NEAREST_FIRST, F>(ray, visit_leaf);
+            self.walk_with_stack::<{ stack_needed(MAX_DEPTH) }, NEAREST_FIRST, F>(ray, visit_leaf)
         }
     }
 
@@ -150,15 +155,17 @@ impl Bvh {
         &self,
         ray: &Ray,
         mut visit_leaf: F,
-    ) where
+    ) -> usize
+    where
         F: FnMut(Range<usize>, f32) -> ControlFlow<(), f32>,
     {
         debug_assert!(stack_needed(self.depth) <= STACK);
         let mut t_max = ray.t_max;
         // A NaN `t_max` reaches nothing (and would make every comparison below false).
         if self.nodes.is_empty() || t_max.is_nan() {
-            return;
+            return 0;
         }
+        let mut nodes_tested = 0;
         let slabs = WideRay::new(ray);
         // A lane: a node's index and 0, or a leaf's first primitive and count.
         let mut deferred = [(0u32, 0u32, 0.0f32); STACK];
@@ -167,6 +174,7 @@ impl Bvh {
         loop {
             let (index, count) = current;
             if count == 0 {
+                nodes_tested += 1;
                 let node = &self.nodes[index as usize];
                 let (entered, t_enter) = node.entries(&slabs, t_max);
                 if entered.is_power_of_two() {
@@ -200,13 +208,13 @@ impl Bvh {
             } else {
                 match visit_leaf(index as usize..(index + count) as usize, t_max) {
                     ControlFlow::Continue(new_t_max) => t_max = new_t_max,
-                    ControlFlow::Break(()) => return,
+                    ControlFlow::Break(()) => return nodes_tested,
                 }
             }
             // The latest deferred child that the ray still reaches.
             loop {
                 if deferred_count == 0 {
-                    return;
+                    return nodes_tested;
                 }
                 deferred_count -= 1;
                 let (child, child_count, t_enter) = deferred[deferred_count];
