@@ -22,7 +22,8 @@ use crate::Ray;
 pub struct BvhCost {
     /// Triangles in the mesh.
     pub triangles: usize,
-    /// Seconds to build the geometry (boxes, BVH, the walk's layout), the best of a few builds.
+    /// Seconds to build the geometry (boxes, BVH, the walk's layout), the best of a few builds
+    /// (of one, for a build of a second or more).
     pub build_seconds: f64,
     /// Bytes of the geometry (shapes, BVH nodes, the walk's layout) per triangle.
     pub bytes_per_triangle: f64,
@@ -32,23 +33,28 @@ pub struct BvhCost {
     pub rays_per_second: [f64; 2],
     /// The fraction of the rays that hit the mesh.
     pub hit_fraction: f64,
-    /// BVH nodes a ray is tested against, on average: the walk's steps, which the structure
-    /// promises to grow as `log n` whatever the machine.
+    /// BVH nodes a ray is tested against, on average over the first [`COUNTED_RAYS`] rays:
+    /// the walk's steps, which the structure promises to grow as `log n` whatever the machine.
     pub nodes_per_ray: f64,
-    /// Leaves a ray opens, on average.
+    /// Leaves a ray opens, on average over the same rays.
     pub leaves_per_ray: f64,
 }
+
+/// The rays whose walks are counted: enough for a mean known to a few hundredths of a node.
+pub const COUNTED_RAYS: usize = 20_000;
 
 /// Measures `mesh` with `ray_count` rays from a sphere around it, aimed at random points of its
 /// box (the same rays for a seed, whatever the mesh's size).
 pub fn measure_bvh_cost(mesh: &TriangleMesh, ray_count: usize, seed: u64) -> BvhCost {
     let shapes = || -> Vec<Shape> { mesh.triangles().map(Shape::from).collect() };
     // Builds of small meshes take microseconds: repeat them for a tenth of a second at least.
+    // The best of three otherwise, but no more repeats once a second is spent: a build that
+    // long (a million triangles) is long beside the noise it would average out.
     let mut build_seconds = f64::INFINITY;
     let mut spent = 0.0;
     let mut builds = 0;
     let mut geometry = Geometry::default();
-    while builds < 3 || (spent < 0.1 && builds < 1000) {
+    while builds == 0 || (builds < 3 && spent < 1.0) || (spent < 0.1 && builds < 1000) {
         let shapes = shapes();
         let started = Instant::now();
         geometry = Geometry::new(shapes);
@@ -82,7 +88,9 @@ pub fn measure_bvh_cost(mesh: &TriangleMesh, ray_count: usize, seed: u64) -> Bvh
         best_parallel = best_parallel.min(started.elapsed().as_secs_f64());
         assert_eq!(parallel_hits, hits, "the same rays hit the same triangles");
     }
-    let counted = rays.iter().fold(WalkCount::default(), |sum, ray| {
+    // The steps are counted, not timed: a mean over the first rays is as good as over all.
+    let counted_rays = &rays[..rays.len().min(COUNTED_RAYS)];
+    let counted = counted_rays.iter().fold(WalkCount::default(), |sum, ray| {
         let (_, count) = geometry.intersect_counted(ray);
         WalkCount {
             nodes: sum.nodes + count.nodes,
@@ -96,8 +104,8 @@ pub fn measure_bvh_cost(mesh: &TriangleMesh, ray_count: usize, seed: u64) -> Bvh
         nanoseconds_per_ray: 1e9 * best / rays.len() as f64,
         rays_per_second: [rays.len() as f64 / best, rays.len() as f64 / best_parallel],
         hit_fraction: hits as f64 / rays.len() as f64,
-        nodes_per_ray: counted.nodes as f64 / rays.len() as f64,
-        leaves_per_ray: counted.leaves as f64 / rays.len() as f64,
+        nodes_per_ray: counted.nodes as f64 / counted_rays.len() as f64,
+        leaves_per_ray: counted.leaves as f64 / counted_rays.len() as f64,
     }
 }
 

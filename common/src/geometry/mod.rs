@@ -38,7 +38,7 @@ mod tests;
 
 pub use aabb::{Aabb, SMALLEST_BOUND, SlabRay};
 pub use bvh::{Bvh, BvhHit, EMPTY_SLOT, LEAF_BLOCK, MAX_PRIMITIVES_PER_LEAF};
-pub use cost::{BvhCost, measure_bvh_cost};
+pub use cost::{BvhCost, COUNTED_RAYS, measure_bvh_cost};
 pub use float::{MACHINE_EPSILON, gamma, next_float_down, next_float_up};
 pub use hit::SurfaceHit;
 pub use scene_geometry::{Geometry, WalkCount};
