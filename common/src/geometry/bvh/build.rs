@@ -205,16 +205,14 @@ fn choose_split(primitives: &mut [BuildPrimitive], bounds: &Aabb, depth: usize) 
         above_count = above_count.and(bin_counts[i]);
         cost[i - 1] += above_count.cost() * above.surface_area();
     }
+    // Every primitive is in one bin: the set below the last boundary and the last bin.
+    let all = below_count.and(bin_counts[BIN_COUNT - 1]);
     let best_boundary = (0..BIN_COUNT - 1)
         .min_by(|&a, &b| cost[a].total_cmp(&cost[b]))
         .expect("there are BIN_COUNT - 1 boundaries");
 
     let area = bounds.surface_area();
-    let leaf_cost = primitives
-        .iter()
-        .fold(Tests::default(), |tests, p| tests.and(Tests::of(p)))
-        .cost()
-        * area;
+    let leaf_cost = all.cost() * area;
     let split_cost = TRAVERSAL_COST * area + cost[best_boundary];
     let split_pays_off = split_cost < leaf_cost;
     if count <= MAX_PRIMITIVES_PER_LEAF && !split_pays_off {
@@ -239,15 +237,12 @@ struct Tests {
 }
 
 impl Tests {
-    fn of(p: &BuildPrimitive) -> Self {
-        Self {
-            single: usize::from(!p.batched),
-            batched: usize::from(p.batched),
-        }
-    }
-
     fn add(&mut self, p: &BuildPrimitive) {
-        *self = self.and(Self::of(p));
+        if p.batched {
+            self.batched += 1;
+        } else {
+            self.single += 1;
+        }
     }
 
     fn and(self, other: Self) -> Self {
