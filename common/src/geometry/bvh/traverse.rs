@@ -41,17 +41,20 @@ impl Bvh {
     {
         let order = &self.primitive_indices;
         let mut nearest = None;
-        self.walk::<true, _>(ray, |positions, mut t_max| {
-            for &primitive in &order[positions] {
+        self.nearest_leaves(ray, |leaf, count, mut t_max| {
+            let first = leaf * LEAF_BLOCK;
+            let mut leaf_hit = None;
+            for &primitive in &order[first..first + count] {
                 let primitive = primitive as usize;
                 if let Some(t) = hit_primitive(primitive, t_max)
                     && t < t_max
                 {
                     t_max = t;
+                    leaf_hit = Some(t);
                     nearest = Some(BvhHit { primitive, t });
                 }
             }
-            ControlFlow::Continue(t_max)
+            leaf_hit
         });
         nearest
     }
