@@ -648,12 +648,7 @@ mod tests {
         assert_eq!((spot.positions.len(), spot.indices.len()), (2_930, 5_856));
         // Closed: every edge lies between exactly two triangles, so rays from outside meet
         // its surface as they would meet a solid.
-        let mut uses = std::collections::HashMap::new();
-        for &[a, b, c] in &spot.indices {
-            for (p, q) in [(a, b), (b, c), (c, a)] {
-                *uses.entry((p.min(q), p.max(q))).or_insert(0) += 1;
-            }
-        }
+        let uses = common::test_support::mesh_files::edge_uses(&spot);
         assert!(uses.values().all(|&count| count == 2));
     }
 

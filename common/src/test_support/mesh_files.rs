@@ -1,6 +1,8 @@
 //! Writers of PLY and `.serialized` meshes, for tests: the readers are checked against files
-//! these write from known meshes, and chapters' tests render scenes that use them.
+//! these write from known meshes, and chapters' tests render scenes that use them. And
+//! [`edge_uses`], for tests that ask whether a mesh is closed.
 
+use std::collections::HashMap;
 use std::io::Write;
 
 use flate2::Compression;
@@ -291,4 +293,16 @@ pub fn serialized_file(payloads: &[Vec<u8>], version: u16) -> Vec<u8> {
     }
     bytes.extend((payloads.len() as u32).to_le_bytes());
     bytes
+}
+
+/// How many triangles of `mesh` use each of its edges, in either direction; an edge is named
+/// by its two vertex indices, the smaller first. A closed mesh uses every edge exactly twice.
+pub fn edge_uses(mesh: &TriangleMesh) -> HashMap<(u32, u32), usize> {
+    let mut uses = HashMap::new();
+    for &[a, b, c] in &mesh.indices {
+        for (p, q) in [(a, b), (b, c), (c, a)] {
+            *uses.entry((p.min(q), p.max(q))).or_insert(0) += 1;
+        }
+    }
+    uses
 }

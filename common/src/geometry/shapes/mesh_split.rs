@@ -55,11 +55,10 @@ impl TriangleMesh {
 
 #[cfg(test)]
 mod tests {
-    use std::collections::HashMap;
-
     use glam::Vec3;
 
     use super::*;
+    use crate::test_support::mesh_files::edge_uses;
 
     /// The eight faces of the octahedron with corners on the unit axes, wound outward.
     fn octahedron() -> TriangleMesh {
@@ -75,17 +74,6 @@ mod tests {
             [0, 3, 5],
         ];
         TriangleMesh::new(positions, None, indices).unwrap()
-    }
-
-    /// How many triangles use each edge, in either direction.
-    fn edge_uses(mesh: &TriangleMesh) -> HashMap<(u32, u32), usize> {
-        let mut uses = HashMap::new();
-        for &[a, b, c] in &mesh.indices {
-            for (p, q) in [(a, b), (b, c), (c, a)] {
-                *uses.entry((p.min(q), p.max(q))).or_insert(0) += 1;
-            }
-        }
-        uses
     }
 
     fn area(mesh: &TriangleMesh) -> f32 {
