@@ -49,7 +49,7 @@ pub fn run(
     let student_dir = target_dir.join("student");
     let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
     if wrong_answers_only {
-        let mut trial = Trial::new(root, &student_dir, exercises)?;
+        let mut trial = Trial::new(root, &student_dir)?;
         return prove_wrong_answers(&mut trial, &chosen);
     }
     let edition = student_dir.join("edition");
@@ -73,9 +73,8 @@ pub fn run(
     );
     let mut surprises = Vec::new();
     let all: Vec<&Exercise> = chosen.iter().collect();
-    let every_package = packages_checked(exercises);
-    let stubs = run_checks(&all, &every_package, &edition, Some(&edition_build))?;
-    let solutions = run_checks(&all, &every_package, root, None)?;
+    let stubs = run_checks(&all, &edition, Some(&edition_build))?;
+    let solutions = run_checks(&all, root, None)?;
     for ((exercise, stub), solution) in chosen.iter().zip(stubs).zip(solutions) {
         println!(
             "{:<28} {:<28} {:<28}",
@@ -212,14 +211,12 @@ struct Trial<'a> {
     copy: PathBuf,
     build: EditionBuild,
     changed: Vec<PathBuf>,
-    /// Every package with checks, all tested in each round (see [`run_checks`]).
-    packages: Vec<String>,
 }
 
 impl<'a> Trial<'a> {
     /// Writes a fresh copy of the workspace, every solution in place: for checking the wrong
     /// answers alone, without the student edition.
-    fn new(root: &'a Path, student_dir: &Path, exercises: &[Exercise]) -> Result<Self> {
+    fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
         let copy = student_dir.join("trials");
         student_edition::write_copy(root, &copy)?;
         write_config(&copy, TRIALS_CONFIG)?;
@@ -232,7 +229,6 @@ impl<'a> Trial<'a> {
                 incremental: true,
             },
             changed: Vec::new(),
-            packages: packages_checked(exercises),
         })
     }
 
@@ -259,7 +255,6 @@ impl<'a> Trial<'a> {
             copy: edition,
             build,
             changed,
-            packages: packages_checked(exercises),
         }
     }
 
@@ -283,9 +278,11 @@ impl<'a> Trial<'a> {
         Ok(())
     }
 
-    /// Runs `exercise`'s check in the copy as it now stands.
+    /// Runs `exercise`'s check in the copy as it now stands (as [`run_checks`] runs it, so
+    /// that nothing is compiled with other features).
     fn check(&self, exercise: &Exercise) -> Result<Outcome> {
-        run_check(&exercise.check, &self.copy, Some(&self.build))
+        let mut outcomes = run_checks(&[exercise], &self.copy, Some(&self.build))?;
+        Ok(outcomes.remove(0))
     }
 
     /// Puts the `answers` in and runs each one's check.
@@ -299,7 +296,7 @@ impl<'a> Trial<'a> {
             .collect();
         self.put_in(&splices)?;
         let exercises: Vec<&Exercise> = answers.iter().map(|(exercise, _)| *exercise).collect();
-        let outcomes = run_checks(&exercises, &self.packages, &self.copy, Some(&self.build))?;
+        let outcomes = run_checks(&exercises, &self.copy, Some(&self.build))?;
         Ok(answers
             .iter()
             .zip(outcomes)
@@ -384,7 +381,7 @@ fn prove_in_order<'e>(
         }
         trial.put_in(&stubs)?;
         let to_run: Vec<&Exercise> = checks.iter().map(|(_, exercise)| *exercise).collect();
-        let outcomes = run_checks(&to_run, &trial.packages, &trial.copy, Some(&trial.build))?;
+        let outcomes = run_checks(&to_run, &trial.copy, Some(&trial.build))?;
         for ((chapter, exercise), outcome) in checks.into_iter().zip(outcomes) {
             let later = chapter.len() - solved;
             if outcome.passed {
@@ -541,6 +538,7 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
     for package in packages {
         args.extend(["-p", package]);
     }
+    args.extend(AS_THE_WORKSPACE_TESTS.split(' '));
     println!(
         "Compiling it: cargo {} (target dir {})",
         args.join(" "),
@@ -582,17 +580,15 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
 /// Checks of the usual form (`cargo test -p PACKAGE --lib exercise_...`) are run together: an
 /// exercise's check passes when every test its filter picks passed, and its output is what
 /// those tests printed. That is what its own command would report, at the cost of one cargo
-/// run, which compiles the packages side by side. In a copy (`build` given) that run always
-/// tests `every_package`, even those without a check this time: the dev-dependencies of the
-/// packages tested decide the features of their dependencies, and a run over fewer packages
-/// could compile `common` and every chapter again with other features. In the workspace it
+/// run, which compiles the packages side by side. In a copy (`build` given) that run tests the
+/// packages with a check this time, with [`AS_THE_WORKSPACE_TESTS`], so a round that changed
+/// one chapter rebuilds that chapter and not the ones that depend on it. In the workspace it
 /// tests what the README's test command tests ([`WORKSPACE_SELECTION`]), which has compiled it
 /// all before (in CI, the step before). If that run compiled nothing (one package's code
 /// does not build), each package is run on its own, so one package's error is not blamed on
 /// the others. Other checks run as they are.
 fn run_checks(
     exercises: &[&Exercise],
-    every_package: &[String],
     dir: &Path,
     build: Option<&EditionBuild>,
 ) -> Result<Vec<Outcome>> {
@@ -607,34 +603,40 @@ fn run_checks(
     }
     let mut runs: Vec<(&str, Outcome)> = Vec::new();
     if !packages.is_empty() {
-        let every_package: Vec<&str> = every_package.iter().map(String::as_str).collect();
         let selection = match build {
             // The workspace itself: built as the README's test command builds it, so that the
             // run compiles nothing that command compiled (fewer packages or features would
             // unify their dependencies' features otherwise, and compile `common` and every
             // chapter again). Only the exercises' tests run, whatever the packages.
             None => WORKSPACE_SELECTION.to_owned(),
-            Some(_) => every_package
-                .iter()
-                .map(|p| format!("-p {p}"))
-                .collect::<Vec<_>>()
-                .join(" "),
+            Some(_) => {
+                packages
+                    .iter()
+                    .map(|p| format!("-p {p} "))
+                    .collect::<String>()
+                    + AS_THE_WORKSPACE_TESTS
+            }
         };
         let command = format!(
             "cargo test --no-fail-fast {selection} --lib {} 2>&1",
             progress::CHECK_PREFIX
         );
         let joint = run_check(&command, dir, build)?;
-        if let Some(sections) = package_sections(&joint.output, &every_package) {
-            runs = sections
-                .into_iter()
-                .filter(|(package, _)| packages.contains(package))
-                .collect();
+        if let Some(sections) = package_sections(&joint.output, &packages) {
+            runs = sections;
         }
     }
     if runs.is_empty() {
         for &package in &packages {
-            let command = format!("cargo test -p {package} --lib {}", progress::CHECK_PREFIX);
+            let also = if build.is_some() {
+                AS_THE_WORKSPACE_TESTS
+            } else {
+                ""
+            };
+            let command = format!(
+                "cargo test -p {package} {also} --lib {}",
+                progress::CHECK_PREFIX
+            );
             runs.push((package, run_check(&command, dir, build)?));
         }
     }
@@ -691,18 +693,15 @@ fn run_checks(
 /// --all-features`), with which the checks run on the workspace.
 const WORKSPACE_SELECTION: &str = "--workspace --all-features";
 
-/// The packages of the exercises whose checks have the usual form, in the list's order.
-fn packages_checked(exercises: &[Exercise]) -> Vec<String> {
-    let mut packages: Vec<String> = Vec::new();
-    for exercise in exercises {
-        if let Some((package, _)) = progress::standard_check(&exercise.check)
-            && !packages.iter().any(|p| p == package)
-        {
-            packages.push(package.to_owned());
-        }
-    }
-    packages
-}
+/// Added to the chapters that a build of the student edition or of a trial copy selects, so
+/// that their dependencies are compiled with the features the README's test command gave
+/// them, and are shared with its build instead of compiled once more (cargo unifies a
+/// dependency's features over the packages selected), whichever chapters are selected: `book`
+/// depends on every chapter and on the site's crates, and `--all-features` turns on its
+/// browser; it has no library, so `--lib` compiles nothing of it. (The chapters' own
+/// dev-dependencies add no features to what `book` asks for; were that to change, a round
+/// would compile more, not check less.)
+const AS_THE_WORKSPACE_TESTS: &str = "-p book --all-features";
 
 /// Splits the output of one `cargo test` run over several packages' libraries (stdout and
 /// stderr as one stream) into each package's part: from the line where cargo starts its test
