@@ -11,7 +11,9 @@
 //! as the second render's, and if its noise is no worse, so is its RMSE. The stored images make
 //! the check repeatable without the other renderer installed: tests and the book use them.
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use glam::{DVec3, Vec3};
 use serde::{Deserialize, Serialize};
@@ -260,6 +262,22 @@ impl AgreementScene {
 /// A chapter's render of one scene file at [`AGREEMENT_SPP`] samples per pixel.
 pub type RenderSceneFile = fn(&Path) -> Result<Image, String>;
 
+/// `render` of `file`, made once per process: a chapter's render of a file draws the same
+/// numbers every time, so a test run that both checks the chapter's agreement and writes its
+/// figures, which show the same renders, waits for one render of each scene instead of making
+/// two.
+fn rendered_once(file: &Path, render: RenderSceneFile) -> Result<Image, String> {
+    type Slot = Arc<OnceLock<Result<Image, String>>>;
+    static RENDERS: Mutex<BTreeMap<(PathBuf, usize), Slot>> = Mutex::new(BTreeMap::new());
+    let slot = RENDERS
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .entry((file.to_path_buf(), render as usize))
+        .or_default()
+        .clone();
+    slot.get_or_init(|| render(file)).clone()
+}
+
 /// A chapter's agreement set: the scene files it checks against Mitsuba 3, where they are, and
 /// the chapter's render of one of them. The tests, the book's figures and the refresh with
 /// Mitsuba all start from it.
@@ -298,7 +316,7 @@ impl AgreementSet {
     ) -> Result<(Image, ReferenceRenders, Agreement), String> {
         let renders = ReferenceRenders::load(&self.stored_renders_dir(), scene.name)
             .map_err(|e| e.to_string())?;
-        let ours = (self.render)(&self.file(scene))?;
+        let ours = rendered_once(&self.file(scene), self.render)?;
         let agreement = renders.agreement(&ours);
         Ok((ours, renders, agreement))
     }
