@@ -581,8 +581,8 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
 /// exercise's check passes when every test its filter picks passed, and its output is what
 /// those tests printed. That is what its own command would report, at the cost of one cargo
 /// run, which compiles the packages side by side. In a copy (`build` given) that run tests the
-/// packages with a check this time, with [`AS_THE_WORKSPACE_TESTS`], so a round that changed
-/// one chapter rebuilds that chapter and not the ones that depend on it. In the workspace it
+/// packages with a check this time, with [`AS_THE_WORKSPACE_TESTS`], so a round rebuilds the
+/// chapters it tests, not every chapter that depends on one it changed. In the workspace it
 /// tests what the README's test command tests ([`WORKSPACE_SELECTION`]), which has compiled it
 /// all before (in CI, the step before). If that run compiled nothing (one package's code
 /// does not build), each package is run on its own, so one package's error is not blamed on
