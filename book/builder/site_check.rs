@@ -311,6 +311,14 @@ struct PageFacts {
     ids: Vec<String>,
     katex_errors: Vec<KatexError>,
     raw_tex: Vec<String>,
+    /// The size of the whole page, in CSS pixels, for its screenshot.
+    size: PageSize,
+}
+
+#[derive(Debug, Deserialize, Clone, Copy)]
+struct PageSize {
+    width: f64,
+    height: f64,
 }
 
 #[derive(Debug, Deserialize)]
@@ -332,8 +340,14 @@ struct KatexError {
     message: String,
 }
 
-/// Runs in the page once it has loaded. It waits for every image to finish loading or fail,
-/// then reports the images, links, ids, KaTeX errors and left-over TeX, as JSON.
+/// Runs in the page just opened. It first waits for the page to have loaded: the document that
+/// was open before carries a mark, and the new one must report `complete` (its stylesheets and
+/// scripts loaded or failed). While the old document is still there, or the new one is still
+/// loading after a quarter of a second, it answers an empty string and [`open`] asks again;
+/// an answer that is cut short because the old document goes away is asked again too. Then it
+/// waits for every image to finish loading or fail, and reports the images, links, ids, KaTeX
+/// errors, left-over TeX and the page's size, as JSON. One call does all of it because each
+/// call to the browser costs the driver about a tenth of a second.
 ///
 /// A formula KaTeX could not typeset shows in one of two ways: with mdbook-katex's default
 /// `throw_on_error`, the formula stays in the page as its source, `$...$` with the dollars
@@ -341,6 +355,14 @@ struct KatexError {
 /// class `katex-error`. Left-over TeX is looked for in the text of each paragraph, list item,
 /// cell or heading, outside code, scripts and typeset formulas.
 const PROBE: &str = r#"(async () => {
+  const ready = () => window.checkSiteLeaving === undefined && document.readyState === 'complete';
+  if (!ready()) {
+    await new Promise(done => {
+      window.addEventListener('load', done, { once: true });
+      setTimeout(done, 250);
+    });
+    if (!ready()) return '';
+  }
   const images = Array.from(document.images);
   for (const img of images) { if (img.loading === 'lazy') img.loading = 'eager'; }
   await Promise.all(images.map(img => img.complete ? null : new Promise(done => {
@@ -381,6 +403,10 @@ const PROBE: &str = r#"(async () => {
       message: el.getAttribute('title') || '',
     })),
     rawTex,
+    size: {
+      width: document.documentElement.scrollWidth,
+      height: document.documentElement.scrollHeight,
+    },
   });
 })()"#;
 
@@ -518,8 +544,12 @@ pub fn run(options: &Options) -> Result<Outcome> {
         let url = file_url(&site.join(page));
         let page_started = Instant::now();
         let page_facts = open(&tab, &url).with_context(|| format!("cannot check {page}"))?;
-        // Events arrive on another thread; give the last ones time to be recorded.
-        std::thread::sleep(Duration::from_millis(100));
+        let shot = options.screenshots.join(screenshot_name(page));
+        screenshot(&tab, &shot, page_facts.size)
+            .with_context(|| format!("cannot take a screenshot of {page}"))?;
+        // Events arrive on another thread. Those of the page's loading came before the
+        // probe's answer, and the screenshot's round trip since has given them time to be
+        // recorded.
         let messages = std::mem::take(&mut events.lock().expect("events lock").messages);
         let problem = |what: String| Problem {
             page: page.clone(),
@@ -554,8 +584,6 @@ pub fn run(options: &Options) -> Result<Outcome> {
                 "a formula left as TeX source (KaTeX could not typeset it): {tex}"
             )));
         }
-        let shot = options.screenshots.join(screenshot_name(page));
-        screenshot(&tab, &shot).with_context(|| format!("cannot take a screenshot of {page}"))?;
         println!(
             "  {page}: {} image(s), {} link(s), {} id(s), in {:.1} s with its screenshot",
             page_facts.images.len(),
@@ -660,36 +688,32 @@ fn file_url(path: &Path) -> String {
     url
 }
 
-/// Loads a page and runs the probe on it.
-///
-/// The page has loaded when the document that was open before is gone (it carried a mark) and
-/// the new one reports `complete`: its images, stylesheets and scripts have loaded or failed.
+/// Loads a page and runs the probe on it, once the page has loaded (the probe says when).
 fn open(tab: &Tab, url: &str) -> Result<PageFacts> {
     tab.evaluate("window.checkSiteLeaving = true", false)?;
     tab.navigate_to(url)?;
     let started = Instant::now();
-    let ready = "window.checkSiteLeaving === undefined && document.readyState === 'complete'";
-    // While the new page replaces the old one, evaluating may fail: that is "not yet".
-    while !tab
-        .evaluate(ready, false)
-        .is_ok_and(|answer| answer.value == Some(serde_json::Value::Bool(true)))
-    {
+    loop {
+        // While the new page replaces the old one, evaluating may fail: that is "not yet".
+        if let Ok(result) = tab.evaluate(PROBE, true) {
+            match result.value {
+                Some(serde_json::Value::String(json)) if json.is_empty() => {}
+                Some(serde_json::Value::String(json)) => {
+                    return serde_json::from_str(&json)
+                        .context("the page's probe returned a report that cannot be read");
+                }
+                _ => bail!("the page's probe returned no report: {result:?}"),
+            }
+        }
         if started.elapsed() > TIMEOUT {
             bail!("the page did not finish loading in {} s", TIMEOUT.as_secs());
         }
-        std::thread::sleep(Duration::from_millis(20));
     }
-    let result = tab.evaluate(PROBE, true)?;
-    let Some(serde_json::Value::String(json)) = result.value else {
-        bail!("the page's probe returned no report: {result:?}");
-    };
-    serde_json::from_str(&json).context("the page's probe returned a report that cannot be read")
 }
 
-/// A PNG of the whole page (up to [`MAX_SCREENSHOT_HEIGHT`]), written to `file`.
-fn screenshot(tab: &Tab, file: &Path) -> Result<()> {
-    let metrics = tab.call_method(Page::GetLayoutMetrics(None))?;
-    let size = metrics.css_content_size;
+/// A PNG of the whole page (up to [`MAX_SCREENSHOT_HEIGHT`]), of `size` in CSS pixels, written
+/// to `file`.
+fn screenshot(tab: &Tab, file: &Path, size: PageSize) -> Result<()> {
     let clip = Page::Viewport {
         x: 0.0,
         y: 0.0,
@@ -704,8 +728,7 @@ fn screenshot(tab: &Tab, file: &Path) -> Result<()> {
             clip: Some(clip),
             from_surface: Some(true),
             capture_beyond_viewport: Some(true),
-            // Encoded fast rather than small: the shots are looked through, not kept (2 to 4 of
-            // the check's 38 seconds on the book's twenty pages).
+            // Encoded fast rather than small: the shots are looked through, not kept.
             optimize_for_speed: Some(true),
         })?
         .data;
@@ -715,56 +738,89 @@ fn screenshot(tab: &Tab, file: &Path) -> Result<()> {
     std::fs::write(file, bytes).with_context(|| format!("cannot write {}", file.display()))
 }
 
-/// Opens the search box of the page at `url`, types `word` and waits for results; returns how
-/// many there are, and writes a screenshot of them to `shot`.
+/// Searches from the page at `url` as a reader does, in the page itself: clicks the search
+/// button, puts `word` in the search box, lets go of its last key (mdBook searches on `keyup`),
+/// and waits for the line mdBook writes above the results ("3 search results for ...", or "No
+/// search results for ..."), which stays empty until the search index has loaded. Answers, as
+/// JSON, what is missing or how many results there are and the page's size. One call to the
+/// browser does all of it, because each call costs the driver about a tenth of a second.
+const SEARCH: &str = r#"(async (word, timeout) => {
+  const toggle = document.getElementById('mdbook-search-toggle');
+  if (!toggle) return JSON.stringify({ missing: 'button' });
+  toggle.click();
+  const bar = document.getElementById('mdbook-searchbar');
+  if (!bar || bar.offsetParent === null) return JSON.stringify({ missing: 'box' });
+  bar.focus();
+  bar.value = word;
+  bar.dispatchEvent(new KeyboardEvent('keyup', { key: word.slice(-1), bubbles: true }));
+  const header = () => document.getElementById('mdbook-searchresults-header')?.textContent ?? '';
+  const started = Date.now();
+  while (header() === '') {
+    if (Date.now() - started > timeout) return JSON.stringify({ missing: 'header' });
+    await new Promise(done => setTimeout(done, 20));
+  }
+  return JSON.stringify({
+    said: header(),
+    count: document.querySelectorAll('#mdbook-searchresults > li').length,
+    size: {
+      width: document.documentElement.scrollWidth,
+      height: document.documentElement.scrollHeight,
+    },
+  });
+})"#;
+
+/// What [`SEARCH`] answers.
+#[derive(Deserialize)]
+struct SearchAnswer {
+    /// What the page lacks: the search `button`, the search `box`, or the `header` line of
+    /// results within the time allowed.
+    missing: Option<String>,
+    said: Option<String>,
+    count: Option<usize>,
+    size: Option<PageSize>,
+}
+
+/// Opens the page at `url`, searches it for `word` ([`SEARCH`]) and returns how many results
+/// there are, with a screenshot of them written to `shot`.
 fn search(tab: &Tab, url: &str, word: &str, shot: &Path) -> Result<usize> {
     open(tab, url)?;
-    let toggle = tab.find_element("#mdbook-search-toggle").map_err(|_| {
-        anyhow!(
+    let call = format!(
+        "{SEARCH}({}, {})",
+        serde_json::to_string(word)?,
+        TIMEOUT.as_millis()
+    );
+    let answer = tab.evaluate(&call, true)?;
+    let Some(serde_json::Value::String(answer)) = answer.value else {
+        bail!("the search of index.html returned no answer: {answer:?}");
+    };
+    let answer: SearchAnswer = serde_json::from_str(&answer)
+        .context("the search returned an answer that cannot be read")?;
+    match answer.missing.as_deref() {
+        Some("button") => bail!(
             "index.html has no search button (#mdbook-search-toggle): is search turned on in \
              book.toml ([output.html.search]) and mdbook-driver built with its `search` feature?"
-        )
-    })?;
-    toggle.click()?;
-    let bar = tab
-        .wait_for_element("#mdbook-searchbar")
-        .map_err(|_| anyhow!("the search button of index.html opened no search box"))?;
-    bar.click()?;
-    tab.type_str(word)?;
-    // mdBook writes a line above the results once it has searched ("3 search results for ...",
-    // or "No search results for ..."); before the index has loaded, nothing.
-    let header = "document.getElementById('mdbook-searchresults-header')?.textContent ?? ''";
-    let started = Instant::now();
-    let said = loop {
-        let said = tab.evaluate(header, false)?.value;
-        if let Some(serde_json::Value::String(said)) = said.filter(|s| s != "") {
-            break said;
-        }
-        if started.elapsed() > TIMEOUT {
-            bail!(
-                "typing \"{word}\" into the search box of index.html showed no results within \
-                 {} s: did searchindex.js load?",
-                TIMEOUT.as_secs()
-            );
-        }
-        std::thread::sleep(Duration::from_millis(50));
-    };
-    let count = tab
-        .evaluate(
-            "document.querySelectorAll('#mdbook-searchresults > li').length",
-            false,
-        )?
-        .value
-        .and_then(|v| v.as_u64())
-        .unwrap_or(0);
+        ),
+        Some("box") => bail!("the search button of index.html opened no search box"),
+        Some(_) => bail!(
+            "typing \"{word}\" into the search box of index.html showed no results within {} s: \
+             did searchindex.js load?",
+            TIMEOUT.as_secs()
+        ),
+        None => {}
+    }
+    let count = answer.count.unwrap_or(0);
     if count == 0 {
         bail!(
             "typing \"{word}\" into the search box of index.html showed no results; the page \
-             says \"{said}\""
+             says \"{}\"",
+            answer.said.unwrap_or_default()
         );
     }
-    screenshot(tab, shot)?;
-    Ok(count as usize)
+    let size = answer
+        .size
+        .context("the search of index.html did not report the page's size")?;
+    screenshot(tab, shot, size)?;
+    Ok(count)
 }
 
 /// Every link, on every page opened, to a file that does not exist or to a fragment that is
@@ -974,6 +1030,10 @@ mod tests {
             ids: vec!["here".to_owned()],
             katex_errors: Vec::new(),
             raw_tex: Vec::new(),
+            size: PageSize {
+                width: 1280.0,
+                height: 900.0,
+            },
         };
         let problems = broken_links(site.path(), &BTreeMap::from([("a.html".to_owned(), facts)]))
             .unwrap()
