@@ -5,6 +5,7 @@
 //! The files are found, not listed, so a new scene is tested as soon as it is added, and a
 //! scene that starts to be refused fails until its reason is written down here.
 
+use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
 mod support;
@@ -48,11 +49,21 @@ fn render_renders_every_scene_file_of_the_workbook() {
         "the search finds the chapter's own scenes"
     );
     let dir = tempfile::tempdir().unwrap();
+    // The renders side by side, each in a folder of its own: each is a process of its own.
+    let renders: Vec<_> = files
+        .par_iter()
+        .enumerate()
+        .map(|(i, file)| {
+            let out = dir.path().join(i.to_string());
+            std::fs::create_dir(&out).unwrap();
+            render_tiny(file, &out)
+        })
+        .collect();
     let mut refused = Vec::new();
-    for file in &files {
+    for (file, render) in files.iter().zip(renders) {
         let name = file.file_name().unwrap().to_str().unwrap();
         let reason = REFUSED.iter().find(|(n, _)| *n == name).map(|(_, r)| *r);
-        match (render_tiny(file, dir.path()), reason) {
+        match (render, reason) {
             (Ok(image), None) => {
                 assert_eq!((image.width, image.height), (16, 12), "{name}");
                 assert!(

@@ -130,6 +130,8 @@ pub fn render_tiny(scene: &Path, out: &Path) -> Result<common::image::Image, Str
             "12",
             "--spp",
             "2",
+            "--threads",
+            "1",
             "--out",
             image.to_str().unwrap(),
             "--stats",
