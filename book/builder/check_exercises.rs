@@ -11,11 +11,13 @@
 //! other settings (see [`SEPARATE_CRATES_CONFIG`]), so cargo files them under other names than
 //! the workspace's, and its binaries go to a target directory of their own.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use anyhow::{Context, Result, bail};
 
+use crate::exercise_calls::{self, MarkedRun};
 use crate::exercise_list::{Exercise, LIST_PATH, WrongAnswer};
 use crate::progress;
 use crate::solution_markers;
@@ -50,7 +52,8 @@ pub fn run(
     let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
     if wrong_answers_only {
         let mut trial = Trial::new(root, &student_dir)?;
-        return prove_wrong_answers(&mut trial, &chosen);
+        let runs = trial.run_marked(&chosen, exercises)?;
+        return prove_wrong_answers(&mut trial, &chosen, &runs);
     }
     let edition = student_dir.join("edition");
     let edition_build = EditionBuild {
@@ -97,9 +100,10 @@ pub fn run(
             started.elapsed().as_secs_f64()
         );
         let mut trial = Trial::over_edition(root, edition, edition_build, exercises);
-        prove_in_order(&mut trial, exercises, selected)?;
+        let runs = trial.run_marked(&chosen, exercises)?;
+        prove_in_order(exercises, selected, &runs)?;
         println!("({:.0} s so far)", started.elapsed().as_secs_f64());
-        prove_wrong_answers(&mut trial, &chosen)?;
+        prove_wrong_answers(&mut trial, &chosen, &runs)?;
         println!(
             "check-exercises took {:.0} s.",
             started.elapsed().as_secs_f64()
@@ -126,11 +130,16 @@ pub fn run(
 /// put back, or a fresh copy when only the wrong answers are checked), all solutions in place
 /// but the ones being tried, in rounds: round `r` puts in the `r`-th wrong answer of every
 /// exercise that has one, so a round costs one build of the changed crates, not one per answer.
-/// A later exercise's check may call an earlier exercise of its chapter, so an answer that
-/// surprises in a round where its chapter had another wrong answer too is tried again alone
+/// A check may run the code of another exercise with an answer in the same round (`runs` says
+/// which exercises each check runs); one that then does not refuse its own answer as recorded
+/// is tried again, in rounds where no check runs the code of another answer of the round,
 /// before it counts. The copy's crates have names of their own in the shared build directory
 /// (see [`SEPARATE_CRATES_CONFIG`] and [`TRIALS_CONFIG`]).
-fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<()> {
+fn prove_wrong_answers(
+    trial: &mut Trial<'_>,
+    exercises: &[Exercise],
+    runs: &HashMap<String, MarkedRun>,
+) -> Result<()> {
     let rounds = exercises.iter().map(|e| e.wrong.len()).max().unwrap_or(0);
     if rounds == 0 {
         println!("No wrong answers are recorded in {LIST_PATH}.");
@@ -141,6 +150,13 @@ fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<
         trial.copy.display()
     );
     println!("{:<28} {:<40} {:<20}", "exercise", "wrong answer", "check");
+    // Whether `check`'s check runs the code of `other`.
+    let runs_code_of = |check: &Exercise, other: &Exercise| {
+        check.name != other.name
+            && runs
+                .get(&check.name)
+                .is_some_and(|run| run.ran.contains(&other.name))
+    };
     let mut tried = 0;
     let mut surprises = Vec::new();
     let mut again = Vec::new();
@@ -151,14 +167,12 @@ fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<
             .collect();
         for (exercise, wrong, outcome) in trial.wrong_answers(&in_round)? {
             tried += 1;
-            let shared = in_round
+            let disturbed = in_round
                 .iter()
-                .filter(|(other, _)| other.chapter == exercise.chapter)
-                .count()
-                > 1;
+                .any(|(other, _)| runs_code_of(exercise, other));
             if refused(wrong, &outcome) {
                 print_verdict(exercise, wrong, &outcome, "");
-            } else if shared {
+            } else if disturbed {
                 print_verdict(exercise, wrong, &outcome, ", tried again alone");
                 again.push((exercise, wrong));
             } else {
@@ -167,17 +181,19 @@ fn prove_wrong_answers(trial: &mut Trial<'_>, exercises: &[Exercise]) -> Result<
             }
         }
     }
-    // Alone: one answer per chapter per round.
+    // Alone: no check of a round runs the code of another answer of the round.
     while !again.is_empty() {
         let mut in_round: Vec<(&Exercise, &WrongAnswer)> = Vec::new();
         again.retain(|&(exercise, wrong)| {
-            let chapter_free = !in_round
-                .iter()
-                .any(|(other, _)| other.chapter == exercise.chapter);
-            if chapter_free {
+            let apart = in_round.iter().all(|(other, _)| {
+                other.name != exercise.name
+                    && !runs_code_of(exercise, other)
+                    && !runs_code_of(other, exercise)
+            });
+            if apart {
                 in_round.push((exercise, wrong));
             }
-            !chapter_free
+            !apart
         });
         for (exercise, wrong, outcome) in trial.wrong_answers(&in_round)? {
             print_verdict(exercise, wrong, &outcome, " (alone)");
@@ -278,11 +294,95 @@ impl<'a> Trial<'a> {
         Ok(())
     }
 
-    /// Runs `exercise`'s check in the copy as it now stands (as [`run_checks`] runs it, so
-    /// that nothing is compiled with other features).
-    fn check(&self, exercise: &Exercise) -> Result<Outcome> {
-        let mut outcomes = run_checks(&[exercise], &self.copy, Some(&self.build))?;
-        Ok(outcomes.remove(0))
+    /// Puts every solution of `all` back with a mark first in it ([`exercise_calls`]), builds
+    /// the copy's libraries with their tests, and runs each check of `chosen` once, each in
+    /// processes of its own: what each check does and which exercises' code it runs, by name.
+    fn run_marked(
+        &mut self,
+        chosen: &[Exercise],
+        all: &[Exercise],
+    ) -> Result<HashMap<String, MarkedRun>> {
+        for file in self.changed.drain(..) {
+            std::fs::copy(self.root.join(&file), self.copy.join(&file))
+                .with_context(|| format!("cannot restore {}", file.display()))?;
+        }
+        for exercise in all {
+            let path = self.copy.join(&exercise.file);
+            let source = std::fs::read_to_string(&path)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            let marked = solution_markers::mark_solution(
+                &source,
+                &exercise.anchor,
+                &exercise_calls::call_mark(exercise),
+            )
+            .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
+            std::fs::write(&path, marked)
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            if !self.changed.contains(&exercise.file) {
+                self.changed.push(exercise.file.clone());
+            }
+        }
+        let mut packages: Vec<&str> = Vec::new();
+        for exercise in chosen {
+            if let Some((package, _)) = progress::standard_check(&exercise.check)
+                && !packages.contains(&package)
+            {
+                packages.push(package);
+            }
+        }
+        let binaries = if packages.is_empty() {
+            HashMap::new()
+        } else {
+            self.library_test_binaries(&packages)?
+        };
+        let chosen: Vec<&Exercise> = chosen.iter().collect();
+        let run_other = |check: &str, marks: &Path| -> Result<(bool, String)> {
+            let marks = marks.to_string_lossy().replace('\'', "'\\''");
+            let command = format!("{}='{marks}' {check}", exercise_calls::CALLS_FILE_VARIABLE);
+            let outcome = run_check(&command, &self.copy, Some(&self.build))?;
+            Ok((outcome.passed, outcome.output))
+        };
+        let marks_dir = self.build.target_dir.join("exercise-calls");
+        let runs = exercise_calls::run_marked(&chosen, &binaries, &marks_dir, &run_other)?;
+        Ok(chosen
+            .iter()
+            .map(|exercise| exercise.name.clone())
+            .zip(runs)
+            .collect())
+    }
+
+    /// Compiles the library tests of `packages` in the copy as it now stands (as the checks
+    /// compile them, with [`AS_THE_WORKSPACE_TESTS`]) and returns each one's test binary and
+    /// package folder.
+    fn library_test_binaries(
+        &self,
+        packages: &[&str],
+    ) -> Result<HashMap<String, (PathBuf, PathBuf)>> {
+        let mut args = vec!["test", "--no-run", "--lib", "--message-format=json"];
+        for package in packages {
+            args.extend(["-p", package]);
+        }
+        args.extend(AS_THE_WORKSPACE_TESTS.split(' '));
+        let mut command = Command::new("cargo");
+        command
+            .args(&args)
+            .current_dir(&self.copy)
+            .stdin(Stdio::null());
+        self.build.apply(&mut command);
+        let output = command
+            .output()
+            .with_context(|| format!("cannot run cargo in {}", self.copy.display()))?;
+        if !output.status.success() {
+            bail!(
+                "the copy at {} with every solution marked does not compile (`cargo {}`):\n{}",
+                self.copy.display(),
+                args.join(" "),
+                last_lines(&String::from_utf8_lossy(&output.stderr), 30)
+            );
+        }
+        Ok(exercise_calls::library_test_binaries(
+            &String::from_utf8_lossy(&output.stdout),
+        ))
     }
 
     /// Puts the `answers` in and runs each one's check.
@@ -303,114 +403,85 @@ impl<'a> Trial<'a> {
             .map(|(&(exercise, wrong), outcome)| (exercise, wrong, outcome))
             .collect())
     }
-
-    /// The student's stub of `exercise`, as the student edition has it.
-    fn stub(&self, exercise: &Exercise) -> Result<String> {
-        let path = self.root.join(&exercise.file);
-        let source = std::fs::read_to_string(&path)
-            .with_context(|| format!("cannot read {}", path.display()))?;
-        solution_markers::stub_code(&source, &exercise.anchor, &exercise.todo_message())
-            .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))
-    }
 }
 
 /// Proves the promise that the exercises can be done in order: each exercise's check passes
 /// once it and the exercises before it are solved, while the ones after it are still stubs.
 /// A check that calls a later exercise would leave the student stuck.
 ///
-/// Only the chapter's own later exercises can be in the way: a chapter's tests never compile
-/// the chapters after it, so "chapters 01 to c solved, the later ones stubbed" is the solved
-/// workspace as far as chapter c's checks can tell, which the table above has proved. Within
-/// a chapter, round `k` stubs every exercise after the `k`-th of *every* chapter at once and
-/// runs each chapter's `k`-th check, so a round costs one build. Solving more never makes a
-/// check fail, so a check that passes there passes for the student, who has solved at least as
-/// much. One that fails is tried again alone, with the earlier chapters solved in full, before
-/// it counts.
-fn prove_in_order<'e>(
-    trial: &mut Trial<'_>,
-    exercises: &'e [Exercise],
+/// Each check has run once with every solution in place and marked (`runs`): one that passed
+/// there and ran no exercise listed after its own passes with those exercises stubbed too,
+/// since the code it runs is the same until a stub is called. One that ran a later exercise
+/// fails for the student, with that exercise's `todo!`.
+fn prove_in_order(
+    exercises: &[Exercise],
     selected: &dyn Fn(&Exercise) -> bool,
+    runs: &HashMap<String, MarkedRun>,
 ) -> Result<()> {
-    let mut chapters: Vec<Vec<&'e Exercise>> = Vec::new();
-    for exercise in exercises {
-        match chapters
-            .iter_mut()
-            .find(|chapter| chapter[0].chapter == exercise.chapter)
-        {
-            Some(chapter) => chapter.push(exercise),
-            None => chapters.push(vec![exercise]),
-        }
-    }
-    let longest = chapters.iter().map(Vec::len).max().unwrap_or(0);
-    // Every exercise's stub, worked out once.
-    let stub_codes: Vec<String> = exercises
-        .iter()
-        .map(|exercise| trial.stub(exercise))
-        .collect::<Result<_>>()?;
-    let stub_of = |exercise: &Exercise| {
-        let index = exercises
-            .iter()
-            .position(|e| e.name == exercise.name)
-            .expect("a listed exercise");
-        stub_codes[index].clone()
-    };
-    let stubs_after = |chapter: &[&'e Exercise], solved: usize| -> Vec<(&'e Exercise, String)> {
-        chapter[solved..]
-            .iter()
-            .map(|exercise| (*exercise, stub_of(exercise)))
-            .collect()
-    };
     println!(
-        "\nIn order: each check with the exercises before it solved and the ones after it stubbed"
+        "\nIn order: each check, run once with every solution in place, runs no exercise listed \
+         after its own"
     );
     let mut proved = 0;
-    let mut again = Vec::new();
-    // With all of a chapter solved, its checks passed on the workspace above.
-    for solved in 1..longest {
-        let mut stubs = Vec::new();
-        let mut checks = Vec::new();
-        for chapter in chapters.iter().filter(|chapter| chapter.len() > solved) {
-            stubs.extend(stubs_after(chapter, solved));
-            let exercise = chapter[solved - 1];
-            if selected(exercise) {
-                checks.push((chapter.as_slice(), exercise));
-            }
-        }
-        if checks.is_empty() {
-            continue;
-        }
-        trial.put_in(&stubs)?;
-        let to_run: Vec<&Exercise> = checks.iter().map(|(_, exercise)| *exercise).collect();
-        let outcomes = run_checks(&to_run, &trial.copy, Some(&trial.build))?;
-        for ((chapter, exercise), outcome) in checks.into_iter().zip(outcomes) {
-            let later = chapter.len() - solved;
-            if outcome.passed {
-                println!(
-                    "{:<28} passes with {later} later exercise(s) of its chapter stubbed",
-                    exercise.name
-                );
-                proved += 1;
-            } else {
-                again.push((chapter, solved, exercise));
-            }
-        }
-    }
     let mut stuck = Vec::new();
-    for (chapter, solved, exercise) in again {
-        trial.put_in(&stubs_after(chapter, solved))?;
-        let outcome = trial.check(exercise)?;
-        if outcome.passed {
+    for (index, exercise) in exercises.iter().enumerate() {
+        let Some(run) = runs.get(&exercise.name).filter(|_| selected(exercise)) else {
+            continue;
+        };
+        let after = &exercises[index + 1..];
+        let later_in_chapter = after
+            .iter()
+            .filter(|later| later.chapter == exercise.chapter)
+            .count();
+        let runs_later: Vec<&str> = after
+            .iter()
+            .filter(|later| run.ran.contains(&later.name))
+            .map(|later| later.name.as_str())
+            .collect();
+        if !run.passed {
             println!(
-                "{:<28} passes with the later exercises of its chapter stubbed (tried alone)",
+                "{:<28} FAILS with every solution in place (and marked)",
+                exercise.name
+            );
+            stuck.push((
+                exercise,
+                "fails with every solution in place".to_owned(),
+                run,
+            ));
+        } else if !run.ran.contains(&exercise.name) {
+            // It failed on its stub, so it runs its exercise: the mark did not work.
+            println!("{:<28} ran no marked code", exercise.name);
+            stuck.push((
+                exercise,
+                format!(
+                    "left no mark of its own exercise, whose stub it fails on: the marks ({}) \
+                     were not written, so nothing is known of what the checks run",
+                    exercise_calls::CALLS_FILE_VARIABLE
+                ),
+                run,
+            ));
+        } else if !runs_later.is_empty() {
+            println!(
+                "{:<28} FAILS with the later exercises stubbed: it runs {}",
+                exercise.name,
+                runs_later.join(", ")
+            );
+            stuck.push((
+                exercise,
+                format!(
+                    "runs {}, listed after it: a student doing them in order would be stuck here, \
+                     at that exercise's todo! (does the check, or the code it runs, call it?)",
+                    runs_later.join(", ")
+                ),
+                run,
+            ));
+        } else if later_in_chapter > 0 {
+            println!(
+                "{:<28} passes with {later_in_chapter} later exercise(s) of its chapter stubbed \
+                 (it runs none of them)",
                 exercise.name
             );
             proved += 1;
-        } else {
-            println!(
-                "{:<28} FAILS with the later exercises of its chapter stubbed",
-                exercise.name
-            );
-            stuck.push((exercise, outcome));
         }
     }
     if stuck.is_empty() {
@@ -419,14 +490,12 @@ fn prove_in_order<'e>(
         );
         return Ok(());
     }
-    for (exercise, outcome) in &stuck {
+    for (exercise, why, run) in &stuck {
         println!(
-            "\n--- {}'s check fails while the exercises after it are stubs: a student doing them \
-             in order would be stuck here (does the check, or the code it runs, call a later \
-             exercise?); `{}` printed (last lines):",
+            "\n--- {}'s check {why}; `{}` printed (last lines):",
             exercise.name, exercise.check
         );
-        println!("{}", last_lines(&outcome.output, 30));
+        println!("{}", last_lines(&run.output, 30));
     }
     bail!(
         "{} exercise(s) cannot be done in order: a check may call only the exercises before it",
@@ -813,6 +882,59 @@ fn last_lines(text: &str, count: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn exercise(name: &str, chapter: &str) -> Exercise {
+        Exercise {
+            name: name.into(),
+            chapter: chapter.into(),
+            file: format!("chapters/{chapter}/src/lib.rs").into(),
+            anchor: name.into(),
+            check: format!("cargo test -p {chapter} --lib exercise_{name}"),
+            hint: "Which part changes?".into(),
+            wrong: Vec::new(),
+        }
+    }
+
+    fn ran(names: &[&str]) -> MarkedRun {
+        MarkedRun {
+            passed: true,
+            output: String::new(),
+            ran: names.iter().map(|name| (*name).to_owned()).collect(),
+        }
+    }
+
+    #[test]
+    fn a_check_that_runs_a_later_exercise_cannot_be_done_in_order() {
+        let exercises = [
+            exercise("a1", "a"),
+            exercise("a2", "a"),
+            exercise("b1", "b"),
+        ];
+        let all = |_: &Exercise| true;
+        let in_order = HashMap::from([
+            ("a1".to_owned(), ran(&["a1"])),
+            ("a2".to_owned(), ran(&["a2", "a1"])),
+            ("b1".to_owned(), ran(&["b1", "a2"])),
+        ]);
+        assert!(prove_in_order(&exercises, &all, &in_order).is_ok());
+        let mut stuck = in_order;
+        stuck.insert("a1".to_owned(), ran(&["a1", "a2"]));
+        let error = prove_in_order(&exercises, &all, &stuck).unwrap_err();
+        assert!(format!("{error}").contains("1 exercise(s) cannot be done in order"));
+        // Not selected, not proved either way.
+        assert!(prove_in_order(&exercises, &|e: &Exercise| e.name != "a1", &stuck).is_ok());
+    }
+
+    #[test]
+    fn a_check_that_left_no_mark_of_its_own_exercise_fails_the_proof() {
+        let exercises = [exercise("a1", "a"), exercise("a2", "a")];
+        let runs = HashMap::from([("a1".to_owned(), ran(&[])), ("a2".to_owned(), ran(&["a2"]))]);
+        assert!(prove_in_order(&exercises, &|_| true, &runs).is_err());
+        let mut failed = ran(&["a1"]);
+        failed.passed = false;
+        let runs = HashMap::from([("a1".to_owned(), failed), ("a2".to_owned(), ran(&["a2"]))]);
+        assert!(prove_in_order(&exercises, &|_| true, &runs).is_err());
+    }
 
     /// The `debug` setting of `[profile.dev]` in a TOML document (`None` if it sets none).
     fn dev_debug(document: &str) -> Option<toml::Value> {

@@ -16,6 +16,7 @@
 
 mod check_exercises;
 mod checkpoint;
+mod exercise_calls;
 mod exercise_list;
 mod exercise_preprocessor;
 mod figures;

@@ -451,12 +451,21 @@ fn stub_text(lines: &[&str], span: &ExerciseSpan, message: &str, indent: &str) -
     }
 }
 
-/// The student's stub of exercise `anchor` in `source`, unindented, as [`splice_code`] takes
-/// code: for putting one exercise's stub back while the others keep their solutions.
-pub fn stub_code(source: &str, anchor: &str, message: &str) -> Result<String, MarkerError> {
+/// `source` with `line` put first in the solution region of exercise `anchor` (just after its
+/// `BEGIN` marker, indented as the marker is), the solution left as it is. Every solution
+/// region is the tail of a block, so one statement may always stand first in it.
+pub fn mark_solution(source: &str, anchor: &str, line: &str) -> Result<String, MarkerError> {
     let lines: Vec<&str> = source.lines().collect();
     let span = locate(&lines, anchor)?;
-    Ok(stub_text(&lines, &span, message, ""))
+    let begin = lines[span.solution.start];
+    let indent = &begin[..begin.len() - begin.trim_start().len()];
+    let mut out: Vec<String> = lines.iter().map(|line| (*line).to_owned()).collect();
+    out.insert(span.solution.start + 1, format!("{indent}{line}"));
+    let mut text = out.join("\n");
+    if source.ends_with('\n') {
+        text.push('\n');
+    }
+    Ok(text)
 }
 
 /// One exercise to cut out of a file: its anchor and the message of its `todo!`.
@@ -542,6 +551,16 @@ mod tests {
     // Test sources are built from escaped one-line strings on purpose: a marker on a line of
     // its own here would be a stray marker in the workspace's own sources.
     const REFLECT: &str = "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    wi - 2.0 * wi.dot(n) * n\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n";
+
+    #[test]
+    fn a_mark_goes_first_in_the_solution_which_stays() {
+        let marked = mark_solution(REFLECT, "reflect", "mark();").unwrap();
+        assert_eq!(
+            marked,
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    mark();\n    wi - 2.0 * wi.dot(n) * n\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n"
+        );
+        assert!(mark_solution(REFLECT, "refract", "mark();").is_err());
+    }
 
     fn lines(source: &str) -> Vec<&str> {
         source.lines().collect()
