@@ -8,7 +8,7 @@
 //! the wrong reason. The edition lives under `target/student/`, in a fixed place, and its build
 //! shares the workspace's build directory: the dependencies are compiled once, for the
 //! workspace's tests, and the edition reuses them. The edition's own crates are built with
-//! other settings (see [`SEPARATE_CRATES_CONFIG`]), so cargo files them under other names than
+//! other settings (see [`separate_crates_config`]), so cargo files them under other names than
 //! the workspace's, and its binaries go to a target directory of their own.
 
 use std::collections::HashMap;
@@ -59,13 +59,12 @@ pub fn run(
     let edition_build = EditionBuild {
         target_dir: student_dir.join("target"),
         build_dir: target_dir,
-        incremental: true,
     };
 
     println!("Writing the student edition to {}", edition.display());
     let files = student_edition::write(root, exercises, &edition, true)?;
     println!("  {files} files, {} exercise(s) stubbed", exercises.len());
-    write_config(&edition, SEPARATE_CRATES_CONFIG)?;
+    write_config(&edition, &separate_crates_config(workspace_incremental()))?;
 
     build_edition(&edition, &edition_build, &chosen)?;
 
@@ -134,7 +133,7 @@ pub fn run(
 /// which exercises each check runs); one that then does not refuse its own answer as recorded
 /// is tried again, in rounds where no check runs the code of another answer of the round,
 /// before it counts. The copy's crates have names of their own in the shared build directory
-/// (see [`SEPARATE_CRATES_CONFIG`] and [`TRIALS_CONFIG`]).
+/// (see [`separate_crates_config`] and [`TRIALS_CONFIG`]).
 fn prove_wrong_answers(
     trial: &mut Trial<'_>,
     exercises: &[Exercise],
@@ -242,7 +241,6 @@ impl<'a> Trial<'a> {
             build: EditionBuild {
                 target_dir: student_dir.join("trials-target"),
                 build_dir: workspace::target_dir(root),
-                incremental: true,
             },
             changed: Vec::new(),
         })
@@ -532,6 +530,7 @@ const TRIALS_CONFIG: &str = "\
 # of their own in the shared build directory; dependencies are shared.
 [profile.dev]
 debug = \"limited\"
+incremental = true
 ";
 
 /// Settings for this check's own build of the student edition, written into the edition's
@@ -540,17 +539,41 @@ debug = \"limited\"
 /// Cargo names a workspace crate's compiled files after its name, version, settings and its
 /// path *relative to the workspace*, which are the same in the edition as in the workspace. In
 /// a shared build directory the two copies of a crate would then be one: a check on the
-/// workspace could run the student's stub. Building the edition's crates without debug
+/// workspace could run the student's stub. Building the edition's chapters without debug
 /// information (the workspace keeps line tables) gives them names of their own. The
 /// dependencies are configured by `[profile.dev.package."*"]`, which this leaves alone, so
-/// they keep the workspace's names and are shared. The edition handed to students
-/// (`book student`) keeps the workspace's settings.
-const SEPARATE_CRATES_CONFIG: &str = "\
-# Written by `book check-exercises` for its own build of the student edition: the workspace's
-# crates get names of their own in the shared build directory; dependencies are shared.
-[profile.dev]
-debug = false
-";
+/// they keep the workspace's names and are shared; so does `common`, which holds no exercise
+/// and is copied with its files' times (see `student_edition::write`): it keeps the
+/// workspace's debug setting and, with `workspace_incremental`, the incremental compilation
+/// the workspace's build had, so that the edition uses the `common` the workspace's tests
+/// compiled instead of compiling it once more. The chapters are compiled incrementally: the
+/// trials change a few function bodies per round, which rustc's caches rebuild in seconds.
+/// The edition handed to students (`book student`) keeps the workspace's settings.
+fn separate_crates_config(workspace_incremental: bool) -> String {
+    format!(
+        "# Written by `book check-exercises` for its own build of the student edition: the \
+         chapters\n\
+         # get names of their own in the shared build directory; `common` and the dependencies \
+         are\n\
+         # shared with the workspace's build.\n\
+         [profile.dev]\n\
+         debug = false\n\
+         incremental = true\n\
+         \n\
+         [profile.dev.package.common]\n\
+         debug = \"{WORKSPACE_DEV_DEBUG}\"\n\
+         incremental = {workspace_incremental}\n"
+    )
+}
+
+/// The workspace's `[profile.dev]` debug setting (a test holds it to the manifest).
+const WORKSPACE_DEV_DEBUG: &str = "line-tables-only";
+
+/// Whether the workspace's own builds in this process's environment are incremental: as
+/// `CARGO_INCREMENTAL` says, else as the dev profile's default (the manifest sets none).
+fn workspace_incremental() -> bool {
+    std::env::var("CARGO_INCREMENTAL").map_or(true, |value| value != "0")
+}
 
 /// Writes `config` as the `.cargo/config.toml` of the copy at `dir`.
 fn write_config(edition: &Path, config: &str) -> Result<()> {
@@ -567,22 +590,19 @@ struct EditionBuild {
     /// Intermediate artifacts: the workspace's own build directory, so that the dependencies
     /// compiled for the workspace are reused rather than compiled a second time.
     build_dir: PathBuf,
-    /// Whether its crates are compiled incrementally. The trials are: each round changes a few
-    /// function bodies and rebuilds every chapter that holds one, which from scratch costs
-    /// about 20 s per round on a 2-core machine and with rustc's incremental caches about 2 s.
-    /// So is the edition, since the trials take it over once its checks have run.
-    incremental: bool,
 }
 
 impl EditionBuild {
     /// Points `command`'s cargo at this build. A build directory the caller chose
     /// (`CARGO_BUILD_BUILD_DIR`) is inherited as it is: the workspace's build used it too.
+    /// Which crates are compiled incrementally is the copy's configuration's to say, so the
+    /// caller's `CARGO_INCREMENTAL`, which would say it for every crate, is left out. (The
+    /// trials change a few function bodies per round and rebuild every chapter that holds
+    /// one: about 20 s per round on a 2-core machine from scratch, about 2 s with rustc's
+    /// incremental caches.)
     fn apply(&self, command: &mut Command) {
         command.env("CARGO_TARGET_DIR", &self.target_dir);
-        command.env(
-            "CARGO_INCREMENTAL",
-            if self.incremental { "1" } else { "0" },
-        );
+        command.env_remove("CARGO_INCREMENTAL");
         if std::env::var_os("CARGO_BUILD_BUILD_DIR").is_none() {
             command.env("CARGO_BUILD_BUILD_DIR", &self.build_dir);
         }
@@ -949,7 +969,24 @@ mod tests {
     fn the_editions_crates_are_built_with_other_settings_than_the_workspaces() {
         let manifest = std::fs::read_to_string(workspace::root().join("Cargo.toml")).unwrap();
         let workspace = dev_debug(&manifest);
-        let edition = dev_debug(SEPARATE_CRATES_CONFIG).expect("the edition sets debug");
+        assert_eq!(
+            workspace,
+            Some(toml::Value::String(WORKSPACE_DEV_DEBUG.into())),
+            "common is shared with the workspace's build only with the workspace's debug setting"
+        );
+        let manifest_table: toml::Table = toml::from_str(&manifest).unwrap();
+        assert!(
+            manifest_table["profile"]["dev"]
+                .get("incremental")
+                .is_none(),
+            "workspace_incremental takes the dev profile's default"
+        );
+        let config = separate_crates_config(false);
+        let edition = dev_debug(&config).expect("the edition sets debug");
+        let config_table: toml::Table = toml::from_str(&config).unwrap();
+        let common = &config_table["profile"]["dev"]["package"]["common"];
+        assert_eq!(common["debug"].as_str(), Some(WORKSPACE_DEV_DEBUG));
+        assert_eq!(common["incremental"].as_bool(), Some(false));
         assert_eq!(edition, toml::Value::Boolean(false));
         let same = match &workspace {
             None => false, // the default for dev is full debug information

@@ -223,7 +223,9 @@ fn copy_places(root: &Path, out: &Path) -> Result<(PathBuf, PathBuf, Vec<PathBuf
     Ok((root, out, leave_out))
 }
 
-/// Writes `files` of the workspace at `root` into `out`.
+/// Writes `files` of the workspace at `root` into `out`. A file copied as it is keeps its
+/// modification time: a build directory shared with the workspace then finds a crate copied
+/// whole (`common`) as fresh as the workspace's build of it, instead of compiling it again.
 fn write_files(root: &Path, out: &Path, files: &[EditionFile]) -> Result<()> {
     for file in files {
         let destination = out.join(file.path());
@@ -232,12 +234,22 @@ fn write_files(root: &Path, out: &Path, files: &[EditionFile]) -> Result<()> {
                 .with_context(|| format!("cannot create {}", parent.display()))?;
         }
         match file {
-            EditionFile::Copy(path) => std::fs::copy(root.join(path), &destination).map(drop),
+            EditionFile::Copy(path) => copy_with_time(&root.join(path), &destination),
             EditionFile::Rewritten(_, text) => std::fs::write(&destination, text),
         }
         .with_context(|| format!("cannot write {}", destination.display()))?;
     }
     Ok(())
+}
+
+/// Copies `from` to `to` with its modification time.
+fn copy_with_time(from: &Path, to: &Path) -> std::io::Result<()> {
+    std::fs::copy(from, to)?;
+    let modified = std::fs::metadata(from)?.modified()?;
+    std::fs::File::options()
+        .write(true)
+        .open(to)?
+        .set_modified(modified)
 }
 
 fn prepare_empty_dir(out: &Path, force: bool) -> Result<()> {
