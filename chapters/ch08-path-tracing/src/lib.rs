@@ -104,6 +104,8 @@ pub fn render_with<S: TimeSampler>(
 ) -> RenderOutput {
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     let area_lights = AreaLights::of(&world.scene);
+    // The rough plastics' coating tables, made before the threads start.
+    crate::microfacet::coating::Coating::tabulate_for(&world.scene);
     let tracer = PathTracer {
         world,
         lights: SceneLights::of(world, &area_lights, method.light_sampling),

@@ -18,7 +18,7 @@
 use super::distribution::NormalDistribution;
 use super::fresnel;
 use super::gauss_legendre::nodes_and_weights;
-use common::scene::MicrofacetDistribution;
+use common::scene::{Material, MicrofacetDistribution, Scene};
 use glam::Vec3;
 use std::cell::Cell;
 use std::collections::HashMap;
@@ -38,21 +38,30 @@ pub struct Coating {
 
 impl Coating {
     /// Tabulates the coating of facets `distribution` over a medium of relative index `eta`.
+    /// The directions' integrals are computed side by side (some 10⁶ sampled normals in all)
+    /// and summed in order, so the table is the same whatever the thread count.
     pub fn new(distribution: &NormalDistribution, eta: f32) -> Self {
+        use rayon::prelude::*;
         let directions: Vec<Vec3> = (0..RESOLUTION)
             .map(|i| {
                 let mu = (i as f32 / (RESOLUTION - 1) as f32).max(1e-6);
                 Vec3::new((1.0 - mu * mu).sqrt(), 0.0, mu)
             })
             .collect();
+        let integrals: Vec<(f64, f64)> = directions
+            .par_iter()
+            .map(|w| {
+                (
+                    transmitted(distribution, *w, eta),
+                    reflected(distribution, *w, 1.0 / eta) * f64::from(w.z),
+                )
+            })
+            .collect();
         let mut transmittance = [0.0; RESOLUTION];
-        for (t, w) in transmittance.iter_mut().zip(&directions) {
-            *t = transmitted(distribution, *w, eta) as f32;
+        for (t, (transmitted, _)) in transmittance.iter_mut().zip(&integrals) {
+            *t = *transmitted as f32;
         }
-        let internal: f64 = directions
-            .iter()
-            .map(|w| reflected(distribution, *w, 1.0 / eta) * f64::from(w.z))
-            .sum();
+        let internal: f64 = integrals.iter().map(|(_, reflected)| reflected).sum();
         Self {
             transmittance,
             internal_reflectance: (2.0 * internal / RESOLUTION as f64) as f32,
@@ -109,6 +118,31 @@ impl Coating {
         });
         LAST.set(Some((key, table)));
         table
+    }
+
+    /// Tabulates the coating of every rough plastic in `scene` ([`shared`](Self::shared)), the
+    /// coatings side by side, before a render: in the render, the first hit on each plastic
+    /// would have its thread tabulate it, while the other threads wait for work or tabulate
+    /// the same coating too.
+    pub fn tabulate_for(scene: &Scene) {
+        use rayon::prelude::*;
+        let mut coatings: Vec<(NormalDistribution, f32)> = Vec::new();
+        for surface in &scene.surfaces {
+            if let Material::Plastic(plastic) = surface.material.unmasked()
+                && let Some(roughness) = plastic.roughness
+            {
+                let coating = (
+                    NormalDistribution::isotropic(roughness.distribution, roughness.alpha()),
+                    plastic.int_ior / plastic.ext_ior,
+                );
+                if !coatings.contains(&coating) {
+                    coatings.push(coating);
+                }
+            }
+        }
+        coatings.par_iter().for_each(|(distribution, eta)| {
+            Self::shared(distribution, *eta);
+        });
     }
 
     /// `T(cos θ)`, interpolated linearly between the entries (`cos θ` in `[0, 1]`).
