@@ -18,28 +18,35 @@ const ALONG: usize = 2048;
 const AROUND: usize = 256;
 
 /// `∫ g(m) dm` over the normals of the upper hemisphere, nodes spread at the slope `scale`.
-pub fn over_normals(scale: f32, mut g: impl FnMut(Vec3) -> DVec3) -> DVec3 {
+/// The rows of nodes along `t` are summed side by side, then added in order, so the sum is
+/// the same whatever the thread count.
+pub fn over_normals(scale: f32, g: impl Fn(Vec3) -> DVec3 + Sync) -> DVec3 {
+    use rayon::prelude::*;
     let scale = f64::from(scale);
-    let mut sum = DVec3::ZERO;
-    for i in 0..ALONG {
-        let t = (i as f64 + 0.5) / ALONG as f64;
-        let r = scale * t / (1.0 - t);
-        let dr_dt = scale / (1.0 - t).powi(2);
-        // `dm = cos³ θ_m d²(slope)`, `d²(slope) = r dr dφ`.
-        let cos = 1.0 / (1.0 + r * r).sqrt();
-        let weight = cos.powi(3) * r * dr_dt / (ALONG * AROUND) as f64 * TAU;
-        for j in 0..AROUND {
-            let phi = (j as f64 + 0.5) / AROUND as f64 * TAU;
-            let m = DVec3::new(-r * phi.cos(), -r * phi.sin(), 1.0).normalize();
-            sum += weight * g(m.as_vec3());
-        }
-    }
-    sum
+    let rows: Vec<DVec3> = (0..ALONG)
+        .into_par_iter()
+        .map(|i| {
+            let t = (i as f64 + 0.5) / ALONG as f64;
+            let r = scale * t / (1.0 - t);
+            let dr_dt = scale / (1.0 - t).powi(2);
+            // `dm = cos³ θ_m d²(slope)`, `d²(slope) = r dr dφ`.
+            let cos = 1.0 / (1.0 + r * r).sqrt();
+            let weight = cos.powi(3) * r * dr_dt / (ALONG * AROUND) as f64 * TAU;
+            let mut row = DVec3::ZERO;
+            for j in 0..AROUND {
+                let phi = (j as f64 + 0.5) / AROUND as f64 * TAU;
+                let m = DVec3::new(-r * phi.cos(), -r * phi.sin(), 1.0).normalize();
+                row += weight * g(m.as_vec3());
+            }
+            row
+        })
+        .collect();
+    rows.iter().fold(DVec3::ZERO, |sum, row| sum + *row)
 }
 
 /// `∫ eval(wi) dω_i` over the directions `wi` reflected from `wo` (above or below the
 /// surface) about a facet it sees: `dω_i = 4 |wo·m| dm`.
-pub fn reflected(wo: Vec3, scale: f32, eval: impl Fn(Vec3) -> Vec3) -> DVec3 {
+pub fn reflected(wo: Vec3, scale: f32, eval: impl Fn(Vec3) -> Vec3 + Sync) -> DVec3 {
     over_normals(scale, |m| {
         let om = wo.dot(m);
         let wi = fresnel::reflect(wo, m);
@@ -53,7 +60,7 @@ pub fn reflected(wo: Vec3, scale: f32, eval: impl Fn(Vec3) -> Vec3) -> DVec3 {
 /// `∫ eval(wi) dω_i` over the directions `wi` refracted from `wo` into a medium of relative
 /// index `eta` (`n_inside / n_outside`, `z` pointing outside) through a facet it sees:
 /// `dω_i = (wo·m + η wi·m)² / (η² |wi·m|) dm`, `η = n_t / n_i`.
-pub fn refracted(wo: Vec3, scale: f32, eta: f32, eval: impl Fn(Vec3) -> Vec3) -> DVec3 {
+pub fn refracted(wo: Vec3, scale: f32, eta: f32, eval: impl Fn(Vec3) -> Vec3 + Sync) -> DVec3 {
     over_normals(scale, |m| {
         let om = wo.dot(m);
         if om * wo.z <= 0.0 {

@@ -6,8 +6,8 @@ use crate::BsdfSample;
 use glam::{Vec2, Vec3};
 
 /// A BSDF in the local frame (`z` the normal); `wo` points towards where the path came from,
-/// `wi` towards the light.
-pub trait LocalBsdf {
+/// `wi` towards the light. `Sync`: a quadrature evaluates it on several threads at once.
+pub trait LocalBsdf: Sync {
     /// `f(wo, wi) cos θ_i`.
     fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3;
     /// The density per unit solid angle with which [`sample`](Self::sample) picks `wi`.
