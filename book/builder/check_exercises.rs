@@ -275,18 +275,38 @@ impl<'a> Trial<'a> {
     /// Puts each `(exercise, code)` in, `code` standing where the exercise's solution stands,
     /// after putting back every file the last round changed.
     fn put_in(&mut self, splices: &[(&Exercise, String)]) -> Result<()> {
+        self.put_back()?;
+        for (exercise, code) in splices {
+            self.rewrite(exercise, |source| {
+                solution_markers::splice_code(source, &exercise.anchor, code)
+            })?;
+        }
+        Ok(())
+    }
+
+    /// Puts back, from the workspace, every file the copy's exercises were changed in.
+    fn put_back(&mut self) -> Result<()> {
         for file in self.changed.drain(..) {
             std::fs::copy(self.root.join(&file), self.copy.join(&file))
                 .with_context(|| format!("cannot restore {}", file.display()))?;
         }
-        for (exercise, code) in splices {
-            let path = self.copy.join(&exercise.file);
-            let source = std::fs::read_to_string(&path)
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            let spliced = solution_markers::splice_code(&source, &exercise.anchor, code)
-                .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
-            std::fs::write(&path, spliced)
-                .with_context(|| format!("cannot write {}", path.display()))?;
+        Ok(())
+    }
+
+    /// Rewrites the copy's file of `exercise` with `edit`, and remembers to put it back.
+    fn rewrite(
+        &mut self,
+        exercise: &Exercise,
+        edit: impl FnOnce(&str) -> Result<String, solution_markers::MarkerError>,
+    ) -> Result<()> {
+        let path = self.copy.join(&exercise.file);
+        let source = std::fs::read_to_string(&path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        let edited = edit(&source)
+            .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
+        std::fs::write(&path, edited)
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        if !self.changed.contains(&exercise.file) {
             self.changed.push(exercise.file.clone());
         }
         Ok(())
@@ -300,40 +320,20 @@ impl<'a> Trial<'a> {
         chosen: &[Exercise],
         all: &[Exercise],
     ) -> Result<HashMap<String, MarkedRun>> {
-        for file in self.changed.drain(..) {
-            std::fs::copy(self.root.join(&file), self.copy.join(&file))
-                .with_context(|| format!("cannot restore {}", file.display()))?;
-        }
+        self.put_back()?;
         for exercise in all {
-            let path = self.copy.join(&exercise.file);
-            let source = std::fs::read_to_string(&path)
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            let marked = solution_markers::mark_solution(
-                &source,
-                &exercise.anchor,
-                &exercise_calls::call_mark(exercise),
-            )
-            .with_context(|| format!("{}: {}", exercise.name, exercise.file.display()))?;
-            std::fs::write(&path, marked)
-                .with_context(|| format!("cannot write {}", path.display()))?;
-            if !self.changed.contains(&exercise.file) {
-                self.changed.push(exercise.file.clone());
-            }
+            self.rewrite(exercise, |source| {
+                let mark = exercise_calls::call_mark(exercise);
+                solution_markers::mark_solution(source, &exercise.anchor, &mark)
+            })?;
         }
-        let mut packages: Vec<&str> = Vec::new();
-        for exercise in chosen {
-            if let Some((package, _)) = progress::standard_check(&exercise.check)
-                && !packages.contains(&package)
-            {
-                packages.push(package);
-            }
-        }
+        let chosen: Vec<&Exercise> = chosen.iter().collect();
+        let packages = standard_packages(&chosen);
         let binaries = if packages.is_empty() {
             HashMap::new()
         } else {
             self.library_test_binaries(&packages)?
         };
-        let chosen: Vec<&Exercise> = chosen.iter().collect();
         let run_other = |check: &str, marks: &Path| -> Result<(bool, String)> {
             let marks = marks.to_string_lossy().replace('\'', "'\\''");
             let command = format!("{}='{marks}' {check}", exercise_calls::CALLS_FILE_VARIABLE);
@@ -356,17 +356,12 @@ impl<'a> Trial<'a> {
         &self,
         packages: &[&str],
     ) -> Result<HashMap<String, (PathBuf, PathBuf)>> {
-        let mut args = vec!["test", "--no-run", "--lib", "--message-format=json"];
-        for package in packages {
-            args.extend(["-p", package]);
-        }
-        args.extend(AS_THE_WORKSPACE_TESTS.split(' '));
-        let mut command = Command::new("cargo");
-        command
-            .args(&args)
-            .current_dir(&self.copy)
-            .stdin(Stdio::null());
-        self.build.apply(&mut command);
+        let (mut command, args) = compile_library_tests(
+            &self.copy,
+            &self.build,
+            packages,
+            &["--message-format=json"],
+        );
         let output = command
             .output()
             .with_context(|| format!("cannot run cargo in {}", self.copy.display()))?;
@@ -620,27 +615,16 @@ impl EditionBuild {
 /// `common` and every chapter once more. Building every target as well would compile each
 /// binary, benchmark and integration test of the edition and could find nothing more.
 fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -> Result<()> {
-    let mut args = vec!["test", "--no-run", "--lib"];
     let mut packages: Vec<&str> = exercises.iter().map(|e| e.chapter.as_str()).collect();
     packages.sort_unstable();
     packages.dedup();
-    for package in packages {
-        args.extend(["-p", package]);
-    }
-    args.extend(AS_THE_WORKSPACE_TESTS.split(' '));
+    let (mut command, args) = compile_library_tests(edition, build, &packages, &[]);
     println!(
         "Compiling it: cargo {} (target dir {})",
         args.join(" "),
         build.target_dir.display()
     );
-    let mut command = Command::new("cargo");
-    command
-        .args(&args)
-        .current_dir(edition)
-        .stdin(Stdio::null())
-        .stdout(Stdio::inherit())
-        .stderr(Stdio::piped());
-    build.apply(&mut command);
+    command.stdout(Stdio::inherit()).stderr(Stdio::piped());
     let output = command.output().context("cannot run cargo")?;
     let messages = String::from_utf8_lossy(&output.stderr);
     eprint!("{messages}");
@@ -664,6 +648,39 @@ fn build_edition(edition: &Path, build: &EditionBuild, exercises: &[Exercise]) -
     Ok(())
 }
 
+/// `cargo test --no-run --lib` of `packages` in the copy at `dir`, with `also`, as the checks
+/// compile them (with [`AS_THE_WORKSPACE_TESTS`]) and pointed at `build`; and its arguments.
+fn compile_library_tests<'a>(
+    dir: &Path,
+    build: &EditionBuild,
+    packages: &[&'a str],
+    also: &[&'a str],
+) -> (Command, Vec<&'a str>) {
+    let mut args = vec!["test", "--no-run", "--lib"];
+    args.extend(also);
+    for package in packages {
+        args.extend(["-p", package]);
+    }
+    args.extend(AS_THE_WORKSPACE_TESTS.split(' '));
+    let mut command = Command::new("cargo");
+    command.args(&args).current_dir(dir).stdin(Stdio::null());
+    build.apply(&mut command);
+    (command, args)
+}
+
+/// The packages of the checks of the usual form among `exercises`, each once, in order.
+fn standard_packages<'e>(exercises: &[&'e Exercise]) -> Vec<&'e str> {
+    let mut packages: Vec<&str> = Vec::new();
+    for exercise in exercises {
+        if let Some((package, _)) = progress::standard_check(&exercise.check)
+            && !packages.contains(&package)
+        {
+            packages.push(package);
+        }
+    }
+    packages
+}
+
 /// Runs the checks of `exercises` in `dir` and returns their outcomes in the same order.
 ///
 /// Checks of the usual form (`cargo test -p PACKAGE --lib exercise_...`) are run together: an
@@ -682,12 +699,10 @@ fn run_checks(
     build: Option<&EditionBuild>,
 ) -> Result<Vec<Outcome>> {
     let mut outcomes: Vec<Option<Outcome>> = exercises.iter().map(|_| None).collect();
-    let mut packages: Vec<&str> = Vec::new();
+    let packages = standard_packages(exercises);
     for (index, exercise) in exercises.iter().enumerate() {
-        match progress::standard_check(&exercise.check) {
-            Some((package, _)) if !packages.contains(&package) => packages.push(package),
-            Some(_) => {}
-            None => outcomes[index] = Some(run_check(&exercise.check, dir, build)?),
+        if progress::standard_check(&exercise.check).is_none() {
+            outcomes[index] = Some(run_check(&exercise.check, dir, build)?);
         }
     }
     let mut runs: Vec<(&str, Outcome)> = Vec::new();
@@ -740,10 +755,7 @@ fn run_checks(
             if this_package != *package {
                 continue;
             }
-            let picked: Vec<&(String, bool)> = results
-                .iter()
-                .filter(|(name, _)| name.contains(filter))
-                .collect();
+            let picked = progress::picked_by(&results, filter);
             outcomes[index] = Some(if !compiled {
                 Outcome {
                     passed: false,

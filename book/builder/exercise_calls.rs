@@ -17,6 +17,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use anyhow::{Context, Result, bail};
+use rayon::prelude::*;
 
 use crate::exercise_list::Exercise;
 use crate::progress;
@@ -96,11 +97,11 @@ fn package_name(id: &str) -> String {
     }
 }
 
-/// Runs each check of `exercises` in the copy at `dir` (already built, its library test
-/// binaries in `binaries`), each in processes of its own with a file of its own for the marks,
-/// a few side by side. A check of the usual form runs its package's test binary with its
-/// filter, as `cargo test` would, from the package's folder; any other runs as it is, through
-/// `run_other` with the variable to set.
+/// Runs each check of `exercises` in the copy (already built, its library test binaries in
+/// `binaries`), each in processes of its own with a file of its own for the marks in
+/// `marks_dir`, as many side by side as there are cores. A check of the usual form runs its
+/// package's test binary with its filter, as `cargo test` would, from the package's folder;
+/// any other runs as it is, through `run_other` with the variable to set.
 pub fn run_marked(
     exercises: &[&Exercise],
     binaries: &HashMap<String, (PathBuf, PathBuf)>,
@@ -109,33 +110,12 @@ pub fn run_marked(
 ) -> Result<Vec<MarkedRun>> {
     std::fs::create_dir_all(marks_dir)
         .with_context(|| format!("cannot create {}", marks_dir.display()))?;
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let mut runs: Vec<Option<Result<MarkedRun>>> = exercises.iter().map(|_| None).collect();
-    std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..workers)
-            .map(|_| {
-                scope.spawn(|| {
-                    let mut done = Vec::new();
-                    loop {
-                        let index = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                        let Some(exercise) = exercises.get(index) else {
-                            return done;
-                        };
-                        let marks = marks_dir.join(format!("{}.txt", exercise.name));
-                        done.push((index, run_one(exercise, binaries, &marks, run_other)));
-                    }
-                })
-            })
-            .collect();
-        for handle in handles {
-            for (index, run) in handle.join().expect("a check's runner panicked") {
-                runs[index] = Some(run);
-            }
-        }
-    });
-    runs.into_iter()
-        .map(|run| run.expect("every check ran"))
+    exercises
+        .par_iter()
+        .map(|exercise| {
+            let marks = marks_dir.join(format!("{}.txt", exercise.name));
+            run_one(exercise, binaries, &marks, run_other)
+        })
         .collect()
 }
 
@@ -170,11 +150,8 @@ fn run_one(
                 String::from_utf8_lossy(&output.stdout),
                 String::from_utf8_lossy(&output.stderr)
             );
-            let picked = progress::test_results(&text)
-                .into_iter()
-                .filter(|(name, _)| name.contains(filter))
-                .count();
-            if picked == 0 {
+            let results = progress::test_results(&text);
+            if progress::picked_by(&results, filter).is_empty() {
                 (false, format!("no test's name contains `{filter}`\n{text}"))
             } else {
                 (output.status.success(), text)

@@ -52,6 +52,15 @@ pub fn test_results(output: &str) -> Vec<(String, bool)> {
         .collect()
 }
 
+/// The results among `results` of the tests a check's `filter` picks: as `cargo test`'s
+/// filter, every test whose name contains it.
+pub fn picked_by<'r>(results: &'r [(String, bool)], filter: &str) -> Vec<&'r (String, bool)> {
+    results
+        .iter()
+        .filter(|(name, _)| name.contains(filter))
+        .collect()
+}
+
 /// The status of each exercise, in the list's order, running the checks in `root`.
 pub fn statuses(root: &Path, exercises: &[Exercise]) -> Result<Vec<Status>> {
     let mut by_package: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
@@ -91,14 +100,10 @@ pub fn statuses(root: &Path, exercises: &[Exercise]) -> Result<Vec<Status>> {
         let compiled = output.contains("running ");
         for &index in &by_package[package] {
             let (_, filter) = standard_check(&exercises[index].check).expect("standard");
-            let picked: Vec<bool> = results
-                .iter()
-                .filter(|(name, _)| name.contains(filter))
-                .map(|&(_, passed)| passed)
-                .collect();
+            let picked = picked_by(&results, filter);
             statuses[index] = if !compiled {
                 Status::DoesNotCompile
-            } else if !picked.is_empty() && picked.iter().all(|&passed| passed) {
+            } else if !picked.is_empty() && picked.iter().all(|(_, passed)| *passed) {
                 Status::Done
             } else {
                 Status::ToDo
