@@ -133,9 +133,9 @@ impl Triangle {
 ///
 /// *Watertight* means a ray through an edge shared by two triangles hits at least one of
 /// them. Both triangles compute that edge's function from the same two transformed vertices,
-/// and here each edge function is a difference of two products evaluated in `f64`, where the
-/// products of `f32`s are exact: so its sign is exact, and the two triangles see exactly
-/// opposite values and cannot both reject the ray.
+/// a difference of two products: in `f32` its sign is exact or it is 0, and where it is 0 it
+/// is computed again in `f64`, where the products of `f32`s are exact. So its sign is exact,
+/// and the two triangles see exactly opposite values and cannot both reject the ray.
 ///
 /// The test is split at what depends on the ray alone, which is this coordinate system: which
 /// axis becomes z and the shear that turns the direction into `(0, 0, 1)`. A walk through a
