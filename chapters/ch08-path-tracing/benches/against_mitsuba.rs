@@ -15,9 +15,9 @@
 //! `scalar_rgb`, then its `llvm_ad_rgb`, each with the round's seed. The report is the median
 //! samples per second of each and the ratios of ours to theirs, and what each traced its rays
 //! with: Mitsuba's Python wheels are built with Embree, which both variants then use for
-//! every shape. Mitsuba's time is that of
-//! `mi.render` alone (loading and, for the LLVM variant, compiling its kernels in a first
-//! render are left out); ours is `render --stats`' `seconds`, which also leaves the loading out.
+//! every shape. Mitsuba's time is that of `mi.render` alone (loading and, for the LLVM
+//! variant, compiling its kernels in a first render are left out); ours is `render --stats`'
+//! `seconds`, which also leaves the loading out.
 //!
 //! Speed is only half of it: a renderer that traces fewer rays per sample is faster and
 //! noisier. So the report also gives each renderer's noise per sample, the variance of a
