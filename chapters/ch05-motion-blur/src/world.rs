@@ -48,7 +48,7 @@ impl MotionScene {
         let first_index = scene.geometry.shapes().len();
         let mut moving = Vec::with_capacity(scene.moving.len());
         for (j, animated) in scene.moving.iter().enumerate() {
-            let surface = &scene.surfaces[first_index + j];
+            let surface = scene.surface((first_index + j) as u32);
             let motion = AnimatedTransform::new(&animated.keyframes).map_err(|e| {
                 let at = surface
                     .origin

@@ -120,7 +120,7 @@ fn absurdly_fast_and_far_motion_stays_finite() {
     // below move, and the centre of the image shows the spinning sphere's ring alone.
     let mut base = Builtin::Spinner.scene(DEFAULT_DEPTH, DEFAULT_SHUTTER);
     base.moving.clear();
-    base.surfaces.truncate(base.geometry.shapes().len());
+    base.surface_of_shape.truncate(base.geometry.shapes().len());
     let material = common::scene::Material::diffuse(Vec3::splat(0.7));
     let streak = vec![
         (0.0, Mat4::from_translation(Vec3::new(-1e6, 0.0, 0.0))),

@@ -59,16 +59,19 @@ fn rough_materials_become_lobes_with_a_note() {
         notes.iter().any(|n| n.contains("n = 2/alpha^2 - 2")),
         "{notes:?}"
     );
-    // The frosted pane is a cube: six faces, each frosted glass.
+    // The frosted pane is a cube: six faces, each frosted glass, sharing the cube's surface.
     let loaded = load_scene_file(&AGREEMENT.scenes_dir().join("frosted-glass.xml"), &[]).unwrap();
-    let frosted = loaded
-        .scene
-        .surfaces
-        .iter()
-        .filter(|s| matches!(s.material, Material::RoughGlass(_)))
-        .count();
-    assert_eq!(frosted, 6);
-    assert_eq!(loaded.scene.surfaces.len(), loaded.scene.shape_count());
+    let scene = &loaded.scene;
+    let frosted: Vec<u32> = (0..scene.shape_count() as u32)
+        .filter(|&shape| matches!(scene.surface(shape).material, Material::RoughGlass(_)))
+        .collect();
+    assert_eq!(frosted.len(), 6);
+    let cube = scene.surface_of_shape[frosted[0] as usize];
+    assert!(
+        frosted
+            .iter()
+            .all(|&shape| scene.surface_of_shape[shape as usize] == cube)
+    );
 }
 
 /// The scene file with `bsdf` as the material of its only shape, loaded and checked against

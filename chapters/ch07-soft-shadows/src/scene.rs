@@ -41,7 +41,7 @@ impl AreaLights {
         let mut lights = Vec::new();
         let mut shape_of_light = Vec::new();
         for (index, shape) in scene.geometry.shapes().iter().enumerate() {
-            if let Some(emitter) = scene.surfaces[index].emitter {
+            if let Some(emitter) = scene.surface(index as u32).emitter {
                 light_of_shape[index] = Some(lights.len() as u32);
                 shape_of_light.push(index as u32);
                 lights.push(AreaLight::new(light_shape(shape), emitter.radiance));

@@ -11,8 +11,12 @@ use glam::{Mat4, Vec3};
 #[derive(Default)]
 pub struct SceneBuilder {
     shapes: Vec<Shape>,
+    /// Every surface added, in the order added.
     surfaces: Vec<Surface>,
-    moving: Vec<(AnimatedShape, Surface)>,
+    /// For each still shape, its surface's index in `surfaces`.
+    surface_of_shape: Vec<u32>,
+    /// The moving shapes, each with its surface's index in `surfaces`.
+    moving: Vec<(AnimatedShape, u32)>,
     point_lights: Vec<PointLight>,
     directional_lights: Vec<DirectionalLight>,
     environment: Vec3,
@@ -27,9 +31,22 @@ impl SceneBuilder {
     }
 
     /// Adds a still shape, in world space, with its surface.
-    pub fn surface(mut self, shape: Shape, surface: Surface) -> Self {
-        self.shapes.push(shape);
-        self.surfaces.push(surface);
+    pub fn surface(self, shape: Shape, surface: Surface) -> Self {
+        self.shared_surface(std::iter::once(shape), surface)
+    }
+
+    /// Adds still shapes, in world space, that share one surface: the pieces of one shape of a
+    /// scene file, such as a mesh's triangles.
+    pub fn shared_surface(
+        mut self,
+        shapes: impl IntoIterator<Item = Shape>,
+        surface: Surface,
+    ) -> Self {
+        let index = self.add(surface);
+        for shape in shapes {
+            self.shapes.push(shape);
+            self.surface_of_shape.push(index);
+        }
         self
     }
 
@@ -49,17 +66,31 @@ impl SceneBuilder {
     }
 
     /// Adds every triangle of a mesh, all made of `material`.
-    pub fn mesh(mut self, mesh: &TriangleMesh, material: Material) -> Self {
-        for triangle in mesh.triangles() {
-            self = self.shape(Shape::Triangle(triangle), material.clone());
-        }
-        self
+    pub fn mesh(self, mesh: &TriangleMesh, material: Material) -> Self {
+        self.shared_surface(mesh.triangles().map(Shape::Triangle), plain(material))
     }
 
     /// Adds a moving shape, given in its own space, with its surface.
-    pub fn moving_surface(mut self, shape: AnimatedShape, surface: Surface) -> Self {
-        self.moving.push((shape, surface));
+    pub fn moving_surface(self, shape: AnimatedShape, surface: Surface) -> Self {
+        self.shared_moving_surface(std::iter::once(shape), surface)
+    }
+
+    /// Adds moving shapes, each given in its own space, that share one surface.
+    pub fn shared_moving_surface(
+        mut self,
+        shapes: impl IntoIterator<Item = AnimatedShape>,
+        surface: Surface,
+    ) -> Self {
+        let index = self.add(surface);
+        self.moving
+            .extend(shapes.into_iter().map(|shape| (shape, index)));
         self
+    }
+
+    /// Keeps `surface`; returns its index.
+    fn add(&mut self, surface: Surface) -> u32 {
+        self.surfaces.push(surface);
+        u32::try_from(self.surfaces.len() - 1).expect("at most u32::MAX surfaces")
     }
 
     /// Adds a shape made of `material` that moves: `keyframes` are `(time, object to world)`
@@ -101,14 +132,17 @@ impl SceneBuilder {
     /// Builds the BVH and the scene, seen by `camera` on `film`, with Mitsuba's `path`
     /// integrator limited to `max_depth` segments and its default sampler.
     pub fn build(self, camera: Camera, film: FilmSettings, max_depth: u32) -> Scene {
-        let (moving, moving_surfaces): (Vec<AnimatedShape>, Vec<Surface>) =
+        let (moving, moving_surfaces): (Vec<AnimatedShape>, Vec<u32>) =
             self.moving.into_iter().unzip();
-        let mut surfaces = self.surfaces;
-        surfaces.extend(moving_surfaces);
+        let (surfaces, surface_of_shape) = in_order_of_use(
+            self.surfaces,
+            self.surface_of_shape.into_iter().chain(moving_surfaces),
+        );
         Scene {
             geometry: Geometry::new(self.shapes),
             moving,
             surfaces,
+            surface_of_shape,
             bitmaps: self.bitmaps,
             point_lights: self.point_lights,
             directional_lights: self.directional_lights,
@@ -124,6 +158,29 @@ impl SceneBuilder {
             emission_grids: Default::default(),
         }
     }
+}
+
+/// The surfaces renumbered in the order of the shapes that first use them, and each shape's
+/// new number, from each shape's old one (still shapes first, then moving ones). Without shared
+/// surfaces, surface `i` is then shape `i`'s, whatever order the shapes were added in; a surface
+/// no shape uses is dropped.
+fn in_order_of_use(
+    surfaces: Vec<Surface>,
+    surface_of_shape: impl Iterator<Item = u32>,
+) -> (Vec<Surface>, Vec<u32>) {
+    let mut added: Vec<Option<Surface>> = surfaces.into_iter().map(Some).collect();
+    let mut new_number = vec![None; added.len()];
+    let mut in_order = Vec::new();
+    let numbers = surface_of_shape
+        .map(|old| {
+            let old = old as usize;
+            *new_number[old].get_or_insert_with(|| {
+                in_order.push(added[old].take().expect("each surface is moved once"));
+                (in_order.len() - 1) as u32
+            })
+        })
+        .collect();
+    (in_order, numbers)
 }
 
 /// A surface of `material` that does not glow, written nowhere.
@@ -163,6 +220,40 @@ mod tests {
         );
         assert_eq!(scene.surface(2).material, Material::mirror());
         assert_eq!(scene.moving.len(), 1);
+    }
+
+    #[test]
+    fn a_mesh_shares_one_surface_and_surfaces_follow_the_shapes() {
+        let frame = CameraFrame::look_at(Vec3::Z, Vec3::ZERO, Vec3::Y).unwrap();
+        let sphere = Shape::Sphere(Sphere::new(Vec3::ZERO, 1.0));
+        let mesh = TriangleMesh::bumpy_sphere(100);
+        let keyframes = vec![
+            (0.0, Mat4::IDENTITY),
+            (1.0, Mat4::from_translation(Vec3::X)),
+        ];
+        let scene = SceneBuilder::new()
+            .moving(sphere, keyframes, Material::mirror())
+            .mesh(&mesh, Material::diffuse(Vec3::splat(0.5)))
+            .shape(sphere, Material::glass(1.5))
+            .build(Camera::pinhole(frame, 40.0), FilmSettings::new(8, 8), 4);
+        let triangles = mesh.indices.len();
+        assert_eq!(scene.shape_count(), triangles + 2);
+        // The mesh's surface, the sphere's, then the moving sphere's: the shapes' order.
+        assert_eq!(scene.surfaces.len(), 3);
+        assert!(scene.surface_of_shape[..triangles].iter().all(|&s| s == 0));
+        assert_eq!(scene.surface_of_shape[triangles..], [1, 2]);
+        assert_eq!(
+            scene.surface(0).material,
+            Material::diffuse(Vec3::splat(0.5))
+        );
+        assert_eq!(
+            scene.surface(triangles as u32).material,
+            Material::glass(1.5)
+        );
+        assert_eq!(
+            scene.surface(triangles as u32 + 1).material,
+            Material::mirror()
+        );
     }
 
     #[test]

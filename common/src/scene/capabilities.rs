@@ -431,7 +431,14 @@ impl Scene {
             );
         }
         let still = self.geometry.shapes().len();
-        for (index, surface) in self.surfaces.iter().enumerate() {
+        // Each surface once, named by the first shape made of it (surfaces are numbered in
+        // that order); the pieces of one shape of a file all stand still or all move.
+        let mut first_shape = vec![None; self.surfaces.len()];
+        for (shape, &surface) in self.surface_of_shape.iter().enumerate() {
+            first_shape[surface as usize].get_or_insert(shape);
+        }
+        for (surface, first_shape) in self.surfaces.iter().zip(first_shape) {
+            let Some(index) = first_shape else { continue };
             let name = format!("shape {}", index + 1);
             let moves = index >= still;
             if moves {

@@ -69,8 +69,15 @@ pub struct Scene {
     /// The shapes that move, each in its own space with its keyframes; shape number
     /// `geometry.shapes().len() + j` is `moving[j]`.
     pub moving: Vec<AnimatedShape>,
-    /// What each shape is made of and whether it glows, still shapes first, then moving ones.
+    /// What the shapes are made of and whether they glow: one surface per shape of the scene
+    /// file, so that the triangles of a mesh share one. In the order of the shapes that first
+    /// use them (still shapes first, then moving ones), so that in a scene without meshes
+    /// surface `i` is shape `i`'s.
     pub surfaces: Vec<Surface>,
+    /// For each shape, still ones first, then moving ones: its surface's index in
+    /// [`surfaces`](Self::surfaces). Four bytes per triangle, where a surface of its own would
+    /// take hundreds, and the surfaces a render reads stay few enough to stay in the cache.
+    pub surface_of_shape: Vec<u32>,
     /// The images the materials' textures read, each once ([`Texture::Bitmap`] holds its
     /// number here).
     pub bitmaps: Vec<Bitmap>,
@@ -131,7 +138,7 @@ pub struct AnimatedShape {
 impl Scene {
     /// How many shapes the scene has, still and moving.
     pub fn shape_count(&self) -> usize {
-        self.surfaces.len()
+        self.surface_of_shape.len()
     }
 
     /// The radiance arriving along direction `direction` from outside the scene: the
@@ -146,7 +153,7 @@ impl Scene {
     /// The surface of shape number `shape`, as a hit reports it.
     #[inline]
     pub fn surface(&self, shape: u32) -> &Surface {
-        &self.surfaces[shape as usize]
+        &self.surfaces[self.surface_of_shape[shape as usize] as usize]
     }
 
     // ANCHOR: albedo

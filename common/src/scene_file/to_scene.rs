@@ -90,17 +90,15 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
         };
         let pieces = world_shapes(&placed)
             .map_err(|message| error(position, format!("the {kind} shape: {message}")))?;
-        for piece in pieces {
-            builder = if keyframes.is_empty() {
-                builder.surface(piece, surface.clone())
-            } else {
-                let animated = AnimatedShape {
-                    shape: piece,
-                    keyframes: keyframes.clone(),
-                };
-                builder.moving_surface(animated, surface.clone())
-            };
-        }
+        builder = if keyframes.is_empty() {
+            builder.shared_surface(pieces, surface)
+        } else {
+            let animated = pieces.into_iter().map(|piece| AnimatedShape {
+                shape: piece,
+                keyframes: keyframes.clone(),
+            });
+            builder.shared_moving_surface(animated, surface)
+        };
     }
     let mut environment = Vec3::ZERO;
     let mut environment_position = None;

@@ -59,13 +59,13 @@ pub fn frozen_at(world: &MotionScene, time: f32) -> Scene {
     let still = &world.scene;
     let mut builder = SceneBuilder::new().environment(still.environment);
     for (index, shape) in still.geometry.shapes().iter().enumerate() {
-        builder = builder.surface(*shape, still.surfaces[index].clone());
+        builder = builder.surface(*shape, still.surface(index as u32).clone());
     }
     let first_moving = still.geometry.shapes().len();
     for (index, moving) in world.moving.shapes().iter().enumerate() {
         let m = moving.motion.at(time);
         let placed = place(&moving.shape, &m);
-        builder = builder.surface(placed, still.surfaces[first_moving + index].clone());
+        builder = builder.surface(placed, still.surface((first_moving + index) as u32).clone());
     }
     for light in &still.point_lights {
         builder = builder.light(*light);
@@ -111,6 +111,9 @@ pub fn with_moving(
         emitter: None,
         origin: None,
     });
+    scene
+        .surface_of_shape
+        .push((scene.surfaces.len() - 1) as u32);
     scene
 }
 

@@ -51,12 +51,15 @@ fn still_shapes_come_first_then_moving_ones_each_piece_with_its_surface() {
     assert_eq!(scene.geometry.shapes().len(), 6, "the still cube's faces");
     assert_eq!(scene.moving.len(), 6, "the moving cube's faces");
     assert!(matches!(
-        scene.surfaces[0].material,
+        scene.surface(0).material,
         Material::Dielectric { .. }
     ));
-    assert_eq!(scene.surfaces[6].material, Material::mirror());
-    assert_eq!(scene.surfaces[6].origin.as_ref().unwrap().line, 2);
+    assert_eq!(scene.surface(6).material, Material::mirror());
+    assert_eq!(scene.surface(6).origin.as_ref().unwrap().line, 2);
     assert_eq!(scene.moving[0].keyframes.len(), 2);
+    // Each cube's faces share its one surface, numbered in the order of the shapes.
+    assert_eq!(scene.surfaces.len(), 2);
+    assert_eq!(scene.surface_of_shape, [0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1]);
 }
 
 #[test]
