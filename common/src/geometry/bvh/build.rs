@@ -29,6 +29,11 @@ const MAX_SAH_DEPTH: usize = 32;
 /// No tree is deeper than this; the traversal's fixed-size stack relies on it.
 pub(super) const MAX_DEPTH: usize = MAX_SAH_DEPTH + 32;
 
+/// A node over more primitives than this builds its two subtrees at once, on two threads
+/// when there are two. Below it, a subtree is too quick to build for the hand-over to pay.
+/// The threshold is a count, not a thread count, so the tree is the same on any machine.
+const PARALLEL_BUILD: usize = 16 * 1024;
+
 /// The binary tree the SAH builds, before [`super::wide`] collapses it into nodes of four.
 #[derive(Clone, Debug, Default)]
 pub(super) struct BinaryTree {
@@ -98,6 +103,16 @@ impl Bvh {
 impl BinaryTree {
     /// The binary SAH tree over the boxes (see [`Bvh::build`]).
     pub(super) fn build(primitive_bounds: &[Aabb], batched: &[bool]) -> BinaryTree {
+        BinaryTree::build_splitting_work(primitive_bounds, batched, PARALLEL_BUILD)
+    }
+
+    /// [`build`](Self::build), building the two subtrees of a node over more than
+    /// `parallel_above` primitives at once.
+    fn build_splitting_work(
+        primitive_bounds: &[Aabb],
+        batched: &[bool],
+        parallel_above: usize,
+    ) -> BinaryTree {
         let mut primitives: Vec<BuildPrimitive> = primitive_bounds
             .iter()
             .enumerate()
@@ -115,14 +130,19 @@ impl BinaryTree {
             depth: 0,
         };
         if !primitives.is_empty() {
-            tree.add_subtree(&mut primitives, 1);
+            tree.add_subtree(&mut primitives, 1, parallel_above);
         }
         debug_assert!(tree.depth <= MAX_DEPTH);
         tree
     }
 
     /// Appends the subtree over `primitives` (in depth-first order) and returns its root's index.
-    fn add_subtree(&mut self, primitives: &mut [BuildPrimitive], depth: usize) -> usize {
+    fn add_subtree(
+        &mut self,
+        primitives: &mut [BuildPrimitive],
+        depth: usize,
+        parallel_above: usize,
+    ) -> usize {
         self.depth = self.depth.max(depth);
         let bounds = primitives
             .iter()
@@ -151,13 +171,65 @@ impl BinaryTree {
                     bounds,
                     kind: NodeKind::Leaf { first: 0, count: 0 },
                 });
+                let parallel = primitives.len() > parallel_above;
                 let (first_half, second_half) = primitives.split_at_mut(mid);
-                self.add_subtree(first_half, depth + 1);
-                let second_child = self.add_subtree(second_half, depth + 1) as u32;
-                self.nodes[index].kind = NodeKind::Interior { second_child };
+                let second_child = if parallel {
+                    let (first, second) = rayon::join(
+                        || BinaryTree::subtree(first_half, depth + 1, parallel_above),
+                        || BinaryTree::subtree(second_half, depth + 1, parallel_above),
+                    );
+                    self.append(first);
+                    self.append(second)
+                } else {
+                    self.add_subtree(first_half, depth + 1, parallel_above);
+                    self.add_subtree(second_half, depth + 1, parallel_above)
+                };
+                self.nodes[index].kind = NodeKind::Interior {
+                    second_child: second_child as u32,
+                };
             }
         }
         index
+    }
+
+    /// The subtree over `primitives`, whose root is `depth` nodes deep, as a tree of its own.
+    fn subtree(
+        primitives: &mut [BuildPrimitive],
+        depth: usize,
+        parallel_above: usize,
+    ) -> BinaryTree {
+        let mut tree = BinaryTree {
+            nodes: Vec::with_capacity(2 * primitives.len()),
+            primitive_indices: Vec::with_capacity(primitives.len()),
+            depth: 0,
+        };
+        tree.add_subtree(primitives, depth, parallel_above);
+        tree
+    }
+
+    /// Appends a [`subtree`](Self::subtree) and returns its root's index: the nodes and
+    /// primitives land exactly where [`add_subtree`](Self::add_subtree) would have put them,
+    /// since its first leaf starts a block either way.
+    fn append(&mut self, subtree: BinaryTree) -> usize {
+        let root = self.nodes.len();
+        let first_position = self.primitive_indices.len().next_multiple_of(LEAF_BLOCK);
+        self.primitive_indices.resize(first_position, EMPTY_SLOT);
+        self.primitive_indices.extend(subtree.primitive_indices);
+        self.nodes
+            .extend(subtree.nodes.into_iter().map(|node| Node {
+                kind: match node.kind {
+                    NodeKind::Leaf { first, count } => NodeKind::Leaf {
+                        first: first + first_position as u32,
+                        count,
+                    },
+                    NodeKind::Interior { second_child } => NodeKind::Interior {
+                        second_child: second_child + root as u32,
+                    },
+                },
+                ..node
+            }));
+        self.depth = self.depth.max(subtree.depth);
+        root
     }
 }
 
@@ -276,4 +348,32 @@ fn partition<T>(items: &mut [T], goes_first: impl Fn(&T) -> bool) -> usize {
         }
     }
     first_count
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::TriangleMesh;
+
+    /// Building subtrees apart and appending them must give exactly the tree built in one go,
+    /// node for node and slot for slot, or the tree would depend on where the work was split.
+    #[test]
+    fn subtrees_built_apart_make_the_tree_built_in_one_go() {
+        let mesh = TriangleMesh::bumpy_sphere(5_000);
+        let mut bounds: Vec<Aabb> = mesh
+            .triangles()
+            .map(|triangle| Aabb::from_point_set(triangle.p))
+            .collect();
+        // A few primitives tested one by one, and an empty box, among the batched triangles.
+        bounds[17] = Aabb::from_points(Vec3::splat(-0.1), Vec3::splat(0.1));
+        bounds[400] = Aabb::empty();
+        let batched: Vec<bool> = (0..bounds.len()).map(|i| i % 97 != 0).collect();
+        let in_one_go = BinaryTree::build_splitting_work(&bounds, &batched, usize::MAX);
+        for parallel_above in [0, 7, 64, 1000] {
+            let apart = BinaryTree::build_splitting_work(&bounds, &batched, parallel_above);
+            assert_eq!(apart.nodes, in_one_go.nodes, "split above {parallel_above}");
+            assert_eq!(apart.primitive_indices, in_one_go.primitive_indices);
+            assert_eq!(apart.depth, in_one_go.depth);
+        }
+    }
 }
