@@ -70,13 +70,13 @@ pub struct Scene {
     /// `geometry.shapes().len() + j` is `moving[j]`.
     pub moving: Vec<AnimatedShape>,
     /// What the shapes are made of and whether they glow: one surface per shape of the scene
-    /// file, so that the triangles of a mesh share one. In the order of the shapes that first
-    /// use them (still shapes first, then moving ones), so that in a scene without meshes
-    /// surface `i` is shape `i`'s.
+    /// file, so that the pieces of one (a mesh's triangles, a cube's faces) share it. In the
+    /// order of the shapes that first use them (still shapes first, then moving ones), so that
+    /// where every shape is a single piece, surface `i` is shape `i`'s.
     pub surfaces: Vec<Surface>,
     /// For each shape, still ones first, then moving ones: its surface's index in
-    /// [`surfaces`](Self::surfaces). Four bytes per triangle, where a surface of its own would
-    /// take hundreds, and the surfaces a render reads stay few enough to stay in the cache.
+    /// [`surfaces`](Self::surfaces). Four bytes per triangle of a mesh, where a surface of
+    /// its own takes hundreds.
     pub surface_of_shape: Vec<u32>,
     /// The images the materials' textures read, each once ([`Texture::Bitmap`] holds its
     /// number here).
