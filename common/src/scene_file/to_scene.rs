@@ -2,9 +2,9 @@
 //!
 //! Shapes are placed in world space ([`world_shapes`]), a moving shape in its own space with
 //! its keyframes; every piece of a shape (a cube's six faces, a mesh's triangles) shares the
-//! shape's one surface; the still shapes come first, in file order, then the moving ones. What the
-//! file asks that no chapter can render, or that makes no sense, is refused here, pointing at
-//! the element.
+//! shape's one surface; the still shapes come first, in file order, then the moving ones.
+//! What the file asks that no chapter can render, or that makes no sense, is refused here,
+//! pointing at the element.
 
 use std::path::Path;
 
