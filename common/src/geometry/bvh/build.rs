@@ -124,14 +124,10 @@ impl BinaryTree {
                 centroid: bounds.centroid(),
             })
             .collect();
-        let mut tree = BinaryTree {
-            nodes: Vec::with_capacity(2 * primitives.len()),
-            primitive_indices: Vec::with_capacity(primitives.len()),
-            depth: 0,
-        };
-        if !primitives.is_empty() {
-            tree.add_subtree(&mut primitives, 1, parallel_above);
+        if primitives.is_empty() {
+            return BinaryTree::default();
         }
+        let tree = BinaryTree::subtree(&mut primitives, 1, parallel_above);
         debug_assert!(tree.depth <= MAX_DEPTH);
         tree
     }
