@@ -32,9 +32,12 @@ pub fn assert_refused(binary: &str, args: &[&str], expected: &str) {
     );
 }
 
-/// Where a failing exercise check writes its pictures: `target/exercises/<exercise>/` of the
-/// build the test runs from (found from the test binary's own place,
-/// `target/<profile>/deps/`), created if missing.
+/// Where a failing exercise check writes its pictures:
+/// `target/exercises/<exercise>/<test>/` of the build the test runs from (found from the test
+/// binary's own place, `target/<profile>/deps/`), created if missing.
+///
+/// `<test>` is the name of the test that calls it ([`test_name`]), so that two failing tests of
+/// one exercise do not overwrite each other's pictures.
 pub fn exercise_output_dir(exercise: &str) -> PathBuf {
     let exe = std::env::current_exe().unwrap_or_default();
     let target = exe
@@ -43,15 +46,40 @@ pub fn exercise_output_dir(exercise: &str) -> PathBuf {
         .map(PathBuf::from)
         .or_else(|| exe.ancestors().nth(3).map(PathBuf::from))
         .unwrap_or_else(|| PathBuf::from("target"));
-    let dir = target.join("exercises").join(exercise);
+    let dir = target.join("exercises").join(exercise).join(test_name());
     // A check that cannot write its picture still reports its finding in words.
     let _ = std::fs::create_dir_all(&dir);
     dir
 }
 
+/// The name of the running test, from the name of its thread: libtest names each test's thread
+/// after the test's path (`tracer::tests::exercise_trace_renders`), and this is its last part
+/// (`exercise_trace_renders`). A test that runs its check on a thread of its own gives that
+/// thread its own name. Outside a named thread (a test run on the main thread), `test`.
+pub fn test_name() -> String {
+    let thread = std::thread::current();
+    match thread.name() {
+        Some(name) if name != "main" && !name.is_empty() => {
+            let last = name.rsplit("::").next().unwrap_or(name);
+            // Only what a folder's name may hold on every system.
+            last.chars()
+                .map(|c| {
+                    if c.is_ascii_alphanumeric() || c == '_' || c == '-' {
+                        c
+                    } else {
+                        '_'
+                    }
+                })
+                .collect()
+        }
+        _ => "test".to_string(),
+    }
+}
+
 /// The failure message of a warp that is not uniform over its shape, after drawing the
 /// picture that shows where: a histogram of `points` (the student's warp of a regular grid)
-/// against the uniform `density` over `domain`, written under `target/exercises/<exercise>/`.
+/// against the uniform `density` over `domain`, written under
+/// `target/exercises/<exercise>/<test>/` ([`exercise_output_dir`]).
 pub fn not_uniform(
     exercise: &str,
     function: &str,
@@ -81,7 +109,12 @@ pub fn not_uniform(
 
 /// Writes the pictures a failing image check shows the student: `mine.png`, `expected.png` and
 /// `difference.png` (the absolute difference, scaled so that its largest channel is white)
-/// under `target/exercises/<exercise>/`, and returns the sentence that points at them.
+/// under `target/exercises/<exercise>/<test>/` ([`exercise_output_dir`]), and returns the
+/// sentence that points at them.
+///
+/// A check renders tiny pictures, to be quick; each is enlarged by a whole factor, every pixel
+/// a square block ([`enlarged`]), so that the long side has at least [`PICTURE_SIZE`] pixels
+/// and the student sees each pixel crisp.
 ///
 /// A check calls it only once it has found, in words, what is wrong; the pictures show where.
 pub fn image_comparison(exercise: &str, mine: &Image, expected: &Image) -> String {
@@ -93,7 +126,9 @@ pub fn image_comparison(exercise: &str, mine: &Image, expected: &Image) -> Strin
         ("difference.png", &difference),
     ]
     .into_iter()
-    .try_for_each(|(name, image)| crate::output::write_image(&dir.join(name), image));
+    .try_for_each(|(name, image)| {
+        crate::output::write_image(&dir.join(name), &enlarged(image, PICTURE_SIZE))
+    });
     match written {
         Ok(()) => format!(
             "see {} (mine.png, expected.png and difference.png, brightest where they differ most)",
@@ -101,6 +136,27 @@ pub fn image_comparison(exercise: &str, mine: &Image, expected: &Image) -> Strin
         ),
         Err(error) => format!("(the pictures could not be written: {error})"),
     }
+}
+
+/// The fewest pixels on the long side of a picture a failing check writes.
+pub const PICTURE_SIZE: u32 = 256;
+
+/// `image` enlarged by the smallest whole factor that gives its long side at least `size`
+/// pixels, each pixel copied into a square block (nearest neighbour, so edges stay sharp); as
+/// it is when it is that large already.
+pub fn enlarged(image: &Image, size: u32) -> Image {
+    let long_side = image.width.max(image.height).max(1);
+    let factor = size.div_ceil(long_side).max(1);
+    if factor == 1 {
+        return image.clone();
+    }
+    let mut large = Image::new(image.width * factor, image.height * factor);
+    for y in 0..large.height {
+        for x in 0..large.width {
+            large.set(x, y, image.get(x / factor, y / factor));
+        }
+    }
+    large
 }
 
 /// `|mine - expected|` per channel, divided by its largest value so the worst pixel is white;
@@ -303,6 +359,47 @@ mod tests {
         assert_eq!(difference.get(0, 0), Vec3::ZERO);
         assert_eq!(difference.get(1, 0), Vec3::new(0.5, 0.0, 1.0));
         assert_eq!(difference.get(2, 0), Vec3::new(1.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn small_pictures_are_enlarged_by_a_whole_factor_with_square_pixels() {
+        let mut image = Image::new(24, 18);
+        image.set(3, 2, Vec3::ONE);
+        let large = enlarged(&image, PICTURE_SIZE);
+        // 256 / 24 rounds up to 11: 264 x 198.
+        assert_eq!((large.width, large.height), (264, 198));
+        for y in 0..large.height {
+            for x in 0..large.width {
+                let inside = (33..44).contains(&x) && (22..33).contains(&y);
+                assert_eq!(large.get(x, y), Vec3::splat(f32::from(u8::from(inside))));
+            }
+        }
+        // Large enough already: kept as it is.
+        let big = Image::new(300, 10);
+        assert_eq!(enlarged(&big, PICTURE_SIZE), big);
+    }
+
+    #[test]
+    fn each_test_writes_its_pictures_into_its_own_folder() {
+        // libtest runs this on a thread named after the test's path.
+        let dir = exercise_output_dir("test-support-example");
+        assert_eq!(
+            dir.file_name().and_then(|name| name.to_str()),
+            Some("each_test_writes_its_pictures_into_its_own_folder")
+        );
+        assert!(dir.ends_with(
+            "exercises/test-support-example/each_test_writes_its_pictures_into_its_own_folder"
+        ));
+        assert!(dir.is_dir());
+        // A thread of a check's own carries the name it is given.
+        let named = std::thread::Builder::new()
+            .name("chapter::tests::exercise_other".to_string())
+            .spawn(test_name)
+            .unwrap()
+            .join()
+            .unwrap();
+        assert_eq!(named, "exercise_other");
+        let _ = std::fs::remove_dir_all(dir.parent().unwrap());
     }
 
     #[test]

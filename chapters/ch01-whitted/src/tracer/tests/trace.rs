@@ -291,10 +291,15 @@ fn check_at_depth(max_depth: u32) {
 }
 
 /// Runs `check` on a thread with a deep stack, so that a recursion that does not stop is
-/// caught by the world's count of rays rather than by a stack overflow.
+/// caught by the world's count of rays rather than by a stack overflow. The thread takes the
+/// test's name, under which a failing check writes its pictures.
 fn with_deep_stack(check: impl FnOnce() + Send + 'static) {
+    let name = std::thread::current()
+        .name()
+        .unwrap_or("the check of trace")
+        .to_string();
     let handle = std::thread::Builder::new()
-        .name("the check of trace".to_string())
+        .name(name)
         .stack_size(256 << 20)
         .spawn(check)
         .expect("a thread for the check");
