@@ -19,6 +19,7 @@ use anyhow::{Context, Result, bail};
 
 use crate::exercise_calls::{self, MarkedRun};
 use crate::exercise_list::{Exercise, LIST_PATH, WrongAnswer};
+use crate::exercise_needs;
 use crate::progress;
 use crate::solution_markers;
 use crate::student_edition;
@@ -37,6 +38,7 @@ pub fn run(
     exercises: &[Exercise],
     selected: &dyn Fn(&Exercise) -> bool,
     wrong_answers_only: bool,
+    write_needs: bool,
 ) -> Result<()> {
     if exercises.is_empty() {
         // Still worth one look: a solution marker nobody listed would leak to students.
@@ -101,6 +103,7 @@ pub fn run(
         let mut trial = Trial::over_edition(root, edition, edition_build, exercises);
         let runs = trial.run_marked(&chosen, exercises)?;
         prove_in_order(exercises, selected, &runs)?;
+        exercise_needs::prove(root, exercises, selected, &runs, write_needs)?;
         println!("({:.0} s so far)", started.elapsed().as_secs_f64());
         prove_wrong_answers(&mut trial, &chosen, &runs)?;
         println!(
@@ -923,6 +926,7 @@ mod tests {
             anchor: name.into(),
             check: format!("cargo test -p {chapter} --lib exercise_{name}"),
             hint: "Which part changes?".into(),
+            needs: Vec::new(),
             wrong: Vec::new(),
         }
     }

@@ -31,8 +31,14 @@ pub struct Exercise {
     pub anchor: String,
     /// The one shell command, run from the workspace root, that passes once it is solved.
     pub check: String,
-    /// A nudge for the stuck. Its first line doubles as the message of the student's `todo!`.
+    /// A nudge for the stuck. Its first line doubles as the message of the student's stub.
     pub hint: String,
+    /// The other exercises whose code the check runs, in the list's order: the check cannot
+    /// pass until they are written too. `check-exercises` measures the set and refuses a list
+    /// that says otherwise, so the student can trust it (`exercises` and `progress` show it,
+    /// `checkpoint --needs` puts them in).
+    #[serde(default)]
+    pub needs: Vec<String>,
     /// Plausible wrong answers, each of which the check must refuse with its own words.
     #[serde(default)]
     pub wrong: Vec<WrongAnswer>,
@@ -53,7 +59,7 @@ pub struct WrongAnswer {
 }
 
 impl Exercise {
-    /// The message of the `todo!` that replaces the solution in the student edition.
+    /// The message of the stub that replaces the solution in the student edition.
     pub fn todo_message(&self) -> String {
         match self
             .hint
@@ -151,6 +157,19 @@ pub fn validate(workspace: &Path, exercises: &[Exercise]) -> Vec<String> {
                 exercise.anchor
             )),
             Err(error) => complain(format!("in `{}`, {error}", exercise.file.display())),
+        }
+        for (position, need) in exercise.needs.iter().enumerate() {
+            match exercises.iter().position(|other| &other.name == need) {
+                None => complain(format!("`needs` names `{need}`, which is not listed")),
+                Some(at) if at >= index => complain(format!(
+                    "`needs` names `{need}`, which is not listed before it: the exercises must \
+                     be doable in order"
+                )),
+                Some(_) if exercise.needs[..position].contains(need) => {
+                    complain(format!("`needs` names `{need}` twice"))
+                }
+                Some(_) => {}
+            }
         }
         for (number, wrong) in exercise.wrong.iter().enumerate() {
             for (field, value) in [
@@ -278,6 +297,28 @@ mod tests {
             problems[0].contains("wrong answer #2: `says` is empty"),
             "{problems:?}"
         );
+    }
+
+    #[test]
+    fn needs_name_earlier_exercises_once() {
+        let dir = workspace_with_source();
+        let text = format!(
+            "{}{}needs = [\"ch01-a\", \"ch01-a\", \"ch01-c\", \"ch01-none\", \"ch01-b\"]\n{}",
+            entry("ch01-a", "src/optics.rs", "reflect"),
+            entry("ch01-b", "src/optics.rs", "reflect"),
+            entry("ch01-c", "src/optics.rs", "reflect"),
+        );
+        let exercises = parse(&text).unwrap();
+        assert_eq!(exercises[1].needs.len(), 5);
+        let problems = validate(dir.path(), &exercises).join("\n");
+        assert!(
+            problems.contains("`ch01-b`: `needs` names `ch01-a` twice"),
+            "{problems}"
+        );
+        assert!(problems.contains("`needs` names `ch01-c`, which is not listed before it"));
+        assert!(problems.contains("`needs` names `ch01-none`, which is not listed"));
+        assert!(problems.contains("`needs` names `ch01-b`, which is not listed before it"));
+        assert!(!problems.contains("names `ch01-a`, which"), "{problems}");
     }
 
     #[test]

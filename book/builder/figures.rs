@@ -6,35 +6,55 @@
 //! `![](figures/ch01/spheres.png)`.
 
 use std::path::Path;
-use std::time::Instant;
 
 use anyhow::{Context, Result};
 
 /// A chapter's figure writer: fills `out_dir` with PNG and CSV files. With `quick` set it makes
 /// small, fast versions (for CI and for checking a page's layout); otherwise full quality.
+#[cfg(feature = "figures")]
 pub type WriteFigures = fn(out_dir: &Path, quick: bool) -> Result<()>;
 
-/// The chapters with figures, in book order: a chapter id (its figure directory) and its writer.
-/// A new chapter registers its figures by adding one line here.
-pub const CHAPTERS: &[(&str, WriteFigures)] = &[
-    ("ch01", ch01_whitted::figures::write_all),
-    ("ch02", ch02_monte_carlo::figures::write_all),
-    ("ch03", ch03_anti_aliasing::figures::write_all),
-    ("ch04", ch04_depth_of_field::figures::write_all),
-    ("ch05", ch05_motion_blur::figures::write_all),
-    ("ch06", ch06_fuzzy_reflections::figures::write_all),
-    ("ch07", ch07_soft_shadows::figures::write_all),
-    ("ch08", ch08_path_tracing::figures::write_all),
+/// The chapters with figures, in book order: a chapter id (its figure directory) and its
+/// package, whose binary writes the same figures (`figures --out DIR [--quick]`). A new chapter
+/// registers its figures by adding one line here and one to [`WRITERS`].
+pub const CHAPTERS: &[(&str, &str)] = &[
+    ("ch01", "ch01-whitted"),
+    ("ch02", "ch02-monte-carlo"),
+    ("ch03", "ch03-anti-aliasing"),
+    ("ch04", "ch04-depth-of-field"),
+    ("ch05", "ch05-motion-blur"),
+    ("ch06", "ch06-fuzzy-reflections"),
+    ("ch07", "ch07-soft-shadows"),
+    ("ch08", "ch08-path-tracing"),
 ];
+
+/// Each chapter's figure writer, in the order of [`CHAPTERS`]. Only the `figures` feature
+/// links the chapters into the builder: without it (the student edition's default), the tools
+/// around the exercises start without compiling any chapter.
+#[cfg(feature = "figures")]
+const WRITERS: &[WriteFigures] = &[
+    ch01_whitted::figures::write_all,
+    ch02_monte_carlo::figures::write_all,
+    ch03_anti_aliasing::figures::write_all,
+    ch04_depth_of_field::figures::write_all,
+    ch05_motion_blur::figures::write_all,
+    ch06_fuzzy_reflections::figures::write_all,
+    ch07_soft_shadows::figures::write_all,
+    ch08_path_tracing::figures::write_all,
+];
+
+/// The name of the table of every figure's cost, beside the chapters' folders.
+pub const COST_TABLE: &str = "figure-times.md";
 
 /// Regenerates every chapter's figures under `figures_dir`, starting each chapter from an empty
 /// directory so that no figure the code no longer makes lingers on a page.
+#[cfg(feature = "figures")]
 pub fn regenerate_all(figures_dir: &Path, quick: bool) -> Result<()> {
     let quality = if quick { "quick" } else { "full quality" };
-    for (chapter, write_all) in CHAPTERS {
+    for ((chapter, _), write_all) in CHAPTERS.iter().zip(WRITERS) {
         let out_dir = figures_dir.join(chapter);
         println!("Figures of {chapter} ({quality}) -> {}", out_dir.display());
-        let started = Instant::now();
+        let started = std::time::Instant::now();
 
         if out_dir.exists() {
             std::fs::remove_dir_all(&out_dir)
@@ -46,10 +66,14 @@ pub fn regenerate_all(figures_dir: &Path, quick: bool) -> Result<()> {
 
         println!("  done in {:.1} s", started.elapsed().as_secs_f64());
     }
+    write_cost_table(figures_dir)
+}
+
+/// Writes [`COST_TABLE`] from the chapters' folders under `figures_dir`.
+pub fn write_cost_table(figures_dir: &Path) -> Result<()> {
     let table = cost_table(figures_dir)?;
-    common::output::write_text(&figures_dir.join("figure-times.md"), &table)
-        .context("cannot write the table of figure times")?;
-    Ok(())
+    common::output::write_text(&figures_dir.join(COST_TABLE), &table)
+        .context("cannot write the table of figure times")
 }
 
 /// What every figure of this run cost, from each chapter's `figure-times.csv`: a Markdown
@@ -89,6 +113,12 @@ fn cost_table(figures_dir: &Path) -> Result<String> {
 mod tests {
     use super::*;
     use common::figure_set::TIMES_FILE;
+
+    #[cfg(feature = "figures")]
+    #[test]
+    fn every_chapter_has_its_writer() {
+        assert_eq!(CHAPTERS.len(), WRITERS.len());
+    }
 
     #[test]
     fn the_cost_table_lists_every_figure_and_the_totals() {

@@ -1,12 +1,16 @@
 //! `progress --site`: the student's own site, like a lab report. Each chapter whose exercises
 //! (and those of every chapter before it) are done gets its figures rendered by the student's
-//! code, and the pages show them beside the reference figures; a chapter not done yet shows the
-//! reference figures alone, saying so.
+//! code, and the pages show them beside the reference figures, side by side at the same size;
+//! a chapter not done yet shows the reference figures alone and says so, at the top of its page
+//! and under each figure.
 //!
 //! The reference figures are the workbook's, copied into the student edition by `book student`
-//! (into [`REFERENCE_DIR`]) when the workbook's site had been built.
+//! (into [`REFERENCE_DIR`]) when the workbook's site had been built. The student's figures are
+//! rendered by each finished chapter's own binary (`figures --out DIR`), so this is the one
+//! tool besides the checks that compiles the student's code, and only the chapters it renders.
 
 use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
 
 use anyhow::{Context, Result, bail};
 use mdbook_driver::book::Book;
@@ -18,8 +22,18 @@ use crate::progress::Status;
 
 /// Where a student edition keeps the workbook's figures, relative to the workspace root.
 pub const REFERENCE_DIR: &str = "book/reference-figures";
-/// Where the site finds them, relative to the book's `src/`.
-const REFERENCE_IN_SITE: &str = "reference-figures";
+/// Where the site finds them, relative to the book's `src/`: inside the generated `figures/`,
+/// which the prose check leaves alone, as it leaves the student's own figures.
+const REFERENCE_IN_SITE: &str = "figures/reference";
+
+/// How the student's figures are rendered.
+#[derive(Clone, Copy, Debug)]
+pub struct Quality {
+    /// Full-size figures instead of quick ones.
+    pub full: bool,
+    /// Build the chapters' binaries optimised (`--release`).
+    pub release: bool,
+}
 
 /// Renders the figures of every chapter the student has finished, puts the reference figures
 /// beside them, and builds the site; returns the path of its front page.
@@ -27,7 +41,7 @@ pub fn build(
     root: &Path,
     exercises: &[Exercise],
     statuses: &[Status],
-    full: bool,
+    quality: Quality,
 ) -> Result<PathBuf> {
     let reference = root.join(REFERENCE_DIR);
     if !reference.is_dir() {
@@ -39,56 +53,93 @@ pub fn build(
     }
     let book_dir = root.join("book");
     let figures_dir = book_dir.join("src").join("figures");
-    let mut yours = Vec::new();
-    for (chapter, write_all) in figures::CHAPTERS {
+    let in_site = book_dir.join("src").join(REFERENCE_IN_SITE);
+    replace_dir(&in_site)?;
+    copy_dir(&reference, &in_site)?;
+    let mut chapters = Vec::new();
+    for &(chapter, package) in figures::CHAPTERS {
         let out_dir = figures_dir.join(chapter);
-        if out_dir.exists() {
-            std::fs::remove_dir_all(&out_dir)
-                .with_context(|| format!("cannot clear {}", out_dir.display()))?;
-        }
-        std::fs::create_dir_all(&out_dir)
-            .with_context(|| format!("cannot create {}", out_dir.display()))?;
-        let ready = exercises
-            .iter()
-            .zip(statuses)
-            .filter(|(exercise, _)| chapter_id(&exercise.chapter) <= *chapter)
-            .all(|(_, status)| *status == Status::Done);
-        let rendered = ready && {
+        replace_dir(&out_dir)?;
+        let (done, total) = done_up_to(chapter, exercises, statuses);
+        let rendered = done == total && {
             println!("Your figures of {chapter} -> {}", out_dir.display());
-            // The student's code renders them; a panic in it must not lose the site.
-            let quick = !full;
-            match std::panic::catch_unwind(|| write_all(&out_dir, quick)) {
-                Ok(Ok(())) => true,
-                Ok(Err(error)) => {
-                    println!("  failed ({error:#}); the page shows the reference figures");
-                    false
-                }
-                Err(_) => {
-                    println!("  your code panicked; the page shows the reference figures");
+            match render_figures(root, package, &out_dir, quality) {
+                Ok(()) => true,
+                Err(error) => {
+                    println!("  {error:#}\n  The page shows the reference figures.");
+                    replace_dir(&out_dir)?;
                     false
                 }
             }
         };
-        if rendered {
-            yours.push(chapter.to_string());
-        } else {
+        if !rendered {
             copy_dir(&reference.join(chapter), &out_dir)?;
         }
+        chapters.push(ChapterReport {
+            id: chapter.to_owned(),
+            yours: rendered,
+            done,
+            total,
+        });
     }
-    let in_site = book_dir.join("src").join(REFERENCE_IN_SITE);
-    if in_site.exists() {
-        std::fs::remove_dir_all(&in_site)
-            .with_context(|| format!("cannot clear {}", in_site.display()))?;
+    // The cost of this run's figures, yours and the reference's, for the speed appendix.
+    if figures::write_cost_table(&figures_dir).is_err() {
+        let table = reference.join(figures::COST_TABLE);
+        if table.is_file() {
+            std::fs::copy(&table, figures_dir.join(figures::COST_TABLE))
+                .with_context(|| format!("cannot copy {}", table.display()))?;
+        }
     }
-    copy_dir(&reference, &in_site)?;
-    crate::site::build_with(&book_dir, Some(LabReport { yours }))
+    crate::site::build_with(&book_dir, Some(LabReport { chapters }))
+}
+
+/// How many of the exercises of `chapter` and every chapter before it are done, of how many.
+fn done_up_to(chapter: &str, exercises: &[Exercise], statuses: &[Status]) -> (usize, usize) {
+    let up_to: Vec<&Status> = exercises
+        .iter()
+        .zip(statuses)
+        .filter(|(exercise, _)| chapter_id(&exercise.chapter) <= chapter)
+        .map(|(_, status)| status)
+        .collect();
+    let done = up_to.iter().filter(|s| ***s == Status::Done).count();
+    (done, up_to.len())
+}
+
+/// Runs the chapter's own binary to write its figures: `cargo run -p PACKAGE -- figures --out
+/// DIR`, quick unless `quality.full`. What it prints is kept and shown only if it fails.
+fn render_figures(root: &Path, package: &str, out_dir: &Path, quality: Quality) -> Result<()> {
+    let mut command = Command::new("cargo");
+    command.args(["run", "-q", "-p", package]);
+    if quality.release {
+        command.arg("--release");
+    }
+    command.args(["--", "figures", "--out"]).arg(out_dir);
+    if !quality.full {
+        command.arg("--quick");
+    }
+    let output = command
+        .current_dir(root)
+        .stdin(Stdio::null())
+        .output()
+        .with_context(|| format!("cannot run cargo for {package}"))?;
+    if !output.status.success() {
+        let printed = String::from_utf8_lossy(&output.stderr);
+        let lines: Vec<&str> = printed.lines().collect();
+        bail!(
+            "{package}'s figures failed with your code; its last words:\n    {}",
+            lines[lines.len().saturating_sub(12)..].join("\n    ")
+        );
+    }
+    Ok(())
 }
 
 /// Copies the workbook's built figures into the student edition at `edition`, for the
 /// student's site to set beside theirs; `false` if the workbook has no figures built.
 pub fn ship_reference_figures(root: &Path, edition: &Path) -> Result<bool> {
     let built = root.join("book").join("src").join("figures");
-    let any = std::fs::read_dir(&built).is_ok_and(|mut entries| entries.next().is_some());
+    let any = figures::CHAPTERS
+        .iter()
+        .any(|(chapter, _)| built.join(chapter).is_dir());
     if any {
         copy_dir(&built, &edition.join(REFERENCE_DIR))?;
     }
@@ -98,6 +149,14 @@ pub fn ship_reference_figures(root: &Path, edition: &Path) -> Result<bool> {
 /// The figure directory's name of a chapter's package: `ch03` for `ch03-anti-aliasing`.
 fn chapter_id(package: &str) -> &str {
     package.split('-').next().unwrap_or(package)
+}
+
+/// Makes `dir` an empty directory.
+fn replace_dir(dir: &Path) -> Result<()> {
+    if dir.exists() {
+        std::fs::remove_dir_all(dir).with_context(|| format!("cannot clear {}", dir.display()))?;
+    }
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))
 }
 
 fn copy_dir(from: &Path, to: &Path) -> Result<()> {
@@ -118,10 +177,22 @@ fn copy_dir(from: &Path, to: &Path) -> Result<()> {
     Ok(())
 }
 
+/// Where one chapter stands in the lab report.
+#[derive(Clone, Debug)]
+pub struct ChapterReport {
+    /// Its figure directory: `ch01`.
+    pub id: String,
+    /// Whether its figures on the site are the student's.
+    pub yours: bool,
+    /// Exercises done, of all those up to this chapter.
+    pub done: usize,
+    pub total: usize,
+}
+
 /// The preprocessor that sets the student's figures beside the reference ones.
 pub struct LabReport {
-    /// The chapters (figure directories: `ch01`) whose figures the student's code rendered.
-    pub yours: Vec<String>,
+    /// Every chapter with figures, in book order.
+    pub chapters: Vec<ChapterReport>,
 }
 
 impl Preprocessor for LabReport {
@@ -131,39 +202,96 @@ impl Preprocessor for LabReport {
 
     fn run(&self, _context: &PreprocessorContext, mut book: Book) -> Result<Book> {
         book.for_each_chapter_mut(|chapter| {
-            chapter.content = self.page(&chapter.content);
+            let page = chapter
+                .path
+                .as_deref()
+                .and_then(Path::file_name)
+                .map(|name| name.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            chapter.content = self.page(&page, &chapter.content);
         });
         Ok(book)
     }
 }
 
 impl LabReport {
-    /// `page` with every figure image shown as yours beside the reference, or marked as the
-    /// reference.
-    fn page(&self, page: &str) -> String {
-        let mut out = String::with_capacity(page.len());
-        let mut rest = page;
+    fn chapter(&self, id: &str) -> Option<&ChapterReport> {
+        self.chapters.iter().find(|chapter| chapter.id == id)
+    }
+
+    /// The page `file` (`ch04-depth-of-field.md`) with a note on where its chapter stands, and
+    /// every figure shown as the student's beside the reference, or as the reference.
+    fn page(&self, file: &str, page: &str) -> String {
+        let mut out = String::with_capacity(page.len() + 1024);
+        let mut lines = page.split_inclusive('\n').peekable();
+        // The note goes after the page's title.
+        if let Some(report) = self.chapter(chapter_id(file)) {
+            while let Some(line) = lines.next_if(|line| !line.starts_with("# ")) {
+                out.push_str(line);
+            }
+            if let Some(title) = lines.next() {
+                out.push_str(title);
+            }
+            out.push_str(&format!("\n{}\n", self.note(report)));
+        }
+        for line in lines {
+            self.line(line, &mut out);
+        }
+        out
+    }
+
+    /// The lab report's note at the top of a chapter's page.
+    fn note(&self, report: &ChapterReport) -> String {
+        let number = report.id.trim_start_matches("ch");
+        let text = if report.yours {
+            "<strong>Your lab report.</strong> Each figure of this chapter is rendered by your \
+             code, on the left, beside the reference figure, on the right."
+                .to_owned()
+        } else {
+            format!(
+                "<strong>Your lab report.</strong> Not finished yet: {} of the {} exercises up to \
+                 chapter {number} are done. The figures below are the reference ones; yours take \
+                 their place once all are done (<code>cargo run -p book -- progress</code> says \
+                 what is next).",
+                report.done, report.total
+            )
+        };
+        format!("<p class=\"lab-report-note\">{text}</p>\n")
+    }
+
+    /// One line of a page, its figures replaced, appended to `out`.
+    fn line(&self, line: &str, out: &mut String) {
+        let alone = next_figure(line).is_some_and(|(before, _, _, after)| {
+            before.trim().is_empty() && after.trim().is_empty()
+        });
+        let mut rest = line;
         while let Some((before, alt, path, after)) = next_figure(rest) {
             out.push_str(before);
             let chapter = path.split('/').nth(1).unwrap_or("");
-            let file = path.split_once('/').map_or(path, |(_, file)| file);
-            if self.yours.iter().any(|yours| yours == chapter) {
-                out.push_str(&format!(
-                    "<span class=\"lab-report\"><span><img src=\"{path}\" alt=\"{alt} (yours)\" \
-                     width=\"49%\"><br>Yours</span> <span><img src=\"{REFERENCE_IN_SITE}/{file}\" \
-                     alt=\"{alt} (reference)\" width=\"49%\"><br>Reference</span></span>"
-                ));
+            let file = path.strip_prefix("figures/").unwrap_or(path);
+            let reference = format!("{REFERENCE_IN_SITE}/{file}");
+            let alt = alt.replace('"', "&quot;");
+            let (tag, caption) = if alone {
+                ("figure", "figcaption")
             } else {
-                out.push_str(&format!(
-                    "![{alt} (reference)]({path})<br>*Reference figure: yours appears here once \
-                     the exercises up to chapter {} are done.*",
+                ("span", "span")
+            };
+            match self.chapter(chapter) {
+                Some(report) if report.yours => out.push_str(&format!(
+                    "<{tag} class=\"lab-report\"><{tag}><img src=\"{path}\" alt=\"{alt} (yours)\">\
+                     <{caption}>Yours</{caption}></{tag}><{tag}><img src=\"{reference}\" \
+                     alt=\"{alt} (reference)\"><{caption}>Reference</{caption}></{tag}></{tag}>"
+                )),
+                _ => out.push_str(&format!(
+                    "<{tag} class=\"lab-report-pending\"><img src=\"{path}\" alt=\"{alt} \
+                     (reference)\"><{caption}>Reference figure: yours appears here once the \
+                     exercises up to chapter {} are done.</{caption}></{tag}>",
                     chapter.trim_start_matches("ch")
-                ));
+                )),
             }
             rest = after;
         }
         out.push_str(rest);
-        out
     }
 }
 
@@ -191,34 +319,82 @@ fn next_figure(text: &str) -> Option<(&str, &str, &str, &str)> {
 mod tests {
     use super::*;
 
-    #[test]
-    fn finished_chapters_show_both_figures_and_the_others_the_reference() {
-        let report = LabReport {
-            yours: vec!["ch01".into()],
+    fn report() -> LabReport {
+        let chapter = |id: &str, yours: bool, done: usize| ChapterReport {
+            id: id.into(),
+            yours,
+            done,
+            total: 6,
         };
-        let page = "See ![The spheres](figures/ch01/spheres.png) and\n\
-                    ![Blur](figures/ch05/street.png).\n";
-        let shown = report.page(page);
+        LabReport {
+            chapters: vec![chapter("ch01", true, 6), chapter("ch05", false, 4)],
+        }
+    }
+
+    #[test]
+    fn a_finished_chapter_shows_both_figures_side_by_side() {
+        let page = "# Whitted\n\nText.\n\n![The \"spheres\"](figures/ch01/spheres.png)\n\nSee \
+                    ![Blur](figures/ch05/street.png) inline.\n";
+        let shown = report().page("ch01-whitted.md", page);
         assert!(
-            shown.starts_with("See <span class=\"lab-report\">"),
+            shown.starts_with("# Whitted\n\n<p class=\"lab-report-note\"><strong>Your lab report.</strong> Each figure"),
             "{shown}"
         );
-        assert!(shown.contains("src=\"figures/ch01/spheres.png\" alt=\"The spheres (yours)\""));
         assert!(
-            shown.contains("src=\"reference-figures/ch01/spheres.png\""),
+            shown.contains(
+                "<figure class=\"lab-report\"><figure><img src=\"figures/ch01/spheres.png\" \
+                 alt=\"The &quot;spheres&quot; (yours)\"><figcaption>Yours</figcaption></figure>\
+                 <figure><img src=\"figures/reference/ch01/spheres.png\" alt=\"The \
+                 &quot;spheres&quot; (reference)\"><figcaption>Reference</figcaption></figure></figure>\n"
+            ),
             "{shown}"
         );
+        // Inline, a figure of a chapter not done: spans, and the reason.
         assert!(
-            shown.contains("![Blur (reference)](figures/ch05/street.png)<br>*Reference figure: yours appears here once the exercises up to chapter 05 are done.*."),
+            shown.contains(
+                "See <span class=\"lab-report-pending\"><img src=\"figures/ch05/street.png\" \
+                 alt=\"Blur (reference)\"><span>Reference figure: yours appears here once the \
+                 exercises up to chapter 05 are done.</span></span> inline.\n"
+            ),
             "{shown}"
         );
     }
 
     #[test]
-    fn other_images_and_text_are_left_alone() {
-        let report = LabReport { yours: vec![] };
+    fn an_unfinished_chapter_says_how_far_it_is() {
+        let shown = report().page("ch05-motion-blur.md", "# Motion blur\n");
+        assert!(
+            shown.contains("Not finished yet: 4 of the 6 exercises up to chapter 05 are done."),
+            "{shown}"
+        );
+    }
+
+    #[test]
+    fn other_pages_images_and_text_are_left_alone() {
         let page = "![logo](theme/logo.png) and [a link](figures/ch01/x.csv) ![";
-        assert_eq!(report.page(page), page);
+        assert_eq!(report().page("introduction.md", page), page);
         assert_eq!(chapter_id("ch03-anti-aliasing"), "ch03");
+    }
+
+    #[test]
+    fn only_the_exercises_up_to_a_chapter_count() {
+        let exercise = |name: &str, chapter: &str| Exercise {
+            name: name.into(),
+            chapter: chapter.into(),
+            file: "f.rs".into(),
+            anchor: name.into(),
+            check: "true".into(),
+            hint: String::new(),
+            needs: Vec::new(),
+            wrong: Vec::new(),
+        };
+        let exercises = [
+            exercise("a", "ch01-whitted"),
+            exercise("b", "ch02-monte-carlo"),
+            exercise("c", "ch03-anti-aliasing"),
+        ];
+        let statuses = [Status::Done, Status::Done, Status::ToDo];
+        assert_eq!(done_up_to("ch02", &exercises, &statuses), (2, 2));
+        assert_eq!(done_up_to("ch03", &exercises, &statuses), (2, 3));
     }
 }

@@ -18,6 +18,7 @@ mod check_exercises;
 mod checkpoint;
 mod exercise_calls;
 mod exercise_list;
+mod exercise_needs;
 mod exercise_preprocessor;
 mod figures;
 mod katex_offline;
@@ -73,6 +74,10 @@ enum Task {
         /// Only try the wrong answers (quicker while writing a check's messages).
         #[arg(long)]
         wrong_answers_only: bool,
+        /// Write each exercise's measured `needs` into the list instead of failing when they
+        /// differ from what it says.
+        #[arg(long, conflicts_with = "wrong_answers_only")]
+        write_needs: bool,
     },
     /// Run every exercise's check and list the exercises as done or to do, with the next one.
     Progress {
@@ -86,10 +91,17 @@ enum Task {
     /// Find numbers in the pages' prose that should come from a generated file (the site build
     /// runs this check first).
     CheckProse,
-    /// Put the reference solution of one exercise back (your version is kept), to go on.
+    /// Put reference solutions back, to go on: one exercise, the stubs of a chapter, or the
+    /// stubs among what one check needs (your versions are saved first).
+    #[command(group(clap::ArgGroup::new("what").required(true).args(["name", "needs"])))]
     Checkpoint {
-        /// The exercise, as `exercises` names it: `ch01-refract`.
-        name: String,
+        /// An exercise, as `exercises` names it (`ch01-refract`), or a chapter
+        /// (`ch04-depth-of-field`, or `ch04`): every exercise of it you have not written.
+        name: Option<String>,
+        /// Every exercise this exercise's check runs that you have not written, so that the
+        /// check can run: `--needs ch08-path-segment`.
+        #[arg(long, value_name = "NAME", conflicts_with = "name")]
+        needs: Option<String>,
         /// The workbook: the repository with the solutions, from which this edition was made.
         #[arg(long, value_name = "PATH")]
         from: PathBuf,
@@ -161,7 +173,11 @@ fn main() -> Result<()> {
             print!("{}", progress::report(&exercises, &statuses));
             if site {
                 mdbook_log::install();
-                let front_page = lab_report::build(&root, &exercises, &statuses, full)?;
+                let quality = lab_report::Quality {
+                    full,
+                    release: !cfg!(debug_assertions),
+                };
+                let front_page = lab_report::build(&root, &exercises, &statuses, quality)?;
                 println!("\nYour site: open {}", front_page.display());
             }
             Ok(())
@@ -174,23 +190,24 @@ fn main() -> Result<()> {
             );
             Ok(())
         }
-        Some(Task::Checkpoint { name, from }) => {
+        Some(Task::Checkpoint { name, needs, from }) => {
             let exercises = exercise_list::load(&root)?;
-            let restored = checkpoint::run(&root, &exercises, &name, &from)?;
-            let exercise = exercises.iter().find(|e| e.name == name).expect("found");
-            println!(
-                "Put the reference solution of {name} into {} (from the workbook at {}).\n\
-                 Your own version is kept in {}.\nIts check should pass now: {}",
-                restored.file.display(),
-                from.display(),
-                restored.saved.display(),
-                exercise.check
+            let target = match (name, needs) {
+                (Some(name), None) => checkpoint::Target::named(&name, &exercises)?,
+                (None, Some(needs)) => checkpoint::Target::NeedsOf(needs),
+                _ => unreachable!("clap takes exactly one"),
+            };
+            let outcome = checkpoint::run(&root, &exercises, &target, &from)?;
+            print!(
+                "{}",
+                checkpoint_report(&target, &outcome, &exercises, &from)
             );
             Ok(())
         }
         Some(Task::CheckExercises {
             only,
             wrong_answers_only,
+            write_needs,
         }) => {
             let exercises = exercise_list::load(&root)?;
             if let Some(unknown) = only
@@ -200,7 +217,13 @@ fn main() -> Result<()> {
                 anyhow::bail!("--only {unknown}: there is no such exercise in book/exercises.toml");
             }
             let selected = |e: &exercise_list::Exercise| only.is_empty() || only.contains(&e.name);
-            check_exercises::run(&root, &exercises, &selected, wrong_answers_only)
+            check_exercises::run(
+                &root,
+                &exercises,
+                &selected,
+                wrong_answers_only,
+                write_needs,
+            )
         }
         Some(Task::CheckSite {
             site,
@@ -297,7 +320,7 @@ fn build_book(root: &Path, quick: bool) -> Result<()> {
     let book_dir = root.join("book");
     mdbook_log::install();
 
-    figures::regenerate_all(&book_dir.join("src").join("figures"), quick)?;
+    regenerate_figures(&book_dir.join("src").join("figures"), quick)?;
 
     println!("Building the site with mdBook and KaTeX ...");
     let front_page = site::build(&book_dir)?;
@@ -307,6 +330,81 @@ fn build_book(root: &Path, quick: bool) -> Result<()> {
         front_page.display()
     );
     Ok(())
+}
+
+/// What a checkpoint did, and what to run next.
+fn checkpoint_report(
+    target: &checkpoint::Target,
+    outcome: &checkpoint::Outcome,
+    exercises: &[exercise_list::Exercise],
+    from: &Path,
+) -> String {
+    let mut text = String::new();
+    for restored in &outcome.restored {
+        text += &format!(
+            "Put the reference solution of {} into {} (your version is saved in {}).\n",
+            restored.name,
+            restored.file.display(),
+            restored.saved.display()
+        );
+    }
+    if !outcome.already.is_empty() {
+        text += &format!(
+            "Already the reference solution: {}.\n",
+            outcome.already.join(", ")
+        );
+    }
+    if !outcome.kept.is_empty() {
+        text += &format!(
+            "Kept as you wrote them: {} (`checkpoint NAME --from {}` replaces one).\n",
+            outcome.kept.join(", "),
+            from.display()
+        );
+    }
+    let check = |name: &str| {
+        exercises
+            .iter()
+            .find(|e| e.name == name)
+            .map_or(String::new(), |e| e.check.clone())
+    };
+    match target {
+        checkpoint::Target::Exercise(name) => {
+            text += &format!("Its check should pass now: {}\n", check(name));
+        }
+        checkpoint::Target::Chapter(chapter) => {
+            if outcome.restored.is_empty() && outcome.already.is_empty() {
+                text += &format!("Every exercise of {chapter} is yours; nothing was put in.\n");
+            }
+        }
+        checkpoint::Target::NeedsOf(name) => {
+            let needs = exercises
+                .iter()
+                .find(|e| &e.name == name)
+                .map_or(0, |e| e.needs.len());
+            if needs == 0 {
+                text += &format!("{name}'s check runs no other exercise; nothing to put in.\n");
+            }
+            text += &format!("Now its check runs your {name}: {}\n", check(name));
+        }
+    }
+    text
+}
+
+#[cfg(feature = "figures")]
+fn regenerate_figures(figures_dir: &Path, quick: bool) -> Result<()> {
+    figures::regenerate_all(figures_dir, quick)
+}
+
+/// Without the chapters linked in, there is nothing to render the figures with.
+#[cfg(not(feature = "figures"))]
+fn regenerate_figures(_figures_dir: &Path, _quick: bool) -> Result<()> {
+    anyhow::bail!(
+        "this build of the book leaves the chapters out (the student edition's default, so that \
+         `exercises`, `progress` and `checkpoint` start without compiling them). Your own site, \
+         with your figures beside the reference ones, is built by `cargo run -p book -- \
+         progress --site`; the book with every chapter's figures by `cargo run --release -p book \
+         --features figures`"
+    )
 }
 
 fn print_exercises(exercises: &[exercise_list::Exercise]) {
@@ -328,6 +426,12 @@ fn print_exercises(exercises: &[exercise_list::Exercise]) {
             exercise.anchor
         );
         println!("    check: {}", exercise.check);
+        if !exercise.needs.is_empty() {
+            println!(
+                "    needs: {} (its check runs their code too)",
+                exercise.needs.join(", ")
+            );
+        }
         for (index, line) in exercise.hint.trim().lines().enumerate() {
             let label = if index == 0 { "hint: " } else { "      " };
             println!("    {label}{line}");

@@ -136,11 +136,28 @@ pub fn report(exercises: &[Exercise], statuses: &[Status]) -> String {
     let done = statuses.iter().filter(|s| **s == Status::Done).count();
     let mut text = format!("\n{done} of {} exercises done.\n\n", exercises.len());
     let next = statuses.iter().position(|s| *s != Status::Done);
+    let not_done = |exercise: &Exercise| -> Vec<String> {
+        exercise
+            .needs
+            .iter()
+            .filter(|need| {
+                exercises
+                    .iter()
+                    .zip(statuses)
+                    .any(|(other, status)| &other.name == *need && *status != Status::Done)
+            })
+            .cloned()
+            .collect()
+    };
     for (index, (exercise, status)) in exercises.iter().zip(statuses).enumerate() {
+        let missing = not_done(exercise);
         let word = match status {
-            Status::Done => "done",
-            Status::ToDo => "to do",
-            Status::DoesNotCompile => "to do (its chapter does not compile)",
+            Status::Done => "done".to_owned(),
+            Status::ToDo if !missing.is_empty() => {
+                format!("to do (its check needs {} too)", missing.join(", "))
+            }
+            Status::ToDo => "to do".to_owned(),
+            Status::DoesNotCompile => "to do (its chapter does not compile)".to_owned(),
         };
         let arrow = if Some(index) == next {
             "   <- next"
@@ -168,6 +185,24 @@ pub fn report(exercises: &[Exercise], statuses: &[Status]) -> String {
                 let label = if number == 0 { "hint: " } else { "      " };
                 text.push_str(&format!("  {label}{line}\n"));
             }
+            if !exercise.needs.is_empty() {
+                text.push_str(&format!(
+                    "  needs: {} (its check runs their code too)\n",
+                    exercise.needs.join(", ")
+                ));
+            }
+            let missing = not_done(exercise);
+            if !missing.is_empty() {
+                text.push_str(&format!(
+                    "Its check cannot pass until {} {} done too: do {}, or put the reference \
+                     solutions in with `cargo run -p book -- checkpoint --needs {} --from <the \
+                     workbook>`.\n",
+                    missing.join(", "),
+                    if missing.len() == 1 { "is" } else { "are" },
+                    if missing.len() == 1 { "it" } else { "them" },
+                    exercise.name
+                ));
+            }
             text.push_str(&format!(
                 "Stuck? `cargo run -p book -- checkpoint {} --from <the workbook>` puts the \
                  reference solution in (your version is kept), so you can go on.\n",
@@ -190,6 +225,7 @@ mod tests {
             anchor: "reflect".into(),
             check: check.into(),
             hint: "Which part changes?\nAnd which does not?".into(),
+            needs: Vec::new(),
             wrong: Vec::new(),
         }
     }
@@ -239,5 +275,40 @@ mod tests {
         assert!(text.contains("checkpoint ch01-refract --from"), "{text}");
         let all = report(&exercises[..1], &[Status::Done]);
         assert!(all.contains("Every exercise is done."), "{all}");
+    }
+
+    #[test]
+    fn the_report_names_what_a_check_needs_that_is_not_done() {
+        let mut exercises = [
+            exercise("ch01-reflect", "true"),
+            exercise("ch01-refract", "false"),
+            exercise("ch01-fresnel", "false"),
+        ];
+        exercises[2].needs = vec!["ch01-reflect".into(), "ch01-refract".into()];
+        let statuses = [Status::Done, Status::ToDo, Status::ToDo];
+        let text = report(&exercises, &statuses);
+        assert!(
+            text.contains(
+                "ch01-fresnel                       to do (its check needs ch01-refract too)"
+            ),
+            "{text}"
+        );
+        let skipped = report(&exercises, &[Status::ToDo, Status::ToDo, Status::ToDo]);
+        assert!(
+            skipped.contains("needs ch01-reflect, ch01-refract too)"),
+            "{skipped}"
+        );
+        // Skipping ahead: the next one is the first not done, and its needs are named.
+        exercises.swap(0, 2);
+        exercises[2].needs.clear();
+        let next = report(&exercises, &[Status::ToDo, Status::Done, Status::ToDo]);
+        assert!(
+            next.contains("  needs: ch01-reflect, ch01-refract (its check runs their code too)"),
+            "{next}"
+        );
+        assert!(
+            next.contains("until ch01-reflect is done too: do it, or put the reference solutions in with `cargo run -p book -- checkpoint --needs ch01-fresnel"),
+            "{next}"
+        );
     }
 }

@@ -6,11 +6,12 @@
 //! *solution region*: the lines between a line that reads `// BEGIN SOLUTION` and a line that
 //! reads `// END SOLUTION`, nothing else on either line but indentation.
 //!
-//! Cutting the solution out replaces the region, both marker lines included, by one `todo!(..)`
-//! line at the indentation of the `BEGIN` marker. The book's exercise stubs and the student
-//! edition both go through [`splice_todos`], so a reader sees on the page the lines a student
-//! finds in their copy of the code; only the student's `todo!` also names the exercise and its
-//! first hint.
+//! Cutting the solution out replaces the region, both marker lines included, by one line at
+//! the indentation of the `BEGIN` marker: `todo!()` on the page, and in the student edition a
+//! call of `common::exercise::todo` that names the exercise and its first hint (and says, when a
+//! check runs into it, that the check needs that exercise). The book's exercise stubs and the
+//! student edition both go through [`splice_todos`], so a reader sees on the page the lines a
+//! student finds in their copy of the code, but for that one line.
 
 use std::fmt;
 use std::ops::Range;
@@ -206,17 +207,20 @@ pub fn locate(lines: &[&str], anchor: &str) -> Result<ExerciseSpan, MarkerError>
     Ok(ExerciseSpan { body, solution })
 }
 
-/// The `todo!` call that stands in for a solution, with an optional message for whoever runs
-/// into it. The message is escaped so it stays one valid string literal and format string.
+/// The call that stands in for a solution: on a page, `todo!()`; in the student edition,
+/// [`STUDENT_STUB`] with the exercise's name and first hint (`"ch01-reflect: Which part ...?"`),
+/// which says, when a check runs into it, that the check needs that exercise and it is not
+/// written yet. The message is one valid string literal.
 pub fn todo_call(message: Option<&str>) -> String {
     match message {
         None => "todo!()".to_owned(),
-        Some(message) => {
-            let format_safe = message.replace('{', "{{").replace('}', "}}");
-            format!("todo!({format_safe:?})")
-        }
+        Some(message) => format!("{STUDENT_STUB}({message:?})"),
     }
 }
+
+/// The function a student's stub calls: `common::exercise::todo`, named from the root so that
+/// no module of the chapter called `common` can hide it.
+pub const STUDENT_STUB: &str = "::common::exercise::todo";
 
 /// `lines` with each solution region replaced by its `todo!` line, indented like the region's
 /// `BEGIN` marker. The regions must not overlap; they may come in any order.
@@ -607,7 +611,7 @@ mod tests {
         let student = student_source(REFLECT, &[cut]).unwrap();
         assert_eq!(
             student,
-            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    let _ = (&wi, &n); // the inputs, until your code uses them\n    todo!(\"ch01-reflect: mirror `wi` about `n`\")\n}\n// ANCHOR_END: reflect\n"
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    let _ = (&wi, &n); // the inputs, until your code uses them\n    ::common::exercise::todo(\"ch01-reflect: mirror `wi` about `n`\")\n}\n// ANCHOR_END: reflect\n"
         );
     }
 
@@ -625,8 +629,8 @@ mod tests {
             },
         ];
         let student = student_source(source, &cuts).unwrap();
-        assert!(student.contains("fn a() -> u8 {\n    todo!(\"a\")\n}"));
-        assert!(student.contains("fn b() -> u8 {\n  todo!(\"b\")\n}"));
+        assert!(student.contains("fn a() -> u8 {\n    ::common::exercise::todo(\"a\")\n}"));
+        assert!(student.contains("fn b() -> u8 {\n  ::common::exercise::todo(\"b\")\n}"));
         assert!(!student.ends_with('\n'));
     }
 
@@ -672,11 +676,11 @@ mod tests {
     }
 
     #[test]
-    fn todo_message_is_a_valid_literal_and_format_string() {
+    fn the_students_stub_is_one_valid_literal() {
         assert_eq!(todo_call(None), "todo!()");
         assert_eq!(
             todo_call(Some("say \"hi\" to {x}")),
-            r#"todo!("say \"hi\" to {{x}}")"#
+            r#"::common::exercise::todo("say \"hi\" to {x}")"#
         );
     }
 
@@ -793,7 +797,7 @@ mod tests {
         let student = student_source(source, &[cut]).unwrap();
         assert!(
             student.contains(
-                "    let _ = (&ray, &f); // the inputs, until your code uses them\n    todo!(\"go\")"
+                "    let _ = (&ray, &f); // the inputs, until your code uses them\n    ::common::exercise::todo(\"go\")"
             ),
             "{student}"
         );

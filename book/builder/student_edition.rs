@@ -69,6 +69,24 @@ pub fn plan(
             edition.push(EditionFile::Rewritten(file, without_wrong_answers(&list)?));
             continue;
         }
+        if file == Path::new(STUDENT_README) {
+            continue; // it becomes the edition's README.md, below
+        }
+        if file == Path::new("README.md") && root.join(STUDENT_README).is_file() {
+            let readme = std::fs::read_to_string(root.join(STUDENT_README))
+                .with_context(|| format!("cannot read {STUDENT_README}"))?;
+            edition.push(EditionFile::Rewritten(file, readme));
+            continue;
+        }
+        if file == Path::new(BOOK_MANIFEST) {
+            let manifest = std::fs::read_to_string(root.join(&file))
+                .with_context(|| format!("cannot read {BOOK_MANIFEST}"))?;
+            edition.push(EditionFile::Rewritten(
+                file,
+                without_default_figures(&manifest)?,
+            ));
+            continue;
+        }
         if file.extension().is_none_or(|ext| ext != "rs") {
             edition.push(EditionFile::Copy(file));
             continue;
@@ -108,18 +126,66 @@ pub fn plan(
     Ok(edition)
 }
 
-/// The build script the student edition gives each package that holds exercises: cargo prints
-/// its note as it builds the package, so the wait of a chapter's first check is announced
-/// before it starts, not explained after it. (Cargo repeats the note on later builds, so it
-/// says what holds every time.)
+/// The workbook's README for students, which becomes the edition's `README.md` (the workbook's
+/// own is for its maintainers).
+pub const STUDENT_README: &str = "book/student-README.md";
+
+/// The builder's manifest, whose default features the edition changes.
+const BOOK_MANIFEST: &str = "book/Cargo.toml";
+
+/// The line of [`BOOK_MANIFEST`] that links every chapter into the builder by default.
+const DEFAULT_FIGURES: &str = "default = [\"figures\"]";
+
+/// The builder's manifest as the student gets it: without the chapters by default, so that
+/// `exercises`, `progress` and `checkpoint` start without compiling the student's chapters
+/// (each chapter's first compile takes minutes, and one after an edit rebuilds the chapters
+/// after it). The lab report renders with the chapters' own binaries instead.
+fn without_default_figures(manifest: &str) -> Result<String> {
+    let lines: Vec<&str> = manifest.lines().collect();
+    if lines
+        .iter()
+        .filter(|line| line.trim() == DEFAULT_FIGURES)
+        .count()
+        != 1
+    {
+        bail!("{BOOK_MANIFEST}: expected one line `{DEFAULT_FIGURES}` to turn off for students");
+    }
+    let mut out = String::with_capacity(manifest.len() + 200);
+    for line in lines {
+        if line.trim() == DEFAULT_FIGURES {
+            out.push_str(
+                "# The student edition: the tools start without compiling the chapters (written \
+                 by\n# `book student`; the workbook has `default = [\"figures\"]`).\ndefault = []\n",
+            );
+        } else {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    Ok(out)
+}
+
+/// The build script the student edition gives each package that holds exercises. It runs once,
+/// before the chapter's first compile (cargo runs a build script again only when the script
+/// changes), and says why that compile takes a while, before it starts. It writes to the
+/// terminal itself: cargo would keep a `cargo::warning` and repeat it on every later build,
+/// compiled or not. Without a terminal (CI, an editor's background build) it says nothing.
 const FIRST_BUILD_NOTE: &str = "\
-//! Written by `book student`: a note that cargo prints when it builds this chapter.
+//! Written by `book student`: a note on this chapter's first compile, which takes a while.
+use std::io::Write;
+
 fn main() {
     println!(\"cargo::rerun-if-changed=build.rs\");
-    println!(
-        \"cargo::warning=note: a chapter's first check compiles the chapter (the very first \\
-         one also its dependencies): a few minutes on a 2-core machine; later checks take seconds\"
-    );
+    let terminal = if cfg!(windows) { \"CONOUT$\" } else { \"/dev/tty\" };
+    if let Ok(mut terminal) = std::fs::OpenOptions::new().write(true).open(terminal) {
+        let package = std::env::var(\"CARGO_PKG_NAME\").unwrap_or_default();
+        let _ = writeln!(
+            terminal,
+            \"\\r      Note: compiling {package} for the first time (the very first check also \\
+             compiles the libraries it uses): a few minutes on a 2-core machine; after that a \\
+             check takes seconds.\"
+        );
+    }
 }
 ";
 
@@ -303,11 +369,15 @@ mod tests {
         // The two files, and the package's build script with its note on the first build.
         assert_eq!(written, 3);
         let note = std::fs::read_to_string(out.path().join("build.rs")).unwrap();
-        assert!(note.contains("first check compiles the chapter"), "{note}");
+        assert!(
+            note.contains("compiling {package} for the first time"),
+            "{note}"
+        );
+        assert!(!note.contains("cargo::warning"), "{note}");
         let stubbed = std::fs::read_to_string(out.path().join("src/optics.rs")).unwrap();
         assert!(
             stubbed.contains(
-                "{\n    let _ = &x; // the inputs, until your code uses them\n    todo!(\"ch01-reflect: Flip the sign.\")\n}"
+                "{\n    let _ = &x; // the inputs, until your code uses them\n    ::common::exercise::todo(\"ch01-reflect: Flip the sign.\")\n}"
             ),
             "{stubbed}"
         );
@@ -315,6 +385,36 @@ mod tests {
             std::fs::read_to_string(out.path().join("README.md")).unwrap(),
             "hi\n"
         );
+    }
+
+    #[test]
+    fn the_student_gets_their_own_readme_and_a_builder_without_the_chapters() {
+        let manifest = "[features]\ndefault = [\"figures\"]\nfigures = [\"dep:ch01\"]\n";
+        let ws = workspace(&[
+            ("src/optics.rs", OPTICS),
+            ("README.md", "For maintainers\n"),
+            (STUDENT_README, "For students\n"),
+            (BOOK_MANIFEST, manifest),
+        ]);
+        let exercises = exercise_list::parse(LIST).unwrap();
+        let out = tempfile::tempdir().unwrap();
+        write(ws.path(), &exercises, out.path(), true).unwrap();
+        let read = |path: &str| std::fs::read_to_string(out.path().join(path)).unwrap();
+        assert_eq!(read("README.md"), "For students\n");
+        assert!(!out.path().join(STUDENT_README).exists());
+        let student_manifest = read(BOOK_MANIFEST);
+        assert!(
+            student_manifest.contains("\ndefault = []\n"),
+            "{student_manifest}"
+        );
+        assert!(student_manifest.contains("figures = [\"dep:ch01\"]"));
+        let parsed: toml::Table = toml::from_str(&student_manifest).unwrap();
+        assert_eq!(
+            parsed["features"]["default"].as_array().map(Vec::len),
+            Some(0)
+        );
+        // A manifest without the line is an error, not a silent copy.
+        assert!(without_default_figures("[features]\n").is_err());
     }
 
     #[test]

@@ -8,6 +8,7 @@
 #![warn(missing_docs)]
 
 pub mod cli;
+pub mod exercise;
 pub mod figure_set;
 pub mod film;
 pub mod geometry;
