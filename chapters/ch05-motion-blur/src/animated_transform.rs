@@ -271,6 +271,7 @@ pub fn interpolate(a: &Decomposed, b: &Decomposed, u: f32) -> Decomposed {
 mod tests {
     use super::*;
     use std::f32::consts::{FRAC_PI_2, PI};
+    use std::panic::{AssertUnwindSafe, catch_unwind};
 
     fn close_mat3(a: Mat3, b: Mat3, tolerance: f32) -> bool {
         (0..3).all(|i| (a.col(i) - b.col(i)).abs().max_element() <= tolerance)
@@ -320,6 +321,8 @@ mod tests {
                     "it is what lerping the two matrices gives: a blend of two rotations is no \
                      rotation, and the object shrinks across the axis on the way; interpolate the \
                      parts each in its own way"
+                } else if close_mat3(got.scale, b.scale * (1.0 - u) + a.scale * u, 1e-4) {
+                    "it runs from b's scale to a's, backwards (u = 0 is a)"
                 } else {
                     "the scale changes evenly from a's to b's"
                 };
@@ -341,6 +344,8 @@ mod tests {
                     "blending the quaternions and normalising follows the right great circle, \
                      but not at constant speed: the object turns slowly at the ends and fast in \
                      the middle"
+                } else if same_rotation(got.rotation, b.rotation.slerp(a.rotation, u), 1e-5) {
+                    "it turns from b's rotation to a's, backwards (u = 0 is a)"
                 } else {
                     "the object turns about one axis at constant angular speed, the shorter way"
                 };
@@ -384,12 +389,29 @@ mod tests {
             (f32::NAN, 1.0),
         ];
         for (time, held) in cases {
-            let (m, inverse) = motion.at_with_inverse(time);
-            let expected = linear_motion(held);
             let at = format!(
                 "AnimatedTransform::at_with_inverse: keyframes at times 1, 3 and 3.5, at time \
                  {time}"
             );
+            let (m, inverse) = match catch_unwind(AssertUnwindSafe(|| motion.at_with_inverse(time)))
+            {
+                Ok(matrices) => matrices,
+                Err(_) => panic!(
+                    "{at}, your code panicked (its message is above): {}",
+                    if time.is_nan() {
+                        "a time that is not a number falls in no segment; it is held at the \
+                         first keyframe"
+                    } else if time < times[0] || time > times[2] {
+                        "a time outside the keyframes has no segment (segment_at gives None, and \
+                         a search for the keyframe after it finds none before the first or \
+                         after the last); the object is held there"
+                    } else {
+                        "a time inside the keyframes lies in one segment: which keyframes are \
+                         the two around it?"
+                    }
+                ),
+            };
+            let expected = linear_motion(held);
             let agrees = |m: Mat4| {
                 points.iter().all(|&x| {
                     m.transform_point3(x)
@@ -411,6 +433,7 @@ mod tests {
                     let u = (time - w[0]) / (w[1] - w[0]);
                     let lerped = linear_motion(w[0]) * (1.0 - u) + kb * u;
                     let unscaled = interpolate(&ka, &Decomposed::new(kb), time - w[0]).matrix();
+                    let backwards = interpolate(&Decomposed::new(kb), &ka, u).matrix();
                     if lerped.abs_diff_eq(m, 1e-4) {
                         "the keyframe matrices were blended entry by entry: the object is \
                          distorted between them; interpolate their parts"
@@ -421,6 +444,12 @@ mod tests {
                              keyframe; it is the fraction of the way from one keyframe to the \
                              next, from 0 at the first to 1 at the second",
                             time - w[0]
+                        )
+                    } else if backwards.abs_diff_eq(m, 1e-4) {
+                        format!(
+                            "the segment runs backwards, from the keyframe at time {} to the one \
+                             at time {}: the fraction 0 is the earlier keyframe",
+                            w[1], w[0]
                         )
                     } else {
                         format!(

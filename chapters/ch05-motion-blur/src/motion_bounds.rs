@@ -140,34 +140,45 @@ mod tests {
 
     #[test]
     fn exercise_segment_bounds_hold_every_corner_at_every_time() {
-        let motion = fast_spinning_mover();
-        let (a, b) = (&motion.keyframes()[0].parts, &motion.keyframes()[1].parts);
-        let corners = corners(&unit_box());
-        // Few steps: only the margin keeps the corners in between the samples inside.
-        let (steps, u0, u1) = (3, 0.0, 1.0);
-        let bounds = segment_bounds(&corners, a, b, u0, u1, steps);
-        let samples: Vec<f32> = (0..=steps)
-            .map(|i| u0 + (u1 - u0) * i as f32 / steps as f32)
-            .collect();
-        for i in 0..=1000 {
-            let u = i as f32 / 1000.0;
-            let m = interpolate(a, b, u).matrix();
-            for &c in &corners {
-                let p = m.transform_point3(c);
-                if bounds.contains(p) {
-                    continue;
+        let spinning = fast_spinning_mover();
+        // A slide, where the speed bound is exact: a corner left out at a sampled fraction is
+        // further from the others than the margin covers.
+        let sliding = AnimatedTransform::new(&[
+            (0.0, Mat4::from_translation(Vec3::new(-3.0, 0.0, 0.0))),
+            (1.0, Mat4::from_translation(Vec3::new(3.0, 1.0, 0.0))),
+        ])
+        .unwrap();
+        for (what, motion, steps) in [("spun", &spinning, 3), ("slid", &sliding, 2)] {
+            let (a, b) = (&motion.keyframes()[0].parts, &motion.keyframes()[1].parts);
+            let corners = corners(&unit_box());
+            // Few steps: only the margin keeps the corners in between the samples inside.
+            let (u0, u1) = (0.0, 1.0);
+            let bounds = segment_bounds(&corners, a, b, u0, u1, steps);
+            let samples: Vec<f32> = (0..=steps)
+                .map(|i| u0 + (u1 - u0) * i as f32 / steps as f32)
+                .collect();
+            // The sampled fractions first: a corner missing there is a missing sample, not a
+            // missing margin.
+            let dense = (0..=1000).map(|i| i as f32 / 1000.0);
+            for u in samples.iter().copied().chain(dense) {
+                let m = interpolate(a, b, u).matrix();
+                for &c in &corners {
+                    let p = m.transform_point3(c);
+                    if bounds.contains(p) {
+                        continue;
+                    }
+                    let why = if samples.iter().any(|&s| (s - u).abs() < 1e-6) {
+                        "at one of the sampled fractions itself: are the corners placed at all \
+                         steps + 1 fractions from u0 to u1, ends included?"
+                    } else {
+                        "between two sampled fractions: the sampled corners' box has to grow by \
+                         as far as a corner can travel in half a step"
+                    };
+                    panic!(
+                        "segment_bounds: the corner {c} {what} to {p} at u = {u} lies outside \
+                         your box {bounds:?} ({steps} steps over [{u0}, {u1}]), {why}"
+                    );
                 }
-                let why = if samples.iter().any(|&s| (s - u).abs() < 1e-6) {
-                    "at one of the sampled fractions itself: are the corners placed at all \
-                     steps + 1 fractions from u0 to u1, ends included?"
-                } else {
-                    "between two sampled fractions: the sampled corners' box has to grow by as \
-                     far as a corner can travel in half a step"
-                };
-                panic!(
-                    "segment_bounds: the corner {c} spun to {p} at u = {u} lies outside your box \
-                     {bounds:?} ({steps} steps over [{u0}, {u1}]), {why}"
-                );
             }
         }
     }

@@ -37,7 +37,9 @@ impl MovingShape {
     // ANCHOR: moving_intersect
     /// The nearest hit, before `ray.t_max`, of the shape where its motion has it at the ray's
     /// shutter time, as a world-space [`SurfaceHit`]: the ray's own `t`, the point and its error
-    /// bound ([`point_error_to_world`](crate::object_space::point_error_to_world)), and unit normals perpendicular to the placed surface.
+    /// bound ([`point_error_to_world`](crate::object_space::point_error_to_world)), both unit
+    /// normals perpendicular to the placed surface and on the side the shape's own normals
+    /// point to, and the shape's `uv` and `shape` index as it gave them.
     ///
     /// The shape itself only knows how to meet a ray in its own space. Which space should the
     /// intersection happen in, and what does each part of the hit become on the way back?
@@ -220,7 +222,7 @@ mod tests {
     use super::*;
     use crate::object_space::{point_error_to_world, to_object_space};
     use common::geometry::Sphere;
-    use glam::{DVec3, Mat4, Vec3};
+    use glam::{DVec3, Mat3, Mat4, Vec3};
 
     /// A unit sphere, stretched into an ellipsoid, turning and sliding over the shutter.
     fn stretched_sphere() -> MovingShape {
@@ -279,22 +281,45 @@ mod tests {
         got: Option<SurfaceHit>,
     ) -> Option<String> {
         let expected = ellipsoid_hit(&shape.motion, ray, ray.time);
+        let (object_to_world, world_to_object) = shape.motion.at_with_inverse(ray.time);
+        // How a hit at `got_t` was likely found, when it was not at the ray's time in the
+        // object's space: only a hit says it (a miss agrees with too many mistakes).
+        let found_how = |got_t: f32| -> Option<String> {
+            let same = |t: Option<f32>| t.is_some_and(|t| (t - got_t).abs() < 1e-4 * t.max(1.0));
+            if let Some(time) = [0.0, 0.5, 1.0].into_iter().find(|&time| {
+                time != ray.time && same(ellipsoid_hit(&shape.motion, ray, time).map(|h| h.0))
+            }) {
+                return Some(format!(
+                    "yours looks where the object is at time {time}; the object has to be where \
+                     it is at the ray's own time"
+                ));
+            }
+            if same(shape.shape.intersect(ray).map(|h| h.t)) {
+                return Some(
+                    "yours meets the shape where it sits in its own space, as if it never moved: \
+                     the world ray has to be taken into the object's space first"
+                        .to_string(),
+                );
+            }
+            if same(
+                shape
+                    .shape
+                    .intersect(&to_object_space(ray, &object_to_world))
+                    .map(|h| h.t),
+            ) {
+                return Some(
+                    "the ray was taken into object space by the object-to-world matrix; the one \
+                     that takes world space to object space is its inverse, at_with_inverse's \
+                     second"
+                        .to_string(),
+                );
+            }
+            None
+        };
         let (got, (t, p, n)) = match (got, expected) {
             (None, None) => return None,
             (Some(got), Some(expected)) => (got, expected),
             (got, expected) => {
-                let same = |a: Option<f32>, b: Option<f32>| match (a, b) {
-                    (None, None) => true,
-                    (Some(a), Some(b)) => (a - b).abs() < 1e-3 * a.max(1.0),
-                    _ => false,
-                };
-                let at_other_time = [0.0, 0.5, 1.0].into_iter().find(|&time| {
-                    time != ray.time
-                        && same(
-                            ellipsoid_hit(&shape.motion, ray, time).map(|h| h.0),
-                            got.map(|h| h.t),
-                        )
-                });
                 let said = match (got, expected) {
                     (Some(got), None) => format!(
                         "yours hit it at t = {}, but at the ray's time {} the object is not there{}",
@@ -321,31 +346,25 @@ mod tests {
                         expected.map_or(0.0, |h| h.0)
                     ),
                 };
-                return Some(match at_other_time {
-                    Some(time) => format!(
-                        "{said}: yours looks where the object is at time {time}; the object has \
-                         to be where it is at the ray's own time"
+                return Some(match got.and_then(|got| found_how(got.t)) {
+                    Some(how) => format!("{said}: {how}"),
+                    None if got.is_none() => format!(
+                        "{said}: is the ray taken into the object's space by the world-to-object \
+                         matrix at the ray's time, with its t_max kept?"
                     ),
                     None => said,
                 });
             }
         };
         let close = |a: Vec3, b: Vec3| (a - b).length() <= 1e-3 * b.length().max(1.0);
-        let (object_to_world, world_to_object) = shape.motion.at_with_inverse(ray.time);
         if (got.t - t).abs() > 1e-3 * t.max(1.0) {
             let scaled = got.t * ray.dir.length();
             let local_dir = world_to_object.transform_vector3(ray.dir);
             return Some(format!(
                 "the hit is at t = {t} on the world ray, and yours says t = {}: {}",
                 got.t,
-                if let Some(time) = [0.0, 0.5, 1.0].into_iter().find(|&time| {
-                    ellipsoid_hit(&shape.motion, ray, time)
-                        .is_some_and(|h| (h.0 - got.t).abs() < 1e-4 * h.0.max(1.0))
-                }) {
-                    format!(
-                        "yours looks where the object is at time {time}; the object has to be \
-                         where it is at the ray's own time"
-                    )
+                if let Some(how) = found_how(got.t) {
+                    how
                 } else if (got.t - t * local_dir.length()).abs() < 1e-3 * t.max(1.0)
                     || (got.t - t / local_dir.length()).abs() < 1e-3 * t.max(1.0)
                 {
@@ -397,12 +416,21 @@ mod tests {
                 .map(|h| h.n)
                 .unwrap_or(Vec3::ZERO);
             let like_a_direction = object_to_world.transform_vector3(local_hit).normalize();
+            let linear = Mat3::from_mat4(object_to_world);
+            let by_transpose = (linear.transpose() * local_hit).normalize();
+            let by_inverse = (linear.inverse() * local_hit).normalize();
             Some(format!(
                 "the {name} should be {n}, perpendicular to the stretched surface, and yours is \
                  {got_n}{}",
                 if close(got_n, like_a_direction) {
                     ": it was transformed like a direction, and under a stretch a normal moved \
                      that way leans over with the surface; what matrix keeps it perpendicular?"
+                } else if close(got_n, by_transpose) {
+                    ": it was transformed by the transpose of the object-to-world matrix; a \
+                     normal goes by the transpose of its inverse"
+                } else if close(got_n, by_inverse) {
+                    ": it was transformed by the world-to-object matrix itself; a normal goes by \
+                     that matrix transposed"
                 } else if close(got_n, -n) {
                     ": it points into the object"
                 } else {

@@ -83,7 +83,8 @@ pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 // ANCHOR: stratified_time_sample
 /// The time sample of stratum `stratum` out of `strata`, jittered by `jitter` in `[0, 1)`:
 /// `(stratum + jitter) / strata`, a uniform number inside the stratum. Always below 1, even
-/// where rounding `(strata - 1 + jitter) / strata` would give exactly 1.
+/// where rounding `(strata - 1 + jitter) / strata` would give exactly 1, and otherwise that
+/// number as it is (`ONE_MINUS_EPSILON` is the largest `f32` below 1).
 pub fn stratified_time_sample(stratum: u64, strata: u64, jitter: f32) -> f32 {
     // BEGIN SOLUTION
     let u = (stratum as f64 + f64::from(jitter)) / strata.max(1) as f64;
@@ -244,7 +245,13 @@ mod tests {
         assert!(
             u == ONE_MINUS_EPSILON,
             "stratified_time_sample: one stratum and the largest jitter below 1 give that jitter \
-             back, {ONE_MINUS_EPSILON}; yours gave {u}"
+             back, {ONE_MINUS_EPSILON}; yours gave {u}{}",
+            if u < ONE_MINUS_EPSILON && u > 0.999 {
+                ": the bound that keeps the sample below 1 is lower than it needs to be (1 - \
+                 f32::EPSILON is two steps below 1; ONE_MINUS_EPSILON is the largest f32 below 1)"
+            } else {
+                ""
+            }
         );
     }
 
