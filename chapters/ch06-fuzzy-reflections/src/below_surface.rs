@@ -128,7 +128,12 @@ mod tests {
         });
         receiver
             .recv_timeout(std::time::Duration::from_secs(10))
-            .unwrap_or_else(|_| panic!("BelowSurface::scatter: {what} never returned"))
+            .unwrap_or_else(|_| {
+                panic!(
+                    "BelowSurface::scatter: {what} never returned in 10 seconds: does resampling \
+                     give up after MAX_RESAMPLES directions in all?"
+                )
+            })
     }
 
     #[test]

@@ -155,6 +155,18 @@ mod tests {
 
     const EXPONENTS: [f32; 7] = [0.0, 1.0, 10.0, 100.0, 1e3, 1e4, 1e6];
 
+    /// Why a direction around `center` came out NaN or infinite: the usual cause.
+    fn not_finite_why(center: Vec3) -> &'static str {
+        if center.x.abs().max(center.y.abs()).max(center.z.abs()) > 1.0 - 1e-6 {
+            "is the frame around the centre defined when the centre lies along a coordinate \
+             axis? A cross product with a fixed axis vanishes for a centre along it, and \
+             normalising zero gives NaN (glam's any_orthonormal_pair works for every unit \
+             vector)"
+        } else {
+            "is every vector that is normalised non-zero?"
+        }
+    }
+
     fn centres() -> [Vec3; 4] {
         [
             Vec3::Z,
@@ -181,7 +193,7 @@ mod tests {
                 for u in uniforms(n) {
                     let d = sample_lobe_around(center, exponent, u);
                     let problem = if !d.is_finite() {
-                        "is not finite".to_string()
+                        format!("is not finite: {}", not_finite_why(center))
                     } else if (d.length() - 1.0).abs() > 1e-4 {
                         format!(
                             "has length {}: turning a unit vector with an orthonormal frame keeps \
@@ -263,7 +275,12 @@ mod tests {
                 assert!(
                     d.dot(center) > 1.0 - 1e-6,
                     "sample_lobe_around: an exponent of 1e9 makes the lobe a mirror, every \
-                     direction the centre {center} itself; ξ = {u} gave {d}"
+                     direction the centre {center} itself; ξ = {u} gave {d}{}",
+                    if d.is_finite() {
+                        String::new()
+                    } else {
+                        format!(": {}", not_finite_why(center))
+                    }
                 );
             }
         }
@@ -277,7 +294,13 @@ mod tests {
             .collect();
         for &(u, d) in &samples {
             let length = d.length();
-            if !d.is_finite() || (length - 1.0).abs() > 1e-4 {
+            if !d.is_finite() {
+                return Some(format!(
+                    "ξ = {u} gave {d}, which is not finite: {}",
+                    not_finite_why(center)
+                ));
+            }
+            if (length - 1.0).abs() > 1e-4 {
                 return Some(format!(
                     "ξ = {u} gave {d}, of length {length}: a direction is a unit vector"
                 ));

@@ -32,7 +32,8 @@ pub struct Lobe {
 /// The radiance `lobe` scatters back along the incoming ray from every point light of the
 /// scene that `hit` sees, at the shutter `time`, on the lobe's side of the surface (the
 /// material's reflectance is applied by the caller). Every shadow ray traced is counted in
-/// `counters.rays`; a light the lobe cannot send light from needs none.
+/// `counters.rays`; a light the lobe cannot send light from needs none, and a smooth lobe
+/// (an infinite exponent, a mirror) shows no point light at all.
 ///
 /// How much of a light's intensity arrives at the point, and what share of it does the lobe
 /// send back along the ray?

@@ -140,8 +140,8 @@ impl<L: Lighting> Tracer<'_, L> {
     /// A fuzzy mirror: the radiance leaving `hit` back along `ray` from the point lights'
     /// highlights ([`point_light_highlights`](crate::highlights::point_light_highlights)) and
     /// one ray into the lobe of the material's exponent around the mirror direction
-    /// ([`spread`](Self::spread)), on the side the ray arrives from. The back of a one-sided
-    /// surface is black.
+    /// ([`spread`](Self::spread)), on the side the ray arrives from, about the shading normal
+    /// `hit.shading_n` turned to that side. The back of a one-sided surface is black.
     ///
     /// The lobe is the material's own distribution of directions: sampling it, what is left
     /// to weight the ray's light by?
@@ -180,7 +180,8 @@ impl<L: Lighting> Tracer<'_, L> {
     /// The radiance arriving at `hit` along one direction drawn from `lobe` (for the ray
     /// `ray`, segment `depth` of its path), the render's below-surface policy deciding what a
     /// direction on the wrong side becomes; 0 when the policy drops it. A smooth lobe (an
-    /// infinite exponent) is its centre alone, and draws no numbers.
+    /// infinite exponent) is its centre alone, and draws no numbers. The light is carried back
+    /// by the path's next segment.
     ///
     /// Which ray carries that light back, from where, and at what time?
     pub fn spread<S: Sampler>(
@@ -217,7 +218,9 @@ impl<L: Lighting> Tracer<'_, L> {
     /// lobe (that one of exponent [`transmission_exponent`]), each with the point lights'
     /// highlights ([`point_light_highlights`](crate::highlights::point_light_highlights)) and
     /// one ray spread into it ([`spread`](Self::spread)); the render's [`GlassStrategy`] says
-    /// whether to follow both or one chosen at random (`choose_half`, `choose_fresnel`).
+    /// whether to follow both or one chosen at random (`choose_half`, `choose_fresnel`, with the
+    /// sampler's next number). Following both draws no number for a choice. The surface's
+    /// geometric normal `hit.n` separates the two sides.
     ///
     /// Which side of the surface is the ray on, and what does that change? What must a branch
     /// taken at random be weighted by, and what happens to radiance that crosses into another
@@ -469,6 +472,15 @@ mod tests {
             )
         } else if close((1.0 - f) * near + f * eta * eta * far) {
             "the reflected and the refracted light have each other's Fresnel shares".to_string()
+        } else if close(f * eta * eta * near + (1.0 - f) * eta * eta * far) {
+            "the reflected light was scaled by (eta_i / eta_t)^2 too: only radiance that \
+             crosses into the other medium changes its cone"
+                .to_string()
+        } else if from_above && close(f * near + (1.0 - f) / (eta * eta) * far) {
+            "the ratio of the indices is upside down: refract and the factor (eta_i / eta_t)^2 \
+             take the index on the ray's side over the index on the other side, ext_ior / \
+             int_ior for a ray arriving from outside"
+                .to_string()
         } else if !from_above {
             "from inside, the ray meets the back of the surface: the normal facing it is -n, \
              and the ratio of the indices is the other way up"
@@ -592,7 +604,21 @@ mod tests {
                     let unblocked_now: f32 = seen.iter().map(|&at| term(at)).sum::<f32>()
                         + if time > 0.5 { term(lights[0]) } else { 0.0 };
                     let no_falloff: f32 = seen.iter().map(|&at| density(at)).sum();
-                    let why = if (got - all_above).abs() <= 1e-3 * all_above {
+                    let around_normal: f32 = seen
+                        .iter()
+                        .map(|&at| {
+                            method.pdf(at.normalize().dot(Vec3::Y), 20.0) / at.length_squared()
+                        })
+                        .sum();
+                    let why = if got == 0.0 {
+                        "no light got through: does each shadow ray stop at its light? One that \
+                         goes on past the light meets whatever lies behind it (here a ceiling)"
+                            .to_string()
+                    } else if (got - around_normal).abs() <= 1e-3 * around_normal {
+                        "the density was taken at the angle from the surface's normal; the lobe \
+                         is centred on its mirror direction, lobe.center"
+                            .to_string()
+                    } else if (got - all_above).abs() <= 1e-3 * all_above {
                         "a light hidden by another object shows no highlight: is a shadow ray \
                          traced to each light?"
                             .to_string()
@@ -656,6 +682,8 @@ mod tests {
              surface), should show {expected}, and yours gave {got}{}",
             if (got - expected - term(below)).abs() <= 1e-3 * got {
                 ": a light below the surface cannot be seen in it"
+            } else if got == 0.0 {
+                ": no light got through; does each shadow ray stop at its light?"
             } else {
                 ""
             }
@@ -742,7 +770,7 @@ mod tests {
 
     #[test]
     fn exercise_glossy_shows_the_lights_it_sees_at_the_rays_time() {
-        // The floor of exponent 20 and reflectance 1 of the highlights check: at time 0.8 the
+        // The floor of exponent 20 of the highlights check, of reflectance 0.5: at time 0.8 the
         // moving ball hides the first light.
         let ray = towards_origin(40.0, true).with_time(0.8);
         let mirror = reflect(ray.dir, Vec3::Y);
@@ -750,20 +778,27 @@ mod tests {
             3.0 * (mirror + Vec3::new(0.1, 0.0, 0.25)).normalize(),
             2.0 * mirror,
         ];
-        let world = floor_with_lights(&[lights[0], lights[1], Vec3::new(0.0, 5.0, 40.0)]);
-        let term =
-            |at: Vec3| FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared();
+        let world = floor_of_with_lights(
+            Material::glossy(Vec3::splat(0.5), 20.0),
+            &[lights[0], lights[1], Vec3::new(0.0, 5.0, 40.0)],
+        );
+        let term = |at: Vec3| {
+            0.5 * FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared()
+        };
         let expected = term(lights[1]);
-        let around_normal = FuzzMethod::Lobe.pdf(lights[1].normalize().y, 20.0) / 4.0;
+        let around_normal = 0.5 * FuzzMethod::Lobe.pdf(lights[1].normalize().y, 20.0) / 4.0;
         // The spread rays find the black ceiling: only the highlights remain.
         let (got, _, _) = mean_of(&world, &Glow(Vec::new()), TraceOptions::default(), &ray, 20);
         assert!(
             (got.x - expected).abs() <= 1e-3 * expected,
-            "glossy: a fuzzy mirror of exponent 20 at time 0.8, with a light near its mirror \
-             direction and another hidden at that time by a moving ball, should show the \
-             highlight {expected}, and yours showed {}: {}",
+            "glossy: a fuzzy mirror of exponent 20 and reflectance 0.5 at time 0.8, with a light \
+             near its mirror direction and another hidden at that time by a moving ball, should \
+             show the highlight {expected}, and yours showed {}: {}",
             got.x,
-            if (got.x - expected - term(lights[0])).abs() <= 1e-3 * expected {
+            if (got.x - 2.0 * expected).abs() <= 1e-3 * expected {
+                "the highlight is not weighted by the reflectance: the material reflects only \
+                 its share of the light arriving from the lamp too"
+            } else if (got.x - expected - term(lights[0])).abs() <= 1e-3 * expected {
                 "the hidden light shows: the highlights' shadow rays lost the ray's shutter time"
             } else if (got.x - around_normal).abs() <= 1e-3 * around_normal {
                 "is the lobe centred on the mirror direction? Yours is centred on the normal"
@@ -878,6 +913,41 @@ mod tests {
     }
 
     #[test]
+    fn exercise_spread_is_the_next_segment_of_the_path() {
+        // The plane at y = 0 glows blue; a mirror ceiling sends its smooth lobe's ray back down
+        // to it. With at most 2 segments, the spread ray (segment 2) is the last: it finds what
+        // the mirror emits (nothing), and no third segment brings the blue back.
+        let plane = |y: f32, e1: Vec3, e2: Vec3| {
+            Shape::Parallelogram(Parallelogram::new(Vec3::new(-50.0, y, -50.0), e1, e2))
+        };
+        let (x, z) = (100.0 * Vec3::X, 100.0 * Vec3::Z);
+        let frame = CameraFrame::look_at(Vec3::new(0.0, 2.0, 5.0), Vec3::ZERO, Vec3::Y).unwrap();
+        let scene = SceneBuilder::new()
+            .environment(Vec3::ZERO)
+            .shape(plane(0.0, z, x), Material::diffuse(Vec3::ZERO))
+            .shape(
+                plane(3.0, x, z),
+                Material::Mirror {
+                    reflectance: Vec3::ONE,
+                },
+            )
+            .build(Camera::pinhole(frame, 40.0), FilmSettings::new(8, 8), 2);
+        let world = MotionScene::still(scene);
+        let lighting = Glow(vec![BLUE]);
+        let ray = towards_origin(30.0, true);
+        let options = TraceOptions::default();
+        let (got, _, _) = spread_from_floor(&world, &lighting, options, &ray, f32::INFINITY, 1);
+        assert!(
+            got == 0.0,
+            "spread: at most 2 segments per path, a smooth lobe from a glowing plane (the \
+             camera ray, segment 1, met it) towards a mirror ceiling that sends it back down \
+             should bring back nothing: the spread ray is segment 2, the last, and finds only \
+             what the mirror emits. Yours brought back {got} (summed over the channels): is \
+             the spread ray traced as the next segment of the path, depth + 1?"
+        );
+    }
+
+    #[test]
     fn exercise_spread_follows_the_below_surface_policy() {
         // A floor in a world that glows 1 everywhere, met at 80° from the normal: much of a
         // lobe of exponent 1 around the mirror direction is below the floor.
@@ -944,6 +1014,26 @@ mod tests {
                 panic!("glass, following both rays: {mistake}");
             }
         }
+        // Nothing to choose and nothing to spread: no number is drawn.
+        let tracer = Tracer {
+            world: &world,
+            lighting: &lighting,
+            options: options(GlassStrategy::Both),
+        };
+        let mut sampler = Counting {
+            inner: IndependentSampler::new(5),
+            drawn: 0,
+        };
+        sampler.start_pixel_sample(UVec2::ZERO, 0);
+        let ray = towards_origin(45.0, true);
+        tracer.trace(&ray, 1, &mut sampler, &mut SampleCounters::default());
+        assert!(
+            sampler.drawn == 0,
+            "glass, following both rays: smooth glass drew {} number(s) from the sampler; \
+             following both rays chooses nothing, and a smooth lobe spreads nothing, so no \
+             number is drawn (one drawn shifts every later dimension of the sample)",
+            sampler.drawn
+        );
     }
 
     #[test]
