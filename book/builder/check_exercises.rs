@@ -547,7 +547,7 @@ incremental = true
 /// compiled instead of compiling it once more. The chapters are compiled incrementally: the
 /// trials change a few function bodies per round, which rustc's caches rebuild in seconds.
 /// The edition handed to students (`book student`) keeps the workspace's settings.
-fn separate_crates_config(workspace_incremental: bool) -> String {
+pub fn separate_crates_config(workspace_incremental: bool) -> String {
     format!(
         "# Written by `book check-exercises` for its own build of the student edition: the \
          chapters\n\
@@ -569,12 +569,12 @@ const WORKSPACE_DEV_DEBUG: &str = "line-tables-only";
 
 /// Whether the workspace's own builds in this process's environment are incremental: as
 /// `CARGO_INCREMENTAL` says, else as the dev profile's default (the manifest sets none).
-fn workspace_incremental() -> bool {
+pub fn workspace_incremental() -> bool {
     std::env::var("CARGO_INCREMENTAL").map_or(true, |value| value != "0")
 }
 
 /// Writes `config` as the `.cargo/config.toml` of the copy at `dir`.
-fn write_config(edition: &Path, config: &str) -> Result<()> {
+pub fn write_config(edition: &Path, config: &str) -> Result<()> {
     let dir = edition.join(".cargo");
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let path = dir.join("config.toml");
@@ -582,12 +582,12 @@ fn write_config(edition: &Path, config: &str) -> Result<()> {
 }
 
 /// Where cargo puts the student edition's build.
-struct EditionBuild {
+pub struct EditionBuild {
     /// Final artifacts (binaries), kept apart from the workspace's.
-    target_dir: PathBuf,
+    pub target_dir: PathBuf,
     /// Intermediate artifacts: the workspace's own build directory, so that the dependencies
     /// compiled for the workspace are reused rather than compiled a second time.
-    build_dir: PathBuf,
+    pub build_dir: PathBuf,
 }
 
 impl EditionBuild {
@@ -598,7 +598,7 @@ impl EditionBuild {
     /// trials change a few function bodies per round and rebuild every chapter that holds
     /// one: about 20 s per round on a 2-core machine from scratch, about 2 s with rustc's
     /// incremental caches.)
-    fn apply(&self, command: &mut Command) {
+    pub fn apply(&self, command: &mut Command) {
         command.env("CARGO_TARGET_DIR", &self.target_dir);
         command.env_remove("CARGO_INCREMENTAL");
         if std::env::var_os("CARGO_BUILD_BUILD_DIR").is_none() {

@@ -23,6 +23,8 @@ mod exercise_preprocessor;
 mod figures;
 mod katex_offline;
 mod lab_report;
+#[cfg(feature = "browser")]
+mod lab_report_check;
 mod mdbook_log;
 mod offline_check;
 mod progress;
@@ -105,6 +107,16 @@ enum Task {
         /// The workbook: the repository with the solutions, from which this edition was made.
         #[arg(long, value_name = "PATH")]
         from: PathBuf,
+    },
+    /// Walk a student's path to their lab report, as CI does: a fresh student edition with
+    /// chapters 01 and 02 checkpointed runs `progress --site`, and its site must show their
+    /// figures beside the reference ones and pass `check-site` (needs the workbook's figures
+    /// built first).
+    CheckLabReport {
+        /// Where to write a screenshot of every page [default: lab-report-screenshots/ in
+        /// cargo's target directory].
+        #[arg(long, value_name = "DIR")]
+        screenshots: Option<PathBuf>,
     },
     /// Open every page of the built site in headless Chromium (offline, from disk) and fail on
     /// a broken image, an image without alt text, a broken link or anchor, a formula KaTeX
@@ -225,6 +237,11 @@ fn main() -> Result<()> {
                 write_needs,
             )
         }
+        Some(Task::CheckLabReport { screenshots }) => {
+            let screenshots = screenshots
+                .unwrap_or_else(|| workspace::target_dir(&root).join("lab-report-screenshots"));
+            check_lab_report(&root, &screenshots)
+        }
         Some(Task::CheckSite {
             site,
             screenshots,
@@ -237,6 +254,21 @@ fn main() -> Result<()> {
             check_site(site, screenshots, !no_alt_check, search)
         }
     }
+}
+
+#[cfg(feature = "browser")]
+fn check_lab_report(root: &Path, screenshots: &Path) -> Result<()> {
+    lab_report_check::run(root, screenshots)
+}
+
+/// Without the browser driver, `check-lab-report` says how to build it in.
+#[cfg(not(feature = "browser"))]
+fn check_lab_report(_root: &Path, _screenshots: &Path) -> Result<()> {
+    anyhow::bail!(
+        "check-lab-report opens the student's site in headless Chromium, and this build of the \
+         book leaves the browser driver out: run `cargo run -p book --features browser -- \
+         check-lab-report`"
+    )
 }
 
 /// Without the browser driver, `check-site` says how to build it in.
