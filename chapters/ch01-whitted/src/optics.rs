@@ -22,6 +22,10 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 /// `eta_i sin(theta_i) = eta_t sin(theta_t)`, or `None` when there is no refracted ray: total
 /// internal reflection, when `sin(theta_t) = eta sin(theta_i)` would exceed 1.
 ///
+/// `d` is a unit direction towards the surface, `n` the unit normal on the side `d` comes from
+/// (`d.dot(n) < 0`), and `eta` the relative index `eta_i / eta_t`, of the medium the ray leaves
+/// over the one it enters. The answer is a unit direction too.
+///
 /// Exactly at the critical angle `sin(theta_t) = 1` and the refracted ray runs along the
 /// surface; it is returned, and the Fresnel reflectance there is 1, so it carries no light.
 pub fn refract(d: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
@@ -44,8 +48,10 @@ pub fn refract(d: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
 /// equations for light polarised perpendicular (`r_s`) and parallel (`r_p`) to the plane of
 /// incidence.
 ///
-/// `cos_i` is the cosine between the incident ray and the normal (in `[0, 1]`), `eta` the
-/// relative index `eta_i / eta_t`. The refracted share is `1 - fresnel_dielectric(...)`.
+/// `cos_i` is the cosine between the incident ray and the normal (in `[0, 1]`, 0 at grazing
+/// incidence), `eta` the relative index `eta_i / eta_t`. The refracted share is
+/// `1 - fresnel_dielectric(...)`. The answer is a share for every `cos_i` in `[0, 1]`, at
+/// grazing incidence too, and whatever `eta` is, 1 included (the same index on both sides).
 #[inline]
 pub fn fresnel_dielectric(cos_i: f32, eta: f32) -> f32 {
     // BEGIN SOLUTION
@@ -217,7 +223,13 @@ mod tests {
             assert!(
                 t.is_some_and(|t| (t - d).length() < 1e-5),
                 "refract: with eta = 1 both sides have the same index, so the ray goes straight \
-                 on, even at {theta:.3} rad. d = {d}: your refract gave {t:?}"
+                 on, even at {theta:.3} rad{}. d = {d}: your refract gave {t:?}",
+                if t.is_none() {
+                    ", where sin(theta_t) = eta sin(theta_i) is 1 or just below: there is a \
+                     refracted ray unless sin(theta_t) exceeds 1"
+                } else {
+                    ""
+                }
             );
         }
     }
@@ -270,8 +282,23 @@ mod tests {
             "that is the mean of the amplitude ratios: the reflectance is the mean of their \
              squares"
                 .to_string()
+        } else if (f - (r_s * r_s + r_p * r_p)).abs() <= 1e-5 {
+            "that is the sum of r_s^2 and r_p^2: unpolarised light is half s and half p, so the \
+             reflectance is their mean"
+                .to_string()
         } else {
-            format!("it should be {expected}")
+            let r0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
+            let schlick = r0 + (1.0 - r0) * (1.0 - cos_i).powi(5);
+            if (f - schlick).abs() <= 1e-5 {
+                "that is Schlick's approximation: the exercise asks for the Fresnel equations \
+                 themselves"
+                    .to_string()
+            } else {
+                format!(
+                    "it is not the mean of r_s^2 and r_p^2 (here r_s = {r_s}, r_p = {r_p}, with \
+                     cos(theta_t) from Snell's law)"
+                )
+            }
         };
         Some(format!(
             "{mistake}.\n  cos_i = {cos_i}, eta = {eta}: your fresnel_dielectric gave {f}, \
@@ -313,6 +340,7 @@ mod tests {
             check_fresnel(theta.cos(), 1.5);
         }
         // The reflectance rises steeply but continuously to 1 at the critical angle.
+        check_fresnel((critical - 1e-3).cos(), 1.5);
         let below = fresnel_dielectric((critical - 1e-3).cos(), 1.5);
         assert!(
             below > 0.5 && below < 1.0,

@@ -14,11 +14,16 @@ use glam::Vec3;
 
 // ANCHOR: trace
 /// The radiance arriving along `ray`, which is segment number `depth` of its path (the camera
-/// ray is segment 1; a path has at most the scene's `max_depth` segments, as in Mitsuba).
-/// Every ray it spawns keeps the ray's shutter `time`, and every ray traced is counted once in
-/// `counters.rays` (`direct_light` counts its own shadow rays). Chapter 06's materials
-/// (`Glossy`, `RoughGlass`) and chapter 08's (`Conductor`, `ThinDielectric`, `Plastic`) reflect
-/// nothing here: the capability check refuses them or puts the lecture's stand-in in their place.
+/// ray is segment 1; a path has at most the scene's `max_depth` segments, as in Mitsuba). A ray
+/// that hits nothing brings back the scene's `environment`.
+///
+/// Every ray it spawns leaves by `hit.spawn_ray` and keeps the ray's shutter `time`, and every
+/// ray traced is counted once in `counters.rays` (`direct_light` counts its own shadow rays).
+/// A textured matte surface's albedo at the hit is `scene.albedo(texture, hit.uv)`. A mirror
+/// reflects on its front side only, the side `hit.n` points to. Chapter 06's materials
+/// (`Glossy`, `RoughGlass`) and chapter 08's (`Conductor`, `ThinDielectric`, `Plastic`, `Mask`,
+/// `TintedGlass`) reflect nothing here: the capability check refuses them or puts the
+/// lecture's stand-in in their place.
 pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCounters) -> Vec3 {
     // BEGIN SOLUTION
     use crate::optics::reflect;
@@ -73,12 +78,16 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
 
 // ANCHOR: direct_light
 /// The radiance a matte surface of `albedo` reflects back along `ray` from the scene's point
-/// lights: each light counts only where a shadow ray from `hit` reaches it unblocked. The back
-/// of a one-sided surface is black; a `two_sided` one is matte on both sides.
+/// lights: each light counts only where a shadow ray from `hit` reaches it unblocked
+/// (`world.occluded`; only what lies between the point and the light can block it). The back
+/// of a one-sided surface is black; a `two_sided` one is matte on both sides. The slant of the
+/// light is measured from the shading normal `hit.shading_n`, turned to the side the ray
+/// arrived on; which side that is, the geometric normal says (`hit.front_face`). A light
+/// exactly at the lit point has no direction from it and lights nothing.
 ///
-/// Every shadow ray traced is counted in `counters.rays`, and none is traced that could not
-/// change the answer. Public because the later chapters' tracers light their matte surfaces the
-/// same way.
+/// Every shadow ray leaves by `hit.spawn_ray_to` at the ray's shutter `time`, is counted in
+/// `counters.rays`, and none is traced that could not change the answer. Public because the
+/// later chapters' tracers light their matte surfaces the same way.
 pub fn direct_light<W: World>(
     world: &W,
     ray: &Ray,
@@ -126,7 +135,8 @@ pub fn direct_light<W: World>(
 /// `int_ior` is the index inside the glass (behind the normal `hit.n`), `ext_ior` the one
 /// outside; the ray may arrive from either side. `trace_next` follows a ray one segment further
 /// along the path and returns the radiance it brings back; a ray whose share is zero is not
-/// traced. Public so that a later tracer can reuse it.
+/// traced. Every ray it spawns leaves by `hit.spawn_ray` and keeps the ray's shutter `time`.
+/// Public so that a later tracer can reuse it.
 pub fn dielectric(
     ray: &Ray,
     hit: &SurfaceHit,

@@ -31,7 +31,8 @@ pub enum Material {
         /// Whether the back face reflects too.
         two_sided: bool,
     },
-    /// A perfect mirror reflecting `reflectance` of the light.
+    /// A perfect mirror reflecting `reflectance` of the light. Like Mitsuba's, it is a mirror on
+    /// its front side only, the side its normal points to; seen from behind it is black.
     Mirror {
         /// Share reflected, per colour channel.
         reflectance: Vec3,

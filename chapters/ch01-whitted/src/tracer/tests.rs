@@ -61,6 +61,12 @@ impl Recording {
     }
 }
 
+/// Whether `ray` goes somewhere: a finite origin and a finite, non-zero direction. A ray that
+/// does not is written down (the check says what made it) but never reaches the geometry.
+fn goes_somewhere(ray: &Ray) -> bool {
+    ray.origin.is_finite() && ray.dir.is_finite() && ray.dir != Vec3::ZERO
+}
+
 impl World for Recording {
     fn scene(&self) -> &Scene {
         &self.scene
@@ -68,12 +74,14 @@ impl World for Recording {
 
     fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         self.record(ray, false);
-        self.scene.geometry.intersect(ray)
+        goes_somewhere(ray)
+            .then(|| self.scene.geometry.intersect(ray))
+            .flatten()
     }
 
     fn occluded(&self, ray: &Ray) -> bool {
         self.record(ray, true);
-        self.scene.geometry.occluded(ray)
+        goes_somewhere(ray) && self.scene.geometry.occluded(ray)
     }
 }
 

@@ -107,6 +107,25 @@ fn check(ray: &Ray, int_ior: f32, ext_ior: f32, case: &str) {
         (mine.y, mine.x)
     };
     for traced in &traced {
+        let along = |dir: Vec3| (traced.dir - dir).length() <= 1e-4;
+        if !traced.dir.is_finite() {
+            panic!(
+                "dielectric ({case}): a ray it spawned goes along {}, not a finite direction: do \
+                 the checks of reflect and refract pass?",
+                traced.dir
+            );
+        }
+        if !along(reflected_dir) && !refracted_dir.is_some_and(along) {
+            panic!(
+                "dielectric ({case}): a ray it spawned goes along {}, which is neither the \
+                 mirror direction {reflected_dir} nor the refracted one{}: the normal must \
+                 face the ray, for reflect as for refract (flip hit.n when it does not, \
+                 front_face tells), and refract's eta is eta_i / eta_t, the index the ray leaves \
+                 over the one it enters",
+                traced.dir,
+                refracted_dir.map_or(" (there is none here)".to_string(), |dir| format!(" {dir}"))
+            );
+        }
         if traced.time != TIME {
             panic!(
                 "dielectric ({case}): a ray it spawned travels at shutter time {}, the ray \
@@ -153,9 +172,9 @@ fn check(ray: &Ray, int_ior: f32, ext_ior: f32, case: &str) {
         None
     } else if !from_above && traced.len() == 1 && reflected_weight > 0.99 && t > 0.0 {
         Some(
-            "from inside the glass everything came back as reflection: the normal must face \
-             the ray (flip hit.n when it does not, front_face tells), and then the indices \
-             swap"
+            "from inside the glass everything came back as reflection, as at grazing \
+             incidence: the normal must face the ray (flip hit.n when it does not, front_face \
+             tells), for cos(theta_i) as for refract, and then the indices swap"
                 .to_string(),
         )
     } else if (reflected_weight - eta_swapped).abs() < 1e-4 && (f - eta_swapped).abs() > 1e-4 {
@@ -164,10 +183,24 @@ fn check(ray: &Ray, int_ior: f32, ext_ior: f32, case: &str) {
              from over the one it enters, and from inside the glass that is int_ior / ext_ior"
                 .to_string(),
         )
+    } else if (reflected_weight - 1.0).abs() < 1e-4 && f < 0.99 && reflected.is_some() {
+        Some(format!(
+            "the reflected ray carries everything, as at grazing incidence, where its Fresnel \
+             share is {f}: is cos(theta_i) measured from the normal that faces the ray, so \
+             that it is positive?"
+        ))
     } else if (reflected_weight - f).abs() > 1e-4 {
         Some(format!(
             "the reflected ray carries {reflected_weight}, its Fresnel share is {f}"
         ))
+    } else if t > 0.0 && refracted.is_none() {
+        Some(
+            "no refracted ray was traced, but here there is one: sin(theta_t) = \
+             eta sin(theta_i) is below 1, with eta = eta_i / eta_t, the index the ray leaves \
+             over the one it enters (and refract wants the normal on the side the ray comes \
+             from)"
+                .to_string(),
+        )
     } else if t > 0.0 && (refracted_weight - (1.0 - f)).abs() < 1e-4 {
         Some(
             "the refracted ray carries 1 - F without the change of radiance across the \
@@ -176,11 +209,24 @@ fn check(ray: &Ray, int_ior: f32, ext_ior: f32, case: &str) {
                 .to_string(),
         )
     } else if t > 0.0 {
-        let eta = t / (1.0 - f);
-        if (refracted_weight - (1.0 - f) / eta / eta).abs() < 1e-4 {
-            Some(
+        // t = (1 - F) eta^2: the mistake weighs the refracted ray by (1 - F) / eta^2.
+        let eta_squared = t / (1.0 - f);
+        if (refracted_weight - (1.0 - f) / eta_squared).abs() < 1e-4 {
+            Some(format!(
                 "the refracted ray is scaled by the squared ratio of the indices upside down: \
-                 seen from the side the ray comes from, eta = eta_i / eta_t is squared"
+                 seen from the side the ray comes from, eta = eta_i / eta_t is squared{}",
+                if from_above {
+                    ""
+                } else {
+                    " (or eta itself is upside down: from inside the glass it is \
+                     int_ior / ext_ior)"
+                }
+            ))
+        } else if (refracted_weight - (1.0 - f) * eta_squared.sqrt()).abs() < 1e-4 {
+            Some(
+                "the refracted ray is scaled by the ratio of the indices, not by its square: \
+                 radiance is squeezed into a narrower cone in both directions across the \
+                 surface, so it changes by eta^2"
                     .to_string(),
             )
         } else {

@@ -9,7 +9,7 @@ use common::render::SampleCounters;
 use common::scene::{Material, PointLight, SceneBuilder};
 use glam::{Vec2, Vec3};
 
-use super::{Recording, build, close};
+use super::{Asked, Recording, build, close};
 use crate::tracer::direct_light;
 
 const ALBEDO: Vec3 = Vec3::new(0.8, 0.5, 0.2);
@@ -67,8 +67,16 @@ fn expected_from(light: Vec3, p: Vec3, normal: Vec3) -> Vec3 {
 }
 
 /// What is wrong with `mine`, the radiance from one light at `light` onto `p` (normal
-/// `normal`), in words; `None` if it is right.
-fn one_light_mistake(mine: Vec3, light: Vec3, p: Vec3, normal: Vec3) -> Option<String> {
+/// `normal`), in words; `None` if it is right. `asked` are the rays `direct_light` asked
+/// `world` about, which tell why a lit point came out black.
+fn one_light_mistake(
+    world: &Recording,
+    asked: &[Asked],
+    mine: Vec3,
+    light: Vec3,
+    p: Vec3,
+    normal: Vec3,
+) -> Option<String> {
     let expected = expected_from(light, p, normal);
     if close(mine, expected, 1e-4) {
         return None;
@@ -80,10 +88,7 @@ fn one_light_mistake(mine: Vec3, light: Vec3, p: Vec3, normal: Vec3) -> Option<S
     let mistake = if !mine.is_finite() {
         "it is not a finite colour".to_string()
     } else if mine == Vec3::ZERO {
-        "it is black, but the light shines on this point and nothing is in the way: is the \
-         shadow ray blocked by something it should not see (the floor itself, or what lies \
-         beyond the light)?"
-            .to_string()
+        black_but_lit(world, asked)
     } else if looks_like(PI) {
         "it is pi times too bright: a matte surface reflects albedo / pi of the irradiance per \
          unit solid angle (so that all it reflects over the hemisphere adds up to the albedo)"
@@ -117,11 +122,57 @@ fn one_light_mistake(mine: Vec3, light: Vec3, p: Vec3, normal: Vec3) -> Option<S
     ))
 }
 
-/// The shadow rays `world` was asked about since the last call, checked for their time and
-/// counted against `counted` (what `direct_light` added to `counters.rays`) and `needed`.
-fn check_shadow_rays(world: &Recording, counted: u64, needed: usize, case: &str) {
-    let asked = world.take();
+/// Why a point that one light shines on, with nothing in the way, came out black, from the
+/// rays `direct_light` asked `world` about.
+fn black_but_lit(world: &Recording, asked: &[Asked]) -> String {
+    let shadow: Vec<&Ray> = asked.iter().filter(|a| a.shadow).map(|a| &a.ray).collect();
+    let Some(ray) = shadow.first() else {
+        return "it is black and traced no shadow ray, but the light shines on this point \
+                (cos(theta) > 0) and nothing is in the way: such a light is counted"
+            .to_string();
+    };
+    if world.scene.geometry.occluded(ray) {
+        "it is black, but the light shines on this point and nothing is in the way: its shadow \
+         ray was blocked by something it should not see (the surface itself, or what lies \
+         beyond the light)"
+            .to_string()
+    } else {
+        "it is black, although its shadow ray reached the light (world.occluded answered \
+         false): occluded is true when something is in the way, and a light whose shadow ray is \
+         not blocked counts"
+            .to_string()
+    }
+}
+
+/// The first ray `direct_light` asked about that goes nowhere (a direction that is NaN or
+/// zero), in words.
+fn ray_to_nowhere(asked: &[Asked]) -> Option<String> {
+    asked
+        .iter()
+        .find(|a| !super::goes_somewhere(&a.ray))
+        .map(|a| {
+            format!(
+                "it traced a shadow ray from {} along {}, which goes nowhere",
+                a.ray.origin, a.ray.dir
+            )
+        })
+}
+
+/// Why a light below a floor lit from above needs no shadow ray.
+const BEHIND: &str = "a light behind the surface (cos(theta) <= 0) cannot light it, so it needs \
+                      no shadow ray";
+
+/// The rays `direct_light` asked about (`asked`), checked: shadow rays only, each going
+/// somewhere, at the arriving ray's time, counted once in `counted` (what it added to
+/// `counters.rays`), and `needed` of them; `why_none` says why the others need none.
+fn check_shadow_rays(asked: &[Asked], counted: u64, needed: usize, case: &str, why_none: &str) {
     let shadow: Vec<_> = asked.iter().filter(|a| a.shadow).collect();
+    if let Some(nowhere) = ray_to_nowhere(asked) {
+        panic!(
+            "direct_light ({case}): {nowhere}: a shadow ray goes from the point towards the \
+             light, hit.spawn_ray_to(light.position, ray.time)"
+        );
+    }
     if let Some(first) = asked.iter().find(|a| !a.shadow) {
         panic!(
             "direct_light ({case}): it asked the world for the nearest hit along {:?}; a shadow \
@@ -147,8 +198,7 @@ fn check_shadow_rays(world: &Recording, counted: u64, needed: usize, case: &str)
     if shadow.len() > needed {
         panic!(
             "direct_light ({case}): it traced {} shadow rays where {needed} can change the \
-             answer: a light behind the surface (cos(theta) <= 0) cannot light it, so it needs \
-             no shadow ray",
+             answer: {why_none}",
             shadow.len()
         );
     }
@@ -166,10 +216,11 @@ fn exercise_direct_light_of_one_light() {
     let light = Vec3::new(1.0, 2.0, 0.5);
     let world = floor_world(&[light], &[], false);
     let (mine, hit, counted) = light_floor(&world, EYE, false);
-    if let Some(mistake) = one_light_mistake(mine, TARGET + light, hit.p, Vec3::Y) {
+    let asked = world.take();
+    if let Some(mistake) = one_light_mistake(&world, &asked, mine, TARGET + light, hit.p, Vec3::Y) {
         panic!("direct_light, one light above the floor: {mistake}");
     }
-    check_shadow_rays(&world, counted, 1, "one light above the floor");
+    check_shadow_rays(&asked, counted, 1, "one light above the floor", BEHIND);
 }
 
 #[test]
@@ -179,6 +230,7 @@ fn exercise_direct_light_adds_every_light() {
     let (mine, hit, counted) = light_floor(&world, EYE, false);
     let each = lights.map(|l| expected_from(TARGET + l, hit.p, Vec3::Y));
     let expected = each[0] + each[1];
+    let asked = world.take();
     assert!(
         close(mine, expected, 1e-4),
         "direct_light, two lights above the floor: it gave {mine}; the lights give {} and {} on \
@@ -186,12 +238,14 @@ fn exercise_direct_light_adds_every_light() {
         each[0],
         each[1],
         if close(mine, each[0], 1e-4) || close(mine, each[1], 1e-4) {
-            ": only one of them was counted"
+            ": only one of them was counted".to_string()
+        } else if mine == Vec3::ZERO {
+            format!(": {}", black_but_lit(&world, &asked))
         } else {
-            ""
+            String::new()
         }
     );
-    check_shadow_rays(&world, counted, 2, "two lights above the floor");
+    check_shadow_rays(&asked, counted, 2, "two lights above the floor", BEHIND);
 }
 
 #[test]
@@ -200,6 +254,7 @@ fn exercise_direct_light_ignores_lights_behind_the_surface() {
     let world = floor_world(&[Vec3::new(0.5, -1.0, 0.0), above], &[], false);
     let (mine, hit, counted) = light_floor(&world, EYE, false);
     let expected = expected_from(TARGET + above, hit.p, Vec3::Y);
+    let asked = world.take();
     if !close(mine, expected, 1e-4) {
         let behind = expected_from(TARGET + Vec3::new(0.5, -1.0, 0.0), hit.p, Vec3::Y);
         panic!(
@@ -208,15 +263,19 @@ fn exercise_direct_light_ignores_lights_behind_the_surface() {
             if close(mine, expected + behind, 1e-3) {
                 ". The light below added its negative cos(theta): a light behind the surface \
                  gives nothing, it does not take light away"
+                    .to_string()
             } else if close(mine, expected - behind, 1e-3) {
                 ". The light below was counted with |cos(theta)|: it is behind the surface and \
                  gives nothing"
+                    .to_string()
+            } else if mine == Vec3::ZERO {
+                format!(": {}", black_but_lit(&world, &asked))
             } else {
-                ""
+                String::new()
             }
         );
     }
-    check_shadow_rays(&world, counted, 1, "a light below the floor");
+    check_shadow_rays(&asked, counted, 1, "a light below the floor", BEHIND);
 }
 
 #[test]
@@ -225,19 +284,35 @@ fn exercise_direct_light_casts_shadows() {
     // A ball halfway to the light.
     let world = floor_world(&[light], &[(0.5 * light, 0.3)], false);
     let (mine, _, counted) = light_floor(&world, EYE, false);
-    assert!(
-        mine == Vec3::ZERO,
-        "direct_light: a ball hangs between the floor and the only light, so the point is in \
-         its shadow and black, but it gave {mine}: ask world.occluded whether a shadow ray \
-         towards the light is blocked"
+    let asked = world.take();
+    if mine != Vec3::ZERO {
+        let answered_blocked = asked.iter().any(|a| {
+            a.shadow && super::goes_somewhere(&a.ray) && world.scene.geometry.occluded(&a.ray)
+        });
+        panic!(
+            "direct_light: a ball hangs between the floor and the only light, so the point is in \
+             its shadow and black, but it gave {mine}: {}",
+            if answered_blocked {
+                "world.occluded answered true for its shadow ray (the ball is in the way), yet \
+                 the light was counted: a light counts only when its shadow ray is not blocked"
+            } else {
+                "ask world.occluded whether a shadow ray towards the light is blocked"
+            }
+        );
+    }
+    check_shadow_rays(
+        &asked,
+        counted,
+        1,
+        "a ball between the floor and the light",
+        BEHIND,
     );
-    check_shadow_rays(&world, counted, 1, "a ball between the floor and the light");
 
     // A ball beyond the light, on the same line: it must not cast a shadow.
     let world = floor_world(&[light], &[(2.5 * light, 1.0)], false);
-    let (mine, hit, counted) = light_floor(&world, EYE, false);
-    let shadow_rays: Vec<_> = world.take().into_iter().filter(|a| a.shadow).collect();
-    let past = shadow_rays.iter().find(|a| {
+    let (mine, hit, _) = light_floor(&world, EYE, false);
+    let asked = world.take();
+    let past = asked.iter().filter(|a| a.shadow).find(|a| {
         let reach = a.ray.t_max * a.ray.dir.length();
         reach > (TARGET + light - a.ray.origin).length() * 1.001
     });
@@ -250,10 +325,9 @@ fn exercise_direct_light_casts_shadows() {
             past.ray.t_max, past.ray.dir
         );
     }
-    if let Some(mistake) = one_light_mistake(mine, TARGET + light, hit.p, Vec3::Y) {
+    if let Some(mistake) = one_light_mistake(&world, &asked, mine, TARGET + light, hit.p, Vec3::Y) {
         panic!("direct_light, with a ball beyond the light: {mistake}");
     }
-    let _ = counted;
 }
 
 #[test]
@@ -295,10 +369,8 @@ fn exercise_direct_light_leaves_its_own_surface() {
     let ray = Ray::new(hit.p + n, -n).with_time(TIME);
     let mut counters = SampleCounters::default();
     let mine = direct_light(&world, &ray, &hit, ALBEDO, false, &mut counters);
-    let starts_on_the_point = world
-        .take()
-        .iter()
-        .any(|a| a.shadow && a.ray.origin == hit.p);
+    let asked = world.take();
+    let starts_on_the_point = asked.iter().any(|a| a.shadow && a.ray.origin == hit.p);
     if mine == Vec3::ZERO && starts_on_the_point {
         panic!(
             "direct_light: a ball lit straight from outside came out black. Its shadow ray \
@@ -307,7 +379,7 @@ fn exercise_direct_light_leaves_its_own_surface() {
              error bound: hit.spawn_ray_to(target, time) does that."
         );
     }
-    if let Some(mistake) = one_light_mistake(mine, light, hit.p, n) {
+    if let Some(mistake) = one_light_mistake(&world, &asked, mine, light, hit.p, n) {
         panic!("direct_light, a ball lit from outside: {mistake}");
     }
 }
@@ -315,27 +387,56 @@ fn exercise_direct_light_leaves_its_own_surface() {
 #[test]
 fn exercise_direct_light_on_the_back_side() {
     let below = Vec3::new(0.5, -1.5, 0.3);
+    let above = Vec3::new(1.0, 2.0, 0.5);
     let under_the_floor = Vec3::new(0.0, -3.0, 3.0);
     // One-sided: the back is black, whatever shines on it, and no shadow ray is needed.
-    let world = floor_world(&[below, Vec3::new(1.0, 2.0, 0.5)], &[], false);
+    let world = floor_world(&[below, above], &[], false);
     let (mine, _, counted) = light_floor(&world, under_the_floor, false);
     assert!(
         mine == Vec3::ZERO,
         "direct_light: seen from below, a one-sided floor is black (Mitsuba's diffuse reflects \
          on its front side only), but it gave {mine}"
     );
-    check_shadow_rays(&world, counted, 0, "the back of a one-sided floor");
+    check_shadow_rays(
+        &world.take(),
+        counted,
+        0,
+        "the back of a one-sided floor",
+        "the back of a one-sided surface is black whatever shines on it, so no light there needs \
+         a shadow ray",
+    );
     // Two-sided: the back is matte too, lit by the light on its side.
-    let world = floor_world(&[below, Vec3::new(1.0, 2.0, 0.5)], &[], true);
+    let world = floor_world(&[below, above], &[], true);
     let (mine, hit, counted) = light_floor(&world, under_the_floor, true);
-    if let Some(mistake) = one_light_mistake(mine, TARGET + below, hit.p, -Vec3::Y) {
+    let asked = world.take();
+    let case = "the back of a two-sided floor, lit from below";
+    let shadow: Vec<&Ray> = asked.iter().filter(|a| a.shadow).map(|a| &a.ray).collect();
+    if mine == Vec3::ZERO && shadow.is_empty() {
         panic!(
-            "direct_light, the back of a two-sided floor, lit from below: its normal is -n on \
-             the side the ray comes from, and only the light below shines on that side. \
-             {mistake}"
+            "direct_light, {case}: it is black and traced no shadow ray, but a two_sided surface \
+             is matte on its back too, lit by the lights on that side"
         );
     }
-    check_shadow_rays(&world, counted, 1, "the back of a two-sided floor");
+    if let Some(wrong_side) = shadow.iter().find(|ray| ray.dir.y > 0.0) {
+        panic!(
+            "direct_light, {case}: it sent a shadow ray up, along {}, towards the light above \
+             the floor, which shines on the other side. Seen from below, that light is behind \
+             the surface: cos(theta), measured from the normal turned towards the ray (-n \
+             here), is negative, and the light gives nothing",
+            wrong_side.dir
+        );
+    }
+    if let Some(mistake) = one_light_mistake(&world, &asked, mine, TARGET + below, hit.p, -Vec3::Y)
+    {
+        panic!("direct_light, {case}: {mistake}");
+    }
+    check_shadow_rays(
+        &asked,
+        counted,
+        1,
+        "the back of a two-sided floor",
+        "the light above shines on the other side, so it needs no shadow ray",
+    );
 }
 
 #[test]
@@ -363,16 +464,22 @@ fn exercise_direct_light_uses_the_shading_normal() {
         &mut SampleCounters::default(),
     );
     let expected = expected_from(TARGET + light, TARGET, shading_n);
-    assert!(
-        close(mine, expected, 1e-4),
-        "direct_light: on a mesh with smooth normals, cos(theta) is measured from the shading \
-         normal hit.shading_n, not the geometric hit.n. It gave {mine}, expected {expected}{}",
-        if close(mine, expected_from(TARGET + light, TARGET, Vec3::Y), 1e-4) {
-            " (that is with hit.n)"
-        } else {
-            ""
-        }
-    );
+    if close(mine, expected_from(TARGET + light, TARGET, Vec3::Y), 1e-4) {
+        panic!(
+            "direct_light: on a mesh with smooth normals, cos(theta) is measured from the \
+             shading normal hit.shading_n, not the geometric hit.n. It gave {mine}, which is what \
+             the geometric normal gives, where the shading normal gives {expected}"
+        );
+    }
+    let asked = world.take();
+    if let Some(mistake) =
+        one_light_mistake(&world, &asked, mine, TARGET + light, TARGET, shading_n)
+    {
+        panic!(
+            "direct_light, on a mesh whose shading normal hit.shading_n leans away from its \
+             geometric normal hit.n (cos(theta) is measured from the shading normal): {mistake}"
+        );
+    }
 }
 
 #[test]
@@ -397,9 +504,19 @@ fn exercise_direct_light_of_a_light_on_the_surface() {
         false,
         &mut SampleCounters::default(),
     );
+    let asked = world.take();
+    let why = "A light exactly at the lit point (distance 0) has no direction from it: \
+               to_light / |to_light| is 0 / 0, which is NaN, and so is cos(theta); a test \
+               cos(theta) <= 0 lets a NaN through, since every comparison with NaN is false";
+    if let Some(nowhere) = ray_to_nowhere(&asked) {
+        panic!(
+            "direct_light, a light exactly at the lit point: {nowhere}, and it gave {mine}. \
+             {why}. Such a light lights nothing and needs no shadow ray"
+        );
+    }
     assert!(
         mine == Vec3::ZERO,
-        "direct_light: a light exactly at the lit point (distance 0) lights nothing, but it \
-         gave {mine}: 0 / 0 is NaN, and NaN <= 0 is false"
+        "direct_light, a light exactly at the lit point: it gave {mine}, where such a light \
+         lights nothing. {why}"
     );
 }
