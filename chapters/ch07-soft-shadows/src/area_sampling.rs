@@ -31,7 +31,8 @@ pub fn parallelogram_point_error(quad: &Parallelogram, u: Vec2) -> Vec3 {
 
 // ANCHOR: parallelogram_light_point
 /// A point of the parallelogram light `quad`, uniform by area (`ξ1` along the first edge, `ξ2`
-/// along the second), with its density per unit area, or `None` if the light has no area.
+/// along the second, `ξ = (0, 0)` exactly the corner), with the light's normal and its density
+/// per unit area, or `None` if the light has no area.
 ///
 /// Far from the origin the order of the sums matters: `corner + e1` rounds, and the difference
 /// `(corner + e1) - corner` is then no longer `e1`.
@@ -80,8 +81,8 @@ pub fn disc_light_sample_at(disc: &Disc, offset: Vec2) -> Option<LightSample> {
 
 // ANCHOR: disc_light_point
 /// A point of the disc light, uniform by area, by the lecture's corrected polar map (the angle
-/// from `ξ1`, the radius from `ξ2`, as chapter 02's polar disc); `None` if the disc has no
-/// area. An ellipse (a disc under a non-uniform scale) is the same map stretched along its
+/// from `ξ1`, the radius from `ξ2`, as chapter 02's polar disc: the angle runs from the disc's
+/// tangent, at `ξ1 = 0`, towards its bitangent); `None` if the disc has no area. An ellipse (a disc under a non-uniform scale) is the same map stretched along its
 /// two semi-axes, [`Disc::radii`]: a linear map keeps a uniform density uniform.
 pub fn sample_disc_light_polar(disc: &Disc, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION

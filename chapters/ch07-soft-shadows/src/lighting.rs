@@ -63,8 +63,8 @@ impl Lighting for AreaLighting<'_> {
     /// `self.options.samples` shadow rays to points on it, drawn from `sampler` with
     /// [`LightOptions::points`].
     ///
-    /// Which side of the surface faces the ray, and what does a one-sided surface seen from
-    /// behind reflect? For one point of a light ([`AreaLight::sample`]), in which measure was
+    /// The surface's normal is its shading normal, turned to the side the ray arrives from;
+    /// the back of a one-sided surface is black. For one point of a light ([`AreaLight::sample`]), in which measure was
     /// it chosen, and what does its term need in that measure
     /// ([`area_light_contribution`](crate::estimator::area_light_contribution) is the term
     /// per unit area)? Where must its shadow ray ([`LightSample::shadow_ray`]) stop, when the
@@ -154,15 +154,23 @@ mod tests {
     /// A matte floor (y = 0, facing up, 20 wide, albedo 0.5) and one light of radiance 1 of
     /// `shape`, with a black surface.
     fn scene_with(shape: Shape) -> MotionScene {
+        scene_with_lights(&[shape])
+    }
+
+    /// The floor of [`scene_with`] under a light of radiance 1 of each of `shapes`.
+    fn scene_with_lights(shapes: &[Shape]) -> MotionScene {
         let floor =
             Parallelogram::new(Vec3::new(-10.0, 0.0, -10.0), 20.0 * Vec3::Z, 20.0 * Vec3::X);
         let frame = CameraFrame::look_at(EYE, Vec3::ZERO, Vec3::Y).unwrap();
-        let scene = SceneBuilder::new()
-            .shape(
-                Shape::Parallelogram(floor),
-                Material::diffuse(Vec3::splat(ALBEDO)),
-            )
-            .area_light(shape, Material::diffuse(Vec3::ZERO), Vec3::ONE)
+        let builder = SceneBuilder::new().shape(
+            Shape::Parallelogram(floor),
+            Material::diffuse(Vec3::splat(ALBEDO)),
+        );
+        let scene = shapes
+            .iter()
+            .fold(builder, |b, &shape| {
+                b.area_light(shape, Material::diffuse(Vec3::ZERO), Vec3::ONE)
+            })
             .build(Camera::pinhole(frame, 40.0), FilmSettings::new(16, 16), 2);
         MotionScene::still(scene)
     }
@@ -314,6 +322,50 @@ mod tests {
                 },
             );
         }
+    }
+
+    #[test]
+    fn exercise_matte_adds_every_light() {
+        // The panel of the check above, and a sphere light off to the other side, where
+        // neither hides the other from the receiver.
+        let quad = Parallelogram::new(Vec3::new(-0.2, 1.0, -0.7), Vec3::X, Vec3::Z);
+        let vertices = [
+            quad.corner(),
+            quad.corner() + quad.e1(),
+            quad.corner() + quad.e1() + quad.e2(),
+            quad.corner() + quad.e2(),
+        ];
+        let center = Vec3::new(-1.5, 1.5, 1.2);
+        let d = center.length();
+        let panel = f64::from(polygon_irradiance(Vec3::ZERO, Vec3::Y, &vertices, Vec3::ONE).y);
+        let sphere = f64::from(sphere_irradiance(Vec3::ONE, 0.5, d, center.y / d).y);
+        let to_radiance = f64::from(ALBEDO) / PI;
+        let world = scene_with_lights(&[
+            Shape::Parallelogram(quad),
+            Shape::Sphere(Sphere::new(center, 0.5)),
+        ]);
+        let (mean, se, _) = reflected(&world, 4, 1000);
+        let reference = to_radiance * (panel + sphere);
+        let halves = "half of it: the estimates of the two lights are added, each the mean of \
+            its own shadow rays (the number of lights divides nothing)";
+        judge(
+            "a floor of albedo 0.5 under a panel light and a sphere light, 4 shadow rays each",
+            mean,
+            se,
+            reference,
+            &[
+                (0.5, halves),
+                (
+                    panel / (panel + sphere),
+                    "only the first light came through: every light is estimated",
+                ),
+                (
+                    sphere / (panel + sphere),
+                    "only the last light came through: every light's estimate is added",
+                ),
+            ],
+            "every light's estimate is added",
+        );
     }
 
     #[test]

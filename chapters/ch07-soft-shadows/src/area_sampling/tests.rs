@@ -54,9 +54,20 @@ fn exercise_parallelogram_light_point_lies_on_the_light() {
         } else if (at - Vec2::new(u.y, u.x)).abs().max_element() < 1e-4 && u.x != u.y {
             Some("ξ1 and ξ2 are swapped: ξ1 goes along the first edge, ξ2 along the second".into())
         } else if (at - u).abs().max_element() > 1e-4 {
-            Some(format!(
-                "the point lies at edge coordinates {at}, where ξ puts it at {u}"
-            ))
+            let corners_taken_as_edges = quad.corner()
+                + u.x * (quad.e1() - quad.corner())
+                + u.y * (quad.e2() - quad.corner());
+            Some(
+                if (s.p - corners_taken_as_edges).length() < 1e-4 * quad.corner().length().max(1.0)
+                {
+                    "the edges were given where corners are expected: chapter 02's \
+                     sample_parallelogram(u, p0, p1, p2) takes three corners, the edges being \
+                     p1 - p0 and p2 - p0"
+                        .to_string()
+                } else {
+                    format!("the point lies at edge coordinates {at}, where ξ puts it at {u}")
+                },
+            )
         } else if s.n != quad.normal() {
             Some(format!(
                 "the normal {} is not the light's {}",
@@ -198,6 +209,38 @@ fn exercise_disc_light_point_follows_the_lectures_parametrisation() {
             "sample_disc_light_polar: {mistake}.\n  ξ = {u}: your point {}, the lecture's map \
              gives {expected}",
             s.p
+        );
+    }
+}
+
+#[test]
+fn exercise_disc_light_point_stretches_over_an_ellipse() {
+    // An ellipse light (a disc under a non-uniform scale): the polar map stretched by its two
+    // semi-axes, 2 along the tangent and 0.5 along the bitangent.
+    let ellipse = slanted_ellipse();
+    let r = ellipse.radii();
+    for u in uniform_points(100, 9) {
+        let s = sample_disc_light_polar(&ellipse, u)
+            .expect("sample_disc_light_polar: this ellipse has an area, so it gives a sample");
+        let q = sample_uniform_disc_polar(u);
+        let expected = ellipse.point_at(r.x * q.x, r.y * q.y);
+        if (s.p - expected).length() <= 1e-5 * r.max_element() {
+            continue;
+        }
+        let circle = |radius: f32| ellipse.point_at(radius * q.x, radius * q.y);
+        let mistake = if (s.p - circle(r.x)).length() <= 1e-5 * r.x
+            || (s.p - circle(r.y)).length() <= 1e-5 * r.x
+        {
+            "the point is on a circle: an ellipse's semi-axes differ, so the map is stretched by \
+             the first radius along the tangent and by the second along the bitangent"
+        } else {
+            "the polar map's point is stretched by the semi-axis along each of the ellipse's two \
+             directions"
+        };
+        panic!(
+            "sample_disc_light_polar: an ellipse with semi-axes {} (tangent) and {} (bitangent): \
+             {mistake}.\n  ξ = {u}: your point {}, expected {expected}",
+            r.x, r.y, s.p
         );
     }
 }

@@ -97,7 +97,8 @@ fn contribution_mistake(
         ),
         (
             term(cos.max(0.0) * cos_light / sample.pdf),
-            "the squared distance is missing: a patch of the light covers less of the sky seen \
+            "the squared distance is missing (or cancelled: are both cosines taken with the \
+             unit direction to the light?): a patch of the light covers less of the sky seen \
              from further away",
         ),
         (
@@ -120,8 +121,14 @@ fn contribution_mistake(
              reach it, so that cosine is clamped at 0",
         ),
     ];
+    let towards_light = light.emitted(sample.n, wi);
     let mistake = match slips.iter().find(|(value, _)| close(got, *value)) {
         Some((_, mistake)) => (*mistake).to_string(),
+        None if got == Vec3::ZERO && radiance != Vec3::ZERO && towards_light == Vec3::ZERO => {
+            "yours is 0, as if the receiver were behind the light: the light's emitted radiance \
+             is asked for the direction it leaves in, from the light towards the receiver"
+                .to_string()
+        }
         None if expected == Vec3::ZERO => {
             "no light arrives here (the receiver faces away, or it is behind the light)".to_string()
         }
@@ -189,7 +196,7 @@ fn exercise_area_light_contribution_is_zero_behind_the_light_and_below_the_horiz
         got == Vec3::ZERO,
         "area_light_contribution: the receiver is behind the light (the panel faces away from \
          it), which sends it nothing; yours gave {got}: is the light's own emitted radiance \
-         towards the receiver used?"
+         towards the receiver used, asked for the direction from the light to the receiver?"
     );
     check_contribution(&light, Vec3::ZERO, -Vec3::Y, &s);
 }

@@ -266,7 +266,11 @@ fn exercise_sample_sphere_solid_angle_carries_both_densities() {
         let cos_light = s.n.dot(to_x.normalize());
         let area = pdf_area_to_solid_angle(s.pdf, to_x.length_squared(), cos_light);
         if (area / pdf_solid_angle - 1.0).abs() > 1e-3 {
-            let why = if (s.pdf / pdf_solid_angle - 1.0).abs() < 1e-4 {
+            let why = if s.pdf < 0.0 {
+                "a density is never negative: the light's normal at the point faces the \
+                 receiver, away from the direction the receiver looks along, so the cosine \
+                 between them that converts the density is taken as |cos θ_A|"
+            } else if (s.pdf / pdf_solid_angle - 1.0).abs() < 1e-4 {
                 "it is the density per unit solid angle, not converted to area: a patch dA of \
                  the light, seen from x at distance d and at angle θ_A to its normal, covers the \
                  solid angle |cos θ_A| dA / d²"
@@ -295,7 +299,8 @@ fn exercise_sample_sphere_solid_angle_keeps_the_digits_of_tiny_cones() {
         });
         assert!(
             s.p.is_finite() && s.pdf.is_finite() && s.pdf > 0.0,
-            "sample_sphere_solid_angle: a tiny cone gave {s:?}"
+            "sample_sphere_solid_angle: a sphere of radius 1 a million away gave {s:?}: its \
+             point is finite, and its density per unit area finite and positive"
         );
         assert!(s.p.y < 1e6, "on the near side: {s:?}");
         // On the sphere within its bound: near 1e6 floats are 0.06 apart.
