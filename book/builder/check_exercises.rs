@@ -39,6 +39,7 @@ pub fn run(
     selected: &dyn Fn(&Exercise) -> bool,
     wrong_answers_only: bool,
     write_needs: bool,
+    mutants: Option<usize>,
 ) -> Result<()> {
     if exercises.is_empty() {
         // Still worth one look: a solution marker nobody listed would leak to students.
@@ -52,6 +53,10 @@ pub fn run(
     let target_dir = workspace::target_dir(root);
     let student_dir = target_dir.join("student");
     let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
+    if let Some(most) = mutants {
+        let mut trial = Trial::new(root, &student_dir)?;
+        return crate::mutants::sweep(&mut trial, exercises, &chosen, most);
+    }
     if wrong_answers_only {
         let mut trial = Trial::new(root, &student_dir)?;
         let runs = trial.run_marked(&chosen, exercises)?;
@@ -224,7 +229,7 @@ fn prove_wrong_answers(
 /// The copy of the workspace where stubs and wrong answers are put in place of solutions, and
 /// the files it holds that differ from the workspace's. Its crates are built with settings of
 /// their own, so they have names of their own in the shared build directory.
-struct Trial<'a> {
+pub struct Trial<'a> {
     root: &'a Path,
     copy: PathBuf,
     build: EditionBuild,
@@ -234,7 +239,7 @@ struct Trial<'a> {
 impl<'a> Trial<'a> {
     /// Writes a fresh copy of the workspace, every solution in place: for checking the wrong
     /// answers alone, without the student edition.
-    fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
+    pub fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
         let copy = student_dir.join("trials");
         student_edition::write_copy(root, &copy)?;
         write_config(&copy, TRIALS_CONFIG)?;
@@ -277,7 +282,7 @@ impl<'a> Trial<'a> {
 
     /// Puts each `(exercise, code)` in, `code` standing where the exercise's solution stands,
     /// after putting back every file the last round changed.
-    fn put_in(&mut self, splices: &[(&Exercise, String)]) -> Result<()> {
+    pub fn put_in(&mut self, splices: &[(&Exercise, String)]) -> Result<()> {
         self.put_back()?;
         for (exercise, code) in splices {
             self.rewrite(exercise, |source| {
@@ -318,7 +323,7 @@ impl<'a> Trial<'a> {
     /// Puts every solution of `all` back with a mark first in it ([`exercise_calls`]), builds
     /// the copy's libraries with their tests, and runs each check of `chosen` once, each in
     /// processes of its own: what each check does and which exercises' code it runs, by name.
-    fn run_marked(
+    pub fn run_marked(
         &mut self,
         chosen: &[Exercise],
         all: &[Exercise],
@@ -355,10 +360,23 @@ impl<'a> Trial<'a> {
     /// Compiles the library tests of `packages` in the copy as it now stands (as the checks
     /// compile them, with [`AS_THE_WORKSPACE_TESTS`]) and returns each one's test binary and
     /// package folder.
-    fn library_test_binaries(
+    pub fn library_test_binaries(
         &self,
         packages: &[&str],
     ) -> Result<HashMap<String, (PathBuf, PathBuf)>> {
+        match self.compile_library_tests(packages)? {
+            Compiled::Binaries(binaries) => Ok(binaries),
+            Compiled::Errors { command, text, .. } => bail!(
+                "the copy at {} with every solution marked does not compile (`{command}`):\n{}",
+                self.copy.display(),
+                last_lines(&text, 30)
+            ),
+        }
+    }
+
+    /// Compiles the library tests of `packages` in the copy as it now stands: their test
+    /// binaries, or where the compiler found errors.
+    pub fn compile_library_tests(&self, packages: &[&str]) -> Result<Compiled> {
         let (mut command, args) = compile_library_tests(
             &self.copy,
             &self.build,
@@ -368,17 +386,52 @@ impl<'a> Trial<'a> {
         let output = command
             .output()
             .with_context(|| format!("cannot run cargo in {}", self.copy.display()))?;
-        if !output.status.success() {
-            bail!(
-                "the copy at {} with every solution marked does not compile (`cargo {}`):\n{}",
-                self.copy.display(),
-                args.join(" "),
-                last_lines(&String::from_utf8_lossy(&output.stderr), 30)
-            );
+        let json = String::from_utf8_lossy(&output.stdout);
+        if output.status.success() {
+            return Ok(Compiled::Binaries(exercise_calls::library_test_binaries(
+                &json,
+            )));
         }
-        Ok(exercise_calls::library_test_binaries(
-            &String::from_utf8_lossy(&output.stdout),
-        ))
+        let mut places = Vec::new();
+        let mut text = String::new();
+        for line in json.lines() {
+            let Ok(message) = serde_json::from_str::<serde_json::Value>(line) else {
+                continue;
+            };
+            if message["reason"] != "compiler-message" || message["message"]["level"] != "error" {
+                continue;
+            }
+            if let Some(rendered) = message["message"]["rendered"].as_str() {
+                text.push_str(rendered);
+            }
+            let spans = message["message"]["spans"]
+                .as_array()
+                .cloned()
+                .unwrap_or_default();
+            for span in spans {
+                if let (Some(file), Some(line)) =
+                    (span["file_name"].as_str(), span["line_start"].as_u64())
+                {
+                    places.push((PathBuf::from(file), line as usize));
+                }
+            }
+        }
+        text.push_str(&String::from_utf8_lossy(&output.stderr));
+        Ok(Compiled::Errors {
+            command: format!("cargo {}", args.join(" ")),
+            places,
+            text,
+        })
+    }
+
+    /// The workspace the copy is of.
+    pub fn root(&self) -> &Path {
+        self.root
+    }
+
+    /// The copy's folder.
+    pub fn copy_dir(&self) -> &Path {
+        &self.copy
     }
 
     /// Puts the `answers` in and runs each one's check.
@@ -399,6 +452,19 @@ impl<'a> Trial<'a> {
             .map(|(&(exercise, wrong), outcome)| (exercise, wrong, outcome))
             .collect())
     }
+}
+
+/// What compiling a copy's library tests gave.
+pub enum Compiled {
+    /// Each package's library test binary and folder.
+    Binaries(HashMap<String, (PathBuf, PathBuf)>),
+    /// The compiler's errors: the cargo command, the places (file relative to the copy, line)
+    /// its messages point at, and the messages.
+    Errors {
+        command: String,
+        places: Vec<(PathBuf, usize)>,
+        text: String,
+    },
 }
 
 /// Proves the promise that the exercises can be done in order: each exercise's check passes

@@ -26,6 +26,7 @@ mod lab_report;
 #[cfg(feature = "browser")]
 mod lab_report_check;
 mod mdbook_log;
+mod mutants;
 mod offline_check;
 mod progress;
 mod prose_numbers;
@@ -80,6 +81,11 @@ enum Task {
         /// differ from what it says.
         #[arg(long, conflicts_with = "wrong_answers_only")]
         write_needs: bool,
+        /// Instead of the usual proof, try up to N small slips of each solution that nobody
+        /// recorded (an operator swapped, a root or a constant lost) and fail if any makes a
+        /// check crash in the workbook's code or hang (slow: about a minute a round).
+        #[arg(long, value_name = "N", conflicts_with_all = ["wrong_answers_only", "write_needs"])]
+        mutants: Option<usize>,
     },
     /// Run every exercise's check and list the exercises as done or to do, with the next one.
     Progress {
@@ -220,6 +226,7 @@ fn main() -> Result<()> {
             only,
             wrong_answers_only,
             write_needs,
+            mutants,
         }) => {
             let exercises = exercise_list::load(&root)?;
             if let Some(unknown) = only
@@ -235,6 +242,7 @@ fn main() -> Result<()> {
                 &selected,
                 wrong_answers_only,
                 write_needs,
+                mutants,
             )
         }
         Some(Task::CheckLabReport { screenshots }) => {
