@@ -159,9 +159,11 @@ impl Aabb {
     }
 
     /// Where the ray enters the box (0 if it starts inside), if it passes through it somewhere
-    /// in `[0, t_max]`; the BVH orders its nodes by it.
+    /// in `[0, t_max]`.
     ///
-    /// Conservative: a box the exact ray touches is never reported as missed.
+    /// Conservative: a box the exact ray touches is never reported as missed. A ray that goes
+    /// nowhere (an origin or a direction with a NaN or infinite component, a zero direction)
+    /// passes through no box, as in the BVH's walk.
     #[inline]
     pub fn entry(&self, ray: &SlabRay, t_max: f32) -> Option<f32> {
         self.slab_interval(ray, t_max).map(|(t_enter, _)| t_enter)
@@ -185,6 +187,10 @@ impl Aabb {
     /// scalar `f32` operations would, so the answer does not depend on the instruction set.
     fn slab_interval(&self, ray: &SlabRay, t_max: f32) -> Option<(f32, f32)> {
         const EXIT_SLACK: f32 = 1.0 + 2.0 * gamma(3);
+        // Its NaN bounds would not be the `0 × ∞` below but anything, even for an empty box.
+        if !ray.goes_somewhere {
+            return None;
+        }
         let (min, max) = (Vec3A::from(self.min), Vec3A::from(self.max));
         let near = Vec3A::select(ray.negative, max, min);
         let far = Vec3A::select(ray.negative, min, max);
@@ -218,6 +224,9 @@ pub struct SlabRay {
     /// choosing each axis's near and far side. Decided from the sign of `inv_dir`, so
     /// `dir = -0` counts as negative, matching `inv_dir = -∞`.
     negative: BVec3A,
+    /// Whether the origin and the direction are finite and the direction is not zero: only
+    /// then is a NaN bound the `0 × ∞` of a ray parallel to a slab.
+    goes_somewhere: bool,
 }
 
 impl SlabRay {
@@ -228,6 +237,9 @@ impl SlabRay {
             origin: ray.origin.into(),
             inv_dir,
             negative: inv_dir.cmplt(Vec3A::ZERO),
+            goes_somewhere: ray.origin.is_finite()
+                && ray.dir.is_finite()
+                && ray.dir != glam::Vec3::ZERO,
         }
     }
 }

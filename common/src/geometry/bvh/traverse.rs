@@ -35,6 +35,10 @@ impl Bvh {
     /// `Some` that is accepted is nearer than all earlier ones: a closure may keep the full
     /// record of its latest hit, knowing that it is the nearest one when the walk ends.
     /// Answers with `t >= t_max` (or NaN) are ignored.
+    ///
+    /// A ray that goes nowhere (an origin or a direction with a NaN or infinite component, a
+    /// zero direction) or whose `t_max` is NaN reaches no box and hits nothing: a student's
+    /// broken ray gets an answer, and the chapter's check can say what is wrong with it.
     pub fn intersect<F>(&self, ray: &Ray, mut hit_primitive: F) -> Option<BvhHit>
     where
         F: FnMut(usize, f32) -> Option<f32>,
@@ -60,7 +64,8 @@ impl Bvh {
     }
 
     /// Whether `hit_primitive(i)` holds for some primitive whose box the ray passes through
-    /// before `ray.t_max`. Stops at the first one: a shadow ray needs no more.
+    /// before `ray.t_max`. Stops at the first one: a shadow ray needs no more. False for a
+    /// ray that goes nowhere, as [`intersect`](Self::intersect) says.
     pub fn any_hit<F>(&self, ray: &Ray, mut hit_primitive: F) -> bool
     where
         F: FnMut(usize) -> bool,
@@ -164,12 +169,17 @@ impl Bvh {
     {
         debug_assert!(stack_needed(self.depth) <= STACK);
         let mut t_max = ray.t_max;
-        // A NaN `t_max` reaches nothing (and would make every comparison below false).
+        // A NaN `t_max` reaches nothing (and would make every comparison below false), and
+        // neither does a ray that goes nowhere (see `goes_somewhere`).
         if self.nodes.is_empty() || t_max.is_nan() {
             return 0;
         }
-        let mut nodes_tested = 0;
         let slabs = WideRay::new(ray);
+        // A NaN-free ray goes somewhere: nearly every ray is decided by the first test.
+        if !slabs.nan_free && !goes_somewhere(ray) {
+            return 0;
+        }
+        let mut nodes_tested = 0;
         // A lane: a node's index and 0, or a leaf's first primitive and count.
         let mut deferred = [(0u32, 0u32, 0.0f32); STACK];
         let mut deferred_count = 0;
@@ -247,6 +257,20 @@ struct WideRay {
     nan_free: bool,
 }
 
+/// Whether the ray goes anywhere: its origin and direction finite, its direction not zero.
+/// One that does not reaches no box and hits nothing.
+///
+/// This is what lets the walk trust its slab test. With a finite origin and a finite,
+/// non-zero direction, the only NaN a slab bound can be is `0 × ∞` (a ray parallel to a slab
+/// starting on its plane) in a lane with a real box, which counts as inside that slab. A lane
+/// without a child holds `±∞` bounds, which give `±∞ × 1 / dir`, never NaN, so the ray never
+/// enters it. A NaN or infinite origin or direction would make bounds NaN (`NaN - x`, `∞ - ∞`,
+/// `∞ × 0`), enter every lane, empty ones too, and follow an empty lane's child, which is no
+/// node. A zero direction could be walked, but a ray that does not move crosses no surface.
+fn goes_somewhere(ray: &Ray) -> bool {
+    ray.origin.is_finite() && ray.dir.is_finite() && ray.dir != Vec3::ZERO
+}
+
 impl WideRay {
     fn new(ray: &Ray) -> Self {
         let inv_dir = ray.dir.recip();
@@ -271,7 +295,8 @@ impl WideNode {
     /// way, in four lanes at once: each exit is widened by `1 + 2 γ(3)` so that rounding never
     /// loses a box the exact ray touches, and a `0 × ∞` (a ray parallel to a slab, starting
     /// on its plane) counts as inside that slab. Each lane rounds exactly as the scalar test
-    /// does, so the answer does not depend on the instruction set. `t_max` must not be NaN.
+    /// does, so the answer does not depend on the instruction set. `t_max` must not be NaN,
+    /// and the ray must go somewhere ([`goes_somewhere`]): then no empty lane is ever entered.
     #[inline]
     fn entries(&self, ray: &WideRay, t_max: f32) -> (u32, [f32; 4]) {
         const EXIT_SLACK: f32 = 1.0 + 2.0 * gamma(3);

@@ -3,6 +3,7 @@
 
 mod bvh_matches_brute_force;
 mod light_leaks;
+mod non_finite_rays;
 mod self_intersection;
 mod support;
 mod watertight;
