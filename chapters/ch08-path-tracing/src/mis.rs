@@ -133,9 +133,14 @@ mod tests {
             if (w - expected).abs() <= 1e-6 {
                 continue;
             }
-            let mistake = if (w - balance_heuristic(a, b)).abs() <= 1e-6 && a.is_finite() {
+            let balance = balance_heuristic(a, b);
+            let mistake = if (w - balance).abs() <= 1e-6 && a.is_finite() {
                 "that is the balance heuristic, p_a / (p_a + p_b): the power heuristic squares the \
                  densities first"
+                    .to_string()
+            } else if (w - balance * balance).abs() <= 1e-6 && a.is_finite() {
+                "that is the balance heuristic's weight squared: the power heuristic squares the \
+                 densities, p_a² / (p_a² + p_b²), and its two weights still add up to 1"
                     .to_string()
             } else {
                 why.to_string()

@@ -168,6 +168,14 @@ mod tests {
                 Vec3::new(2.0, 4.0, 8.0),
                 "a point light (infinite density) takes weight 1 and is divided only by the chance of picking it",
             ),
+            (
+                0.5,
+                3.0,
+                0.25,
+                MisHeuristic::None,
+                Vec3::new(1.0, 2.0, 4.0),
+                "the light's density already holds the chance of picking the light: only a delta light, which has no density, is divided by that chance",
+            ),
         ];
         for (light_pdf, bsdf_pdf, pick, mis, expected, why) in cases {
             let c = light_sample_contribution(le, f, light_pdf, bsdf_pdf, pick, mis);
@@ -188,6 +196,13 @@ mod tests {
             {
                 "the weight is the BSDF strategy's: this sample came from the light, so its \
                  weight is the light's density against the BSDF's"
+                    .to_string()
+            } else if light_pdf.is_finite()
+                && pick < 1.0
+                && (c * pick - expected).abs().max_element() < 1e-6
+            {
+                "divided by the chance of picking the light twice: the light's density already \
+                 holds it"
                     .to_string()
             } else if !c.is_finite() {
                 format!("{c} is not finite")

@@ -182,7 +182,9 @@ impl PathTracer<'_> {
     /// only one of them find? What does `max_depth` (Mitsuba's, counting the camera ray)
     /// still allow at this depth: a light sample, a further segment, neither?
     /// [`PathState::gather`] adds light times what the path carries, and
-    /// [`extend_path`](Self::extend_path) chooses the next segment.
+    /// [`extend_path`](Self::extend_path) chooses the next segment. When the scene hides its
+    /// emitters (`self.options.hide_emitters`), what the camera ray itself finds counts for
+    /// nothing.
     fn segment<S: Sampler>(
         &self,
         ray: &Ray,
@@ -276,8 +278,10 @@ impl PathTracer<'_> {
     /// The path's next segment from the surface of `bsdf`, seen from `wo`, where segment
     /// `depth` ended: a direction sampled from the BSDF, the throughput multiplied by its
     /// weight, then, from `rr_depth` on, Russian roulette on the throughput without its
-    /// radiance scaling (`throughput / eta_scale`). `None` when the path ends: no direction,
-    /// nothing carried, or the roulette says so.
+    /// radiance scaling (`throughput / eta_scale`). The segment's ray leaves the surface at the
+    /// path's shutter `time`, and [`Previous`] keeps where it left from and the sample's
+    /// density. `None` when the path ends: no direction, nothing carried, or the roulette says
+    /// so.
     pub fn extend_path<S: Sampler>(
         &self,
         bsdf: &Bsdf,
@@ -350,11 +354,12 @@ impl PathTracer<'_> {
     /// uniformly among the area lights and the environment ([`SceneLights::pick`]), a
     /// direction to it ([`SceneLights::sample`]), its MIS-weighted contribution
     /// ([`light_sample_contribution`](crate::nee::light_sample_contribution)), and the shadow
-    /// ray at shutter time `time`.
+    /// ray at shutter time `time`, counted in `counters.rays`.
     ///
-    /// Which numbers does a scene with a single light to pick from need to draw? What does
-    /// the BSDF say about the sampled direction, for the term and for the weight? When is a
-    /// shadow ray worth tracing, and where must it stop?
+    /// A scene pays only for what it has: with a single light to pick from, the pick draws no
+    /// number. What does the BSDF say about the sampled direction, for the term and for the
+    /// weight? When is a shadow ray worth tracing? It must not be blocked by the light it aims
+    /// at, which is itself a shape of the world.
     pub fn light_sample<S: Sampler>(
         &self,
         bsdf: &Bsdf,
@@ -565,12 +570,18 @@ mod tests {
             let sigma = (n as f64 * q * (1.0 - q)).sqrt();
             let expected = n as f64 * q;
             let count = survivors.len() as f64;
+            let why = if count == n as f64 {
+                "none was ended, at depth 3 with rr_depth 3: the roulette is played from \
+                 segment rr_depth on, that one included"
+            } else {
+                "the path carries 0.45 through glass that scaled its radiance by 2.25, so the \
+                 roulette must look at 0.45 / 2.25 = 0.2 (the throughput without its radiance \
+                 scaling)"
+            };
             assert!(
                 (count - expected).abs() < 5.0 * sigma,
                 "extend_path: {count} of {n} paths survived the roulette, expected about \
-                 {expected} ± {sigma:.1}: the path carries 0.45 through glass that scaled its \
-                 radiance by 2.25, so the roulette must look at 0.45 / 2.25 = 0.2 (the \
-                 throughput without its radiance scaling)"
+                 {expected} ± {sigma:.1}: {why}"
             );
             // Each survivor carries throughput / q, so the mean over all paths is unchanged.
             for segment in &survivors {
@@ -910,6 +921,10 @@ mod tests {
             if mean == 0.0 {
                 "no light arrived, although nothing stands between them: the shadow ray was \
                  blocked by the light itself (it must stop short of the light it aims at)"
+            } else if se == 0.0 {
+                "every sample gave the same value, as if the sampled direction changed nothing: \
+                 f cos θ is the BSDF's for that direction, bsdf.eval(wo, wi) with the direction \
+                 towards the viewer first and the cosine the sampled direction's"
             } else {
                 "the sample's term is L f cos θ / p_light (light_sample_contribution), with the \
                  density the light was sampled with"
@@ -952,7 +967,11 @@ mod tests {
                 "light_sample: with the {mis:?} heuristic the light sample's share \
                  ({light_share:.5} ± {se:.5}) and the BSDF sample's ({bsdf_share:.5}) must add \
                  up to the light, {reference:.5}, but add up to {total:.5}: {}",
-                if total > reference {
+                if se == 0.0 {
+                    "every light sample gave the same value, as if the sampled direction changed \
+                     nothing: f cos θ is the BSDF's for that direction, bsdf.eval(wo, wi) with \
+                     the direction towards the viewer first"
+                } else if total > reference {
                     "too much: the weight of a light sample is the light's density against the \
                      BSDF's density of the same direction, which the BSDF tells"
                 } else {
@@ -1003,7 +1022,11 @@ mod tests {
              through the blocker ({mean:.5} on average): a light sample counts only when its \
              shadow ray reaches the light"
         );
-        assert!(rays > 0, "light_sample: no shadow ray was traced");
+        assert!(
+            rays > 0,
+            "light_sample: no shadow ray was counted: every shadow ray traced adds 1 to \
+             counters.rays"
+        );
     }
 
     /// A matte floor (albedo 0.5, y = 0, 20 wide) under a sphere light (radius 0.5, radiance

@@ -13,9 +13,10 @@ pub const MAX_SURVIVAL: f32 = 0.95;
 // ANCHOR: russian_roulette
 /// The roulette for a path whose throughput (radiance scaling removed) has the largest
 /// channel `throughput_max`, with the uniform number `u`: `Some(factor)`, what the surviving
-/// throughput is multiplied by, or `None` when the path ends. A dim path is likely to end, a
-/// bright one survives at most with probability [`MAX_SURVIVAL`]; a path with nothing left, or
-/// a NaN, ends.
+/// throughput is multiplied by (always finite), or `None` when the path ends. The path survives
+/// when `u` falls below its chance of surviving. A dim path is likely to end, a bright one
+/// survives at most with probability [`MAX_SURVIVAL`]; a path with nothing left, or a NaN,
+/// ends.
 pub fn russian_roulette(throughput_max: f32, u: f32) -> Option<f32> {
     // BEGIN SOLUTION
     // `f32::min` ignores NaN, so a NaN throughput is refused before it can become 0.95; and

@@ -58,7 +58,8 @@ impl RoughConductor {
 
     // ANCHOR: rough_conductor_sample
     /// A direction mirrored about a facet normal visible from `wo`, drawn with the two
-    /// numbers `u`, with its density per unit solid angle and its weight `f cos θ_i / pdf`;
+    /// numbers `u`, with its density per unit solid angle and its weight `f cos θ_i / pdf` (a
+    /// reflection scales no radiance: `eta_scale` 1);
     /// `None` when `wo` is below the surface or the mirrored direction is (the path ends: that
     /// share of the light is what the single-scattering model loses).
     pub fn sample(&self, wo: Vec3, u: Vec2) -> Option<BsdfSample> {

@@ -59,6 +59,14 @@ fn ggx_mistake(got: f64, m: Vec3, alpha_u: f32, alpha_v: f32) -> Option<&'static
             },
             "alpha_v is ignored: the roughness along y is alpha_v",
         ),
+        (
+            {
+                let t = (x / av).powi(2) + (y / au).powi(2) + z * z;
+                1.0 / (PI * au * av * t * t)
+            },
+            "alpha_u and alpha_v are swapped: alpha_u is the roughness along x (the tangent), \
+             alpha_v along y",
+        ),
     ];
     candidates
         .into_iter()
@@ -154,7 +162,9 @@ fn check_sample(metal: &RoughConductor, wo: Vec3, u: Vec2) -> Result<(), String>
     let Some(s) = got else {
         return Err(format!(
             "{call} gave no direction, but the visible normal m = {m} drawn with u mirrors wo \
-             to {wi}, above the surface"
+             to {wi}, above the surface (fresnel::reflect(wo, m) takes wo, which points away \
+             from the surface; chapter 01's reflect(d, n) takes a direction d that points \
+             towards it, so given wo it gives -wi)"
         ));
     };
     if !close3(s.wi, wi) {
