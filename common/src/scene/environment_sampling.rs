@@ -106,7 +106,8 @@ impl EnvironmentSampling {
     }
 
     /// A direction in the map's frame drawn with the numbers `u` in `[0, 1)²`, and its
-    /// density per unit solid angle; `None` for a black map.
+    /// density per unit solid angle; `None` for a black map. Numbers outside `[0, 1)`, NaN
+    /// too, draw as the nearest number inside does (NaN as 0).
     pub fn sample(&self, u: Vec2) -> Option<(Vec3, f32)> {
         if self.integral <= 0.0 {
             return None;
@@ -231,13 +232,19 @@ fn normalised(mut running: Vec<f64>) -> Vec<f64> {
 }
 
 /// The bin of `cdf` (running chances from 0 to 1) that `u` in `[0, 1)` falls in, and where in
-/// it, from 0 to 1; never a bin of chance 0. `None` when every chance is 0.
+/// it, from 0 to 1; never a bin of chance 0. `None` when every chance is 0. A number outside
+/// `[0, 1)` picks as the nearest number inside does, and NaN as 0.
 fn pick(cdf: &[f64], u: f64) -> Option<(usize, f64)> {
     let bins = cdf.len().checked_sub(1)?;
     if bins == 0 || cdf[bins] <= 0.0 {
         return None;
     }
-    let u = u.clamp(0.0, 1.0 - f64::EPSILON);
+    // Not `clamp`, which keeps a NaN: no edge would then be at or below it.
+    let u = if u > 0.0 {
+        u.min(1.0 - f64::EPSILON)
+    } else {
+        0.0
+    };
     // The last edge at or below `u`: the bin after it has a chance above 0.
     let bin = (cdf.partition_point(|&edge| edge <= u) - 1).min(bins - 1);
     let width = cdf[bin + 1] - cdf[bin];

@@ -81,7 +81,8 @@ impl GridDistribution {
     }
 
     /// A point of the square drawn with this density from the numbers `u` in `[0, 1)²`, and
-    /// the density there (per unit area of the square, always positive).
+    /// the density there (per unit area of the square, always positive). Numbers outside
+    /// `[0, 1)`, NaN too, give the point of the nearest number inside (NaN that of 0).
     pub fn sample(&self, u: Vec2) -> (Vec2, f32) {
         let (row, v) = pick(&self.row_cdf, u.y as f64);
         let in_row = &self.column_cdf[row * (self.columns + 1)..(row + 1) * (self.columns + 1)];
@@ -106,8 +107,10 @@ impl GridDistribution {
 }
 
 /// The interval of `cdf` (ascending, from 0 to 1) that `u` falls in, never one of zero width,
-/// and where in it `u` lies, in `[0, 1)`.
+/// and where in it `u` lies, in `[0, 1)`. A number below 0, or NaN, picks as 0 does, and one
+/// of 1 or more as the last interval of weight: any number picks an interval a sample can be in.
 fn pick(cdf: &[f64], u: f64) -> (usize, f64) {
+    let u = if u > 0.0 { u } else { 0.0 };
     let count = cdf.len() - 1;
     // The first interval whose upper end is above u; intervals of zero width are skipped.
     let index = cdf[1..].partition_point(|&c| c <= u).min(count - 1);
@@ -181,6 +184,22 @@ mod tests {
             let (p, density) = grid.sample(Vec2::new(u, u));
             assert!((1.0 / 3.0..=2.0 / 3.0).contains(&p.x), "u {u}: {p}");
             assert_eq!(density, 3.0);
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(crate::geometry::awkward::config(256))]
+
+        /// Numbers outside `[0, 1)`, NaN among them, still give a point of the square in a
+        /// cell of weight, never one of density 0 that a light sample would divide by.
+        #[test]
+        fn any_numbers_give_a_point_of_weight(u in crate::geometry::awkward::vec2()) {
+            let grid = GridDistribution::new(3, 3, &[0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 0.0, 0.0, 0.0])
+                .unwrap();
+            let (p, density) = grid.sample(u);
+            proptest::prop_assert!(p.cmpge(Vec2::ZERO).all() && p.cmple(Vec2::ONE).all(), "{p}");
+            proptest::prop_assert!(density > 0.0 && density.is_finite(), "{density} at {p}");
+            proptest::prop_assert!(grid.density(u).is_finite());
         }
     }
 

@@ -119,14 +119,16 @@ impl Bitmap {
         (self.width, self.height)
     }
 
-    /// The colour at surface parameters `uv`.
+    /// The colour at surface parameters `uv`; black where `uv` (after `to_uv`, in pixels) is
+    /// not a finite number, which is nowhere on the image, tiled or not.
     pub fn eval(&self, uv: Vec2) -> Vec3 {
         let uv = self.to_uv.transform_point2(uv);
-        if !uv.is_finite() {
-            return Vec3::ZERO; // nowhere on the image
-        }
         let size = Vec2::new(self.width as f32, self.height as f32);
         let texel = uv * size;
+        // Also a huge `uv` whose pixel position overflows: its fraction would be `∞ - ∞`.
+        if !texel.is_finite() {
+            return Vec3::ZERO;
+        }
         match self.filter {
             BitmapFilter::Nearest => self.pixel(texel.x.floor(), texel.y.floor()),
             BitmapFilter::Bilinear => {

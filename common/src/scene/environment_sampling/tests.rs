@@ -239,3 +239,30 @@ fn near_a_sun_the_density_follows_the_light_inside_each_cell() {
     }
     assert!(checked > 50, "{checked}");
 }
+
+proptest::proptest! {
+    #![proptest_config(crate::geometry::awkward::config(256))]
+
+    /// A light sample drawn with numbers outside `[0, 1)` (NaN among them) is still a unit
+    /// direction of positive, finite density, and any direction a wrong answer computed (zero,
+    /// NaN, infinite) gets a density and a radiance: finite numbers, never a panic.
+    #[test]
+    fn any_numbers_and_any_direction_get_finite_answers(
+        u in crate::geometry::awkward::vec2(),
+        d in crate::geometry::awkward::vec3(),
+        uv in crate::geometry::awkward::vec2(),
+    ) {
+        let sampling = sky_with_sun();
+        let (direction, pdf) = sampling.sample(u).expect("the sky is not black");
+        proptest::prop_assert!((direction.length() - 1.0).abs() < 1e-3, "{direction}");
+        proptest::prop_assert!(pdf > 0.0 && pdf.is_finite(), "{pdf}");
+        let density = sampling.pdf(d);
+        proptest::prop_assert!(density >= 0.0 && density.is_finite(), "{density} towards {d}");
+        let (pixels, _) = map(5, 3, |x, y| Vec3::new(x as f32, y as f32, 1.0));
+        let map = super::super::EnvironmentMap::new(5, 3, &pixels, 2.0, glam::Mat3::IDENTITY)
+            .unwrap();
+        proptest::prop_assert!(map.radiance(d).is_finite());
+        proptest::prop_assert!(map.lookup(uv).is_finite());
+        proptest::prop_assert!(map.sampling().pdf(d).is_finite());
+    }
+}
