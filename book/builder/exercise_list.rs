@@ -255,6 +255,12 @@ pub fn is_student_edition(root: &Path, exercises: &[Exercise]) -> bool {
         })
 }
 
+/// Whether the workspace at `root` is a student edition, by its own list: the workbook's own
+/// tests that measure or guard the solutions have nothing to look at there.
+pub fn holds_no_solutions(root: &Path) -> bool {
+    load(root).is_ok_and(|exercises| is_student_edition(root, &exercises))
+}
+
 /// Whether `path` is relative and never climbs out with `..`.
 fn is_inside_workspace(path: &Path) -> bool {
     path.components().all(|c| matches!(c, Component::Normal(_)))
@@ -398,6 +404,9 @@ mod tests {
     #[test]
     fn every_chapter_has_four_exercises_and_a_capstone() {
         let root = crate::workspace::root();
+        if holds_no_solutions(&root) {
+            return; // a student edition: the solutions, which this measures, are to be written
+        }
         let exercises = load(&root).unwrap();
         let shares = shares(&root, &exercises).unwrap();
         let chapters: Vec<&str> = shares.iter().map(|s| s.chapter.as_str()).collect();

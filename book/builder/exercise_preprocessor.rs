@@ -409,6 +409,9 @@ mod tests {
     #[test]
     fn no_page_of_the_book_gives_a_solution_away() {
         let workspace = crate::workspace::root();
+        if crate::exercise_list::holds_no_solutions(&workspace) {
+            return; // a student edition: there is no solution to give away
+        }
         let solutions = known_solutions(&workspace).unwrap();
         assert!(solutions.len() > 25, "{} solution lines", solutions.len());
         let src = workspace.join("book/src");

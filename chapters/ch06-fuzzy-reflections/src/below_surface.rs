@@ -120,20 +120,32 @@ mod tests {
     }
 
     /// Runs `f` on its own thread and gives up after a few seconds, so that a policy which
-    /// never stops drawing fails the check instead of hanging it.
+    /// never stops drawing fails the check instead of hanging it. A panic of `f` is the
+    /// check's panic, with its own message (the thread keeps the test's name).
     fn within_seconds<T: Send + 'static>(what: &str, f: impl FnOnce() -> T + Send + 'static) -> T {
+        use std::sync::mpsc::RecvTimeoutError;
         let (sender, receiver) = std::sync::mpsc::channel();
-        std::thread::spawn(move || {
-            let _ = sender.send(f());
-        });
-        receiver
-            .recv_timeout(std::time::Duration::from_secs(10))
-            .unwrap_or_else(|_| {
-                panic!(
-                    "BelowSurface::scatter: {what} never returned in 10 seconds: does resampling \
-                     give up after MAX_RESAMPLES directions in all?"
-                )
+        let name = std::thread::current()
+            .name()
+            .unwrap_or("scatter")
+            .to_owned();
+        let worker = std::thread::Builder::new()
+            .name(name)
+            .spawn(move || {
+                let _ = sender.send(f());
             })
+            .expect("a thread for the check");
+        match receiver.recv_timeout(std::time::Duration::from_secs(10)) {
+            Ok(value) => value,
+            Err(RecvTimeoutError::Disconnected) => match worker.join() {
+                Err(panic) => std::panic::resume_unwind(panic),
+                Ok(()) => unreachable!("the thread sends before it ends"),
+            },
+            Err(RecvTimeoutError::Timeout) => panic!(
+                "BelowSurface::scatter: {what} never returned in 10 seconds: does resampling \
+                 give up after MAX_RESAMPLES directions in all?"
+            ),
+        }
     }
 
     #[test]
