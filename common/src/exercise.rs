@@ -30,6 +30,32 @@ pub fn todo(message: &str) -> ! {
     panic!("{text}")
 }
 
+/// Whether a panic's `message` is a stub's: a check that catches the student's panics to say
+/// what an edge case needs passes a stub's on as it is, since the student has nothing to fix
+/// in the code it called, only an exercise to write.
+pub fn is_not_written(message: &str) -> bool {
+    message.contains(NOT_WRITTEN)
+}
+
+/// What every stub's words hold.
+const NOT_WRITTEN: &str = " (not written yet)";
+
+/// Passes a caught panic on unless it is a stub's: for a check that catches the student's
+/// panics with `catch_unwind`, so that a stub reached on the way still fails the check in its
+/// own words.
+pub fn resume_if_not_written(
+    payload: Box<dyn std::any::Any + Send>,
+) -> Box<dyn std::any::Any + Send> {
+    let message = payload
+        .downcast_ref::<String>()
+        .map(String::as_str)
+        .or_else(|| payload.downcast_ref::<&str>().copied());
+    if message.is_some_and(is_not_written) {
+        std::panic::resume_unwind(payload);
+    }
+    payload
+}
+
 /// The words a stub says: which exercise is missing, for whom, and its hint.
 fn not_written(message: &str, in_a_test: bool) -> String {
     let (name, hint) = match message.split_once(':') {
@@ -41,7 +67,7 @@ fn not_written(message: &str, in_a_test: bool) -> String {
     } else {
         "this program"
     };
-    let mut text = format!("{who} needs {name} (not written yet)");
+    let mut text = format!("{who} needs {name}{NOT_WRITTEN}");
     if !hint.is_empty() {
         text.push_str(&format!("; a hint for it: {hint}"));
     }
@@ -94,6 +120,19 @@ mod tests {
             program.starts_with("this program needs ch01-reflect (not written yet)\n"),
             "{program}"
         );
+    }
+
+    #[test]
+    fn a_caught_stub_is_passed_on_and_any_other_panic_kept() {
+        let stub = std::panic::catch_unwind(|| todo("ch01-reflect: hint")).unwrap_err();
+        let passed_on =
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| resume_if_not_written(stub)))
+                .unwrap_err();
+        let text = passed_on.downcast_ref::<String>().unwrap();
+        assert!(is_not_written(text), "{text}");
+        let other = std::panic::catch_unwind(|| panic!("index out of bounds")).unwrap_err();
+        let kept = resume_if_not_written(other);
+        assert_eq!(kept.downcast_ref::<&str>(), Some(&"index out of bounds"));
     }
 
     #[test]

@@ -393,8 +393,9 @@ mod tests {
                 "AnimatedTransform::at_with_inverse: keyframes at times 1, 3 and 3.5, at time \
                  {time}"
             );
-            let (m, inverse) = match catch_unwind(AssertUnwindSafe(|| motion.at_with_inverse(time)))
-            {
+            let caught = catch_unwind(AssertUnwindSafe(|| motion.at_with_inverse(time)))
+                .map_err(common::exercise::resume_if_not_written);
+            let (m, inverse) = match caught {
                 Ok(matrices) => matrices,
                 Err(_) => panic!(
                     "{at}, your code panicked (its message is above): {}",

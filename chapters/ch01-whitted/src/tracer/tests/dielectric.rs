@@ -52,7 +52,8 @@ fn weights(ray: &Ray, int_ior: f32, ext_ior: f32) -> Result<(Vec3, Vec<Ray>), St
     let hit = interface_hit();
     let result = catch_unwind(AssertUnwindSafe(|| {
         dielectric(ray, &hit, int_ior, ext_ior, &mut trace_next)
-    }));
+    }))
+    .map_err(common::exercise::resume_if_not_written);
     match result {
         Ok(radiance) => Ok((radiance, traced)),
         Err(payload) => Err(payload
