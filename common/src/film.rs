@@ -124,9 +124,10 @@ impl Film {
 
     /// A tile that collects the samples taken in `samples_from`. With a filter wider than
     /// half a pixel a sample also reaches pixels outside that rectangle, so the tile covers
-    /// those too; [`Film::merge`] adds them back.
+    /// those too, up to the film's edges; [`Film::merge`] adds them back.
     pub fn tile(&self, samples_from: PixelRect, filter: &dyn Filter) -> FilmTile {
         let r = filter.radius();
+        // Saturating: a filter's radius may be huge or infinite (and reaches the whole film).
         let reach = |v: f32| v.max(0.0).ceil() as u32;
         let bounds = PixelRect {
             min: UVec2::new(
@@ -134,8 +135,8 @@ impl Film {
                 samples_from.min.y.saturating_sub(reach(r.y - 0.5)),
             ),
             max: UVec2::new(
-                (samples_from.max.x + reach(r.x - 0.5)).min(self.width),
-                (samples_from.max.y + reach(r.y - 0.5)).min(self.height),
+                (samples_from.max.x.saturating_add(reach(r.x - 0.5))).min(self.width),
+                (samples_from.max.y.saturating_add(reach(r.y - 0.5))).min(self.height),
             ),
         };
         FilmTile {
@@ -155,11 +156,30 @@ impl Film {
     }
 
     /// The current image: each pixel's weighted average, in `f32`.
+    ///
+    /// An average beyond the largest `f32` (weights of opposite signs that nearly cancel
+    /// under a huge radiance) is clamped to it rather than made infinite.
     pub fn image(&self) -> Image {
+        let largest = f64::from(f32::MAX);
+        // Comparisons rather than `clamp`, which glam's `max` would make turn a NaN into a
+        // number: a NaN that got into the sums must show.
+        let within_f32 = |v: f64| {
+            if v > largest {
+                largest
+            } else if v < -largest {
+                -largest
+            } else {
+                v
+            }
+        };
         Image {
             width: self.width,
             height: self.height,
-            pixels: self.sums.iter().map(|s| s.value().as_vec3()).collect(),
+            pixels: self
+                .sums
+                .iter()
+                .map(|s| s.value().map(within_f32).as_vec3())
+                .collect(),
         }
     }
 }
@@ -180,11 +200,20 @@ impl FilmTile {
     /// Adds radiance `radiance` seen by a sample at continuous film position `p_film`
     /// (in pixels; pixel `(i, j)` covers `[i, i+1) x [j, j+1)`) to every pixel whose filter
     /// reaches it.
+    ///
+    /// A radiance or a filter weight that is NaN or infinite is left out (the render loop
+    /// counts such radiance first, [`RenderStats`](crate::render::RenderStats)): only a bug
+    /// gives one, and averaged in it would turn its pixels into NaN. A position that is NaN
+    /// reaches no pixel.
     pub fn add_sample(&mut self, p_film: Vec2, radiance: Vec3, filter: &dyn Filter) {
+        if !radiance.is_finite() {
+            return;
+        }
         let r = filter.radius();
         // Pixel j (centre j + 0.5) is reached when -r < p - (j + 0.5) <= r. For the box of
-        // radius 1/2 that is exactly the one pixel the sample falls into.
-        let first = |p: f32, r: f32| floor_to_i64(p - 0.5 - r) + 1;
+        // radius 1/2 that is exactly the one pixel the sample falls into. Saturating: the
+        // position may be huge or infinite, and then reaches no pixel of the tile.
+        let first = |p: f32, r: f32| floor_to_i64(p - 0.5 - r).saturating_add(1);
         let last = |p: f32, r: f32| floor_to_i64(p - 0.5 + r);
         let x0 = first(p_film.x, r.x).max(i64::from(self.bounds.min.x));
         let x1 = last(p_film.x, r.x).min(i64::from(self.bounds.max.x) - 1);
@@ -195,7 +224,7 @@ impl FilmTile {
             for x in x0..=x1 {
                 let centre = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
                 let weight = f64::from(filter.evaluate(p_film - centre));
-                if weight == 0.0 {
+                if weight == 0.0 || !weight.is_finite() {
                     continue;
                 }
                 let local = (y - i64::from(self.bounds.min.y)) as usize
@@ -222,6 +251,9 @@ fn floor_to_i64(x: f32) -> i64 {
         truncated
     }
 }
+
+#[cfg(test)]
+mod awkward_samples;
 
 #[cfg(test)]
 mod tests {

@@ -46,6 +46,30 @@ pub(crate) fn number() -> impl Strategy<Value = f32> + Clone {
     ]
 }
 
+/// A number of the figures' and metrics' `f64`: the same kinds as [`number`], with the
+/// extremes of `f64` (whose differences overflow, and whose smallest steps are subnormal).
+pub(crate) fn number_f64() -> impl Strategy<Value = f64> + Clone {
+    prop_oneof![
+        prop::sample::select(vec![
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            0.0,
+            -0.0,
+            1e300,
+            -1e300,
+            f64::MAX,
+            f64::MIN,
+            5e-324,
+            1e-310,
+            1.0,
+        ]),
+        -10.0f64..10.0,
+        number().prop_map(f64::from),
+        any::<f64>(),
+    ]
+}
+
 /// A pair of [`number`]s.
 pub(crate) fn vec2() -> impl Strategy<Value = Vec2> + Clone {
     (number(), number()).prop_map(|(x, y)| Vec2::new(x, y))

@@ -18,7 +18,9 @@ pub const RELMSE_EPSILON: f64 = 1e-2;
 /// Root-mean-square error: `sqrt(mean((x - r)^2))` over all pixels and channels.
 ///
 /// Monte Carlo noise makes this fall as `1 / sqrt(samples)`; it is in the image's own units,
-/// so bright regions weigh more than dark ones. Two images without pixels have error 0.
+/// so bright regions weigh more than dark ones. Two images without pixels have error 0. A NaN
+/// pixel in either image makes the error NaN, and an infinite one infinite (or NaN): a check
+/// that compares the error with a bound then fails, as it must, and can say why.
 ///
 /// # Panics
 ///
@@ -33,7 +35,8 @@ pub fn rmse(image: &Image, reference: &Image) -> f64 {
 ///
 /// Dividing by the reference's own brightness makes an error of 0.1 in a dark shadow count as
 /// much as an error of 1 in a bright highlight, roughly as the eye sees it: it shows noise in the
-/// shadows that RMSE would hide. Note that it is *not* square-rooted, by convention.
+/// shadows that RMSE would hide. Note that it is *not* square-rooted, by convention. NaN and
+/// infinite pixels count as in [`rmse`].
 ///
 /// # Panics
 ///
@@ -44,7 +47,8 @@ pub fn relmse(image: &Image, reference: &Image) -> f64 {
     })
 }
 
-/// The average colour of the image, accumulated in f64. Zero for an image without pixels.
+/// The average colour of the image, accumulated in f64. Zero for an image without pixels; a
+/// channel with a NaN pixel is NaN, and one with an infinite pixel infinite (or NaN).
 ///
 /// A quick check on a renderer: noise averages out, so an unbiased render's mean approaches the
 /// reference's as samples grow, while a biased one settles on the wrong value.
@@ -160,6 +164,25 @@ mod tests {
         let image = two_pixels(Vec3::new(1.0, 2.0, 3.0), Vec3::new(3.0, 2.0, 1.0));
         assert_eq!(mean(&image), DVec3::splat(2.0));
         assert_eq!(mean(&Image::new(0, 0)), DVec3::ZERO);
+    }
+
+    #[test]
+    fn a_pixel_that_is_not_a_number_shows_in_every_metric() {
+        let good = two_pixels(Vec3::ONE, Vec3::ONE);
+        for (bad, infinite) in [(f32::NAN, false), (f32::INFINITY, true)] {
+            let broken = two_pixels(Vec3::new(1.0, bad, 1.0), Vec3::ONE);
+            for (image, reference) in [(&broken, &good), (&good, &broken)] {
+                let error = rmse(image, reference);
+                assert!(if infinite {
+                    error == f64::INFINITY
+                } else {
+                    error.is_nan()
+                });
+                let relative = relmse(image, reference);
+                assert!(relative.is_nan() || relative == f64::INFINITY, "{relative}");
+            }
+            assert!(!mean(&broken).is_finite() && mean(&broken).x == 1.0);
+        }
     }
 
     #[test]

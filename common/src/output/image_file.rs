@@ -2,6 +2,9 @@
 
 use std::path::Path;
 
+use image::ImageError;
+use image::error::{ParameterError, ParameterErrorKind};
+
 use super::{OutputError, exr, pfm, png, write_atomic};
 use crate::image::Image;
 
@@ -51,13 +54,27 @@ pub fn check_image_path(path: &Path) -> Result<(), OutputError> {
 /// - `.pfm`: linear f32 RGB, little-endian, rows stored bottom to top (as the format demands).
 ///
 /// The extension is checked, and the whole file encoded in memory, before anything touches the
-/// disk: a bad extension or an unencodable image leaves the disk as it was.
+/// disk: a bad extension or an unencodable image (one whose pixels do not fill its size, which
+/// an image put together by hand can be) leaves the disk as it was. A NaN or infinite pixel is
+/// written as it is to the float formats and clamped in a PNG (NaN as black).
 pub fn write_image(path: &Path, image: &Image) -> Result<(), OutputError> {
     let format = Format::of(path)?;
     let encode_error = |source| OutputError::Encode {
         path: path.to_owned(),
         source,
     };
+    let size = u64::from(image.width) * u64::from(image.height);
+    if image.pixels.len() as u64 != size {
+        let problem = format!(
+            "the image has {} pixels, not {} x {}",
+            image.pixels.len(),
+            image.width,
+            image.height
+        );
+        return Err(encode_error(ImageError::Parameter(
+            ParameterError::from_kind(ParameterErrorKind::Generic(problem)),
+        )));
+    }
     let bytes = match format {
         Format::Png => png::encode(image).map_err(encode_error)?,
         Format::Exr => exr::encode(image).map_err(encode_error)?,
@@ -160,6 +177,54 @@ mod tests {
                 "{name}: {error}"
             );
             assert!(error.to_string().contains(name));
+        }
+    }
+
+    #[test]
+    fn pixels_that_are_not_numbers_are_written_and_clamped_in_a_png() {
+        let directory = tempfile::tempdir().unwrap();
+        let mut image = gradient();
+        image.set(0, 0, Vec3::new(f32::NAN, f32::INFINITY, f32::NEG_INFINITY));
+        image.set(1, 0, Vec3::new(f32::MAX, -0.0, 1e-40));
+        for name in ["image.pfm", "image.exr"] {
+            let path = directory.path().join(name);
+            write_image(&path, &image).unwrap();
+            let read = read_image(&path).unwrap();
+            let bits = |image: &Image| -> Vec<u32> {
+                image
+                    .pixels
+                    .iter()
+                    .flat_map(|p| p.to_array().map(f32::to_bits))
+                    .collect()
+            };
+            assert_eq!(bits(&read), bits(&image), "{name}");
+        }
+        let path = directory.path().join("image.png");
+        write_image(&path, &image).unwrap();
+        let read = read_image(&path).unwrap();
+        assert_eq!(read.get(0, 0), Vec3::new(0.0, 1.0, 0.0));
+        assert_eq!(read.get(1, 0), Vec3::new(1.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn pixels_that_do_not_fill_the_size_are_an_encode_error() {
+        let directory = tempfile::tempdir().unwrap();
+        for pixels in [0, 14, 16] {
+            let image = Image {
+                pixels: vec![Vec3::ONE; pixels],
+                ..gradient()
+            };
+            for name in ["image.png", "image.exr", "image.pfm"] {
+                let path = directory.path().join(name);
+                let error = write_image(&path, &image).unwrap_err();
+                assert!(matches!(error, OutputError::Encode { .. }), "{error}");
+                assert!(
+                    error
+                        .to_string()
+                        .contains(&format!("{pixels} pixels, not 5 x 3"))
+                );
+                assert!(!path.exists());
+            }
         }
     }
 

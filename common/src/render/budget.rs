@@ -30,7 +30,8 @@ impl Budget {
                     return Some(1);
                 }
                 let left = seconds - elapsed.as_secs_f64();
-                if left <= 0.0 {
+                // A NaN budget too is spent after its first pass, rather than never.
+                if left.is_nan() || left <= 0.0 {
                     return None;
                 }
                 // Estimate the pass that fits in the time left from the rate so far.
@@ -77,5 +78,14 @@ mod tests {
         assert_eq!(b.next_pass(4, Duration::from_millis(500)), Some(4));
         // A tenth of it used: doubling caps the pass at the samples done so far.
         assert_eq!(b.next_pass(4, Duration::from_millis(100)), Some(4));
+    }
+
+    #[test]
+    fn a_budget_of_no_number_renders_one_pass() {
+        for seconds in [f64::NAN, -1.0, 0.0] {
+            let b = Budget::Seconds(seconds);
+            assert_eq!(b.next_pass(0, Duration::ZERO), Some(1));
+            assert_eq!(b.next_pass(1, Duration::from_millis(1)), None, "{seconds}");
+        }
     }
 }

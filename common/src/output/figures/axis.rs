@@ -259,12 +259,26 @@ impl Ranged for Axis {
     }
 }
 
+/// The most ticks [`multiples_within`] gives; a round step gives about [`TARGET_TICKS`].
+const MAX_TICKS: f64 = 100.0;
+
 /// All multiples of `step` within `[start, end]`, computed as `k * step` so that rounding errors
 /// don't pile up from tick to tick.
+///
+/// None where there would be more than [`MAX_TICKS`], or no step to count in: an axis so short
+/// that a sixth of its length rounds to 0 (two data points a subnormal step apart), or so long
+/// that its length overflows, gets a step of 0 or `∞`, and counting its multiples would not end.
 fn multiples_within(step: f64, start: f64, end: f64) -> Vec<f64> {
-    let first = (start / step - 1e-9).ceil() as i64;
-    let last = (end / step + 1e-9).floor() as i64;
-    (first..=last).map(|k| k as f64 * step).collect()
+    let first = (start / step - 1e-9).ceil();
+    let last = (end / step + 1e-9).floor();
+    // NaN or infinite for a step of 0 or `∞`, or an end that is not a number.
+    let count = last - first;
+    if count.is_nan() || count > MAX_TICKS {
+        return Vec::new();
+    }
+    (first as i64..=last as i64)
+        .map(|k| k as f64 * step)
+        .collect()
 }
 
 /// A number in at most three significant digits: plainly between 0.001 and 99 999 (`0.02`,

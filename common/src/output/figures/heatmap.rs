@@ -25,6 +25,8 @@ const PANEL_WIDTH: u32 = 380;
 const MARGIN: u32 = 12;
 /// The pdf is averaged over this many points per side of each bin.
 const PDF_SUBSAMPLES: u32 = 4;
+/// The most bins a side: more than the panel has pixels (and `bins²` still fits a `u32`).
+const MAX_BINS: u32 = 1024;
 
 /// Saves two heat maps side by side, sharing one colour scale: the density of `points` binned
 /// into `bins x bins` cells over `domain = [min, max]`, and `pdf` averaged over the same cells
@@ -32,7 +34,7 @@ const PDF_SUBSAMPLES: u32 = 4;
 ///
 /// The histogram divides by the number of *all* points, so points falling outside the domain
 /// show up as missing density rather than being silently renormalised away. Errors: no points,
-/// `bins == 0`, or a domain without area.
+/// `bins == 0` or over 1024, or a domain without area.
 pub fn histogram_vs_pdf(
     path: &Path,
     title: &str,
@@ -48,8 +50,11 @@ pub fn histogram_vs_pdf(
             "there are no points to make a histogram of",
         ));
     }
-    if bins == 0 {
-        return Err(figure_error(path, "the histogram needs at least one bin"));
+    if bins == 0 || bins > MAX_BINS {
+        return Err(figure_error(
+            path,
+            format!("the histogram needs 1 to {MAX_BINS} bins a side, not {bins}"),
+        ));
     }
     let [low, high] = domain;
     if !(low.cmplt(high).all() && low.is_finite() && high.is_finite()) {
@@ -310,6 +315,7 @@ mod tests {
         for (points, domain, bins) in [
             (&[][..], unit, 8),
             (&some[..], unit, 0),
+            (&some[..], unit, 70_000),
             (&some[..], flat, 8),
         ] {
             let error = histogram_vs_pdf(&path, "t", points, &uniform, domain, bins).unwrap_err();

@@ -13,6 +13,8 @@
 //! | [`line_plot`] | error against samples or time, usually on log-log axes |
 //! | [`bar_chart`] | a number per named case |
 
+#[cfg(test)]
+mod awkward_data;
 mod axis;
 mod bar;
 mod canvas;
