@@ -516,16 +516,23 @@ mod tests {
     }
 
     /// The glossy floor of [`between_ceiling_and_floor`] with point lights at `lights`
-    /// (intensity 1 each, in the red channel), a still ball hiding the last one, and a ball
-    /// that moves between the first one and the origin at time 0.5 and stays there.
+    /// (intensity 1 each, in the red channel), a still ball hiding the last one from the
+    /// origin, and a ball that moves between the first one and the origin at time 0.5 and
+    /// stays there.
     fn floor_with_lights(lights: &[Vec3]) -> MotionScene {
         floor_of_with_lights(Material::glossy(Vec3::ONE, 20.0), lights)
     }
 
     /// [`floor_with_lights`] with a floor of `material`.
     fn floor_of_with_lights(material: Material, lights: &[Vec3]) -> MotionScene {
-        let last = lights[lights.len() - 1];
-        let first = lights[0];
+        floor_of_with_lights_seen_at(material, lights, Vec3::ZERO)
+    }
+
+    /// [`floor_of_with_lights`] with the balls halfway between the lights and the floor's
+    /// point `at` instead of its origin.
+    fn floor_of_with_lights_seen_at(material: Material, lights: &[Vec3], at: Vec3) -> MotionScene {
+        let last = at + 0.5 * (lights[lights.len() - 1] - at);
+        let first = at + 0.5 * (lights[0] - at);
         let ball = |at: Vec3| Shape::Sphere(Sphere::new(at, 0.04));
         let lights = lights.to_vec();
         between_ceiling_and_floor(material, move |b| {
@@ -535,37 +542,43 @@ mod tests {
                     intensity: Vec3::new(1.0, 0.0, 0.0),
                 })
             });
-            b.shape(ball(0.5 * last), Material::diffuse(Vec3::ZERO))
-                .moving(
-                    ball(Vec3::ZERO),
-                    vec![
-                        (0.0, Mat4::from_translation(Vec3::new(40.0, 1.0, 0.0))),
-                        (0.5, Mat4::from_translation(0.5 * first)),
-                        (1.0, Mat4::from_translation(0.5 * first)),
-                    ],
-                    Material::diffuse(Vec3::ZERO),
-                )
+            b.shape(ball(last), Material::diffuse(Vec3::ZERO)).moving(
+                ball(Vec3::ZERO),
+                vec![
+                    (0.0, Mat4::from_translation(Vec3::new(40.0, 1.0, 0.0))),
+                    (0.5, Mat4::from_translation(first)),
+                    (1.0, Mat4::from_translation(first)),
+                ],
+                Material::diffuse(Vec3::ZERO),
+            )
         })
     }
 
     #[test]
     fn exercise_highlights_are_the_lobes_density_times_the_light() {
-        // Lights around the mirror direction of a ray at 40° (the first hidden at time 0.8 by
-        // the moving ball, the last always by the still one), one below the floor.
-        let ray = towards_origin(40.0, true);
+        // Lights around the mirror direction of a ray at 40° that meets the floor at `seen`,
+        // off its origin (the first light hidden at time 0.8 by the moving ball, the last
+        // always by the still one), one below the floor. They are red: intensity (1, 0, 0).
+        let seen = Vec3::new(0.4, 0.0, -0.3);
+        let ray = Ray {
+            origin: seen + towards_origin(40.0, true).origin,
+            ..towards_origin(40.0, true)
+        };
         let mirror = reflect(ray.dir, Vec3::Y);
-        let mirror_light = 2.0 * mirror;
         let lights = [
             3.0 * (mirror + Vec3::new(0.1, 0.0, 0.25)).normalize(),
-            mirror_light,
+            2.0 * mirror,
             Vec3::new(2.0, 1.0, -1.5),
             Vec3::new(1.0, -1.0, 0.0),
             1.5 * (mirror + Vec3::new(0.0, 0.15, -0.3)).normalize(),
-        ];
-        let world = floor_with_lights(&lights);
+        ]
+        .map(|offset| seen + offset);
+        let world = floor_of_with_lights_seen_at(Material::glossy(Vec3::ONE, 20.0), &lights, seen);
         let hit = world.intersect(&ray).expect("the ray meets the floor");
-        let density = |at: Vec3| FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0);
-        let term = |at: Vec3| density(at) / at.length_squared();
+        assert!(
+            (hit.p - seen).length() < 1e-5,
+            "the floor at {seen}: {hit:?}"
+        );
         for method in [FuzzMethod::Lobe, FuzzMethod::Disc] {
             for time in [0.2f32, 0.8] {
                 let lobe = Lobe {
@@ -575,11 +588,17 @@ mod tests {
                     method,
                 };
                 let mut counters = SampleCounters::default();
-                let got = point_light_highlights(&world, &hit, &lobe, time, &mut counters).x;
-                let density = |at: Vec3| method.pdf(at.normalize().dot(mirror), 20.0);
-                let term = |at: Vec3| density(at) / at.length_squared();
+                let got_rgb = point_light_highlights(&world, &hit, &lobe, time, &mut counters);
+                let got = got_rgb.x;
+                // The lobe's density towards the light at `at` seen from `from`, and its term.
+                let density_from =
+                    |from: Vec3, at: Vec3| method.pdf((at - from).normalize().dot(mirror), 20.0);
+                let term_from =
+                    |from: Vec3, at: Vec3| density_from(from, at) / (at - from).length_squared();
+                let density = |at: Vec3| density_from(seen, at);
+                let term = |at: Vec3| term_from(seen, at);
                 // At time 0.2 the moving ball is still far off.
-                let seen: Vec<Vec3> = lights
+                let visible: Vec<Vec3> = lights
                     .iter()
                     .copied()
                     .enumerate()
@@ -588,12 +607,12 @@ mod tests {
                     })
                     .map(|(_, at)| at)
                     .collect();
-                let expected: f32 = seen.iter().map(|&at| term(at)).sum();
+                let expected: f32 = visible.iter().map(|&at| term(at)).sum();
                 let at = format!(
                     "point_light_highlights: a glossy floor's {method:?} lobe of exponent 20 \
-                     around the mirror direction {mirror}, at time {time}, with five lights \
-                     of intensity 1 (one below the floor, one always hidden by a ball, one \
-                     hidden by a moving ball from time 0.5 on)"
+                     around the mirror direction {mirror} at {seen}, at time {time}, with five \
+                     red lights of intensity (1, 0, 0) (one below the floor, one always hidden \
+                     by a ball, one hidden by a moving ball from time 0.5 on)"
                 );
                 if (got - expected).abs() > 1e-3 * expected.max(1e-3) {
                     let all_above: f32 = lights
@@ -601,18 +620,25 @@ mod tests {
                         .filter(|at| at.y > 0.0)
                         .map(|&at| term(at))
                         .sum();
-                    let unblocked_now: f32 = seen.iter().map(|&at| term(at)).sum::<f32>()
+                    let unblocked_now: f32 = visible.iter().map(|&at| term(at)).sum::<f32>()
                         + if time > 0.5 { term(lights[0]) } else { 0.0 };
-                    let no_falloff: f32 = seen.iter().map(|&at| density(at)).sum();
-                    let around_normal: f32 = seen
+                    let no_falloff: f32 = visible.iter().map(|&at| density(at)).sum();
+                    let around_normal: f32 = visible
                         .iter()
                         .map(|&at| {
-                            method.pdf(at.normalize().dot(Vec3::Y), 20.0) / at.length_squared()
+                            method.pdf((at - seen).normalize().dot(Vec3::Y), 20.0)
+                                / (at - seen).length_squared()
                         })
                         .sum();
+                    let from_origin: f32 =
+                        visible.iter().map(|&at| term_from(Vec3::ZERO, at)).sum();
                     let why = if got == 0.0 {
                         "no light got through: does each shadow ray stop at its light? One that \
                          goes on past the light meets whatever lies behind it (here a ceiling)"
+                            .to_string()
+                    } else if (got - from_origin).abs() <= 1e-3 * from_origin {
+                        "the lights were seen from the scene's origin: the direction and the \
+                         distance to a light are measured from the hit point, hit.p"
                             .to_string()
                     } else if (got - around_normal).abs() <= 1e-3 * around_normal {
                         "the density was taken at the angle from the surface's normal; the lobe \
@@ -636,8 +662,13 @@ mod tests {
                          intensity that arrives"
                             .to_string()
                     };
-                    panic!("{at} should show {expected}, and yours gave {got}: {why}");
+                    panic!("{at} should show {expected} in red, and yours gave {got}: {why}");
                 }
+                assert!(
+                    got_rgb.y == 0.0 && got_rgb.z == 0.0,
+                    "{at} should show no green or blue, and yours gave {got_rgb}: a highlight is \
+                     the light's own intensity, colour and all, times what the lobe sends back"
+                );
                 let shadow_rays = lights
                     .iter()
                     .filter(|&&at| at.y > 0.0 && density(at) > 0.0)
@@ -651,7 +682,6 @@ mod tests {
                 );
             }
         }
-        let _ = term;
     }
 
     #[test]
