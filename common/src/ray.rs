@@ -8,6 +8,11 @@ use glam::Vec3;
 /// gives every ray of a path the same `time`, and keeping the two names apart keeps that easy.
 /// `dir` need not be unit length, but every ray the chapters build has a unit `dir`, so `t` is a
 /// distance.
+///
+/// A ray that goes nowhere (an origin or a direction with a NaN or infinite component, or a
+/// zero direction: what a wrong answer computes, `normalize` of a zero vector, say) hits
+/// nothing and is occluded by nothing, and so is a ray whose `t_max` is NaN: every query
+/// answers it, so that a chapter's check can say what is wrong with it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
     /// Where the ray starts.

@@ -116,7 +116,7 @@ impl Geometry {
     }
 
     /// The nearest hit with `0 < t < ray.t_max`; its `shape` is an index into
-    /// [`shapes`](Self::shapes).
+    /// [`shapes`](Self::shapes). None for a ray that goes nowhere ([`Ray`] says which).
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         self.intersect_counted(ray).0
@@ -167,7 +167,8 @@ impl Geometry {
     }
 
     /// Whether anything lies on the ray before `ray.t_max` (a shadow test). Cheaper than
-    /// [`intersect`](Self::intersect): it stops at the first hit found, nearest or not.
+    /// [`intersect`](Self::intersect): it stops at the first hit found, nearest or not. False
+    /// for a ray that goes nowhere ([`Ray`] says which).
     pub fn occluded(&self, ray: &Ray) -> bool {
         let space = self.ray_space(ray);
         self.bvh
