@@ -100,7 +100,7 @@ fn warp_scatter_plots(out: &Path, quality: &Quality) -> anyhow::Result<()> {
             warped(&Warp::DiscNaive, &points).1,
         ),
         (
-            "polar: r = √ξ2".to_string(),
+            "polar, corrected".to_string(),
             warped(&Warp::DiscPolar, &points).1,
         ),
         (

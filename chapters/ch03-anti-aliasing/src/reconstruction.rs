@@ -19,7 +19,8 @@ use glam::{UVec2, Vec2, Vec3};
 ///
 /// `radiance(p_film, sampler)` is the radiance seen through film position `p_film`; it may
 /// draw the sample's further numbers (a lens point, a time) from `sampler`. A pixel that no
-/// sample reaches with any weight is black.
+/// sample reaches with any weight is black, and so is one whose weights sum to exactly zero
+/// (the film's rule; the weights are rounded so that such a sum is exact).
 ///
 /// Where is a pixel's centre, which pixels' samples can the filter reach from it, and where in
 /// the film does sample `k` of pixel `q` lie? What must the weighted sum be divided by?

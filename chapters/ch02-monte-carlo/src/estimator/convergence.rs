@@ -174,9 +174,20 @@ mod tests {
     }
 
     fn check_slope(points: &[(f64, f64)], expected: f64) {
-        if let Some(mistake) =
-            slope_mistake(points, log_log_slope(points.iter().copied()), expected)
-        {
+        let slope = common::test_support::catch_panic(|| log_log_slope(points.iter().copied()))
+            .unwrap_or_else(|message| {
+                panic!(
+                    "log_log_slope: points {points:?} made it panic ({message}): {}",
+                    if expected.is_nan() {
+                        "with fewer than two distinct x no line can be fitted, and the slope is \
+                         NaN"
+                    } else {
+                        "a point a logarithm cannot take is left out, and the others make the \
+                         line"
+                    }
+                )
+            });
+        if let Some(mistake) = slope_mistake(points, slope, expected) {
             panic!("log_log_slope: {mistake}");
         }
     }

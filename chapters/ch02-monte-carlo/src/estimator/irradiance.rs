@@ -76,7 +76,8 @@ pub struct Estimate {
 // ANCHOR: sun_and_sky
 /// Estimates the irradiance `∫ L(ω) cos θ dω` over the hemisphere around +z under the sky
 /// `radiance`, from `n` directions drawn with `sampling`, each made from one `u` of `next_u`,
-/// and reports the estimate with its standard error.
+/// and reports the estimate with its standard error. A uniform direction is the chapter's
+/// `sample_uniform_hemisphere(u)`, a cosine-weighted one `sample_cosine_hemisphere(u)`.
 ///
 /// Which density does each direction have, and what does the estimator do with it? With
 /// [`DirectionSampling::SunOrSky`] the warp that makes a direction is itself picked at random,

@@ -36,8 +36,13 @@ pub fn spherical_cap_pdf(cos_theta_max: f32) -> f32 {
 
 // ANCHOR: spherical_cap
 /// A uniform direction of the cap of directions within `θ_max` of +z, for
-/// `-1 ≤ cos_theta_max < 1`, with `φ = 2π ξ1` and `ξ2 = 0` at the pole. Density
+/// `-1 ≤ cos_theta_max < 1`, with `φ = 2π ξ1` (from +x towards +y) and `ξ2 = 0` at the pole;
+/// with `cos_theta_max = -1` it is [`super::sample_uniform_sphere`]. Density
 /// [`spherical_cap_pdf`].
+///
+/// It must keep its shape down to the tiniest cap an `f32` can describe (`cos_theta_max` the
+/// largest float below 1, `1 - cos_theta_max` = 6e-8), where `cos θ` of most of its
+/// directions rounds to 1: their `sin θ` must keep its digits there.
 pub fn sample_spherical_cap(u: Vec2, cos_theta_max: f32) -> Vec3 {
     // BEGIN SOLUTION
     use super::sphere::spherical_direction;

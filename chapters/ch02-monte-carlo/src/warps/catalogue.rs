@@ -31,7 +31,7 @@ pub enum Warp {
     Triangle,
     /// The unit disc by `r = ξ2`: not uniform, yet claimed uniform (see [`Warp::pdf`]).
     DiscNaive,
-    /// The unit disc by `r = √ξ2`.
+    /// The unit disc by the corrected polar map, [`super::sample_uniform_disc_polar`].
     DiscPolar,
     /// The unit disc by Shirley and Chiu's concentric map.
     DiscConcentric,

@@ -2,8 +2,8 @@
 //!
 //! The lecture writes a disc sample as `Polar2Cartesian(R v, 2π u)`: the angle from the first
 //! number `ξ1`, the radius from the second `ξ2`. Taking `v = ξ2` looks natural and is wrong;
-//! taking `v = √ξ2` is right. Both are kept so the difference can be seen, plotted and caught
-//! by the chi-square test. The concentric map in [`super::concentric`] is a third, better way.
+//! the exercise finds the right `v`. Both are kept so the difference can be seen, plotted and
+//! caught by the chi-square test. The concentric map in [`super::concentric`] is a third, better way.
 
 use std::f32::consts::{FRAC_1_PI, TAU};
 

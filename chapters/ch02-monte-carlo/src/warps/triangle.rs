@@ -2,12 +2,11 @@
 //!
 //! A triangle is half a parallelogram: `p0 + b1 (p1 - p0) + b2 (p2 - p0)` covers the
 //! parallelogram for `(b1, b2)` in the unit square, and the triangle for the half where
-//! `b1 + b2 ≤ 1`. Rejecting the other half would waste half the samples. Folding does not:
-//! the point reflection `(b1, b2) → (1 - b1, 1 - b2)` through the square's centre maps the
-//! upper half exactly onto the lower half and preserves area (its Jacobian has determinant 1).
-//! So each point of the lower triangle receives the samples of two equal patches, itself and
-//! its mirror image, and the density stays uniform: twice that of the square, `1 / area`
-//! after the affine map.
+//! `b1 + b2 ≤ 1`. Rejecting the other half would waste half the samples. Folding does not: a
+//! map that sends the upper half exactly onto the lower half and preserves area (its Jacobian
+//! has a determinant of size 1) leaves each point of the lower triangle the samples of two
+//! equal patches, itself and its image, and the density stays uniform: twice that of the
+//! square, `1 / area` after the affine map. Which map is that? The exercise asks.
 //!
 //! The fold is two-to-one, so unlike the other warps it has no inverse. (pbrt-v4 samples
 //! triangles with a different, one-to-one map for that reason; the fold is simpler to see.)

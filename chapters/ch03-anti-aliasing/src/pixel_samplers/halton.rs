@@ -17,7 +17,8 @@ use glam::{UVec2, Vec2};
 // ANCHOR: radical_inverse
 /// The radical inverse of `index` in `base`: the digits of `index` written in `base`, mirrored
 /// around the point, so that the index's last digit becomes the first digit of a fraction in
-/// `[0, 1)`. What are 1, 2 and 3 in base 2, mirrored?
+/// `[0, 1)`. Every `u64` index has one, `u64::MAX` included. What are 1, 2 and 3 in base 2,
+/// mirrored?
 pub fn radical_inverse(base: u32, index: u64) -> f64 {
     assert!(base >= 2, "a radical inverse needs a base of at least 2");
     // BEGIN SOLUTION

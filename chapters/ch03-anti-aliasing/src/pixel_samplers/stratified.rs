@@ -41,9 +41,10 @@ pub fn strata_grid(spp: u64) -> Option<(u32, u32)> {
 // ANCHOR_END: strata_grid
 
 // ANCHOR: jittered
-/// The position of sample `sample_index` of a pixel divided into `columns x rows` strata: a
-/// uniform point, given by `xi` in `[0, 1)^2`, inside stratum number `sample_index` (counted
-/// row by row from the top left; after the last stratum the order starts again).
+/// The position, in `[0, 1)^2` like every position in a pixel, of sample `sample_index` of a
+/// pixel divided into `columns x rows` strata: a uniform point, given by `xi` in `[0, 1)^2`,
+/// inside stratum number `sample_index` (counted row by row from the top left; after the last
+/// stratum the order starts again), `xi = (0, 0)` at the stratum's top left corner.
 pub fn jittered(sample_index: u64, columns: u32, rows: u32, xi: Vec2) -> Vec2 {
     // BEGIN SOLUTION
     let strata = u64::from(columns) * u64::from(rows);

@@ -108,6 +108,11 @@ fn strata_grid_mistake(spp: u64, got: Option<(u32, u32)>) -> Option<String> {
     let mistake = match got {
         None => format!("{spp} samples can be laid out as a grid"),
         Some(_) if spp == 0 => "no samples make no grid: the answer for 0 is None".to_string(),
+        Some(_) if expected.is_none() => format!(
+            "{spp} is prime and above u32::MAX: its only grid is a single row of {spp} columns, \
+             too many to count in u32, and the answer is None (a cast with `as` would wrap \
+             around)"
+        ),
         Some((columns, rows)) if u64::from(columns) * u64::from(rows) != spp => format!(
             "a grid of {columns} x {rows} has {} cells, not {spp}: every sample needs its own \
              stratum, and every stratum a sample",
@@ -143,14 +148,25 @@ fn exercise_strata_grid_is_as_square_as_the_count_allows() {
         // Squares of large primes, where a square root off by one finds no divisor near it.
         67_108_859u64 * 67_108_859,
         4_294_967_291u64 * 4_294_967_291,
+        // The smallest prime above u32::MAX: a single row too long to count in u32.
+        4_294_967_311,
+        0,
     ];
     for spp in counts {
-        if let Some(mistake) = strata_grid_mistake(spp, strata_grid(spp)) {
+        let got =
+            common::test_support::catch_panic(|| strata_grid(spp)).unwrap_or_else(|message| {
+                panic!(
+                    "strata_grid({spp}) panicked ({message}){}",
+                    if spp == 0 {
+                        ": no samples make no grid, and the answer for 0 is None"
+                    } else {
+                        ""
+                    }
+                )
+            });
+        if let Some(mistake) = strata_grid_mistake(spp, got) {
             panic!("strata_grid: {mistake}");
         }
-    }
-    if let Some(mistake) = strata_grid_mistake(0, strata_grid(0)) {
-        panic!("strata_grid: {mistake}");
     }
 }
 
@@ -269,11 +285,14 @@ fn radical_inverse_mistake(base: u32, index: u64, got: f64) -> Option<String> {
          before it"
             .to_string()
     } else if !(0.0..1.0).contains(&got) {
-        "the radical inverse is a fraction in [0, 1): each digit's place after the point must          be worth a base smaller than the one before"
+        "the radical inverse is a fraction in [0, 1): each digit's place after the point must \
+         be worth a base smaller than the one before"
             .to_string()
     } else if (got - not_mirrored).abs() <= 1e-12 {
         format!(
-            "the digits are not mirrored: {index} is {written} in base {base}, and its lowest              digit must become the first digit after the point (you read the digits in their              written order)"
+            "the digits are not mirrored: {index} is {written} in base {base}, and its lowest \
+             digit must become the first digit after the point (you read the digits in their \
+             written order)"
         )
     } else if (got - expected).abs() < 1e-6 {
         "close, but the digits lose precision: each is worth exactly a power of 1/base".to_string()
@@ -299,7 +318,24 @@ fn exercise_radical_inverse_mirrors_the_digits() {
         (3, u64::MAX),
     ]);
     for (base, index) in cases {
-        if let Some(mistake) = radical_inverse_mistake(base, index, radical_inverse(base, index)) {
+        let got = common::test_support::catch_panic(|| radical_inverse(base, index))
+            .unwrap_or_else(|message| {
+                panic!(
+                    "radical_inverse({base}, {index}) panicked ({message}): every u64 index has \
+                     an answer{}",
+                    if message.contains("overflow") {
+                        format!(
+                            ". {index} has {} digits in base {base}, and a power of the base that \
+                             large does not fit in a u64; a digit's place value can be kept as \
+                             an f64, which only grows smaller",
+                            digits_of(u64::from(base), index).len()
+                        )
+                    } else {
+                        String::new()
+                    }
+                )
+            });
+        if let Some(mistake) = radical_inverse_mistake(base, index, got) {
             panic!("radical_inverse: {mistake}");
         }
     }

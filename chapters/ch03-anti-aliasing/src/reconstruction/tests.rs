@@ -4,6 +4,7 @@ use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
 use common::image::Image;
 use common::render::{self, RenderSettings};
 use glam::DVec3;
+use std::sync::{Arc, Mutex};
 
 const EXERCISE: &str = "ch03-filtered-pixel";
 
@@ -23,6 +24,97 @@ fn radiance<S: Sampler>(p: Vec2, sampler: &mut S) -> Vec3 {
     };
     let ramp = Vec3::new(0.2 + p.x / 12.0, 0.3 + p.y / 9.0, 0.5);
     (ramp + Vec3::splat(disc)) * band * (0.75 + 0.5 * sampler.get_1d())
+}
+
+/// What `filtered_pixel` asked of its sampler, in order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Call {
+    Start(UVec2, u64),
+    Position,
+    Number,
+}
+
+/// A sampler that writes down every call before answering it as `inner` does, so that the
+/// check can say when the samples are not drawn as the render draws them.
+#[derive(Clone, Debug)]
+struct Watched<S> {
+    inner: S,
+    calls: Arc<Mutex<Vec<Call>>>,
+}
+
+impl<S: Sampler> Sampler for Watched<S> {
+    fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
+        self.calls
+            .lock()
+            .unwrap()
+            .push(Call::Start(pixel, sample_index));
+        self.inner.start_pixel_sample(pixel, sample_index);
+    }
+
+    fn get_pixel_2d(&mut self) -> Vec2 {
+        self.calls.lock().unwrap().push(Call::Position);
+        self.inner.get_pixel_2d()
+    }
+
+    fn get_1d(&mut self) -> f32 {
+        self.calls.lock().unwrap().push(Call::Number);
+        self.inner.get_1d()
+    }
+}
+
+/// What is wrong with the way `calls` drew the samples of an image of `size` pixels with `spp`
+/// samples each, in words; `None` if each sample was started, then placed, then given its
+/// further numbers, as the render does.
+fn drawing_mistake(calls: &[Call], size: UVec2, spp: u64) -> Option<String> {
+    let (mut started, mut placed) = (false, false);
+    for &call in calls {
+        match call {
+            Call::Start(pixel, index) => {
+                if pixel.x >= size.x || pixel.y >= size.y {
+                    return Some(format!(
+                        "it drew sample {index} of pixel {pixel}, outside the {} x {} image: \
+                         pixels outside the image take no samples, so only the pixels of the \
+                         image can reach this one",
+                        size.x, size.y
+                    ));
+                }
+                if index >= spp {
+                    return Some(format!(
+                        "it drew sample {index} of pixel {pixel}: every pixel takes {spp} \
+                         samples, numbered 0..{spp}"
+                    ));
+                }
+                (started, placed) = (true, false);
+            }
+            Call::Position | Call::Number if !started => {
+                return Some(
+                    "it drew numbers from the sampler before starting a sample: each sample \
+                     begins with sampler.start_pixel_sample(q, k), which says which sample of \
+                     which pixel it is, and so where it lies"
+                        .to_string(),
+                );
+            }
+            Call::Position if placed => {
+                return Some(
+                    "it drew two pixel positions after one start_pixel_sample: each sample is \
+                     started anew, and its position is its first number"
+                        .to_string(),
+                );
+            }
+            Call::Position => placed = true,
+            Call::Number if !placed => {
+                return Some(
+                    "the radiance drew its numbers from a sample whose pixel position was not \
+                     drawn first (or that was started again after it): as in the render, a \
+                     sample's position is its first number and the radiance's numbers follow \
+                     it"
+                    .to_string(),
+                );
+            }
+            Call::Number => {}
+        }
+    }
+    None
 }
 
 /// The usual slips, each a way of computing a pixel.
@@ -144,10 +236,35 @@ fn check(kind: PixelSamplerKind, spp: u64, filter: ReconstructionFilter) {
     let expected = render::render(&settings, &sampler, &filter, |p, s, _| radiance(p, s)).image;
     let mut mine = Image::new(size.x, size.y);
     let mut first_wrong = None;
+    let calls = Arc::new(Mutex::new(Vec::new()));
+    let mut drawing = None;
     for y in 0..size.y {
         for x in 0..size.x {
             let pixel = UVec2::new(x, y);
-            let got = filtered_pixel(pixel, size, spp, &mut sampler.clone(), &filter, radiance);
+            let mut watched = Watched {
+                inner: sampler.clone(),
+                calls: Arc::clone(&calls),
+            };
+            let got = common::test_support::catch_panic(|| {
+                filtered_pixel(pixel, size, spp, &mut watched, &filter, radiance)
+            })
+            .unwrap_or_else(|message| {
+                panic!(
+                    "filtered_pixel panicked at pixel {pixel} of a {} x {} image ({message}){}",
+                    size.x,
+                    size.y,
+                    if message.contains("subtract with overflow") {
+                        ": pixel coordinates are unsigned, and near the top or left edge of the \
+                         image a neighbour's coordinate below 0 does not exist; keep the range \
+                         of neighbours inside the image before you subtract (or work in signed \
+                         or float coordinates)"
+                    } else {
+                        ""
+                    }
+                )
+            });
+            let calls = std::mem::take(&mut *calls.lock().unwrap());
+            drawing = drawing.or_else(|| drawing_mistake(&calls, size, spp));
             mine.set(x, y, got);
             if first_wrong.is_none() && !close(got, expected.get(x, y)) {
                 first_wrong = Some(pixel);
@@ -157,6 +274,15 @@ fn check(kind: PixelSamplerKind, spp: u64, filter: ReconstructionFilter) {
     let Some(pixel) = first_wrong else {
         return;
     };
+    if let Some(drawing) = drawing {
+        panic!(
+            "filtered_pixel: {drawing}.\n  {kind:?} samples, {spp} per pixel, {filter:?}: pixel \
+             {pixel} gave {}, the film gives {}; {}",
+            mine.get(pixel.x, pixel.y),
+            expected.get(pixel.x, pixel.y),
+            common::test_support::image_comparison(EXERCISE, &mine, &expected)
+        );
+    }
     // Which slip gives the student's image? Judged on the pixels that are wrong (a slip may
     // reach a few pixels differently, depending on which neighbours are visited).
     let wrong: Vec<UVec2> = (0..size.y)

@@ -135,6 +135,15 @@ fn slips(sampling: DirectionSampling) -> Vec<(String, f64)> {
                 .to_string(),
             over_hemisphere(|z| integrand(z) * density(sampling, z) / (z / PI)),
         ));
+        let whole_cap = 1.0 / (2.0 * PI * (1.0 - m));
+        slips.push((
+            "the cap's density is counted for directions outside the cap too: the cap's warp \
+             never draws those, so its density there is 0"
+                .to_string(),
+            over_hemisphere(|z| {
+                integrand(z) * density(sampling, z) / (p * whole_cap + (1.0 - p) * z / PI)
+            }),
+        ));
     }
     for (factor, words) in [
         (2.0, "2"),
@@ -251,7 +260,8 @@ fn exercise_sun_and_sky_reports_its_standard_error() {
     assert!(
         near(mine.mean, mean),
         "estimate_irradiance: for these five uniform directions the mean of the terms \
-         f / p is {mean}, yours {}",
+         f / p is {mean}, yours {}: a uniform direction is sample_uniform_hemisphere(u), one for \
+         each u of next_u in turn, and its term is L cos θ over uniform_hemisphere_pdf()",
         mine.mean
     );
     if near(mine.standard_error, expected) {
@@ -339,12 +349,20 @@ fn exercise_sun_and_sky_of_a_direction_on_the_horizon() {
 
 #[test]
 fn exercise_sun_and_sky_of_no_directions_is_nan() {
-    let estimate = estimate_irradiance(
-        |_| 1.0,
-        DirectionSampling::Uniform,
-        0,
-        &mut uniform_numbers(1),
-    );
+    let estimate = common::test_support::catch_panic(|| {
+        estimate_irradiance(
+            |_| 1.0,
+            DirectionSampling::Uniform,
+            0,
+            &mut uniform_numbers(1),
+        )
+    })
+    .unwrap_or_else(|message| {
+        panic!(
+            "estimate_irradiance: with n = 0 it panicked ({message}): no directions give no \
+             estimate, and both numbers are NaN"
+        )
+    });
     assert!(
         estimate.mean.is_nan() && estimate.standard_error.is_nan(),
         "estimate_irradiance: no directions give no estimate: both numbers are NaN, not {} ± {}",
