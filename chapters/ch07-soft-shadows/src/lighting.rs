@@ -150,6 +150,9 @@ mod tests {
     const ALBEDO: f32 = 0.5;
     /// Where the receiver is looked at from: off to the side, clear of the lights.
     const EYE: Vec3 = Vec3::new(2.0, 1.0, 0.3);
+    /// The point of the floor looked at, off the scene's origin (so that a term that forgets
+    /// where the receiver is shows).
+    const RECEIVER: Vec3 = Vec3::new(0.3, 0.0, -0.2);
 
     /// A matte floor (y = 0, facing up, 20 wide, albedo 0.5) and one light of radiance 1 of
     /// `shape`, with a black surface.
@@ -176,14 +179,14 @@ mod tests {
     }
 
     /// The mean and standard error over `calls` of the radiance `matte` reflects from the
-    /// floor's origin towards `EYE`, with `samples` shadow rays per light; and the shadow
+    /// floor's point `RECEIVER` towards `EYE`, with `samples` shadow rays per light; and the shadow
     /// rays traced.
     fn reflected(world: &MotionScene, samples: u32, calls: u64) -> (f64, f64, u64) {
         let area_lights = AreaLights::of(&world.scene);
         let lighting = area_lights.lighting(LightOptions::with_samples(samples));
-        let ray = Ray::new(EYE, (Vec3::ZERO - EYE).normalize());
+        let ray = Ray::new(EYE, (RECEIVER - EYE).normalize());
         let hit = world.intersect(&ray).expect("the ray reaches the floor");
-        assert!(hit.p.length() < 1e-5, "the floor's origin: {hit:?}");
+        assert!((hit.p - RECEIVER).length() < 1e-5, "the receiver: {hit:?}");
         let mut sampler = IndependentSampler::new(7);
         let mut counters = SampleCounters::default();
         let (mut sum, mut sum2) = (0.0f64, 0.0f64);
@@ -245,7 +248,7 @@ mod tests {
             quad.corner() + quad.e1() + quad.e2(),
             quad.corner() + quad.e2(),
         ];
-        let irradiance = polygon_irradiance(Vec3::ZERO, Vec3::Y, &vertices, Vec3::ONE).y;
+        let irradiance = polygon_irradiance(RECEIVER, Vec3::Y, &vertices, Vec3::ONE).y;
         let reference = f64::from(ALBEDO) * f64::from(irradiance) / PI;
         let world = scene_with(Shape::Parallelogram(quad));
         for (samples, calls) in [(1, 4000), (4, 1000)] {
@@ -280,14 +283,29 @@ mod tests {
     fn exercise_matte_estimates_a_sphere_light_by_its_cone() {
         // A sphere of radius 0.5 off to the side: sampled by the cone it covers.
         let center = Vec3::new(1.0, 1.5, 0.0);
-        let (radius, d) = (0.5f64, f64::from(center.length()));
-        let cos = f64::from(center.y) / d;
+        let (radius, d) = (0.5f64, f64::from((center - RECEIVER).length()));
+        let cos = f64::from(center.y - RECEIVER.y) / d;
         let irradiance = f64::from(sphere_irradiance(Vec3::ONE, 0.5, d as f32, cos as f32).y);
         let reference = f64::from(ALBEDO) * irradiance / PI;
         // Without the receiver's cosine the estimate is L times the cone's solid angle.
         let s = radius / d;
         let solid_angle = 2.0 * PI * s * s / (1.0 + (1.0 - s * s).sqrt());
         let no_cos = solid_angle / irradiance;
+        // The directions to the points taken from the scene's origin instead of the receiver.
+        let light = AreaLight::new(Sphere::new(center, 0.5), Vec3::ONE);
+        let points = crate::test_support::uniform_points(20_000, 5);
+        let from_origin = points
+            .iter()
+            .filter_map(|&u| light.sample(RECEIVER, u, crate::LightSampling::solid_angle()))
+            .map(|sample| {
+                let wi = sample.p.normalize();
+                let term = light.emitted(sample.n, -wi).y * wi.y.max(0.0)
+                    / sample.pdf_solid_angle.unwrap_or(f32::NAN);
+                f64::from(term)
+            })
+            .sum::<f64>()
+            / points.len() as f64
+            / irradiance;
         let world = scene_with(Shape::Sphere(Sphere::new(center, 0.5)));
         for (samples, calls) in [(1, 4000), (4, 1000)] {
             let (mean, se, _) = reflected(&world, samples, calls);
@@ -314,6 +332,11 @@ mod tests {
                         f64::from(samples).max(2.0),
                         "not divided by the number of shadow rays",
                     ),
+                    (
+                        from_origin,
+                        "the direction to the light's point was taken from the scene's origin: \
+                         it goes from the receiver, hit.p, to the point",
+                    ),
                 ],
                 if mean > reference {
                     too_bright
@@ -336,9 +359,9 @@ mod tests {
             quad.corner() + quad.e2(),
         ];
         let center = Vec3::new(-1.5, 1.5, 1.2);
-        let d = center.length();
-        let panel = f64::from(polygon_irradiance(Vec3::ZERO, Vec3::Y, &vertices, Vec3::ONE).y);
-        let sphere = f64::from(sphere_irradiance(Vec3::ONE, 0.5, d, center.y / d).y);
+        let d = (center - RECEIVER).length();
+        let panel = f64::from(polygon_irradiance(RECEIVER, Vec3::Y, &vertices, Vec3::ONE).y);
+        let sphere = f64::from(sphere_irradiance(Vec3::ONE, 0.5, d, (center - RECEIVER).y / d).y);
         let to_radiance = f64::from(ALBEDO) / PI;
         let world = scene_with_lights(&[
             Shape::Parallelogram(quad),
@@ -364,7 +387,8 @@ mod tests {
                     "only the last light came through: every light's estimate is added",
                 ),
             ],
-            "every light's estimate is added",
+            "the two lights together give the sum of what each gives alone (the checks of a \
+             panel and of a sphere light alone say more)",
         );
     }
 
