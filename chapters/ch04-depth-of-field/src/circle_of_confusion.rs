@@ -6,24 +6,21 @@
 //! point on the plane `z = d_f`. Look at it the other way round: which film positions see a
 //! point `Q` at depth `d`? A ray from lens point `P_l` through `Q` reaches the focal plane at
 //! `P_f = P_l + (Q - P_l) d_f / d = Q d_f / d + P_l (1 - d_f / d)`. As `P_l` runs over the
-//! lens disc, `P_f` runs over a disc of radius `R |d - d_f| / d` on the focal plane. The film
-//! sees the focal plane through the pinhole at scale `1 / d_f` (tangent units, the pinhole's
-//! `z = 1` plane), so the point's image is a disc of diameter
-//!
-//! ```text
-//! c = 2 R |d - d_f| / (d d_f)        (in tangent units; times W / (2 tan(fov_x / 2)) in pixels)
-//! ```
+//! lens disc, `P_f` runs over a disc on the focal plane: of which radius? The film sees the
+//! focal plane through the pinhole at scale `1 / d_f` (tangent units, the pinhole's `z = 1`
+//! plane), so the point's image is a disc whose diameter, in tangent units, is the exercise
+//! below (times `W / (2 tan(fov_x / 2))` in pixels).
 //!
 //! **In a photographer's terms** (focal length `f`, aperture diameter `A = f / N`, film at
 //! `v = f d_f / (d_f - f)` behind the lens by the thin lens equation): similar triangles give
-//! the blur disc on the film, `c_film = A |d - d_f| / d * f / (d_f - f)`. Divide by the film
-//! distance `v` to get the angle it covers: `c_film / v = A |d - d_f| / (d d_f)`, the same
-//! expression with `A = 2R`. The two models agree; Mitsuba's only drops the focal length,
-//! which affects nothing but the film's distance (and that the field of view already fixes).
+//! the blur disc on the film ([`circle_of_confusion_on_film`]). Divided by the film distance
+//! `v`, the angle it covers, it is the same diameter with `A = 2R`: the two models agree, and
+//! Mitsuba's only drops the focal length, which affects nothing but the film's distance (and
+//! that the field of view already fixes).
 //!
-//! The blur grows without bound in front of the focal plane (as `d → 0`) but tends to the
-//! finite `2R / d_f` behind it (as `d → ∞`): a distant background is never blurred more than
-//! that, which is why a far focus keeps everything behind it nearly sharp (the hyperfocal trick).
+//! The blur grows without bound in front of the focal plane (as `d → 0`) but tends to a finite
+//! limit behind it (as `d → ∞`): a distant background is never blurred more than that, which is
+//! why a far focus keeps everything behind it nearly sharp (the hyperfocal trick).
 
 use crate::thin_lens::ThinLensCamera;
 use ch01_whitted::camera::PinholeCamera;
@@ -71,7 +68,10 @@ pub fn circle_of_confusion_on_film(
 /// which at least one lens ray hits `sphere`, measured to a small fraction of a pixel.
 ///
 /// This measures the circle of confusion without the formula: for a small `sphere` on the
-/// camera's axis the band is the blur circle widened by the sphere's own image.
+/// camera's axis the band is the blur circle widened by the sphere's own image. The sphere
+/// may be tiny (a radius of 0.003 at a lens radius of 0.15): every film position that sees it
+/// through some point of the lens counts, however narrow the strip of lens points it is seen
+/// through. The chapter's page gives a method.
 ///
 /// Which points of the lens can send a ray from the middle row to a sphere on the axis, and
 /// how do you pick exactly those with a lens sample? A film position either sees the sphere
@@ -159,12 +159,17 @@ mod tests {
              has diameter 0, not {at_focus}"
         );
         let far = circle_of_confusion(0.3, 4.0, 1e9);
+        let limit = 2.0 * 0.3 / 4.0;
         assert!(
-            (far - 2.0 * 0.3 / 4.0).abs() < 1e-6,
+            (far - limit).abs() < 1e-6,
             "circle_of_confusion: far behind the focus the rays from a point are almost \
              parallel, and the circle tends to the lens's diameter seen from the focus \
-             distance, 2 R / d_f = {}; yours is {far} at depth 1e9",
-            2.0 * 0.3 / 4.0
+             distance, 2 R / d_f = {limit}; yours is {far} at depth 1e9{}",
+            if (2.0 * far - limit).abs() < 1e-6 {
+                " (half: the circle's diameter is asked, not its radius)"
+            } else {
+                ""
+            }
         );
         let (front, behind) = (
             circle_of_confusion(0.3, 4.0, 2.0),
@@ -221,16 +226,48 @@ mod tests {
         ThinLensCamera::new(pinhole, Lens::new(0.15, 4.0).unwrap())
     }
 
+    /// The strip of the lens, as a share of its diameter, from which the rays through one
+    /// film position hit a sphere of radius `rho` at `depth`: a ray from lens point `x_l`
+    /// meets the depth `d` at `x_l (1 - d / d_f)` plus a term of the film position alone, so
+    /// the lens points whose rays pass within `rho` of the axis span `2 rho d_f / |d_f - d|`.
+    fn strip_share(camera: &ThinLensCamera, rho: f32, depth: f32) -> f32 {
+        let (r, focus) = (camera.lens.aperture_radius, camera.lens.focus_distance);
+        (2.0 * rho * focus / (focus - depth).abs() / (2.0 * r)).min(1.0)
+    }
+
     #[test]
     fn exercise_measured_blur_agrees_with_a_slow_scan() {
         let camera = blur_camera();
+        let r = camera.lens.aperture_radius;
+        // The lens's horizontal diameter, 1201 points: far closer together than any strip
+        // of lens points that sees the sphere below.
+        let diameter: Vec<Vec2> = (0..=1200)
+            .map(|i| Vec2::new(r * (i as f32 / 600.0 - 1.0), 0.0))
+            .collect();
+        let rho = 0.003;
         for depth in [1.5f32, 4.0, 10.0] {
-            let sphere = Sphere::new(Vec3::new(0.0, 0.0, depth), 0.003);
-            let got = measured_blur_width(&camera, &sphere);
-            let r = camera.lens.aperture_radius;
-            let diameter: Vec<Vec2> = (0..=1200)
-                .map(|i| Vec2::new(r * (i as f32 / 600.0 - 1.0), 0.0))
-                .collect();
+            let sphere = Sphere::new(Vec3::new(0.0, 0.0, depth), rho);
+            let share = strip_share(&camera, rho, depth);
+            let too_sparse = format!(
+                "Through one film position, the rays that hit a sphere of radius {rho} at depth \
+                 {depth} leave from a strip of the lens only {:.4} wide, 1/{:.0} of its \
+                 diameter: lens points farther apart than that can all miss it, and then the \
+                 film positions between the centre's own band and the true ends look blind to \
+                 the search. Space the lens points closer than that (more than {:.0} across \
+                 the diameter, rim included; the slow scan uses 1201)",
+                share * 2.0 * r,
+                1.0 / share,
+                (1.0 / share).ceil() + 1.0
+            );
+            let got = common::test_support::catch_panic(|| measured_blur_width(&camera, &sphere))
+                .unwrap_or_else(|message| {
+                    panic!(
+                        "measured_blur_width panicked ({message}) for a sphere of radius {rho} \
+                         on the axis at depth {depth}, which the middle of the row sees through \
+                         the lens centre and through every lens point near it. Do your lens \
+                         points include the centre, or come close enough to it? {too_sparse}"
+                    )
+                });
             let expected = scanned_blur_width(&camera, &sphere, &diameter);
             if (got - expected).abs() <= 0.03 + 0.003 * expected {
                 continue;
@@ -239,23 +276,44 @@ mod tests {
             let mistake = if !got.is_finite() {
                 "the width is not a number".to_string()
             } else if (got - pinhole_only).abs() < 0.05 && (expected - pinhole_only).abs() > 0.5 {
-                "only the lens centre sends rays: a film position sees the sphere when a ray \
-                 from any point of the lens hits it, and the lens's rim reaches farthest"
-                    .to_string()
+                // The lens centre alone, or lens points too sparse for so small a sphere? A
+                // sphere twenty times larger tells: sparse points catch it, the centre does not.
+                let big = Sphere::new(Vec3::new(0.0, 0.0, depth), 20.0 * rho);
+                let big_expected = scanned_blur_width(&camera, &big, &diameter);
+                let big_got =
+                    common::test_support::catch_panic(|| measured_blur_width(&camera, &big));
+                match big_got {
+                    Ok(big_got)
+                        if (big_got - big_expected).abs() <= 0.05 + 0.005 * big_expected =>
+                    {
+                        format!(
+                            "your band is only as wide as the lens centre alone sees, yet for a \
+                             sphere twenty times larger your width is right ({big_got:.3} px): \
+                             your lens points are too far apart for so small a sphere. \
+                             {too_sparse}"
+                        )
+                    }
+                    _ => "only the lens centre sends rays: a film position sees the sphere when \
+                          a ray from any point of the lens hits it, and the lens's rim reaches \
+                          farthest"
+                        .to_string(),
+                }
             } else if (2.0 * got - expected).abs() <= 0.06 + 0.006 * expected {
                 "that is half the band: it has two ends, one on each side of the centre".to_string()
             } else if got < expected {
-                "the band is narrower than traced rays find: do your lens points reach the rim \
-                 of the lens on both sides, and does each end converge on the last position \
-                 that sees the sphere?"
-                    .to_string()
+                format!(
+                    "the band is narrower than traced rays find: do your lens points reach the \
+                     rim of the lens on both sides, are they close enough together, and does \
+                     each end converge on the last position that sees the sphere? On closeness: \
+                     {too_sparse}"
+                )
             } else {
                 "the band is wider than traced rays find: does each end converge on the last \
                  position that still sees the sphere?"
                     .to_string()
             };
             panic!(
-                "measured_blur_width: {mistake}.\n  a sphere of radius 0.003 at depth {depth} \
+                "measured_blur_width: {mistake}.\n  a sphere of radius {rho} at depth {depth} \
                  (lens radius 0.15, focus 4, 200 pixels across): yours measures {got:.3} px, a \
                  slow scan of the row finds {expected:.3} px"
             );
@@ -282,7 +340,8 @@ mod tests {
                 "circle_of_confusion: a small sphere at depth {depth} (focus {focus}, lens radius \
                  {radius}) blurs over {measured:.2} px in a traced image; your circle of \
                  confusion predicts {predicted:.2} px (plus {own_size:.2} px for the sphere's own \
-                 size)"
+                 size), {:.3} times the traced blur without the sphere's size",
+                predicted / (measured - own_size)
             );
         }
     }

@@ -78,6 +78,8 @@ impl ThinLensCamera {
     ///
     /// Which point of the aperture does `u_lens` pick, given the lens's shape, its warp and its
     /// size? Where does this ray start, and in which space is each of your points and vectors?
+    /// Whatever the lens, however wide or narrow and however near or far its focus, the ray has
+    /// a finite origin and a direction of unit length.
     pub fn generate_ray_through(&self, p_film: Vec2, u_lens: Vec2) -> Ray {
         // BEGIN SOLUTION
         use crate::aperture::{Aperture, sample_uniform_regular_polygon};
@@ -295,6 +297,11 @@ mod tests {
         } else if radius > 0.0 && lens_crossing(camera, ray).length() < 1e-4 * scale {
             "the ray leaves from the lens centre: the lens point is not used as the ray's \
              origin"
+                .to_string()
+        } else if same_line(&with_lens_point(radius * Vec2::new(-unit.x, unit.y))) {
+            "the lens point's x is mirrored: camera-space +x points to the image's left (as in \
+             chapter 01 and Mitsuba), and the lens point's x is taken along it, the frame's \
+             left vector"
                 .to_string()
         } else if radius != 1.0 && same_line(&with_lens_point(unit)) {
             format!(
