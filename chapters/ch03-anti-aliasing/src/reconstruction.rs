@@ -13,9 +13,12 @@ use glam::{UVec2, Vec2, Vec3};
 
 // ANCHOR: filtered_pixel
 /// The value of `pixel` in an image of `image_size` pixels (pixel `(i, j)` covers
-/// `[i, i+1) x [j, j+1)` of the film) when every pixel takes `spp` samples, numbered
-/// `0..spp`, placed by `sampler`, and `filter` reconstructs: the weighted average of the
-/// radiance of every sample, of this pixel or of a neighbour, that the filter reaches.
+/// `[i, i+1) x [j, j+1)` of the film; pixels outside the image take no samples) when every
+/// pixel takes `spp` samples, numbered `0..spp`, placed by `sampler`, and `filter`
+/// reconstructs: the weighted average of the radiance of every sample, of this pixel or of a
+/// neighbour, that the filter reaches. Each sample is drawn as the render draws it: started
+/// with `sampler.start_pixel_sample(q, k)`, its pixel position its first number, then whatever
+/// `radiance` draws.
 ///
 /// `radiance(p_film, sampler)` is the radiance seen through film position `p_film`; it may
 /// draw the sample's further numbers (a lens point, a time) from `sampler`. A pixel that no

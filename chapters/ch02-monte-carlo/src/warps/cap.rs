@@ -26,7 +26,8 @@ use super::sphere::one_minus_cos_theta;
 // ANCHOR: spherical_cap_pdf
 /// The density of [`sample_spherical_cap`] per unit solid angle, for directions inside the
 /// cap of directions within `θ_max` of +z (`-1 ≤ cos_theta_max < 1`): every direction of the
-/// cap equally likely.
+/// cap equally likely. It must hold down to the tiniest cap an `f32` can describe
+/// (`cos_theta_max` the largest float below 1).
 pub fn spherical_cap_pdf(cos_theta_max: f32) -> f32 {
     // BEGIN SOLUTION
     1.0 / (TAU * (1.0 - cos_theta_max))
