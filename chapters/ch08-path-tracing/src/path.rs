@@ -177,8 +177,10 @@ impl PathTracer<'_> {
     ///
     /// Light can reach the path two ways here: found by this segment (a surface that glows,
     /// or the environment when the ray leaves the scene) and sampled at its end (next-event
-    /// estimation, [`next_event`](Self::next_event)). Which of the two counts how much, when
-    /// the previous bounce could have sampled the light this segment found? Which lights can
+    /// estimation, [`next_event`](Self::next_event)); the render's options say whether light
+    /// samples are taken at all (`self.options.nee`) and how the two share a light
+    /// (`self.options.mis`). Which of the two counts how much, when the previous bounce could
+    /// have sampled the light this segment found? Which lights can
     /// only one of them find? What does `max_depth` (Mitsuba's, counting the camera ray)
     /// still allow at this depth: a light sample, a further segment, neither?
     /// [`PathState::gather`] adds light times what the path carries, and
@@ -601,6 +603,76 @@ mod tests {
     }
 
     #[test]
+    fn exercise_extend_path_carries_the_radiance_scaling_through_glass() {
+        // Smooth glass refracts part of the time, scaling radiance by (eta_i / eta_t)²: the
+        // path's eta_scale gathers those factors, as its throughput gathers the weights.
+        let glass = Smooth::glass(1.5);
+        let options = PathOptions {
+            rr_depth: None,
+            ..PathOptions::with_depth(8)
+        };
+        let carried = Carried {
+            throughput: Vec3::new(0.5, 1.0, 2.0),
+            eta_scale: 0.8,
+        };
+        with_tracer(glass.clone(), options, |tracer| {
+            let hit = floor_hit();
+            let bsdf = Bsdf {
+                material: &glass,
+                hit: &hit,
+                fuzz: FuzzMethod::Lobe,
+            };
+            let wo = Vec3::new(0.3, 1.0, 0.2).normalize();
+            let mut sampler = IndependentSampler::new(13);
+            let mut refracted = 0;
+            for i in 0..64 {
+                // The BSDF's own sample from the same numbers, then the extension.
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                let Some(sample) = bsdf.sample(wo, &mut sampler) else {
+                    continue;
+                };
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                let Some(next) = tracer.extend_path(&bsdf, wo, 0.0, 1, carried, &mut sampler)
+                else {
+                    panic!(
+                        "extend_path: glass gave a direction ({sample:?}) and the path carries \
+                         something, so it goes on (no roulette before rr_depth); yours ended it"
+                    );
+                };
+                refracted += usize::from(sample.eta_scale != 1.0);
+                let expected = carried.eta_scale * sample.eta_scale;
+                let got = next.carried.eta_scale;
+                if (got - expected).abs() > 1e-6 * expected {
+                    let why = if got == carried.eta_scale {
+                        "the sample's radiance scaling was not multiplied in"
+                    } else if (got - sample.eta_scale).abs() <= 1e-6 * sample.eta_scale {
+                        "the sample's scaling replaced what the path carried; it is multiplied \
+                         into it"
+                    } else if (got - carried.eta_scale / sample.eta_scale).abs() <= 1e-6 * got {
+                        "the path's eta_scale was divided by the sample's; it is multiplied by it"
+                    } else {
+                        "it is the path's eta_scale times the sample's"
+                    };
+                    panic!(
+                        "extend_path: through glass the sample scales radiance by {}, so the \
+                         path's eta_scale goes from {} to {expected}; yours is {got}: {why}",
+                        sample.eta_scale, carried.eta_scale
+                    );
+                }
+                let throughput = carried.throughput * sample.weight;
+                assert!(
+                    (next.carried.throughput - throughput).abs().max_element()
+                        <= 1e-5 * throughput.max_element(),
+                    "extend_path: through glass the new throughput is {}, expected {throughput}: \
+                     what the path carried times the sample's weight",
+                    next.carried.throughput
+                );
+            }
+            assert!(refracted > 0, "the check's samples refract");
+        });
+    }
+
+    #[test]
     fn exercise_extend_path_ends_paths_that_carry_nothing() {
         let black = Smooth::diffuse(Vec3::ZERO);
         let carried = Carried {
@@ -815,6 +887,58 @@ mod tests {
     }
 
     #[test]
+    fn exercise_segment_follows_the_options() {
+        let grey = Smooth::diffuse(Vec3::splat(0.5));
+        let (to_sphere, to_sky) = furnace_rays();
+        // Without NEE no light sample takes a share: the BSDF rays find the whole sky.
+        let no_nee = PathOptions {
+            nee: false,
+            ..PathOptions::with_depth(3)
+        };
+        with_tracer(grey.clone(), no_nee, |tracer| {
+            let (mean, se) = mean_radiance(tracer, &to_sphere, 4000, 6);
+            assert!(
+                (mean - 0.5).abs() < 5.0 * se + 1e-3,
+                "segment: without next-event estimation, a grey sphere of albedo 0.5 under a \
+                 sky of radiance 1 sends back 0.5 at max_depth 3; yours averaged {mean:.4} ± \
+                 {se:.4}: {}",
+                if mean < 0.5 {
+                    "without NEE no light sample takes a share of the light, so what a BSDF ray \
+                     finds counts in full"
+                } else {
+                    "each light is counted once"
+                }
+            );
+        });
+        // A scene that hides its emitters: the camera ray's own finds count for nothing, what
+        // later segments find counts as always.
+        for max_depth in [1, 3] {
+            let hidden = PathOptions {
+                hide_emitters: true,
+                ..PathOptions::with_depth(max_depth)
+            };
+            with_tracer(grey.clone(), hidden, |tracer| {
+                let (sky, _) = mean_radiance(tracer, &to_sky, 16, 7);
+                assert!(
+                    sky == 0.0,
+                    "segment: the scene hides its emitters (hide_emitters), so a camera ray that \
+                     leaves it sees nothing of the sky; yours brought back {sky} at max_depth \
+                     {max_depth}"
+                );
+                if max_depth > 1 {
+                    let (mean, se) = mean_radiance(tracer, &to_sphere, 4000, 8);
+                    assert!(
+                        (mean - 0.5).abs() < 5.0 * se + 1e-3,
+                        "segment: the scene hides its emitters from the camera ray only: the \
+                         sky still lights the grey sphere, which sends back 0.5 at max_depth \
+                         {max_depth}; yours averaged {mean:.4} ± {se:.4}"
+                    );
+                }
+            });
+        }
+    }
+
+    #[test]
     fn exercise_segment_shares_a_sphere_light_between_its_two_samples() {
         // A matte floor of albedo 0.5 under a sphere light of radius 0.5 whose centre is 1.5
         // above the floor's origin: the origin receives E = π L (R/d)² and reflects
@@ -1009,6 +1133,72 @@ mod tests {
                 sampler.drawn()
             );
         });
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_picks_among_several_lights() {
+        // Two sphere lights of different size and radiance: the pick takes a number and each
+        // light is found with its own share.
+        use common::geometry::{Parallelogram, Shape, Sphere};
+        use common::scene::{Camera, CameraFrame, FilmSettings, SceneBuilder};
+        let floor =
+            Parallelogram::new(Vec3::new(-10.0, 0.0, -10.0), 20.0 * Vec3::Z, 20.0 * Vec3::X);
+        let lights = [
+            (Vec3::new(0.0, 1.5, 0.0), 0.5, 1.0),
+            (Vec3::new(1.2, 1.0, -0.8), 0.25, 3.0),
+        ];
+        let builder = SceneBuilder::new().shape(
+            Shape::Parallelogram(floor),
+            Smooth::diffuse(Vec3::splat(0.5)),
+        );
+        let scene = lights
+            .iter()
+            .fold(builder, |b, &(center, radius, radiance)| {
+                b.area_light(
+                    Shape::Sphere(Sphere::new(center, radius)),
+                    Smooth::diffuse(Vec3::ZERO),
+                    Vec3::splat(radiance),
+                )
+            })
+            .build(
+                Camera::pinhole(
+                    CameraFrame::look_at(Vec3::new(2.0, 1.0, 0.0), Vec3::ZERO, Vec3::Y).unwrap(),
+                    40.0,
+                ),
+                FilmSettings::new(16, 16),
+                2,
+            );
+        let world = MotionScene::still(scene);
+        let each = lights.map(|(center, radius, radiance)| {
+            let d = center.length();
+            0.5 * f64::from(sphere_irradiance(Vec3::splat(radiance), radius, d, center.y / d).y)
+                / PI64
+        });
+        let reference = each[0] + each[1];
+        let (mean, se, _) = light_samples_at_origin(&world, MisHeuristic::None, 8000);
+        let tolerance = 5.0 * se + 1e-3 * reference;
+        if (mean - reference).abs() >= tolerance {
+            let why = match each
+                .iter()
+                .position(|&share| (mean - 2.0 * share).abs() < tolerance)
+            {
+                Some(i) => format!(
+                    "that is twice light {}'s share and nothing of the other's: only one light \
+                     was ever picked (with several lights to pick from, the pick takes the \
+                     sampler's next number)",
+                    i + 1
+                ),
+                None => "each light is picked with its probability, and its sample's density \
+                         holds that probability"
+                    .to_string(),
+            };
+            panic!(
+                "light_sample: a floor under two sphere lights should get {reference:.5} (their \
+                 shares {:.5} and {:.5}) from the light samples alone; yours averaged \
+                 {mean:.5} ± {se:.5}: {why}",
+                each[0], each[1]
+            );
+        }
     }
 
     #[test]

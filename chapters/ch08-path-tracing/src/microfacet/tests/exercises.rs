@@ -135,12 +135,16 @@ fn metals() -> Vec<RoughConductor> {
     .collect()
 }
 
+/// Within a relative 1e-4; an infinity or a NaN is close to nothing (an infinite tolerance
+/// would take anything).
 fn close(a: f32, b: f32) -> bool {
-    (a - b).abs() <= 1e-4 * a.abs().max(b.abs()).max(1e-6)
+    a.is_finite() && b.is_finite() && (a - b).abs() <= 1e-4 * a.abs().max(b.abs()).max(1e-6)
 }
 
 fn close3(a: Vec3, b: Vec3) -> bool {
-    (a - b).abs().max_element() <= 1e-4 * a.abs().max(b.abs()).max_element().max(1e-6)
+    a.is_finite()
+        && b.is_finite()
+        && (a - b).abs().max_element() <= 1e-4 * a.abs().max(b.abs()).max_element().max(1e-6)
 }
 
 /// What the sample at `u` must be, and the words for what it is instead.
@@ -188,6 +192,8 @@ fn check_sample(metal: &RoughConductor, wo: Vec3, u: Vec2) -> Result<(), String>
         } else if close(s.pdf, d.normal_pdf(m) / (4.0 * wi.dot(m))) {
             "that is the density of all the normals, D(m) cos θ_m; the visible ones have \
              D_w(m) = G1(wo, m) (wo·m) D(m) / cos θ_o"
+        } else if !s.pdf.is_finite() {
+            "a density is a finite number; the density of wi is D_w(m) / (4 wi·m)"
         } else {
             "the density of wi is D_w(m) / (4 wi·m)"
         };
