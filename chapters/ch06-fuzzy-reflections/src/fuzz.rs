@@ -254,11 +254,35 @@ mod tests {
                     .filter(|&u| sample_lobe_around(center, exponent, u).dot(center) >= c)
                     .count() as f32;
                 let sigma = (n as f32 * p * (1.0 - p)).sqrt();
-                assert!(
-                    (hits - n as f32 * p).abs() < 5.0 * sigma,
+                if (hits - n as f32 * p).abs() < 5.0 * sigma {
+                    continue;
+                }
+                // The picture: each direction as (its turn about the centre, cos^(n+1) α),
+                // which the cos^n lobe spreads evenly over the unit square.
+                let (a, b) = center.any_orthonormal_pair();
+                let points: Vec<Vec2> = uniforms(n)
+                    .map(|u| {
+                        let d = sample_lobe_around(center, exponent, u);
+                        let turn = d.dot(b).atan2(d.dot(a)).rem_euclid(std::f32::consts::TAU)
+                            / std::f32::consts::TAU;
+                        Vec2::new(turn, d.dot(center).max(0.0).powf(exponent + 1.0))
+                    })
+                    .collect();
+                let picture = common::test_support::not_uniform(
+                    "ch06-lobe-around",
+                    "sample_lobe_around",
+                    "lobe, drawn as (turn about the centre, cos^(n+1) α)",
+                    0.0,
+                    &points,
+                    &|_| 1.0,
+                    [Vec2::ZERO, Vec2::ONE],
+                );
+                let picture = picture.split("; see ").nth(1).unwrap_or("");
+                panic!(
                     "sample_lobe_around: with exponent {exponent}, {:.1} % of the directions \
                      should lie within {:.1}° of the centre, and {:.1} % of yours do: the \
-                     spread does not follow the cos^n lobe of that exponent",
+                     spread does not follow the cos^n lobe of that exponent; see {picture}, \
+                     where the lobe's directions spread evenly",
                     100.0 * p,
                     c.acos().to_degrees(),
                     100.0 * hits / n as f32
@@ -361,9 +385,35 @@ mod tests {
                 } else {
                     "the disc point should be uniform by area over the disc of the given radius"
                 };
+                // The picture: each direction's point on the disc one unit along the centre,
+                // in units of the radius, where a uniform point spreads evenly.
+                let points: Vec<Vec2> = samples
+                    .iter()
+                    .map(|&(_, d)| {
+                        let on_disc = d / d.dot(center) - center;
+                        Vec2::new(on_disc.dot(a), on_disc.dot(b)) / radius
+                    })
+                    .collect();
+                let picture = common::test_support::not_uniform(
+                    "ch06-disc-fuzz",
+                    "sample_disc_perturbation",
+                    "disc",
+                    0.0,
+                    &points,
+                    &|q| {
+                        if q.length() <= 1.0 {
+                            std::f64::consts::FRAC_1_PI
+                        } else {
+                            0.0
+                        }
+                    },
+                    [Vec2::splat(-1.0), Vec2::ONE],
+                );
+                let picture = picture.split("; see ").nth(1).unwrap_or("");
                 return Some(format!(
                     "{:.1} % of the directions should lie within {s} of the disc's radius from \
-                     the centre, and {:.1} % of yours do: {why}",
+                     the centre, and {:.1} % of yours do: {why}; see {picture}, the disc points \
+                     in units of the radius",
                     100.0 * p,
                     100.0 * share
                 ));

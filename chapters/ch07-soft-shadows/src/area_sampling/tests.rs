@@ -122,11 +122,25 @@ fn exercise_parallelogram_light_point_is_uniform() {
             if inside { 1.0 / quad.area() } else { 0.0 }
         },
     );
-    assert!(
-        passes(&result),
-        "sample_parallelogram_light: the points are not uniform over the parallelogram \
-         (chi-square test: {result:?})"
-    );
+    if !passes(&result) {
+        // The picture: the points in the parallelogram's own edge coordinates, where uniform
+        // by area is uniform over the unit square.
+        let points: Vec<Vec2> = uniform_points(20_000, 1)
+            .into_iter()
+            .filter_map(|u| sample_parallelogram_light(&quad, u))
+            .map(|s| quad_coordinates(&quad, s.p))
+            .collect();
+        let message = common::test_support::not_uniform(
+            "ch07-parallelogram-light-point",
+            "sample_parallelogram_light",
+            "parallelogram, drawn in its edge coordinates (along e1, along e2)",
+            result.p_value,
+            &points,
+            &|_| 1.0,
+            [Vec2::ZERO, Vec2::ONE],
+        );
+        panic!("{message}");
+    }
 }
 
 #[test]
@@ -248,11 +262,35 @@ fn exercise_disc_light_point_stretches_over_an_ellipse() {
 #[test]
 fn exercise_disc_light_point_is_uniform() {
     let result = chi2_on_disc(DiscWarp::Polar, 4);
-    assert!(
-        passes(&result),
-        "sample_disc_light_polar: the points are not uniform over the disc (chi-square test: \
-         {result:?})"
-    );
+    if !passes(&result) {
+        // The picture: the points in the disc's own coordinates, as fractions of its radius.
+        let disc = slanted_disc();
+        let r = disc.radii().x;
+        let points: Vec<Vec2> = uniform_points(20_000, 4)
+            .into_iter()
+            .filter_map(|u| sample_disc_light_polar(&disc, u))
+            .map(|s| {
+                let offset = s.p - disc.center();
+                Vec2::new(offset.dot(disc.tangent()), offset.dot(disc.bitangent())) / r
+            })
+            .collect();
+        let message = common::test_support::not_uniform(
+            "ch07-disc-light-point",
+            "sample_disc_light_polar",
+            "disc, drawn along its tangent and bitangent in units of its radius",
+            result.p_value,
+            &points,
+            &|q| {
+                if q.length() <= 1.0 {
+                    std::f64::consts::FRAC_1_PI
+                } else {
+                    0.0
+                }
+            },
+            [Vec2::splat(-1.0), Vec2::ONE],
+        );
+        panic!("{message}");
+    }
 }
 
 #[test]
