@@ -69,8 +69,10 @@ pub struct SphereCone {
 }
 
 // ANCHOR: sphere_cone
-/// The cone `sphere` covers seen from `x`, or `None` when `x` is on or inside the sphere (or
-/// the sphere has no radius, or is too far to compute with), where no cone describes it.
+/// The cone `sphere` covers seen from `x` ([`SphereCone`]: its axis, the unit direction from `x`
+/// to the centre, the distance `d` to the centre, `sin θ_max`, `sin² θ_max` and
+/// `1 - cos θ_max`), or `None` when `x` is on or inside the sphere (or the sphere has no
+/// radius, or is too far to compute with), where no cone describes it.
 pub fn sphere_cone(sphere: &Sphere, x: Vec3) -> Option<SphereCone> {
     // BEGIN SOLUTION
     let r = sphere.radius;

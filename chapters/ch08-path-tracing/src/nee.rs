@@ -21,7 +21,7 @@ use glam::Vec3;
 ///
 /// A delta light (`light_pdf` infinite: a point light, where `emitted` is already `I / d²`,
 /// picked with probability `pick_probability`) cannot be found by the BSDF. Anything with no
-/// chance, or carrying nothing, is 0, never NaN.
+/// chance (a density of 0, or NaN), or carrying nothing, is 0, never NaN.
 #[inline]
 pub fn light_sample_contribution(
     emitted: Vec3,
