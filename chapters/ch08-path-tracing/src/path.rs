@@ -199,7 +199,8 @@ impl PathTracer<'_> {
         // unit), so `-ray.dir` needs no normalising; every test render checks it.
         debug_assert!(
             (ray.dir.length_squared() - 1.0).abs() < 1e-4,
-            "a segment's ray of length {}",
+            "a segment's ray of length {}: the ray a segment starts from (the camera's, or the \
+             one extend_path chose from the BSDF's sample) must have a unit direction",
             ray.dir.length()
         );
         // BEGIN SOLUTION
