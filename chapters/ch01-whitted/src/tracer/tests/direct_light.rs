@@ -131,13 +131,19 @@ fn black_but_lit(world: &Recording, asked: &[Asked]) -> String {
                 (cos(theta) > 0) and nothing is in the way: such a light is counted"
             .to_string();
     };
-    if world.scene.geometry.occluded(ray) {
+    if !super::goes_somewhere(ray) {
+        format!(
+            "it is black, and its shadow ray goes nowhere (from {} along {}): a shadow ray goes \
+             from the point towards the light, hit.spawn_ray_to(light.position, ray.time)",
+            ray.origin, ray.dir
+        )
+    } else if world.scene.geometry.occluded(ray) {
         "it is black, but the light shines on this point and nothing is in the way: its shadow \
          ray was blocked by something it should not see (the surface itself, or what lies \
          beyond the light)"
             .to_string()
     } else {
-        "it is black, although its shadow ray reached the light (world.occluded answered \
+        "it is black, although nothing blocked its shadow ray (world.occluded answered \
          false): occluded is true when something is in the way, and a light whose shadow ray is \
          not blocked counts"
             .to_string()
