@@ -257,6 +257,7 @@ pub fn is_student_edition(root: &Path, exercises: &[Exercise]) -> bool {
 
 /// Whether the workspace at `root` is a student edition, by its own list: the workbook's own
 /// tests that measure or guard the solutions have nothing to look at there.
+#[cfg(test)]
 pub fn holds_no_solutions(root: &Path) -> bool {
     load(root).is_ok_and(|exercises| is_student_edition(root, &exercises))
 }
