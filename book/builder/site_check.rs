@@ -1307,6 +1307,12 @@ mod tests {
         let our_config =
             std::fs::read_to_string(crate::workspace::root().join("book/book.toml")).unwrap();
         std::fs::write(book.join("book.toml"), our_config).unwrap();
+        // The other stylesheet the configuration names.
+        std::fs::copy(
+            crate::workspace::root().join("book/theme/lab-report.css"),
+            book.join("theme/lab-report.css"),
+        )
+        .unwrap();
         // A workspace without chapters or exercises, for the exercise preprocessor.
         std::fs::write(book.join("exercises.toml"), "").unwrap();
         for dir in ["common", "chapters"] {
