@@ -62,11 +62,16 @@ pub fn build(
         replace_dir(&out_dir)?;
         let (done, total) = done_up_to(chapter, exercises, statuses);
         let rendered = done == total && {
-            println!("Your figures of {chapter} -> {}", out_dir.display());
+            print!("Your figures of {chapter} -> {} ... ", out_dir.display());
+            let _ = std::io::Write::flush(&mut std::io::stdout());
+            let started = std::time::Instant::now();
             match render_figures(root, package, &out_dir, quality) {
-                Ok(()) => true,
+                Ok(()) => {
+                    println!("written in {:.0} s", started.elapsed().as_secs_f64());
+                    true
+                }
                 Err(error) => {
-                    println!("  {error:#}\n  The page shows the reference figures.");
+                    println!("failed\n  {error:#}\n  The page shows the reference figures.");
                     replace_dir(&out_dir)?;
                     false
                 }

@@ -79,6 +79,14 @@ pub fn run(root: &Path, screenshots: &Path) -> Result<()> {
     if !output.status.success() {
         bail!("`progress --site` failed in the student edition:\n{printed}");
     }
+    // What the student would have seen, for the log: where the time went, what is done.
+    for line in printed.lines().filter(|line| {
+        line.starts_with("Checking the exercises")
+            || line.starts_with("Your figures of")
+            || line.contains("exercises done")
+    }) {
+        println!("  {line}");
+    }
     for (_, id) in FINISHED {
         if !printed.contains(&format!("Your figures of {id} ->")) {
             bail!("`progress --site` did not render the student's figures of {id}:\n{printed}");

@@ -82,7 +82,9 @@ pub fn statuses(root: &Path, exercises: &[Exercise]) -> Result<Vec<Status>> {
         }
     }
     for package in package_order {
-        println!("Checking the exercises of {package} ...");
+        print!("Checking the exercises of {package} ... ");
+        let _ = std::io::Write::flush(&mut std::io::stdout());
+        let started = std::time::Instant::now();
         let (_, output) = run(
             root,
             &[
@@ -98,6 +100,11 @@ pub fn statuses(root: &Path, exercises: &[Exercise]) -> Result<Vec<Status>> {
         )?;
         let results = test_results(&output);
         let compiled = output.contains("running ");
+        println!(
+            "{} in {:.0} s",
+            if compiled { "ran" } else { "does not compile" },
+            started.elapsed().as_secs_f64()
+        );
         for &index in &by_package[package] {
             let (_, filter) = standard_check(&exercises[index].check).expect("standard");
             let picked = picked_by(&results, filter);
