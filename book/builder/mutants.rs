@@ -198,27 +198,33 @@ pub enum Verdict {
     Hang,
 }
 
-/// The words of the workbook's own panics that a wrong answer must never cause, whatever its
-/// place (the standard library's messages for indexing, arithmetic and unwrapping, and a stub).
-const CRASH_WORDS: &[&str] = &[
+/// How the workbook's own panics begin that a wrong answer must never cause, whatever their
+/// place: the standard library's messages for indexing, arithmetic, unwrapping and bare
+/// assertions, and a stub's. A check that caught such a panic and explains it quotes it after
+/// words of its own, so only a message that *begins* so is a crash.
+const CRASH_STARTS: &[&str] = &[
     "index out of bounds",
-    "with overflow",
+    "attempt to ",
     "called `Option::unwrap()` on a `None` value",
     "called `Result::unwrap()` on an `Err` value",
     "not yet implemented",
-    "(not written yet)",
+    "this check needs ",
+    "this program needs ",
     "slice index starts at",
     "range end index",
     "range start index",
-    "out of range for slice",
-    "divide by zero",
-    "with a divisor of zero",
-    "capacity overflow",
     "byte index",
+    "capacity overflow",
     "already borrowed",
     "already mutably borrowed",
-    "has overflowed its stack",
+    "assertion failed",
 ];
+
+/// Whether `message` is a bare `assert_eq!` or `assert_ne!`: one with words of its own reads
+/// "assertion `left == right` failed: <words>".
+fn bare_comparison(message: &str) -> bool {
+    message.starts_with("assertion `") && !message.contains("failed: ")
+}
 
 /// One panic a run printed: where (`file:line:column` as the compiler wrote it) and what.
 #[derive(Debug, PartialEq, Eq)]
@@ -278,9 +284,9 @@ fn verdict(passed: bool, output: &str, own: &(PathBuf, std::ops::Range<usize>)) 
         }
         let in_common =
             panic.file.starts_with("common/src/") && !panic.file.contains("test_support");
-        let crash_words = CRASH_WORDS
-            .iter()
-            .any(|words| panic.message.contains(words));
+        let message = panic.message.trim_start();
+        let crash_words =
+            CRASH_STARTS.iter().any(|start| message.starts_with(start)) || bare_comparison(message);
         if in_common || crash_words {
             return Verdict::Crash(format!(
                 "panicked at {}:{}: {}",
@@ -588,6 +594,16 @@ mod tests {
         assert!(matches!(verdict(false, common, &own), Verdict::Crash(_)));
         let stub = "thread 'x' (1) panicked at chapters/c/src/z.rs:4:5:\nthis check needs ch01-z (not written yet)\n";
         assert!(matches!(verdict(false, stub, &own), Verdict::Crash(_)));
+        let explained = "thread 'x' (1) panicked at chapters/c/src/a/tests.rs:158:5:\n\
+                         strata_grid(2) panicked (attempt to subtract with overflow): 0 strata\n";
+        assert_eq!(verdict(false, explained, &own), Verdict::Refused);
+        let bare =
+            "thread 'x' (1) panicked at chapters/c/src/b.rs:9:5:\nassertion failed: w > 0.0\n";
+        assert!(matches!(verdict(false, bare, &own), Verdict::Crash(_)));
+        let bare_eq = "thread 'x' (1) panicked at chapters/c/src/b.rs:9:5:\nassertion `left == right` failed\n  left: 1\n";
+        assert!(matches!(verdict(false, bare_eq, &own), Verdict::Crash(_)));
+        let worded = "thread 'x' (1) panicked at chapters/c/src/b.rs:9:5:\nassertion `left == right` failed: the fold moved it\n";
+        assert_eq!(verdict(false, worded, &own), Verdict::Refused);
         assert_eq!(verdict(true, "", &own), Verdict::Survived);
         let died = "thread 'x' has overflowed its stack\nfatal runtime error: stack overflow\n";
         assert!(matches!(verdict(false, died, &own), Verdict::Crash(_)));
