@@ -6,10 +6,10 @@
 //! a panic of the workbook's code (an index out of bounds, an overflow, an `unwrap` of nothing,
 //! another exercise's stub, anything inside `common`), never by hanging, never by aborting.
 //!
-//! For each exercise this derives up to N mutants of its solution, each one small slip a
-//! student could make (an operator swapped, a square root or a normalisation left out, a
-//! `max` for a `min`, a constant that became zero, a sign dropped), puts them into a copy of
-//! the workspace in rounds in which no check runs the code of another mutant of its round,
+//! For each exercise this derives up to N mutants of its solution, each one slip a student
+//! could make (an answer that gives up and returns the type's default, an operator swapped, a
+//! square root or a normalisation left out, a `max` for a `min`, a constant that became zero,
+//! a sign dropped), puts them into a copy of the workspace in rounds in which no check runs the code of another mutant of its round,
 //! compiles the round once, and runs each mutant's check alone, with a time limit. A mutant
 //! that does not compile is set aside; one that passes its check "survived" (listed, since a
 //! slip can be harmless, but not an error). The sweep fails on every crash and hang, printing
@@ -106,17 +106,21 @@ pub fn mutants(solution: &[String], indent: &str, most: usize) -> Vec<Mutant> {
         }
         depth += 1;
     }
-    chosen
-        .into_iter()
-        .map(|(number, at, from, to)| {
-            let mut changed: Vec<String> = lines.iter().map(|line| (*line).to_owned()).collect();
-            changed[*number].replace_range(*at..*at + from.len(), to);
-            Mutant {
-                what: format!("line {}: `{}` -> `{}`", number + 1, from.trim(), to.trim()),
-                code: changed.join("\n"),
-            }
-        })
-        .collect()
+    let slips = chosen.into_iter().map(|(number, at, from, to)| {
+        let mut changed: Vec<String> = lines.iter().map(|line| (*line).to_owned()).collect();
+        changed[*number].replace_range(*at..*at + from.len(), to);
+        Mutant {
+            what: format!("line {}: `{}` -> `{}`", number + 1, from.trim(), to.trim()),
+            code: changed.join("\n"),
+        }
+    });
+    // First, the answer that gives up: nothing computed, the type's default (zero, no hit, an
+    // empty list), as a student who returns early would.
+    let gives_up = Mutant {
+        what: "the whole answer: `Default::default()`".to_owned(),
+        code: "Default::default()".to_owned(),
+    };
+    std::iter::once(gives_up).chain(slips).take(most).collect()
 }
 
 /// `line` up to a `//` comment, with string and character literals blanked out (so that no
@@ -557,6 +561,7 @@ mod tests {
         assert_eq!(
             whats,
             [
+                "the whole answer: `Default::default()`",
                 "line 3: `+` -> `-`",
                 "line 1: `*` -> `/`",
                 "line 1: `.sqrt()` -> ``",
@@ -564,8 +569,9 @@ mod tests {
                 "line 3: `1.5` -> `0.0`",
             ]
         );
+        assert_eq!(all[0].code, "Default::default()");
         assert_eq!(
-            all[0].code,
+            all[1].code,
             "let r = u.sqrt() * 2.0; // not this * one\nlet s = \"a + b\";\nVec2::new(r - 1.5, -v.y)"
         );
         assert_eq!(mutants(&solution, "    ", 2).len(), 2);

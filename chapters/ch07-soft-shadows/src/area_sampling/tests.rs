@@ -198,7 +198,8 @@ fn exercise_disc_light_point_follows_the_lectures_parametrisation() {
         .into_iter()
         .chain(uniform_points(100, 3))
     {
-        let s = sample_disc_light_polar(&disc, u).unwrap();
+        let s = sample_disc_light_polar(&disc, u)
+            .expect("sample_disc_light_polar: this disc has an area, so it gives a sample");
         let q = radius * sample_uniform_disc_polar(u);
         let expected = disc.point_at(q.x, q.y);
         if (s.p - expected).length() <= 1e-5 * radius.max(1.0) {

@@ -250,7 +250,10 @@ fn exercise_sample_sphere_solid_angle_carries_both_densities() {
     let cone = sphere_cone(&sphere, x).unwrap();
     let solid_angle = TAU * cone.one_minus_cos_theta_max;
     for u in uniform_points(1000, 3) {
-        let s = sample_sphere_solid_angle(&sphere, x, u).unwrap();
+        let s = sample_sphere_solid_angle(&sphere, x, u).expect(
+            "sample_sphere_solid_angle: a receiver outside the sphere sees it in a cone of \
+             directions, so every ξ gives a sample",
+        );
         let Some(pdf_solid_angle) = s.pdf_solid_angle else {
             panic!(
                 "sample_sphere_solid_angle: a point chosen by its direction carries its density \
