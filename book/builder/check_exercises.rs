@@ -617,14 +617,18 @@ pub fn separate_crates_config(workspace_incremental: bool) -> String {
     format!(
         "# Written by `book check-exercises` for its own build of the student edition: the \
          chapters\n\
-         # get names of their own in the shared build directory; `common` and the dependencies \
-         are\n\
+         # get names of their own in the shared build directory; `common`, `workbench` and the \
+         dependencies are\n\
          # shared with the workspace's build.\n\
          [profile.dev]\n\
          debug = false\n\
          incremental = true\n\
          \n\
          [profile.dev.package.common]\n\
+         debug = \"{WORKSPACE_DEV_DEBUG}\"\n\
+         incremental = {workspace_incremental}\n\
+         \n\
+         [profile.dev.package.workbench]\n\
          debug = \"{WORKSPACE_DEV_DEBUG}\"\n\
          incremental = {workspace_incremental}\n"
     )

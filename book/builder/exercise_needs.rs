@@ -95,7 +95,7 @@ pub fn prove(
         let text =
             std::fs::read_to_string(&path).with_context(|| format!("cannot read {LIST_PATH}"))?;
         let rewritten = write_needs(&text, &wrong)?;
-        common::output::write_text(&path, &rewritten)
+        workbench::output::write_text(&path, &rewritten)
             .with_context(|| format!("cannot write {LIST_PATH}"))?;
         println!(
             "Wrote the {} measured `needs` into {LIST_PATH}.",

@@ -191,7 +191,7 @@ const SOLUTION_CLOSE: &str = "</details>";
 /// (`let d2 = to_light.length_squared();` shows nothing away).
 fn known_solutions(workspace: &Path) -> Result<Vec<(String, String)>> {
     let mut elsewhere = std::collections::HashSet::new();
-    for dir in ["common", "chapters"] {
+    for dir in ["common", "workbench", "chapters"] {
         collect_code_outside_solutions(&workspace.join(dir), &mut elsewhere)?;
     }
     let mut known = Vec::new();

@@ -72,7 +72,7 @@ pub fn regenerate_all(figures_dir: &Path, quick: bool) -> Result<()> {
 /// Writes [`COST_TABLE`] from the chapters' folders under `figures_dir`.
 pub fn write_cost_table(figures_dir: &Path) -> Result<()> {
     let table = cost_table(figures_dir)?;
-    common::output::write_text(&figures_dir.join(COST_TABLE), &table)
+    workbench::output::write_text(&figures_dir.join(COST_TABLE), &table)
         .context("cannot write the table of figure times")
 }
 
@@ -89,7 +89,7 @@ fn cost_table(figures_dir: &Path) -> Result<String> {
     let mut total = 0.0;
     for (chapter, _) in CHAPTERS {
         let mut chapter_total = 0.0;
-        for cost in common::figure_set::read_times(&figures_dir.join(chapter))? {
+        for cost in workbench::figure_set::read_times(&figures_dir.join(chapter))? {
             let rmse = cost
                 .rmse
                 .map(|rmse| format!("{rmse:.2e}"))
@@ -112,7 +112,7 @@ fn cost_table(figures_dir: &Path) -> Result<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use common::figure_set::TIMES_FILE;
+    use workbench::figure_set::TIMES_FILE;
 
     #[cfg(feature = "figures")]
     #[test]

@@ -286,8 +286,9 @@ fn verdict(passed: bool, output: &str, own: &(PathBuf, std::ops::Range<usize>)) 
         if in_own_code {
             continue; // the student's own code panicked: theirs to read
         }
-        let in_common =
-            panic.file.starts_with("common/src/") && !panic.file.contains("test_support");
+        let in_common = (panic.file.starts_with("common/src/")
+            || panic.file.starts_with("workbench/src/"))
+            && !panic.file.contains("test_support");
         let message = panic.message.trim_start();
         let crash_words =
             CRASH_STARTS.iter().any(|start| message.starts_with(start)) || bare_comparison(message);

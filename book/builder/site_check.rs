@@ -1315,7 +1315,7 @@ mod tests {
         .unwrap();
         // A workspace without chapters or exercises, for the exercise preprocessor.
         std::fs::write(book.join("exercises.toml"), "").unwrap();
-        for dir in ["common", "chapters"] {
+        for dir in ["common", "workbench", "chapters"] {
             std::fs::create_dir(workspace.path().join(dir)).unwrap();
         }
         std::fs::create_dir(book.join("src")).unwrap();

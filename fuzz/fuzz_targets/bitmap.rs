@@ -6,7 +6,7 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|bytes: &[u8]| {
     for raw in [false, true] {
-        if let Ok(image) = common::scene_file::parse_bitmap(bytes, raw) {
+        if let Ok(image) = workbench::scene_file::parse_bitmap(bytes, raw) {
             assert_eq!(image.pixels.len(), (image.width * image.height) as usize);
         }
     }

@@ -4,7 +4,7 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|text: &str| {
-    if let Ok(mesh) = common::scene_file::parse_obj(text) {
+    if let Ok(mesh) = workbench::scene_file::parse_obj(text) {
         mesh.validate().expect("a mesh the reader returns is valid");
     }
 });

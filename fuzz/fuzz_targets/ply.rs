@@ -4,7 +4,7 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|bytes: &[u8]| {
-    if let Ok(mesh) = common::scene_file::parse_ply(bytes) {
+    if let Ok(mesh) = workbench::scene_file::parse_ply(bytes) {
         mesh.validate().expect("a mesh the reader returns is valid");
         assert!(mesh.triangles().all(|t| t.p.iter().all(|p| p.is_finite())));
     }

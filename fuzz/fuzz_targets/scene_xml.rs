@@ -8,5 +8,5 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|text: &str| {
     let file = Path::new("/nonexistent/fuzz/scene.xml");
-    let _ = common::scene_file::parse_scene(text, file, &[]);
+    let _ = workbench::scene_file::parse_scene(text, file, &[]);
 });

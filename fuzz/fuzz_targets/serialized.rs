@@ -11,7 +11,7 @@ use flate2::write::ZlibEncoder;
 use libfuzzer_sys::fuzz_target;
 
 fn check(file: &[u8], shape_index: u32) {
-    if let Ok(mesh) = common::scene_file::parse_serialized(file, shape_index) {
+    if let Ok(mesh) = workbench::scene_file::parse_serialized(file, shape_index) {
         mesh.validate().expect("a mesh the reader returns is valid");
         assert!(mesh.triangles().all(|t| t.p.iter().all(|p| p.is_finite())));
     }

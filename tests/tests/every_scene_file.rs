@@ -13,7 +13,7 @@ fn shipped_scene_files() -> Vec<PathBuf> {
         .expect("the chapters directory")
         .map(|entry| entry.expect("an entry").path().join("scenes"))
         .collect();
-    dirs.push(root.join("common/tests/scenes"));
+    dirs.push(root.join("workbench/tests/scenes"));
     dirs.push(root.join("tests/scenes"));
     let mut files: Vec<PathBuf> = dirs
         .iter()

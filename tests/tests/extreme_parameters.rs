@@ -386,7 +386,7 @@ fn the_path_tracer_binary_counts_no_non_finite_samples_at_extreme_settings() {
         let json: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
         assert_eq!(json["nonfinite_samples"], 0, "{extra:?}: {json}");
-        let image = common::output::read_image(&out).unwrap();
+        let image = workbench::output::read_image(&out).unwrap();
         assert!(image.pixels.iter().all(|p| p.is_finite()), "{extra:?}");
     }
 }

@@ -9,10 +9,12 @@
 
 use common::film::{Film, PixelBoxFilter, PixelRect};
 use common::image::Image;
-use common::metrics::{Technique, plot_error_vs_time, run_convergence, write_convergence_csv};
 use common::render::{RenderSettings, SampleCounters, render};
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2, Vec3};
+use workbench::convergence::{
+    Technique, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
 
 const SAMPLES: u64 = 100_000_000;
 const PER_TILE: u64 = 1_000_000;

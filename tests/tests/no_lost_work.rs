@@ -137,7 +137,7 @@ fn interrupt_and_check(chapter: &str) {
         );
 
         // Complete: the image is exactly the render asked for that many samples.
-        let partial = common::output::read_image(Path::new(out)).unwrap();
+        let partial = workbench::output::read_image(Path::new(out)).unwrap();
         let again = dir.path().join("again.pfm");
         let again_stats = dir.path().join("again.json");
         let done = run_chapter(
@@ -154,7 +154,7 @@ fn interrupt_and_check(chapter: &str) {
             "{}",
             String::from_utf8_lossy(&done.stderr)
         );
-        let full = common::output::read_image(&again).unwrap();
+        let full = workbench::output::read_image(&again).unwrap();
         assert_eq!((partial.width, partial.height), (16, 12));
         assert!(partial.pixels.iter().all(|p| p.is_finite()));
         assert!(

@@ -9,10 +9,10 @@
 
 use crate::{CAPABILITIES, PixelPattern, render};
 use common::image::Image;
-use common::metrics::{AGREEMENT_SPP, AgreementScene, AgreementSet, MITSUBA_VARIANT};
 use common::render::RenderSettings;
-use common::scene_file::load_scene_file;
 use std::path::Path;
+use workbench::agreement::{AGREEMENT_SPP, AgreementScene, AgreementSet, MITSUBA_VARIANT};
+use workbench::scene_file::load_scene_file;
 
 /// The chapter's scene files compared with Mitsuba 3, with what each one checks.
 pub const AGREEMENT: AgreementSet = AgreementSet {

@@ -11,18 +11,18 @@ use crate::optics::fresnel_dielectric;
 use crate::pixel::{CentreSampler, GridSampler};
 use crate::scenes::Builtin;
 use crate::{PixelPattern, render, render_with};
-use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::image::Image;
-use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
-};
-use common::output::figures::{
-    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
-};
-use common::output::write_text;
 use common::render::RenderSettings;
 use glam::Vec2;
 use std::path::Path;
+use workbench::convergence::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level, RenderQuality};
+use workbench::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
+};
+use workbench::output::write_text;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
 struct Quality {
@@ -421,7 +421,7 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     write_convergence_csv(&out.join("convergence.csv"), &records)?;
     write_text(
         &out.join("convergence.md"),
-        &common::metrics::convergence_markdown(&records, "camera rays per pixel"),
+        &workbench::convergence::convergence_markdown(&records, "camera rays per pixel"),
     )?;
     plot_error_vs_time(
         &out.join("convergence.png"),
@@ -461,7 +461,7 @@ fn bvh_cost(out: &Path, level: Level) -> anyhow::Result<()> {
             )
         })
         .collect();
-    let mut spot = common::scene_file::parse_ply(SPOT_PLY)
+    let mut spot = workbench::scene_file::parse_ply(SPOT_PLY)
         .map_err(|error| anyhow::anyhow!("the built-in Spot mesh: {error}"))?;
     for split in 0..=splits {
         if split > 0 {
@@ -661,11 +661,11 @@ mod tests {
 
     #[test]
     fn the_built_in_spot_is_the_whole_closed_model() {
-        let spot = common::scene_file::parse_ply(SPOT_PLY).unwrap();
+        let spot = workbench::scene_file::parse_ply(SPOT_PLY).unwrap();
         assert_eq!((spot.positions.len(), spot.indices.len()), (2_930, 5_856));
         // Closed: every edge lies between exactly two triangles, so rays from outside meet
         // its surface as they would meet a solid.
-        let uses = common::test_support::mesh_files::edge_uses(&spot);
+        let uses = spot.edge_uses();
         assert!(uses.values().all(|&count| count == 2));
     }
 

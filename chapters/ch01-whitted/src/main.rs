@@ -2,9 +2,9 @@
 
 use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch01_whitted::{CAPABILITIES, PixelPattern, figures, render};
-use common::cli::{RenderArgs, read_scene_file};
 use common::render::Budget;
 use std::process::ExitCode;
+use workbench::cli::{RenderArgs, read_scene_file};
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -21,7 +21,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = common::chapter_binary!("Render a scene to an image.");
+    let binary = workbench::chapter_binary!("Render a scene to an image.");
     binary.run(run_render, figures::write_all)
 }
 

@@ -1,9 +1,9 @@
 //! The binary refuses bad input with a message and a non-zero exit, never a panic, and
 //! writes nothing then.
 
-use common::test_support::run_binary;
 use std::path::Path;
 use std::process::Output;
+use workbench::test_support::run_binary;
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch01-whitted");
 
@@ -12,7 +12,7 @@ fn run(args: &[&str]) -> Output {
 }
 
 fn assert_refused(args: &[&str], expected: &str) {
-    common::test_support::assert_refused(BINARY, args, expected);
+    workbench::test_support::assert_refused(BINARY, args, expected);
 }
 
 #[test]
@@ -110,7 +110,7 @@ fn a_small_render_writes_the_image_and_its_statistics() {
             "{}",
             String::from_utf8_lossy(&out.stderr)
         );
-        let decoded = common::output::read_image(&image).unwrap();
+        let decoded = workbench::output::read_image(&image).unwrap();
         assert_eq!((decoded.width, decoded.height), (16, 12));
         let json: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();

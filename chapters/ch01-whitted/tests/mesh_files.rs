@@ -7,8 +7,8 @@ use std::path::Path;
 use ch01_whitted::{PixelPattern, render};
 use common::image::Image;
 use common::render::RenderSettings;
-use common::scene_file::{load_obj, load_scene_file};
-use common::test_support::mesh_files::{
+use workbench::scene_file::{load_obj, load_scene_file};
+use workbench::test_support::mesh_files::{
     PlyEncoding, PlyStyle, SerializedStyle, write_ply, write_serialized,
 };
 

@@ -4,9 +4,9 @@ use ch01_whitted::scenes::Builtin;
 use ch01_whitted::{CAPABILITIES, PixelPattern, render};
 use common::render::RenderSettings;
 use common::scene::Scene;
-use common::scene_file::{load_scene_file, parse_scene};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use workbench::scene_file::{load_scene_file, parse_scene};
 
 fn scene_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -261,7 +261,8 @@ fn broken_scene_files_are_refused_by_the_binary() {
     let image = dir.path().join("img.png");
     let broken = dir.path().join("broken.xml");
     std::fs::write(&broken, "<scene version=\"3.0.0\">\n  <shape type=\"sphere\">\n    <float name=\"radius\" value=\"1.0x\"/>\n  </shape>\n</scene>\n").unwrap();
-    let area = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../common/tests/scenes/cornell.xml");
+    let area =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../workbench/tests/scenes/cornell.xml");
     let missing = dir.path().join("missing.xml");
     for (scene, expected) in [
         (broken.to_str().unwrap(), "broken.xml:3:"),

@@ -15,16 +15,16 @@ use crate::rng::{
     randu_plane_index, serial_chi2_3d, uniformity_chi2,
 };
 use crate::warps::{Domain, Warp, WarpPoint};
-use common::figure_set::{FigureSet, Level};
-use common::metrics::ConvergenceRecord;
-use common::output::figures::{histogram_vs_pdf, scatter_plot};
-use common::output::write_text;
 use common::sampler::unit_f32;
 use glam::{Vec2, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg32;
 use std::f32::consts::TAU;
 use std::path::Path;
+use workbench::convergence::ConvergenceRecord;
+use workbench::figure_set::{FigureSet, Level};
+use workbench::output::figures::{histogram_vs_pdf, scatter_plot};
+use workbench::output::write_text;
 
 /// Sample counts of the figures: the book's, or small ones for tests and CI.
 struct Quality {

@@ -5,9 +5,9 @@ use ch02_monte_carlo::figures;
 use ch02_monte_carlo::samples::samples_csv;
 use ch02_monte_carlo::warps::Warp;
 use clap::{Parser, Subcommand};
-use common::cli::{FiguresArgs, check_writable, report_error};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use workbench::cli::{FiguresArgs, check_writable, report_error};
 
 /// Chapter 02 of the workbook: Monte Carlo integration and stochastic sampling.
 #[derive(Parser, Debug)]
@@ -70,7 +70,7 @@ fn write_samples(args: &SamplesArgs) -> anyhow::Result<()> {
     let warp = Warp::from_name(&args.warp, args.exponent).map_err(anyhow::Error::msg)?;
     check_writable(&args.out)?;
     let csv = samples_csv(&warp, args.n as usize, args.seed);
-    common::output::write_text(&args.out, &csv)
+    workbench::output::write_text(&args.out, &csv)
         .with_context(|| format!("writing the samples of {}", warp.name()))?;
     Ok(())
 }

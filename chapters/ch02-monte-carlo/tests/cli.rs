@@ -1,7 +1,7 @@
 //! The binary: samples as CSV, and bad input refused with a message, never a panic.
 
-use common::test_support::run_binary;
 use std::process::Output;
+use workbench::test_support::run_binary;
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch02-monte-carlo");
 
@@ -10,7 +10,7 @@ fn run(args: &[&str]) -> Output {
 }
 
 fn assert_refused(args: &[&str], expected: &str) {
-    common::test_support::assert_refused(BINARY, args, expected);
+    workbench::test_support::assert_refused(BINARY, args, expected);
 }
 
 #[test]

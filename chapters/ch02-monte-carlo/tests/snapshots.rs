@@ -1,6 +1,6 @@
 //! Snapshot tests of the chapter's small outputs: warped samples and the chi-square table.
 //! Every number comes from fixed seeds; they are compared up to floating-point noise
-//! (`common::assert_close_snapshot!`), so a correct warp written differently still passes.
+//! (`workbench::assert_close_snapshot!`), so a correct warp written differently still passes.
 
 use ch02_monte_carlo::figures::chi2_rows;
 use ch02_monte_carlo::samples::samples_csv;
@@ -13,7 +13,7 @@ fn first_samples_of_every_warp() {
         let warp = Warp::from_name(name, None).unwrap();
         text.push_str(&format!("# {name}\n{}", samples_csv(&warp, 4, 1)));
     }
-    common::assert_close_snapshot!("first_samples_of_every_warp", text);
+    workbench::assert_close_snapshot!("first_samples_of_every_warp", text);
 }
 
 #[test]
@@ -29,5 +29,5 @@ fn chi_square_table_at_ten_thousand_samples() {
             )
         })
         .collect();
-    common::assert_close_snapshot!("chi_square_table_at_ten_thousand_samples", text);
+    workbench::assert_close_snapshot!("chi_square_table_at_ten_thousand_samples", text);
 }

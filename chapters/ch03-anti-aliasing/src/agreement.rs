@@ -6,13 +6,13 @@
 //! pixels (a tent of radius 1.5 and a Gaussian of standard deviation 1/4). Mitsuba's scalar
 //! variant tabulates a filter in steps, which widens it slightly; the stored renders come
 //! from its JIT variant, which evaluates the filter exactly as we do (see
-//! `common::metrics::MITSUBA_JIT_VARIANT`).
+//! `workbench::agreement::MITSUBA_JIT_VARIANT`).
 
 use crate::render_with;
 use crate::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AgreementScene, AgreementSet, MITSUBA_JIT_VARIANT};
 use std::path::Path;
+use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_JIT_VARIANT};
 
 /// The chapter's scene files compared with Mitsuba 3, with what each one checks.
 pub const AGREEMENT: AgreementSet = AgreementSet {
@@ -33,7 +33,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
     render: render_scene_file,
 };
 
-/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, with the pixel sampler
+/// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, with the pixel sampler
 /// and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
     let (scene, film, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;

@@ -7,8 +7,8 @@
 use crate::filters::{FilterKind, ReconstructionFilter, check_radius};
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
 use crate::scene_file::FilmSide;
-use common::cli::RenderArgs;
 use common::render::{Budget, RenderSettings};
+use workbench::cli::RenderArgs;
 
 /// The film side of a render, settled from the command line and the scene file.
 #[derive(Clone, Debug)]

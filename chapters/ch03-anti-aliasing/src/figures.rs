@@ -8,20 +8,20 @@ use crate::coverage::{HalfPlane, coverage_mse};
 use crate::filters::{FilterKind, ReconstructionFilter};
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
 use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH};
-use common::figure_set::{FigureSet, Level};
 use common::film::Filter;
 use common::image::Image;
-use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
-};
-use common::output::figures::{
-    Axes, Series, SeriesStyle, comparison_grid, crop, line_plot, scatter_plot,
-};
-use common::output::write_text;
 use common::render::RenderSettings;
 use common::scene::Scene;
 use glam::{UVec2, Vec2};
 use std::path::Path;
+use workbench::convergence::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level};
+use workbench::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, crop, line_plot, scatter_plot,
+};
+use workbench::output::write_text;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
 struct Quality {
@@ -382,7 +382,7 @@ fn convergence(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 /// What a doubling of samples and of time did to each sampler's RMSE in this run: the fitted
 /// slopes of log RMSE against log spp and against log seconds, and the factor `2^-slope` by
 /// which a doubling divides the error.
-fn convergence_table(records: &[common::metrics::ConvergenceRecord]) -> String {
+fn convergence_table(records: &[workbench::convergence::ConvergenceRecord]) -> String {
     let mut table = String::from(
         "| sampler | slope against spp | RMSE divided per doubling of spp | slope against time | RMSE divided per doubling of time | RMSE at the largest budget |\n\
          |---|---:|---:|---:|---:|---:|\n",
@@ -415,7 +415,7 @@ fn convergence_table(records: &[common::metrics::ConvergenceRecord]) -> String {
 /// stored renders of `tent-spheres.xml`: the comparison is sharp enough to reject a filter
 /// that is only slightly too wide, as Mitsuba's tabulated filter is (`mitsuba_wider_tent.md`).
 fn wider_tent(out: &Path) -> anyhow::Result<()> {
-    use common::metrics::ReferenceRenders;
+    use workbench::agreement::ReferenceRenders;
     let set = &crate::agreement::AGREEMENT;
     let scene_entry = set
         .scenes
@@ -434,7 +434,7 @@ fn wider_tent(out: &Path) -> anyhow::Result<()> {
         renders.agreement(&crate::render_with(&scene, &settings, &sampler, filter).image)
     };
     let (own, widened) = (measure(&film.filter), measure(&wider));
-    let verdict = |a: &common::metrics::Agreement| if a.holds() { "passes" } else { "fails" };
+    let verdict = |a: &workbench::agreement::Agreement| if a.holds() { "passes" } else { "fails" };
     let text = format!(
         "| tent radius | RMSE ours | RMSE Mitsuba | bias_blocks ours | bias_blocks Mitsuba | the check |\n\
          |---:|---:|---:|---:|---:|---|\n\
@@ -459,7 +459,7 @@ fn wider_tent(out: &Path) -> anyhow::Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use common::metrics::ConvergenceRecord;
+    use workbench::convergence::ConvergenceRecord;
 
     #[test]
     fn the_fitted_slope_of_a_power_law_is_its_exponent() {

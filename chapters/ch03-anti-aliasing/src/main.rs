@@ -5,8 +5,8 @@ use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch03_anti_aliasing::scene_file::read_with_film_side;
 use ch03_anti_aliasing::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch03_anti_aliasing::{CAPABILITIES, figures, render_with};
-use common::cli::RenderArgs;
 use std::process::ExitCode;
+use workbench::cli::RenderArgs;
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -20,7 +20,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = common::chapter_binary!("Render a scene to an image.");
+    let binary = workbench::chapter_binary!("Render a scene to an image.");
     binary.run(run_render, figures::write_all)
 }
 

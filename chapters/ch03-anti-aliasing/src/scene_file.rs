@@ -6,12 +6,12 @@
 
 use crate::filters::{FilterKind, ReconstructionFilter};
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
-use common::cli::{CliError, print_note, read_scene_file};
-use common::metrics::AGREEMENT_SPP;
 use common::render::RenderSettings;
 use common::scene::{Capabilities, FilmFilter, Scene};
-use common::scene_file::load_scene_file;
 use std::path::Path;
+use workbench::agreement::AGREEMENT_SPP;
+use workbench::cli::{CliError, print_note, read_scene_file};
+use workbench::scene_file::load_scene_file;
 
 /// What this chapter reads from a scene file's film and sampler.
 #[derive(Clone, Debug)]
@@ -118,7 +118,7 @@ pub fn filter_of(filter: FilmFilter) -> Result<ReconstructionFilter, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use common::scene_file::parse_scene;
+    use workbench::scene_file::parse_scene;
 
     /// A one-sphere scene whose film has the filter `rfilter` (XML) or none (Mitsuba's default).
     fn scene_with(rfilter: &str) -> Scene {

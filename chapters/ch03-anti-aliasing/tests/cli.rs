@@ -1,9 +1,9 @@
 //! The binary refuses bad input with a message and a non-zero exit, never a panic, and
 //! writes nothing then; good input writes the image.
 
-use common::test_support::run_binary;
 use std::path::{Path, PathBuf};
 use std::process::Output;
+use workbench::test_support::run_binary;
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch03-anti-aliasing");
 
@@ -12,7 +12,7 @@ fn run(args: &[&str]) -> Output {
 }
 
 fn assert_refused(args: &[&str], expected: &str) {
-    common::test_support::assert_refused(BINARY, args, expected);
+    workbench::test_support::assert_refused(BINARY, args, expected);
 }
 
 fn scene_file(name: &str) -> PathBuf {
@@ -111,7 +111,7 @@ fn a_small_render_writes_the_image_and_its_statistics() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let decoded = common::output::read_image(&image).unwrap();
+    let decoded = workbench::output::read_image(&image).unwrap();
     assert_eq!((decoded.width, decoded.height), (16, 12));
     assert!(decoded.pixels.iter().all(|p| p.is_finite()));
     let json: serde_json::Value =
@@ -185,7 +185,7 @@ fn the_chapter_scene_files_render_with_their_own_filter() {
         assert_eq!(json["filter_radius"], radius, "{name}");
         assert_eq!(json["spp"], 4, "{name}");
         assert_eq!(json["nonfinite_samples"], 0, "{name}");
-        let decoded = common::output::read_image(&image).unwrap();
+        let decoded = workbench::output::read_image(&image).unwrap();
         let mean = decoded.pixels.iter().map(|p| p.x + p.y + p.z).sum::<f32>();
         assert!(mean > 0.0, "{name} rendered black");
     }

@@ -1,6 +1,6 @@
 //! Snapshot tests: tiny fixed renders whose summaries are compared with the stored ones.
 //!
-//! The same summary as chapter 01's: a 10-level luminance picture (`common::test_support::image_summary`) (catches moved or missing
+//! The same summary as chapter 01's: a 10-level luminance picture (`workbench::test_support::image_summary`) (catches moved or missing
 //! geometry and lost texture) plus the mean colour to four decimals and the ray count (catch
 //! shading, filter and sampler changes). Every render is deterministic for its seed.
 
@@ -9,7 +9,7 @@ use ch03_anti_aliasing::{
     FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter, render_with,
 };
 use common::render::RenderSettings;
-use common::test_support::image_summary;
+use workbench::test_support::image_summary;
 
 fn snapshot_of(
     builtin: Builtin,
@@ -28,7 +28,7 @@ fn snapshot_of(
 
 #[test]
 fn edges_one_sample_at_the_centre() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "edges_one_sample_at_the_centre",
         snapshot_of(Builtin::Edges, PixelSamplerKind::Centre, FilterKind::Box, 1)
     );
@@ -36,7 +36,7 @@ fn edges_one_sample_at_the_centre() {
 
 #[test]
 fn edges_stratified_box() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "edges_stratified_box",
         snapshot_of(
             Builtin::Edges,
@@ -49,7 +49,7 @@ fn edges_stratified_box() {
 
 #[test]
 fn checkerboard_random_tent() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "checkerboard_random_tent",
         snapshot_of(
             Builtin::Checkerboard,
@@ -62,7 +62,7 @@ fn checkerboard_random_tent() {
 
 #[test]
 fn checkerboard_halton_mitchell() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "checkerboard_halton_mitchell",
         snapshot_of(
             Builtin::Checkerboard,
@@ -75,7 +75,7 @@ fn checkerboard_halton_mitchell() {
 
 #[test]
 fn checkerboard_stratified_gaussian() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "checkerboard_stratified_gaussian",
         snapshot_of(
             Builtin::Checkerboard,

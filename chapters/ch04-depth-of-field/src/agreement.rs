@@ -7,8 +7,8 @@
 use crate::render_with;
 use crate::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
 use std::path::Path;
+use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
 
 /// The chapter's scene files compared with Mitsuba 3, with what each one checks.
 pub const AGREEMENT: AgreementSet = AgreementSet {
@@ -22,7 +22,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
     render: render_scene_file,
 };
 
-/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, through the file's
+/// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, through the file's
 /// lens, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
     let (scene, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;

@@ -264,7 +264,7 @@ mod tests {
             panic!(
                 "{} ({blades} blades: does every triangle get the same share, and is the point \
                  inside it uniform?)",
-                common::test_support::not_uniform(
+                workbench::test_support::not_uniform(
                     "ch04-polygon-aperture",
                     "sample_uniform_regular_polygon",
                     "polygon",

@@ -259,15 +259,16 @@ mod tests {
                 1.0 / share,
                 (1.0 / share).ceil() + 1.0
             );
-            let got = common::test_support::catch_panic(|| measured_blur_width(&camera, &sphere))
-                .unwrap_or_else(|message| {
-                    panic!(
-                        "measured_blur_width panicked ({message}) for a sphere of radius {rho} \
+            let got =
+                workbench::test_support::catch_panic(|| measured_blur_width(&camera, &sphere))
+                    .unwrap_or_else(|message| {
+                        panic!(
+                            "measured_blur_width panicked ({message}) for a sphere of radius {rho} \
                          on the axis at depth {depth}, which the middle of the row sees through \
                          the lens centre and through every lens point near it. Do your lens \
                          points include the centre, or come close enough to it? {too_sparse}"
-                    )
-                });
+                        )
+                    });
             let expected = scanned_blur_width(&camera, &sphere, &diameter);
             if (got - expected).abs() <= 0.03 + 0.003 * expected {
                 continue;
@@ -281,7 +282,7 @@ mod tests {
                 let big = Sphere::new(Vec3::new(0.0, 0.0, depth), 20.0 * rho);
                 let big_expected = scanned_blur_width(&camera, &big, &diameter);
                 let big_got =
-                    common::test_support::catch_panic(|| measured_blur_width(&camera, &big));
+                    workbench::test_support::catch_panic(|| measured_blur_width(&camera, &big));
                 match big_got {
                     Ok(big_got)
                         if (big_got - big_expected).abs() <= 0.05 + 0.005 * big_expected =>

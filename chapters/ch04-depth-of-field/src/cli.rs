@@ -5,7 +5,7 @@
 
 use crate::aperture::{Aperture, LensWarp};
 use crate::lens::Lens;
-use common::cli::parse_number;
+use workbench::cli::parse_number;
 
 /// The shapes `--aperture` accepts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

@@ -14,22 +14,22 @@ use crate::scenes::{BOKEH_SPHERE_DEPTHS, BOKEH_WALL_DEPTH, Builtin, DEFAULT_DEPT
 use crate::thin_lens::ThinLensCamera;
 use ch01_whitted::camera::PinholeCamera;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
-use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::geometry::Sphere;
 use common::image::Image;
-use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
-};
-use common::output::figures::{
-    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
-};
-use common::output::write_text;
 use common::render::RenderSettings;
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::CameraFrame;
 use common::scene::Scene;
 use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
+use workbench::convergence::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level, RenderQuality};
+use workbench::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
+};
+use workbench::output::write_text;
 
 /// The aperture radii of the lecture's series, in scene units: zero, small, large, very large.
 pub const APERTURE_SERIES: [(f32, &str); 4] = [
@@ -483,7 +483,7 @@ fn circle_of_confusion_table(
 
 /// A sentence for the page: each warp's RMSE at the largest budget, with the comparison
 /// worded from the numbers, and how much each fell from the smallest budget to the largest.
-fn convergence_sentence(records: &[common::metrics::ConvergenceRecord]) -> String {
+fn convergence_sentence(records: &[workbench::convergence::ConvergenceRecord]) -> String {
     let ends = |warp: LensWarp| {
         let mine: Vec<_> = records
             .iter()
@@ -530,7 +530,7 @@ fn convergence_sentence(records: &[common::metrics::ConvergenceRecord]) -> Strin
 /// The thin-lens scene file rendered with the naive lens warp, measured against Mitsuba 3's
 /// stored renders: the comparison catches the wrong density (`mitsuba_naive.md`).
 fn naive_against_mitsuba(out: &Path) -> anyhow::Result<()> {
-    use common::metrics::ReferenceRenders;
+    use workbench::agreement::ReferenceRenders;
     let set = &crate::agreement::AGREEMENT;
     let mut text = String::from(
         "| scene | lens warp | RMSE ours | RMSE Mitsuba | bias_blocks ours | bias_blocks Mitsuba | the check |\n\
@@ -577,13 +577,14 @@ mod tests {
 
     #[test]
     fn the_convergence_sentence_words_the_comparison_from_the_numbers() {
-        let record = |warp: LensWarp, spp: u64, rmse: f64| common::metrics::ConvergenceRecord {
-            technique: warp.name().to_string(),
-            spp,
-            seconds: spp as f64,
-            rmse,
-            relmse: rmse,
-        };
+        let record =
+            |warp: LensWarp, spp: u64, rmse: f64| workbench::convergence::ConvergenceRecord {
+                technique: warp.name().to_string(),
+                spp,
+                seconds: spp as f64,
+                rmse,
+                relmse: rmse,
+            };
         let run = |naive_last: f64| {
             convergence_sentence(&[
                 record(LensWarp::Naive, 1, 0.8),

@@ -6,8 +6,8 @@ use ch04_depth_of_field::cli::LensArgs;
 use ch04_depth_of_field::scene_file::read_with_camera_side;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{CAPABILITIES, figures, render_with};
-use common::cli::RenderArgs;
 use std::process::ExitCode;
+use workbench::cli::RenderArgs;
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -23,7 +23,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = common::chapter_binary!("Render a scene through a thin lens.");
+    let binary = workbench::chapter_binary!("Render a scene through a thin lens.");
     binary.run(run_render, figures::write_all)
 }
 

@@ -8,10 +8,10 @@
 use crate::lens::Lens;
 use ch03_anti_aliasing::PixelSampler;
 use ch03_anti_aliasing::scene_file::{FilmSide, read_with_film_side};
-use common::cli::CliError;
 use common::render::RenderSettings;
 use common::scene::{Camera, CameraModel, Capabilities, Scene};
 use std::path::Path;
+use workbench::cli::CliError;
 
 // ANCHOR: lens_of
 /// The lens of the scene's camera: [`Lens::PINHOLE`] for a pinhole, else the thin lens of its

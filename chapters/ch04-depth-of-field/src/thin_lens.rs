@@ -491,7 +491,7 @@ mod tests {
             panic!(
                 "{} (a lens of radius {r}, {:?} aperture, {:?} warp: is every lens point drawn \
                  uniformly over the aperture, at the lens's size?)",
-                common::test_support::not_uniform(
+                workbench::test_support::not_uniform(
                     "ch04-thin-lens-camera",
                     "generate_ray_through",
                     "lens",

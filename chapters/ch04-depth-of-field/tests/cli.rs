@@ -1,9 +1,9 @@
 //! The binary refuses bad input with a message and a non-zero exit, never a panic, and
 //! writes nothing then; good input writes the image.
 
-use common::test_support::run_binary;
 use std::path::Path;
 use std::process::Output;
+use workbench::test_support::run_binary;
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch04-depth-of-field");
 
@@ -12,7 +12,7 @@ fn run(args: &[&str]) -> Output {
 }
 
 fn assert_refused(args: &[&str], expected: &str) {
-    common::test_support::assert_refused(BINARY, args, expected);
+    workbench::test_support::assert_refused(BINARY, args, expected);
 }
 
 #[test]

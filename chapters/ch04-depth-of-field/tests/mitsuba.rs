@@ -10,7 +10,7 @@
 //! `AGREEMENT_ONLY=name1,name2` keeps to those scenes.
 
 use ch04_depth_of_field::agreement::AGREEMENT;
-use common::metrics::refresh_agreement_from_env;
+use workbench::agreement::refresh_agreement_from_env;
 
 #[test]
 #[ignore = "needs Mitsuba 3 (set MITSUBA_PYTHON)"]

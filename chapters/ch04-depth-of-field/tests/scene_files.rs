@@ -6,8 +6,8 @@ use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind};
 use ch04_depth_of_field::scene_file::lens_of;
 use ch04_depth_of_field::{CAPABILITIES, render_with};
 use common::render::RenderSettings;
-use common::scene_file::load_scene_file;
 use std::path::{Path, PathBuf};
+use workbench::scene_file::load_scene_file;
 
 fn scene_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))

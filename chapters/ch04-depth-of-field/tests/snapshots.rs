@@ -1,16 +1,16 @@
 //! Snapshot tests: tiny fixed renders whose summaries are compared with the stored ones.
 //!
-//! The summary is a 10-level luminance picture (`common::test_support::image_summary`) (catches moved geometry, a lens focused at the
+//! The summary is a 10-level luminance picture (`workbench::test_support::image_summary`) (catches moved geometry, a lens focused at the
 //! wrong distance, a missing blur) plus the image's mean colour to four decimals and the ray
 //! count. The renders are random, but their seeds are fixed; the summary is compared
-//! up to floating-point noise (`common::assert_close_snapshot!`).
+//! up to floating-point noise (`workbench::assert_close_snapshot!`).
 
 use ch04_depth_of_field::scenes::{BOKEH_SPHERE_DEPTHS, Builtin, DEFAULT_DEPTH};
 use ch04_depth_of_field::{Aperture, Lens, LensWarp, render_with};
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
-use common::test_support::image_summary;
+use workbench::test_support::image_summary;
 
 fn snapshot_of(lens: Lens) -> String {
     let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
@@ -31,12 +31,12 @@ fn snapshot_of(lens: Lens) -> String {
 
 #[test]
 fn bokeh_pinhole() {
-    common::assert_close_snapshot!("bokeh_pinhole", snapshot_of(Lens::PINHOLE));
+    workbench::assert_close_snapshot!("bokeh_pinhole", snapshot_of(Lens::PINHOLE));
 }
 
 #[test]
 fn bokeh_focused_near_concentric() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "bokeh_focused_near_concentric",
         snapshot_of(Lens::new(0.2, BOKEH_SPHERE_DEPTHS[0]).unwrap())
     );
@@ -47,7 +47,7 @@ fn bokeh_focused_near_naive() {
     let lens = Lens::new(0.2, BOKEH_SPHERE_DEPTHS[0])
         .unwrap()
         .with_warp(LensWarp::Naive);
-    common::assert_close_snapshot!("bokeh_focused_near_naive", snapshot_of(lens));
+    workbench::assert_close_snapshot!("bokeh_focused_near_naive", snapshot_of(lens));
 }
 
 #[test]
@@ -55,5 +55,5 @@ fn bokeh_focused_far_hexagon() {
     let lens = Lens::new(0.2, BOKEH_SPHERE_DEPTHS[2])
         .unwrap()
         .with_aperture(Aperture::polygon(6, 0.0).unwrap());
-    common::assert_close_snapshot!("bokeh_focused_far_hexagon", snapshot_of(lens));
+    workbench::assert_close_snapshot!("bokeh_focused_far_hexagon", snapshot_of(lens));
 }

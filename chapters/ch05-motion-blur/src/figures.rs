@@ -11,21 +11,21 @@ use crate::{Shutter, render_with};
 use ch01_whitted::camera::PinholeCamera;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
-use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::image::Image;
-use common::metrics::{
-    ConvergenceRecord, Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence,
-    write_convergence_csv,
-};
-use common::output::figures::{
-    Axes, Series, SeriesStyle, bar_chart, comparison_grid, line_plot, scatter_plot,
-};
-use common::output::write_text;
 use common::render::RenderSettings;
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 use std::path::Path;
 use std::time::Instant;
+use workbench::convergence::{
+    ConvergenceRecord, Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence,
+    write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level, RenderQuality};
+use workbench::output::figures::{
+    Axes, Series, SeriesStyle, bar_chart, comparison_grid, line_plot, scatter_plot,
+};
+use workbench::output::write_text;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
 fn quality(level: Level) -> RenderQuality {

@@ -6,8 +6,8 @@ use ch05_motion_blur::render_setup::CameraArgs;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
 use ch05_motion_blur::{CAPABILITIES, Shutter, TimeSampling, figures, render_with};
-use common::cli::parse_number;
 use std::process::ExitCode;
+use workbench::cli::parse_number;
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -33,7 +33,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = common::chapter_binary!("Render a scene in motion over the shutter interval.");
+    let binary = workbench::chapter_binary!("Render a scene in motion over the shutter interval.");
     binary.run(run_render, figures::write_all)
 }
 

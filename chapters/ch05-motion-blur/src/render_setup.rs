@@ -11,8 +11,8 @@ use ch03_anti_aliasing::PixelSampler;
 use ch03_anti_aliasing::cli::{AntiAliasingArgs, FilmSetup};
 use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::cli::LensArgs;
-use common::cli::{CliError, RenderArgs};
 use common::scene::{Capabilities, Scene};
+use workbench::cli::{CliError, RenderArgs};
 
 /// The options every `render` from chapter 05 on shares: the pixel sampler and filter
 /// (chapter 03), the lens (chapter 04), and the scene, budget and outputs (`common`).

@@ -10,10 +10,10 @@
 use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
 pub use ch04_depth_of_field::scene_file::{CameraSide, read_with_camera_side};
-use common::cli::print_note;
 use common::render::RenderSettings;
 use common::scene::{Capabilities, Scene};
 use std::path::Path;
+use workbench::cli::print_note;
 
 // ANCHOR: motion_of
 /// The motion of a scene file's `scene` made ready for tracing (or why it cannot be), with a

@@ -4,9 +4,9 @@ use ch05_motion_blur::CAPABILITIES;
 use ch05_motion_blur::scene_file::motion_of;
 use ch05_motion_blur::world::MotionScene;
 use common::scene::Scene;
-use common::scene_file::{load_scene_file, parse_scene};
-use common::test_support::run_binary;
 use std::path::{Path, PathBuf};
+use workbench::scene_file::{load_scene_file, parse_scene};
+use workbench::test_support::run_binary;
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch05-motion-blur");
 

@@ -1,9 +1,9 @@
 //! Snapshot tests: tiny fixed renders whose summaries are compared with the stored ones.
 //!
-//! The summary (`common::test_support::image_summary`) is a 10-level luminance picture plus
+//! The summary (`workbench::test_support::image_summary`) is a 10-level luminance picture plus
 //! the mean colour and the ray count: it catches a moving object in the wrong place, a blur
 //! that is missing or too long, a camera that moves the wrong way. Seeds are fixed; the
-//! summary is compared up to floating-point noise (`common::assert_close_snapshot!`).
+//! summary is compared up to floating-point noise (`workbench::assert_close_snapshot!`).
 
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH};
@@ -11,7 +11,7 @@ use ch05_motion_blur::{Shutter, StratifiedTime, render_with};
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
-use common::test_support::image_summary;
+use workbench::test_support::image_summary;
 
 fn snapshot_of(builtin: Builtin, open: f32, close: f32) -> String {
     let world = builtin.build(DEFAULT_DEPTH, Shutter::new(open, close).unwrap());
@@ -25,7 +25,7 @@ fn snapshot_of(builtin: Builtin, open: f32, close: f32) -> String {
 
 #[test]
 fn street_still_at_the_start() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "street_still_at_the_start",
         snapshot_of(Builtin::Street, 0.0, 0.0)
     );
@@ -33,7 +33,7 @@ fn street_still_at_the_start() {
 
 #[test]
 fn street_blurred_over_the_whole_motion() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "street_blurred_over_the_whole_motion",
         snapshot_of(Builtin::Street, 0.0, 1.0)
     );
@@ -41,7 +41,7 @@ fn street_blurred_over_the_whole_motion() {
 
 #[test]
 fn street_blurred_over_a_short_shutter() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "street_blurred_over_a_short_shutter",
         snapshot_of(Builtin::Street, 0.45, 0.55)
     );
@@ -49,7 +49,7 @@ fn street_blurred_over_a_short_shutter() {
 
 #[test]
 fn spinner_past_a_full_turn() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "spinner_past_a_full_turn",
         snapshot_of(Builtin::Spinner, 0.0, 1.0)
     );
@@ -57,7 +57,7 @@ fn spinner_past_a_full_turn() {
 
 #[test]
 fn pan_with_a_moving_camera() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "pan_with_a_moving_camera",
         snapshot_of(Builtin::Pan, 0.0, 1.0)
     );

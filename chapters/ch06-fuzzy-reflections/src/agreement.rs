@@ -10,8 +10,8 @@
 use crate::{GlassStrategy, PointLights, TraceOptions, render_with};
 use ch05_motion_blur::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
 use std::path::Path;
+use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
 
 /// The chapter's scene files compared with Mitsuba 3, with what each one checks.
 pub const AGREEMENT: AgreementSet = AgreementSet {
@@ -25,7 +25,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
     render: render_scene_file,
 };
 
-/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, choosing the ray at
+/// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, choosing the ray at
 /// glass by `glass`, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file_with(path: &Path, glass: GlassStrategy) -> Result<Image, String> {
     let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;

@@ -2,8 +2,8 @@
 //! exponent, the choices at glass and at the surface, and the depth limit.
 
 use crate::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
-use common::cli::parse_number;
 use common::scene::{Scene, check_exponent};
+use workbench::cli::parse_number;
 
 /// How fuzzy surfaces and glass are traced.
 #[derive(clap::Args, Clone, Debug)]

@@ -16,20 +16,20 @@ use ch01_whitted::optics::reflect;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
-use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::image::Image;
-use common::metrics::{
-    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
-};
-use common::output::figures::{
-    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
-};
-use common::output::write_text;
 use common::render::{Budget, RenderOutput, RenderSettings};
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::Material;
 use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
+use workbench::convergence::{
+    Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level, RenderQuality};
+use workbench::output::figures::{
+    Axes, Series, SeriesStyle, comparison_grid, line_plot, scatter_plot,
+};
+use workbench::output::write_text;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
 fn quality(level: Level) -> RenderQuality {
@@ -601,7 +601,7 @@ fn strategy_words(name: &str) -> &'static str {
 /// An unbiased estimator's mean squared error falls as one over the time spent, so the product
 /// `MSE × seconds` is the time it needs per unit of inverse squared error; the geometric mean
 /// over the budgets evens out the noise of any single render.
-fn time_to_error(records: &[common::metrics::ConvergenceRecord]) -> String {
+fn time_to_error(records: &[workbench::convergence::ConvergenceRecord]) -> String {
     let cost = |glass: GlassStrategy| {
         let products: Vec<f64> = records
             .iter()
@@ -635,7 +635,7 @@ fn time_to_error(records: &[common::metrics::ConvergenceRecord]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use common::metrics::ConvergenceRecord;
+    use workbench::convergence::ConvergenceRecord;
 
     #[test]
     fn share_differing_counts_pixels_beyond_the_tolerance_in_any_channel() {

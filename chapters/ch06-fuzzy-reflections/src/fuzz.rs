@@ -268,7 +268,7 @@ mod tests {
                         Vec2::new(turn, d.dot(center).max(0.0).powf(exponent + 1.0))
                     })
                     .collect();
-                let picture = common::test_support::not_uniform(
+                let picture = workbench::test_support::not_uniform(
                     "ch06-lobe-around",
                     "sample_lobe_around",
                     "lobe, drawn as (turn about the centre, cos^(n+1) α)",
@@ -394,7 +394,7 @@ mod tests {
                         Vec2::new(on_disc.dot(a), on_disc.dot(b)) / radius
                     })
                     .collect();
-                let picture = common::test_support::not_uniform(
+                let picture = workbench::test_support::not_uniform(
                     "ch06-disc-fuzz",
                     "sample_disc_perturbation",
                     "disc",

@@ -19,7 +19,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = common::chapter_binary!("Render a scene with glossy and frosted surfaces.");
+    let binary = workbench::chapter_binary!("Render a scene with glossy and frosted surfaces.");
     binary.run(run_render, figures::write_all)
 }
 

@@ -6,7 +6,7 @@
 
 use ch06_fuzzy_reflections::GlassStrategy;
 use ch06_fuzzy_reflections::agreement::{AGREEMENT, render_scene_file_with};
-use common::metrics::{BIAS_SLACK, ReferenceRenders};
+use workbench::agreement::{BIAS_SLACK, ReferenceRenders};
 
 #[test]
 fn renders_agree_with_the_stored_mitsuba_renders() {

@@ -5,8 +5,8 @@ use ch06_fuzzy_reflections::CAPABILITIES;
 use ch06_fuzzy_reflections::agreement::AGREEMENT;
 use common::scene::Material;
 use common::scene::Scene;
-use common::scene_file::{load_scene_file, parse_scene};
-use common::test_support::{assert_refused, run_binary};
+use workbench::scene_file::{load_scene_file, parse_scene};
+use workbench::test_support::{assert_refused, run_binary};
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch06-fuzzy-reflections");
 

@@ -1,17 +1,17 @@
 //! Snapshot tests: tiny fixed renders whose summaries are compared with the stored ones.
 //!
-//! The summary (`common::test_support::image_summary`) is a 10-level luminance picture plus
+//! The summary (`workbench::test_support::image_summary`) is a 10-level luminance picture plus
 //! the mean colour and the ray count: it catches a reflection that moved, a blur that is
 //! missing or too wide, glass that lost its refraction, and a change in how many rays a
 //! strategy traces. Seeds are fixed; the summary is compared up to
-//! floating-point noise (`common::assert_close_snapshot!`).
+//! floating-point noise (`workbench::assert_close_snapshot!`).
 
 mod support;
 
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
 use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
-use common::test_support::image_summary;
 use support::render;
+use workbench::test_support::image_summary;
 
 fn snapshot_of(builtin: Builtin, exponent: f32, options: TraceOptions) -> String {
     let scene = builtin.build(DEFAULT_DEPTH, exponent);
@@ -22,7 +22,7 @@ fn snapshot_of(builtin: Builtin, exponent: f32, options: TraceOptions) -> String
 
 #[test]
 fn floor_glossy_lobe() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "floor_glossy_lobe",
         snapshot_of(Builtin::Floor, 100.0, TraceOptions::default())
     );
@@ -34,7 +34,7 @@ fn floor_glossy_empirical_disc() {
         fuzz: FuzzMethod::Disc,
         ..TraceOptions::default()
     };
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "floor_glossy_empirical_disc",
         snapshot_of(Builtin::Floor, 100.0, options)
     );
@@ -42,7 +42,7 @@ fn floor_glossy_empirical_disc() {
 
 #[test]
 fn frosted_pane() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "frosted_pane",
         snapshot_of(Builtin::Frosted, 10.0, TraceOptions::default())
     );
@@ -54,7 +54,7 @@ fn plates_reflecting_each_other_stray_rays_reflected() {
         below: BelowSurface::Reflect,
         ..TraceOptions::default()
     };
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "plates_reflecting_each_other_stray_rays_reflected",
         snapshot_of(Builtin::Plates, 1000.0, options)
     );
@@ -66,7 +66,7 @@ fn panes_traced_both_ways() {
         glass: GlassStrategy::Both,
         ..TraceOptions::default()
     };
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "panes_traced_both_ways",
         snapshot_of(Builtin::Panes, 1e6, options)
     );
@@ -78,7 +78,7 @@ fn panes_one_ray_with_probability_one_half() {
         glass: GlassStrategy::Half,
         ..TraceOptions::default()
     };
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "panes_one_ray_with_probability_one_half",
         snapshot_of(Builtin::Panes, 1e6, options)
     );

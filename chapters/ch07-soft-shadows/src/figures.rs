@@ -15,19 +15,20 @@ use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, Reconstruct
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::TraceOptions;
-use common::figure_set::{FigureSet, Level, RenderQuality};
 use common::geometry::{Disc, Parallelogram, Shape, Sphere, Triangle};
 use common::image::Image;
-use common::metrics::{
-    ConvergenceRecord, Technique, mean, plot_error_vs_spp, plot_error_vs_time, rmse,
-    run_convergence, write_convergence_csv,
-};
-use common::output::figures::{comparison_grid, scatter_plot};
-use common::output::write_text;
+use common::metrics::{mean, rmse};
 use common::render::RenderSettings;
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
+use workbench::convergence::{
+    ConvergenceRecord, Technique, plot_error_vs_spp, plot_error_vs_time, run_convergence,
+    write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level, RenderQuality};
+use workbench::output::figures::{comparison_grid, scatter_plot};
+use workbench::output::write_text;
 
 /// Image sizes and budgets: the book's, or small ones for tests and CI.
 fn quality(level: Level) -> RenderQuality {

@@ -7,8 +7,8 @@ use ch07_soft_shadows::cli::LightArgs;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
 use ch07_soft_shadows::{AreaLights, CAPABILITIES};
 use ch07_soft_shadows::{figures, render_with};
-use common::cli::parse_number;
 use std::process::ExitCode;
+use workbench::cli::parse_number;
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -39,7 +39,7 @@ fn check_light_scale(scale: f32) -> anyhow::Result<f32> {
 }
 
 fn main() -> ExitCode {
-    let binary = common::chapter_binary!("Render a scene lit by area lights.");
+    let binary = workbench::chapter_binary!("Render a scene lit by area lights.");
     binary.run(run_render, figures::write_all)
 }
 

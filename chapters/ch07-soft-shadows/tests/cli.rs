@@ -1,7 +1,7 @@
 //! The `render` command line: good input renders, bad input is refused before any work, with
 //! a message naming the problem, and nothing is written.
 
-use common::test_support::{assert_refused, run_binary};
+use workbench::test_support::{assert_refused, run_binary};
 
 const BINARY: &str = env!("CARGO_BIN_EXE_ch07-soft-shadows");
 

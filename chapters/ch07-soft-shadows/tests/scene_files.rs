@@ -5,9 +5,9 @@
 use ch07_soft_shadows::light::LightShape;
 use ch07_soft_shadows::{AreaLights, CAPABILITIES, DiscWarp, LightSampling};
 use common::scene::Scene;
-use common::scene_file::{load_scene_file, parse_scene};
 use glam::{Vec2, Vec3};
 use std::path::Path;
+use workbench::scene_file::{load_scene_file, parse_scene};
 
 /// A scene file as this chapter sees it: the scene, its area lights, the notes of the check.
 struct Converted {

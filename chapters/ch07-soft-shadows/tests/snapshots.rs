@@ -1,16 +1,16 @@
 //! Snapshot tests: tiny fixed renders of the built-in scenes whose summaries are compared with
 //! the stored ones.
 //!
-//! The summary (`common::test_support::image_summary`) is a 10-level luminance picture plus
+//! The summary (`workbench::test_support::image_summary`) is a 10-level luminance picture plus
 //! the mean colour and the ray count: it catches a shadow in the wrong place, a light that is
 //! missing or black, a penumbra that hardened. Seeds are fixed; the summary
-//! is compared up to floating-point noise (`common::assert_close_snapshot!`).
+//! is compared up to floating-point noise (`workbench::assert_close_snapshot!`).
 
 mod support;
 
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
 use ch07_soft_shadows::{DiscWarp, LightOptions};
-use common::test_support::image_summary;
+use workbench::test_support::image_summary;
 
 fn snapshot_of(builtin: Builtin, options: LightOptions) -> String {
     let scene = builtin.build(DEFAULT_DEPTH, 1.0);
@@ -21,7 +21,7 @@ fn snapshot_of(builtin: Builtin, options: LightOptions) -> String {
 
 #[test]
 fn small_light_hard_shadows() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "small_light_hard_shadows",
         snapshot_of(Builtin::Small, LightOptions::with_samples(4))
     );
@@ -29,7 +29,7 @@ fn small_light_hard_shadows() {
 
 #[test]
 fn large_light_soft_shadows() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "large_light_soft_shadows",
         snapshot_of(Builtin::Large, LightOptions::with_samples(4))
     );
@@ -37,7 +37,7 @@ fn large_light_soft_shadows() {
 
 #[test]
 fn one_light_of_each_shape() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "one_light_of_each_shape",
         snapshot_of(Builtin::Shapes, LightOptions::default())
     );
@@ -45,7 +45,7 @@ fn one_light_of_each_shape() {
 
 #[test]
 fn several_coloured_lights() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "several_coloured_lights",
         snapshot_of(Builtin::Several, LightOptions::with_samples(2))
     );
@@ -53,7 +53,7 @@ fn several_coloured_lights() {
 
 #[test]
 fn several_coloured_lights_with_the_naive_disc() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "several_coloured_lights_with_the_naive_disc",
         snapshot_of(
             Builtin::Several,
@@ -64,7 +64,7 @@ fn several_coloured_lights_with_the_naive_disc() {
 
 #[test]
 fn a_glossy_floor_reflecting_the_lights() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "a_glossy_floor_reflecting_the_lights",
         snapshot_of(Builtin::Glossy, LightOptions::default())
     );

@@ -34,9 +34,9 @@ use std::time::Instant;
 use clap::Parser;
 use common::geometry::TriangleMesh;
 use common::image::Image;
-use common::metrics::mitsuba_python;
-use common::output::read_image;
-use common::test_support::mesh_files::{PlyEncoding, PlyStyle, write_ply};
+use workbench::agreement::mitsuba_python;
+use workbench::output::read_image;
+use workbench::test_support::mesh_files::{PlyEncoding, PlyStyle, write_ply};
 
 #[derive(Parser, Debug)]
 #[command(about = "Chapter 08 against Mitsuba 3: samples per second at equal noise per sample")]

@@ -9,8 +9,8 @@ use crate::scene_file::path_options;
 use crate::{Method, render_with};
 use ch05_motion_blur::scene_file::for_agreement;
 use common::image::Image;
-use common::metrics::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
 use std::path::Path;
+use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_VARIANT};
 
 /// The chapter's scene files compared with Mitsuba 3, with what each one checks.
 pub const AGREEMENT: AgreementSet = AgreementSet {
@@ -116,7 +116,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
     render: render_scene_file,
 };
 
-/// Our render of a scene file at [`AGREEMENT_SPP`](common::metrics::AGREEMENT_SPP) samples per pixel, with the file's
+/// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, with the file's
 /// integrator settings.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
     let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;

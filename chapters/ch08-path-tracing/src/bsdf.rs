@@ -373,7 +373,7 @@ mod tests {
     }
 
     fn gold() -> Conductor {
-        let (eta, k) = common::scene_file::named_metal("Au").unwrap();
+        let (eta, k) = workbench::scene_file::named_metal("Au").unwrap();
         Conductor {
             eta,
             k,

@@ -37,20 +37,21 @@ use crate::{Method, render_with};
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
-use common::figure_set::{FigureSet, Level};
 use common::film::PixelBoxFilter;
 use common::image::Image;
-use common::metrics::{
-    Technique, convergence_markdown, plot_error_vs_spp, plot_error_vs_time, rmse, run_convergence,
-    write_convergence_csv,
-};
-use common::output::figures::{Axes, Series, SeriesStyle, comparison_grid, line_plot};
-use common::output::{write_image, write_text};
+use common::metrics::rmse;
 use common::render::{Budget, RenderOutput, RenderSettings};
 use common::sampler::IndependentSampler;
 use common::scene::{Material, MicrofacetDistribution};
 use std::path::Path;
 use std::time::Instant;
+use workbench::convergence::{
+    Technique, convergence_markdown, plot_error_vs_spp, plot_error_vs_time, run_convergence,
+    write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level};
+use workbench::output::figures::{Axes, Series, SeriesStyle, comparison_grid, line_plot};
+use workbench::output::{write_image, write_text};
 
 /// The techniques compared, by name.
 pub fn techniques(file: PathOptions) -> Vec<(&'static str, PathOptions)> {
@@ -139,7 +140,7 @@ struct SceneFile {
 /// The chapter scene file `name`, loaded.
 fn load(name: &str) -> anyhow::Result<SceneFile> {
     let file = AGREEMENT.scenes_dir().join(name);
-    let loaded = common::scene_file::load_scene_file(&file, &[])?;
+    let loaded = workbench::scene_file::load_scene_file(&file, &[])?;
     crate::CAPABILITIES
         .check(&loaded.scene)
         .map_err(anyhow::Error::msg)?;

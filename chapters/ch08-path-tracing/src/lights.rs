@@ -347,7 +347,7 @@ impl<'a> SceneLights<'a> {
 mod tests {
     use super::*;
     use ch07_soft_shadows::LightSampling;
-    use common::scene_file::parse_scene;
+    use workbench::scene_file::parse_scene;
 
     /// The chapter's scene with a textured panel light.
     fn textured_light_world() -> MotionScene {

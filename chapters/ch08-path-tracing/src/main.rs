@@ -25,7 +25,7 @@ struct RenderCommand {
 }
 
 fn main() -> ExitCode {
-    let binary = common::chapter_binary!("Path-trace a scene file (--scene FILE.xml).");
+    let binary = workbench::chapter_binary!("Path-trace a scene file (--scene FILE.xml).");
     binary.run(run_render, figures::write_all)
 }
 

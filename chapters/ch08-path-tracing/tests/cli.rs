@@ -1,6 +1,6 @@
 //! The binary: bad input gives a clear message, a non-zero exit and no file.
 
-use common::test_support::assert_refused;
+use workbench::test_support::assert_refused;
 
 const BIN: &str = env!("CARGO_BIN_EXE_ch08-path-tracing");
 
@@ -29,7 +29,7 @@ fn a_render_writes_its_image() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("box.png");
     let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cornell-box.xml");
-    let output = common::test_support::run_binary(
+    let output = workbench::test_support::run_binary(
         BIN,
         &[
             "render",

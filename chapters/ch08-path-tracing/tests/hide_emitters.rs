@@ -59,7 +59,7 @@ fn chapters_before_08_refuse_hidden_emitters() {
     let folder = tempfile::tempdir().unwrap();
     let file = folder.path().join("hidden.xml");
     std::fs::write(&file, scene(true)).unwrap();
-    let scene = common::scene_file::load_scene_file(&file, &[])
+    let scene = workbench::scene_file::load_scene_file(&file, &[])
         .unwrap()
         .scene;
     let refusal = ch07_soft_shadows::CAPABILITIES.check(&scene).unwrap_err();

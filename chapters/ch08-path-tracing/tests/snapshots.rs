@@ -8,7 +8,7 @@ use ch04_depth_of_field::Lens;
 use ch08_path_tracing::{Method, PathOptions, render_with};
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
-use common::test_support::image_summary;
+use workbench::test_support::image_summary;
 
 fn snapshot_of(file: &str, options: impl Fn(PathOptions) -> PathOptions) -> String {
     let scene = support::scene_file(file);
@@ -27,7 +27,7 @@ fn snapshot_of(file: &str, options: impl Fn(PathOptions) -> PathOptions) -> Stri
 
 #[test]
 fn cornell_box_path_traced() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "cornell_box_path_traced",
         snapshot_of("cornell-box.xml", |o| o)
     );
@@ -35,7 +35,7 @@ fn cornell_box_path_traced() {
 
 #[test]
 fn point_and_sky_without_nee() {
-    common::assert_close_snapshot!(
+    workbench::assert_close_snapshot!(
         "point_and_sky_without_nee",
         snapshot_of("point-and-sky.xml", |o| PathOptions { nee: false, ..o })
     );

@@ -14,7 +14,7 @@ use proptest::test_runner::{Config, RngSeed};
 /// The configuration of these property tests: `cases` cases from a fixed seed (a run is
 /// repeatable, and CI never fails by the luck of the draw), no failure files written into the
 /// source tree.
-pub(crate) fn config(cases: u32) -> Config {
+pub fn config(cases: u32) -> Config {
     Config {
         cases,
         rng_seed: RngSeed::Fixed(20_260_117),
@@ -25,7 +25,7 @@ pub(crate) fn config(cases: u32) -> Config {
 
 /// One number: NaN, an infinity, a zero of either sign, a huge or a subnormal number, a
 /// number on the scale of a scene, or any float at all.
-pub(crate) fn number() -> impl Strategy<Value = f32> + Clone {
+pub fn number() -> impl Strategy<Value = f32> + Clone {
     prop_oneof![
         prop::sample::select(vec![
             f32::NAN,
@@ -48,7 +48,7 @@ pub(crate) fn number() -> impl Strategy<Value = f32> + Clone {
 
 /// A number of the figures' and metrics' `f64`: the same kinds as [`number`], with the
 /// extremes of `f64` (whose differences overflow, and whose smallest steps are subnormal).
-pub(crate) fn number_f64() -> impl Strategy<Value = f64> + Clone {
+pub fn number_f64() -> impl Strategy<Value = f64> + Clone {
     prop_oneof![
         prop::sample::select(vec![
             f64::NAN,
@@ -71,12 +71,12 @@ pub(crate) fn number_f64() -> impl Strategy<Value = f64> + Clone {
 }
 
 /// A pair of [`number`]s.
-pub(crate) fn vec2() -> impl Strategy<Value = Vec2> + Clone {
+pub fn vec2() -> impl Strategy<Value = Vec2> + Clone {
     (number(), number()).prop_map(|(x, y)| Vec2::new(x, y))
 }
 
 /// A vector: three [`number`]s, or one of them in every component (a NaN vector, a zero one).
-pub(crate) fn vec3() -> impl Strategy<Value = Vec3> + Clone {
+pub fn vec3() -> impl Strategy<Value = Vec3> + Clone {
     prop_oneof![
         (number(), number(), number()).prop_map(|(x, y, z)| Vec3::new(x, y, z)),
         number().prop_map(Vec3::splat),

@@ -24,8 +24,8 @@
 //! No constant in any of it depends on the scene's size or position.
 
 mod aabb;
-#[cfg(test)]
-pub(crate) mod awkward;
+#[cfg(any(test, feature = "test-strategies"))]
+pub mod awkward;
 mod bvh;
 mod cost;
 mod float;

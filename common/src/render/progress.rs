@@ -1,16 +1,40 @@
-//! A progress bar for renders, shown only on a terminal.
+//! A progress bar for renders, shown only on a terminal, and only with the `progress` feature
+//! (the workbench turns it on; without it, as in a browser, the render loop counts nothing).
 
-use super::{Budget, RenderSettings};
+#[cfg(feature = "progress")]
+use super::Budget;
+use super::RenderSettings;
+#[cfg(feature = "progress")]
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+#[cfg(feature = "progress")]
 use std::io::IsTerminal;
+
+/// Without the `progress` feature: a bar that is never drawn.
+#[cfg(not(feature = "progress"))]
+pub(super) struct Progress;
+
+#[cfg(not(feature = "progress"))]
+impl Progress {
+    pub(super) fn new(_settings: &RenderSettings, _tiles_per_pass: usize) -> Self {
+        Self
+    }
+
+    pub(super) fn tile_done(&self) {}
+
+    pub(super) fn pass_done(&self, _spp: u64) {}
+
+    pub(super) fn finish(&self) {}
+}
 
 /// Counts finished tiles; draws nothing when disabled or when stderr is not a terminal
 /// (tests, CI logs, pipes).
+#[cfg(feature = "progress")]
 pub(super) struct Progress {
     bar: Option<ProgressBar>,
     tiles_per_pass: u64,
 }
 
+#[cfg(feature = "progress")]
 impl Progress {
     pub(super) fn new(settings: &RenderSettings, tiles_per_pass: usize) -> Self {
         let tiles_per_pass = tiles_per_pass as u64;

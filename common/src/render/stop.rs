@@ -14,7 +14,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 ///
 /// The render loop never installs a signal handler itself: a library must not take over a
 /// process's Ctrl-C behind the back of its caller (a test runner, say). The binaries do, with
-/// [`crate::cli::ctrl_c_stop_flag`].
+/// `workbench::cli::ctrl_c_stop_flag`.
 #[derive(Clone, Debug, Default)]
 pub struct StopFlag(Arc<AtomicBool>);
 

@@ -5,7 +5,7 @@
 //! parameter, and nothing about how to sample it: the shapes with their BVH, what each shape
 //! is made of and whether it glows ([`Surface`]), the point lights and the environment, the
 //! camera with its lens and shutter, the film and the sampler's settings, the depth limit.
-//! The scene-file loader ([`crate::scene_file`]) fills it from a Mitsuba 3 XML file, the
+//! The scene-file loader (`workbench::scene_file`) fills it from a Mitsuba 3 XML file, the
 //! chapters' built-in scenes fill it with a [`SceneBuilder`], and each chapter adds the
 //! functions that sample it and a tracer that reads it.
 //!

@@ -6,7 +6,7 @@
 //! for stratified sampling of a smooth integrand. Error against *time* decides which strategy
 //! is worth it: a strategy that costs more per sample must win by more than it costs.
 
-use common::metrics::ConvergenceRecord;
+use workbench::convergence::ConvergenceRecord;
 
 use super::{Integrand, Strategy};
 
@@ -174,7 +174,7 @@ mod tests {
     }
 
     fn check_slope(points: &[(f64, f64)], expected: f64) {
-        let slope = common::test_support::catch_panic(|| log_log_slope(points.iter().copied()))
+        let slope = workbench::test_support::catch_panic(|| log_log_slope(points.iter().copied()))
             .unwrap_or_else(|message| {
                 panic!(
                     "log_log_slope: points {points:?} made it panic ({message}): {}",

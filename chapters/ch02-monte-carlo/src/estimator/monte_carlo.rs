@@ -174,13 +174,15 @@ mod tests {
 
     #[test]
     fn exercise_estimate_of_no_samples_is_nan() {
-        let value = common::test_support::catch_panic(|| estimate(0, &mut || 0.0, |x| x, |_| 1.0))
-            .unwrap_or_else(|message| {
-                panic!(
-                    "estimate: with n = 0 it panicked ({message}): there is nothing to average, \
+        let value = workbench::test_support::catch_panic(|| {
+            estimate(0, &mut || 0.0, |x| x, |_| 1.0)
+        })
+        .unwrap_or_else(|message| {
+            panic!(
+                "estimate: with n = 0 it panicked ({message}): there is nothing to average, \
                      and the estimate is NaN"
-                )
-            });
+            )
+        });
         assert!(
             value.is_nan(),
             "estimate: with n = 0 there is nothing to average, and the estimate is NaN, not \

@@ -2,11 +2,11 @@
 
 use std::path::Path;
 
-use common::metrics::{
+use workbench::convergence::{
     ConvergenceRecord, plot_error_vs_time, series_by_technique, write_convergence_csv,
 };
-use common::output::OutputError;
-use common::output::figures::{Axes, Series, SeriesStyle, line_plot};
+use workbench::output::OutputError;
+use workbench::output::figures::{Axes, Series, SeriesStyle, line_plot};
 
 /// Saves a log-log plot of RMSE against the sample count `n`, one line per technique, with a
 /// dashed reference line of slope `-1/2` (error `∝ 1/√n`).

@@ -159,7 +159,7 @@ mod tests {
     fn exercise_sample_variance_of_one_value_is_zero() {
         for values in [&[7.5][..], &[3.0; 10]] {
             let (mean, variance) =
-                common::test_support::catch_panic(|| sample_mean_and_variance(values))
+                workbench::test_support::catch_panic(|| sample_mean_and_variance(values))
                     .unwrap_or_else(|message| {
                         panic!(
                             "sample_mean_and_variance: values {values:?} made it panic \
@@ -177,13 +177,15 @@ mod tests {
 
     #[test]
     fn exercise_sample_variance_of_nothing_is_nan() {
-        let (mean, variance) = common::test_support::catch_panic(|| sample_mean_and_variance(&[]))
-            .unwrap_or_else(|message| {
-                panic!(
-                    "sample_mean_and_variance: no values made it panic ({message}): no values \
+        let (mean, variance) =
+            workbench::test_support::catch_panic(|| sample_mean_and_variance(&[])).unwrap_or_else(
+                |message| {
+                    panic!(
+                        "sample_mean_and_variance: no values made it panic ({message}): no values \
                      have no mean and no variance, and both are NaN"
-                )
-            });
+                    )
+                },
+            );
         assert!(
             mean.is_nan() && variance.is_nan(),
             "sample_mean_and_variance: no values have no mean and no variance: both are NaN, \

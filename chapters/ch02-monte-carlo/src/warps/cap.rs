@@ -273,7 +273,7 @@ mod tests {
                 panic!(
                     "{} (cos θ_max = {cos_max}, drawn in (φ/2π, cos θ), where equal areas are \
                      equal solid angles)",
-                    common::test_support::not_uniform(
+                    workbench::test_support::not_uniform(
                         "ch02-spherical-cap",
                         "sample_spherical_cap",
                         "cap",

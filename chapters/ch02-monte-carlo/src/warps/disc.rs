@@ -159,7 +159,7 @@ mod tests {
             .collect();
         panic!(
             "{}",
-            common::test_support::not_uniform(
+            workbench::test_support::not_uniform(
                 "ch02-disc-polar",
                 "sample_uniform_disc_polar",
                 "disc",

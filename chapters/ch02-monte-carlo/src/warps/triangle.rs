@@ -101,7 +101,7 @@ mod tests {
             .collect();
         panic!(
             "{}",
-            common::test_support::not_uniform(
+            workbench::test_support::not_uniform(
                 "ch02-triangle-fold",
                 "sample_triangle_barycentric",
                 "triangle",

@@ -154,7 +154,7 @@ fn exercise_strata_grid_is_as_square_as_the_count_allows() {
     ];
     for spp in counts {
         let got =
-            common::test_support::catch_panic(|| strata_grid(spp)).unwrap_or_else(|message| {
+            workbench::test_support::catch_panic(|| strata_grid(spp)).unwrap_or_else(|message| {
                 panic!(
                     "strata_grid({spp}) panicked ({message}){}",
                     if spp == 0 {
@@ -318,7 +318,7 @@ fn exercise_radical_inverse_mirrors_the_digits() {
         (3, u64::MAX),
     ]);
     for (base, index) in cases {
-        let got = common::test_support::catch_panic(|| radical_inverse(base, index))
+        let got = workbench::test_support::catch_panic(|| radical_inverse(base, index))
             .unwrap_or_else(|message| {
                 panic!(
                     "radical_inverse({base}, {index}) panicked ({message}): every u64 index has \

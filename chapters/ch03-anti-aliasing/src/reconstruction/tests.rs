@@ -245,7 +245,7 @@ fn check(kind: PixelSamplerKind, spp: u64, filter: ReconstructionFilter) {
                 inner: sampler.clone(),
                 calls: Arc::clone(&calls),
             };
-            let got = common::test_support::catch_panic(|| {
+            let got = workbench::test_support::catch_panic(|| {
                 filtered_pixel(pixel, size, spp, &mut watched, &filter, radiance)
             })
             .unwrap_or_else(|message| {
@@ -280,7 +280,7 @@ fn check(kind: PixelSamplerKind, spp: u64, filter: ReconstructionFilter) {
              {pixel} gave {}, the film gives {}; {}",
             mine.get(pixel.x, pixel.y),
             expected.get(pixel.x, pixel.y),
-            common::test_support::image_comparison(EXERCISE, &mine, &expected)
+            workbench::test_support::image_comparison(EXERCISE, &mine, &expected)
         );
     }
     // Which slip gives the student's image? Judged on the pixels that are wrong (a slip may
@@ -318,7 +318,7 @@ fn check(kind: PixelSamplerKind, spp: u64, filter: ReconstructionFilter) {
          {pixel} gave {}, the film gives {}; {}",
         mine.get(pixel.x, pixel.y),
         expected.get(pixel.x, pixel.y),
-        common::test_support::image_comparison(EXERCISE, &mine, &expected)
+        workbench::test_support::image_comparison(EXERCISE, &mine, &expected)
     );
 }
 

@@ -130,7 +130,7 @@ fn exercise_parallelogram_light_point_is_uniform() {
             .filter_map(|u| sample_parallelogram_light(&quad, u))
             .map(|s| quad_coordinates(&quad, s.p))
             .collect();
-        let message = common::test_support::not_uniform(
+        let message = workbench::test_support::not_uniform(
             "ch07-parallelogram-light-point",
             "sample_parallelogram_light",
             "parallelogram, drawn in its edge coordinates (along e1, along e2)",
@@ -275,7 +275,7 @@ fn exercise_disc_light_point_is_uniform() {
                 Vec2::new(offset.dot(disc.tangent()), offset.dot(disc.bitangent())) / r
             })
             .collect();
-        let message = common::test_support::not_uniform(
+        let message = workbench::test_support::not_uniform(
             "ch07-disc-light-point",
             "sample_disc_light_polar",
             "disc, drawn along its tangent and bitangent in units of its radius",

@@ -192,7 +192,7 @@ fn exercise_sample_sphere_solid_angle_is_uniform_in_solid_angle() {
             .filter_map(|u| sample_sphere_solid_angle(&sphere, x, u))
             .map(|s| cone_coordinates(&sphere, x, s.p))
             .collect();
-        let message = common::test_support::not_uniform(
+        let message = workbench::test_support::not_uniform(
             SAMPLE,
             "sample_sphere_solid_angle",
             "cone, drawn as (turn about the axis, (1 - cos θ) / (1 - cos θ_max))",

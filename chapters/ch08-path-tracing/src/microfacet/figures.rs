@@ -6,12 +6,12 @@ use super::albedo;
 use super::distribution::NormalDistribution;
 use super::rough_conductor::RoughConductor;
 use ch02_monte_carlo::warps::lobe::cos_lobe_pdf;
-use common::output::OutputError;
-use common::output::figures::{Axes, Series, SeriesStyle, histogram_vs_pdf, line_plot};
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::MicrofacetDistribution;
 use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
+use workbench::output::OutputError;
+use workbench::output::figures::{Axes, Series, SeriesStyle, histogram_vs_pdf, line_plot};
 
 /// A rough conductor that reflects everything at every facet (Mitsuba's default `eta = 0`,
 /// `k = 1`): what is lost is lost to shadowing alone.

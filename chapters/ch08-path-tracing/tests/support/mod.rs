@@ -27,7 +27,7 @@ pub fn scene_file(name: &str) -> SceneFile {
     let path = ch08_path_tracing::agreement::AGREEMENT
         .scenes_dir()
         .join(name);
-    let loaded = common::scene_file::load_scene_file(&path, &[]).expect("the scene loads");
+    let loaded = workbench::scene_file::load_scene_file(&path, &[]).expect("the scene loads");
     ch08_path_tracing::CAPABILITIES
         .check(&loaded.scene)
         .expect("the chapter renders it");
@@ -118,7 +118,7 @@ pub fn grid(width: u32, height: u32, k: u32) -> Vec<Vec2> {
 pub fn render_tiny(scene: &Path, out: &Path) -> Result<common::image::Image, String> {
     let image = out.join("image.pfm");
     let stats = out.join("stats.json");
-    let output = common::test_support::run_binary(
+    let output = workbench::test_support::run_binary(
         env!("CARGO_BIN_EXE_ch08-path-tracing"),
         &[
             "render",
@@ -155,7 +155,7 @@ pub fn render_tiny(scene: &Path, out: &Path) -> Result<common::image::Image, Str
         "{}: {stderr}",
         scene.display()
     );
-    Ok(common::output::read_image(&image).unwrap())
+    Ok(workbench::output::read_image(&image).unwrap())
 }
 
 /// The image the binary's `render` makes of the scene file `text` (written to a temporary
@@ -166,7 +166,7 @@ pub fn render_text(text: &str) -> common::image::Image {
     let file = folder.path().join("scene.xml");
     std::fs::write(&file, text).unwrap();
     let image = folder.path().join("image.pfm");
-    let output = common::test_support::run_binary(
+    let output = workbench::test_support::run_binary(
         env!("CARGO_BIN_EXE_ch08-path-tracing"),
         &[
             "render",
@@ -181,5 +181,5 @@ pub fn render_text(text: &str) -> common::image::Image {
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
-    common::output::read_image(&image).unwrap()
+    workbench::output::read_image(&image).unwrap()
 }

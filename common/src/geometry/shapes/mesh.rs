@@ -58,6 +58,19 @@ pub enum MeshError {
 }
 
 impl TriangleMesh {
+    /// How many triangles use each edge, in either direction; an edge is named by its two
+    /// vertex indices, the smaller first. A closed mesh uses every edge exactly twice, which
+    /// is how tests and figures tell a closed model from one with holes.
+    pub fn edge_uses(&self) -> std::collections::HashMap<(u32, u32), usize> {
+        let mut uses = std::collections::HashMap::new();
+        for &[a, b, c] in &self.indices {
+            for (p, q) in [(a, b), (b, c), (c, a)] {
+                *uses.entry((p.min(q), p.max(q))).or_insert(0) += 1;
+            }
+        }
+        uses
+    }
+
     /// A mesh without texture coordinates, checked with [`validate`](Self::validate).
     pub fn new(
         positions: Vec<Vec3>,

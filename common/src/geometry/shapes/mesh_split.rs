@@ -58,7 +58,6 @@ mod tests {
     use glam::Vec3;
 
     use super::*;
-    use crate::test_support::mesh_files::edge_uses;
 
     /// The eight faces of the octahedron with corners on the unit axes, wound outward.
     fn octahedron() -> TriangleMesh {
@@ -88,7 +87,7 @@ mod tests {
         assert_eq!(split.indices.len(), 4 * mesh.indices.len());
         assert_eq!(
             split.positions.len(),
-            mesh.positions.len() + edge_uses(&mesh).len()
+            mesh.positions.len() + mesh.edge_uses().len()
         );
         let twice = split.split_in_four();
         assert_eq!(twice.indices.len(), 16 * mesh.indices.len());
@@ -99,7 +98,7 @@ mod tests {
         let mesh = octahedron();
         let split = mesh.split_in_four().split_in_four();
         // Every edge between exactly two triangles: no crack, no midpoint made twice.
-        assert!(edge_uses(&split).values().all(|&uses| uses == 2));
+        assert!(split.edge_uses().values().all(|&uses| uses == 2));
         assert!((area(&split) - area(&mesh)).abs() < 1e-5 * area(&mesh));
         // Outward faces stay outward: each normal points away from the centre.
         for triangle in split.triangles() {

@@ -127,5 +127,3 @@ fn checkerboard_applies_its_whole_to_uv() {
     };
     assert_eq!(board.eval(Vec2::new(0.1, 0.1)), Vec3::Y);
 }
-
-mod any_uv;

@@ -10,8 +10,8 @@ use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
 use common::render::SampleCounters;
 use common::scene::{Checkerboard, Material, PointLight, Scene, SceneBuilder, Texture};
-use common::test_support::image_comparison;
 use glam::{Vec2, Vec3};
+use workbench::test_support::image_comparison;
 
 use super::{Asked, Recording, build, close};
 use crate::camera::PinholeCamera;

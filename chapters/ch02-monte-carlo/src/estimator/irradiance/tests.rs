@@ -349,7 +349,7 @@ fn exercise_sun_and_sky_of_a_direction_on_the_horizon() {
 
 #[test]
 fn exercise_sun_and_sky_of_no_directions_is_nan() {
-    let estimate = common::test_support::catch_panic(|| {
+    let estimate = workbench::test_support::catch_panic(|| {
         estimate_irradiance(
             |_| 1.0,
             DirectionSampling::Uniform,
