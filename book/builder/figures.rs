@@ -33,12 +33,12 @@ pub const CHAPTERS: &[(&str, &str)] = &[
 /// around the exercises start without compiling any chapter.
 #[cfg(feature = "figures")]
 const WRITERS: &[WriteFigures] = &[
-    ch01_whitted::figures::write_all,
-    ch02_monte_carlo::figures::write_all,
-    ch03_anti_aliasing::figures::write_all,
-    ch04_depth_of_field::figures::write_all,
-    ch05_motion_blur::figures::write_all,
-    ch06_fuzzy_reflections::figures::write_all,
+    ch01_whitted::lab::figures::write_all,
+    ch02_monte_carlo::lab::figures::write_all,
+    ch03_anti_aliasing::lab::figures::write_all,
+    ch04_depth_of_field::lab::figures::write_all,
+    ch05_motion_blur::lab::figures::write_all,
+    ch06_fuzzy_reflections::lab::figures::write_all,
     ch07_soft_shadows::figures::write_all,
     ch08_path_tracing::figures::write_all,
 ];

@@ -13,19 +13,22 @@
 //!   [`CAPABILITIES`]: what of a scene file the chapter renders.
 //! - [`tracer`]: the recursive tracer.
 //! - [`pixel`]: where in its pixel a ray goes (the centre, or a regular grid).
-//! - [`figures`]: the chapter's figures for the book; [`agreement`]: the scenes on which it is
-//!   checked against Mitsuba 3.
+//!
+//! The chapter's workbench (its binary, the book's figures, agreement with Mitsuba 3) is
+//! `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod agreement;
 pub mod camera;
-pub mod figures;
 pub mod optics;
 pub mod pixel;
 pub mod scene;
 pub mod scenes;
 pub mod tracer;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 
 use camera::PinholeCamera;
 use common::film::PixelBoxFilter;
@@ -43,7 +46,8 @@ pub const CAPABILITIES: Capabilities = Capabilities {
 };
 
 /// Where the samples of a pixel go.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum PixelPattern {
     /// Every sample through the pixel centre: Whitted's one ray per pixel.
     Centre,

@@ -5,7 +5,8 @@ use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, Sce
 use glam::Vec3;
 
 /// The scenes `render --builtin NAME` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Builtin {
     /// Whitted's classic: a glass and a mirror sphere over a checkerboard, under two lights.
     Spheres,

@@ -1,8 +1,8 @@
 //! Agreement with Mitsuba 3's stored renders of the chapter's scenes (see
-//! `ch01_whitted::agreement`): our render at the same sample count must be as unbiased as
+//! `ch01_whitted::lab::agreement`): our render at the same sample count must be as unbiased as
 //! Mitsuba's own second render against Mitsuba's reference, and no noisier.
 
-use ch01_whitted::agreement::AGREEMENT;
+use ch01_whitted::lab::agreement::AGREEMENT;
 
 #[test]
 fn whitted_renders_agree_with_the_stored_mitsuba_renders() {

@@ -9,8 +9,11 @@
 
 pub mod chi2;
 pub mod estimator;
-pub mod figures;
 pub mod rng;
 pub mod samples;
 pub mod stratified;
 pub mod warps;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;

@@ -2,7 +2,7 @@
 //! Every number comes from fixed seeds; they are compared up to floating-point noise
 //! (`workbench::assert_close_snapshot!`), so a correct warp written differently still passes.
 
-use ch02_monte_carlo::figures::chi2_rows;
+use ch02_monte_carlo::lab::figures::chi2_rows;
 use ch02_monte_carlo::samples::samples_csv;
 use ch02_monte_carlo::warps::Warp;
 

@@ -9,24 +9,27 @@
 //! - [`pixel_samplers`]: where in its pixel each sample looks.
 //! - [`filters`]: how samples are weighted into pixels, `Σ f L / Σ f`.
 //! - [`reconstruction`]: that weighted average gathered for one pixel, as the lecture writes it.
-//! - [`scenes`], [`scene_file`]: scenes that alias, built in or read from Mitsuba 3 XML.
+//! - [`scenes`]: scenes that alias.
 //! - [`coverage`]: one pixel cut by an edge, the samplers' error in its purest form.
-//! - [`figures`]: the chapter's figures for the book.
 //!
 //! The tracer is chapter 01's, unchanged: anti-aliasing only changes which camera rays are
 //! shot and how their radiance is averaged.
+//!
+//! The chapter's workbench (its binary and options, reading a scene file's film and sampler,
+//! the book's figures, agreement with Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`,
+//! built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod agreement;
-pub mod cli;
 pub mod coverage;
-pub mod figures;
 pub mod filters;
 pub mod pixel_samplers;
 pub mod reconstruction;
-pub mod scene_file;
 pub mod scenes;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 
 pub use filters::{FilterKind, ReconstructionFilter};
 pub use pixel_samplers::{PixelSampler, PixelSamplerKind};

@@ -17,7 +17,8 @@ use glam::{Vec2, Vec3};
 pub const DEFAULT_MAX_DEPTH: u32 = 4;
 
 /// The scenes `render --builtin NAME` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Builtin {
     /// Dark bars of decreasing width and a sphere against a bright sky: jagged edges.
     Edges,

@@ -63,7 +63,8 @@ impl Aperture {
 }
 
 /// How a point of the unit disc is made from two uniform numbers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum LensWarp {
     /// Shirley and Chiu's concentric map: uniform, little distortion; Mitsuba's choice.
     Concentric,

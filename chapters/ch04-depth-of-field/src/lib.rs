@@ -10,21 +10,23 @@
 //!   drawn; the naive disc warp, kept to show what it does wrong.
 //! - [`thin_lens`]: the thin-lens camera, Mitsuba's `thinlens` sensor.
 //! - [`circle_of_confusion`]: how large a point at another depth appears.
-//! - [`scenes`]: what to look at; [`scene_file`]: the lens a scene file asks for;
-//!   [`CAPABILITIES`]: what of a scene the chapter renders.
-//! - [`figures`]: the chapter's figures for the book.
+//! - [`scenes`]: what to look at; [`CAPABILITIES`]: what of a scene the chapter renders.
+//!
+//! The chapter's workbench (its binary and lens options, the lens a scene file asks for, the
+//! book's figures, agreement with Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`,
+//! built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod agreement;
 pub mod aperture;
 pub mod circle_of_confusion;
-pub mod cli;
-pub mod figures;
 pub mod lens;
-pub mod scene_file;
 pub mod scenes;
 pub mod thin_lens;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 
 pub use aperture::{Aperture, LensWarp};
 pub use lens::Lens;

@@ -16,7 +16,8 @@ use common::scene::{Camera, FilmSettings, Scene, SceneBuilder};
 use glam::Vec3;
 
 /// The scenes `render --builtin NAME` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Builtin {
     /// Three spheres at three depths on a checkerboard, a dark wall far behind with small
     /// bright holes: the chapter's scene.

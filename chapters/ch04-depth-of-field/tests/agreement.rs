@@ -1,8 +1,8 @@
 //! Agreement with Mitsuba 3's stored renders of the chapter's scenes (see
-//! `ch04_depth_of_field::agreement`): our render at the same sample count must be as unbiased as
+//! `ch04_depth_of_field::lab::agreement`): our render at the same sample count must be as unbiased as
 //! Mitsuba's own second render against Mitsuba's reference, and no noisier.
 
-use ch04_depth_of_field::agreement::AGREEMENT;
+use ch04_depth_of_field::lab::agreement::AGREEMENT;
 
 #[test]
 fn renders_agree_with_the_stored_mitsuba_renders() {

@@ -1,9 +1,9 @@
 //! The chapter's scene files: a `thinlens` sensor with an aperture renders here (chapter 01
 //! refuses it), and its lens is the file's.
 
-use ch03_anti_aliasing::scene_file::filter_of;
+use ch03_anti_aliasing::lab::scene_file::filter_of;
 use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind};
-use ch04_depth_of_field::scene_file::lens_of;
+use ch04_depth_of_field::lab::scene_file::lens_of;
 use ch04_depth_of_field::{CAPABILITIES, render_with};
 use common::render::RenderSettings;
 use std::path::{Path, PathBuf};

@@ -15,23 +15,27 @@
 //!   shutter.
 //! - [`world`]: the scene in motion, traced by chapter 01's tracer through its `World` trait.
 //! - [`time_sampling`]: independent and stratified time samples.
-//! - [`scenes`]: what to look at; [`scene_file`]: a scene file's motion; [`figures`]: the
-//!   chapter's figures; [`CAPABILITIES`]: what of a scene the chapter renders.
+//! - [`scenes`]: what to look at; [`CAPABILITIES`]: what of a scene the chapter renders.
+//!
+//! The chapter's workbench (its binary, a scene file's motion made ready, the setup every
+//! `render` from this chapter on shares, the book's figures) is `lab`, in the folder `lab/`
+//! beside `src/`, built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod animated_transform;
-pub mod figures;
 pub mod motion_bounds;
 pub mod moving;
 pub mod object_space;
-pub mod render_setup;
-pub mod scene_file;
 pub mod scenes;
 pub mod shutter;
 pub mod shutter_opening;
 pub mod time_sampling;
 pub mod world;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 
 pub use animated_transform::AnimatedTransform;
 pub use moving::{MovingObjects, MovingShape};

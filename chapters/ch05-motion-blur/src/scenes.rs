@@ -20,7 +20,8 @@ use common::scene::{
 use glam::{Mat4, Vec2, Vec3};
 
 /// The scenes `render --builtin NAME` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Builtin {
     /// A fast and a slow sphere, a spinning cube and a mirror: the chapter's scene.
     Street,

@@ -29,7 +29,8 @@ impl TimeSampler for IndependentSampler {}
 impl TimeSampler for PixelSampler {}
 
 /// The two ways of drawing time.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum TimeSampling {
     /// Each sample's time on its own.
     Independent,

@@ -23,7 +23,8 @@ use common::sampler::Sampler;
 use glam::{Vec2, Vec3};
 
 /// What to do with a sampled direction on the wrong side of the surface.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum BelowSurface {
     /// Ignore the sample: it carries no light.
     Drop,

@@ -27,7 +27,8 @@
 use glam::{Vec2, Vec3};
 
 /// How a fuzzy surface spreads its directions.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum FuzzMethod {
     /// The `cos^n` lobe around the ideal direction, with its proper weight.
     Lobe,

@@ -18,7 +18,8 @@
 //! run time.
 
 /// How a tracer chooses between the reflected and the refracted ray.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum GlassStrategy {
     /// Trace both rays (Whitted's method): exponential in the depth.
     Both,

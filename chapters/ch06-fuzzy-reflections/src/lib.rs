@@ -12,15 +12,15 @@
 //! - [`highlights`]: the point lights seen in a fuzzy mirror.
 //! - [`lighting`]: the hook through which chapter 07 adds lights with an area.
 //! - [`tracer`]: the recursive tracer with random choices.
-//! - [`scenes`]: what to look at; [`figures`]: the chapter's figures; [`CAPABILITIES`]: what
-//!   of a scene the chapter renders (rough materials of a scene file as `cos^n` lobes).
+//! - [`scenes`]: what to look at; [`CAPABILITIES`]: what of a scene the chapter renders
+//!   (rough materials of a scene file as `cos^n` lobes).
+//!
+//! The chapter's workbench (its binary and options, the book's figures, agreement with
+//! Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod agreement;
 pub mod below_surface;
-pub mod cli;
-pub mod figures;
 pub mod furnace;
 pub mod fuzz;
 pub mod glass_choice;
@@ -28,6 +28,10 @@ pub mod highlights;
 pub mod lighting;
 pub mod scenes;
 pub mod tracer;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 
 pub use below_surface::BelowSurface;
 pub use fuzz::FuzzMethod;

@@ -19,7 +19,8 @@ use common::scene::{
 use glam::{Vec2, Vec3};
 
 /// The scenes `render --builtin NAME` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Builtin {
     /// A glossy floor reflecting balls, a wall and a lamp: the chapter's scene.
     Floor,

@@ -1,11 +1,11 @@
 //! Agreement with Mitsuba 3's stored renders of the chapter's scenes (see
-//! `ch06_fuzzy_reflections::agreement`): our render at the same sample count must be as
+//! `ch06_fuzzy_reflections::lab::agreement`): our render at the same sample count must be as
 //! unbiased as Mitsuba's own second render against Mitsuba's reference, and no noisier. Every
 //! way of choosing the ray at glass is held to the first; the second only to the choice
 //! Mitsuba makes itself (by the Fresnel term): the other two are noisier by design.
 
 use ch06_fuzzy_reflections::GlassStrategy;
-use ch06_fuzzy_reflections::agreement::{AGREEMENT, render_scene_file_with};
+use ch06_fuzzy_reflections::lab::agreement::{AGREEMENT, render_scene_file_with};
 use workbench::agreement::{BIAS_SLACK, ReferenceRenders};
 
 #[test]

@@ -2,7 +2,7 @@
 //! how), and broken or unknown materials refused with the shape they belong to.
 
 use ch06_fuzzy_reflections::CAPABILITIES;
-use ch06_fuzzy_reflections::agreement::AGREEMENT;
+use ch06_fuzzy_reflections::lab::agreement::AGREEMENT;
 use common::scene::Material;
 use common::scene::Scene;
 use workbench::scene_file::{load_scene_file, parse_scene};

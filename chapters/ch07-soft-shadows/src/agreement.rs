@@ -7,7 +7,7 @@
 //! sampling; we send one shadow ray per light, so the noise differs a little, the mean not.
 
 use crate::{LightOptions, render_with};
-use ch05_motion_blur::scene_file::for_agreement;
+use ch05_motion_blur::lab::scene_file::for_agreement;
 use ch06_fuzzy_reflections::TraceOptions;
 use common::image::Image;
 use std::path::Path;

@@ -14,7 +14,8 @@ use ch02_monte_carlo::warps::{
 use glam::Vec2;
 
 /// How a point of a disc light is made from two uniform numbers.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum DiscWarp {
     /// Shirley and Chiu's concentric map: uniform, little distortion (Mitsuba's and pbrt's
     /// choice, and the default).

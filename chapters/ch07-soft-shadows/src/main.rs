@@ -1,8 +1,8 @@
 //! `ch07-soft-shadows`: render a scene with area lights and soft shadows, or write the
 //! chapter's figures.
 
-use ch05_motion_blur::render_setup::CameraArgs;
-use ch06_fuzzy_reflections::cli::FuzzyArgs;
+use ch05_motion_blur::lab::render_setup::CameraArgs;
+use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch07_soft_shadows::cli::LightArgs;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
 use ch07_soft_shadows::{AreaLights, CAPABILITIES};

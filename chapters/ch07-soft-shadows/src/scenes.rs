@@ -19,7 +19,8 @@ use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, Sce
 use glam::Vec3;
 
 /// The scenes `render --builtin NAME` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Builtin {
     /// The lecture's small light: a panel 0.25 wide, nearly hard shadows.
     Small,

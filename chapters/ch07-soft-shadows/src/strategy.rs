@@ -12,7 +12,8 @@ use crate::light_sample::LightSample;
 use crate::solid_angle::sample_sphere_solid_angle;
 
 /// How points are chosen on a sphere light.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Strategy {
     /// Uniformly over the light's whole surface. Simple, and for a sphere wasteful: the half
     /// facing away from the receiver gets half the samples and contributes nothing.

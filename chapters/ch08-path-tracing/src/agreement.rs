@@ -7,7 +7,7 @@
 
 use crate::scene_file::path_options;
 use crate::{Method, render_with};
-use ch05_motion_blur::scene_file::for_agreement;
+use ch05_motion_blur::lab::scene_file::for_agreement;
 use common::image::Image;
 use std::path::Path;
 use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_VARIANT};

@@ -1,7 +1,7 @@
 //! `ch08-path-tracing`: path-trace a scene file, or write the chapter's figures.
 
-use ch05_motion_blur::render_setup::CameraArgs;
-use ch06_fuzzy_reflections::cli::FuzzyArgs;
+use ch05_motion_blur::lab::render_setup::CameraArgs;
+use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
 use ch07_soft_shadows::AreaLights;
 use ch07_soft_shadows::cli::LightArgs;

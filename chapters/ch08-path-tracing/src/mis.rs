@@ -10,7 +10,8 @@
 //! better still when one density is much larger, and is what Mitsuba 3 and pbrt use.
 
 /// How the two estimators of the same light are combined.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum MisHeuristic {
     /// No combination: light found by BSDF rays at non-delta surfaces is ignored, the light
     /// sample alone counts (plain next-event estimation).

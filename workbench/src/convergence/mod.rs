@@ -8,6 +8,8 @@ mod csv;
 mod plots;
 mod runner;
 
+/// The record each measurement writes (plain data, in `common`, since lectures write it too).
+pub use common::metrics::ConvergenceRecord;
 pub use csv::{CONVERGENCE_CSV_HEADER, write_convergence_csv};
 pub use plots::{plot_error_vs_spp, plot_error_vs_time, series_by_technique};
-pub use runner::{ConvergenceRecord, Technique, convergence_markdown, run_convergence};
+pub use runner::{Technique, convergence_markdown, run_convergence};

@@ -8,25 +8,8 @@
 
 use std::time::Instant;
 
-use serde::{Deserialize, Serialize};
-
 use common::image::Image;
-use common::metrics::{relmse, rmse};
-
-/// One render of one technique at one budget: how long it took and how wrong it was.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ConvergenceRecord {
-    /// Which technique rendered it.
-    pub technique: String,
-    /// Samples per pixel asked for.
-    pub spp: u64,
-    /// Wall-clock seconds the render took.
-    pub seconds: f64,
-    /// Root-mean-square error against the reference.
-    pub rmse: f64,
-    /// Relative mean squared error against the reference.
-    pub relmse: f64,
-}
+use common::metrics::{ConvergenceRecord, relmse, rmse};
 
 /// A named way of rendering the scene, as a function from samples per pixel to an image.
 ///

@@ -6,7 +6,7 @@
 //! for stratified sampling of a smooth integrand. Error against *time* decides which strategy
 //! is worth it: a strategy that costs more per sample must win by more than it costs.
 
-use workbench::convergence::ConvergenceRecord;
+use common::metrics::ConvergenceRecord;
 
 use super::{Integrand, Strategy};
 

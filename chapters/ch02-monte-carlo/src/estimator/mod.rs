@@ -11,7 +11,6 @@
 //! | [`variance`](sample_mean_and_variance) | measuring the noise of an estimator over repeated runs |
 //! | [`irradiance`](estimate_irradiance) | the capstone: a sun and a sky, warps, densities, a standard error |
 //! | [`convergence`](convergence()) | error against samples and time, and its slope |
-//! | [`plots`](plot_error_vs_n_with_slope) | the figures and the table of a convergence experiment |
 //!
 //! The statistical tests of this module check the theory, not just the code: every strategy
 //! is unbiased, the cosine-weighted irradiance estimator has zero variance, the error of
@@ -21,7 +20,6 @@ mod convergence;
 mod integrand;
 mod irradiance;
 mod monte_carlo;
-mod plots;
 mod strategy;
 mod variance;
 
@@ -35,7 +33,6 @@ pub use integrand::{
 };
 pub use irradiance::{DirectionSampling, Estimate, SunAndSky, estimate_irradiance};
 pub use monte_carlo::{estimate, estimate_uniform};
-pub use plots::{inverse_sqrt_reference, plot_error_vs_n_with_slope, save_convergence};
 pub use strategy::Strategy;
 pub use variance::{
     estimator_variance, repeated_estimates, repetition_rng, sample_mean_and_variance,

@@ -16,19 +16,20 @@ use rand_pcg::Pcg32;
 use super::{Minstd, Randu};
 
 /// Which random number generator: a name for the command line, figures and tables.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum Generator {
     /// IBM's RANDU: `x <- 65539 x mod 2^31`. Its triples lie on 15 planes.
-    #[value(name = "randu")]
+    #[cfg_attr(feature = "lab", value(name = "randu"))]
     Randu,
     /// Park and Miller's MINSTD: `x <- 16807 x mod (2^31 - 1)`.
-    #[value(name = "minstd")]
+    #[cfg_attr(feature = "lab", value(name = "minstd"))]
     Minstd,
     /// The 32-bit Mersenne Twister, MT19937.
-    #[value(name = "mt19937")]
+    #[cfg_attr(feature = "lab", value(name = "mt19937"))]
     Mt19937,
     /// O'Neill's PCG32 (XSH RR output on a 64-bit LCG), as in the renderer's sampler.
-    #[value(name = "pcg32")]
+    #[cfg_attr(feature = "lab", value(name = "pcg32"))]
     Pcg32,
 }
 
@@ -134,10 +135,12 @@ impl TryRng for Source {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[cfg(feature = "lab")]
     use clap::ValueEnum;
     use rand::Rng;
 
     #[test]
+    #[cfg(feature = "lab")]
     fn names_round_trip_through_the_command_line_parser() {
         for generator in Generator::ALL {
             assert_eq!(

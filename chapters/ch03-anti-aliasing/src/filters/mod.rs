@@ -28,7 +28,8 @@ pub const MAX_RADIUS: f32 = 16.0;
 pub const WEIGHT_QUANTUM: f32 = 1.0 / (1u32 << 20) as f32;
 
 /// The command-line names of the filters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum FilterKind {
     /// The plain average (radius 1/2: only the pixel's own samples).
     Box,

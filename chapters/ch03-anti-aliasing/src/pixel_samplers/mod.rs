@@ -35,7 +35,8 @@ use glam::{UVec2, Vec2};
 pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 
 /// The command-line names of the strategies.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum PixelSamplerKind {
     /// Every sample at the pixel centre (chapter 01): aliasing that more samples cannot fix.
     Centre,

@@ -1,11 +1,12 @@
 //! `ch04-depth-of-field`: render through a thin lens, or write the chapter's figures.
 
-use ch03_anti_aliasing::cli::AntiAliasingArgs;
+use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Aperture;
-use ch04_depth_of_field::cli::LensArgs;
-use ch04_depth_of_field::scene_file::read_with_camera_side;
+use ch04_depth_of_field::lab::cli::LensArgs;
+use ch04_depth_of_field::lab::figures;
+use ch04_depth_of_field::lab::scene_file::read_with_camera_side;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
-use ch04_depth_of_field::{CAPABILITIES, figures, render_with};
+use ch04_depth_of_field::{CAPABILITIES, render_with};
 use std::process::ExitCode;
 use workbench::cli::RenderArgs;
 

@@ -7,9 +7,9 @@
 
 use crate::chi2::{Chi2Result, chi2_test, significance_level};
 use crate::estimator::{
-    Strategy, convergence, convergence_rate, peaked_quartic, save_convergence, sky_irradiance,
-    x_squared,
+    Strategy, convergence, convergence_rate, peaked_quartic, sky_irradiance, x_squared,
 };
+use crate::lab::plots::save_convergence;
 use crate::rng::{
     Generator, consecutive_triples, fraction_on_randu_planes, numbers_per_second,
     randu_plane_index, serial_chi2_3d, uniformity_chi2,

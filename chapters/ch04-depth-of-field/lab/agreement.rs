@@ -4,8 +4,8 @@
 //! chapter computes exactly, seen through Mitsuba's `thinlens` sensor: the same lens model
 //! (a disc sampled with the concentric map, focused on a plane) must give the same blur.
 
+use crate::lab::scene_file::for_agreement;
 use crate::render_with;
-use crate::scene_file::for_agreement;
 use common::image::Image;
 use std::path::Path;
 use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_VARIANT};

@@ -1,10 +1,11 @@
 //! `ch06-fuzzy-reflections`: render a scene with rough mirrors and frosted glass, or write the
 //! chapter's figures.
 
-use ch05_motion_blur::render_setup::CameraArgs;
-use ch06_fuzzy_reflections::cli::FuzzyArgs;
+use ch05_motion_blur::lab::render_setup::CameraArgs;
+use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
+use ch06_fuzzy_reflections::lab::figures;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
-use ch06_fuzzy_reflections::{CAPABILITIES, PointLights, figures, render_with};
+use ch06_fuzzy_reflections::{CAPABILITIES, PointLights, render_with};
 use std::process::ExitCode;
 
 #[derive(clap::Args, Debug)]

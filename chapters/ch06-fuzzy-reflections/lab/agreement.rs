@@ -8,7 +8,7 @@
 //! `cos^n` lobes of about the same width, and the book shows how far apart they are.
 
 use crate::{GlassStrategy, PointLights, TraceOptions, render_with};
-use ch05_motion_blur::scene_file::for_agreement;
+use ch05_motion_blur::lab::scene_file::for_agreement;
 use common::image::Image;
 use std::path::Path;
 use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_VARIANT};

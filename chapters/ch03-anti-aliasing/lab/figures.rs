@@ -66,7 +66,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("the error-against-time figures", |out| {
         convergence(out, &quality)
     })?;
-    figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.agreement(&crate::lab::agreement::AGREEMENT)?;
     figures.make("the wider tent against Mitsuba 3", wider_tent)?;
     figures.finish()
 }
@@ -416,7 +416,7 @@ fn convergence_table(records: &[workbench::convergence::ConvergenceRecord]) -> S
 /// that is only slightly too wide, as Mitsuba's tabulated filter is (`mitsuba_wider_tent.md`).
 fn wider_tent(out: &Path) -> anyhow::Result<()> {
     use workbench::agreement::ReferenceRenders;
-    let set = &crate::agreement::AGREEMENT;
+    let set = &crate::lab::agreement::AGREEMENT;
     let scene_entry = set
         .scenes
         .iter()
@@ -425,7 +425,7 @@ fn wider_tent(out: &Path) -> anyhow::Result<()> {
     let path = set.file(scene_entry);
     let renders = ReferenceRenders::load(&set.stored_renders_dir(), scene_entry.name)?;
     let (scene, film, settings, sampler) =
-        crate::scene_file::for_agreement(&path, &crate::CAPABILITIES)
+        crate::lab::scene_file::for_agreement(&path, &crate::CAPABILITIES)
             .map_err(anyhow::Error::msg)?;
     let radius = film.filter.half_width();
     let wider = ReconstructionFilter::new(film.filter.kind(), Some(1.1 * radius))

@@ -89,7 +89,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("the error-against-time figures", |out| {
         convergence(out, &quality, &scene)
     })?;
-    figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.agreement(&crate::lab::agreement::AGREEMENT)?;
     figures.make("the naive warp against Mitsuba 3", naive_against_mitsuba)?;
     figures.finish()
 }
@@ -531,7 +531,7 @@ fn convergence_sentence(records: &[workbench::convergence::ConvergenceRecord]) -
 /// stored renders: the comparison catches the wrong density (`mitsuba_naive.md`).
 fn naive_against_mitsuba(out: &Path) -> anyhow::Result<()> {
     use workbench::agreement::ReferenceRenders;
-    let set = &crate::agreement::AGREEMENT;
+    let set = &crate::lab::agreement::AGREEMENT;
     let mut text = String::from(
         "| scene | lens warp | RMSE ours | RMSE Mitsuba | bias_blocks ours | bias_blocks Mitsuba | the check |\n\
          |---|---|---:|---:|---:|---:|---|\n",
@@ -539,7 +539,7 @@ fn naive_against_mitsuba(out: &Path) -> anyhow::Result<()> {
     for entry in set.scenes {
         let renders = ReferenceRenders::load(&set.stored_renders_dir(), entry.name)?;
         let (scene, side, settings, sampler) =
-            crate::scene_file::for_agreement(&set.file(entry), &crate::CAPABILITIES)
+            crate::lab::scene_file::for_agreement(&set.file(entry), &crate::CAPABILITIES)
                 .map_err(anyhow::Error::msg)?;
         for warp in [side.lens.warp, LensWarp::Naive] {
             let lens = side.lens.with_warp(warp);

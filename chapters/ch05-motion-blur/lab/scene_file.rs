@@ -9,7 +9,7 @@
 
 use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
-pub use ch04_depth_of_field::scene_file::{CameraSide, read_with_camera_side};
+pub use ch04_depth_of_field::lab::scene_file::{CameraSide, read_with_camera_side};
 use common::render::RenderSettings;
 use common::scene::{Capabilities, Scene};
 use std::path::Path;
@@ -32,14 +32,14 @@ pub fn motion_of(scene: Scene) -> Result<(MotionScene, Option<String>), String> 
 // ANCHOR_END: motion_of
 
 /// A scene file as a chapter checks it against Mitsuba 3 (chapter 04's
-/// [`for_agreement`](ch04_depth_of_field::scene_file::for_agreement)), its motion made ready;
+/// [`for_agreement`](ch04_depth_of_field::lab::scene_file::for_agreement)), its motion made ready;
 /// errors name the file.
 pub fn for_agreement(
     path: &Path,
     capabilities: &Capabilities,
 ) -> Result<(MotionScene, CameraSide, RenderSettings, PixelSampler), String> {
     let (scene, side, settings, sampler) =
-        ch04_depth_of_field::scene_file::for_agreement(path, capabilities)?;
+        ch04_depth_of_field::lab::scene_file::for_agreement(path, capabilities)?;
     let (world, _) = motion_of(scene).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok((world, side, settings, sampler))
 }

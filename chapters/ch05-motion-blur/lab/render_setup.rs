@@ -4,13 +4,13 @@
 //! the file and the command line. A chapter's `main.rs` then holds only its own options and
 //! what its tracer does with them.
 
-use crate::scene_file::{motion_for_render, read_with_camera_side};
+use crate::lab::scene_file::{motion_for_render, read_with_camera_side};
 use crate::time_sampling::{StratifiedTime, TimeSampling};
 use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
-use ch03_anti_aliasing::cli::{AntiAliasingArgs, FilmSetup};
+use ch03_anti_aliasing::lab::cli::{AntiAliasingArgs, FilmSetup};
 use ch04_depth_of_field::Lens;
-use ch04_depth_of_field::cli::LensArgs;
+use ch04_depth_of_field::lab::cli::LensArgs;
 use common::scene::{Capabilities, Scene};
 use workbench::cli::{CliError, RenderArgs};
 

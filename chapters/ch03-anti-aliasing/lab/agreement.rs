@@ -8,8 +8,8 @@
 //! from its JIT variant, which evaluates the filter exactly as we do (see
 //! `workbench::agreement::MITSUBA_JIT_VARIANT`).
 
+use crate::lab::scene_file::for_agreement;
 use crate::render_with;
-use crate::scene_file::for_agreement;
 use common::image::Image;
 use std::path::Path;
 use workbench::agreement::{AgreementScene, AgreementSet, MITSUBA_JIT_VARIANT};

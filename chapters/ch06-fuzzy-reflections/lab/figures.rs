@@ -3,11 +3,11 @@
 //! directions go), lobe samples, the ray count of "trace both" against the depth, the three
 //! glass strategies at equal time, error against time, and the agreement with Mitsuba 3.
 
-use crate::agreement::AGREEMENT;
 use crate::below_surface::BelowSurface;
 use crate::furnace::{incoming, mean_radiance, white_floor};
 use crate::fuzz::FuzzMethod;
 use crate::glass_choice::GlassStrategy;
+use crate::lab::agreement::AGREEMENT;
 use crate::lighting::PointLights;
 use crate::render_with;
 use crate::scenes::{Builtin, DEFAULT_DEPTH};

@@ -1,7 +1,7 @@
 //! `ch02-monte-carlo`: the chapter's figures, and warped samples as CSV.
 
 use anyhow::Context;
-use ch02_monte_carlo::figures;
+use ch02_monte_carlo::lab::figures;
 use ch02_monte_carlo::samples::samples_csv;
 use ch02_monte_carlo::warps::Warp;
 use clap::{Parser, Subcommand};

@@ -7,7 +7,7 @@
 
 use crate::lens::Lens;
 use ch03_anti_aliasing::PixelSampler;
-use ch03_anti_aliasing::scene_file::{FilmSide, read_with_film_side};
+use ch03_anti_aliasing::lab::scene_file::{FilmSide, read_with_film_side};
 use common::render::RenderSettings;
 use common::scene::{Camera, CameraModel, Capabilities, Scene};
 use std::path::Path;
@@ -54,14 +54,14 @@ pub fn read_with_camera_side(
 }
 
 /// A scene file as a chapter checks it against Mitsuba 3 (chapter 03's
-/// [`for_agreement`](ch03_anti_aliasing::scene_file::for_agreement)), with its lens; errors
+/// [`for_agreement`](ch03_anti_aliasing::lab::scene_file::for_agreement)), with its lens; errors
 /// name the file.
 pub fn for_agreement(
     path: &Path,
     capabilities: &Capabilities,
 ) -> Result<(Scene, CameraSide, RenderSettings, PixelSampler), String> {
     let (scene, film, settings, sampler) =
-        ch03_anti_aliasing::scene_file::for_agreement(path, capabilities)?;
+        ch03_anti_aliasing::lab::scene_file::for_agreement(path, capabilities)?;
     let lens = lens_of(&scene.camera).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok((scene, CameraSide { lens, film }, settings, sampler))
 }

@@ -6,7 +6,7 @@
 //! (`ray_tree.md`, `convergence.md`, `speed.md`, `mitsuba-noise.md`, `bvh-cost.md`) that the
 //! pages include, so the text always matches the figures beside it, quick or full.
 
-use crate::agreement::AGREEMENT;
+use crate::lab::agreement::AGREEMENT;
 use crate::optics::fresnel_dielectric;
 use crate::pixel::{CentreSampler, GridSampler};
 use crate::scenes::Builtin;

@@ -5,8 +5,8 @@
 //! mean the same everywhere and are checked in one place.
 
 use crate::filters::{FilterKind, ReconstructionFilter, check_radius};
+use crate::lab::scene_file::FilmSide;
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
-use crate::scene_file::FilmSide;
 use common::render::{Budget, RenderSettings};
 use workbench::cli::RenderArgs;
 

@@ -1,0 +1,9 @@
+//! The chapter's workbench, apart from its lecture: the lens options of the command line
+//! (`cli`), the lens a scene file's camera asks for (`scene_file`), the book's figures and the
+//! scenes on which the chapter is checked against Mitsuba 3. Built with the `lab` feature (on by
+//! default); the library without it is the lecture alone.
+
+pub mod agreement;
+pub mod cli;
+pub mod figures;
+pub mod scene_file;
