@@ -39,8 +39,8 @@ const WRITERS: &[WriteFigures] = &[
     ch04_depth_of_field::lab::figures::write_all,
     ch05_motion_blur::lab::figures::write_all,
     ch06_fuzzy_reflections::lab::figures::write_all,
-    ch07_soft_shadows::figures::write_all,
-    ch08_path_tracing::figures::write_all,
+    ch07_soft_shadows::lab::figures::write_all,
+    ch08_path_tracing::lab::figures::write_all,
 ];
 
 /// The name of the table of every figure's cost, beside the chapters' folders.

@@ -24,18 +24,16 @@
 //!   many rays each light gets.
 //! - [`lighting`], [`scene`]: chapter 06's tracer lit by a scene's area lights;
 //!   [`render_with`].
-//! - [`scenes`], [`agreement`], [`CAPABILITIES`]: what to look at, the check against
-//!   Mitsuba 3, what of a scene the chapter renders; [`cli`]: the light options of `render`;
-//!   [`figures`]: the chapter's figures.
+//! - [`scenes`], [`CAPABILITIES`]: what to look at, what of a scene the chapter renders.
+//!
+//! The chapter's workbench (its binary and light options, the book's figures, agreement with
+//! Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod agreement;
 pub mod area_sampling;
-pub mod cli;
 pub mod disc_warp;
 pub mod estimator;
-pub mod figures;
 pub mod light;
 pub mod light_options;
 pub mod light_sample;
@@ -47,6 +45,10 @@ pub mod scene;
 pub mod scenes;
 pub mod solid_angle;
 pub mod strategy;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 
 #[cfg(test)]
 pub(crate) mod test_support;

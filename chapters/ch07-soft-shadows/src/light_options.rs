@@ -18,7 +18,8 @@ use glam::Vec2;
 pub const MAX_LIGHT_SAMPLES: u32 = 4096;
 
 /// Whether one receiver's points on a light are stratified.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "lab", derive(clap::ValueEnum))]
 pub enum LightStrata {
     /// A jittered `k x k` grid for `N = k²` points, a Latin hypercube for other `N`.
     #[default]

@@ -9,7 +9,7 @@
 //! `scenes/mitsuba/` that the test `agreement` and the book compare against;
 //! `AGREEMENT_ONLY=name1,name2` keeps to those scenes.
 
-use ch07_soft_shadows::agreement::AGREEMENT;
+use ch07_soft_shadows::lab::agreement::AGREEMENT;
 use workbench::agreement::refresh_agreement_from_env;
 
 #[test]

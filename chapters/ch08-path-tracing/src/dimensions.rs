@@ -41,13 +41,6 @@ pub struct DimensionStats {
     pub paths: u64,
 }
 
-impl DimensionStats {
-    /// The JSON object `--stats` writes: `{"mean": .., "max": .., "paths": ..}`.
-    pub fn to_json(&self) -> serde_json::Value {
-        serde_json::json!({ "mean": self.mean, "max": self.max, "paths": self.paths })
-    }
-}
-
 impl DimensionTally {
     /// The mean and maximum so far (0 and 0 before any sample).
     pub fn stats(&self) -> DimensionStats {

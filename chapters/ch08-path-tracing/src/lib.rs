@@ -19,20 +19,19 @@
 //!   [`render_distribution`].
 //! - [`microfacet`]: beyond the lecture, Mitsuba 3's `roughconductor`, `roughdielectric` and
 //!   `roughplastic` (Beckmann and GGX, visible-normal sampling), in the local frame.
-//! - [`scene_file`], [`agreement`], [`CAPABILITIES`]: the path options of a scene file, the
-//!   check against Mitsuba 3's `path`, what of a scene the chapter renders;
-//!   [`furnace`]: the white furnace; [`cli`]: the options of `render`; [`figures`].
+//! - [`CAPABILITIES`]: what of a scene the chapter renders; [`furnace`]: the white furnace.
+//!
+//! The chapter's workbench (its binary and options, a scene file's path options, the book's
+//! figures, agreement with Mitsuba 3's `path`) is `lab`, in the folder `lab/` beside `src/`,
+//! built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod agreement;
 pub mod bsdf;
-pub mod cli;
 pub mod dimensions;
 pub mod direct;
 pub mod distribution;
 pub mod environment;
-pub mod figures;
 pub mod furnace;
 pub mod lights;
 pub mod microfacet;
@@ -41,7 +40,10 @@ pub mod nee;
 pub mod options;
 pub mod path;
 pub mod roulette;
-pub mod scene_file;
+
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 
 pub use bsdf::{Bsdf, BsdfSample};
 pub use distribution::{DistributionOptions, DistributionTracer, render_distribution};

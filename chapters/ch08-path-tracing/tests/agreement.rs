@@ -1,5 +1,5 @@
 //! Agreement with Mitsuba 3's stored renders of the chapter's scenes (see
-//! `ch08_path_tracing::agreement`): our render at the same sample count must be as unbiased as
+//! `ch08_path_tracing::lab::agreement`): our render at the same sample count must be as unbiased as
 //! Mitsuba's own second render against Mitsuba's reference, and no noisier.
 //!
 //! The quick figures are checked here too, in the same process, because they show the same
@@ -9,7 +9,7 @@
 
 use std::path::Path;
 
-use ch08_path_tracing::agreement::AGREEMENT;
+use ch08_path_tracing::lab::agreement::AGREEMENT;
 
 #[test]
 fn renders_agree_with_the_stored_mitsuba_renders() {
@@ -31,7 +31,7 @@ fn included_markdown(page: &str) -> Vec<String> {
 fn the_quick_figures_write_every_markdown_file_the_pages_include() {
     let book = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../book/src");
     let out = tempfile::tempdir().unwrap();
-    ch08_path_tracing::figures::write_all(out.path(), true).unwrap();
+    ch08_path_tracing::lab::figures::write_all(out.path(), true).unwrap();
     let mut checked = 0;
     for page in [
         "ch08-path-tracing.md",

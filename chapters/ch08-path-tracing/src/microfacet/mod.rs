@@ -15,7 +15,9 @@
 //!   `roughdielectric`, `roughplastic`.
 //! - [`local`]: the one trait the three share; [`albedo`]: `∫ f cos θ` by quadrature over the
 //!   facets, for the tests and the furnace figure.
-//! - [`figures`]: the `cos^n` lobe against GGX and Beckmann; the white furnace.
+//!
+//! The figures (the `cos^n` lobe against GGX and Beckmann, the white furnace, the samplers'
+//! chi-square table) are the chapter's workbench, `lab`.
 //!
 //! Where this differs from Mitsuba, on purpose: Beckmann's visible slopes are inverted in
 //! double precision (and kept inside the domain of `erf⁻¹` at grazing incidence, where
@@ -27,10 +29,8 @@
 //! scattering, so rough surfaces lose energy as Mitsuba's do (see the furnace figure).
 
 pub mod albedo;
-pub mod chi2_table;
 pub mod coating;
 pub mod distribution;
-pub mod figures;
 pub mod fresnel;
 pub mod gauss_legendre;
 pub mod local;

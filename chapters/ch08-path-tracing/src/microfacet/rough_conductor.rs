@@ -26,6 +26,18 @@ pub struct RoughConductor {
 }
 
 impl RoughConductor {
+    /// A rough conductor that reflects everything at every facet (Mitsuba's default `eta = 0`,
+    /// `k = 1`): what it loses it loses to shadowing alone, which is what the white furnace
+    /// measures.
+    pub fn white(kind: common::scene::MicrofacetDistribution, alpha: f32) -> Self {
+        Self {
+            distribution: NormalDistribution::isotropic(kind, alpha),
+            eta: Vec3::ZERO,
+            k: Vec3::ONE,
+            specular_reflectance: Vec3::ONE,
+        }
+    }
+
     // ANCHOR: rough_conductor_eval
     /// `f(wo, wi) cos θ_i`.
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {

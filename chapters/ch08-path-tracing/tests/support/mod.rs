@@ -24,7 +24,7 @@ pub struct SceneFile {
 
 /// The chapter's scene file `name`.
 pub fn scene_file(name: &str) -> SceneFile {
-    let path = ch08_path_tracing::agreement::AGREEMENT
+    let path = ch08_path_tracing::lab::agreement::AGREEMENT
         .scenes_dir()
         .join(name);
     let loaded = workbench::scene_file::load_scene_file(&path, &[]).expect("the scene loads");
@@ -32,7 +32,7 @@ pub fn scene_file(name: &str) -> SceneFile {
         .check(&loaded.scene)
         .expect("the chapter renders it");
     SceneFile {
-        options: ch08_path_tracing::scene_file::path_options(&loaded.scene),
+        options: ch08_path_tracing::lab::scene_file::path_options(&loaded.scene),
         world: MotionScene::new(loaded.scene).expect("its motion is valid"),
     }
 }

@@ -1,6 +1,5 @@
 use super::direction;
 use crate::microfacet::albedo;
-use crate::microfacet::figures::white_conductor;
 use crate::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
     RoughPlasticParameters,
@@ -195,7 +194,7 @@ fn conductors_and_plastics_are_reciprocal() {
 fn a_white_rough_mirror_keeps_at_most_all_the_light_and_nearly_all_when_smooth() {
     for kind in [Beckmann, Ggx] {
         for alpha in [0.01, 0.1, 0.5, 1.0] {
-            let bsdf = white_conductor(kind, alpha);
+            let bsdf = RoughConductor::white(kind, alpha);
             for theta in [0.0, 45.0, 80.0] {
                 let wo = direction(theta, 0.0);
                 let albedo = albedo::reflected(wo, alpha, |wi| bsdf.eval(wo, wi)).x;

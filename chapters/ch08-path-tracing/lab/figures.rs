@@ -24,15 +24,15 @@
 //!
 //! The quick level renders thumbnails at few samples, for CI.
 
-use crate::agreement::AGREEMENT;
 use crate::dimensions::render_counted;
 use crate::distribution::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
 use crate::distribution::{DistributionOptions, render_distribution};
-use crate::microfacet::chi2_table;
-use crate::microfacet::figures as mf_figures;
+use crate::lab::agreement::AGREEMENT;
+use crate::lab::microfacet_chi2_table as chi2_table;
+use crate::lab::microfacet_figures as mf_figures;
+use crate::lab::scene_file::path_options;
 use crate::mis::MisHeuristic;
 use crate::options::PathOptions;
-use crate::scene_file::path_options;
 use crate::{Method, render_with};
 use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;

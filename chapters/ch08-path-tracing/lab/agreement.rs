@@ -5,7 +5,7 @@
 //! point light and the environment. Both renderers pick one light uniformly and combine light
 //! and BSDF samples with the power heuristic, so even the noise should be alike.
 
-use crate::scene_file::path_options;
+use crate::lab::scene_file::path_options;
 use crate::{Method, render_with};
 use ch05_motion_blur::lab::scene_file::for_agreement;
 use common::image::Image;

@@ -59,7 +59,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("the estimator's measurements", |out| {
         measurements(out, level)
     })?;
-    figures.agreement(&crate::agreement::AGREEMENT)?;
+    figures.agreement(&crate::lab::agreement::AGREEMENT)?;
     figures.finish()
 }
 

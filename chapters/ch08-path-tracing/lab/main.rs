@@ -4,11 +4,12 @@ use ch05_motion_blur::lab::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
 use ch07_soft_shadows::AreaLights;
-use ch07_soft_shadows::cli::LightArgs;
-use ch08_path_tracing::cli::PathArgs;
+use ch07_soft_shadows::lab::cli::LightArgs;
 use ch08_path_tracing::dimensions::render_counted;
-use ch08_path_tracing::scene_file::path_options;
-use ch08_path_tracing::{CAPABILITIES, Method, figures};
+use ch08_path_tracing::lab::cli::PathArgs;
+use ch08_path_tracing::lab::figures;
+use ch08_path_tracing::lab::scene_file::path_options;
+use ch08_path_tracing::{CAPABILITIES, Method};
 use common::scene::Scene;
 use std::process::ExitCode;
 
@@ -103,7 +104,12 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     extra["point_lights"] = world.scene.point_lights.len().into();
     command.fuzzy.record_stats(&mut extra);
     if let Some(dimensions) = dimensions {
-        extra["dimensions_per_path"] = dimensions.to_json();
+        // What `--stats` writes of them: `{"mean": .., "max": .., "paths": ..}`.
+        extra["dimensions_per_path"] = serde_json::json!({
+            "mean": dimensions.mean,
+            "max": dimensions.max,
+            "paths": dimensions.paths,
+        });
     }
     args.write_outputs(&rendered, extra)?;
     args.report_written(&rendered, "");

@@ -2,9 +2,9 @@
 //! the same roughness, and the white furnace of a rough mirror; the
 //! visible normals' histogram; the chi-square test of the normal samplers.
 
-use super::albedo;
-use super::distribution::NormalDistribution;
-use super::rough_conductor::RoughConductor;
+use crate::microfacet::albedo;
+use crate::microfacet::distribution::NormalDistribution;
+use crate::microfacet::rough_conductor::RoughConductor;
 use ch02_monte_carlo::warps::lobe::cos_lobe_pdf;
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::MicrofacetDistribution;
@@ -12,17 +12,6 @@ use glam::{UVec2, Vec2, Vec3};
 use std::path::Path;
 use workbench::output::OutputError;
 use workbench::output::figures::{Axes, Series, SeriesStyle, histogram_vs_pdf, line_plot};
-
-/// A rough conductor that reflects everything at every facet (Mitsuba's default `eta = 0`,
-/// `k = 1`): what is lost is lost to shadowing alone.
-pub fn white_conductor(kind: MicrofacetDistribution, alpha: f32) -> RoughConductor {
-    RoughConductor {
-        distribution: NormalDistribution::isotropic(kind, alpha),
-        eta: Vec3::ZERO,
-        k: Vec3::ONE,
-        specular_reflectance: Vec3::ONE,
-    }
-}
 
 /// The unit direction at `degrees` from the normal in the `xz` plane (negative: towards `-x`).
 pub fn in_plane(degrees: f64) -> Vec3 {
@@ -59,7 +48,7 @@ pub fn lobes(path: &Path, alphas: &[f32], incidence: f64) -> Result<(), OutputEr
             MicrofacetDistribution::Beckmann,
         ] {
             let name = name_of(kind);
-            let bsdf = white_conductor(kind, alpha);
+            let bsdf = RoughConductor::white(kind, alpha);
             let points = angles
                 .iter()
                 .map(|&a| (a, f64::from(bsdf.eval(wo, in_plane(a)).x)))
@@ -99,7 +88,7 @@ pub fn furnace(
             let albedos: Vec<(f32, f64)> = alphas
                 .iter()
                 .map(|&alpha| {
-                    let bsdf = white_conductor(kind, alpha);
+                    let bsdf = RoughConductor::white(kind, alpha);
                     let albedo = albedo::reflected(wo, alpha, |wi| bsdf.eval(wo, wi));
                     (alpha, albedo.x)
                 })

@@ -6,8 +6,8 @@
 //! The book's table is a summary; `tests/microfacet_sampling` tests every sampler and BSDF on
 //! charts fitted to each lobe, from `alpha = 0.02` to 1 and anisotropic.
 
-use super::distribution::NormalDistribution;
-use super::figures::{in_plane, name_of};
+use super::microfacet_figures::{in_plane, name_of};
+use crate::microfacet::distribution::NormalDistribution;
 use ch02_monte_carlo::chi2::{Chi2Result, chi2_test_density, significance_level};
 use ch02_monte_carlo::warps::{Domain, WarpPoint};
 use common::scene::MicrofacetDistribution;
