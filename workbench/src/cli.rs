@@ -4,11 +4,12 @@
 //! Bad input must never panic or leave half a file behind: every option is checked before any
 //! work starts, and the output path is tried for writing before a long render, not after it.
 
+use crate::capabilities::Capabilities;
 use crate::output::{self, OutputError};
 use crate::scene_file::{SceneError, load_scene_file};
 use common::film::PixelSum;
 use common::render::{Budget, RenderOutput, RenderSettings, StopFlag};
-use common::scene::{Capabilities, Scene};
+use common::scene::Scene;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::OnceLock;

@@ -2,7 +2,9 @@
 //! and checks stand on.
 //!
 //! A chapter's library holds its lecture and nothing else; what a student uses to *run* the
-//! lecture lives here, above it: the shared command-line options and Ctrl-C ([`cli`]), the
+//! lecture lives here, above it: what each chapter renders of a scene and the course map that
+//! names the chapter bringing the rest ([`capabilities`]), the shared command-line options and
+//! Ctrl-C ([`cli`]), the
 //! Mitsuba 3 scene-file reader ([`scene_file`]), image files and plots ([`output`]), the
 //! figures a chapter writes and the time each took ([`figure_set`]), error against time
 //! ([`convergence`]), agreement with Mitsuba 3 ([`agreement`]), and what the checks use to
@@ -11,6 +13,7 @@
 #![warn(missing_docs)]
 
 pub mod agreement;
+pub mod capabilities;
 pub mod cli;
 pub mod convergence;
 pub mod figure_set;

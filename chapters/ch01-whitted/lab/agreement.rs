@@ -7,7 +7,8 @@
 //! or through glass. Mitsuba's stored renders of them sit in `scenes/mitsuba/`; the tests and
 //! the book compare our render with them (see `common::metrics::agreement`).
 
-use crate::{CAPABILITIES, PixelPattern, render};
+use crate::lab::CAPABILITIES;
+use crate::{PixelPattern, render};
 use common::image::Image;
 use common::render::RenderSettings;
 use std::path::Path;

@@ -1,8 +1,9 @@
 //! `ch01-whitted`: render the chapter's scenes, or write its figures.
 
+use ch01_whitted::lab::CAPABILITIES;
 use ch01_whitted::lab::figures;
 use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
-use ch01_whitted::{CAPABILITIES, PixelPattern, render};
+use ch01_whitted::{PixelPattern, render};
 use common::render::Budget;
 use std::process::ExitCode;
 use workbench::cli::{RenderArgs, read_scene_file};

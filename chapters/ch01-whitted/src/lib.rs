@@ -9,13 +9,12 @@
 //! - [`optics`]: reflection, Snell's law, the Fresnel equations.
 //! - [`camera`]: the pinhole camera.
 //! - [`scene`]: the two questions the tracer asks of the world (the world itself is the
-//!   workbook's scene model, `common::scene`); [`scenes`]: the chapter's built-in scenes;
-//!   [`CAPABILITIES`]: what of a scene file the chapter renders.
+//!   workbook's scene model, `common::scene`); [`scenes`]: the chapter's built-in scenes.
 //! - [`tracer`]: the recursive tracer.
 //! - [`pixel`]: where in its pixel a ray goes (the centre, or a regular grid).
 //!
-//! The chapter's workbench (its binary, the book's figures, agreement with Mitsuba 3) is
-//! `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
+//! The chapter's workbench (its binary, what of a scene file it renders, the book's figures,
+//! agreement with Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -34,16 +33,8 @@ use camera::PinholeCamera;
 use common::film::PixelBoxFilter;
 use common::render::{self, RenderOutput, RenderSettings};
 use common::sampler::Sampler;
-use common::scene::{Capabilities, Chapter, Scene};
+use common::scene::Scene;
 use pixel::{CentreSampler, GridSampler};
-
-/// What chapter 01 renders of a scene: point lights, matte surfaces, mirrors and glass seen
-/// through a pinhole, and nothing of the later chapters. It leaves out indirect light and the
-/// environment's light on matte surfaces, and averages each pixel's own samples.
-pub const CAPABILITIES: Capabilities = Capabilities {
-    chapter: Chapter::WHITTED,
-    approximates: &[],
-};
 
 /// Where the samples of a pixel go.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

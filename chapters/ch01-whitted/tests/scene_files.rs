@@ -1,7 +1,8 @@
 //! Rendering Mitsuba 3 XML scene files, and refusing what chapter 01 cannot render.
 
+use ch01_whitted::lab::CAPABILITIES;
 use ch01_whitted::scenes::Builtin;
-use ch01_whitted::{CAPABILITIES, PixelPattern, render};
+use ch01_whitted::{PixelPattern, render};
 use common::render::RenderSettings;
 use common::scene::Scene;
 use std::path::{Path, PathBuf};

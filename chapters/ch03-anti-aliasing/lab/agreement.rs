@@ -36,6 +36,6 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
 /// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, with the pixel sampler
 /// and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let (scene, film, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    let (scene, film, settings, sampler) = for_agreement(path, &crate::lab::CAPABILITIES)?;
     Ok(render_with(&scene, &settings, &sampler, &film.filter).image)
 }

@@ -425,7 +425,7 @@ fn wider_tent(out: &Path) -> anyhow::Result<()> {
     let path = set.file(scene_entry);
     let renders = ReferenceRenders::load(&set.stored_renders_dir(), scene_entry.name)?;
     let (scene, film, settings, sampler) =
-        crate::lab::scene_file::for_agreement(&path, &crate::CAPABILITIES)
+        crate::lab::scene_file::for_agreement(&path, &crate::lab::CAPABILITIES)
             .map_err(anyhow::Error::msg)?;
     let radius = film.filter.half_width();
     let wider = ReconstructionFilter::new(film.filter.kind(), Some(1.1 * radius))

@@ -1,11 +1,12 @@
 //! `ch03-anti-aliasing`: render with a choice of pixel sampler and filter, or write the
 //! chapter's figures.
 
+use ch03_anti_aliasing::lab::CAPABILITIES;
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch03_anti_aliasing::lab::figures;
 use ch03_anti_aliasing::lab::scene_file::read_with_film_side;
+use ch03_anti_aliasing::render_with;
 use ch03_anti_aliasing::scenes::{Builtin, DEFAULT_MAX_DEPTH};
-use ch03_anti_aliasing::{CAPABILITIES, render_with};
 use std::process::ExitCode;
 use workbench::cli::RenderArgs;
 

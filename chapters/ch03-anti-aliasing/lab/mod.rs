@@ -8,3 +8,11 @@ pub mod agreement;
 pub mod cli;
 pub mod figures;
 pub mod scene_file;
+
+use workbench::capabilities::{Capabilities, Chapter};
+
+/// What chapter 03 renders of a scene: chapter 01's, with the film's reconstruction filter.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::ANTI_ALIASING,
+    approximates: &[],
+};

@@ -7,9 +7,10 @@
 use crate::filters::{FilterKind, ReconstructionFilter};
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
 use common::render::RenderSettings;
-use common::scene::{Capabilities, FilmFilter, Scene};
+use common::scene::{FilmFilter, Scene};
 use std::path::Path;
 use workbench::agreement::AGREEMENT_SPP;
+use workbench::capabilities::Capabilities;
 use workbench::cli::{CliError, print_note, read_scene_file};
 use workbench::scene_file::load_scene_file;
 
@@ -163,7 +164,7 @@ mod tests {
             let filter = filter_of(scene.film.filter).unwrap();
             assert_eq!(filter.kind(), kind, "{rfilter}");
             assert_eq!(filter.half_width(), radius, "{rfilter}");
-            let notes = crate::CAPABILITIES.check(&scene).unwrap();
+            let notes = crate::lab::CAPABILITIES.check(&scene).unwrap();
             assert!(
                 notes.iter().all(|n| !n.contains("filter")),
                 "chapter 03 uses the filter, it does not note it away: {notes:?}"

@@ -38,13 +38,7 @@ use ch01_whitted::camera::PinholeCamera;
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
 use common::sampler::Sampler;
-use common::scene::{Capabilities, Chapter, Scene};
-
-/// What chapter 03 renders of a scene: chapter 01's, with the film's reconstruction filter.
-pub const CAPABILITIES: Capabilities = Capabilities {
-    chapter: Chapter::ANTI_ALIASING,
-    approximates: &[],
-};
+use common::scene::Scene;
 
 // ANCHOR: render_with
 /// Renders a chapter 01 `scene` with Whitted's tracer: pixel positions from `sampler`, each

@@ -25,6 +25,6 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
 /// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, through the file's
 /// lens, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let (scene, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    let (scene, side, settings, sampler) = for_agreement(path, &crate::lab::CAPABILITIES)?;
     Ok(render_with(&scene, &side.lens, &settings, &sampler, &side.film.filter).image)
 }

@@ -539,7 +539,7 @@ fn naive_against_mitsuba(out: &Path) -> anyhow::Result<()> {
     for entry in set.scenes {
         let renders = ReferenceRenders::load(&set.stored_renders_dir(), entry.name)?;
         let (scene, side, settings, sampler) =
-            crate::lab::scene_file::for_agreement(&set.file(entry), &crate::CAPABILITIES)
+            crate::lab::scene_file::for_agreement(&set.file(entry), &crate::lab::CAPABILITIES)
                 .map_err(anyhow::Error::msg)?;
         for warp in [side.lens.warp, LensWarp::Naive] {
             let lens = side.lens.with_warp(warp);

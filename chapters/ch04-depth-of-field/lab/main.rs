@@ -2,11 +2,12 @@
 
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Aperture;
+use ch04_depth_of_field::lab::CAPABILITIES;
 use ch04_depth_of_field::lab::cli::LensArgs;
 use ch04_depth_of_field::lab::figures;
 use ch04_depth_of_field::lab::scene_file::read_with_camera_side;
+use ch04_depth_of_field::render_with;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
-use ch04_depth_of_field::{CAPABILITIES, render_with};
 use std::process::ExitCode;
 use workbench::cli::RenderArgs;
 

@@ -7,3 +7,11 @@ pub mod agreement;
 pub mod cli;
 pub mod figures;
 pub mod scene_file;
+
+use workbench::capabilities::{Capabilities, Chapter};
+
+/// What chapter 04 renders of a scene: chapter 03's, through a lens with an aperture.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::DEPTH_OF_FIELD,
+    approximates: &[],
+};

@@ -9,8 +9,9 @@ use crate::lens::Lens;
 use ch03_anti_aliasing::PixelSampler;
 use ch03_anti_aliasing::lab::scene_file::{FilmSide, read_with_film_side};
 use common::render::RenderSettings;
-use common::scene::{Camera, CameraModel, Capabilities, Scene};
+use common::scene::{Camera, CameraModel, Scene};
 use std::path::Path;
+use workbench::capabilities::Capabilities;
 use workbench::cli::CliError;
 
 // ANCHOR: lens_of

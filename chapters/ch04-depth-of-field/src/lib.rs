@@ -10,7 +10,7 @@
 //!   drawn; the naive disc warp, kept to show what it does wrong.
 //! - [`thin_lens`]: the thin-lens camera, Mitsuba's `thinlens` sensor.
 //! - [`circle_of_confusion`]: how large a point at another depth appears.
-//! - [`scenes`]: what to look at; [`CAPABILITIES`]: what of a scene the chapter renders.
+//! - [`scenes`]: what to look at.
 //!
 //! The chapter's workbench (its binary and lens options, the lens a scene file asks for, the
 //! book's figures, agreement with Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`,
@@ -37,13 +37,7 @@ use ch01_whitted::tracer;
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
 use common::sampler::Sampler;
-use common::scene::{Capabilities, Chapter, Scene};
-
-/// What chapter 04 renders of a scene: chapter 03's, through a lens with an aperture.
-pub const CAPABILITIES: Capabilities = Capabilities {
-    chapter: Chapter::DEPTH_OF_FIELD,
-    approximates: &[],
-};
+use common::scene::Scene;
 
 // ANCHOR: render_with
 /// Renders `scene` through `lens`: pixel positions from `sampler` (its first dimension), then

@@ -3,8 +3,9 @@
 
 use ch03_anti_aliasing::lab::scene_file::filter_of;
 use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind};
+use ch04_depth_of_field::lab::CAPABILITIES;
 use ch04_depth_of_field::lab::scene_file::lens_of;
-use ch04_depth_of_field::{CAPABILITIES, render_with};
+use ch04_depth_of_field::render_with;
 use common::render::RenderSettings;
 use std::path::{Path, PathBuf};
 use workbench::scene_file::load_scene_file;
@@ -55,7 +56,7 @@ fn the_thin_lens_comes_from_the_file() {
     let loaded =
         load_scene_file(&path, &define(&[("aperture", "0.25"), ("focus", "3.3")])).unwrap();
     // Chapter 01 refuses the aperture and names this chapter.
-    let refusal = ch01_whitted::CAPABILITIES
+    let refusal = ch01_whitted::lab::CAPABILITIES
         .check(&loaded.scene)
         .expect_err("chapter 01 refuses a lens");
     assert!(refusal.contains("chapter 04"), "{refusal}");

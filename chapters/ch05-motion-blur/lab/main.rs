@@ -2,11 +2,12 @@
 //! chapter's figures.
 
 use ch05_motion_blur::MotionScene;
+use ch05_motion_blur::lab::CAPABILITIES;
 use ch05_motion_blur::lab::figures;
 use ch05_motion_blur::lab::render_setup::CameraArgs;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
-use ch05_motion_blur::{CAPABILITIES, Shutter, TimeSampling, render_with};
+use ch05_motion_blur::{Shutter, TimeSampling, render_with};
 use std::process::ExitCode;
 use workbench::cli::parse_number;
 

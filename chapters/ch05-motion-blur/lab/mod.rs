@@ -7,3 +7,11 @@
 pub mod figures;
 pub mod render_setup;
 pub mod scene_file;
+
+use workbench::capabilities::{Capabilities, Chapter};
+
+/// What chapter 05 renders of a scene: chapter 04's, with shapes and a camera that move.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::MOTION_BLUR,
+    approximates: &[],
+};

@@ -11,7 +11,8 @@ use ch03_anti_aliasing::PixelSampler;
 use ch03_anti_aliasing::lab::cli::{AntiAliasingArgs, FilmSetup};
 use ch04_depth_of_field::Lens;
 use ch04_depth_of_field::lab::cli::LensArgs;
-use common::scene::{Capabilities, Scene};
+use common::scene::Scene;
+use workbench::capabilities::Capabilities;
 use workbench::cli::{CliError, RenderArgs};
 
 /// The options every `render` from chapter 05 on shares: the pixel sampler and filter

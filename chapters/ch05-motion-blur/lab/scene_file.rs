@@ -11,8 +11,9 @@ use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
 pub use ch04_depth_of_field::lab::scene_file::{CameraSide, read_with_camera_side};
 use common::render::RenderSettings;
-use common::scene::{Capabilities, Scene};
+use common::scene::Scene;
 use std::path::Path;
+use workbench::capabilities::Capabilities;
 use workbench::cli::print_note;
 
 // ANCHOR: motion_of

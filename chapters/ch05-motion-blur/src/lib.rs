@@ -15,7 +15,7 @@
 //!   shutter.
 //! - [`world`]: the scene in motion, traced by chapter 01's tracer through its `World` trait.
 //! - [`time_sampling`]: independent and stratified time samples.
-//! - [`scenes`]: what to look at; [`CAPABILITIES`]: what of a scene the chapter renders.
+//! - [`scenes`]: what to look at.
 //!
 //! The chapter's workbench (its binary, a scene file's motion made ready, the setup every
 //! `render` from this chapter on shares, the book's figures) is `lab`, in the folder `lab/`
@@ -47,14 +47,7 @@ use ch01_whitted::tracer;
 use ch04_depth_of_field::{Lens, ThinLensCamera};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
-use common::scene::{Capabilities, Chapter};
 use common::{Ray, Vec2};
-
-/// What chapter 05 renders of a scene: chapter 04's, with shapes and a camera that move.
-pub const CAPABILITIES: Capabilities = Capabilities {
-    chapter: Chapter::MOTION_BLUR,
-    approximates: &[],
-};
 
 // ANCHOR: render_with
 /// Camera rays over a shutter interval: the time a sample draws, the camera where it is at

@@ -1,6 +1,6 @@
 //! Scene files with the `<animation>` extension: they render, and what is wrong is refused.
 
-use ch05_motion_blur::CAPABILITIES;
+use ch05_motion_blur::lab::CAPABILITIES;
 use ch05_motion_blur::lab::scene_file::motion_of;
 use ch05_motion_blur::world::MotionScene;
 use common::scene::Scene;

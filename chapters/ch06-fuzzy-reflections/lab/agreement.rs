@@ -28,7 +28,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
 /// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, choosing the ray at
 /// glass by `glass`, with the pixel sampler and the filter the file asks for.
 pub fn render_scene_file_with(path: &Path, glass: GlassStrategy) -> Result<Image, String> {
-    let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    let (world, side, settings, sampler) = for_agreement(path, &crate::lab::CAPABILITIES)?;
     let options = TraceOptions {
         glass,
         ..TraceOptions::default()

@@ -2,10 +2,11 @@
 //! chapter's figures.
 
 use ch05_motion_blur::lab::render_setup::CameraArgs;
+use ch06_fuzzy_reflections::lab::CAPABILITIES;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::lab::figures;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
-use ch06_fuzzy_reflections::{CAPABILITIES, PointLights, render_with};
+use ch06_fuzzy_reflections::{PointLights, render_with};
 use std::process::ExitCode;
 
 #[derive(clap::Args, Debug)]

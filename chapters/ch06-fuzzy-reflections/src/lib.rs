@@ -12,8 +12,7 @@
 //! - [`highlights`]: the point lights seen in a fuzzy mirror.
 //! - [`lighting`]: the hook through which chapter 07 adds lights with an area.
 //! - [`tracer`]: the recursive tracer with random choices.
-//! - [`scenes`]: what to look at; [`CAPABILITIES`]: what of a scene the chapter renders
-//!   (rough materials of a scene file as `cos^n` lobes).
+//! - [`scenes`]: what to look at.
 //!
 //! The chapter's workbench (its binary and options, the book's figures, agreement with
 //! Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
@@ -43,19 +42,6 @@ use ch04_depth_of_field::Lens;
 use ch05_motion_blur::{CameraRays, MotionScene, TimeSampler};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
-use common::scene::{Capabilities, Chapter, Feature};
-
-// ANCHOR: capabilities
-/// How chapter 06 renders a scene file's microfacet roughness.
-pub const MICROFACET_AS_LOBE: &str = "rendered as a cos^n lobe of exponent n = 2/alpha^2 - 2: about as wide as Mitsuba's microfacet lobe, not the same shape";
-
-/// What chapter 06 renders of a scene: chapter 05's, with glossy and frosted materials; a
-/// scene file's rough materials become `cos^n` lobes of about the same width.
-pub const CAPABILITIES: Capabilities = Capabilities {
-    chapter: Chapter::FUZZY_REFLECTIONS,
-    approximates: &[(Feature::MicrofacetMaterial, MICROFACET_AS_LOBE)],
-};
-// ANCHOR_END: capabilities
 
 // ANCHOR: render_with
 /// Renders `world`, lit by `lighting`, through `lens`. Each sample draws, in order: the pixel

@@ -1,7 +1,7 @@
 //! Scene files: the chapter's own render, rough materials converted (with the note that says
 //! how), and broken or unknown materials refused with the shape they belong to.
 
-use ch06_fuzzy_reflections::CAPABILITIES;
+use ch06_fuzzy_reflections::lab::CAPABILITIES;
 use ch06_fuzzy_reflections::lab::agreement::AGREEMENT;
 use common::scene::Material;
 use common::scene::Scene;

@@ -50,7 +50,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
 /// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, with the file's lens,
 /// pixel sampler and filter, one shadow ray per light per hit.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    let (world, side, settings, sampler) = for_agreement(path, &crate::lab::CAPABILITIES)?;
     let rendered = render_with(
         &world,
         LightOptions::default(),

@@ -3,11 +3,12 @@
 
 use ch05_motion_blur::lab::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
+use ch07_soft_shadows::AreaLights;
+use ch07_soft_shadows::lab::CAPABILITIES;
 use ch07_soft_shadows::lab::cli::LightArgs;
 use ch07_soft_shadows::lab::figures;
 use ch07_soft_shadows::render_with;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
-use ch07_soft_shadows::{AreaLights, CAPABILITIES};
 use std::process::ExitCode;
 use workbench::cli::parse_number;
 

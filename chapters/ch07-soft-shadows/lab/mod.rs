@@ -6,3 +6,12 @@
 pub mod agreement;
 pub mod cli;
 pub mod figures;
+
+use ch06_fuzzy_reflections::lab::MICROFACET_AS_LOBE;
+use workbench::capabilities::{Capabilities, Chapter, Feature};
+
+/// What chapter 07 renders of a scene: chapter 06's, lit by area lights too.
+pub const CAPABILITIES: Capabilities = Capabilities {
+    chapter: Chapter::SOFT_SHADOWS,
+    approximates: &[(Feature::MicrofacetMaterial, MICROFACET_AS_LOBE)],
+};

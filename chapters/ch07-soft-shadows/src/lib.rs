@@ -24,7 +24,7 @@
 //!   many rays each light gets.
 //! - [`lighting`], [`scene`]: chapter 06's tracer lit by a scene's area lights;
 //!   [`render_with`].
-//! - [`scenes`], [`CAPABILITIES`]: what to look at, what of a scene the chapter renders.
+//! - [`scenes`]: what to look at.
 //!
 //! The chapter's workbench (its binary and light options, the book's figures, agreement with
 //! Mitsuba 3) is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
@@ -65,17 +65,9 @@ pub use strategy::{LightSampling, Strategy};
 
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::{MotionScene, TimeSampler};
-use ch06_fuzzy_reflections::MICROFACET_AS_LOBE;
 use ch06_fuzzy_reflections::TraceOptions;
 use common::film::Filter;
 use common::render::{RenderOutput, RenderSettings};
-use common::scene::{Capabilities, Chapter, Feature};
-
-/// What chapter 07 renders of a scene: chapter 06's, lit by area lights too.
-pub const CAPABILITIES: Capabilities = Capabilities {
-    chapter: Chapter::SOFT_SHADOWS,
-    approximates: &[(Feature::MicrofacetMaterial, MICROFACET_AS_LOBE)],
-};
 
 // ANCHOR: render_with
 /// Renders `world` through `lens` with chapter 06's tracer, its area lights sampled as

@@ -2,8 +2,9 @@
 //! piece of a shape (six for a cube, one per triangle of a mesh), each with the file's
 //! radiance; what the chapter cannot render is refused with the shape's position.
 
+use ch07_soft_shadows::lab::CAPABILITIES;
 use ch07_soft_shadows::light::LightShape;
-use ch07_soft_shadows::{AreaLights, CAPABILITIES, DiscWarp, LightSampling};
+use ch07_soft_shadows::{AreaLights, DiscWarp, LightSampling};
 use common::scene::Scene;
 use glam::{Vec2, Vec3};
 use std::path::Path;

@@ -119,7 +119,7 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
 /// Our render of a scene file at [`AGREEMENT_SPP`](workbench::agreement::AGREEMENT_SPP) samples per pixel, with the file's
 /// integrator settings.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
-    let (world, side, settings, sampler) = for_agreement(path, &crate::CAPABILITIES)?;
+    let (world, side, settings, sampler) = for_agreement(path, &crate::lab::CAPABILITIES)?;
     let options = path_options(&world.scene);
     let rendered = render_with(
         &world,

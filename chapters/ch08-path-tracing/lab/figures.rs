@@ -141,7 +141,7 @@ struct SceneFile {
 fn load(name: &str) -> anyhow::Result<SceneFile> {
     let file = AGREEMENT.scenes_dir().join(name);
     let loaded = workbench::scene_file::load_scene_file(&file, &[])?;
-    crate::CAPABILITIES
+    crate::lab::CAPABILITIES
         .check(&loaded.scene)
         .map_err(anyhow::Error::msg)?;
     let options = path_options(&loaded.scene);

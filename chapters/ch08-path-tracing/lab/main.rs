@@ -5,11 +5,12 @@ use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
 use ch07_soft_shadows::AreaLights;
 use ch07_soft_shadows::lab::cli::LightArgs;
+use ch08_path_tracing::Method;
 use ch08_path_tracing::dimensions::render_counted;
+use ch08_path_tracing::lab::CAPABILITIES;
 use ch08_path_tracing::lab::cli::PathArgs;
 use ch08_path_tracing::lab::figures;
 use ch08_path_tracing::lab::scene_file::path_options;
-use ch08_path_tracing::{CAPABILITIES, Method};
 use common::scene::Scene;
 use std::process::ExitCode;
 

@@ -19,7 +19,7 @@
 //!   [`render_distribution`].
 //! - [`microfacet`]: beyond the lecture, Mitsuba 3's `roughconductor`, `roughdielectric` and
 //!   `roughplastic` (Beckmann and GGX, visible-normal sampling), in the local frame.
-//! - [`CAPABILITIES`]: what of a scene the chapter renders; [`furnace`]: the white furnace.
+//! - [`furnace`]: the white furnace.
 //!
 //! The chapter's workbench (its binary and options, a scene file's path options, the book's
 //! figures, agreement with Mitsuba 3's `path`) is `lab`, in the folder `lab/` beside `src/`,
@@ -59,7 +59,6 @@ use ch06_fuzzy_reflections::FuzzMethod;
 use ch07_soft_shadows::{AreaLights, LightSampling};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
-use common::scene::{Capabilities, Chapter};
 
 /// Everything about a path-traced render besides the scene and the image settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,15 +81,6 @@ impl Method {
         }
     }
 }
-
-/// What chapter 08 renders of a scene: everything the workbook knows, indirect light and the
-/// environment's light on matte surfaces included. Nothing is approximated: a file's rough
-/// metals, plastics and glass are Mitsuba's microfacet models ([`microfacet`]), not chapter
-/// 06's lobes, so no note says otherwise.
-pub const CAPABILITIES: Capabilities = Capabilities {
-    chapter: Chapter::PATH_TRACING,
-    approximates: &[],
-};
 
 // ANCHOR: render_with
 /// Path-traces `world` through `lens`. Each sample draws, in order: the pixel position, the

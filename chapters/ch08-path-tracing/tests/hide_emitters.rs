@@ -62,10 +62,12 @@ fn chapters_before_08_refuse_hidden_emitters() {
     let scene = workbench::scene_file::load_scene_file(&file, &[])
         .unwrap()
         .scene;
-    let refusal = ch07_soft_shadows::CAPABILITIES.check(&scene).unwrap_err();
+    let refusal = ch07_soft_shadows::lab::CAPABILITIES
+        .check(&scene)
+        .unwrap_err();
     assert!(refusal.contains("hide_emitters"), "{refusal}");
     assert!(refusal.contains("chapter 08"), "{refusal}");
-    assert!(ch08_path_tracing::CAPABILITIES.check(&scene).is_ok());
+    assert!(ch08_path_tracing::lab::CAPABILITIES.check(&scene).is_ok());
 }
 
 /// A lamp facing the camera in front of a wall lit by a point light, with `hide`.

@@ -9,10 +9,8 @@
 //! chapters' built-in scenes fill it with a [`SceneBuilder`], and each chapter adds the
 //! functions that sample it and a tracer that reads it.
 //!
-//! A chapter says which features of a scene it can render in its [`Capabilities`]; one shared
-//! check ([`Capabilities::check`]) refuses the rest, naming the file position of the element
-//! and the chapter that brings the feature, and writes the notes about light the chapter
-//! leaves out.
+//! Which chapter renders which of its features is not the model's business: the workbench's
+//! `capabilities` holds that course map, and each chapter's workbench its declaration.
 //!
 //! Shapes are numbered as a hit reports them ([`SurfaceHit::shape`](crate::geometry::SurfaceHit)):
 //! the still shapes of [`Scene::geometry`] first, then the [`Scene::moving`] ones, and
@@ -20,7 +18,6 @@
 
 mod builder;
 mod camera;
-mod capabilities;
 mod emission_sampling;
 mod environment_map;
 mod environment_sampling;
@@ -32,7 +29,6 @@ mod texture;
 
 pub use builder::SceneBuilder;
 pub use camera::{Camera, CameraFrame, CameraModel};
-pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use emission_sampling::{EMISSION_GRID, UNIFORM_SHARE};
 pub use environment_map::{EnvironmentMap, EnvironmentMapError, direction_of, direction_to_uv};
 pub use environment_sampling::{EnvironmentSampling, luminance};

@@ -8,7 +8,7 @@
 //! Mitsuba's values; each `<transform>` composed into one matrix); then that description made
 //! into the [`Scene`] every chapter renders, its shapes placed in world space. Which chapter can
 //! render the scene is not decided here: each chapter's
-//! [`Capabilities`](common::scene::Capabilities) say so.
+//! [`Capabilities`](crate::capabilities::Capabilities) say so.
 //!
 //! Every problem is a [`SceneError`] naming the file, line and column; things that are merely
 //! ignored (an unknown property name, say) become [`SceneWarning`]s returned with the scene, so

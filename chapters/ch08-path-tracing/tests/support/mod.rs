@@ -28,7 +28,7 @@ pub fn scene_file(name: &str) -> SceneFile {
         .scenes_dir()
         .join(name);
     let loaded = workbench::scene_file::load_scene_file(&path, &[]).expect("the scene loads");
-    ch08_path_tracing::CAPABILITIES
+    ch08_path_tracing::lab::CAPABILITIES
         .check(&loaded.scene)
         .expect("the chapter renders it");
     SceneFile {

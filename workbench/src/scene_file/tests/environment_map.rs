@@ -8,7 +8,7 @@ use image::{ImageFormat, Rgb, Rgb32FImage, RgbImage};
 
 use super::super::parse_scene;
 use super::{error_in, scene_in, scene_with};
-use common::scene::{Capabilities, Chapter};
+use crate::capabilities::{Capabilities, Chapter};
 
 /// The 4 x 3 map of the scene model's tests: pixel (x, y) holds
 /// `(1 + x, 10 (1 + y), (x + 1)(y + 1) / 2)`, with `bad` NaN at one pixel.

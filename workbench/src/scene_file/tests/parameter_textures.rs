@@ -10,7 +10,8 @@ use image::{ImageFormat, Rgb, RgbImage};
 
 use super::super::parse_scene;
 use super::scene_with;
-use common::scene::{Capabilities, Chapter, Conductor, Material, Plastic, Scene, TintedGlass};
+use crate::capabilities::{Capabilities, Chapter};
+use common::scene::{Conductor, Material, Plastic, Scene, TintedGlass};
 
 /// A red and blue checkerboard of one square per half of `uv` along `u`: red where
 /// `u < 0.5` (and `v < 0.5`), blue to its right.

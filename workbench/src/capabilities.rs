@@ -5,7 +5,7 @@
 //! lens with an aperture, chapter 07 area lights, and so on. A chapter's [`Capabilities`] name
 //! the chapter (so it renders every [`Feature`] that it or a chapter before it brings) and the
 //! features it renders in a way of its own; [`Capabilities::check`] finds every feature a
-//! scene uses ([`Scene::features`]) and
+//! scene uses ([`features`]) and
 //!
 //! - refuses a feature the chapter cannot render, naming where the scene file writes it and
 //!   the chapter that brings it ("line 32, column 5: an area light (shape 3); soft shadows
@@ -13,7 +13,7 @@
 //! - notes light the chapter leaves out (indirect light before chapter 08), and settings it
 //!   ignores (a film's filter in chapter 01), each from the same declaration.
 
-use super::{
+use common::scene::{
     Camera, CameraModel, DirectSamples, FilmFilter, Integrator, Material, Scene, TextPosition,
 };
 use std::fmt;
@@ -298,7 +298,7 @@ impl Capabilities {
                 notes.push(text);
             }
         };
-        for usage in scene.features() {
+        for usage in features(scene) {
             let feature = usage.feature;
             if self.renders(feature) {
                 if let Some((_, how)) = self.approximates.iter().find(|(f, _)| *f == feature) {
@@ -371,176 +371,178 @@ impl Capabilities {
     }
 }
 
-impl Scene {
-    /// Every use of a [`Feature`] in the scene, in the order the file writes them: the
-    /// integrator, the sensor (lens, motion, filter), the shapes, the environment.
-    pub fn features(&self) -> Vec<FeatureUse> {
-        let mut uses = Vec::new();
-        let mut add = |feature, origin, detail: String| {
-            uses.push(FeatureUse {
-                feature,
-                origin,
-                detail,
-            })
-        };
-        if let Integrator::Direct(samples) = self.integrator
-            && samples != DirectSamples::ONE_EACH
-        {
-            add(
-                Feature::DirectSampleCounts,
-                self.origins.integrator.clone(),
-                format!(
-                    "emitter_samples {}, bsdf_samples {}",
-                    samples.emitter, samples.bsdf
-                ),
-            );
-        }
-        if matches!(self.integrator, Integrator::Path { .. }) && self.max_depth > 2 {
-            add(
-                Feature::IndirectLight,
-                self.origins.integrator.clone(),
-                "the path integrator's max_depth".to_string(),
-            );
-        }
-        let Camera {
-            model, keyframes, ..
-        } = &self.camera;
-        if let CameraModel::ThinLens {
-            aperture_radius, ..
-        } = *model
-            && aperture_radius > 0.0
-        {
-            add(
-                Feature::Aperture,
-                self.origins.sensor.clone(),
-                format!("aperture radius {aperture_radius}"),
-            );
-        }
-        if !keyframes.is_empty() {
-            add(
-                Feature::MovingCamera,
-                self.origins.sensor.clone(),
-                "an <animation> of the sensor's to_world".to_string(),
-            );
-        }
-        if self.film.filter != FilmFilter::Box {
-            add(
-                Feature::FilmFilter,
-                self.origins.filter.clone().or(self.origins.sensor.clone()),
-                format!("{:?}", self.film.filter).to_lowercase(),
-            );
-        }
-        let still = self.geometry.shapes().len();
-        // Each surface once, named by the first shape made of it (surfaces are numbered in
-        // that order); the pieces of one shape of a file all stand still or all move.
-        let mut first_shape = vec![None; self.surfaces.len()];
-        for (shape, &surface) in self.surface_of_shape.iter().enumerate() {
-            first_shape[surface as usize].get_or_insert(shape);
-        }
-        for (surface, first_shape) in self.surfaces.iter().zip(first_shape) {
-            let Some(index) = first_shape else { continue };
-            let name = format!("shape {}", index + 1);
-            let moves = index >= still;
-            if moves {
-                add(Feature::MovingShape, surface.origin.clone(), name.clone());
-            }
-            if surface.emitter.is_some() {
-                let feature = if moves {
-                    Feature::MovingAreaLight
-                } else {
-                    Feature::AreaLight
-                };
-                add(feature, surface.origin.clone(), name.clone());
-            }
-            if let Material::Mask(_) = surface.material {
-                add(Feature::Mask, surface.origin.clone(), name.clone());
-            }
-            // What the mask lets be seen is checked as any other material.
-            let material = surface.material.unmasked();
-            if let Some((stand_in, how)) = material.lecture_stand_in()
-                && let Material::Conductor(conductor) = material
-                && conductor.eta != glam::Vec3::ZERO
-            {
-                add(
-                    Feature::MetalFresnel,
-                    surface.origin.clone(),
-                    format!(
-                        "{name}: rendered as {}, {how}",
-                        describe_stand_in(&stand_in)
-                    ),
-                );
-            }
-            match material {
-                Material::ThinDielectric { .. } => add(
-                    Feature::ThinDielectric,
-                    surface.origin.clone(),
-                    name.clone(),
-                ),
-                Material::Plastic(_) => add(Feature::Plastic, surface.origin.clone(), name.clone()),
-                Material::TintedGlass(_) => {
-                    add(Feature::TintedGlass, surface.origin.clone(), name.clone())
-                }
-                _ => {}
-            }
-            if let Some(parameter) = material.textured_beyond_albedo() {
-                add(
-                    Feature::TexturedMaterial,
-                    surface.origin.clone(),
-                    format!("{name}: {parameter}"),
-                );
-            }
-            if surface.emitter.is_some_and(|e| e.texture.is_some()) {
-                add(
-                    Feature::TexturedAreaLight,
-                    surface.origin.clone(),
-                    name.clone(),
-                );
-            }
-            if let Some((detail, stands_in)) = fuzzy_detail(material) {
-                let feature = if stands_in {
-                    Feature::MicrofacetMaterial
-                } else {
-                    Feature::FuzzyMaterial
-                };
-                add(feature, surface.origin.clone(), format!("{name}: {detail}"));
-            }
-        }
-        if self.environment != glam::Vec3::ZERO {
-            add(
-                Feature::EnvironmentLight,
-                self.origins.environment.clone(),
-                String::new(),
-            );
-        }
-        if self.environment_map.is_some() {
-            add(
-                Feature::EnvironmentMap,
-                self.origins.environment_map.clone(),
-                String::new(),
-            );
-        }
-        if !self.directional_lights.is_empty() {
-            add(
-                Feature::DirectionalLight,
-                self.origins.directional_light.clone(),
-                String::new(),
-            );
-        }
-        let something_glows = self.environment != glam::Vec3::ZERO
-            || self.environment_map.is_some()
-            || self
-                .surfaces
-                .iter()
-                .any(|surface| surface.emitter.is_some());
-        if self.hide_emitters && something_glows {
-            add(
-                Feature::HiddenEmitters,
-                self.origins.integrator.clone(),
-                "hide_emitters".to_string(),
-            );
-        }
-        uses
+/// Every use of a [`Feature`] in `scene`, in the order the file writes them: the
+/// integrator, the sensor (lens, motion, filter), the shapes, the environment.
+pub fn features(scene: &Scene) -> Vec<FeatureUse> {
+    let mut uses = Vec::new();
+    let mut add = |feature, origin, detail: String| {
+        uses.push(FeatureUse {
+            feature,
+            origin,
+            detail,
+        })
+    };
+    if let Integrator::Direct(samples) = scene.integrator
+        && samples != DirectSamples::ONE_EACH
+    {
+        add(
+            Feature::DirectSampleCounts,
+            scene.origins.integrator.clone(),
+            format!(
+                "emitter_samples {}, bsdf_samples {}",
+                samples.emitter, samples.bsdf
+            ),
+        );
     }
+    if matches!(scene.integrator, Integrator::Path { .. }) && scene.max_depth > 2 {
+        add(
+            Feature::IndirectLight,
+            scene.origins.integrator.clone(),
+            "the path integrator's max_depth".to_string(),
+        );
+    }
+    let Camera {
+        model, keyframes, ..
+    } = &scene.camera;
+    if let CameraModel::ThinLens {
+        aperture_radius, ..
+    } = *model
+        && aperture_radius > 0.0
+    {
+        add(
+            Feature::Aperture,
+            scene.origins.sensor.clone(),
+            format!("aperture radius {aperture_radius}"),
+        );
+    }
+    if !keyframes.is_empty() {
+        add(
+            Feature::MovingCamera,
+            scene.origins.sensor.clone(),
+            "an <animation> of the sensor's to_world".to_string(),
+        );
+    }
+    if scene.film.filter != FilmFilter::Box {
+        add(
+            Feature::FilmFilter,
+            scene
+                .origins
+                .filter
+                .clone()
+                .or(scene.origins.sensor.clone()),
+            format!("{:?}", scene.film.filter).to_lowercase(),
+        );
+    }
+    let still = scene.geometry.shapes().len();
+    // Each surface once, named by the first shape made of it (surfaces are numbered in
+    // that order); the pieces of one shape of a file all stand still or all move.
+    let mut first_shape = vec![None; scene.surfaces.len()];
+    for (shape, &surface) in scene.surface_of_shape.iter().enumerate() {
+        first_shape[surface as usize].get_or_insert(shape);
+    }
+    for (surface, first_shape) in scene.surfaces.iter().zip(first_shape) {
+        let Some(index) = first_shape else { continue };
+        let name = format!("shape {}", index + 1);
+        let moves = index >= still;
+        if moves {
+            add(Feature::MovingShape, surface.origin.clone(), name.clone());
+        }
+        if surface.emitter.is_some() {
+            let feature = if moves {
+                Feature::MovingAreaLight
+            } else {
+                Feature::AreaLight
+            };
+            add(feature, surface.origin.clone(), name.clone());
+        }
+        if let Material::Mask(_) = surface.material {
+            add(Feature::Mask, surface.origin.clone(), name.clone());
+        }
+        // What the mask lets be seen is checked as any other material.
+        let material = surface.material.unmasked();
+        if let Some((stand_in, how)) = material.lecture_stand_in()
+            && let Material::Conductor(conductor) = material
+            && conductor.eta != glam::Vec3::ZERO
+        {
+            add(
+                Feature::MetalFresnel,
+                surface.origin.clone(),
+                format!(
+                    "{name}: rendered as {}, {how}",
+                    describe_stand_in(&stand_in)
+                ),
+            );
+        }
+        match material {
+            Material::ThinDielectric { .. } => add(
+                Feature::ThinDielectric,
+                surface.origin.clone(),
+                name.clone(),
+            ),
+            Material::Plastic(_) => add(Feature::Plastic, surface.origin.clone(), name.clone()),
+            Material::TintedGlass(_) => {
+                add(Feature::TintedGlass, surface.origin.clone(), name.clone())
+            }
+            _ => {}
+        }
+        if let Some(parameter) = material.textured_beyond_albedo() {
+            add(
+                Feature::TexturedMaterial,
+                surface.origin.clone(),
+                format!("{name}: {parameter}"),
+            );
+        }
+        if surface.emitter.is_some_and(|e| e.texture.is_some()) {
+            add(
+                Feature::TexturedAreaLight,
+                surface.origin.clone(),
+                name.clone(),
+            );
+        }
+        if let Some((detail, stands_in)) = fuzzy_detail(material) {
+            let feature = if stands_in {
+                Feature::MicrofacetMaterial
+            } else {
+                Feature::FuzzyMaterial
+            };
+            add(feature, surface.origin.clone(), format!("{name}: {detail}"));
+        }
+    }
+    if scene.environment != glam::Vec3::ZERO {
+        add(
+            Feature::EnvironmentLight,
+            scene.origins.environment.clone(),
+            String::new(),
+        );
+    }
+    if scene.environment_map.is_some() {
+        add(
+            Feature::EnvironmentMap,
+            scene.origins.environment_map.clone(),
+            String::new(),
+        );
+    }
+    if !scene.directional_lights.is_empty() {
+        add(
+            Feature::DirectionalLight,
+            scene.origins.directional_light.clone(),
+            String::new(),
+        );
+    }
+    let something_glows = scene.environment != glam::Vec3::ZERO
+        || scene.environment_map.is_some()
+        || scene
+            .surfaces
+            .iter()
+            .any(|surface| surface.emitter.is_some());
+    if scene.hide_emitters && something_glows {
+        add(
+            Feature::HiddenEmitters,
+            scene.origins.integrator.clone(),
+            "hide_emitters".to_string(),
+        );
+    }
+    uses
 }
 
 /// A stand-in material in words, for a note: "a mirror of reflectance (0.95, 0.64, 0.54)".
@@ -599,7 +601,7 @@ fn fuzzy_detail(material: &Material) -> Option<(String, bool)> {
 
 /// A roughness in a note's words: `alpha 0.2`, or `alpha_u 0.1, alpha_v 0.4 (a round lobe of
 /// alpha 0.2)` where the lobe cannot follow the two widths.
-fn describe_alpha(microfacet: crate::scene::Microfacet) -> String {
+fn describe_alpha(microfacet: common::scene::Microfacet) -> String {
     if microfacet.is_anisotropic() {
         format!(
             "alpha_u {}, alpha_v {} (a round lobe of alpha {})",
@@ -615,8 +617,8 @@ fn describe_alpha(microfacet: crate::scene::Microfacet) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::{Shape, Sphere};
-    use crate::scene::{CameraFrame, FilmSettings, SceneBuilder};
+    use common::geometry::{Shape, Sphere};
+    use common::scene::{CameraFrame, FilmSettings, SceneBuilder};
     use glam::{Mat4, Vec3};
 
     const WHITTED: Capabilities = Capabilities {
@@ -636,7 +638,7 @@ mod tests {
     fn scene(builder: SceneBuilder) -> Scene {
         let frame = CameraFrame::look_at(Vec3::Z * 5.0, Vec3::ZERO, Vec3::Y).unwrap();
         builder.build(
-            crate::scene::Camera::pinhole(frame, 40.0),
+            common::scene::Camera::pinhole(frame, 40.0),
             FilmSettings::new(4, 4),
             2,
         )
@@ -669,7 +671,7 @@ mod tests {
         let sunlit = scene(
             SceneBuilder::new()
                 .shape(sphere(), Material::diffuse(Vec3::ONE))
-                .directional_light(crate::scene::DirectionalLight {
+                .directional_light(common::scene::DirectionalLight {
                     direction: -Vec3::Y,
                     irradiance: Vec3::ONE,
                 }),
@@ -688,9 +690,9 @@ mod tests {
 
     #[test]
     fn light_left_out_is_noted_and_approximations_say_how() {
-        let rough = Material::Glossy(crate::scene::Glossy {
-            stands_in_for: Some(crate::scene::Microfacet::isotropic(
-                crate::scene::MicrofacetDistribution::Beckmann,
+        let rough = Material::Glossy(common::scene::Glossy {
+            stands_in_for: Some(common::scene::Microfacet::isotropic(
+                common::scene::MicrofacetDistribution::Beckmann,
                 0.5,
             )),
             ..match Material::glossy(Vec3::ONE, 6.0) {
@@ -731,7 +733,7 @@ mod tests {
             chapter: Chapter::PATH_TRACING,
             approximates: &[],
         };
-        let gold = crate::scene::Conductor {
+        let gold = common::scene::Conductor {
             eta: Vec3::new(0.143, 0.375, 1.442),
             k: Vec3::new(3.983, 2.386, 1.603),
             specular_reflectance: Vec3::ONE,
@@ -758,11 +760,11 @@ mod tests {
 
         // Rough: a lobe, which needs chapter 06; eta 0 reflects everything, so no note on
         // its colour.
-        let rough = Material::Conductor(crate::scene::Conductor {
+        let rough = Material::Conductor(common::scene::Conductor {
             eta: Vec3::ZERO,
             k: Vec3::ONE,
-            roughness: Some(crate::scene::Microfacet::isotropic(
-                crate::scene::MicrofacetDistribution::Beckmann,
+            roughness: Some(common::scene::Microfacet::isotropic(
+                common::scene::MicrofacetDistribution::Beckmann,
                 0.5,
             )),
             ..gold
@@ -790,7 +792,7 @@ mod tests {
                 "a thin pane of glass (thindielectric) (shape 1)",
             ),
             (
-                Material::Plastic(crate::scene::Plastic {
+                Material::Plastic(common::scene::Plastic {
                     diffuse_reflectance: Vec3::splat(0.5),
                     specular_reflectance: Vec3::ONE,
                     diffuse_texture: None,
@@ -804,8 +806,8 @@ mod tests {
                 "plastic (shape 1)",
             ),
             (
-                Material::Mask(crate::scene::Mask {
-                    opacity: crate::scene::Opacity::Uniform(0.5),
+                Material::Mask(common::scene::Mask {
+                    opacity: common::scene::Opacity::Uniform(0.5),
                     nested: Box::new(Material::diffuse(Vec3::ONE)),
                 }),
                 "a cut-out (mask) (shape 1)",
@@ -829,7 +831,7 @@ mod tests {
         ];
         let mut moving =
             scene(SceneBuilder::new().moving(sphere(), keyframes, Material::diffuse(Vec3::ONE)));
-        moving.surfaces[0].emitter = Some(crate::scene::AreaEmitter::uniform(Vec3::ONE));
+        moving.surfaces[0].emitter = Some(common::scene::AreaEmitter::uniform(Vec3::ONE));
         let refusal = SOFT_SHADOWS.check(&moving).unwrap_err();
         assert!(
             refusal.contains("an area light that moves (shape 1); no chapter samples"),
