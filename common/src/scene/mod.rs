@@ -25,6 +25,7 @@ mod emission_sampling;
 mod environment_map;
 mod environment_sampling;
 mod grid_distribution;
+mod lat_long;
 mod light;
 mod material;
 mod settings;
@@ -34,9 +35,10 @@ pub use builder::SceneBuilder;
 pub use camera::{Camera, CameraFrame, CameraModel};
 pub use capabilities::{Capabilities, Chapter, Feature, FeatureUse};
 pub use emission_sampling::{EMISSION_GRID, UNIFORM_SHARE};
-pub use environment_map::{EnvironmentMap, EnvironmentMapError, direction_of, direction_to_uv};
+pub use environment_map::{EnvironmentMap, EnvironmentMapError};
 pub use environment_sampling::{EnvironmentSampling, luminance};
 pub use grid_distribution::GridDistribution;
+pub use lat_long::{direction_of, direction_to_uv};
 pub use light::{AreaEmitter, DirectionalLight, PointLight};
 pub use material::{
     AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
