@@ -8,7 +8,7 @@
 //!
 //! - [`optics`]: reflection, Snell's law, the Fresnel equations.
 //! - [`camera`]: the pinhole camera.
-//! - [`scene`]: the two questions the tracer asks of the world (the world itself is the
+//! - [`world`]: the two questions the tracer asks of the world (the world itself is the
 //!   workbook's scene model, `common::scene`); [`scenes`]: the chapter's built-in scenes;
 //!   [`CAPABILITIES`]: what of a scene file the chapter renders.
 //! - [`tracer`]: the recursive tracer.
@@ -23,9 +23,9 @@ pub mod camera;
 pub mod figures;
 pub mod optics;
 pub mod pixel;
-pub mod scene;
 pub mod scenes;
 pub mod tracer;
+pub mod world;
 
 use camera::PinholeCamera;
 use common::film::PixelBoxFilter;

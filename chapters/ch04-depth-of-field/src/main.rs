@@ -4,7 +4,7 @@ use ch03_anti_aliasing::cli::AntiAliasingArgs;
 use ch04_depth_of_field::Aperture;
 use ch04_depth_of_field::cli::LensArgs;
 use ch04_depth_of_field::scene_file::read_with_camera_side;
-use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
+use ch04_depth_of_field::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch04_depth_of_field::{CAPABILITIES, figures, render_with};
 use common::cli::RenderArgs;
 use std::process::ExitCode;
@@ -38,7 +38,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         },
         || {
             let name = command.builtin.name().to_string();
-            Ok((command.builtin.build(DEFAULT_DEPTH), name))
+            Ok((command.builtin.build(DEFAULT_MAX_DEPTH), name))
         },
     )?;
     let (film, scene_lens) = match from_file {

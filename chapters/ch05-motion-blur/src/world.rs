@@ -12,7 +12,7 @@ use crate::animated_transform::AnimatedTransform;
 use crate::moving::{MovingObjects, MovingShape};
 use crate::shutter::Shutter;
 use ch01_whitted::camera::PinholeCamera;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::scene::{CameraFrame, Scene};

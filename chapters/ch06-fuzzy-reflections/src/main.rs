@@ -3,7 +3,7 @@
 
 use ch05_motion_blur::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
-use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
+use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch06_fuzzy_reflections::{CAPABILITIES, PointLights, figures, render_with};
 use std::process::ExitCode;
 
@@ -28,7 +28,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let builtin = || {
         let scene = command
             .builtin
-            .scene(DEFAULT_DEPTH, command.builtin.default_exponent());
+            .scene(DEFAULT_MAX_DEPTH, command.builtin.default_exponent());
         Ok((scene, command.builtin.name().to_string()))
     };
     let setup = command.camera.setup(

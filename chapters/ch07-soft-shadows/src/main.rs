@@ -4,7 +4,7 @@
 use ch05_motion_blur::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::cli::FuzzyArgs;
 use ch07_soft_shadows::cli::LightArgs;
-use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+use ch07_soft_shadows::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch07_soft_shadows::{AreaLights, CAPABILITIES};
 use ch07_soft_shadows::{figures, render_with};
 use common::cli::parse_number;
@@ -46,7 +46,7 @@ fn main() -> ExitCode {
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let light_scale = check_light_scale(command.light_scale)?;
     let builtin = || {
-        let scene = command.builtin.build(DEFAULT_DEPTH, light_scale).scene;
+        let scene = command.builtin.build(DEFAULT_MAX_DEPTH, light_scale).scene;
         Ok((scene, command.builtin.name().to_string()))
     };
     let setup = command.camera.setup(

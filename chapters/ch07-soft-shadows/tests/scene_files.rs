@@ -2,7 +2,7 @@
 //! piece of a shape (six for a cube, one per triangle of a mesh), each with the file's
 //! radiance; what the chapter cannot render is refused with the shape's position.
 
-use ch07_soft_shadows::light::LightShape;
+use ch07_soft_shadows::area_lights::LightShape;
 use ch07_soft_shadows::{AreaLights, CAPABILITIES, DiscWarp, LightSampling};
 use common::scene::Scene;
 use common::scene_file::{load_scene_file, parse_scene};
@@ -52,7 +52,7 @@ fn every_shipped_scene_converts_with_its_lights() {
                 let light = file.lights.lights[*index as usize];
                 assert_eq!(
                     light.shape,
-                    ch07_soft_shadows::scene::light_shape(shape),
+                    ch07_soft_shadows::area_lights::light_shape(shape),
                     "{name}"
                 );
             }

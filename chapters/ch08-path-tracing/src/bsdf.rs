@@ -125,7 +125,7 @@ impl Bsdf<'_> {
                 let choice = sampler.get_1d();
                 if let Some(roughness) = g.stands_in_for {
                     let u = sampler.get_2d();
-                    return microfacet::dielectric(hit, &g, roughness).sample(wo, choice, u);
+                    return microfacet::rough_dielectric(hit, &g, roughness).sample(wo, choice, u);
                 }
                 let u = if g.exponent.is_finite() {
                     sampler.get_2d()
@@ -138,7 +138,7 @@ impl Bsdf<'_> {
                 None => conductor::sample(hit, wo, &c),
                 Some(roughness) => {
                     let (choice, u) = (sampler.get_1d(), sampler.get_2d());
-                    microfacet::conductor(hit, wo, &c, roughness)?.sample(wo, choice, u)
+                    microfacet::rough_conductor(hit, wo, &c, roughness)?.sample(wo, choice, u)
                 }
             },
             Material::ThinDielectric { int_ior, ext_ior } => Some(thin_dielectric::sample(
@@ -152,11 +152,8 @@ impl Bsdf<'_> {
                 let choice = sampler.get_1d();
                 match g.roughness {
                     None => dielectric::sample_tinted(hit, wo, &g, choice),
-                    Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).sample(
-                        wo,
-                        choice,
-                        sampler.get_2d(),
-                    ),
+                    Some(roughness) => microfacet::tinted_rough_dielectric(hit, &g, roughness)
+                        .sample(wo, choice, sampler.get_2d()),
                 }
             }
             Material::Plastic(p) => {
@@ -192,17 +189,19 @@ impl Bsdf<'_> {
             Material::Glossy(g) => glossy::eval(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => match g.stands_in_for {
                 None => rough_glass::eval(hit, wo, wi, &g, self.fuzz),
-                Some(roughness) => microfacet::dielectric(hit, &g, roughness).eval(wo, wi),
+                Some(roughness) => microfacet::rough_dielectric(hit, &g, roughness).eval(wo, wi),
             },
             Material::Conductor(c) => match c.roughness {
                 None => Vec3::ZERO,
-                Some(roughness) => microfacet::conductor(hit, wo, &c, roughness)
+                Some(roughness) => microfacet::rough_conductor(hit, wo, &c, roughness)
                     .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
             },
             Material::ThinDielectric { .. } => Vec3::ZERO,
             Material::TintedGlass(g) => match g.roughness {
                 None => Vec3::ZERO,
-                Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).eval(wo, wi),
+                Some(roughness) => {
+                    microfacet::tinted_rough_dielectric(hit, &g, roughness).eval(wo, wi)
+                }
             },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::eval(hit, wo, wi, &p),
@@ -227,17 +226,19 @@ impl Bsdf<'_> {
             Material::Glossy(g) => glossy::pdf(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => match g.stands_in_for {
                 None => rough_glass::pdf(hit, wo, wi, &g, self.fuzz),
-                Some(roughness) => microfacet::dielectric(hit, &g, roughness).pdf(wo, wi),
+                Some(roughness) => microfacet::rough_dielectric(hit, &g, roughness).pdf(wo, wi),
             },
             Material::Conductor(c) => match c.roughness {
                 None => 0.0,
-                Some(roughness) => microfacet::conductor(hit, wo, &c, roughness)
+                Some(roughness) => microfacet::rough_conductor(hit, wo, &c, roughness)
                     .map_or(0.0, |bsdf| bsdf.pdf(wo, wi)),
             },
             Material::ThinDielectric { .. } => 0.0,
             Material::TintedGlass(g) => match g.roughness {
                 None => 0.0,
-                Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).pdf(wo, wi),
+                Some(roughness) => {
+                    microfacet::tinted_rough_dielectric(hit, &g, roughness).pdf(wo, wi)
+                }
             },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::pdf(hit, wo, wi, &p),

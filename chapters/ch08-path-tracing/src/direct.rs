@@ -24,7 +24,7 @@ use crate::bsdf::Bsdf;
 use crate::mis::MisHeuristic;
 use crate::nee::{directional_lights, light_sample_contribution, point_lights};
 use crate::path::PathTracer;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use common::Ray;
 use common::render::SampleCounters;
 use common::sampler::Sampler;

@@ -26,8 +26,8 @@
 
 use crate::agreement::AGREEMENT;
 use crate::dimensions::render_counted;
-use crate::distribution::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
-use crate::distribution::{DistributionOptions, render_distribution};
+use crate::distribution_tracer::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
+use crate::distribution_tracer::{DistributionOptions, render_distribution};
 use crate::microfacet::chi2_table;
 use crate::microfacet::figures as mf_figures;
 use crate::mis::MisHeuristic;

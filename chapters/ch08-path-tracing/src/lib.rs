@@ -15,7 +15,7 @@
 //!   and the point lights'.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
 //! - [`path`]: the path loop; [`render_with`].
-//! - [`distribution`]: Cook's branching tracer with every effect, for comparison;
+//! - [`distribution_tracer`]: Cook's branching tracer with every effect, for comparison;
 //!   [`render_distribution`].
 //! - [`microfacet`]: beyond the lecture, Mitsuba 3's `roughconductor`, `roughdielectric` and
 //!   `roughplastic` (Beckmann and GGX, visible-normal sampling), in the local frame.
@@ -30,7 +30,7 @@ pub mod bsdf;
 pub mod cli;
 pub mod dimensions;
 pub mod direct;
-pub mod distribution;
+pub mod distribution_tracer;
 pub mod environment;
 pub mod figures;
 pub mod furnace;
@@ -44,7 +44,7 @@ pub mod roulette;
 pub mod scene_file;
 
 pub use bsdf::{Bsdf, BsdfSample};
-pub use distribution::{DistributionOptions, DistributionTracer, render_distribution};
+pub use distribution_tracer::{DistributionOptions, DistributionTracer, render_distribution};
 pub use lights::SceneLights;
 pub use mis::MisHeuristic;
 pub use options::PathOptions;

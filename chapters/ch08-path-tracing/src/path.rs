@@ -153,7 +153,7 @@ impl PathTracer<'_> {
     /// The camera ray continued through every emitting shape it meets, for
     /// [`past_hidden_emitters`](Self::past_hidden_emitters).
     fn through_emitters(&self, camera_ray: &Ray, counters: &mut SampleCounters) -> Ray {
-        use ch01_whitted::scene::World;
+        use ch01_whitted::world::World;
         /// More emitting surfaces in a row than any scene stacks; a hostile one that does
         /// shows the last as a black surface instead of looping on.
         const MOST_SKIPPED: usize = 1024;
@@ -205,7 +205,7 @@ impl PathTracer<'_> {
         );
         // BEGIN SOLUTION
         use crate::mis::MisHeuristic;
-        use ch01_whitted::scene::World;
+        use ch01_whitted::world::World;
         // The MIS weight of light this segment finds, which the light sample of the previous
         // bounce would have chosen with density `light_pdf`: 1 after the camera, after a
         // delta bounce (no light sample could be taken there) or without NEE; 0 with NEE but
@@ -373,7 +373,7 @@ impl PathTracer<'_> {
     ) -> Vec3 {
         // BEGIN SOLUTION
         use crate::nee::light_sample_contribution;
-        use ch01_whitted::scene::World;
+        use ch01_whitted::world::World;
         // With one light to pick from there is nothing to choose: no number is drawn.
         let u_pick = if self.lights.count() > 1 {
             sampler.get_1d()
@@ -416,7 +416,7 @@ mod tests {
     use crate::bsdf::test_support::floor_hit;
     use crate::furnace::spheres;
     use crate::mis::MisHeuristic;
-    use ch01_whitted::scene::World;
+    use ch01_whitted::world::World;
     use ch07_soft_shadows::reference::sphere_irradiance;
     use ch07_soft_shadows::{AreaLights, LightSampling};
     use common::sampler::IndependentSampler;

@@ -132,7 +132,7 @@ impl<B: LocalBsdf> Placed<B> {
 }
 
 /// Mitsuba's `roughconductor` at `hit`, seen from `wo`.
-pub fn conductor(
+pub fn rough_conductor(
     hit: &SurfaceHit,
     wo: Vec3,
     metal: &Conductor,
@@ -173,7 +173,7 @@ pub fn plastic(
 }
 
 /// Mitsuba's `roughdielectric` at `hit`: the normal on the outside, whichever side `wo` is.
-pub fn dielectric(
+pub fn rough_dielectric(
     hit: &SurfaceHit,
     glass: &RoughGlass,
     roughness: Microfacet,
@@ -185,7 +185,7 @@ pub fn dielectric(
 }
 
 /// Mitsuba's `roughdielectric` with factors on its lobes, at `hit`.
-pub fn tinted_dielectric(
+pub fn tinted_rough_dielectric(
     hit: &SurfaceHit,
     glass: &TintedGlass,
     roughness: Microfacet,

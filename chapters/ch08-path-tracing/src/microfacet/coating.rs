@@ -178,8 +178,8 @@ fn points(eta: f32) -> usize {
 fn transmitted(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
     over_visible_normals(points(eta), |u| {
         let m = distribution.sample_visible_normal(w, u);
-        let f = fresnel::dielectric(w.dot(m), eta);
-        let t = fresnel::refract(w, m, &f);
+        let f = fresnel::DielectricFresnel::new(w.dot(m), eta);
+        let t = fresnel::refract_away(w, m, &f);
         if t.z * w.z >= 0.0 {
             return 0.0;
         }
@@ -192,11 +192,11 @@ fn transmitted(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
 fn reflected(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
     over_visible_normals(points(eta), |u| {
         let m = distribution.sample_visible_normal(w, u);
-        let r = fresnel::reflect(w, m);
+        let r = fresnel::reflect_away(w, m);
         if r.z <= 0.0 || w.z <= 0.0 {
             return 0.0;
         }
-        let f = fresnel::dielectric(w.dot(m), eta).reflectance;
+        let f = fresnel::DielectricFresnel::new(w.dot(m), eta).reflectance;
         f64::from(distribution.g1(r, m) * f)
     })
 }
@@ -211,12 +211,13 @@ mod tests {
         let inside: f64 = (0..n)
             .map(|i| {
                 let mu = (i as f64 + 0.5) / n as f64;
-                2.0 * mu * f64::from(fresnel::dielectric(mu as f32, 1.0 / eta).reflectance)
+                2.0 * mu
+                    * f64::from(fresnel::DielectricFresnel::new(mu as f32, 1.0 / eta).reflectance)
             })
             .sum::<f64>()
             / n as f64;
         (
-            move |mu| 1.0 - fresnel::dielectric(mu, eta).reflectance,
+            move |mu| 1.0 - fresnel::DielectricFresnel::new(mu, eta).reflectance,
             inside,
         )
     }

@@ -84,7 +84,7 @@ impl RoughPlastic {
             return Vec3::ZERO;
         }
         let h = (wo + wi).normalize();
-        let f = fresnel::dielectric(wo.dot(h), self.eta).reflectance;
+        let f = fresnel::DielectricFresnel::new(wo.dot(h), self.eta).reflectance;
         let coating = f * self.distribution.d(h) * self.distribution.g(wo, wi, h) / (4.0 * wo.z);
         let r_int = self.coating.internal_reflectance;
         let albedo = if self.nonlinear {
@@ -125,7 +125,7 @@ impl RoughPlastic {
         }
         let wi = if choice < self.coating_probability(wo.z) {
             let m = self.distribution.sample_visible_normal(wo, u);
-            fresnel::reflect(wo, m)
+            fresnel::reflect_away(wo, m)
         } else {
             sample_cosine_hemisphere(u)
         };

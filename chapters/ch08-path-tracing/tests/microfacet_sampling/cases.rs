@@ -150,7 +150,7 @@ fn facing(wo: Vec3) -> Vec3 {
 }
 
 fn mirror(wo: Vec3) -> Vec3 {
-    fresnel::reflect(wo, facing(wo))
+    fresnel::reflect_away(wo, facing(wo))
 }
 
 /// Copper-like metal at two roughnesses and anisotropic, from the normal, at 70° and grazing.
@@ -198,9 +198,9 @@ pub fn glass() -> Vec<Case> {
                 }];
                 // Rough facets refract even beyond the critical angle: straight through,
                 // then, when no smooth refraction exists.
-                let f = fresnel::dielectric(wo.z, 1.5);
+                let f = fresnel::DielectricFresnel::new(wo.z, 1.5);
                 let axis = if f.reflectance < 1.0 {
-                    fresnel::refract(wo, Vec3::Z, &f)
+                    fresnel::refract_away(wo, Vec3::Z, &f)
                 } else {
                     -side
                 };

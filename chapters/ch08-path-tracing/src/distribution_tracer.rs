@@ -31,7 +31,7 @@ pub mod ray_tree;
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
 use crate::nee::point_lights;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::{CameraRays, TimeSampler};
