@@ -30,6 +30,7 @@ pub mod plastic;
 pub mod rough_glass;
 pub mod thin_dielectric;
 
+use crate::microfacet::coating::Coatings;
 use ch06_fuzzy_reflections::FuzzMethod;
 use common::geometry::SurfaceHit;
 use common::sampler::Sampler;
@@ -69,6 +70,8 @@ pub struct Bsdf<'a> {
     pub hit: &'a SurfaceHit,
     /// How fuzzy lobes spread (chapter 06's `cos^n` lobe or the empirical disc).
     pub fuzz: FuzzMethod,
+    /// The rough plastics' coatings, tabulated before the render.
+    pub coatings: &'a Coatings,
 }
 
 impl Bsdf<'_> {
@@ -162,7 +165,8 @@ impl Bsdf<'_> {
                 match p.roughness {
                     None => plastic::sample(hit, wo, &p, choice, u),
                     Some(roughness) => {
-                        microfacet::plastic(hit, wo, &p, roughness)?.sample(wo, choice, u)
+                        microfacet::rough_plastic(hit, wo, &p, roughness, self.coatings)?
+                            .sample(wo, choice, u)
                     }
                 }
             }
@@ -205,7 +209,7 @@ impl Bsdf<'_> {
             },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::eval(hit, wo, wi, &p),
-                Some(roughness) => microfacet::plastic(hit, wo, &p, roughness)
+                Some(roughness) => microfacet::rough_plastic(hit, wo, &p, roughness, self.coatings)
                     .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
             },
             Material::Mask(ref m) => {
@@ -242,9 +246,8 @@ impl Bsdf<'_> {
             },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::pdf(hit, wo, wi, &p),
-                Some(roughness) => {
-                    microfacet::plastic(hit, wo, &p, roughness).map_or(0.0, |bsdf| bsdf.pdf(wo, wi))
-                }
+                Some(roughness) => microfacet::rough_plastic(hit, wo, &p, roughness, self.coatings)
+                    .map_or(0.0, |bsdf| bsdf.pdf(wo, wi)),
             },
             Material::Mask(ref m) => {
                 mask::pdf(mask::opacity(m.opacity), &self.nested(&m.nested), wo, wi)
@@ -339,6 +342,7 @@ mod tests {
             material: &one_sided,
             hit: &hit,
             fuzz: FuzzMethod::Lobe,
+            coatings: &crate::microfacet::coating::Coatings::default(),
         };
         let f = bsdf.eval(Vec3::Y, Vec3::new(0.0, 0.8, 0.6));
         assert!(
@@ -416,6 +420,7 @@ mod tests {
             material: &pane,
             hit: &hit,
             fuzz: ch06_fuzzy_reflections::FuzzMethod::Lobe,
+            coatings: &crate::microfacet::coating::Coatings::default(),
         };
         assert!(bsdf.is_delta());
         let mut sampler = common::sampler::IndependentSampler::new(1);

@@ -62,6 +62,7 @@ impl PathTracer<'_> {
             material: &self.world.scene.material_at(hit.shape, hit.uv),
             hit: &hit,
             fuzz: self.fuzz,
+            coatings: &self.coatings,
         };
         let wo = -ray.dir;
         let counts = DirectSamples {

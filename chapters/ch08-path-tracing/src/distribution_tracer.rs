@@ -30,6 +30,7 @@ pub mod ray_tree;
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
+use crate::microfacet::coating::Coatings;
 use crate::nee::point_lights;
 use ch01_whitted::world::World;
 use ch04_depth_of_field::Lens;
@@ -85,7 +86,7 @@ impl DistributionOptions {
 /// Its area lights are chapter 07's, whose radiance is the same at every point: a light whose
 /// radiance is a texture is read by the path tracer only ([`crate::lights`]); this tracer
 /// renders the chapter's own scenes, which have none.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct DistributionTracer<'a> {
     /// The scene.
     pub world: &'a MotionScene,
@@ -97,6 +98,8 @@ pub struct DistributionTracer<'a> {
     pub options: DistributionOptions,
     /// How fuzzy lobes spread.
     pub fuzz: FuzzMethod,
+    /// The rough plastics' coatings, tabulated here, before any ray is traced.
+    pub coatings: Coatings,
 }
 
 impl<'a> DistributionTracer<'a> {
@@ -114,6 +117,7 @@ impl<'a> DistributionTracer<'a> {
             lights: SceneLights::of(world, area_lights, light_options.sampling),
             options,
             fuzz: FuzzMethod::Lobe,
+            coatings: Coatings::of(&world.scene),
         }
     }
 
@@ -155,6 +159,7 @@ impl<'a> DistributionTracer<'a> {
             material: &self.world.scene.material_at(hit.shape, hit.uv),
             hit: &hit,
             fuzz: self.fuzz,
+            coatings: &self.coatings,
         };
         let wo = -ray.dir.normalize();
         let k = self.options.material_samples.max(1);

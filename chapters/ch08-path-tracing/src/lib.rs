@@ -58,6 +58,7 @@ use ch07_soft_shadows::{AreaLights, LightSampling};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
 use common::scene::{Capabilities, Chapter};
+use microfacet::coating::Coatings;
 
 /// Everything about a path-traced render besides the scene and the image settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -104,13 +105,13 @@ pub fn render_with<S: TimeSampler>(
 ) -> RenderOutput {
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     let area_lights = AreaLights::of(&world.scene);
-    // The rough plastics' coating tables, made before the threads start.
-    crate::microfacet::coating::Coating::tabulate_for(&world.scene);
     let tracer = PathTracer {
         world,
         lights: SceneLights::of(world, &area_lights, method.light_sampling),
         options: method.options,
         fuzz: method.fuzz,
+        // The rough plastics' coating tables, made before the threads start.
+        coatings: Coatings::of(&world.scene),
     };
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
         let ray = camera_rays.generate(world, p_film, sampler);

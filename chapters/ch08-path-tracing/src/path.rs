@@ -28,6 +28,7 @@
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
+use crate::microfacet::coating::Coatings;
 use crate::nee::{directional_lights, point_lights};
 use crate::options::PathOptions;
 use ch05_motion_blur::MotionScene;
@@ -98,7 +99,7 @@ pub struct NextSegment {
 }
 
 /// A path tracer over a scene.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct PathTracer<'a> {
     /// The scene with its motion: shapes, surfaces, point lights, environment, camera.
     pub world: &'a MotionScene,
@@ -108,6 +109,9 @@ pub struct PathTracer<'a> {
     pub options: PathOptions,
     /// How fuzzy lobes spread.
     pub fuzz: FuzzMethod,
+    /// The rough plastics' coatings, tabulated from the scene before the render
+    /// ([`Coatings::of`]).
+    pub coatings: Coatings,
 }
 
 impl PathTracer<'_> {
@@ -256,6 +260,7 @@ impl PathTracer<'_> {
             material: &self.world.scene.material_at(hit.shape, hit.uv),
             hit: &hit,
             fuzz: self.fuzz,
+            coatings: &self.coatings,
         };
         let wo = -ray.dir;
         // 2. Next-event estimation, where the BSDF is not a delta.
@@ -438,6 +443,7 @@ mod tests {
             lights: SceneLights::of(&world, &area_lights, LightSampling::solid_angle()),
             options,
             fuzz: FuzzMethod::Lobe,
+            coatings: Coatings::of(&world.scene),
         };
         use_tracer(&tracer)
     }
@@ -456,6 +462,7 @@ mod tests {
             material,
             hit: &hit,
             fuzz: FuzzMethod::Lobe,
+            coatings: &tracer.coatings,
         };
         let mut sampler = IndependentSampler::new(11);
         (0..n)
@@ -622,6 +629,7 @@ mod tests {
                 material: &glass,
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
+                coatings: &crate::microfacet::coating::Coatings::default(),
             };
             let wo = Vec3::new(0.3, 1.0, 0.2).normalize();
             let mut sampler = IndependentSampler::new(13);
@@ -715,6 +723,7 @@ mod tests {
                         material: &white,
                         hit: &hit,
                         fuzz: FuzzMethod::Lobe,
+                        coatings: &crate::microfacet::coating::Coatings::default(),
                     };
                     let Some(next) =
                         tracer.extend_path(&bsdf, -ray.dir, 0.0, depth, carried, &mut sampler)
@@ -1003,6 +1012,7 @@ mod tests {
                 material: &world.scene.material_at(hit.shape, hit.uv),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
+                coatings: &tracer.coatings,
             };
             let mut sampler = IndependentSampler::new(9);
             let mut counters = SampleCounters::default();
@@ -1119,6 +1129,7 @@ mod tests {
                 material: &world.scene.material_at(hit.shape, hit.uv),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
+                coatings: &tracer.coatings,
             };
             let tally = crate::dimensions::DimensionTally::default();
             let mut sampler =
@@ -1270,6 +1281,7 @@ mod tests {
             lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
             options,
             fuzz: FuzzMethod::Lobe,
+            coatings: Coatings::of(&world.scene),
         };
         use_tracer(&tracer)
     }

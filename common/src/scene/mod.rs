@@ -112,8 +112,9 @@ pub struct Scene {
     /// scenes.
     pub origins: Origins,
     /// The shapes whose light samples follow their radiance's texture, each with the density
-    /// they are drawn with ([`Scene::emission_grid`]), worked out on first use.
-    pub emission_grids: std::sync::OnceLock<Vec<(u32, GridDistribution)>>,
+    /// they are drawn with ([`Scene::emission_grid`]), worked out when the scene is built
+    /// ([`Scene::prepare_emission_grids`]).
+    pub emission_grids: Vec<(u32, GridDistribution)>,
 }
 
 /// What the surface of one shape is made of, whether it glows, and where it was written.
