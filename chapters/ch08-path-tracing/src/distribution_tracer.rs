@@ -145,7 +145,7 @@ impl<'a> DistributionTracer<'a> {
         counters.rays += 1;
         let world = self.world;
         let Some(hit) = world.intersect(ray) else {
-            return world.scene.background(ray.dir);
+            return world.background(ray.dir);
         };
         let mut radiance = if count_emission {
             self.lighting.emitted(&hit, ray)
@@ -156,7 +156,7 @@ impl<'a> DistributionTracer<'a> {
             return radiance; // no segment left to carry reflected light
         }
         let bsdf = Bsdf {
-            material: &self.world.scene.material_at(hit.shape, hit.uv),
+            material: &self.world.material_at(&hit),
             hit: &hit,
             fuzz: self.fuzz,
             coatings: &self.coatings,
