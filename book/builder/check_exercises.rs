@@ -39,7 +39,6 @@ pub fn run(
     selected: &dyn Fn(&Exercise) -> bool,
     wrong_answers_only: bool,
     write_needs: bool,
-    mutants: Option<usize>,
 ) -> Result<()> {
     if exercises.is_empty() {
         // Still worth one look: a solution marker nobody listed would leak to students.
@@ -53,12 +52,8 @@ pub fn run(
     let target_dir = workspace::target_dir(root);
     let student_dir = target_dir.join("student");
     let chosen: Vec<Exercise> = exercises.iter().filter(|e| selected(e)).cloned().collect();
-    if let Some(most) = mutants {
-        let mut trial = Trial::new(root, &student_dir)?;
-        return crate::mutants::sweep(&mut trial, exercises, &chosen, most);
-    }
     if wrong_answers_only {
-        let mut trial = Trial::new(root, &student_dir)?;
+        let mut trial = Trial::in_workspace(root)?;
         let runs = trial.run_marked(&chosen, exercises)?;
         return prove_wrong_answers(&mut trial, &chosen, &runs);
     }
@@ -237,9 +232,15 @@ pub struct Trial<'a> {
 }
 
 impl<'a> Trial<'a> {
+    /// A fresh copy of the workspace at `root`, in its build directory's `student/`, where the
+    /// wrong answers and the mutants are tried.
+    pub fn in_workspace(root: &'a Path) -> Result<Self> {
+        Self::new(root, &workspace::target_dir(root).join("student"))
+    }
+
     /// Writes a fresh copy of the workspace, every solution in place: for checking the wrong
     /// answers alone, without the student edition.
-    pub fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
+    fn new(root: &'a Path, student_dir: &Path) -> Result<Self> {
         let copy = student_dir.join("trials");
         student_edition::write_copy(root, &copy)?;
         write_config(&copy, TRIALS_CONFIG)?;

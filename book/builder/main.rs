@@ -236,14 +236,16 @@ fn main() -> Result<()> {
                 anyhow::bail!("--only {unknown}: there is no such exercise in book/exercises.toml");
             }
             let selected = |e: &exercise_list::Exercise| only.is_empty() || only.contains(&e.name);
-            check_exercises::run(
-                &root,
-                &exercises,
-                &selected,
-                wrong_answers_only,
-                write_needs,
-                mutants,
-            )
+            match mutants {
+                Some(most) => mutants::run(&root, &exercises, &selected, most),
+                None => check_exercises::run(
+                    &root,
+                    &exercises,
+                    &selected,
+                    wrong_answers_only,
+                    write_needs,
+                ),
+            }
         }
         Some(Task::CheckLabReport { screenshots }) => {
             let screenshots = screenshots

@@ -302,14 +302,21 @@ fn verdict(passed: bool, output: &str, own: &(PathBuf, std::ops::Range<usize>)) 
     Verdict::Refused
 }
 
-/// Runs the sweep over the `chosen` exercises (of `all`), up to `most` mutants each; fails on
-/// any crash or hang.
-pub fn sweep(
-    trial: &mut Trial<'_>,
+/// Runs the sweep over the `selected` exercises (of `all`) in a fresh copy of the workspace at
+/// `root`, up to `most` mutants each; fails on any crash or hang.
+pub fn run(
+    root: &Path,
     all: &[Exercise],
-    chosen: &[Exercise],
+    selected: &dyn Fn(&Exercise) -> bool,
     most: usize,
 ) -> Result<()> {
+    let chosen: Vec<Exercise> = all.iter().filter(|e| selected(e)).cloned().collect();
+    let mut trial = Trial::in_workspace(root)?;
+    sweep(&mut trial, all, &chosen, most)
+}
+
+/// The sweep over the `chosen` exercises (of `all`) in `trial`.
+fn sweep(trial: &mut Trial<'_>, all: &[Exercise], chosen: &[Exercise], most: usize) -> Result<()> {
     let started = Instant::now();
     let runs = trial.run_marked(chosen, all)?;
     let mut pending: Vec<(&Exercise, Mutant)> = Vec::new();

@@ -9,27 +9,30 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use mdbook_driver::MDBook;
 use mdbook_katex::preprocess::KatexProcessor;
+use mdbook_preprocessor::Preprocessor;
 
 use crate::exercise_preprocessor::ExercisePreprocessor;
-use crate::lab_report::LabReport;
 use crate::{katex_offline, mdbook_log, offline_check, prose_numbers};
 
 /// Builds the book whose `book.toml` is in `book_dir`; returns the path of its front page.
 pub fn build(book_dir: &Path) -> Result<PathBuf> {
-    build_with(book_dir, None)
+    build_with(book_dir, None::<ExercisePreprocessor>)
 }
 
-/// Builds the book, with the student's figures set beside the reference ones when a
-/// `lab_report` is given (`progress --site`).
-pub fn build_with(book_dir: &Path, lab_report: Option<LabReport>) -> Result<PathBuf> {
+/// Builds the book with one more preprocessor run after the exercises and before KaTeX.
+///
+/// The lab report (`progress --site`) uses it to set the student's figures beside the
+/// reference ones; taking any preprocessor keeps the site unaware of the lab report, which
+/// sits above it.
+pub fn build_with(book_dir: &Path, extra: Option<impl Preprocessor + 'static>) -> Result<PathBuf> {
     // A number typed into a page fails the build before anything is written.
     prose_numbers::check(book_dir.parent().unwrap_or(book_dir), &book_dir.join("src"))?;
     let mut book = MDBook::load(book_dir)
         .with_context(|| format!("cannot load the book in {}", book_dir.display()))?;
     katex_offline::configure(&mut book.config)?;
     book.with_preprocessor(ExercisePreprocessor);
-    if let Some(lab_report) = lab_report {
-        book.with_preprocessor(lab_report);
+    if let Some(extra) = extra {
+        book.with_preprocessor(extra);
     }
     book.with_preprocessor(KatexProcessor);
 

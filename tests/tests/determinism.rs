@@ -125,12 +125,12 @@ fn two_runs_of_each_binary_write_the_same_bytes() {
 
 #[test]
 fn chapter_05_is_thread_independent_with_motion_and_a_lens() {
-    use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
+    use ch05_motion_blur::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER};
     use ch05_motion_blur::{StratifiedTime, render_with};
     let lens = Lens::new(0.05, 5.0).unwrap();
     let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
     for builtin in Builtin::ALL {
-        let scene = builtin.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+        let scene = builtin.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
         let pixels = PixelSampler::new(PixelSamplerKind::Stratified, 4, 11).unwrap();
         let sampler = StratifiedTime::new(pixels, 4, 11);
         assert_thread_independent(&format!("ch05 {}", builtin.name()), |t| {
@@ -141,13 +141,13 @@ fn chapter_05_is_thread_independent_with_motion_and_a_lens() {
 
 #[test]
 fn chapter_06_is_thread_independent_with_every_choice_at_glass_and_stray_ray_policy() {
-    use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
+    use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_MAX_DEPTH};
     use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, PointLights};
     use ch06_fuzzy_reflections::{TraceOptions, render_with};
     let lens = Lens::new(0.05, 5.0).unwrap();
     let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
     for builtin in Builtin::ALL {
-        let scene = builtin.build(DEFAULT_DEPTH, 10.0);
+        let scene = builtin.build(DEFAULT_MAX_DEPTH, 10.0);
         for (glass, fuzz, below) in [
             (GlassStrategy::Fresnel, FuzzMethod::Lobe, BelowSurface::Drop),
             (
@@ -178,13 +178,13 @@ fn chapter_06_is_thread_independent_with_every_choice_at_glass_and_stray_ray_pol
 #[test]
 fn chapter_07_is_thread_independent_with_every_light_option() {
     use ch07_soft_shadows::disc_warp::DiscWarp;
-    use ch07_soft_shadows::light_options::{LightOptions, LightStrata};
     use ch07_soft_shadows::render_with;
-    use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+    use ch07_soft_shadows::scenes::{Builtin, DEFAULT_MAX_DEPTH};
+    use ch07_soft_shadows::shadow_rays::{LightOptions, LightStrata};
     use ch07_soft_shadows::strategy::{LightSampling, Strategy};
     let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
     for builtin in Builtin::ALL {
-        let scene = builtin.build(DEFAULT_DEPTH, 1.0);
+        let scene = builtin.build(DEFAULT_MAX_DEPTH, 1.0);
         for (samples, strata, strategy, disc_warp) in [
             (
                 1,
@@ -227,11 +227,11 @@ fn chapter_07_is_thread_independent_with_every_light_option() {
 
 #[test]
 fn chapter_08_path_tracing_is_thread_independent_with_every_estimator() {
-    use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+    use ch07_soft_shadows::scenes::{Builtin, DEFAULT_MAX_DEPTH};
     use ch08_path_tracing::{Method, MisHeuristic, PathOptions, render_with};
     let filter = ReconstructionFilter::new(FilterKind::Gaussian, None).unwrap();
     for builtin in Builtin::ALL {
-        let scene = builtin.build(DEFAULT_DEPTH, 1.0);
+        let scene = builtin.build(DEFAULT_MAX_DEPTH, 1.0);
         let counts = Some(common::scene::DirectSamples {
             emitter: 3,
             bsdf: 2,

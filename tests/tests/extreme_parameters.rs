@@ -195,7 +195,7 @@ proptest! {
         builtin in prop::sample::select(ch07_soft_shadows::scenes::Builtin::ALL.to_vec()),
         light_scale in prop_oneof![Just(1e-4f32), log_uniform(1e-4, 1e4), Just(1e4f32)],
         samples in 1u32..=9,
-        strata in prop::sample::select(ch07_soft_shadows::light_options::LightStrata::ALL.to_vec()),
+        strata in prop::sample::select(ch07_soft_shadows::shadow_rays::LightStrata::ALL.to_vec()),
         strategy in prop::sample::select(ch07_soft_shadows::strategy::Strategy::ALL.to_vec()),
         disc_warp in prop::sample::select(ch07_soft_shadows::disc_warp::DiscWarp::ALL.to_vec()),
         max_depth in 1u32..=16,
@@ -203,7 +203,7 @@ proptest! {
         (width, height) in (1u32..=6, 1u32..=5),
         seed in any::<u64>(),
     ) {
-        use ch07_soft_shadows::light_options::LightOptions;
+        use ch07_soft_shadows::shadow_rays::LightOptions;
         use ch07_soft_shadows::strategy::LightSampling;
         let scene = builtin.build(max_depth, light_scale);
         let lights = LightOptions { samples, strata, sampling: LightSampling { strategy, disc_warp } };

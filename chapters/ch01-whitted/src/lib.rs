@@ -8,7 +8,7 @@
 //!
 //! - [`optics`]: reflection, Snell's law, the Fresnel equations.
 //! - [`camera`]: the pinhole camera.
-//! - [`scene`]: the two questions the tracer asks of the world (the world itself is the
+//! - [`world`]: the two questions the tracer asks of the world (the world itself is the
 //!   workbook's scene model, `common::scene`); [`scenes`]: the chapter's built-in scenes.
 //! - [`tracer`]: the recursive tracer.
 //! - [`pixel`]: where in its pixel a ray goes (the centre, or a regular grid).
@@ -21,9 +21,9 @@
 pub mod camera;
 pub mod optics;
 pub mod pixel;
-pub mod scene;
 pub mod scenes;
 pub mod tracer;
+pub mod world;
 
 #[cfg(feature = "lab")]
 #[path = "../lab/mod.rs"]

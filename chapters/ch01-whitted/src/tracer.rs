@@ -6,7 +6,7 @@
 //! traced the same way, recursively, until the depth limit. Every ray is deterministic, so one
 //! ray per pixel gives the final image, with every edge jagged and every shadow hard.
 
-use crate::scene::World;
+use crate::world::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;

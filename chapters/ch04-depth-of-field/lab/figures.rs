@@ -10,7 +10,7 @@ use crate::aperture::{
 use crate::circle_of_confusion::{circle_of_confusion_pixels, measured_blur_width};
 use crate::lens::Lens;
 use crate::render_with;
-use crate::scenes::{BOKEH_SPHERE_DEPTHS, BOKEH_WALL_DEPTH, Builtin, DEFAULT_DEPTH};
+use crate::scenes::{BOKEH_SPHERE_DEPTHS, BOKEH_WALL_DEPTH, Builtin, DEFAULT_MAX_DEPTH};
 use crate::thin_lens::ThinLensCamera;
 use ch01_whitted::camera::PinholeCamera;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
@@ -72,7 +72,7 @@ impl Quality {
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch04", out, quick)?;
     let quality = Quality::at(figures.level());
-    let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+    let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
     let gallery = Gallery::new(&scene, &quality);
     figures.make("the aperture series", |out| aperture_series(out, &gallery))?;
     figures.make("the focus figure", |out| focus_depths(out, &gallery))?;
@@ -567,7 +567,7 @@ mod tests {
 
     #[test]
     fn projection_inverts_the_pinhole_ray() {
-        let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+        let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
         let camera = PinholeCamera::of(&scene.camera, scene.film.width, scene.film.height);
         let p_film = Vec2::new(100.5, 37.25);
         let ray = camera.generate_ray(p_film);

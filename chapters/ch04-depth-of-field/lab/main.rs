@@ -7,7 +7,7 @@ use ch04_depth_of_field::lab::cli::LensArgs;
 use ch04_depth_of_field::lab::figures;
 use ch04_depth_of_field::lab::scene_file::read_with_camera_side;
 use ch04_depth_of_field::render_with;
-use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
+use ch04_depth_of_field::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use std::process::ExitCode;
 use workbench::cli::RenderArgs;
 
@@ -40,7 +40,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
         },
         || {
             let name = command.builtin.name().to_string();
-            Ok((command.builtin.build(DEFAULT_DEPTH), name))
+            Ok((command.builtin.build(DEFAULT_MAX_DEPTH), name))
         },
     )?;
     let (film, scene_lens) = match from_file {

@@ -7,7 +7,7 @@
 //! small holes in a dark far wall: city lights through a curtain, costing no light sampling.
 
 use crate::lens::Lens;
-use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH};
+use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH as WHITTED_MAX_DEPTH};
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::CameraFrame;
 use common::scene::Material;
@@ -67,7 +67,7 @@ impl Builtin {
 }
 
 /// The recursion limit of the built-in scenes: chapter 01's.
-pub const DEFAULT_DEPTH: u32 = DEFAULT_MAX_DEPTH;
+pub const DEFAULT_MAX_DEPTH: u32 = WHITTED_MAX_DEPTH;
 
 /// Radiance of the background seen through the holes of the far wall: much brighter than any
 /// lit surface, so that a hole stays bright even when its light is spread over a blur disc

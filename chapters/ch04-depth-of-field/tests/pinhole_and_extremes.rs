@@ -2,7 +2,7 @@
 //! infinity into a pixel.
 
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
-use ch04_depth_of_field::scenes::{Builtin, DEFAULT_DEPTH};
+use ch04_depth_of_field::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch04_depth_of_field::{Aperture, Lens, LensWarp, render_with};
 use common::render::{RenderOutput, RenderSettings};
 use common::sampler::Sampler;
@@ -16,7 +16,7 @@ fn box_filter() -> ReconstructionFilter {
 
 #[test]
 fn a_zero_aperture_renders_chapter_03s_pinhole_image_bit_for_bit() {
-    let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+    let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
     let settings = RenderSettings::new(40, 27, 4);
     for kind in [PixelSamplerKind::Random, PixelSamplerKind::Stratified] {
         let sampler = PixelSampler::new(kind, 4, 3).unwrap();
@@ -58,7 +58,7 @@ impl Sampler for Counting {
 }
 
 fn dimensions_drawn(lens: Lens) -> u64 {
-    let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+    let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
     let sampler = Counting {
         inner: PixelSampler::new(PixelSamplerKind::Random, 3, 0).unwrap(),
         dimensions: Arc::default(),
@@ -88,7 +88,7 @@ fn all_finite(out: &RenderOutput) -> bool {
 
 #[test]
 fn extreme_lenses_and_budgets_give_finite_pixels() {
-    let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+    let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
     let radii = [0.0, 1e-6, 0.1, 1e3];
     let focus_distances = [1e-4, 1.0, 7.0, 1e8];
     let shapes = [Aperture::Disc, Aperture::polygon(3, 1.0).unwrap()];
@@ -124,7 +124,7 @@ fn extreme_lenses_and_budgets_give_finite_pixels() {
 fn a_huge_aperture_blurs_everything_into_nearly_the_same_colour() {
     // Focused at 1e-4 with a lens of radius 1e3, each pixel averages over almost the whole
     // scene: neighbouring pixels differ far less than in the pinhole image.
-    let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+    let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
     let settings = RenderSettings::new(8, 6, 256);
     let sampler = PixelSampler::new(PixelSamplerKind::Random, 256, 1).unwrap();
     let spread = |lens: Lens| {

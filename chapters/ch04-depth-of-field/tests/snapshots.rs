@@ -5,7 +5,7 @@
 //! count. The renders are random, but their seeds are fixed; the summary is compared
 //! up to floating-point noise (`workbench::assert_close_snapshot!`).
 
-use ch04_depth_of_field::scenes::{BOKEH_SPHERE_DEPTHS, Builtin, DEFAULT_DEPTH};
+use ch04_depth_of_field::scenes::{BOKEH_SPHERE_DEPTHS, Builtin, DEFAULT_MAX_DEPTH};
 use ch04_depth_of_field::{Aperture, Lens, LensWarp, render_with};
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
@@ -13,7 +13,7 @@ use common::sampler::IndependentSampler;
 use workbench::test_support::image_summary;
 
 fn snapshot_of(lens: Lens) -> String {
-    let scene = Builtin::Bokeh.build(DEFAULT_DEPTH);
+    let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
     let spp = 16;
     let settings = RenderSettings::new(48, 32, spp);
     // common's independent sampler and box filter: the snapshots change only when this

@@ -3,7 +3,7 @@
 //! and stratified time; the streak of a shutter that opens over a while; and what motion bounds
 //! cost a BVH.
 
-use crate::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER, swarm};
+use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER, swarm};
 use crate::shutter_opening::{sample_trapezoid_opening, trapezoid_opening_pdf};
 use crate::time_sampling::{StratifiedTime, TimeSampler};
 use crate::world::MotionScene;
@@ -79,11 +79,11 @@ fn shutter(open: f32, close: f32) -> Shutter {
 /// The four kinds of motion, each against the still image.
 fn gallery(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let settings = quality.gallery();
-    let street_still = Builtin::Street.build(DEFAULT_DEPTH, shutter(0.0, 0.0));
-    let street = Builtin::Street.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
-    let spinner = Builtin::Spinner.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
-    let pan_still = Builtin::Pan.build(DEFAULT_DEPTH, shutter(0.0, 0.0));
-    let pan = Builtin::Pan.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+    let street_still = Builtin::Street.build(DEFAULT_MAX_DEPTH, shutter(0.0, 0.0));
+    let street = Builtin::Street.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
+    let spinner = Builtin::Spinner.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
+    let pan_still = Builtin::Pan.build(DEFAULT_MAX_DEPTH, shutter(0.0, 0.0));
+    let pan = Builtin::Pan.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
     let spinner_settings = RenderSettings::new(quality.height, quality.height, quality.spp);
     let cells = vec![
         (
@@ -108,7 +108,7 @@ fn gallery(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
         (
             "a cube at rest".to_string(),
             render(
-                &Builtin::Spinner.build(DEFAULT_DEPTH, shutter(0.0, 0.0)),
+                &Builtin::Spinner.build(DEFAULT_MAX_DEPTH, shutter(0.0, 0.0)),
                 &spinner_settings,
                 0,
             ),
@@ -130,7 +130,7 @@ fn shutter_lengths(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
         .iter()
         .map(|&length: &f32| {
             let open = 0.5 - 0.5 * length;
-            let world = Builtin::Street.build(DEFAULT_DEPTH, shutter(open, open + length));
+            let world = Builtin::Street.build(DEFAULT_MAX_DEPTH, shutter(open, open + length));
             (
                 format!("shutter open for {length} of the motion"),
                 render(&world, &settings, 0),
@@ -200,7 +200,7 @@ fn time_samples(out: &Path) -> anyhow::Result<()> {
 /// Error against time for independent and stratified time on the street scene.
 fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let (width, height) = (quality.width / 4, quality.height / 4);
-    let world = Builtin::Street.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+    let world = Builtin::Street.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
     // Random pixel positions in both: the techniques differ only in how time is drawn.
     let render_time = |stratify: bool, spp: u64, seed: u64| {
         let settings = RenderSettings::new(width, height, spp);

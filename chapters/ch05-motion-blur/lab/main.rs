@@ -5,7 +5,7 @@ use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::lab::CAPABILITIES;
 use ch05_motion_blur::lab::figures;
 use ch05_motion_blur::lab::render_setup::CameraArgs;
-use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
+use ch05_motion_blur::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
 use ch05_motion_blur::{Shutter, TimeSampling, render_with};
 use std::process::ExitCode;
@@ -41,7 +41,7 @@ fn main() -> ExitCode {
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let builtin = || {
-        let scene = command.builtin.scene(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+        let scene = command.builtin.scene(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
         Ok((scene, command.builtin.name().to_string()))
     };
     let adjust_world = |world: MotionScene| {

@@ -11,7 +11,7 @@
 use crate::animated_transform::AnimatedTransform;
 use crate::shutter::Shutter;
 use crate::world::MotionScene;
-use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH};
+use ch01_whitted::scenes::{Builtin as WhittedBuiltin, DEFAULT_MAX_DEPTH as WHITTED_MAX_DEPTH};
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::scene::{
     Camera, CameraFrame, Checkerboard, FilmSettings, Material, PointLight, Scene, SceneBuilder,
@@ -32,7 +32,7 @@ pub enum Builtin {
 }
 
 /// The recursion limit of the built-in scenes: chapter 01's.
-pub const DEFAULT_DEPTH: u32 = DEFAULT_MAX_DEPTH;
+pub const DEFAULT_MAX_DEPTH: u32 = WHITTED_MAX_DEPTH;
 
 /// The shutter of the built-in scenes: open over the whole motion.
 pub const DEFAULT_SHUTTER: Shutter = Shutter {

@@ -12,10 +12,12 @@ use crate::animated_transform::AnimatedTransform;
 use crate::moving::{MovingObjects, MovingShape};
 use crate::shutter::Shutter;
 use ch01_whitted::camera::PinholeCamera;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
-use common::scene::{CameraFrame, Scene};
+use common::scene::{CameraFrame, Material, Scene};
+use glam::Vec3;
+use std::borrow::Cow;
 
 /// How many stretches of the shutter get their own BVH over the moving shapes by default.
 pub const DEFAULT_STRETCHES: usize = 8;
@@ -110,6 +112,17 @@ impl MotionScene {
                 ..camera
             },
         }
+    }
+
+    /// What the surface `hit` found is made of, its textures read at the hit point: the one
+    /// way a tracer reads a surface, so that none reaches through the world into the scene.
+    pub fn material_at(&self, hit: &SurfaceHit) -> Cow<'_, Material> {
+        self.scene.material_at(hit.shape, hit.uv)
+    }
+
+    /// The radiance arriving along a ray that leaves the scene in direction `dir`.
+    pub fn background(&self, dir: Vec3) -> Vec3 {
+        self.scene.background(dir)
     }
 }
 

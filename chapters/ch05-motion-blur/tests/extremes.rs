@@ -4,9 +4,9 @@
 
 mod support;
 
-use ch04_depth_of_field::scenes::{Builtin as DofBuiltin, DEFAULT_DEPTH as DOF_DEPTH};
+use ch04_depth_of_field::scenes::{Builtin as DofBuiltin, DEFAULT_MAX_DEPTH as DOF_DEPTH};
 use ch04_depth_of_field::{Lens, render_with as dof_render_with};
-use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
+use ch05_motion_blur::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::MotionScene;
 use ch05_motion_blur::{AnimatedTransform, Shutter, StratifiedTime, render_with};
 use common::film::PixelBoxFilter;
@@ -54,7 +54,7 @@ fn a_zero_length_shutter_draws_no_time_and_shows_the_still_image() {
     let settings = RenderSettings::new(48, 30, 2);
     for time in [0.0, 0.37, 1.0] {
         let instant = Shutter::new(time, time).unwrap();
-        let world = Builtin::Street.build(DEFAULT_DEPTH, instant);
+        let world = Builtin::Street.build(DEFAULT_MAX_DEPTH, instant);
         let sampler = Counting::new(1);
         let moving =
             render_with(&world, &Lens::PINHOLE, &settings, &sampler, &PixelBoxFilter).image;
@@ -85,7 +85,7 @@ fn a_zero_length_shutter_draws_no_time_and_shows_the_still_image() {
 #[test]
 fn an_open_shutter_on_a_moving_scene_draws_one_time_per_sample() {
     let settings = RenderSettings::new(16, 10, 3);
-    let world = Builtin::Street.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+    let world = Builtin::Street.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
     let sampler = Counting::new(2);
     render_with(&world, &Lens::PINHOLE, &settings, &sampler, &PixelBoxFilter);
     assert_eq!(sampler.times(), 16 * 10 * 3);
@@ -104,7 +104,7 @@ fn motion_across_the_frame_and_spins_past_a_full_turn_stay_finite() {
     for builtin in Builtin::ALL {
         for shutter in [(0.0, 1.0), (0.0, 1e-6), (0.25, 0.5), (-3.0, 4.0)] {
             let shutter = Shutter::new(shutter.0, shutter.1).unwrap();
-            let world = builtin.build(DEFAULT_DEPTH, shutter);
+            let world = builtin.build(DEFAULT_MAX_DEPTH, shutter);
             let sampler = StratifiedTime::new(IndependentSampler::new(3), 8, 3);
             let out = render_with(&world, &Lens::PINHOLE, &settings, &sampler, &PixelBoxFilter);
             assert_eq!(out.stats.nonfinite_samples, 0, "{builtin:?} {shutter:?}");
@@ -118,7 +118,7 @@ fn absurdly_fast_and_far_motion_stays_finite() {
     // A sphere crossing 2e6 units within the shutter, and one spinning 1000 turns.
     // The spinner's lights, environment and camera, without its cube: only the two shapes
     // below move, and the centre of the image shows the spinning sphere's ring alone.
-    let mut base = Builtin::Spinner.scene(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+    let mut base = Builtin::Spinner.scene(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
     base.moving.clear();
     base.surface_of_shape.truncate(base.geometry.shapes().len());
     let material = common::scene::Material::diffuse(Vec3::splat(0.7));

@@ -6,7 +6,7 @@
 //! summary is compared up to floating-point noise (`workbench::assert_close_snapshot!`).
 
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH};
+use ch05_motion_blur::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch05_motion_blur::{Shutter, StratifiedTime, render_with};
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
@@ -14,7 +14,7 @@ use common::sampler::IndependentSampler;
 use workbench::test_support::image_summary;
 
 fn snapshot_of(builtin: Builtin, open: f32, close: f32) -> String {
-    let world = builtin.build(DEFAULT_DEPTH, Shutter::new(open, close).unwrap());
+    let world = builtin.build(DEFAULT_MAX_DEPTH, Shutter::new(open, close).unwrap());
     let spp = 16;
     let settings = RenderSettings::new(48, 30, spp);
     let sampler = StratifiedTime::new(IndependentSampler::new(0), spp, 0);

@@ -4,7 +4,7 @@ mod support;
 
 use ch03_anti_aliasing::{PixelSampler, PixelSamplerKind};
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::scenes::{Builtin, DEFAULT_DEPTH, DEFAULT_SHUTTER};
+use ch05_motion_blur::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::MotionScene;
 use ch05_motion_blur::{Shutter, StratifiedTime, render_with};
 use common::film::PixelBoxFilter;
@@ -23,7 +23,7 @@ use support::{average, frozen_at, with_shutter};
 /// far below the noise at this sample count.
 #[test]
 fn a_blurred_render_is_the_average_of_still_renders_over_the_shutter() {
-    let world = Builtin::Street.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
+    let world = Builtin::Street.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
     let settings = RenderSettings::new(32, 20, 256);
     let blurred = |seed: u64| {
         render_with(
@@ -136,8 +136,8 @@ fn stratified_time_has_lower_variance_than_independent_on_a_moving_edge() {
 /// times the noise allowed there (about 1.9 times, measured).
 #[test]
 fn the_shutter_interval_decides_which_part_of_the_motion_is_seen() {
-    let world = Builtin::Street.build(DEFAULT_DEPTH, DEFAULT_SHUTTER);
-    let first_half = Builtin::Street.build(DEFAULT_DEPTH, Shutter::new(0.0, 0.5).unwrap());
+    let world = Builtin::Street.build(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
+    let first_half = Builtin::Street.build(DEFAULT_MAX_DEPTH, Shutter::new(0.0, 0.5).unwrap());
     let settings = RenderSettings::new(32, 20, 64);
     let render = |w: &MotionScene, seed: u64| {
         render_with(

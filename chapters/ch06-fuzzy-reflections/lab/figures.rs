@@ -10,7 +10,7 @@ use crate::glass_choice::GlassStrategy;
 use crate::lab::agreement::AGREEMENT;
 use crate::lighting::PointLights;
 use crate::render_with;
-use crate::scenes::{Builtin, DEFAULT_DEPTH};
+use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use crate::tracer::TraceOptions;
 use ch01_whitted::optics::reflect;
 use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
@@ -118,13 +118,13 @@ fn roughness_series(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
     let exponents = [1.0f32, 10.0, 100.0, 1e3, 1e6];
     let mut reflection = Vec::new();
     for exponent in exponents {
-        let scene = Builtin::Floor.build(DEFAULT_DEPTH, exponent);
+        let scene = Builtin::Floor.build(DEFAULT_MAX_DEPTH, exponent);
         reflection.push((
             format!("glossy floor, {}", exponent_label(exponent)),
             render(&scene, options, &settings, 0).image,
         ));
     }
-    let mut mirror = Builtin::Floor.build(DEFAULT_DEPTH, 1.0);
+    let mut mirror = Builtin::Floor.build(DEFAULT_MAX_DEPTH, 1.0);
     mirror.scene.surfaces[0].material = Material::Mirror {
         reflectance: Vec3::splat(0.8),
     };
@@ -152,13 +152,13 @@ fn roughness_series(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
 
     let mut refraction = Vec::new();
     for exponent in [0.0f32, 1.0, 10.0, 100.0, 1e3] {
-        let scene = Builtin::Frosted.build(DEFAULT_DEPTH, exponent);
+        let scene = Builtin::Frosted.build(DEFAULT_MAX_DEPTH, exponent);
         refraction.push((
             format!("frosted pane, {}", exponent_label(exponent)),
             render(&scene, options, &settings, 0).image,
         ));
     }
-    let mut smooth = Builtin::Frosted.build(DEFAULT_DEPTH, 1.0);
+    let mut smooth = Builtin::Frosted.build(DEFAULT_MAX_DEPTH, 1.0);
     for surface in &mut smooth.scene.surfaces {
         if matches!(surface.material, Material::RoughGlass(_)) {
             surface.material = Material::glass(1.5);
@@ -196,7 +196,7 @@ fn disc_against_lobe(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> 
     let settings = quality.gallery();
     let mut cells = Vec::new();
     for exponent in [10.0f32, 300.0] {
-        let scene = Builtin::Floor.build(DEFAULT_DEPTH, exponent);
+        let scene = Builtin::Floor.build(DEFAULT_MAX_DEPTH, exponent);
         for fuzz in FuzzMethod::ALL {
             let options = TraceOptions {
                 fuzz,
@@ -222,7 +222,7 @@ fn below_surface(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::R
     // Rays traced per point of the furnace curves.
     let furnace_samples = level.pick(500, 20_000);
     let settings = quality.gallery();
-    let scene = Builtin::Floor.build(DEFAULT_DEPTH, 3.0);
+    let scene = Builtin::Floor.build(DEFAULT_MAX_DEPTH, 3.0);
     let cells: Vec<(String, Image)> = BelowSurface::ALL
         .iter()
         .map(|&below| {
@@ -316,7 +316,7 @@ fn inter_reflections(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> 
     let cells: Vec<(String, Image)> = [1e5f32, 1e3, 100.0]
         .iter()
         .map(|&exponent| {
-            let scene = Builtin::Plates.build(DEFAULT_DEPTH, exponent);
+            let scene = Builtin::Plates.build(DEFAULT_MAX_DEPTH, exponent);
             (
                 format!("plates, {}", exponent_label(exponent)),
                 render(&scene, TraceOptions::default(), &settings, 0).image,
@@ -463,7 +463,7 @@ fn speed(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::Result<()
     let (width, height) = (quality.width / 4, quality.height / 4);
     // Enough samples that thread start-up does not dominate the time.
     let spp = level.pick(2, 16);
-    let scene = Builtin::Panes.build(DEFAULT_DEPTH, 1e6);
+    let scene = Builtin::Panes.build(DEFAULT_MAX_DEPTH, 1e6);
     let mut table = String::from(
         "| at glass | rays per camera ray | milliseconds | million rays per second |\n\
          |---|---:|---:|---:|\n",
@@ -486,7 +486,7 @@ fn speed(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::Result<()
         threads = rendered.stats.threads;
     }
     table.push_str(&format!(
-        "\nThe panes at the depth limit {DEFAULT_DEPTH}, {width} × {height} pixels, {spp} samples \
+        "\nThe panes at the depth limit {DEFAULT_MAX_DEPTH}, {width} × {height} pixels, {spp} samples \
          per pixel, {threads} threads, on the machine that built this site; shadow rays count \
          as rays.\n"
     ));
@@ -498,7 +498,7 @@ fn speed(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::Result<()
 /// first: a timed render always finishes one sample per pixel, and if that takes longer than
 /// the budget, the others get as long as it took.
 fn equal_time(out: &Path, quality: &RenderQuality, level: Level) -> anyhow::Result<()> {
-    let scene = Builtin::Panes.build(DEFAULT_DEPTH, 1e6);
+    let scene = Builtin::Panes.build(DEFAULT_MAX_DEPTH, 1e6);
     let mut cells = Vec::new();
     // Seconds each glass strategy gets.
     let mut seconds = level.pick(0.2, 2.0);
@@ -534,7 +534,7 @@ fn convergence(out: &Path, quality: &RenderQuality) -> anyhow::Result<()> {
         (Builtin::Panes, 1e6, "convergence"),
         (Builtin::Frosted, 10.0, "convergence_frosted"),
     ] {
-        let scene = builtin.build(DEFAULT_DEPTH, exponent);
+        let scene = builtin.build(DEFAULT_MAX_DEPTH, exponent);
         let with = |glass| TraceOptions {
             glass,
             ..TraceOptions::default()

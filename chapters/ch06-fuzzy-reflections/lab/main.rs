@@ -5,7 +5,7 @@ use ch05_motion_blur::lab::render_setup::CameraArgs;
 use ch06_fuzzy_reflections::lab::CAPABILITIES;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::lab::figures;
-use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
+use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch06_fuzzy_reflections::{PointLights, render_with};
 use std::process::ExitCode;
 
@@ -30,7 +30,7 @@ fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let builtin = || {
         let scene = command
             .builtin
-            .scene(DEFAULT_DEPTH, command.builtin.default_exponent());
+            .scene(DEFAULT_MAX_DEPTH, command.builtin.default_exponent());
         Ok((scene, command.builtin.name().to_string()))
     };
     let setup = command.camera.setup(

@@ -9,7 +9,7 @@
 //! tight and bright for a large exponent, wide and dim for a small one.
 
 use crate::fuzz::FuzzMethod;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;
 use glam::Vec3;

@@ -6,8 +6,8 @@
 //! through shadow rays ([`PointLights`]). Chapter 07 answers them for lights with an area and
 //! reuses this tracer unchanged.
 
-use ch01_whitted::scene::World;
 use ch01_whitted::tracer::direct_light;
+use ch01_whitted::world::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
 use common::render::SampleCounters;

@@ -33,7 +33,7 @@ pub enum Builtin {
 }
 
 /// The recursion limit of the built-in scenes.
-pub const DEFAULT_DEPTH: u32 = 12;
+pub const DEFAULT_MAX_DEPTH: u32 = 12;
 
 impl Builtin {
     /// Every built-in scene.

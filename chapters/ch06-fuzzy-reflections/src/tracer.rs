@@ -21,7 +21,7 @@ use crate::glass_choice::GlassStrategy;
 use crate::highlights::Lobe;
 use crate::lighting::Lighting;
 use ch01_whitted::optics::reflect;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use ch05_motion_blur::MotionScene;
 use common::Ray;
 use common::geometry::SurfaceHit;

@@ -8,7 +8,7 @@ use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::render_with as chapter05_render;
 use ch06_fuzzy_reflections::furnace::{mean_radiance, scene_of};
-use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
+use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
 use common::Ray;
 use common::film::PixelBoxFilter;
@@ -36,7 +36,7 @@ fn every_option() -> Vec<TraceOptions> {
 fn every_scene_with_every_option_and_extreme_exponents_is_finite() {
     for builtin in Builtin::ALL {
         for exponent in [0.0f32, 1.0, 1e6] {
-            let scene = builtin.build(DEFAULT_DEPTH, exponent);
+            let scene = builtin.build(DEFAULT_MAX_DEPTH, exponent);
             for options in every_option() {
                 let out = render(&scene, options, 12, 9, 2, 1);
                 assert_eq!(out.stats.nonfinite_samples, 0, "{builtin:?} n={exponent}");
@@ -48,7 +48,7 @@ fn every_scene_with_every_option_and_extreme_exponents_is_finite() {
 
 #[test]
 fn a_smooth_scene_traced_both_ways_is_chapter_05s_image_bit_for_bit() {
-    let scene = Builtin::Panes.build(DEFAULT_DEPTH, 1.0);
+    let scene = Builtin::Panes.build(DEFAULT_MAX_DEPTH, 1.0);
     assert!(!scene.scene.surfaces.iter().any(|s| s.material.is_fuzzy()));
     let options = TraceOptions {
         glass: GlassStrategy::Both,
@@ -73,7 +73,7 @@ fn a_smooth_scene_traced_both_ways_is_chapter_05s_image_bit_for_bit() {
 /// hits a point), while a lobe of any finite exponent shows it as a highlight whose energy
 /// stays the same as the lobe narrows: a speck that the mirror image lacks however large `n`.
 fn floor_scene(floor: Material) -> MotionScene {
-    let mut world = Builtin::Floor.build(DEFAULT_DEPTH, 1.0);
+    let mut world = Builtin::Floor.build(DEFAULT_MAX_DEPTH, 1.0);
     world.scene.surfaces[0].material = floor;
     world.scene.point_lights.truncate(1);
     world
@@ -150,7 +150,7 @@ fn pane_scene(pane: Option<Material>) -> MotionScene {
         Vec3::splat(0.3),
         Vec3::new(0.0, 0.0, 4.0),
         Vec3::ZERO,
-        DEFAULT_DEPTH,
+        DEFAULT_MAX_DEPTH,
     );
     scene.scene.point_lights.push(common::scene::PointLight {
         position: Vec3::new(0.0, 0.5, 0.0),

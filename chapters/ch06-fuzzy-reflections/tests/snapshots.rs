@@ -8,13 +8,13 @@
 
 mod support;
 
-use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
+use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch06_fuzzy_reflections::{BelowSurface, FuzzMethod, GlassStrategy, TraceOptions};
 use support::render;
 use workbench::test_support::image_summary;
 
 fn snapshot_of(builtin: Builtin, exponent: f32, options: TraceOptions) -> String {
-    let scene = builtin.build(DEFAULT_DEPTH, exponent);
+    let scene = builtin.build(DEFAULT_MAX_DEPTH, exponent);
     let out = render(&scene, options, 48, 36, 16, 0);
     assert_eq!(out.stats.nonfinite_samples, 0);
     image_summary(&out.image, out.stats.rays)

@@ -12,7 +12,7 @@ mod support;
 use ch02_monte_carlo::chi2::chi2_test_density;
 use ch02_monte_carlo::warps::{Domain, WarpPoint};
 use ch06_fuzzy_reflections::fuzz::{disc_perturbation_pdf, disc_radius_for_exponent};
-use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_DEPTH};
+use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch06_fuzzy_reflections::{FuzzMethod, GlassStrategy, TraceOptions};
 use glam::Vec3;
 use support::render;
@@ -25,7 +25,7 @@ fn mean_difference(
     b: GlassStrategy,
     spp: u64,
 ) -> (f64, f64) {
-    let scene = builtin.build(DEFAULT_DEPTH, exponent);
+    let scene = builtin.build(DEFAULT_MAX_DEPTH, exponent);
     let with = |glass| TraceOptions {
         glass,
         ..TraceOptions::default()

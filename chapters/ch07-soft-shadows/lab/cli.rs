@@ -1,7 +1,7 @@
 //! The light options of `render`, for this chapter's binary and the chapters after it.
 
 use crate::disc_warp::DiscWarp;
-use crate::light_options::{LightOptions, LightStrata, MAX_LIGHT_SAMPLES};
+use crate::shadow_rays::{LightOptions, LightStrata, MAX_LIGHT_SAMPLES};
 use crate::strategy::{LightSampling, Strategy};
 
 /// How area lights are sampled: `--light-samples`, `--light-strata`, `--light-sampling`,

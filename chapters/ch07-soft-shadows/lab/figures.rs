@@ -6,7 +6,7 @@
 use crate::estimator::light_sample_contribution;
 use crate::reference::disc_on_axis_irradiance;
 use crate::sample_stream::SampleStream;
-use crate::scenes::{Builder, Builtin, DEFAULT_DEPTH, camera, floor, matte};
+use crate::scenes::{Builder, Builtin, DEFAULT_MAX_DEPTH, camera, floor, matte};
 use crate::{
     AreaLight, DiscWarp, LightOptions, LightSampling, LightStrata, Strategy, light_samples,
     render_with,
@@ -98,7 +98,7 @@ fn gallery(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
                 crate::scenes::SMALL_PANEL
             ),
             render(
-                &Builtin::Small.build(DEFAULT_DEPTH, 1.0),
+                &Builtin::Small.build(DEFAULT_MAX_DEPTH, 1.0),
                 lights,
                 size,
                 q.spp,
@@ -111,7 +111,7 @@ fn gallery(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
                 10.0 * crate::scenes::SMALL_PANEL
             ),
             render(
-                &Builtin::Large.build(DEFAULT_DEPTH, 1.0),
+                &Builtin::Large.build(DEFAULT_MAX_DEPTH, 1.0),
                 lights,
                 size,
                 q.spp,
@@ -124,7 +124,7 @@ fn gallery(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
         (
             "parallelogram, triangle, disc and sphere lights".to_string(),
             render(
-                &Builtin::Shapes.build(DEFAULT_DEPTH, 1.0),
+                &Builtin::Shapes.build(DEFAULT_MAX_DEPTH, 1.0),
                 lights,
                 size,
                 q.spp,
@@ -134,7 +134,7 @@ fn gallery(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
         (
             "red, green and blue discs and a point light".to_string(),
             render(
-                &Builtin::Several.build(DEFAULT_DEPTH, 1.0),
+                &Builtin::Several.build(DEFAULT_MAX_DEPTH, 1.0),
                 lights,
                 size,
                 q.spp,
@@ -144,7 +144,7 @@ fn gallery(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
         (
             "a glossy floor reflecting a sphere light and a panel".to_string(),
             render(
-                &Builtin::Glossy.build(DEFAULT_DEPTH, 1.0),
+                &Builtin::Glossy.build(DEFAULT_MAX_DEPTH, 1.0),
                 lights,
                 size,
                 4 * q.spp,
@@ -158,7 +158,7 @@ fn gallery(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
 
 /// The large light at 1, 4 and 16 shadow rays per light and hit, the same pixel samples.
 fn samples_per_light(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
-    let scene = Builtin::Large.build(DEFAULT_DEPTH, 1.0);
+    let scene = Builtin::Large.build(DEFAULT_MAX_DEPTH, 1.0);
     let spp = (q.spp / 4).max(1);
     let cells: Vec<(String, Image)> = [1u32, 4, 16]
         .iter()
@@ -201,7 +201,7 @@ fn sphere_light_scene(radius: f32) -> MotionScene {
         .area_light(Shape::Sphere(light), Vec3::splat(10.0 / light.area()))
         .build(
             camera(Vec3::new(0.0, 1.8, 5.0), Vec3::new(0.0, 0.4, 0.0), 45.0),
-            DEFAULT_DEPTH,
+            DEFAULT_MAX_DEPTH,
         )
 }
 
@@ -246,7 +246,7 @@ fn disc_light_scene() -> MotionScene {
         .area_light(Shape::Disc(disc), Vec3::splat(1.5))
         .build(
             camera(Vec3::new(0.0, 1.6, 4.5), Vec3::new(0.0, 0.3, 0.0), 45.0),
-            DEFAULT_DEPTH,
+            DEFAULT_MAX_DEPTH,
         )
 }
 
@@ -387,7 +387,7 @@ fn light_points(out: &Path) -> anyhow::Result<()> {
 /// rays, 1, 4 and 16 per light) and on the sphere light (area and solid angle).
 fn convergence(out: &Path, q: &RenderQuality) -> anyhow::Result<()> {
     let size = (q.width / 2, q.height / 2);
-    let large = Builtin::Large.build(DEFAULT_DEPTH, 1.0);
+    let large = Builtin::Large.build(DEFAULT_MAX_DEPTH, 1.0);
     let reference = render(
         &large,
         LightOptions::with_samples(16),

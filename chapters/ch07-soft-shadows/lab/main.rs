@@ -8,7 +8,7 @@ use ch07_soft_shadows::lab::CAPABILITIES;
 use ch07_soft_shadows::lab::cli::LightArgs;
 use ch07_soft_shadows::lab::figures;
 use ch07_soft_shadows::render_with;
-use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+use ch07_soft_shadows::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use std::process::ExitCode;
 use workbench::cli::parse_number;
 
@@ -48,7 +48,7 @@ fn main() -> ExitCode {
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
     let light_scale = check_light_scale(command.light_scale)?;
     let builtin = || {
-        let scene = command.builtin.build(DEFAULT_DEPTH, light_scale).scene;
+        let scene = command.builtin.build(DEFAULT_MAX_DEPTH, light_scale).scene;
         Ok((scene, command.builtin.name().to_string()))
     };
     let setup = command.camera.setup(

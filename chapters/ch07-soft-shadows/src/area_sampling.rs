@@ -19,8 +19,8 @@ use ch02_monte_carlo::warps::{sample_triangle_barycentric, sample_uniform_sphere
 use common::geometry::{Disc, Parallelogram, Sphere, Triangle, gamma};
 use glam::{Vec2, Vec3};
 
+use crate::area_lights::LightShape;
 use crate::disc_warp::DiscWarp;
-use crate::light::LightShape;
 use crate::light_sample::LightSample;
 
 /// The error bound of the parallelogram point `corner + u.x e1 + u.y e2` (as `Parallelogram`'s hit

@@ -8,8 +8,7 @@
 //! shadow edge comes out wrong and the irradiance below the light too bright.
 
 use ch02_monte_carlo::warps::{
-    disc_naive_pdf, sample_disc_naive, sample_uniform_disc_concentric, sample_uniform_disc_polar,
-    uniform_disc_pdf,
+    sample_disc_naive, sample_uniform_disc_concentric, sample_uniform_disc_polar,
 };
 use glam::Vec2;
 
@@ -48,26 +47,5 @@ impl DiscWarp {
             DiscWarp::Polar => sample_uniform_disc_polar(u),
             DiscWarp::Naive => sample_disc_naive(u),
         }
-    }
-
-    /// The *true* density of [`sample`](Self::sample) per unit area of the unit disc at `p`:
-    /// `1 / π` for the uniform warps, `1 / (2π r)` for the naive one. The light samplers do not
-    /// use it: they all claim `1 / π` (scaled to the light), which is right except for `Naive`.
-    pub fn true_pdf(self, p: Vec2) -> f32 {
-        match self {
-            DiscWarp::Concentric | DiscWarp::Polar => {
-                if p.length_squared() <= 1.0 {
-                    uniform_disc_pdf()
-                } else {
-                    0.0
-                }
-            }
-            DiscWarp::Naive => disc_naive_pdf(p),
-        }
-    }
-
-    /// Whether the warp delivers the uniform density the disc light claims for it.
-    pub fn is_uniform(self) -> bool {
-        self != DiscWarp::Naive
     }
 }

@@ -28,7 +28,7 @@
 
 use glam::{DVec3, Vec2, Vec3};
 
-use crate::light::AreaLight;
+use crate::area_lights::AreaLight;
 use crate::light_sample::LightSample;
 use crate::strategy::LightSampling;
 

@@ -10,7 +10,8 @@
 //! The library comes first, the renderer on top of it: chapter 06's tracer, lit through its
 //! `Lighting` hook by [`lighting::AreaLighting`].
 //!
-//! - [`light`]: area lights of finite size, one-sided (Mitsuba 3's `area` emitter).
+//! - [`area_lights`]: area lights of finite size, one-sided (Mitsuba 3's `area` emitter), and
+//!   a scene's lights found among its shapes.
 //! - [`disc_warp`]: which of chapter 02's disc warps puts points on a disc light.
 //! - [`light_sample`]: a sampled point with its density and its shadow ray; [`strategy`]: by
 //!   area or by solid angle, and the one function that picks a light's sampler.
@@ -18,12 +19,11 @@
 //! - [`solid_angle`]: a sphere sampled by the cone of directions it subtends, and the change of
 //!   density between area and solid angle.
 //! - [`estimator`]: the direct-light estimate of irradiance at a matte receiver.
-//! - [`mod@light_samples`]: the `u` of the shadow rays, independent or stratified.
+//! - [`shadow_rays`]: how many shadow rays each light gets, and their `u`, independent or
+//!   stratified.
 //! - [`mod@reference`]: exact irradiance from polygons, discs and spheres, for the tests.
-//! - [`sample_stream`], [`light_options`]: the sample's numbers for the shadow rays, and how
-//!   many rays each light gets.
-//! - [`lighting`], [`scene`]: chapter 06's tracer lit by a scene's area lights;
-//!   [`render_with`].
+//! - [`sample_stream`]: the sample's numbers for the shadow rays.
+//! - [`lighting`]: chapter 06's tracer lit by a scene's area lights; [`render_with`].
 //! - [`scenes`]: what to look at.
 //!
 //! The chapter's workbench (its binary and light options, the book's figures, agreement with
@@ -31,18 +31,16 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod area_lights;
 pub mod area_sampling;
 pub mod disc_warp;
 pub mod estimator;
-pub mod light;
-pub mod light_options;
 pub mod light_sample;
-pub mod light_samples;
 pub mod lighting;
 pub mod reference;
 pub mod sample_stream;
-pub mod scene;
 pub mod scenes;
+pub mod shadow_rays;
 pub mod solid_angle;
 pub mod strategy;
 
@@ -53,14 +51,12 @@ pub mod lab;
 #[cfg(test)]
 pub(crate) mod test_support;
 
+pub use area_lights::{AreaLight, AreaLights, LightShape};
 pub use disc_warp::DiscWarp;
 pub use estimator::{estimate_irradiance, light_sample_contribution, matte_reflected_radiance};
-pub use light::{AreaLight, LightShape};
-pub use light_options::{LightOptions, LightStrata};
 pub use light_sample::LightSample;
-pub use light_samples::light_samples;
 pub use lighting::AreaLighting;
-pub use scene::AreaLights;
+pub use shadow_rays::{LightOptions, LightStrata, light_samples};
 pub use strategy::{LightSampling, Strategy};
 
 use ch04_depth_of_field::Lens;

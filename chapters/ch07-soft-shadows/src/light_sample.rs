@@ -72,8 +72,8 @@ impl LightSample {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::area_lights::{AreaLight, LightShape};
     use crate::disc_warp::DiscWarp;
-    use crate::light::{AreaLight, LightShape};
     use crate::strategy::LightSampling;
     use crate::test_support::uniform_points;
     use common::geometry::{Disc, Parallelogram, Shape, Sphere};

@@ -19,9 +19,9 @@
 //! numbers of that light's points, after the camera's and the earlier bounces' (pbrt-v4's
 //! order). A scene without area lights draws none, and renders as chapter 06 does, bit for bit.
 
-use crate::light::AreaLight;
-use crate::light_options::LightOptions;
-use ch01_whitted::scene::World;
+use crate::area_lights::{AreaLight, AreaLights};
+use crate::shadow_rays::LightOptions;
+use ch01_whitted::world::World;
 use ch06_fuzzy_reflections::Lighting;
 use common::Ray;
 use common::geometry::SurfaceHit;
@@ -39,6 +39,17 @@ pub struct AreaLighting<'a> {
     pub light_of_shape: &'a [Option<u32>],
     /// Shadow rays per light, their strata, and how points are chosen.
     pub options: LightOptions,
+}
+
+impl AreaLights {
+    /// The lights for chapter 06's tracer, sampled as `options` say.
+    pub fn lighting(&self, options: LightOptions) -> AreaLighting<'_> {
+        AreaLighting {
+            lights: &self.lights,
+            light_of_shape: &self.light_of_shape,
+            options,
+        }
+    }
 }
 
 impl AreaLighting<'_> {
@@ -139,7 +150,6 @@ impl Lighting for AreaLighting<'_> {
 mod tests {
     use super::*;
     use crate::reference::{polygon_irradiance, sphere_irradiance};
-    use crate::scene::AreaLights;
     use ch05_motion_blur::MotionScene;
     use common::geometry::{Parallelogram, Shape, Sphere};
     use common::sampler::IndependentSampler;

@@ -1,6 +1,6 @@
 //! The numbers of one sample, handed to chapter 02's point sets.
 //!
-//! The shadow rays' points come from [`light_samples`](crate::light_samples), which stratifies
+//! The shadow rays' points come from [`light_samples`](crate::shadow_rays::light_samples), which stratifies
 //! them with chapter 02's jittered grids and Latin hypercubes, written for any `rand`
 //! generator. A render must instead draw every number from the sample's own stream (the
 //! `Sampler`), in a fixed order, so that the image depends on the seed, the pixel and the

@@ -35,7 +35,7 @@ pub enum Builtin {
 }
 
 /// The recursion limit of the built-in scenes.
-pub const DEFAULT_DEPTH: u32 = 12;
+pub const DEFAULT_MAX_DEPTH: u32 = 12;
 
 /// The side of the small panel; the large one is ten times wider.
 pub const SMALL_PANEL: f32 = 0.25;

@@ -6,8 +6,8 @@
 
 use glam::{Vec2, Vec3};
 
+use crate::area_lights::{AreaLight, LightShape};
 use crate::disc_warp::DiscWarp;
-use crate::light::{AreaLight, LightShape};
 use crate::light_sample::LightSample;
 use crate::solid_angle::sample_sphere_solid_angle;
 

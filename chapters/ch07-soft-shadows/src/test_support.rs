@@ -8,8 +8,8 @@ use glam::{Vec2, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg32;
 
+use crate::area_lights::AreaLight;
 use crate::estimator::light_sample_contribution;
-use crate::light::AreaLight;
 use crate::light_sample::LightSample;
 use crate::strategy::LightSampling;
 

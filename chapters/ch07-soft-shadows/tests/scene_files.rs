@@ -2,8 +2,8 @@
 //! piece of a shape (six for a cube, one per triangle of a mesh), each with the file's
 //! radiance; what the chapter cannot render is refused with the shape's position.
 
+use ch07_soft_shadows::area_lights::LightShape;
 use ch07_soft_shadows::lab::CAPABILITIES;
-use ch07_soft_shadows::light::LightShape;
 use ch07_soft_shadows::{AreaLights, DiscWarp, LightSampling};
 use common::scene::Scene;
 use glam::{Vec2, Vec3};
@@ -53,7 +53,7 @@ fn every_shipped_scene_converts_with_its_lights() {
                 let light = file.lights.lights[*index as usize];
                 assert_eq!(
                     light.shape,
-                    ch07_soft_shadows::scene::light_shape(shape),
+                    ch07_soft_shadows::area_lights::light_shape(shape),
                     "{name}"
                 );
             }

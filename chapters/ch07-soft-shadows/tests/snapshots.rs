@@ -8,12 +8,12 @@
 
 mod support;
 
-use ch07_soft_shadows::scenes::{Builtin, DEFAULT_DEPTH};
+use ch07_soft_shadows::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch07_soft_shadows::{DiscWarp, LightOptions};
 use workbench::test_support::image_summary;
 
 fn snapshot_of(builtin: Builtin, options: LightOptions) -> String {
-    let scene = builtin.build(DEFAULT_DEPTH, 1.0);
+    let scene = builtin.build(DEFAULT_MAX_DEPTH, 1.0);
     let out = support::render(&scene, options, 48, 36, 8, 0);
     support::assert_finite(&out, builtin.name());
     image_summary(&out.image, out.stats.rays)

@@ -25,8 +25,8 @@
 //! The quick level renders thumbnails at few samples, for CI.
 
 use crate::dimensions::render_counted;
-use crate::distribution::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
-use crate::distribution::{DistributionOptions, render_distribution};
+use crate::distribution_tracer::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
+use crate::distribution_tracer::{DistributionOptions, render_distribution};
 use crate::lab::agreement::AGREEMENT;
 use crate::lab::microfacet_chi2_table as chi2_table;
 use crate::lab::microfacet_figures as mf_figures;

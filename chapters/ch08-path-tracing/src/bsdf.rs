@@ -30,6 +30,7 @@ pub mod plastic;
 pub mod rough_glass;
 pub mod thin_dielectric;
 
+use crate::microfacet::coating::Coatings;
 use ch06_fuzzy_reflections::FuzzMethod;
 use common::geometry::SurfaceHit;
 use common::sampler::Sampler;
@@ -69,6 +70,8 @@ pub struct Bsdf<'a> {
     pub hit: &'a SurfaceHit,
     /// How fuzzy lobes spread (chapter 06's `cos^n` lobe or the empirical disc).
     pub fuzz: FuzzMethod,
+    /// The rough plastics' coatings, tabulated before the render.
+    pub coatings: &'a Coatings,
 }
 
 impl Bsdf<'_> {
@@ -125,7 +128,7 @@ impl Bsdf<'_> {
                 let choice = sampler.get_1d();
                 if let Some(roughness) = g.stands_in_for {
                     let u = sampler.get_2d();
-                    return microfacet::dielectric(hit, &g, roughness).sample(wo, choice, u);
+                    return microfacet::rough_dielectric(hit, &g, roughness).sample(wo, choice, u);
                 }
                 let u = if g.exponent.is_finite() {
                     sampler.get_2d()
@@ -138,7 +141,7 @@ impl Bsdf<'_> {
                 None => conductor::sample(hit, wo, &c),
                 Some(roughness) => {
                     let (choice, u) = (sampler.get_1d(), sampler.get_2d());
-                    microfacet::conductor(hit, wo, &c, roughness)?.sample(wo, choice, u)
+                    microfacet::rough_conductor(hit, wo, &c, roughness)?.sample(wo, choice, u)
                 }
             },
             Material::ThinDielectric { int_ior, ext_ior } => Some(thin_dielectric::sample(
@@ -152,11 +155,8 @@ impl Bsdf<'_> {
                 let choice = sampler.get_1d();
                 match g.roughness {
                     None => dielectric::sample_tinted(hit, wo, &g, choice),
-                    Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).sample(
-                        wo,
-                        choice,
-                        sampler.get_2d(),
-                    ),
+                    Some(roughness) => microfacet::tinted_rough_dielectric(hit, &g, roughness)
+                        .sample(wo, choice, sampler.get_2d()),
                 }
             }
             Material::Plastic(p) => {
@@ -165,7 +165,8 @@ impl Bsdf<'_> {
                 match p.roughness {
                     None => plastic::sample(hit, wo, &p, choice, u),
                     Some(roughness) => {
-                        microfacet::plastic(hit, wo, &p, roughness)?.sample(wo, choice, u)
+                        microfacet::rough_plastic(hit, wo, &p, roughness, self.coatings)?
+                            .sample(wo, choice, u)
                     }
                 }
             }
@@ -192,21 +193,23 @@ impl Bsdf<'_> {
             Material::Glossy(g) => glossy::eval(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => match g.stands_in_for {
                 None => rough_glass::eval(hit, wo, wi, &g, self.fuzz),
-                Some(roughness) => microfacet::dielectric(hit, &g, roughness).eval(wo, wi),
+                Some(roughness) => microfacet::rough_dielectric(hit, &g, roughness).eval(wo, wi),
             },
             Material::Conductor(c) => match c.roughness {
                 None => Vec3::ZERO,
-                Some(roughness) => microfacet::conductor(hit, wo, &c, roughness)
+                Some(roughness) => microfacet::rough_conductor(hit, wo, &c, roughness)
                     .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
             },
             Material::ThinDielectric { .. } => Vec3::ZERO,
             Material::TintedGlass(g) => match g.roughness {
                 None => Vec3::ZERO,
-                Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).eval(wo, wi),
+                Some(roughness) => {
+                    microfacet::tinted_rough_dielectric(hit, &g, roughness).eval(wo, wi)
+                }
             },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::eval(hit, wo, wi, &p),
-                Some(roughness) => microfacet::plastic(hit, wo, &p, roughness)
+                Some(roughness) => microfacet::rough_plastic(hit, wo, &p, roughness, self.coatings)
                     .map_or(Vec3::ZERO, |bsdf| bsdf.eval(wo, wi)),
             },
             Material::Mask(ref m) => {
@@ -227,23 +230,24 @@ impl Bsdf<'_> {
             Material::Glossy(g) => glossy::pdf(hit, wo, wi, &g, self.fuzz),
             Material::RoughGlass(g) => match g.stands_in_for {
                 None => rough_glass::pdf(hit, wo, wi, &g, self.fuzz),
-                Some(roughness) => microfacet::dielectric(hit, &g, roughness).pdf(wo, wi),
+                Some(roughness) => microfacet::rough_dielectric(hit, &g, roughness).pdf(wo, wi),
             },
             Material::Conductor(c) => match c.roughness {
                 None => 0.0,
-                Some(roughness) => microfacet::conductor(hit, wo, &c, roughness)
+                Some(roughness) => microfacet::rough_conductor(hit, wo, &c, roughness)
                     .map_or(0.0, |bsdf| bsdf.pdf(wo, wi)),
             },
             Material::ThinDielectric { .. } => 0.0,
             Material::TintedGlass(g) => match g.roughness {
                 None => 0.0,
-                Some(roughness) => microfacet::tinted_dielectric(hit, &g, roughness).pdf(wo, wi),
+                Some(roughness) => {
+                    microfacet::tinted_rough_dielectric(hit, &g, roughness).pdf(wo, wi)
+                }
             },
             Material::Plastic(p) => match p.roughness {
                 None => plastic::pdf(hit, wo, wi, &p),
-                Some(roughness) => {
-                    microfacet::plastic(hit, wo, &p, roughness).map_or(0.0, |bsdf| bsdf.pdf(wo, wi))
-                }
+                Some(roughness) => microfacet::rough_plastic(hit, wo, &p, roughness, self.coatings)
+                    .map_or(0.0, |bsdf| bsdf.pdf(wo, wi)),
             },
             Material::Mask(ref m) => {
                 mask::pdf(mask::opacity(m.opacity), &self.nested(&m.nested), wo, wi)
@@ -338,6 +342,7 @@ mod tests {
             material: &one_sided,
             hit: &hit,
             fuzz: FuzzMethod::Lobe,
+            coatings: &crate::microfacet::coating::Coatings::default(),
         };
         let f = bsdf.eval(Vec3::Y, Vec3::new(0.0, 0.8, 0.6));
         assert!(
@@ -415,6 +420,7 @@ mod tests {
             material: &pane,
             hit: &hit,
             fuzz: ch06_fuzzy_reflections::FuzzMethod::Lobe,
+            coatings: &crate::microfacet::coating::Coatings::default(),
         };
         assert!(bsdf.is_delta());
         let mut sampler = common::sampler::IndependentSampler::new(1);

@@ -24,7 +24,7 @@ use crate::bsdf::Bsdf;
 use crate::mis::MisHeuristic;
 use crate::nee::{directional_lights, light_sample_contribution, point_lights};
 use crate::path::PathTracer;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use common::Ray;
 use common::render::SampleCounters;
 use common::sampler::Sampler;
@@ -62,6 +62,7 @@ impl PathTracer<'_> {
             material: &self.world.scene.material_at(hit.shape, hit.uv),
             hit: &hit,
             fuzz: self.fuzz,
+            coatings: &self.coatings,
         };
         let wo = -ray.dir;
         let counts = DirectSamples {

@@ -15,7 +15,7 @@
 //!   and the point lights'.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
 //! - [`path`]: the path loop; [`render_with`].
-//! - [`distribution`]: Cook's branching tracer with every effect, for comparison;
+//! - [`distribution_tracer`]: Cook's branching tracer with every effect, for comparison;
 //!   [`render_distribution`].
 //! - [`microfacet`]: beyond the lecture, Mitsuba 3's `roughconductor`, `roughdielectric` and
 //!   `roughplastic` (Beckmann and GGX, visible-normal sampling), in the local frame.
@@ -30,7 +30,7 @@
 pub mod bsdf;
 pub mod dimensions;
 pub mod direct;
-pub mod distribution;
+pub mod distribution_tracer;
 pub mod environment;
 pub mod furnace;
 pub mod lights;
@@ -46,7 +46,7 @@ pub mod roulette;
 pub mod lab;
 
 pub use bsdf::{Bsdf, BsdfSample};
-pub use distribution::{DistributionOptions, DistributionTracer, render_distribution};
+pub use distribution_tracer::{DistributionOptions, DistributionTracer, render_distribution};
 pub use lights::SceneLights;
 pub use mis::MisHeuristic;
 pub use options::PathOptions;
@@ -59,6 +59,7 @@ use ch06_fuzzy_reflections::FuzzMethod;
 use ch07_soft_shadows::{AreaLights, LightSampling};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
+use microfacet::coating::Coatings;
 
 /// Everything about a path-traced render besides the scene and the image settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -96,13 +97,13 @@ pub fn render_with<S: TimeSampler>(
 ) -> RenderOutput {
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     let area_lights = AreaLights::of(&world.scene);
-    // The rough plastics' coating tables, made before the threads start.
-    crate::microfacet::coating::Coating::tabulate_for(&world.scene);
     let tracer = PathTracer {
         world,
         lights: SceneLights::of(world, &area_lights, method.light_sampling),
         options: method.options,
         fuzz: method.fuzz,
+        // The rough plastics' coating tables, made before the threads start.
+        coatings: Coatings::of(&world.scene),
     };
     render::render(settings, sampler, filter, |p_film, sampler, counters| {
         let ray = camera_rays.generate(world, p_film, sampler);

@@ -28,8 +28,8 @@
 
 use crate::environment::EnvironmentLight;
 use ch05_motion_blur::MotionScene;
+use ch07_soft_shadows::area_lights::LightShape;
 use ch07_soft_shadows::area_sampling::parallelogram_point_error;
-use ch07_soft_shadows::light::LightShape;
 use ch07_soft_shadows::light_sample::LightSample;
 use ch07_soft_shadows::solid_angle::{pdf_area_to_solid_angle, sphere_solid_angle_pdf};
 use ch07_soft_shadows::{AreaLight, AreaLights, LightSampling, Strategy};

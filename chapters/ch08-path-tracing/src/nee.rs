@@ -9,7 +9,7 @@
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
 use crate::mis::MisHeuristic;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use common::render::SampleCounters;
 use glam::Vec3;
 

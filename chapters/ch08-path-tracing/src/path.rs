@@ -28,6 +28,7 @@
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
+use crate::microfacet::coating::Coatings;
 use crate::nee::{directional_lights, point_lights};
 use crate::options::PathOptions;
 use ch05_motion_blur::MotionScene;
@@ -98,7 +99,7 @@ pub struct NextSegment {
 }
 
 /// A path tracer over a scene.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct PathTracer<'a> {
     /// The scene with its motion: shapes, surfaces, point lights, environment, camera.
     pub world: &'a MotionScene,
@@ -108,6 +109,9 @@ pub struct PathTracer<'a> {
     pub options: PathOptions,
     /// How fuzzy lobes spread.
     pub fuzz: FuzzMethod,
+    /// The rough plastics' coatings, tabulated from the scene before the render
+    /// ([`Coatings::of`]).
+    pub coatings: Coatings,
 }
 
 impl PathTracer<'_> {
@@ -153,7 +157,7 @@ impl PathTracer<'_> {
     /// The camera ray continued through every emitting shape it meets, for
     /// [`past_hidden_emitters`](Self::past_hidden_emitters).
     fn through_emitters(&self, camera_ray: &Ray, counters: &mut SampleCounters) -> Ray {
-        use ch01_whitted::scene::World;
+        use ch01_whitted::world::World;
         /// More emitting surfaces in a row than any scene stacks; a hostile one that does
         /// shows the last as a black surface instead of looping on.
         const MOST_SKIPPED: usize = 1024;
@@ -205,7 +209,7 @@ impl PathTracer<'_> {
         );
         // BEGIN SOLUTION
         use crate::mis::MisHeuristic;
-        use ch01_whitted::scene::World;
+        use ch01_whitted::world::World;
         // The MIS weight of light this segment finds, which the light sample of the previous
         // bounce would have chosen with density `light_pdf`: 1 after the camera, after a
         // delta bounce (no light sample could be taken there) or without NEE; 0 with NEE but
@@ -256,6 +260,7 @@ impl PathTracer<'_> {
             material: &self.world.scene.material_at(hit.shape, hit.uv),
             hit: &hit,
             fuzz: self.fuzz,
+            coatings: &self.coatings,
         };
         let wo = -ray.dir;
         // 2. Next-event estimation, where the BSDF is not a delta.
@@ -373,7 +378,7 @@ impl PathTracer<'_> {
     ) -> Vec3 {
         // BEGIN SOLUTION
         use crate::nee::light_sample_contribution;
-        use ch01_whitted::scene::World;
+        use ch01_whitted::world::World;
         // With one light to pick from there is nothing to choose: no number is drawn.
         let u_pick = if self.lights.count() > 1 {
             sampler.get_1d()
@@ -416,7 +421,7 @@ mod tests {
     use crate::bsdf::test_support::floor_hit;
     use crate::furnace::spheres;
     use crate::mis::MisHeuristic;
-    use ch01_whitted::scene::World;
+    use ch01_whitted::world::World;
     use ch07_soft_shadows::reference::sphere_irradiance;
     use ch07_soft_shadows::{AreaLights, LightSampling};
     use common::sampler::IndependentSampler;
@@ -438,6 +443,7 @@ mod tests {
             lights: SceneLights::of(&world, &area_lights, LightSampling::solid_angle()),
             options,
             fuzz: FuzzMethod::Lobe,
+            coatings: Coatings::of(&world.scene),
         };
         use_tracer(&tracer)
     }
@@ -456,6 +462,7 @@ mod tests {
             material,
             hit: &hit,
             fuzz: FuzzMethod::Lobe,
+            coatings: &tracer.coatings,
         };
         let mut sampler = IndependentSampler::new(11);
         (0..n)
@@ -622,6 +629,7 @@ mod tests {
                 material: &glass,
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
+                coatings: &crate::microfacet::coating::Coatings::default(),
             };
             let wo = Vec3::new(0.3, 1.0, 0.2).normalize();
             let mut sampler = IndependentSampler::new(13);
@@ -715,6 +723,7 @@ mod tests {
                         material: &white,
                         hit: &hit,
                         fuzz: FuzzMethod::Lobe,
+                        coatings: &crate::microfacet::coating::Coatings::default(),
                     };
                     let Some(next) =
                         tracer.extend_path(&bsdf, -ray.dir, 0.0, depth, carried, &mut sampler)
@@ -1003,6 +1012,7 @@ mod tests {
                 material: &world.scene.material_at(hit.shape, hit.uv),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
+                coatings: &tracer.coatings,
             };
             let mut sampler = IndependentSampler::new(9);
             let mut counters = SampleCounters::default();
@@ -1119,6 +1129,7 @@ mod tests {
                 material: &world.scene.material_at(hit.shape, hit.uv),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
+                coatings: &tracer.coatings,
             };
             let tally = crate::dimensions::DimensionTally::default();
             let mut sampler =
@@ -1270,6 +1281,7 @@ mod tests {
             lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
             options,
             fuzz: FuzzMethod::Lobe,
+            coatings: Coatings::of(&world.scene),
         };
         use_tracer(&tracer)
     }

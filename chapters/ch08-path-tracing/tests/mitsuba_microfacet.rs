@@ -11,6 +11,7 @@
 //!
 //! `tests/mitsuba_microfacet.py` asks Mitsuba (the `scalar_rgb` variant) for its values.
 
+use ch08_path_tracing::microfacet::coating::Coating;
 use ch08_path_tracing::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
     RoughPlasticParameters, albedo,
@@ -88,14 +89,17 @@ fn cases() -> Vec<Case> {
                 eta: Some(1.5),
             });
             let diffuse = Vec3::new(0.2, 0.5, 0.8);
-            let ours = RoughPlastic::new(RoughPlasticParameters {
+            let parameters = RoughPlasticParameters {
                 kind,
                 alpha,
                 eta: 1.49,
                 diffuse_reflectance: diffuse,
                 specular_reflectance: Vec3::ONE,
                 nonlinear: false,
-            });
+            };
+            // Kept to the end of the test process: a case outlives the function that makes it.
+            let coating: &'static Coating = Box::leak(Box::new(parameters.coating()));
+            let ours = RoughPlastic::new(parameters, coating);
             let theirs = json!({"type": "roughplastic", "distribution": name(kind),
                 "alpha": alpha, "int_ior": 1.49, "ext_ior": 1.0,
                 "diffuse_reflectance": rgb(diffuse)});
@@ -142,14 +146,17 @@ fn cases() -> Vec<Case> {
         eta: Some(1.33),
     });
     let diffuse = Vec3::new(0.9, 0.4, 0.1);
-    let ours = RoughPlastic::new(RoughPlasticParameters {
+    let parameters = RoughPlasticParameters {
         kind: Ggx,
         alpha: 0.2,
         eta: 1.6,
         diffuse_reflectance: diffuse,
         specular_reflectance: tint,
         nonlinear: true,
-    });
+    };
+    // Kept to the end of the test process: a case outlives the function that makes it.
+    let coating: &'static Coating = Box::leak(Box::new(parameters.coating()));
+    let ours = RoughPlastic::new(parameters, coating);
     cases.push(Case {
         name: "roughplastic ggx 0.2, nonlinear, specular_reflectance".into(),
         ours: Box::new(ours),

@@ -138,7 +138,7 @@ impl SceneBuilder {
             self.surfaces,
             self.surface_of_shape.into_iter().chain(moving_surfaces),
         );
-        Scene {
+        let mut scene = Scene {
             geometry: Geometry::new(self.shapes),
             moving,
             surfaces,
@@ -155,8 +155,10 @@ impl SceneBuilder {
             max_depth,
             hide_emitters: false,
             origins: Origins::default(),
-            emission_grids: Default::default(),
-        }
+            emission_grids: Vec::new(),
+        };
+        scene.prepare_emission_grids();
+        scene
     }
 }
 

@@ -1,5 +1,5 @@
 //! Where a light whose radiance is a texture is bright: a density over its surface parameters
-//! for its light samples, worked out once per scene, when a renderer first asks.
+//! for its light samples, worked out once per scene, when it is built.
 //!
 //! Picking a point of such a light by area alone wastes most samples on its dark parts: on a
 //! panel with a few bright spots, nearly all the light comes from a tenth of it. Mitsuba 3
@@ -28,17 +28,23 @@ impl Scene {
     /// light: `Some` for a still parallelogram whose emitter's radiance is a texture with some
     /// light in it, `None` for every other shape (sampled as its shape says).
     pub fn emission_grid(&self, shape: u32) -> Option<&GridDistribution> {
-        // Most lights have no texture: they are answered without building anything.
+        // Most lights have no texture: they are answered without a search.
         self.surface(shape).emitter?.texture?;
-        let grids = self.emission_grids.get_or_init(|| {
-            (0..self.shape_count() as u32)
-                .filter_map(|shape| Some((shape, self.build_emission_grid(shape)?)))
-                .collect()
-        });
-        grids
+        self.emission_grids
             .iter()
             .find(|(textured, _)| *textured == shape)
             .map(|(_, grid)| grid)
+    }
+
+    /// Works out the density of every textured light ([`emission_grid`](Self::emission_grid)).
+    ///
+    /// [`SceneBuilder::build`](super::SceneBuilder::build) calls it, so a scene is ready to
+    /// sample when it is made and a render never builds a table behind the renderer's back;
+    /// code that gives a built scene's surfaces other emitters calls it again.
+    pub fn prepare_emission_grids(&mut self) {
+        self.emission_grids = (0..self.shape_count() as u32)
+            .filter_map(|shape| Some((shape, self.build_emission_grid(shape)?)))
+            .collect();
     }
 
     fn build_emission_grid(&self, shape: u32) -> Option<GridDistribution> {

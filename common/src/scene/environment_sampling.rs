@@ -19,7 +19,7 @@
 //! at the horizon, and the estimate would be noisier there (still unbiased: the density below
 //! is the one samples are drawn with).
 
-use super::environment_map::{direction_of, direction_to_uv};
+use super::lat_long::{direction_of, direction_to_uv};
 use glam::{Vec2, Vec3};
 
 /// Luminance of linear sRGB (Rec. 709 primaries, D65), the weights Mitsuba's `luminance` uses.

@@ -22,6 +22,7 @@ mod emission_sampling;
 mod environment_map;
 mod environment_sampling;
 mod grid_distribution;
+mod lat_long;
 mod light;
 mod material;
 mod settings;
@@ -30,9 +31,10 @@ mod texture;
 pub use builder::SceneBuilder;
 pub use camera::{Camera, CameraFrame, CameraModel};
 pub use emission_sampling::{EMISSION_GRID, UNIFORM_SHARE};
-pub use environment_map::{EnvironmentMap, EnvironmentMapError, direction_of, direction_to_uv};
+pub use environment_map::{EnvironmentMap, EnvironmentMapError};
 pub use environment_sampling::{EnvironmentSampling, luminance};
 pub use grid_distribution::GridDistribution;
+pub use lat_long::{direction_of, direction_to_uv};
 pub use light::{AreaEmitter, DirectionalLight, PointLight};
 pub use material::{
     AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
@@ -106,8 +108,9 @@ pub struct Scene {
     /// scenes.
     pub origins: Origins,
     /// The shapes whose light samples follow their radiance's texture, each with the density
-    /// they are drawn with ([`Scene::emission_grid`]), worked out on first use.
-    pub emission_grids: std::sync::OnceLock<Vec<(u32, GridDistribution)>>,
+    /// they are drawn with ([`Scene::emission_grid`]), worked out when the scene is built
+    /// ([`Scene::prepare_emission_grids`]).
+    pub emission_grids: Vec<(u32, GridDistribution)>,
 }
 
 /// What the surface of one shape is made of, whether it glows, and where it was written.

@@ -178,6 +178,10 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
         height: sensor.film.height,
         filter: sensor.film.filter,
     };
+    // The bitmaps go in before the scene is built: the densities of textured lights read them.
+    for bitmap in &description.bitmaps {
+        builder.bitmap(bitmap.clone());
+    }
     let scene = builder
         .environment(environment)
         .build(camera, film, max_depth);
@@ -197,7 +201,6 @@ pub(super) fn to_scene(description: &SceneDescription, file: &Path) -> Result<Sc
             environment_map: environment_map_position,
             directional_light: directional_position,
         },
-        bitmaps: description.bitmaps.clone(),
         environment_map,
         ..scene
     })

@@ -12,7 +12,7 @@ use common::geometry::SurfaceHit;
 use common::scene::{Camera, CameraFrame, FilmSettings, Scene, SceneBuilder};
 use glam::Vec3;
 
-use crate::scene::World;
+use crate::world::World;
 
 /// A ray the tracer asked the world about, and which question it asked.
 #[derive(Clone, Copy, Debug)]

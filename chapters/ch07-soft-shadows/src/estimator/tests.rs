@@ -9,10 +9,10 @@ use rand::SeedableRng;
 use rand_pcg::Pcg32;
 
 use super::*;
+use crate::area_lights::LightShape;
 use crate::disc_warp::DiscWarp;
-use crate::light::LightShape;
-use crate::light_samples::light_samples;
 use crate::reference::{disc_on_axis_irradiance, polygon_irradiance, sphere_irradiance};
+use crate::shadow_rays::light_samples;
 use crate::test_support::{Estimate, assert_agrees, estimate, terms, uniform_points};
 
 const L: Vec3 = Vec3::new(2.0, 1.0, 0.5);

@@ -114,6 +114,7 @@ mod tests {
                 material: &material,
                 hit: &hit,
                 fuzz: ch06_fuzzy_reflections::FuzzMethod::Lobe,
+                coatings: &crate::microfacet::coating::Coatings::default(),
             };
             (plain.eval(wo, wi), plain.pdf(wo, wi), plain.is_delta())
         };

@@ -25,6 +25,7 @@
 //! all three.
 
 use super::{BsdfSample, facing_normal};
+use crate::microfacet::coating::Coatings;
 use crate::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
     RoughPlasticParameters,
@@ -132,7 +133,7 @@ impl<B: LocalBsdf> Placed<B> {
 }
 
 /// Mitsuba's `roughconductor` at `hit`, seen from `wo`.
-pub fn conductor(
+pub fn rough_conductor(
     hit: &SurfaceHit,
     wo: Vec3,
     metal: &Conductor,
@@ -150,30 +151,42 @@ pub fn conductor(
     })
 }
 
-/// Mitsuba's `roughplastic` at `hit`, seen from `wo`. Its coating's table is tabulated once
-/// per roughness and index and looked up here ([`crate::microfacet::coating::Coating::shared`]).
+/// Mitsuba's `roughplastic` at `hit`, seen from `wo`, over its coating's tables from
+/// `coatings` (made before the render, [`Coatings::of`]).
 /// Mitsuba's `roughplastic` is isotropic (the loader reads only `alpha` for it); a model built
 /// in code with two widths gets their mean, [`Microfacet::alpha`].
-pub fn plastic(
+///
+/// # Panics
+///
+/// If `coatings` lacks this plastic's coating: they were made from another scene than the
+/// one being rendered, which is the workbook's mistake, not the scene's.
+pub fn rough_plastic<'c>(
     hit: &SurfaceHit,
     wo: Vec3,
     plastic: &Plastic,
     roughness: Microfacet,
-) -> Option<Placed<RoughPlastic>> {
+    coatings: &'c Coatings,
+) -> Option<Placed<RoughPlastic<'c>>> {
     let frame = LocalFrame::facing(hit, wo, plastic.two_sided, roughness.dp_du)?;
-    let bsdf = RoughPlastic::new(RoughPlasticParameters {
+    let parameters = RoughPlasticParameters {
         kind: roughness.distribution,
         alpha: roughness.alpha(),
         eta: plastic.int_ior / plastic.ext_ior,
         diffuse_reflectance: plastic.diffuse_reflectance,
         specular_reflectance: plastic.specular_reflectance,
         nonlinear: plastic.nonlinear,
-    });
-    Some(Placed { bsdf, frame })
+    };
+    let coating = coatings
+        .get(&parameters.distribution(), parameters.eta)
+        .expect("every rough plastic of the scene has its coating in the tracer's Coatings");
+    Some(Placed {
+        bsdf: RoughPlastic::new(parameters, coating),
+        frame,
+    })
 }
 
 /// Mitsuba's `roughdielectric` at `hit`: the normal on the outside, whichever side `wo` is.
-pub fn dielectric(
+pub fn rough_dielectric(
     hit: &SurfaceHit,
     glass: &RoughGlass,
     roughness: Microfacet,
@@ -185,7 +198,7 @@ pub fn dielectric(
 }
 
 /// Mitsuba's `roughdielectric` with factors on its lobes, at `hit`.
-pub fn tinted_dielectric(
+pub fn tinted_rough_dielectric(
     hit: &SurfaceHit,
     glass: &TintedGlass,
     roughness: Microfacet,

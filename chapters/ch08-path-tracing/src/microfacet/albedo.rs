@@ -49,7 +49,7 @@ pub fn over_normals(scale: f32, g: impl Fn(Vec3) -> DVec3 + Sync) -> DVec3 {
 pub fn reflected(wo: Vec3, scale: f32, eval: impl Fn(Vec3) -> Vec3 + Sync) -> DVec3 {
     over_normals(scale, |m| {
         let om = wo.dot(m);
-        let wi = fresnel::reflect(wo, m);
+        let wi = fresnel::reflect_away(wo, m);
         if om * wo.z <= 0.0 || wi.z * wo.z <= 0.0 {
             return DVec3::ZERO;
         }
@@ -66,11 +66,11 @@ pub fn refracted(wo: Vec3, scale: f32, eta: f32, eval: impl Fn(Vec3) -> Vec3 + S
         if om * wo.z <= 0.0 {
             return DVec3::ZERO;
         }
-        let f = fresnel::dielectric(om, eta);
+        let f = fresnel::DielectricFresnel::new(om, eta);
         if f.reflectance >= 1.0 {
             return DVec3::ZERO;
         }
-        let wi = fresnel::refract(wo, m, &f);
+        let wi = fresnel::refract_away(wo, m, &f);
         if wi.z * wo.z >= 0.0 {
             return DVec3::ZERO;
         }

@@ -20,9 +20,6 @@ use super::fresnel;
 use super::gauss_legendre::nodes_and_weights;
 use common::scene::{Material, MicrofacetDistribution, Scene};
 use glam::Vec3;
-use std::cell::Cell;
-use std::collections::HashMap;
-use std::sync::{Mutex, OnceLock};
 
 /// Entries of the transmittance table, Mitsuba's `MI_ROUGH_TRANSMITTANCE_RES`.
 pub const RESOLUTION: usize = 64;
@@ -68,83 +65,6 @@ impl Coating {
         }
     }
 
-    /// The coating of `distribution` over `eta`, tabulated once per process for each
-    /// roughness and index: a Beckmann table takes about a second in a debug build, and a
-    /// scene's plastics often share one.
-    ///
-    /// A rough plastic is made at every hit (its base's albedo may be a texture read there),
-    /// so this is asked millions of times a second by every thread. Each thread remembers the
-    /// last table it was given, and asks the shared map behind a lock only when the
-    /// roughness or the index changes. The tables live as long as the process (a few hundred
-    /// bytes for each roughness and index it meets), so a plastic borrows its table and no
-    /// count is kept: a lookup that hits the thread's table touches nothing shared.
-    pub fn shared(distribution: &NormalDistribution, eta: f32) -> &'static Self {
-        // The distribution by number: the scene model's enum is not `Hash`.
-        type Key = (u8, u32, u32, u32);
-        static TABLES: OnceLock<Mutex<HashMap<Key, &'static Coating>>> = OnceLock::new();
-        thread_local! {
-            static LAST: Cell<Option<(Key, &'static Coating)>> = const { Cell::new(None) };
-        }
-        let kind = match distribution.kind {
-            MicrofacetDistribution::Beckmann => 0,
-            MicrofacetDistribution::Ggx => 1,
-        };
-        let key = (
-            kind,
-            distribution.alpha_u.to_bits(),
-            distribution.alpha_v.to_bits(),
-            eta.to_bits(),
-        );
-        if let Some((last_key, table)) = LAST.get()
-            && last_key == key
-        {
-            return table;
-        }
-        let tables = TABLES.get_or_init(Default::default);
-        let known = tables
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .get(&key)
-            .copied();
-        let table = known.unwrap_or_else(|| {
-            // Tabulated outside the lock, so that other threads' lookups do not wait; two
-            // threads may both tabulate the same coating once, and one copy is then unused.
-            let table: &'static Coating = Box::leak(Box::new(Self::new(distribution, eta)));
-            *tables
-                .lock()
-                .unwrap_or_else(|e| e.into_inner())
-                .entry(key)
-                .or_insert(table)
-        });
-        LAST.set(Some((key, table)));
-        table
-    }
-
-    /// Tabulates the coating of every rough plastic in `scene` ([`shared`](Self::shared)), the
-    /// coatings side by side, before a render: in the render, the first hit on each plastic
-    /// would have its thread tabulate it, while the other threads wait for work or tabulate
-    /// the same coating too.
-    pub fn tabulate_for(scene: &Scene) {
-        use rayon::prelude::*;
-        let mut coatings: Vec<(NormalDistribution, f32)> = Vec::new();
-        for surface in &scene.surfaces {
-            if let Material::Plastic(plastic) = surface.material.unmasked()
-                && let Some(roughness) = plastic.roughness
-            {
-                let coating = (
-                    NormalDistribution::isotropic(roughness.distribution, roughness.alpha()),
-                    plastic.int_ior / plastic.ext_ior,
-                );
-                if !coatings.contains(&coating) {
-                    coatings.push(coating);
-                }
-            }
-        }
-        coatings.par_iter().for_each(|(distribution, eta)| {
-            Self::shared(distribution, *eta);
-        });
-    }
-
     /// `T(cos θ)`, interpolated linearly between the entries (`cos θ` in `[0, 1]`).
     pub fn transmittance(&self, cos_theta: f32) -> f32 {
         let x = cos_theta * (RESOLUTION - 1) as f32;
@@ -153,6 +73,80 @@ impl Coating {
         let (t0, t1) = (self.transmittance[index], self.transmittance[index + 1]);
         t0 + (t1 - t0) * (x - index as f32)
     }
+}
+
+/// The coatings a render needs, each tabulated once before it starts: one per roughness and
+/// index among a scene's rough plastics.
+///
+/// A rough plastic is made at every hit (its base's albedo may be a texture read there), so
+/// its coating must already exist by then: a Beckmann table takes about a second in a debug
+/// build, and a scene's plastics often share one. The tracer's constructor makes these
+/// tables from the scene, side by side on the thread pool, and every hit borrows one;
+/// nothing is filled in while the image renders, so no thread waits on another.
+#[derive(Clone, Debug, Default)]
+pub struct Coatings {
+    tables: Vec<(CoatingKey, Coating)>,
+}
+
+/// A coating's roughness and index, compared bit for bit: two plastics share a table only when
+/// their numbers are the same.
+type CoatingKey = (MicrofacetDistribution, u32, u32, u32);
+
+fn key(distribution: &NormalDistribution, eta: f32) -> CoatingKey {
+    (
+        distribution.kind,
+        distribution.alpha_u.to_bits(),
+        distribution.alpha_v.to_bits(),
+        eta.to_bits(),
+    )
+}
+
+impl Coatings {
+    /// The coatings of every rough plastic in `scene`, masked ones included.
+    pub fn of(scene: &Scene) -> Self {
+        Self::of_materials(scene.surfaces.iter().map(|surface| &surface.material))
+    }
+
+    /// The coatings of the rough plastics among `materials`.
+    pub fn of_materials<'m>(materials: impl IntoIterator<Item = &'m Material>) -> Self {
+        use rayon::prelude::*;
+        let mut wanted: Vec<(CoatingKey, NormalDistribution, f32)> = Vec::new();
+        for material in materials {
+            if let Some((distribution, eta)) = coating_of(material)
+                && !wanted.iter().any(|w| w.0 == key(&distribution, eta))
+            {
+                wanted.push((key(&distribution, eta), distribution, eta));
+            }
+        }
+        let tables = wanted
+            .par_iter()
+            .map(|(key, distribution, eta)| (*key, Coating::new(distribution, *eta)))
+            .collect();
+        Self { tables }
+    }
+
+    /// The coating of facets `distribution` over `eta`, if it was tabulated.
+    pub fn get(&self, distribution: &NormalDistribution, eta: f32) -> Option<&Coating> {
+        let key = key(distribution, eta);
+        self.tables
+            .iter()
+            .find(|(known, _)| *known == key)
+            .map(|(_, coating)| coating)
+    }
+}
+
+/// The facets and the index of a rough plastic's coat, as
+/// [`rough_plastic`](crate::bsdf::microfacet::rough_plastic) builds them; `None` for any other
+/// material.
+pub fn coating_of(material: &Material) -> Option<(NormalDistribution, f32)> {
+    let Material::Plastic(plastic) = material.unmasked() else {
+        return None;
+    };
+    let roughness = plastic.roughness?;
+    Some((
+        NormalDistribution::isotropic(roughness.distribution, roughness.alpha()),
+        plastic.int_ior / plastic.ext_ior,
+    ))
 }
 
 /// `∫ f(sampled normal) du` over the unit square by the tensor rule of `n²` points.
@@ -178,8 +172,8 @@ fn points(eta: f32) -> usize {
 fn transmitted(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
     over_visible_normals(points(eta), |u| {
         let m = distribution.sample_visible_normal(w, u);
-        let f = fresnel::dielectric(w.dot(m), eta);
-        let t = fresnel::refract(w, m, &f);
+        let f = fresnel::DielectricFresnel::new(w.dot(m), eta);
+        let t = fresnel::refract_away(w, m, &f);
         if t.z * w.z >= 0.0 {
             return 0.0;
         }
@@ -192,11 +186,11 @@ fn transmitted(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
 fn reflected(distribution: &NormalDistribution, w: Vec3, eta: f32) -> f64 {
     over_visible_normals(points(eta), |u| {
         let m = distribution.sample_visible_normal(w, u);
-        let r = fresnel::reflect(w, m);
+        let r = fresnel::reflect_away(w, m);
         if r.z <= 0.0 || w.z <= 0.0 {
             return 0.0;
         }
-        let f = fresnel::dielectric(w.dot(m), eta).reflectance;
+        let f = fresnel::DielectricFresnel::new(w.dot(m), eta).reflectance;
         f64::from(distribution.g1(r, m) * f)
     })
 }
@@ -211,12 +205,13 @@ mod tests {
         let inside: f64 = (0..n)
             .map(|i| {
                 let mu = (i as f64 + 0.5) / n as f64;
-                2.0 * mu * f64::from(fresnel::dielectric(mu as f32, 1.0 / eta).reflectance)
+                2.0 * mu
+                    * f64::from(fresnel::DielectricFresnel::new(mu as f32, 1.0 / eta).reflectance)
             })
             .sum::<f64>()
             / n as f64;
         (
-            move |mu| 1.0 - fresnel::dielectric(mu, eta).reflectance,
+            move |mu| 1.0 - fresnel::DielectricFresnel::new(mu, eta).reflectance,
             inside,
         )
     }
@@ -264,21 +259,44 @@ mod tests {
             );
             assert!(values[2] < values[20], "{kind:?}: {values:?}");
             assert!((0.0..1.0).contains(&coating.internal_reflectance));
-            let d = NormalDistribution::isotropic(kind, 0.5);
-            assert_eq!(*Coating::shared(&d, 1.5), coating);
-            // One table per roughness and index, whichever thread asks and whatever was
-            // asked in between.
-            let first = Coating::shared(&d, 1.5);
-            assert!(std::ptr::eq(first, Coating::shared(&d, 1.5)));
-            let other = Coating::shared(&d, 1.3);
-            assert!(!std::ptr::eq(first, other));
-            assert!(std::ptr::eq(first, Coating::shared(&d, 1.5)));
-            let elsewhere =
-                std::thread::scope(|s| s.spawn(|| Coating::shared(&d, 1.5)).join().unwrap());
-            assert!(std::ptr::eq(first, elsewhere));
             // Out-of-range cosines never read past the table.
             assert!(coating.transmittance(1.5).is_finite());
             assert!(coating.transmittance(-0.5).is_finite());
         }
+    }
+
+    /// A rough plastic of width `alpha` with its coat of index `int_ior`.
+    fn plastic(alpha: f32, int_ior: f32) -> Material {
+        Material::Plastic(common::scene::Plastic {
+            diffuse_reflectance: Vec3::splat(0.5),
+            specular_reflectance: Vec3::ONE,
+            diffuse_texture: None,
+            specular_texture: None,
+            int_ior,
+            ext_ior: 1.0,
+            nonlinear: false,
+            two_sided: false,
+            roughness: Some(common::scene::Microfacet::isotropic(
+                MicrofacetDistribution::Beckmann,
+                alpha,
+            )),
+        })
+    }
+
+    #[test]
+    fn coatings_hold_one_table_for_each_roughness_and_index_of_the_materials() {
+        let materials = [
+            plastic(0.3, 1.5),
+            Material::diffuse(Vec3::ONE),
+            plastic(0.3, 1.5),
+            plastic(0.3, 1.3),
+        ];
+        let coatings = Coatings::of_materials(&materials);
+        assert_eq!(coatings.tables.len(), 2, "a table per roughness and index");
+        let d = NormalDistribution::isotropic(MicrofacetDistribution::Beckmann, 0.3);
+        assert_eq!(coatings.get(&d, 1.5), Some(&Coating::new(&d, 1.5)));
+        assert_eq!(coatings.get(&d, 1.3), Some(&Coating::new(&d, 1.3)));
+        assert_eq!(coatings.get(&d, 1.4), None, "no plastic of this index");
+        assert!(Coatings::of_materials(&materials[1..2]).tables.is_empty());
     }
 }

@@ -21,34 +21,41 @@ pub struct DielectricFresnel {
     pub eta_ti: f32,
 }
 
-/// The Fresnel terms for a direction at `cos_theta_i` to the normal (positive on the side the
-/// normal points to, the outside) at an interface of relative index `eta`.
-pub fn dielectric(cos_theta_i: f32, eta: f32) -> DielectricFresnel {
-    let (eta_it, eta_ti) = if cos_theta_i >= 0.0 {
-        (eta, 1.0 / eta)
-    } else {
-        (1.0 / eta, eta)
-    };
-    let cos2_t = 1.0 - (1.0 - cos_theta_i * cos_theta_i) * eta_ti * eta_ti;
-    let cos_t = cos2_t.max(0.0).sqrt();
-    DielectricFresnel {
-        // Chapter 01's formula; it takes `n_i / n_t` and returns 1 at grazing incidence.
-        reflectance: fresnel_dielectric(cos_theta_i.abs(), eta_ti),
-        cos_theta_t: if cos_theta_i >= 0.0 { -cos_t } else { cos_t },
-        eta_it,
-        eta_ti,
+impl DielectricFresnel {
+    /// The Fresnel terms for a direction at `cos_theta_i` to the normal (positive on the side the
+    /// normal points to, the outside) at an interface of relative index `eta`.
+    pub fn new(cos_theta_i: f32, eta: f32) -> Self {
+        let (eta_it, eta_ti) = if cos_theta_i >= 0.0 {
+            (eta, 1.0 / eta)
+        } else {
+            (1.0 / eta, eta)
+        };
+        let cos2_t = 1.0 - (1.0 - cos_theta_i * cos_theta_i) * eta_ti * eta_ti;
+        let cos_t = cos2_t.max(0.0).sqrt();
+        Self {
+            // Chapter 01's formula; it takes `n_i / n_t` and returns 1 at grazing incidence.
+            reflectance: fresnel_dielectric(cos_theta_i.abs(), eta_ti),
+            cos_theta_t: if cos_theta_i >= 0.0 { -cos_t } else { cos_t },
+            eta_it,
+            eta_ti,
+        }
     }
 }
 
-/// The direction refracted through the facet `m` from `w` (both pointing away from the
-/// interface), given the Fresnel terms of `cos θ = w·m`: Mitsuba's `refract(wi, m, cos_theta_t,
-/// eta_ti)`.
-pub fn refract(w: Vec3, m: Vec3, fresnel: &DielectricFresnel) -> Vec3 {
+/// The direction refracted through the facet `m` from `w`, given the Fresnel terms of
+/// `cos θ = w·m`: Mitsuba's `refract(wi, m, cos_theta_t, eta_ti)`.
+///
+/// "Away" because `w` and the answer both point away from the interface, as a BSDF's `wo` and
+/// `wi` do; chapter 01's `optics::refract` follows the ray instead (its `d` points at the
+/// surface) and decides total internal reflection itself, where this one is handed the
+/// decision in `fresnel`.
+pub fn refract_away(w: Vec3, m: Vec3, fresnel: &DielectricFresnel) -> Vec3 {
     m * (w.dot(m) * fresnel.eta_ti + fresnel.cos_theta_t) - w * fresnel.eta_ti
 }
 
-/// The mirror image of `w` about the facet normal `m`, both pointing away from the surface.
-pub fn reflect(w: Vec3, m: Vec3) -> Vec3 {
+/// The mirror image of `w` about the facet normal `m`, both pointing away from the surface:
+/// chapter 01's `optics::reflect(-w, m)`, written for directions that leave the surface.
+pub fn reflect_away(w: Vec3, m: Vec3) -> Vec3 {
     2.0 * w.dot(m) * m - w
 }
 
@@ -65,8 +72,8 @@ mod tests {
             (Vec3::new(0.6, 0.0, 0.8), 1.5f32),
             (Vec3::new(0.3, 0.0, -(1.0f32 - 0.09).sqrt()), 1.5),
         ] {
-            let f = dielectric(w.z, eta);
-            let t = refract(w, m, &f);
+            let f = DielectricFresnel::new(w.z, eta);
+            let t = refract_away(w, m, &f);
             assert!((t.length() - 1.0).abs() < 1e-5, "{t}");
             assert!(t.z * w.z < 0.0, "{t} on the side of {w}");
             // n_i sin θ_i = n_t sin θ_t, the tangential parts opposite.

@@ -41,7 +41,7 @@ impl LocalBsdf for RoughDielectric {
     }
 }
 
-impl LocalBsdf for RoughPlastic {
+impl LocalBsdf for RoughPlastic<'_> {
     fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         RoughPlastic::eval(self, wo, wi)
     }

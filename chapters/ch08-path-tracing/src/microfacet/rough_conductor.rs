@@ -82,7 +82,7 @@ impl RoughConductor {
         }
         let m = self.distribution.sample_visible_normal(wo, u);
         let pdf_m = self.distribution.visible_normal_pdf(wo, m);
-        let wi = fresnel::reflect(wo, m);
+        let wi = fresnel::reflect_away(wo, m);
         if pdf_m == 0.0 || wi.z <= 0.0 {
             return None;
         }

@@ -73,7 +73,7 @@ impl RoughDielectric {
             return Vec3::ZERO;
         };
         let d = self.distribution.d(m);
-        let f = fresnel::dielectric(wo.dot(m), self.eta).reflectance;
+        let f = fresnel::DielectricFresnel::new(wo.dot(m), self.eta).reflectance;
         let g = self.distribution.g(wo, wi, m);
         if reflect {
             self.specular_reflectance * (f * d * g / (4.0 * wo.z.abs()))
@@ -104,7 +104,7 @@ impl RoughDielectric {
             eta * eta * im / (om + eta * im).powi(2)
         };
         let seen_from = wo * wo.z.signum();
-        let f = fresnel::dielectric(om, self.eta).reflectance;
+        let f = fresnel::DielectricFresnel::new(om, self.eta).reflectance;
         let branch = if reflect { f } else { 1.0 - f };
         (self.distribution.visible_normal_pdf(seen_from, m) * branch * dm_dwi).abs()
     }
@@ -122,14 +122,14 @@ impl RoughDielectric {
         if pdf_m == 0.0 {
             return None;
         }
-        let fresnel = fresnel::dielectric(wo.dot(m), self.eta);
+        let fresnel = fresnel::DielectricFresnel::new(wo.dot(m), self.eta);
         let f = fresnel.reflectance;
         let (wi, weight, pdf, eta_scale) = if choice <= f {
-            let wi = fresnel::reflect(wo, m);
+            let wi = fresnel::reflect_away(wo, m);
             let dm_dwi = 1.0 / (4.0 * wi.dot(m));
             (wi, self.specular_reflectance, pdf_m * f * dm_dwi, 1.0)
         } else {
-            let wi = fresnel::refract(wo, m, &fresnel);
+            let wi = fresnel::refract_away(wo, m, &fresnel);
             (
                 wi,
                 self.specular_transmittance * fresnel.eta_ti.powi(2),

@@ -24,15 +24,15 @@ use common::scene::MicrofacetDistribution;
 use glam::{Vec2, Vec3};
 use std::f32::consts::FRAC_1_PI;
 
-/// A rough plastic with its coating tabulated.
+/// A rough plastic, over its coating's tables.
 #[derive(Clone, Debug, PartialEq)]
-pub struct RoughPlastic {
+pub struct RoughPlastic<'a> {
     distribution: NormalDistribution,
     eta: f32,
     diffuse_reflectance: Vec3,
     specular_reflectance: Vec3,
     nonlinear: bool,
-    coating: &'static Coating,
+    coating: &'a Coating,
     specular_sampling_weight: f32,
 }
 
@@ -53,12 +53,24 @@ pub struct RoughPlasticParameters {
     pub nonlinear: bool,
 }
 
-impl RoughPlastic {
-    /// The plastic, its coating tabulated (some 10⁶ sampled normals, as in Mitsuba; once per
-    /// roughness and index, see [`Coating::shared`]).
-    pub fn new(p: RoughPlasticParameters) -> Self {
-        let distribution = NormalDistribution::isotropic(p.kind, p.alpha);
-        let coating = Coating::shared(&distribution, p.eta);
+impl RoughPlasticParameters {
+    /// The facets of the coat: Mitsuba's `roughplastic` is isotropic.
+    pub fn distribution(&self) -> NormalDistribution {
+        NormalDistribution::isotropic(self.kind, self.alpha)
+    }
+
+    /// Tabulates the coat's coating (some 10⁶ sampled normals, as in Mitsuba): for a plastic
+    /// made on its own; a render takes its plastics' coatings from
+    /// [`Coatings`](super::coating::Coatings), made before it starts.
+    pub fn coating(&self) -> Coating {
+        Coating::new(&self.distribution(), self.eta)
+    }
+}
+
+impl<'a> RoughPlastic<'a> {
+    /// The plastic over `coating`, its coat's tables ([`RoughPlasticParameters::coating`]).
+    pub fn new(p: RoughPlasticParameters, coating: &'a Coating) -> Self {
+        let distribution = p.distribution();
         let mean = |c: Vec3| (c.x + c.y + c.z) / 3.0;
         let specular = mean(p.specular_reflectance);
         Self {
@@ -84,7 +96,7 @@ impl RoughPlastic {
             return Vec3::ZERO;
         }
         let h = (wo + wi).normalize();
-        let f = fresnel::dielectric(wo.dot(h), self.eta).reflectance;
+        let f = fresnel::DielectricFresnel::new(wo.dot(h), self.eta).reflectance;
         let coating = f * self.distribution.d(h) * self.distribution.g(wo, wi, h) / (4.0 * wo.z);
         let r_int = self.coating.internal_reflectance;
         let albedo = if self.nonlinear {
@@ -125,7 +137,7 @@ impl RoughPlastic {
         }
         let wi = if choice < self.coating_probability(wo.z) {
             let m = self.distribution.sample_visible_normal(wo, u);
-            fresnel::reflect(wo, m)
+            fresnel::reflect_away(wo, m)
         } else {
             sample_cosine_hemisphere(u)
         };

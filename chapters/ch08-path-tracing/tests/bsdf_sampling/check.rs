@@ -6,6 +6,7 @@ use crate::chart::Chart;
 use ch02_monte_carlo::chi2::{Chi2Result, chi2_test_density};
 use ch02_monte_carlo::warps::WarpPoint;
 use ch06_fuzzy_reflections::FuzzMethod;
+use ch08_path_tracing::microfacet::coating::Coatings;
 use ch08_path_tracing::{Bsdf, BsdfSample};
 use common::geometry::SurfaceHit;
 use common::sampler::{IndependentSampler, Sampler};
@@ -87,6 +88,7 @@ pub fn run(case: &Case, seed: u64) -> Outcome {
         material: &case.material,
         hit: &hit,
         fuzz: case.fuzz,
+        coatings: &Coatings::of_materials([&case.material]),
     };
     let pdf = |wi: Vec3| bsdf.pdf(case.wo, wi);
     let (integral, integral_error) = case.chart.integral(&pdf);

@@ -3,6 +3,7 @@
 //! The charts only place the bins; the density compared is always the sampler's own.
 
 use crate::slope_chart::{Lobe, SlopeChart as Chart};
+use ch08_path_tracing::microfacet::coating::Coating;
 use ch08_path_tracing::microfacet::fresnel;
 use ch08_path_tracing::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
@@ -150,7 +151,7 @@ fn facing(wo: Vec3) -> Vec3 {
 }
 
 fn mirror(wo: Vec3) -> Vec3 {
-    fresnel::reflect(wo, facing(wo))
+    fresnel::reflect_away(wo, facing(wo))
 }
 
 /// Copper-like metal at two roughnesses and anisotropic, from the normal, at 70° and grazing.
@@ -198,9 +199,9 @@ pub fn glass() -> Vec<Case> {
                 }];
                 // Rough facets refract even beyond the critical angle: straight through,
                 // then, when no smooth refraction exists.
-                let f = fresnel::dielectric(wo.z, 1.5);
+                let f = fresnel::DielectricFresnel::new(wo.z, 1.5);
                 let axis = if f.reflectance < 1.0 {
-                    fresnel::refract(wo, Vec3::Z, &f)
+                    fresnel::refract_away(wo, Vec3::Z, &f)
                 } else {
                     -side
                 };
@@ -223,14 +224,17 @@ pub fn plastic() -> Vec<Case> {
     let mut cases = Vec::new();
     for kind in KINDS {
         for alpha in [0.1, 0.6] {
-            let bsdf = RoughPlastic::new(RoughPlasticParameters {
+            let parameters = RoughPlasticParameters {
                 kind,
                 alpha,
                 eta: 1.49,
                 diffuse_reflectance: Vec3::new(0.3, 0.5, 0.7),
                 specular_reflectance: Vec3::ONE,
                 nonlinear: false,
-            });
+            };
+            // Kept to the end of the test process: a case outlives the function that makes it.
+            let coating: &'static Coating = Box::leak(Box::new(parameters.coating()));
+            let bsdf = RoughPlastic::new(parameters, coating);
             let wo = at(50.0);
             let lobe = Lobe {
                 axis: mirror(wo),

@@ -75,6 +75,7 @@ pub fn estimate(
         lights: SceneLights::of(world, &area_lights, method.light_sampling),
         options: method.options,
         fuzz: method.fuzz,
+        coatings: ch08_path_tracing::microfacet::coating::Coatings::of(&world.scene),
     };
     let mut sampler = IndependentSampler::new(seed);
     let (mut sum, mut sum2, mut count) = (0.0f64, 0.0f64, 0u64);

@@ -16,11 +16,10 @@ mod sphere;
 mod triangle;
 
 pub use disc::Disc;
-pub(crate) use four_triangles::{FourTriangles, LANES as TRIANGLE_LANES};
+pub(crate) use four_triangles::{FourTriangles, LANES as TRIANGLE_LANES, RaySpace};
 pub use mesh::{MeshError, TriangleMesh};
 pub use parallelogram::Parallelogram;
 pub use sphere::Sphere;
-pub(crate) use triangle::RaySpace;
 pub use triangle::Triangle;
 
 use crate::Ray;

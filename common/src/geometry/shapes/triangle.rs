@@ -3,7 +3,7 @@
 use glam::{Vec2, Vec3};
 
 use super::Crossing;
-use super::four_triangles::FourTriangles;
+use super::four_triangles::{FourTriangles, RaySpace};
 use crate::Ray;
 use crate::geometry::aabb::Aabb;
 use crate::geometry::float::gamma;
@@ -120,63 +120,6 @@ impl Triangle {
         let space = RaySpace::new(ray)?;
         let (_, crossing) = space.nearest_crossing(&FourTriangles::new(&[self.p]), 1, ray.t_max)?;
         Some(crossing)
-    }
-}
-
-/// The watertight test, following pbrt-v4 (section 6.5.3).
-///
-/// The vertices are moved into a coordinate system where the ray starts at the origin and
-/// runs along `+z`: translate by `-o`, permute the axes so that the largest component of
-/// the direction becomes z, then shear x and y so that the direction becomes `(0, 0, 1)`.
-/// The ray then hits the triangle if the 2D point `(0, 0)` is inside the projected triangle,
-/// which the signs of the three edge functions `e_i` decide.
-///
-/// *Watertight* means a ray through an edge shared by two triangles hits at least one of
-/// them. Both triangles compute that edge's function from the same two transformed vertices,
-/// a difference of two products: in `f32` its sign is exact or it is 0, and where it is 0 it
-/// is computed again in `f64`, where the products of `f32`s are exact. So its sign is exact,
-/// and the two triangles see exactly opposite values and cannot both reject the ray.
-///
-/// The test is split at what depends on the ray alone, which is this coordinate system: which
-/// axis becomes z and the shear that turns the direction into `(0, 0, 1)`. A walk through a
-/// mesh works it out once per ray and tests the triangles of each leaf it meets four at a time
-/// ([`nearest_crossing`](Self::nearest_crossing) and [`any_crossing`](Self::any_crossing), in
-/// `four_triangles.rs`), from their vertices alone ([`FourTriangles`]: the walk keeps them apart
-/// from the rest of a triangle). A triangle without area must be left out before (it is never
-/// hit).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct RaySpace {
-    /// The ray's origin, its axes renamed: `origin.x` is its coordinate along `axes[0]`.
-    pub(super) origin: Vec3,
-    /// The axes that become x, y and z.
-    pub(super) axes: [usize; 3],
-    pub(super) shear_x: f32,
-    pub(super) shear_y: f32,
-    pub(super) scale_z: f32,
-}
-
-impl RaySpace {
-    /// The ray's space; none for a zero direction, which crosses nothing.
-    #[inline]
-    pub(crate) fn new(ray: &Ray) -> Option<Self> {
-        let kz = ray.dir.abs().max_position();
-        let kx = (kz + 1) % 3;
-        let ky = (kx + 1) % 3;
-        let permute = |v: Vec3| {
-            let v = v.to_array();
-            Vec3::new(v[kx], v[ky], v[kz])
-        };
-        let d = permute(ray.dir);
-        if d.z == 0.0 {
-            return None; // a zero direction
-        }
-        Some(Self {
-            origin: permute(ray.origin),
-            axes: [kx, ky, kz],
-            shear_x: -d.x / d.z,
-            shear_y: -d.y / d.z,
-            scale_z: 1.0 / d.z,
-        })
     }
 }
 

@@ -1,4 +1,6 @@
 use super::*;
+use crate::scene::lat_long::{direction_of, direction_to_uv};
+use std::f32::consts::PI;
 
 /// The 4 x 3 map the Mitsuba values below were computed on: pixel (x, y) holds
 /// `(1 + x, 10 (1 + y), (x + 1)(y + 1) / 2)`.

@@ -16,8 +16,8 @@ use workbench::test_support::image_comparison;
 use super::{Asked, Recording, build, close};
 use crate::camera::PinholeCamera;
 use crate::optics::reflect;
-use crate::scene::World;
 use crate::tracer::{dielectric, direct_light, trace};
+use crate::world::World;
 
 /// The shutter time of every camera ray: every ray of its path must keep it.
 const TIME: f32 = 0.4;

@@ -1,5 +1,6 @@
 use super::direction;
 use crate::microfacet::albedo;
+use crate::microfacet::coating::Coating;
 use crate::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
     RoughPlasticParameters,
@@ -22,15 +23,18 @@ fn glass(kind: MicrofacetDistribution, alpha: f32) -> RoughDielectric {
     RoughDielectric::new(NormalDistribution::isotropic(kind, alpha), 1.5, 1.0)
 }
 
-fn plastic(kind: MicrofacetDistribution, alpha: f32, diffuse: Vec3) -> RoughPlastic {
-    RoughPlastic::new(RoughPlasticParameters {
+fn plastic(kind: MicrofacetDistribution, alpha: f32, diffuse: Vec3) -> RoughPlastic<'static> {
+    let parameters = RoughPlasticParameters {
         kind,
         alpha,
         eta: 1.49,
         diffuse_reflectance: diffuse,
         specular_reflectance: Vec3::ONE,
         nonlinear: false,
-    })
+    };
+    // Kept to the end of the test process: the plastic outlives this function.
+    let coating: &'static Coating = Box::leak(Box::new(parameters.coating()));
+    RoughPlastic::new(parameters, coating)
 }
 
 /// The mean weight of `n` samples from `wo` and its standard error, after checking that every

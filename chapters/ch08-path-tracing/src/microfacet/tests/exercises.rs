@@ -3,7 +3,7 @@
 
 use crate::microfacet::albedo::over_normals;
 use crate::microfacet::distribution::ggx_density;
-use crate::microfacet::fresnel::reflect;
+use crate::microfacet::fresnel::reflect_away;
 use crate::microfacet::{NormalDistribution, RoughConductor};
 use common::scene::MicrofacetDistribution::{Beckmann, Ggx};
 use glam::{DVec3, Vec2, Vec3};
@@ -152,7 +152,7 @@ fn check_sample(metal: &RoughConductor, wo: Vec3, u: Vec2) -> Result<(), String>
     let d = &metal.distribution;
     let got = metal.sample(wo, u);
     let m = d.sample_visible_normal(wo, u);
-    let wi = reflect(wo, m);
+    let wi = reflect_away(wo, m);
     let call = format!("sample(wo = {wo}, u = {u}) with {d:?}");
     if wi.z <= 0.0 {
         return match got {
@@ -166,13 +166,13 @@ fn check_sample(metal: &RoughConductor, wo: Vec3, u: Vec2) -> Result<(), String>
     let Some(s) = got else {
         return Err(format!(
             "{call} gave no direction, but the visible normal m = {m} drawn with u mirrors wo \
-             to {wi}, above the surface (fresnel::reflect(wo, m) takes wo, which points away \
+             to {wi}, above the surface (fresnel::reflect_away(wo, m) takes wo, which points away \
              from the surface; chapter 01's reflect(d, n) takes a direction d that points \
              towards it, so given wo it gives -wi)"
         ));
     };
     if !close3(s.wi, wi) {
-        let plain = reflect(wo, d.sample_normal(u));
+        let plain = reflect_away(wo, d.sample_normal(u));
         let why = if close3(s.wi, plain) {
             "the normal is drawn from all the facets (sample_normal); draw it from those wo can \
              see (sample_visible_normal)"

@@ -30,8 +30,9 @@ pub mod ray_tree;
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
+use crate::microfacet::coating::Coatings;
 use crate::nee::point_lights;
-use ch01_whitted::scene::World;
+use ch01_whitted::world::World;
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::{CameraRays, TimeSampler};
@@ -85,7 +86,7 @@ impl DistributionOptions {
 /// Its area lights are chapter 07's, whose radiance is the same at every point: a light whose
 /// radiance is a texture is read by the path tracer only ([`crate::lights`]); this tracer
 /// renders the chapter's own scenes, which have none.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct DistributionTracer<'a> {
     /// The scene.
     pub world: &'a MotionScene,
@@ -97,6 +98,8 @@ pub struct DistributionTracer<'a> {
     pub options: DistributionOptions,
     /// How fuzzy lobes spread.
     pub fuzz: FuzzMethod,
+    /// The rough plastics' coatings, tabulated here, before any ray is traced.
+    pub coatings: Coatings,
 }
 
 impl<'a> DistributionTracer<'a> {
@@ -114,6 +117,7 @@ impl<'a> DistributionTracer<'a> {
             lights: SceneLights::of(world, area_lights, light_options.sampling),
             options,
             fuzz: FuzzMethod::Lobe,
+            coatings: Coatings::of(&world.scene),
         }
     }
 
@@ -141,7 +145,7 @@ impl<'a> DistributionTracer<'a> {
         counters.rays += 1;
         let world = self.world;
         let Some(hit) = world.intersect(ray) else {
-            return world.scene.background(ray.dir);
+            return world.background(ray.dir);
         };
         let mut radiance = if count_emission {
             self.lighting.emitted(&hit, ray)
@@ -152,9 +156,10 @@ impl<'a> DistributionTracer<'a> {
             return radiance; // no segment left to carry reflected light
         }
         let bsdf = Bsdf {
-            material: &self.world.scene.material_at(hit.shape, hit.uv),
+            material: &self.world.material_at(&hit),
             hit: &hit,
             fuzz: self.fuzz,
+            coatings: &self.coatings,
         };
         let wo = -ray.dir.normalize();
         let k = self.options.material_samples.max(1);

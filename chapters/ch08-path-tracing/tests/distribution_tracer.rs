@@ -89,6 +89,7 @@ fn path(
         lights: ch08_path_tracing::SceneLights::of(scene, area_lights, method.light_sampling),
         options,
         fuzz: method.fuzz,
+        coatings: ch08_path_tracing::microfacet::coating::Coatings::of(&scene.scene),
     };
     move |ray, sampler, counters| tracer.radiance(ray, sampler, counters)
 }
