@@ -107,7 +107,7 @@ enum Task {
         /// (`ch04-depth-of-field`, or `ch04`): every exercise of it you have not written.
         name: Option<String>,
         /// Every exercise this exercise's check runs that you have not written, so that the
-        /// check can run: `--needs ch08-path-segment`.
+        /// check can run: `--needs ch08-path-loop`.
         #[arg(long, value_name = "NAME", conflicts_with = "name")]
         needs: Option<String>,
         /// The workbook: the repository with the solutions, from which this edition was made.

@@ -6,12 +6,13 @@
 //! the two strategies share the work. With `n_l` light samples and `n_b` BSDF samples, each
 //! strategy's density enters the heuristic multiplied by its count (Veach's multi-sample
 //! model): a light sample is weighed by `w(n_l p_l, n_b p_b)`, a BSDF sample by
-//! `w(n_b p_b, n_l p_l)`, and each sample's estimate is divided by the count of its kind. A
+//! `w(n_b p_b, n_l p_l)`, and each sample's estimate is divided by the count of its kind. The
+//! light samples are the path tracer's own ([`PathTracer::light_sample`], given the counts). A
 //! count of 0 leaves the other strategy alone, with weight 1: `emitter_samples` 0 is pure
 //! BSDF sampling, `bsdf_samples` 0 pure light sampling.
 //!
 //! Point lights, which no BSDF sample can find, are connected once per hit whenever there
-//! are light samples, as the path tracer does ([`point_lights`]), and counted
+//! are light samples, as the path tracer does ([`PathTracer::delta_lights`]), and counted
 //! `emitter_samples` times. That is Mitsuba 3's image, not the physical one: Mitsuba picks a
 //! point light among its other emitters and weighs each pick of it by 1 where any other
 //! light sample is weighed by `1 / emitter_samples`, so its point lights come out
@@ -21,8 +22,6 @@
 //! the default, the two agree with physics.
 
 use crate::bsdf::Bsdf;
-use crate::mis::MisHeuristic;
-use crate::nee::{directional_lights, light_sample_contribution, point_lights};
 use crate::path::PathTracer;
 use ch01_whitted::world::World;
 use common::Ray;
@@ -59,7 +58,7 @@ impl PathTracer<'_> {
                 .emitted(light, hit.shape, hit.n, || Some(hit.uv), -ray.dir);
         }
         let bsdf = Bsdf {
-            material: &self.world.scene.material_at(hit.shape, hit.uv),
+            material: &self.world.material_at(&hit),
             hit: &hit,
             fuzz: self.fuzz,
             coatings: &self.coatings,
@@ -70,18 +69,14 @@ impl PathTracer<'_> {
             bsdf: samples.bsdf,
         };
         if counts.emitter > 0 && !bsdf.is_delta() {
-            if !self.lights.points.is_empty() || !self.lights.directionals.is_empty() {
+            if self.lights.has_delta_lights() {
                 // Mitsuba's count, `emitter_samples` times (see the module).
                 let mitsuba_count = counts.emitter as f32;
-                let (world, lights, time) = (self.world, &self.lights, ray.time);
-                radiance += mitsuba_count
-                    * (point_lights(world, lights, &bsdf, wo, time, counters)
-                        + directional_lights(world, lights, &bsdf, wo, time, counters));
+                radiance += mitsuba_count * self.delta_lights(&bsdf, wo, ray.time, counters);
             }
             if self.lights.can_be_hit() {
                 for _ in 0..counts.emitter {
-                    radiance +=
-                        self.counted_light_sample(&bsdf, wo, ray.time, counts, sampler, counters);
+                    radiance += self.light_sample(&bsdf, wo, ray.time, counts, sampler, counters);
                 }
             }
         }
@@ -89,50 +84,6 @@ impl PathTracer<'_> {
             radiance += self.counted_bsdf_sample(&bsdf, wo, ray.time, counts, sampler, counters);
         }
         radiance
-    }
-
-    /// One of `counts.emitter` light samples at the surface of `bsdf`, weighed against the
-    /// `counts.bsdf` BSDF samples and divided by its own count.
-    fn counted_light_sample<S: Sampler>(
-        &self,
-        bsdf: &Bsdf,
-        wo: Vec3,
-        time: f32,
-        counts: DirectSamples,
-        sampler: &mut S,
-        counters: &mut SampleCounters,
-    ) -> Vec3 {
-        let u_pick = if self.lights.count() > 1 {
-            sampler.get_1d()
-        } else {
-            0.0
-        };
-        let Some(light) = self.lights.pick(u_pick) else {
-            return Vec3::ZERO;
-        };
-        let Some(sample) = self.lights.sample(light, bsdf.hit, sampler.get_2d()) else {
-            return Vec3::ZERO;
-        };
-        // Each density times its count: the weight is the multi-sample heuristic's, and
-        // dividing by `n_l p_l` divides the estimate by the count as well.
-        let (n_light, n_bsdf) = (counts.emitter as f32, counts.bsdf as f32);
-        let contribution = light_sample_contribution(
-            sample.radiance,
-            bsdf.eval(wo, sample.wi),
-            n_light * sample.pdf,
-            n_bsdf * bsdf.pdf(wo, sample.wi),
-            self.lights.pick_probability(),
-            self.options.mis,
-        );
-        if contribution == Vec3::ZERO {
-            return Vec3::ZERO;
-        }
-        counters.rays += 1;
-        if self.world.occluded(&sample.shadow_ray(bsdf.hit, time)) {
-            Vec3::ZERO
-        } else {
-            contribution
-        }
     }
 
     /// One of `counts.bsdf` BSDF samples at the surface of `bsdf`: the light its ray finds
@@ -173,10 +124,9 @@ impl PathTracer<'_> {
         let weight = if sample.is_delta() || counts.emitter == 0 {
             1.0
         } else {
-            match self.options.mis {
-                MisHeuristic::None => 0.0,
-                mis => mis.weight(n_bsdf * sample.pdf, n_light * light_pdf),
-            }
+            self.options
+                .mis
+                .bsdf_sample_weight(n_bsdf * sample.pdf, n_light * light_pdf)
         };
         let contribution = sample.weight * emitted * (weight / n_bsdf);
         if contribution.is_finite() {

@@ -11,8 +11,8 @@
 //! - [`lights`]: area lights, point lights and the environment; every point light is
 //!   connected, one of the others picked uniformly; [`environment`]: the constant environment
 //!   and the environment map as one light.
-//! - [`mis`]: the balance and the power heuristic; [`nee`]: one light sample's contribution
-//!   and the point lights'.
+//! - [`mis`]: the balance and the power heuristic; [`nee`]: the light sample, its MIS-weighted
+//!   contribution, and the point and directional lights' shadow rays.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
 //! - [`path`]: the path loop; [`render_with`].
 //! - [`distribution_tracer`]: Cook's branching tracer with every effect, for comparison;

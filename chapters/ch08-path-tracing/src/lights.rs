@@ -149,6 +149,12 @@ impl<'a> SceneLights<'a> {
         self.count > 0
     }
 
+    /// Whether the scene has point lights or directional lights: deltas, which no ray can
+    /// hit and every bounce connects through a shadow ray of its own.
+    pub fn has_delta_lights(&self) -> bool {
+        !self.points.is_empty() || !self.directionals.is_empty()
+    }
+
     /// Whether the scene has area lights, which a ray may hit and must then count.
     #[inline]
     pub fn has_area_lights(&self) -> bool {

@@ -49,6 +49,17 @@ impl MisHeuristic {
             MisHeuristic::Power => power_heuristic(pdf_a, pdf_b),
         }
     }
+
+    /// The weight of light that a BSDF sample drawn with density `bsdf_pdf` found, which a
+    /// light sample would have drawn with density `light_pdf`: the heuristic's
+    /// `weight(bsdf_pdf, light_pdf)`, but 0 with [`MisHeuristic::None`], where the light sample
+    /// counts such light in full.
+    pub fn bsdf_sample_weight(self, bsdf_pdf: f32, light_pdf: f32) -> f32 {
+        match self {
+            MisHeuristic::None => 0.0,
+            mis => mis.weight(bsdf_pdf, light_pdf),
+        }
+    }
 }
 
 /// `p_a / (p_a + p_b)`, 0 when `p_a` is 0 (the sample could not have been drawn).

@@ -1,19 +1,23 @@
 //! Next-event estimation: at each bounce, a shadow ray to every point light (and every
 //! directional light) and one to one sampled light.
 //!
-//! The light sample estimates `∫ L_e f cos θ dω` by `L_e f cos θ / p_light`, weighted by MIS
-//! against the BSDF sample that could have found the same light. A point light is a delta:
-//! no BSDF sample can find it, so its weight is 1, and since there is nothing on it to
-//! sample, [`point_lights`] counts every one of them with certainty.
+//! The light sample ([`PathTracer::light_sample`]) estimates `∫ L_e f cos θ dω` by
+//! `L_e f cos θ / p_light`, weighted by MIS against the BSDF sample that could have found the
+//! same light ([`mis_weighted_contribution`]). A point light is a delta: no BSDF sample can
+//! find it, so its weight is 1, and since there is nothing on it to sample, [`point_lights`]
+//! counts every one of them with certainty.
 
 use crate::bsdf::Bsdf;
 use crate::lights::SceneLights;
 use crate::mis::MisHeuristic;
+use crate::path::PathTracer;
 use ch01_whitted::world::World;
 use common::render::SampleCounters;
+use common::sampler::Sampler;
+use common::scene::DirectSamples;
 use glam::Vec3;
 
-// ANCHOR: light_sample_contribution
+// ANCHOR: mis_weighted_contribution
 /// The contribution of one light sample, visibility aside, for the radiance `emitted` arriving
 /// along the sampled direction, `f_cos` (`f cos θ` there), the light's density `light_pdf`
 /// (per solid angle, the pick of the light included), and the density `bsdf_pdf` with which
@@ -23,7 +27,7 @@ use glam::Vec3;
 /// picked with probability `pick_probability`) cannot be found by the BSDF. Anything with no
 /// chance (a density of 0, or NaN), or carrying nothing, is 0, never NaN.
 #[inline]
-pub fn light_sample_contribution(
+pub fn mis_weighted_contribution(
     emitted: Vec3,
     f_cos: Vec3,
     light_pdf: f32,
@@ -41,7 +45,93 @@ pub fn light_sample_contribution(
     emitted * f_cos * (mis.weight(light_pdf, bsdf_pdf) / light_pdf)
     // END SOLUTION
 }
-// ANCHOR_END: light_sample_contribution
+// ANCHOR_END: mis_weighted_contribution
+
+impl PathTracer<'_> {
+    /// The light of every point light and every directional light at the surface of `bsdf`,
+    /// seen from `wo`, each through its own shadow ray at shutter time `time`
+    /// ([`point_lights`], [`directional_lights`]): deltas, with nothing to sample, so no number
+    /// is drawn.
+    pub fn delta_lights(
+        &self,
+        bsdf: &Bsdf,
+        wo: Vec3,
+        time: f32,
+        counters: &mut SampleCounters,
+    ) -> Vec3 {
+        let mut light = Vec3::ZERO;
+        if !self.lights.points.is_empty() {
+            light += point_lights(self.world, &self.lights, bsdf, wo, time, counters);
+        }
+        if !self.lights.directionals.is_empty() {
+            light += directional_lights(self.world, &self.lights, bsdf, wo, time, counters);
+        }
+        light
+    }
+
+    // ANCHOR: nee_light_sample
+    /// One light sample at the non-delta surface of `bsdf`, seen from `wo`: a light picked
+    /// uniformly among the area lights and the environment ([`SceneLights::pick`]), a
+    /// direction to it ([`SceneLights::sample`]), its MIS-weighted contribution
+    /// ([`mis_weighted_contribution`]), and the shadow ray at shutter time `time`, counted in
+    /// `counters.rays`.
+    ///
+    /// `counts` says how many light samples and BSDF samples the surface takes: the path
+    /// takes one of each ([`DirectSamples::ONE_EACH`]), Mitsuba's `direct` integrator may take
+    /// more ([`crate::direct`]). In Veach's multi-sample model each strategy's density enters
+    /// the heuristic multiplied by its count, and one of `n` samples counts for `1/n` of its
+    /// strategy's share.
+    ///
+    /// A scene pays only for what it has: with a single light to pick from, the pick draws no
+    /// number. What does the BSDF say about the sampled direction, for the term and for the
+    /// weight? When is a shadow ray worth tracing? It must not be blocked by the light it aims
+    /// at, which is itself a shape of the world.
+    pub fn light_sample<S: Sampler>(
+        &self,
+        bsdf: &Bsdf,
+        wo: Vec3,
+        time: f32,
+        counts: DirectSamples,
+        sampler: &mut S,
+        counters: &mut SampleCounters,
+    ) -> Vec3 {
+        // BEGIN SOLUTION
+        // With one light to pick from there is nothing to choose: no number is drawn.
+        let u_pick = if self.lights.count() > 1 {
+            sampler.get_1d()
+        } else {
+            0.0
+        };
+        let Some(light) = self.lights.pick(u_pick) else {
+            return Vec3::ZERO;
+        };
+        let Some(sample) = self.lights.sample(light, bsdf.hit, sampler.get_2d()) else {
+            return Vec3::ZERO;
+        };
+        // Each density times its count: the weight is the multi-sample heuristic's, and
+        // dividing by `n_light p_light` divides the estimate by the count as well.
+        let (n_light, n_bsdf) = (counts.emitter as f32, counts.bsdf as f32);
+        let contribution = mis_weighted_contribution(
+            sample.radiance,
+            bsdf.eval(wo, sample.wi),
+            n_light * sample.pdf,
+            n_bsdf * bsdf.pdf(wo, sample.wi),
+            self.lights.pick_probability(),
+            self.options.mis,
+        );
+        if contribution == Vec3::ZERO {
+            return Vec3::ZERO; // nothing to carry: no shadow ray
+        }
+        counters.rays += 1;
+        if self.world.occluded(&sample.shadow_ray(bsdf.hit, time)) {
+            Vec3::ZERO
+        } else {
+            contribution
+        }
+        // END SOLUTION
+    }
+    // ANCHOR_END: nee_light_sample
+}
 
 // ANCHOR: point_lights
 /// The light of every point light at the surface of `bsdf`, seen from `wo`: one shadow ray
@@ -63,7 +153,7 @@ pub fn point_lights<W: World>(
         let d2 = to_light.length_squared();
         let f_cos = bsdf.eval(wo, to_light / d2.sqrt());
         // A delta light: its density is infinite and only `I / d²` arrives.
-        let contribution = light_sample_contribution(
+        let contribution = mis_weighted_contribution(
             light.intensity / d2,
             f_cos,
             f32::INFINITY,
@@ -100,7 +190,7 @@ pub fn directional_lights<W: World>(
     let mut sum = Vec3::ZERO;
     for light in lights.directionals {
         let wi = -light.direction;
-        let contribution = light_sample_contribution(
+        let contribution = mis_weighted_contribution(
             light.irradiance,
             bsdf.eval(wo, wi),
             f32::INFINITY,
@@ -122,6 +212,19 @@ pub fn directional_lights<W: World>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::options::PathOptions;
+    use crate::path::tests::{sphere_light_scene, sphere_light_scene_blocked, with_path_tracer};
+    use ch05_motion_blur::MotionScene;
+    use ch06_fuzzy_reflections::FuzzMethod;
+    use ch07_soft_shadows::reference::sphere_irradiance;
+    use common::Ray;
+    use common::sampler::IndependentSampler;
+    use common::scene::Material as Smooth;
+    use glam::UVec2;
+    use std::f64::consts::PI as PI64;
+
+    /// One light sample and one BSDF sample at a surface, as the path takes them.
+    const ONE_EACH: DirectSamples = DirectSamples::ONE_EACH;
 
     #[test]
     fn exercise_light_sample_contribution_weights_and_divides() {
@@ -178,7 +281,7 @@ mod tests {
             ),
         ];
         for (light_pdf, bsdf_pdf, pick, mis, expected, why) in cases {
-            let c = light_sample_contribution(le, f, light_pdf, bsdf_pdf, pick, mis);
+            let c = mis_weighted_contribution(le, f, light_pdf, bsdf_pdf, pick, mis);
             if (c - expected).abs().max_element() < 1e-6 {
                 continue;
             }
@@ -210,7 +313,7 @@ mod tests {
                 why.to_string()
             };
             panic!(
-                "light_sample_contribution: {mistake}.\n  L = {le}, f cos = {f}, p_light = \
+                "mis_weighted_contribution: {mistake}.\n  L = {le}, f cos = {f}, p_light = \
                  {light_pdf}, p_bsdf = {bsdf_pdf}, pick {pick}, {mis:?}: yours gave {c}, \
                  expected {expected} ({why})"
             );
@@ -221,12 +324,301 @@ mod tests {
             (Vec3::ZERO, 0.0, 0.0, MisHeuristic::Balance),
             (le, f32::NAN, 1.0, MisHeuristic::Power),
         ] {
-            let c = light_sample_contribution(emitted, f, light_pdf, bsdf_pdf, 1.0, mis);
+            let c = mis_weighted_contribution(emitted, f, light_pdf, bsdf_pdf, 1.0, mis);
             assert!(
                 c == Vec3::ZERO,
-                "light_sample_contribution: a sample the light could not have drawn (density \
+                "mis_weighted_contribution: a sample the light could not have drawn (density \
                  {light_pdf}) or that carries nothing contributes 0, never NaN or infinity; \
                  L = {emitted}, p_bsdf = {bsdf_pdf} gave {c}"
+            );
+        }
+    }
+
+    // One light sample.
+
+    /// The mean and standard error (green channel) of `light_sample` with `counts` at the
+    /// floor's origin of `world`, seen from (2, 1, 0), over `n` sample streams; and the shadow
+    /// rays it traced.
+    fn light_samples_at_origin(
+        world: &MotionScene,
+        mis: MisHeuristic,
+        counts: DirectSamples,
+        n: u64,
+    ) -> (f64, f64, u64) {
+        let options = PathOptions {
+            mis,
+            ..PathOptions::with_depth(2)
+        };
+        with_path_tracer(world, options, |tracer| {
+            let eye = Vec3::new(2.0, 1.0, 0.0);
+            let ray = Ray::new(eye, -eye.normalize());
+            let hit = world.intersect(&ray).expect("the floor");
+            let bsdf = Bsdf {
+                material: &world.material_at(&hit),
+                hit: &hit,
+                fuzz: FuzzMethod::Lobe,
+                coatings: &crate::microfacet::coating::Coatings::default(),
+            };
+            let mut sampler = IndependentSampler::new(9);
+            let mut counters = SampleCounters::default();
+            let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+            for i in 0..n {
+                sampler.start_pixel_sample(UVec2::ZERO, i);
+                let l =
+                    tracer.light_sample(&bsdf, -ray.dir, 0.0, counts, &mut sampler, &mut counters);
+                assert!(
+                    l.is_finite() && l.cmpge(Vec3::ZERO).all(),
+                    "light_sample: a light sample gave {l}: never negative, NaN or infinite"
+                );
+                let x = f64::from(l.y);
+                (sum, sum2) = (sum + x, sum2 + x * x);
+            }
+            let mean = sum / n as f64;
+            let variance = (sum2 / n as f64 - mean * mean).max(0.0);
+            (mean, (variance / n as f64).sqrt(), counters.rays)
+        })
+    }
+
+    /// What a floor of albedo 0.5 at the origin reflects of the sphere light of
+    /// [`sphere_light_scene`]: 0.5 E / π.
+    fn floor_reference() -> f64 {
+        0.5 * f64::from(sphere_irradiance(Vec3::ONE, 0.5, 1.5, 1.0).y) / PI64
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_finds_the_light() {
+        // Without MIS the light sample alone finds the whole light.
+        let (world, _) = sphere_light_scene(2);
+        let reference = floor_reference();
+        let (mean, se, rays) = light_samples_at_origin(&world, MisHeuristic::None, ONE_EACH, 4000);
+        assert!(
+            rays <= 4000,
+            "light_sample: {rays} shadow rays for 4000 light samples: one each at most"
+        );
+        assert!(
+            (mean - reference).abs() < 5.0 * se + 1e-3 * reference,
+            "light_sample: with NEE and no MIS the light sample alone must find the sphere \
+             light's {reference:.5} at the floor; yours averaged {mean:.5} ± {se:.5}: {}",
+            if mean == 0.0 {
+                "no light arrived, although nothing stands between them: the shadow ray was \
+                 blocked by the light itself (it must stop short of the light it aims at)"
+            } else if se == 0.0 {
+                "every sample gave the same value, as if the sampled direction changed nothing: \
+                 f cos θ is the BSDF's for that direction, bsdf.eval(wo, wi) with the direction \
+                 towards the viewer first and the cosine the sampled direction's"
+            } else {
+                "the sample's term is L f cos θ / p_light (mis_weighted_contribution), with the \
+                 density the light was sampled with"
+            }
+        );
+    }
+
+    /// What the BSDF samples that go with light samples of `counts` find of the sphere light of
+    /// [`sphere_light_scene`] at the floor's origin, computed here on their own: all of them
+    /// together, as `direct` weighs and divides them (cosine-weighted directions, those that
+    /// hit the sphere weighted against the cone's density, each density times its count).
+    fn bsdf_share(mis: MisHeuristic, counts: DirectSamples) -> f64 {
+        let center = Vec3::new(0.0, 1.5, 0.0);
+        let s = 0.5f64 / 1.5;
+        let cone_pdf = (1.0 / (2.0 * PI64 * s * s / (1.0 + (1.0 - s * s).sqrt()))) as f32;
+        let (n_light, n_bsdf) = (counts.emitter as f32, counts.bsdf as f32);
+        if counts.bsdf == 0 {
+            return 0.0;
+        }
+        let directions = 200_000;
+        let mut share = 0.0f64;
+        let mut rng = IndependentSampler::new(17);
+        rng.start_pixel_sample(UVec2::ONE, 0);
+        for _ in 0..directions {
+            let local = ch02_monte_carlo::warps::sample_cosine_hemisphere(rng.get_2d());
+            let w = Vec3::new(local.x, local.z, local.y);
+            let b = w.dot(center);
+            let hits = b > 0.0 && b * b - (center.length_squared() - 0.25) > 0.0;
+            if hits {
+                // Albedo 0.5 times radiance 1, weighted.
+                let bsdf_pdf = w.y / std::f32::consts::PI;
+                share += 0.5 * f64::from(mis.weight(n_bsdf * bsdf_pdf, n_light * cone_pdf));
+            }
+        }
+        share / directions as f64
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_shares_the_light_with_the_bsdf_sample() {
+        let (world, _) = sphere_light_scene(2);
+        let reference = floor_reference();
+        for mis in [MisHeuristic::Power, MisHeuristic::Balance] {
+            let bsdf_share = bsdf_share(mis, ONE_EACH);
+            let (light_share, se) = {
+                let (mean, se, _) = light_samples_at_origin(&world, mis, ONE_EACH, 4000);
+                (mean, se)
+            };
+            let total = light_share + bsdf_share;
+            assert!(
+                (total - reference).abs() < 5.0 * se + 5e-3 * reference,
+                "light_sample: with the {mis:?} heuristic the light sample's share \
+                 ({light_share:.5} ± {se:.5}) and the BSDF sample's ({bsdf_share:.5}) must add \
+                 up to the light, {reference:.5}, but add up to {total:.5}: {}",
+                if se == 0.0 {
+                    "every light sample gave the same value, as if the sampled direction changed \
+                     nothing: f cos θ is the BSDF's for that direction, bsdf.eval(wo, wi) with \
+                     the direction towards the viewer first"
+                } else if total > reference {
+                    "too much: the weight of a light sample is the light's density against the \
+                     BSDF's density of the same direction, which the BSDF tells"
+                } else {
+                    "too little: the weight of a light sample is the light's density against \
+                     the BSDF's, not the other way round"
+                }
+            );
+        }
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_draws_only_what_it_needs() {
+        // One light to pick from: nothing to choose, so only the point on it is drawn.
+        let (world, _) = sphere_light_scene(2);
+        with_path_tracer(&world, PathOptions::with_depth(2), |tracer| {
+            let eye = Vec3::new(2.0, 1.0, 0.0);
+            let ray = Ray::new(eye, -eye.normalize());
+            let hit = world.intersect(&ray).expect("the floor");
+            let bsdf = Bsdf {
+                material: &world.material_at(&hit),
+                hit: &hit,
+                fuzz: FuzzMethod::Lobe,
+                coatings: &crate::microfacet::coating::Coatings::default(),
+            };
+            let tally = crate::dimensions::DimensionTally::default();
+            let mut sampler =
+                crate::dimensions::CountingSampler::new(IndependentSampler::new(3), &tally);
+            sampler.start_pixel_sample(UVec2::ZERO, 0);
+            let mut counters = SampleCounters::default();
+            tracer.light_sample(&bsdf, -ray.dir, 0.0, ONE_EACH, &mut sampler, &mut counters);
+            assert!(
+                sampler.drawn() == 2,
+                "light_sample: with a single light to pick from, one light sample drew {} \
+                 numbers; the pick needs no number then (a scene pays only for what it has), \
+                 and the point on the light needs two",
+                sampler.drawn()
+            );
+        });
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_picks_among_several_lights() {
+        // Two sphere lights of different size and radiance: the pick takes a number and each
+        // light is found with its own share.
+        use common::geometry::{Parallelogram, Shape, Sphere};
+        use common::scene::{Camera, CameraFrame, FilmSettings, SceneBuilder};
+        let floor =
+            Parallelogram::new(Vec3::new(-10.0, 0.0, -10.0), 20.0 * Vec3::Z, 20.0 * Vec3::X);
+        let lights = [
+            (Vec3::new(0.0, 1.5, 0.0), 0.5, 1.0),
+            (Vec3::new(1.2, 1.0, -0.8), 0.25, 3.0),
+        ];
+        let builder = SceneBuilder::new().shape(
+            Shape::Parallelogram(floor),
+            Smooth::diffuse(Vec3::splat(0.5)),
+        );
+        let scene = lights
+            .iter()
+            .fold(builder, |b, &(center, radius, radiance)| {
+                b.area_light(
+                    Shape::Sphere(Sphere::new(center, radius)),
+                    Smooth::diffuse(Vec3::ZERO),
+                    Vec3::splat(radiance),
+                )
+            })
+            .build(
+                Camera::pinhole(
+                    CameraFrame::look_at(Vec3::new(2.0, 1.0, 0.0), Vec3::ZERO, Vec3::Y).unwrap(),
+                    40.0,
+                ),
+                FilmSettings::new(16, 16),
+                2,
+            );
+        let world = MotionScene::still(scene);
+        let each = lights.map(|(center, radius, radiance)| {
+            let d = center.length();
+            0.5 * f64::from(sphere_irradiance(Vec3::splat(radiance), radius, d, center.y / d).y)
+                / PI64
+        });
+        let reference = each[0] + each[1];
+        let (mean, se, _) = light_samples_at_origin(&world, MisHeuristic::None, ONE_EACH, 8000);
+        let tolerance = 5.0 * se + 1e-3 * reference;
+        if (mean - reference).abs() >= tolerance {
+            let why = match each
+                .iter()
+                .position(|&share| (mean - 2.0 * share).abs() < tolerance)
+            {
+                Some(i) => format!(
+                    "that is twice light {}'s share and nothing of the other's: only one light \
+                     was ever picked (with several lights to pick from, the pick takes the \
+                     sampler's next number)",
+                    i + 1
+                ),
+                None => "each light is picked with its probability, and its sample's density \
+                         holds that probability"
+                    .to_string(),
+            };
+            panic!(
+                "light_sample: a floor under two sphere lights should get {reference:.5} (their \
+                 shares {:.5} and {:.5}) from the light samples alone; yours averaged \
+                 {mean:.5} ± {se:.5}: {why}",
+                each[0], each[1]
+            );
+        }
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_is_stopped_by_what_blocks_the_light() {
+        // A panel between the floor's origin and the light.
+        let (world, _) = sphere_light_scene_blocked(2);
+        let (mean, _, rays) = light_samples_at_origin(&world, MisHeuristic::Power, ONE_EACH, 500);
+        assert!(
+            mean == 0.0,
+            "light_sample: a panel stands between the floor and the light, yet light arrived \
+             through the blocker ({mean:.5} on average): a light sample counts only when its \
+             shadow ray reaches the light"
+        );
+        assert!(
+            rays > 0,
+            "light_sample: no shadow ray was counted: every shadow ray traced adds 1 to \
+             counters.rays"
+        );
+    }
+
+    #[test]
+    fn exercise_nee_light_sample_weighs_each_density_by_its_count() {
+        // Mitsuba's `direct` integrator takes several samples of each kind at a surface: a
+        // light sample is then one of `emitter` light samples, weighed against `bsdf` BSDF
+        // samples. All of them together must still find the light once.
+        let (world, _) = sphere_light_scene(2);
+        let reference = floor_reference();
+        let mis = MisHeuristic::Power;
+        let (alone, _, _) = light_samples_at_origin(&world, mis, ONE_EACH, 4000);
+        for (emitter, bsdf) in [(3, 0), (2, 1), (1, 3)] {
+            let counts = DirectSamples { emitter, bsdf };
+            let (mean, se, _) = light_samples_at_origin(&world, mis, counts, 4000);
+            let bsdf_share = bsdf_share(mis, counts);
+            let total = f64::from(emitter) * mean + bsdf_share;
+            if (total - reference).abs() < f64::from(emitter) * 5.0 * se + 5e-3 * reference {
+                continue;
+            }
+            let why = if mean == alone {
+                "each light sample was weighed as the only one beside a single BSDF sample: each \
+                 density enters the heuristic multiplied by its strategy's count (counts.emitter \
+                 and counts.bsdf), and dividing by the light's density so multiplied divides the \
+                 term by the count as well"
+            } else {
+                "each density enters the heuristic multiplied by its strategy's count, and \
+                 dividing by the light's density so multiplied divides the term by the count"
+            };
+            panic!(
+                "light_sample: with {emitter} light samples and {bsdf} BSDF samples at a surface, \
+                 the light samples' share ({emitter} x {mean:.5} ± {se:.5}) and the BSDF \
+                 samples' ({bsdf_share:.5}) must add up to the light, {reference:.5}, but add up \
+                 to {total:.5}: {why}"
             );
         }
     }
