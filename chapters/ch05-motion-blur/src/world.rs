@@ -15,6 +15,7 @@ use ch01_whitted::camera::PinholeCamera;
 use ch01_whitted::scene::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
+use common::render::count_ray;
 use common::scene::{CameraFrame, Scene};
 
 /// How many stretches of the shutter get their own BVH over the moving shapes by default.
@@ -121,6 +122,7 @@ impl World for MotionScene {
 
     #[inline]
     fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        count_ray();
         let still = self.scene.geometry.intersect(ray);
         if self.moving.is_empty() {
             return still;
@@ -132,6 +134,7 @@ impl World for MotionScene {
 
     #[inline]
     fn occluded(&self, ray: &Ray) -> bool {
+        count_ray();
         self.scene.geometry.occluded(ray) || (!self.moving.is_empty() && self.moving.occluded(ray))
     }
 }
