@@ -174,8 +174,8 @@ fn render_window(
         &settings,
         sampler,
         &common::film::PixelBoxFilter,
-        |p_film, _s: &mut GridSampler, counters| {
-            crate::tracer::trace(scene, &camera.generate_ray(p_film + offset), 1, counters)
+        |p_film, _s: &mut GridSampler| {
+            crate::tracer::trace(scene, &camera.generate_ray(p_film + offset), 1)
         },
     )
     .image

@@ -76,13 +76,8 @@ pub fn render_with<S: Sampler>(
     sampler: &S,
 ) -> RenderOutput {
     let camera = PinholeCamera::of(&scene.camera, settings.width, settings.height);
-    render::render(
-        settings,
-        sampler,
-        &PixelBoxFilter,
-        |p_film, _sampler, counters| {
-            tracer::trace(scene, &camera.generate_ray(p_film), 1, counters)
-        },
-    )
+    render::render(settings, sampler, &PixelBoxFilter, |p_film, _sampler| {
+        tracer::trace(scene, &camera.generate_ray(p_film), 1)
+    })
 }
 // ANCHOR_END: render_with

@@ -9,7 +9,6 @@
 use crate::world::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
-use common::render::SampleCounters;
 use glam::Vec3;
 
 // ANCHOR: trace
@@ -17,19 +16,17 @@ use glam::Vec3;
 /// ray is segment 1; a path has at most the scene's `max_depth` segments, as in Mitsuba). A ray
 /// that hits nothing brings back the scene's `environment`.
 ///
-/// Every ray it spawns leaves by `hit.spawn_ray` and keeps the ray's shutter `time`, and every
-/// ray traced is counted once in `counters.rays` (`direct_light` counts its own shadow rays).
-/// A textured matte surface's albedo at the hit is `scene.albedo(texture, hit.uv)`. A mirror
+/// Every ray it spawns leaves by `hit.spawn_ray` and keeps the ray's shutter `time`. A
+/// textured matte surface's albedo at the hit is `scene.albedo(texture, hit.uv)`. A mirror
 /// reflects on its front side only, the side `hit.n` points to. Chapter 06's materials
 /// (`Glossy`, `RoughGlass`) and chapter 08's (`Conductor`, `ThinDielectric`, `Plastic`, `Mask`,
 /// `TintedGlass`) reflect nothing here: the capability check refuses them or puts the
 /// lecture's stand-in in their place.
-pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCounters) -> Vec3 {
+pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32) -> Vec3 {
     // BEGIN SOLUTION
     use crate::optics::reflect;
     use common::scene::Material;
 
-    counters.rays += 1;
     let scene = world.scene();
     let Some(hit) = world.intersect(ray) else {
         return scene.environment;
@@ -40,26 +37,21 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
     }
     match scene.surface(hit.shape).material {
         Material::Diffuse { albedo, two_sided } => {
-            direct_light(world, ray, &hit, albedo, two_sided, counters)
+            direct_light(world, ray, &hit, albedo, two_sided)
         }
-        Material::TexturedDiffuse { texture, two_sided } => direct_light(
-            world,
-            ray,
-            &hit,
-            scene.albedo(texture, hit.uv),
-            two_sided,
-            counters,
-        ),
+        Material::TexturedDiffuse { texture, two_sided } => {
+            direct_light(world, ray, &hit, scene.albedo(texture, hit.uv), two_sided)
+        }
         Material::Mirror { reflectance } => {
             if !hit.front_face(ray.dir) {
                 return Vec3::ZERO; // mirrors reflect on their front side only, as in Mitsuba
             }
             let reflected = hit.spawn_ray(reflect(ray.dir, hit.n), ray.time);
-            reflectance * trace(world, &reflected, depth + 1, counters)
+            reflectance * trace(world, &reflected, depth + 1)
         }
         Material::Dielectric { int_ior, ext_ior } => {
             dielectric(ray, &hit, int_ior, ext_ior, &mut |next| {
-                trace(world, next, depth + 1, counters)
+                trace(world, next, depth + 1)
             })
         }
         // Chapters 06 and 08's materials; the capability check keeps them from this chapter
@@ -85,16 +77,15 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32, counters: &mut SampleCo
 /// arrived on; which side that is, the geometric normal says (`hit.front_face`). A light
 /// exactly at the lit point has no direction from it and lights nothing.
 ///
-/// Every shadow ray leaves by `hit.spawn_ray_to` at the ray's shutter `time`, is counted in
-/// `counters.rays`, and none is traced that could not change the answer. Public because the
-/// later chapters' tracers light their matte surfaces the same way.
+/// Every shadow ray leaves by `hit.spawn_ray_to` at the ray's shutter `time`, and none is traced
+/// that could not change the answer. Public because the later chapters' tracers light their
+/// matte surfaces the same way.
 pub fn direct_light<W: World>(
     world: &W,
     ray: &Ray,
     hit: &SurfaceHit,
     albedo: Vec3,
     two_sided: bool,
-    counters: &mut SampleCounters,
 ) -> Vec3 {
     // BEGIN SOLUTION
     use std::f32::consts::FRAC_1_PI;
@@ -115,7 +106,6 @@ pub fn direct_light<W: World>(
         if cos_theta.is_nan() || cos_theta <= 0.0 {
             continue; // behind the surface, or the light sits on it
         }
-        counters.rays += 1;
         if world.occluded(&hit.spawn_ray_to(light.position, ray.time)) {
             continue; // in shadow: hard-edged, since the light is a point
         }

@@ -6,6 +6,7 @@
 
 use common::Ray;
 use common::geometry::SurfaceHit;
+use common::render::count_ray;
 use common::scene::Scene;
 
 // ANCHOR: world
@@ -14,7 +15,9 @@ use common::scene::Scene;
 ///
 /// The scene answers from its still geometry. A later chapter adds what it needs behind the
 /// same two questions (chapter 05: objects that move with the ray's `time`) and reuses the
-/// tracer as it is. A hit's `shape` indexes the scene's `surfaces`.
+/// tracer as it is. A hit's `shape` indexes the scene's `surfaces`. Each answer is one ray
+/// cast, which the world counts for the render's statistics
+/// ([`count_ray`](common::render::count_ray)), so the tracers that ask need not.
 pub trait World: Sync {
     /// The surfaces, lights, environment and depth limit.
     fn scene(&self) -> &Scene;
@@ -34,11 +37,13 @@ impl World for Scene {
 
     #[inline]
     fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        count_ray();
         self.geometry.intersect(ray)
     }
 
     #[inline]
     fn occluded(&self, ray: &Ray) -> bool {
+        count_ray();
         self.geometry.occluded(ray)
     }
 }

@@ -7,7 +7,7 @@ use ch01_whitted::{PixelPattern, render};
 use common::Ray;
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
-use common::render::{RenderSettings, SampleCounters};
+use common::render::RenderSettings;
 use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, Scene, SceneBuilder};
 use glam::{Vec2, Vec3};
 
@@ -65,7 +65,7 @@ fn a_matte_floor_under_a_point_light_has_the_analytic_radiance() {
     // Trace straight at the origin and compare with albedo / pi * I cos(theta) / r^2.
     let origin = Vec3::new(0.0, 3.0, 3.0);
     let ray = Ray::new(origin, (-origin).normalize());
-    let radiance = trace(&scene, &ray, 1, &mut SampleCounters::default());
+    let radiance = trace(&scene, &ray, 1);
     let r2 = light.length_squared();
     let cos_theta = light.y / r2.sqrt();
     let expected = albedo / std::f32::consts::PI * intensity * cos_theta / r2;

@@ -129,8 +129,8 @@ fn render_window(
         &settings,
         &sampler,
         &common::film::PixelBoxFilter,
-        |p_film, _s: &mut PixelSampler, counters| {
-            ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film + offset), 1, counters)
+        |p_film, _s: &mut PixelSampler| {
+            ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film + offset), 1)
         },
     )
     .image

@@ -50,8 +50,8 @@ pub fn render_with<S: Sampler>(
     filter: &dyn Filter,
 ) -> RenderOutput {
     let camera = PinholeCamera::of(&scene.camera, settings.width, settings.height);
-    render::render(settings, sampler, filter, |p_film, _sampler, counters| {
-        ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film), 1, counters)
+    render::render(settings, sampler, filter, |p_film, _sampler| {
+        ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film), 1)
     })
 }
 // ANCHOR_END: render_with

@@ -218,9 +218,9 @@ fn render_window(
     let sampler =
         PixelSampler::new(PixelSamplerKind::Stratified, spp, 0).expect("a positive sample count");
     let filter = ReconstructionFilter::new(FilterKind::Box, None).expect("the box filter");
-    common::render::render(&settings, &sampler, &filter, |p_film, sampler, counters| {
+    common::render::render(&settings, &sampler, &filter, |p_film, sampler| {
         let ray = camera.generate_ray(p_film + offset, sampler);
-        ch01_whitted::tracer::trace(scene, &ray, 1, counters)
+        ch01_whitted::tracer::trace(scene, &ray, 1)
     })
     .image
 }

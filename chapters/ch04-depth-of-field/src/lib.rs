@@ -52,9 +52,9 @@ pub fn render_with<S: Sampler>(
 ) -> RenderOutput {
     let pinhole = PinholeCamera::of(&scene.camera, settings.width, settings.height);
     let camera = ThinLensCamera::new(pinhole, *lens);
-    render::render(settings, sampler, filter, |p_film, sampler, counters| {
+    render::render(settings, sampler, filter, |p_film, sampler| {
         let ray = camera.generate_ray(p_film, sampler);
-        tracer::trace(scene, &ray, 1, counters)
+        tracer::trace(scene, &ray, 1)
     })
 }
 // ANCHOR_END: render_with

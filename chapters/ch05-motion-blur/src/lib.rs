@@ -120,9 +120,9 @@ pub fn render_with<S: TimeSampler>(
     filter: &dyn Filter,
 ) -> RenderOutput {
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
-    render::render(settings, sampler, filter, |p_film, sampler, counters| {
+    render::render(settings, sampler, filter, |p_film, sampler| {
         let ray = camera_rays.generate(world, p_film, sampler);
-        tracer::trace(world, &ray, 1, counters)
+        tracer::trace(world, &ray, 1)
     })
 }
 // ANCHOR_END: render_with

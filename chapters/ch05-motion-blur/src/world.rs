@@ -15,6 +15,7 @@ use ch01_whitted::camera::PinholeCamera;
 use ch01_whitted::world::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
+use common::render::count_ray;
 use common::scene::{CameraFrame, Material, Scene};
 use glam::Vec3;
 use std::borrow::Cow;
@@ -134,6 +135,7 @@ impl World for MotionScene {
 
     #[inline]
     fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
+        count_ray();
         let still = self.scene.geometry.intersect(ray);
         if self.moving.is_empty() {
             return still;
@@ -145,6 +147,7 @@ impl World for MotionScene {
 
     #[inline]
     fn occluded(&self, ray: &Ray) -> bool {
+        count_ray();
         self.scene.geometry.occluded(ray) || (!self.moving.is_empty() && self.moving.occluded(ray))
     }
 }

@@ -212,7 +212,6 @@ fn the_rays_time_reaches_the_shadow_test() {
     use ch01_whitted::tracer::trace;
     use common::Ray;
     use common::geometry::Parallelogram;
-    use common::render::SampleCounters;
     use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder};
     // A floor lit from straight above; a sphere passes between during the first half of the
     // shutter only, out of the camera ray's way.
@@ -245,14 +244,7 @@ fn the_rays_time_reaches_the_shadow_test() {
         Vec3::new(0.0, 3.0, 3.0),
         Vec3::new(0.0, -3.0, -3.0).normalize(),
     );
-    let at = |time: f32| {
-        trace(
-            &world,
-            &ray.with_time(time),
-            1,
-            &mut SampleCounters::default(),
-        )
-    };
+    let at = |time: f32| trace(&world, &ray.with_time(time), 1);
     assert_eq!(at(0.25), Vec3::ZERO, "in the sphere's shadow at time 0.25");
     assert!(at(0.75).min_element() > 0.0, "lit at time 0.75");
 }

@@ -11,7 +11,6 @@ use crate::tracer::{TraceOptions, Tracer};
 use ch05_motion_blur::MotionScene;
 use common::Ray;
 use common::geometry::{Parallelogram, Shape};
-use common::render::SampleCounters;
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::{Camera, CameraFrame, FilmSettings, Material, SceneBuilder};
 use glam::{UVec2, Vec3};
@@ -70,8 +69,7 @@ pub fn mean_radiance(world: &MotionScene, options: TraceOptions, ray: &Ray, n: u
     let (mut sum, mut sum2) = (0.0f64, 0.0f64);
     for i in 0..n {
         sampler.start_pixel_sample(UVec2::ZERO, i);
-        let mut counters = SampleCounters::default();
-        let l = tracer.trace(ray, 1, &mut sampler, &mut counters);
+        let l = tracer.trace(ray, 1, &mut sampler);
         assert!(l.is_finite(), "radiance {l} along {ray:?}");
         let x = f64::from(l.y);
         sum += x;

@@ -11,7 +11,6 @@
 use crate::fuzz::FuzzMethod;
 use ch01_whitted::world::World;
 use common::geometry::SurfaceHit;
-use common::render::SampleCounters;
 use glam::Vec3;
 
 /// The lobe a surface scatters into: its ideal direction, its exponent, and the side of the
@@ -31,9 +30,9 @@ pub struct Lobe {
 // ANCHOR: highlights
 /// The radiance `lobe` scatters back along the incoming ray from every point light of the
 /// scene that `hit` sees, at the shutter `time`, on the lobe's side of the surface (the
-/// material's reflectance is applied by the caller). Every shadow ray traced is counted in
-/// `counters.rays`; a light the lobe cannot send light from needs none, and a smooth lobe
-/// (an infinite exponent, a mirror) shows no point light at all.
+/// material's reflectance is applied by the caller). A light the lobe cannot send light from
+/// needs no shadow ray, and a smooth lobe (an infinite exponent, a mirror) shows no point
+/// light at all.
 ///
 /// How much of a light's intensity arrives at the point, and what share of it does the lobe
 /// send back along the ray?
@@ -42,7 +41,6 @@ pub fn point_light_highlights<W: World>(
     hit: &SurfaceHit,
     lobe: &Lobe,
     time: f32,
-    counters: &mut SampleCounters,
 ) -> Vec3 {
     // BEGIN SOLUTION
     if !lobe.exponent.is_finite() {
@@ -62,7 +60,6 @@ pub fn point_light_highlights<W: World>(
         if density == 0.0 {
             continue; // outside the lobe: no shadow ray needed
         }
-        counters.rays += 1;
         if world.occluded(&hit.spawn_ray_to(light.position, time)) {
             continue;
         }

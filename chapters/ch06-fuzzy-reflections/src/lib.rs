@@ -63,9 +63,9 @@ pub fn render_with<L: Lighting, S: TimeSampler>(
         lighting,
         options,
     };
-    render::render(settings, sampler, filter, |p_film, sampler, counters| {
+    render::render(settings, sampler, filter, |p_film, sampler| {
         let ray = camera_rays.generate(world, p_film, sampler);
-        tracer.trace(&ray, 1, sampler, counters)
+        tracer.trace(&ray, 1, sampler)
     })
 }
 // ANCHOR_END: render_with

@@ -10,7 +10,6 @@ use ch01_whitted::tracer::direct_light;
 use ch01_whitted::world::World;
 use common::Ray;
 use common::geometry::SurfaceHit;
-use common::render::SampleCounters;
 use common::sampler::Sampler;
 use glam::Vec3;
 
@@ -30,7 +29,6 @@ pub trait Lighting: Sync {
         albedo: Vec3,
         two_sided: bool,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3;
 }
 
@@ -51,8 +49,7 @@ impl Lighting for PointLights {
         albedo: Vec3,
         two_sided: bool,
         _sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
-        direct_light(world, ray, hit, albedo, two_sided, counters)
+        direct_light(world, ray, hit, albedo, two_sided)
     }
 }

@@ -25,7 +25,6 @@ use ch01_whitted::world::World;
 use ch05_motion_blur::MotionScene;
 use common::Ray;
 use common::geometry::SurfaceHit;
-use common::render::SampleCounters;
 use common::sampler::Sampler;
 use common::scene::{Glossy, Material};
 use glam::Vec3;
@@ -67,14 +66,7 @@ impl<L: Lighting> Tracer<'_, L> {
     // ANCHOR: trace
     /// The radiance arriving along `ray`, segment number `depth` of its path (the camera ray
     /// is segment 1). Every ray it spawns keeps the ray's shutter `time`.
-    pub fn trace<S: Sampler>(
-        &self,
-        ray: &Ray,
-        depth: u32,
-        sampler: &mut S,
-        counters: &mut SampleCounters,
-    ) -> Vec3 {
-        counters.rays += 1;
+    pub fn trace<S: Sampler>(&self, ray: &Ray, depth: u32, sampler: &mut S) -> Vec3 {
         let world = self.world;
         let Some(hit) = world.intersect(ray) else {
             return world.scene.environment;
@@ -86,7 +78,7 @@ impl<L: Lighting> Tracer<'_, L> {
         let scattered = match world.scene.surface(hit.shape).material {
             Material::Diffuse { albedo, two_sided } => self
                 .lighting
-                .matte(world, ray, &hit, albedo, two_sided, sampler, counters),
+                .matte(world, ray, &hit, albedo, two_sided, sampler),
             Material::TexturedDiffuse { texture, two_sided } => self.lighting.matte(
                 world,
                 ray,
@@ -94,26 +86,18 @@ impl<L: Lighting> Tracer<'_, L> {
                 world.scene.albedo(texture, hit.uv),
                 two_sided,
                 sampler,
-                counters,
             ),
             Material::Mirror { reflectance } => {
                 if !hit.front_face(ray.dir) {
                     return emitted; // mirrors reflect on their front side only
                 }
                 let reflected = hit.spawn_ray(reflect(ray.dir, hit.n), ray.time);
-                reflectance * self.trace(&reflected, depth + 1, sampler, counters)
+                reflectance * self.trace(&reflected, depth + 1, sampler)
             }
-            Material::Dielectric { int_ior, ext_ior } => self.glass(
-                ray,
-                &hit,
-                int_ior,
-                ext_ior,
-                f32::INFINITY,
-                depth,
-                sampler,
-                counters,
-            ),
-            Material::Glossy(glossy) => self.glossy(ray, &hit, &glossy, depth, sampler, counters),
+            Material::Dielectric { int_ior, ext_ior } => {
+                self.glass(ray, &hit, int_ior, ext_ior, f32::INFINITY, depth, sampler)
+            }
+            Material::Glossy(glossy) => self.glossy(ray, &hit, &glossy, depth, sampler),
             Material::RoughGlass(glass) => self.glass(
                 ray,
                 &hit,
@@ -122,7 +106,6 @@ impl<L: Lighting> Tracer<'_, L> {
                 glass.exponent,
                 depth,
                 sampler,
-                counters,
             ),
             // Chapter 08's materials: the capability check refuses them or puts the lecture's
             // stand-in (a mirror or a lobe for a metal) in their place.
@@ -152,7 +135,6 @@ impl<L: Lighting> Tracer<'_, L> {
         glossy: &Glossy,
         depth: u32,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
         // BEGIN SOLUTION
         use crate::highlights::point_light_highlights;
@@ -169,8 +151,8 @@ impl<L: Lighting> Tracer<'_, L> {
             side: normal,
             method: self.options.fuzz,
         };
-        let highlights = point_light_highlights(self.world, hit, &lobe, ray.time, counters);
-        let spread = self.spread(ray, hit, &lobe, depth, sampler, counters);
+        let highlights = point_light_highlights(self.world, hit, &lobe, ray.time);
+        let spread = self.spread(ray, hit, &lobe, depth, sampler);
         glossy.reflectance * (highlights + spread)
         // END SOLUTION
     }
@@ -191,7 +173,6 @@ impl<L: Lighting> Tracer<'_, L> {
         lobe: &Lobe,
         depth: u32,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
         // BEGIN SOLUTION
         let direction = if lobe.exponent.is_finite() {
@@ -204,7 +185,7 @@ impl<L: Lighting> Tracer<'_, L> {
         match direction {
             Some(direction) => {
                 let next = hit.spawn_ray(direction, ray.time);
-                self.trace(&next, depth + 1, sampler, counters)
+                self.trace(&next, depth + 1, sampler)
             }
             None => Vec3::ZERO,
         }
@@ -235,7 +216,6 @@ impl<L: Lighting> Tracer<'_, L> {
         exponent: f32,
         depth: u32,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
         // BEGIN SOLUTION
         use crate::glass_choice::{choose_fresnel, choose_half};
@@ -264,20 +244,19 @@ impl<L: Lighting> Tracer<'_, L> {
             method,
         });
         // The light of one branch, highlights of the point lights included.
-        let branch = |lobe: &Lobe, sampler: &mut S, counters: &mut SampleCounters| {
-            point_light_highlights(self.world, hit, lobe, ray.time, counters)
-                + self.spread(ray, hit, lobe, depth, sampler, counters)
+        let branch = |lobe: &Lobe, sampler: &mut S| {
+            point_light_highlights(self.world, hit, lobe, ray.time)
+                + self.spread(ray, hit, lobe, depth, sampler)
         };
         match self.options.glass {
             GlassStrategy::Both => {
                 let mut radiance = Vec3::ZERO;
                 if reflectance > 0.0 {
-                    radiance += reflectance * branch(&reflection, sampler, counters);
+                    radiance += reflectance * branch(&reflection, sampler);
                 }
                 if let Some(refraction) = refraction.filter(|_| reflectance < 1.0) {
                     // Written as chapter 01 writes it, so a smooth scene rounds the same way.
-                    radiance +=
-                        (1.0 - reflectance) * eta * eta * branch(&refraction, sampler, counters);
+                    radiance += (1.0 - reflectance) * eta * eta * branch(&refraction, sampler);
                 }
                 radiance
             }
@@ -292,11 +271,11 @@ impl<L: Lighting> Tracer<'_, L> {
                     return Vec3::ZERO; // a branch that carries no light: nothing to trace
                 }
                 if choice.reflect {
-                    choice.weight * branch(&reflection, sampler, counters)
+                    choice.weight * branch(&reflection, sampler)
                 } else {
                     match refraction {
                         Some(refraction) => {
-                            choice.weight * eta * eta * branch(&refraction, sampler, counters)
+                            choice.weight * eta * eta * branch(&refraction, sampler)
                         }
                         None => Vec3::ZERO, // unreachable: no refraction means F = 1
                     }
@@ -332,6 +311,7 @@ mod tests {
     use crate::highlights::point_light_highlights;
     use ch01_whitted::optics::fresnel_dielectric;
     use common::geometry::{Parallelogram, Shape, Sphere};
+    use common::render::counting_rays;
     use common::sampler::IndependentSampler;
     use common::scene::{Camera, CameraFrame, FilmSettings, Material, PointLight, SceneBuilder};
     use glam::{Mat4, UVec2};
@@ -359,7 +339,6 @@ mod tests {
             _albedo: Vec3,
             _two_sided: bool,
             _sampler: &mut S,
-            _counters: &mut SampleCounters,
         ) -> Vec3 {
             Vec3::ZERO
         }
@@ -417,7 +396,7 @@ mod tests {
         let (mut sum, mut sum2, mut both) = (glam::DVec3::ZERO, glam::DVec3::ZERO, false);
         for i in 0..n {
             sampler.start_pixel_sample(UVec2::ZERO, i);
-            let l = tracer.trace(ray, 1, &mut sampler, &mut SampleCounters::default());
+            let l = tracer.trace(ray, 1, &mut sampler);
             both |= l.x > 0.0 && l.z > 0.0;
             sum += l.as_dvec3();
             sum2 += l.as_dvec3() * l.as_dvec3();
@@ -587,8 +566,8 @@ mod tests {
                     side: Vec3::Y,
                     method,
                 };
-                let mut counters = SampleCounters::default();
-                let got_rgb = point_light_highlights(&world, &hit, &lobe, time, &mut counters);
+                let (got_rgb, rays) =
+                    counting_rays(|| point_light_highlights(&world, &hit, &lobe, time));
                 let got = got_rgb.x;
                 // The lobe's density towards the light at `at` seen from `from`, and its term.
                 let density_from =
@@ -674,11 +653,10 @@ mod tests {
                     .filter(|&&at| at.y > 0.0 && density(at) > 0.0)
                     .count() as u64;
                 assert!(
-                    counters.rays == shadow_rays,
-                    "{at} counted {} ray(s), and {shadow_rays} shadow rays are needed: one per \
+                    rays == shadow_rays,
+                    "{at} traced {rays} ray(s), and {shadow_rays} shadow rays are needed: one per \
                      light above the surface that the lobe can reflect (none for a light \
-                     outside the lobe), each counted",
-                    counters.rays
+                     outside the lobe)"
                 );
             }
         }
@@ -703,8 +681,7 @@ mod tests {
         let term =
             |at: Vec3| FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared();
         let expected = term(above);
-        let got =
-            point_light_highlights(&world, &hit, &lobe, 0.2, &mut SampleCounters::default()).x;
+        let got = point_light_highlights(&world, &hit, &lobe, 0.2).x;
         assert!(
             (got - expected).abs() <= 1e-3 * expected,
             "point_light_highlights: a lobe around the grazing mirror direction {mirror}, a light \
@@ -732,14 +709,12 @@ mod tests {
             side: Vec3::Y,
             method: FuzzMethod::Lobe,
         };
-        let mut counters = SampleCounters::default();
-        let got = point_light_highlights(&world, &hit, &lobe, 0.2, &mut counters);
+        let (got, rays) = counting_rays(|| point_light_highlights(&world, &hit, &lobe, 0.2));
         assert!(
-            got == Vec3::ZERO && counters.rays == 0,
+            got == Vec3::ZERO && rays == 0,
             "point_light_highlights: a smooth lobe (an infinite exponent) is a mirror, which \
              shows no point light however well placed, and needs no shadow ray; yours gave \
-             {got} and counted {} ray(s)",
-            counters.rays
+             {got} and traced {rays} ray(s)"
         );
     }
 
@@ -870,14 +845,7 @@ mod tests {
         let (mut sum, mut sum2) = (0.0f64, 0.0f64);
         for i in 0..n {
             sampler.start_pixel_sample(UVec2::ZERO, i);
-            let l = tracer.spread(
-                ray,
-                &hit,
-                &lobe,
-                1,
-                &mut sampler,
-                &mut SampleCounters::default(),
-            );
+            let l = tracer.spread(ray, &hit, &lobe, 1, &mut sampler);
             let x = f64::from(l.element_sum());
             sum += x;
             sum2 += x * x;
@@ -1056,7 +1024,7 @@ mod tests {
         };
         sampler.start_pixel_sample(UVec2::ZERO, 0);
         let ray = towards_origin(45.0, true);
-        tracer.trace(&ray, 1, &mut sampler, &mut SampleCounters::default());
+        tracer.trace(&ray, 1, &mut sampler);
         assert!(
             sampler.drawn == 0,
             "glass, following both rays: smooth glass drew {} number(s) from the sampler; \

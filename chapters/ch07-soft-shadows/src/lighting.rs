@@ -25,7 +25,6 @@ use ch01_whitted::world::World;
 use ch06_fuzzy_reflections::Lighting;
 use common::Ray;
 use common::geometry::SurfaceHit;
-use common::render::SampleCounters;
 use common::sampler::Sampler;
 use glam::Vec3;
 
@@ -91,13 +90,12 @@ impl Lighting for AreaLighting<'_> {
         albedo: Vec3,
         two_sided: bool,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
         // BEGIN SOLUTION
         use crate::estimator::area_light_contribution;
         use ch01_whitted::tracer::direct_light;
         use glam::DVec3;
-        let point_lights = direct_light(world, ray, hit, albedo, two_sided, counters);
+        let point_lights = direct_light(world, ray, hit, albedo, two_sided);
         let normal = if hit.front_face(ray.dir) {
             hit.shading_n
         } else if two_sided {
@@ -132,7 +130,6 @@ impl Lighting for AreaLighting<'_> {
                     continue;
                 }
                 // Offset at both ends, it stops short of the light, which is in the world.
-                counters.rays += 1;
                 if !world.occluded(&sample.shadow_ray(hit, ray.time)) {
                     sum += term.as_dvec3();
                 }
@@ -152,6 +149,7 @@ mod tests {
     use crate::reference::{polygon_irradiance, sphere_irradiance};
     use ch05_motion_blur::MotionScene;
     use common::geometry::{Parallelogram, Shape, Sphere};
+    use common::render::counting_rays;
     use common::sampler::IndependentSampler;
     use common::scene::{Camera, CameraFrame, FilmSettings, Material, SceneBuilder};
     use glam::UVec2;
@@ -198,19 +196,13 @@ mod tests {
         let hit = world.intersect(&ray).expect("the ray reaches the floor");
         assert!((hit.p - RECEIVER).length() < 1e-5, "the receiver: {hit:?}");
         let mut sampler = IndependentSampler::new(7);
-        let mut counters = SampleCounters::default();
-        let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+        let (mut sum, mut sum2, mut shadow_rays) = (0.0f64, 0.0f64, 0);
         for i in 0..calls {
             sampler.start_pixel_sample(UVec2::ZERO, i);
-            let l = lighting.matte(
-                world,
-                &ray,
-                &hit,
-                Vec3::splat(ALBEDO),
-                false,
-                &mut sampler,
-                &mut counters,
-            );
+            let (l, rays) = counting_rays(|| {
+                lighting.matte(world, &ray, &hit, Vec3::splat(ALBEDO), false, &mut sampler)
+            });
+            shadow_rays += rays;
             assert!(
                 l.is_finite() && l.cmpge(Vec3::ZERO).all(),
                 "matte: a matte floor under one light reflected {l}: never negative, NaN or \
@@ -221,7 +213,7 @@ mod tests {
         }
         let mean = sum / calls as f64;
         let variance = (sum2 / calls as f64 - mean * mean).max(0.0);
-        (mean, (variance / calls as f64).sqrt(), counters.rays)
+        (mean, (variance / calls as f64).sqrt(), shadow_rays)
     }
 
     /// Panics with what `mean` shows against `reference`, trying the usual slips `slips`
@@ -412,7 +404,6 @@ mod tests {
         let ray = Ray::new(from_below, (Vec3::ZERO - from_below).normalize());
         let hit = world.intersect(&ray).expect("the ray reaches the floor");
         let mut sampler = IndependentSampler::new(3);
-        let mut counters = SampleCounters::default();
         for two_sided in [false, true] {
             let mut total = Vec3::ZERO;
             for i in 0..64 {
@@ -424,7 +415,6 @@ mod tests {
                     Vec3::splat(ALBEDO),
                     two_sided,
                     &mut sampler,
-                    &mut counters,
                 );
             }
             if two_sided {

@@ -25,7 +25,6 @@ use crate::bsdf::Bsdf;
 use crate::path::PathTracer;
 use ch01_whitted::world::World;
 use common::Ray;
-use common::render::SampleCounters;
 use common::sampler::Sampler;
 use common::scene::DirectSamples;
 use glam::Vec3;
@@ -39,11 +38,9 @@ impl PathTracer<'_> {
         camera_ray: &Ray,
         samples: DirectSamples,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
-        let ray = self.past_hidden_emitters(camera_ray, counters);
+        let ray = self.past_hidden_emitters(camera_ray);
         let shown = !self.options.hide_emitters;
-        counters.rays += 1;
         let Some(hit) = self.world.intersect(&ray) else {
             return if shown {
                 self.lights.environment.radiance(ray.dir)
@@ -72,16 +69,16 @@ impl PathTracer<'_> {
             if self.lights.has_delta_lights() {
                 // Mitsuba's count, `emitter_samples` times (see the module).
                 let mitsuba_count = counts.emitter as f32;
-                radiance += mitsuba_count * self.delta_lights(&bsdf, wo, ray.time, counters);
+                radiance += mitsuba_count * self.delta_lights(&bsdf, wo, ray.time);
             }
             if self.lights.can_be_hit() {
                 for _ in 0..counts.emitter {
-                    radiance += self.light_sample(&bsdf, wo, ray.time, counts, sampler, counters);
+                    radiance += self.light_sample(&bsdf, wo, ray.time, counts, sampler);
                 }
             }
         }
         for _ in 0..counts.bsdf {
-            radiance += self.counted_bsdf_sample(&bsdf, wo, ray.time, counts, sampler, counters);
+            radiance += self.counted_bsdf_sample(&bsdf, wo, ray.time, counts, sampler);
         }
         radiance
     }
@@ -96,12 +93,10 @@ impl PathTracer<'_> {
         time: f32,
         counts: DirectSamples,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
         let Some(sample) = bsdf.sample(wo, sampler) else {
             return Vec3::ZERO;
         };
-        counters.rays += 1;
         let (emitted, light_pdf) = match self.world.intersect(&bsdf.hit.spawn_ray(sample.wi, time))
         {
             Some(found) => match self.lights.area_light_of(found.shape) {

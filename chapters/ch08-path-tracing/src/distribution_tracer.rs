@@ -40,7 +40,7 @@ use ch06_fuzzy_reflections::{FuzzMethod, Lighting};
 use ch07_soft_shadows::{AreaLighting, AreaLights, LightOptions};
 use common::Ray;
 use common::film::Filter;
-use common::render::{self, RenderOutput, RenderSettings, SampleCounters};
+use common::render::{self, RenderOutput, RenderSettings};
 use common::sampler::Sampler;
 use common::scene::Material;
 use glam::Vec3;
@@ -122,13 +122,8 @@ impl<'a> DistributionTracer<'a> {
     }
 
     /// The radiance arriving along the camera ray `ray`.
-    pub fn radiance<S: Sampler>(
-        &self,
-        ray: &Ray,
-        sampler: &mut S,
-        counters: &mut SampleCounters,
-    ) -> Vec3 {
-        self.trace(ray, 1, true, sampler, counters)
+    pub fn radiance<S: Sampler>(&self, ray: &Ray, sampler: &mut S) -> Vec3 {
+        self.trace(ray, 1, true, sampler)
     }
 
     // ANCHOR: trace
@@ -140,9 +135,7 @@ impl<'a> DistributionTracer<'a> {
         depth: u32,
         count_emission: bool,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
-        counters.rays += 1;
         let world = self.world;
         let Some(hit) = world.intersect(ray) else {
             return world.background(ray.dir);
@@ -169,14 +162,14 @@ impl<'a> DistributionTracer<'a> {
             }
             radiance += self
                 .lighting
-                .matte(world, ray, &hit, albedo, two_sided, sampler, counters);
+                .matte(world, ray, &hit, albedo, two_sided, sampler);
             if self.options.indirect_diffuse {
-                radiance += self.branches(&bsdf, wo, ray.time, depth, k, false, sampler, counters);
+                radiance += self.branches(&bsdf, wo, ray.time, depth, k, false, sampler);
             }
         } else {
-            radiance += self.highlights(&bsdf, wo, ray.time, counters);
+            radiance += self.highlights(&bsdf, wo, ray.time);
             let k = if single_direction(&bsdf) { 1 } else { k };
-            radiance += self.branches(&bsdf, wo, ray.time, depth, k, true, sampler, counters);
+            radiance += self.branches(&bsdf, wo, ray.time, depth, k, true, sampler);
         }
         radiance
     }
@@ -195,7 +188,6 @@ impl<'a> DistributionTracer<'a> {
         k: u32,
         count_emission: bool,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
         let mut sum = Vec3::ZERO;
         for _ in 0..k {
@@ -203,7 +195,7 @@ impl<'a> DistributionTracer<'a> {
                 continue; // below the surface, or the back of a one-sided surface
             };
             let next = bsdf.hit.spawn_ray(sample.wi, time);
-            sum += sample.weight * self.trace(&next, depth + 1, count_emission, sampler, counters);
+            sum += sample.weight * self.trace(&next, depth + 1, count_emission, sampler);
         }
         sum / k as f32
     }
@@ -212,11 +204,11 @@ impl<'a> DistributionTracer<'a> {
     /// The point lights seen in a glossy or frosted surface: `f cos θ I / d²` through one
     /// shadow ray each (no random numbers), as the path tracer's next event counts them. A
     /// smooth surface has no highlight to show.
-    fn highlights(&self, bsdf: &Bsdf, wo: Vec3, time: f32, counters: &mut SampleCounters) -> Vec3 {
+    fn highlights(&self, bsdf: &Bsdf, wo: Vec3, time: f32) -> Vec3 {
         if bsdf.is_delta() {
             return Vec3::ZERO;
         }
-        point_lights(self.world, &self.lights, bsdf, wo, time, counters)
+        point_lights(self.world, &self.lights, bsdf, wo, time)
     }
 }
 
@@ -255,9 +247,9 @@ pub fn render_distribution<S: TimeSampler>(
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     let area_lights = AreaLights::of(&world.scene);
     let tracer = DistributionTracer::new(world, &area_lights, options);
-    render::render(settings, sampler, filter, |p_film, sampler, counters| {
+    render::render(settings, sampler, filter, |p_film, sampler| {
         let ray = camera_rays.generate(world, p_film, sampler);
-        tracer.radiance(&ray, sampler, counters)
+        tracer.radiance(&ray, sampler)
     })
 }
 // ANCHOR_END: render_distribution

@@ -105,12 +105,12 @@ pub fn render_with<S: TimeSampler>(
         // The rough plastics' coating tables, made before the threads start.
         coatings: Coatings::of(&world.scene),
     };
-    render::render(settings, sampler, filter, |p_film, sampler, counters| {
+    render::render(settings, sampler, filter, |p_film, sampler| {
         let ray = camera_rays.generate(world, p_film, sampler);
         match method.options.direct {
             // Mitsuba's `direct` with other sample counts than one of each (beyond the lecture).
-            Some(samples) => tracer.direct(&ray, samples, sampler, counters),
-            None => tracer.radiance(&ray, sampler, counters),
+            Some(samples) => tracer.direct(&ray, samples, sampler),
+            None => tracer.radiance(&ray, sampler),
         }
     })
 }

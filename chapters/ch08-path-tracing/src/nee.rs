@@ -12,7 +12,6 @@ use crate::lights::SceneLights;
 use crate::mis::MisHeuristic;
 use crate::path::PathTracer;
 use ch01_whitted::world::World;
-use common::render::SampleCounters;
 use common::sampler::Sampler;
 use common::scene::DirectSamples;
 use glam::Vec3;
@@ -52,19 +51,13 @@ impl PathTracer<'_> {
     /// seen from `wo`, each through its own shadow ray at shutter time `time`
     /// ([`point_lights`], [`directional_lights`]): deltas, with nothing to sample, so no number
     /// is drawn.
-    pub fn delta_lights(
-        &self,
-        bsdf: &Bsdf,
-        wo: Vec3,
-        time: f32,
-        counters: &mut SampleCounters,
-    ) -> Vec3 {
+    pub fn delta_lights(&self, bsdf: &Bsdf, wo: Vec3, time: f32) -> Vec3 {
         let mut light = Vec3::ZERO;
         if !self.lights.points.is_empty() {
-            light += point_lights(self.world, &self.lights, bsdf, wo, time, counters);
+            light += point_lights(self.world, &self.lights, bsdf, wo, time);
         }
         if !self.lights.directionals.is_empty() {
-            light += directional_lights(self.world, &self.lights, bsdf, wo, time, counters);
+            light += directional_lights(self.world, &self.lights, bsdf, wo, time);
         }
         light
     }
@@ -73,8 +66,7 @@ impl PathTracer<'_> {
     /// One light sample at the non-delta surface of `bsdf`, seen from `wo`: a light picked
     /// uniformly among the area lights and the environment ([`SceneLights::pick`]), a
     /// direction to it ([`SceneLights::sample`]), its MIS-weighted contribution
-    /// ([`mis_weighted_contribution`]), and the shadow ray at shutter time `time`, counted in
-    /// `counters.rays`.
+    /// ([`mis_weighted_contribution`]), and the shadow ray at shutter time `time`.
     ///
     /// `counts` says how many light samples and BSDF samples the surface takes: the path
     /// takes one of each ([`DirectSamples::ONE_EACH`]), Mitsuba's `direct` integrator may take
@@ -93,7 +85,6 @@ impl PathTracer<'_> {
         time: f32,
         counts: DirectSamples,
         sampler: &mut S,
-        counters: &mut SampleCounters,
     ) -> Vec3 {
         // BEGIN SOLUTION
         // With one light to pick from there is nothing to choose: no number is drawn.
@@ -122,7 +113,6 @@ impl PathTracer<'_> {
         if contribution == Vec3::ZERO {
             return Vec3::ZERO; // nothing to carry: no shadow ray
         }
-        counters.rays += 1;
         if self.world.occluded(&sample.shadow_ray(bsdf.hit, time)) {
             Vec3::ZERO
         } else {
@@ -145,7 +135,6 @@ pub fn point_lights<W: World>(
     bsdf: &Bsdf,
     wo: Vec3,
     time: f32,
-    counters: &mut SampleCounters,
 ) -> Vec3 {
     let mut sum = Vec3::ZERO;
     for light in lights.points {
@@ -165,7 +154,6 @@ pub fn point_lights<W: World>(
         if contribution == Vec3::ZERO || !contribution.is_finite() {
             continue; // behind the surface, or nowhere to come from: no shadow ray
         }
-        counters.rays += 1;
         if !world.occluded(&bsdf.hit.spawn_ray_to(light.position, time)) {
             sum += contribution;
         }
@@ -185,7 +173,6 @@ pub fn directional_lights<W: World>(
     bsdf: &Bsdf,
     wo: Vec3,
     time: f32,
-    counters: &mut SampleCounters,
 ) -> Vec3 {
     let mut sum = Vec3::ZERO;
     for light in lights.directionals {
@@ -201,7 +188,6 @@ pub fn directional_lights<W: World>(
         if contribution == Vec3::ZERO || !contribution.is_finite() {
             continue; // behind the surface: no shadow ray
         }
-        counters.rays += 1;
         if !world.occluded(&bsdf.hit.spawn_ray(wi, time)) {
             sum += contribution;
         }
@@ -218,6 +204,7 @@ mod tests {
     use ch06_fuzzy_reflections::FuzzMethod;
     use ch07_soft_shadows::reference::sphere_irradiance;
     use common::Ray;
+    use common::render::counting_rays;
     use common::sampler::IndependentSampler;
     use common::scene::Material as Smooth;
     use glam::UVec2;
@@ -360,12 +347,13 @@ mod tests {
                 coatings: &crate::microfacet::coating::Coatings::default(),
             };
             let mut sampler = IndependentSampler::new(9);
-            let mut counters = SampleCounters::default();
-            let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+            let (mut sum, mut sum2, mut shadow_rays) = (0.0f64, 0.0f64, 0);
             for i in 0..n {
                 sampler.start_pixel_sample(UVec2::ZERO, i);
-                let l =
-                    tracer.light_sample(&bsdf, -ray.dir, 0.0, counts, &mut sampler, &mut counters);
+                let (l, rays) = counting_rays(|| {
+                    tracer.light_sample(&bsdf, -ray.dir, 0.0, counts, &mut sampler)
+                });
+                shadow_rays += rays;
                 assert!(
                     l.is_finite() && l.cmpge(Vec3::ZERO).all(),
                     "light_sample: a light sample gave {l}: never negative, NaN or infinite"
@@ -375,7 +363,7 @@ mod tests {
             }
             let mean = sum / n as f64;
             let variance = (sum2 / n as f64 - mean * mean).max(0.0);
-            (mean, (variance / n as f64).sqrt(), counters.rays)
+            (mean, (variance / n as f64).sqrt(), shadow_rays)
         })
     }
 
@@ -492,8 +480,7 @@ mod tests {
             let mut sampler =
                 crate::dimensions::CountingSampler::new(IndependentSampler::new(3), &tally);
             sampler.start_pixel_sample(UVec2::ZERO, 0);
-            let mut counters = SampleCounters::default();
-            tracer.light_sample(&bsdf, -ray.dir, 0.0, ONE_EACH, &mut sampler, &mut counters);
+            tracer.light_sample(&bsdf, -ray.dir, 0.0, ONE_EACH, &mut sampler);
             assert!(
                 sampler.drawn() == 2,
                 "light_sample: with a single light to pick from, one light sample drew {} \
@@ -583,8 +570,8 @@ mod tests {
         );
         assert!(
             rays > 0,
-            "light_sample: no shadow ray was counted: every shadow ray traced adds 1 to \
-             counters.rays"
+            "light_sample: no shadow ray was traced, though the light sample carries light to \
+             the floor when nothing blocks it"
         );
     }
 

@@ -36,7 +36,6 @@ use ch01_whitted::world::World;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
 use common::Ray;
-use common::render::SampleCounters;
 use common::sampler::Sampler;
 use glam::Vec3;
 
@@ -73,16 +72,11 @@ impl PathTracer<'_> {
     /// the radiance? The options say whether light is sampled at all (`nee`), how the two share
     /// a light (`mis`), and whether the camera hides what glows (`hide_emitters`,
     /// [`past_hidden_emitters`](Self::past_hidden_emitters)).
-    pub fn radiance<S: Sampler>(
-        &self,
-        camera_ray: &Ray,
-        sampler: &mut S,
-        counters: &mut SampleCounters,
-    ) -> Vec3 {
+    pub fn radiance<S: Sampler>(&self, camera_ray: &Ray, sampler: &mut S) -> Vec3 {
         // BEGIN SOLUTION
         use crate::roulette::russian_roulette;
         use common::scene::DirectSamples;
-        let mut ray = self.past_hidden_emitters(camera_ray, counters);
+        let mut ray = self.past_hidden_emitters(camera_ray);
         let mut radiance = Vec3::ZERO;
         // What the path carries, and the radiance scalings (eta_i / eta_t)² inside it.
         let (mut throughput, mut eta_scale) = (Vec3::ONE, 1.0);
@@ -98,7 +92,6 @@ impl PathTracer<'_> {
             let shown = depth > 1 || !self.options.hide_emitters;
 
             // 1. Find the surface; a ray that leaves the scene finds the environment.
-            counters.rays += 1;
             let Some(hit) = self.world.intersect(&ray) else {
                 if shown && self.lights.has_environment() {
                     let weight = if weighed {
@@ -148,11 +141,11 @@ impl PathTracer<'_> {
             if self.options.nee && !bsdf.is_delta() {
                 let mut direct = Vec3::ZERO;
                 if self.lights.has_delta_lights() {
-                    direct += self.delta_lights(&bsdf, wo, ray.time, counters);
+                    direct += self.delta_lights(&bsdf, wo, ray.time);
                 }
                 if self.lights.can_be_hit() {
                     let one_each = DirectSamples::ONE_EACH;
-                    direct += self.light_sample(&bsdf, wo, ray.time, one_each, sampler, counters);
+                    direct += self.light_sample(&bsdf, wo, ray.time, one_each, sampler);
                 }
                 radiance += throughput * direct;
             }
@@ -192,13 +185,9 @@ impl PathTracer<'_> {
     /// They still block shadow rays and later segments, and still light the scene. Without
     /// `hide_emitters`, the ray itself. Draws no random number, so every other pixel keeps
     /// its samples.
-    pub(crate) fn past_hidden_emitters(
-        &self,
-        camera_ray: &Ray,
-        counters: &mut SampleCounters,
-    ) -> Ray {
+    pub(crate) fn past_hidden_emitters(&self, camera_ray: &Ray) -> Ray {
         if self.options.hide_emitters && self.lights.has_area_lights() {
-            self.through_emitters(camera_ray, counters)
+            self.through_emitters(camera_ray)
         } else {
             *camera_ray
         }
@@ -206,13 +195,12 @@ impl PathTracer<'_> {
 
     /// The camera ray continued through every emitting shape it meets, for
     /// [`past_hidden_emitters`](Self::past_hidden_emitters).
-    fn through_emitters(&self, camera_ray: &Ray, counters: &mut SampleCounters) -> Ray {
+    fn through_emitters(&self, camera_ray: &Ray) -> Ray {
         /// More emitting surfaces in a row than any scene stacks; a hostile one that does
         /// shows the last as a black surface instead of looping on.
         const MOST_SKIPPED: usize = 1024;
         let mut ray = *camera_ray;
         for _ in 0..MOST_SKIPPED {
-            counters.rays += 1;
             match self.world.intersect(&ray) {
                 Some(hit) if self.lights.area_light_of(hit.shape).is_some() => {
                     ray = hit.spawn_ray(ray.dir, ray.time);
@@ -496,11 +484,10 @@ pub(crate) mod tests {
     /// `n` paths with sample streams `0..n` of seed `seed`. Panics on a non-finite path.
     fn mean_radiance(tracer: &PathTracer, ray: &Ray, n: u64, seed: u64) -> (f64, f64) {
         let mut sampler = IndependentSampler::new(seed);
-        let mut counters = SampleCounters::default();
         let (mut sum, mut sum2) = (0.0f64, 0.0f64);
         for i in 0..n {
             sampler.start_pixel_sample(UVec2::ZERO, i);
-            let l = tracer.radiance(ray, &mut sampler, &mut counters);
+            let l = tracer.radiance(ray, &mut sampler);
             assert!(
                 l.is_finite() && l.cmpge(Vec3::ZERO).all(),
                 "radiance: a path brought back {l}: radiance is never negative, NaN or infinite"
@@ -823,13 +810,7 @@ pub(crate) mod tests {
             ..PathOptions::with_depth(8)
         };
         with_tracer(Smooth::glass(1.5), played, |tracer| {
-            let l = tracer
-                .radiance(
-                    &to_sphere,
-                    &mut Constant(0.6),
-                    &mut SampleCounters::default(),
-                )
-                .y;
+            let l = tracer.radiance(&to_sphere, &mut Constant(0.6)).y;
             if (l - expected).abs() > 1e-4 {
                 let why = if l == 0.0 {
                     "the path ended at its first bounce, where the roulette saw 0.44: it looks at \
@@ -857,13 +838,7 @@ pub(crate) mod tests {
             ..PathOptions::with_depth(8)
         };
         with_tracer(Smooth::glass(1.5), off, |tracer| {
-            let l = tracer
-                .radiance(
-                    &to_sphere,
-                    &mut Constant(0.6),
-                    &mut SampleCounters::default(),
-                )
-                .y;
+            let l = tracer.radiance(&to_sphere, &mut Constant(0.6)).y;
             assert!(
                 (l - 1.0).abs() < 1e-4,
                 "radiance: without roulette (rr_depth None) the same path through a glass sphere \

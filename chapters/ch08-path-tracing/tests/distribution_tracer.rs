@@ -17,7 +17,7 @@ use ch08_path_tracing::{
     DistributionOptions, DistributionTracer, Method, PathOptions, render_distribution,
 };
 use common::Ray;
-use common::render::{RenderSettings, SampleCounters};
+use common::render::RenderSettings;
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2, Vec3};
 
@@ -27,7 +27,7 @@ fn estimate(
     pixels: &[Vec2],
     n: u64,
     seed: u64,
-    radiance: impl Fn(&Ray, &mut IndependentSampler, &mut SampleCounters) -> Vec3,
+    radiance: impl Fn(&Ray, &mut IndependentSampler) -> Vec3,
 ) -> (f64, f64) {
     let world = scene;
     let film = world.scene.film;
@@ -38,7 +38,7 @@ fn estimate(
         for i in 0..n {
             sampler.start_pixel_sample(UVec2::new(p as u32, 0), i);
             let ray = rays.generate(world, p_film, &mut sampler);
-            let l = radiance(&ray, &mut sampler, &mut SampleCounters::default());
+            let l = radiance(&ray, &mut sampler);
             assert!(l.is_finite(), "radiance {l} at {p_film}");
             let x = f64::from(l.y);
             sum += x;
@@ -71,17 +71,17 @@ fn assert_agree(what: &str, a: (f64, f64), b: (f64, f64)) {
 fn distribution(
     scene: &MotionScene,
     options: DistributionOptions,
-) -> impl Fn(&Ray, &mut IndependentSampler, &mut SampleCounters) -> Vec3 {
+) -> impl Fn(&Ray, &mut IndependentSampler) -> Vec3 {
     // Leaked: the tracer borrows the lights, and the closure outlives this function.
     let area_lights = Box::leak(Box::new(AreaLights::of(&scene.scene)));
     let tracer = DistributionTracer::new(scene, area_lights, options);
-    move |ray, sampler, counters| tracer.radiance(ray, sampler, counters)
+    move |ray, sampler| tracer.radiance(ray, sampler)
 }
 
 fn path(
     scene: &MotionScene,
     options: PathOptions,
-) -> impl Fn(&Ray, &mut IndependentSampler, &mut SampleCounters) -> Vec3 {
+) -> impl Fn(&Ray, &mut IndependentSampler) -> Vec3 {
     let method = Method::new(options);
     let area_lights = Box::leak(Box::new(AreaLights::of(&scene.scene)));
     let tracer = ch08_path_tracing::PathTracer {
@@ -91,7 +91,7 @@ fn path(
         fuzz: method.fuzz,
         coatings: ch08_path_tracing::microfacet::coating::Coatings::of(&scene.scene),
     };
-    move |ray, sampler, counters| tracer.radiance(ray, sampler, counters)
+    move |ray, sampler| tracer.radiance(ray, sampler)
 }
 
 #[test]
@@ -123,8 +123,8 @@ fn one_sample_per_effect_is_chapter_07s_tracer() {
             1,
             distribution(scene, DistributionOptions::cook(depth)),
         );
-        let theirs = estimate(scene, &pixels, n, 2, |ray, sampler, counters| {
-            chapter_07.trace(ray, 1, sampler, counters)
+        let theirs = estimate(scene, &pixels, n, 2, |ray, sampler| {
+            chapter_07.trace(ray, 1, sampler)
         });
         assert_agree(&format!("{name}, depth {depth}"), ours, theirs);
     }

@@ -4,6 +4,11 @@
 //! the loop does the rest: it splits the image into tiles, renders them on a rayon pool, starts
 //! each sample's [`Sampler`] stream, adds the result to the [`Film`] and counts rays.
 //!
+//! Rays are counted where they are cast: a world calls [`count_ray`] once for every query it
+//! answers (a nearest hit or a shadow test), on the thread that casts it, and the loop reads
+//! that count around each sample ([`counting_rays`]). pbrt-v4 counts its rays the same way,
+//! with a statistics counter outside the integrator's arguments, so the tracers pass none.
+//!
 //! The work is done in passes of growing sample counts. Each pass is merged into the film
 //! tile by tile in a fixed order, so the image depends only on the seed and the pass schedule,
 //! never on the number of threads. A `--time` budget simply keeps adding passes until the time
@@ -23,6 +28,7 @@ use crate::film::{Film, FilmTile, Filter, PixelRect};
 use crate::image::Image;
 use crate::sampler::Sampler;
 use glam::{UVec2, Vec2, Vec3};
+use std::cell::Cell;
 use std::time::Instant;
 
 /// What a render needs besides the scene.
@@ -56,11 +62,26 @@ impl RenderSettings {
     }
 }
 
-/// Counters a radiance function updates while it traces one sample.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct SampleCounters {
-    /// Rays cast: camera rays, secondary rays and shadow rays.
-    pub rays: u64,
+thread_local! {
+    /// Rays cast on this thread so far: camera rays, secondary rays and shadow rays.
+    static RAYS_CAST: Cell<u64> = const { Cell::new(0) };
+}
+
+/// Counts one ray cast on this thread. A world calls it once per query it answers, so that
+/// every ray of a render is counted once, however the tracer reached it.
+#[inline]
+pub fn count_ray() {
+    RAYS_CAST.set(RAYS_CAST.get() + 1);
+}
+
+/// What `cast` returns, and the rays it cast on this thread ([`count_ray`]). A count inside
+/// `cast` keeps its rays to itself: a thread that waits for the pool in the middle of a sample
+/// may render another tile meanwhile, and that tile's rays are its own.
+pub fn counting_rays<T>(cast: impl FnOnce() -> T) -> (T, u64) {
+    let outer = RAYS_CAST.replace(0);
+    let out = cast();
+    let rays = RAYS_CAST.replace(outer);
+    (out, rays)
 }
 
 /// A finished render, or the completed passes of an interrupted one
@@ -79,7 +100,7 @@ const TILE_SIZE: u32 = 16;
 
 /// Renders an image.
 ///
-/// `radiance(p_film, sampler, counters)` returns the radiance arriving through the continuous
+/// `radiance(p_film, sampler)` returns the radiance arriving through the continuous
 /// film position `p_film` (in pixels, `y` down). The sampler has already handed out the
 /// pixel dimension used for `p_film`; the function draws its own dimensions after it, in the
 /// fixed order time, lens, then per bounce.
@@ -92,7 +113,7 @@ pub fn render<S, F>(
 ) -> RenderOutput
 where
     S: Sampler,
-    F: Fn(Vec2, &mut S, &mut SampleCounters) -> Vec3 + Sync,
+    F: Fn(Vec2, &mut S) -> Vec3 + Sync,
 {
     let start = Instant::now();
     let mut film = Film::new(settings.width, settings.height);
@@ -173,7 +194,7 @@ fn render_tile<S, F>(
 ) -> Option<(FilmTile, stats::Totals)>
 where
     S: Sampler,
-    F: Fn(Vec2, &mut S, &mut SampleCounters) -> Vec3 + Sync,
+    F: Fn(Vec2, &mut S) -> Vec3 + Sync,
 {
     let mut tile = film.tile(rect, filter);
     let mut sampler = sampler.clone();
@@ -185,9 +206,8 @@ where
         for index in samples.clone() {
             sampler.start_pixel_sample(pixel, index);
             let p_film = pixel.as_vec2() + sampler.get_pixel_2d();
-            let mut counters = SampleCounters::default();
-            let l = radiance(p_film, &mut sampler, &mut counters);
-            totals.rays += counters.rays;
+            let (l, rays) = counting_rays(|| radiance(p_film, &mut sampler));
+            totals.rays += rays;
             totals.samples += 1;
             if l.is_finite() {
                 tile.add_sample(p_film, l, filter);
@@ -222,8 +242,8 @@ mod tests {
     use crate::sampler::IndependentSampler;
 
     /// A "scene" whose radiance is a noisy function of the film position.
-    fn noisy(p: Vec2, s: &mut IndependentSampler, c: &mut SampleCounters) -> Vec3 {
-        c.rays += 1;
+    fn noisy(p: Vec2, s: &mut IndependentSampler) -> Vec3 {
+        count_ray();
         Vec3::new(p.x.sin(), s.get_1d(), (p.y * 0.1).cos() * s.get_1d())
     }
 
@@ -257,7 +277,7 @@ mod tests {
             &settings,
             &IndependentSampler::new(1),
             &PixelBoxFilter,
-            |p, _: &mut IndependentSampler, _: &mut SampleCounters| {
+            |p, _: &mut IndependentSampler| {
                 if p.x < 1.0 { Vec3::NAN } else { Vec3::ONE }
             },
         );
@@ -300,11 +320,11 @@ mod tests {
             &settings,
             &IndependentSampler::new(7),
             &PixelBoxFilter,
-            |p, s: &mut IndependentSampler, c: &mut SampleCounters| {
+            |p, s: &mut IndependentSampler| {
                 if calls.fetch_add(1, Ordering::Relaxed) == 4 * pixels + pixels / 2 {
                     stop.request();
                 }
-                noisy(p, s, c)
+                noisy(p, s)
             },
         );
         assert!(out.stats.interrupted);

@@ -233,7 +233,7 @@ fn check(kind: PixelSamplerKind, spp: u64, filter: ReconstructionFilter) {
     let size = UVec2::new(12, 9);
     let sampler = PixelSampler::new(kind, spp, 7).unwrap();
     let settings = RenderSettings::new(size.x, size.y, spp);
-    let expected = render::render(&settings, &sampler, &filter, |p, s, _| radiance(p, s)).image;
+    let expected = render::render(&settings, &sampler, &filter, radiance).image;
     let mut mine = Image::new(size.x, size.y);
     let mut first_wrong = None;
     let calls = Arc::new(Mutex::new(Vec::new()));

@@ -11,7 +11,7 @@ use common::Ray;
 use common::film::PixelBoxFilter;
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
-use common::render::{RenderOutput, RenderSettings, SampleCounters};
+use common::render::{RenderOutput, RenderSettings};
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::FilmSettings;
 use glam::{UVec2, Vec3};
@@ -66,11 +66,10 @@ pub fn mean_radiance(
         options: TraceOptions::default(),
     };
     let mut sampler = IndependentSampler::new(seed);
-    let mut counters = SampleCounters::default();
     let values: Vec<f64> = (0..n)
         .map(|i| {
             sampler.start_pixel_sample(UVec2::new(1, 2), i);
-            let value = tracer.trace(ray, 1, &mut sampler, &mut counters).y as f64;
+            let value = tracer.trace(ray, 1, &mut sampler).y as f64;
             assert!(value.is_finite(), "sample {i}: {value}");
             value
         })

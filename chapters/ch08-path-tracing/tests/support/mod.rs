@@ -9,7 +9,7 @@ use ch05_motion_blur::CameraRays;
 use ch05_motion_blur::MotionScene;
 use ch07_soft_shadows::AreaLights;
 use ch08_path_tracing::{Method, PathOptions, PathTracer, SceneLights, render_with};
-use common::render::{RenderOutput, RenderSettings, SampleCounters};
+use common::render::{RenderOutput, RenderSettings};
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 use std::path::Path;
@@ -83,10 +83,9 @@ pub fn estimate(
         for i in 0..n {
             sampler.start_pixel_sample(UVec2::new(p as u32, 0), i);
             let ray = rays.generate(world, p_film, &mut sampler);
-            let mut counters = SampleCounters::default();
             let l = match method.options.direct {
-                Some(samples) => tracer.direct(&ray, samples, &mut sampler, &mut counters),
-                None => tracer.radiance(&ray, &mut sampler, &mut counters),
+                Some(samples) => tracer.direct(&ray, samples, &mut sampler),
+                None => tracer.radiance(&ray, &mut sampler),
             };
             assert!(l.is_finite(), "radiance {l} at {p_film}");
             let x = f64::from(l.y);

@@ -272,6 +272,7 @@ fn goes_somewhere(ray: &Ray) -> bool {
 }
 
 impl WideRay {
+    #[inline]
     fn new(ray: &Ray) -> Self {
         let inv_dir = ray.dir.recip();
         let (near, far) = slab_sides(inv_dir.to_array().map(|d| d < 0.0));

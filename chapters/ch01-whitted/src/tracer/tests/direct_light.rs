@@ -5,7 +5,6 @@ use std::f32::consts::PI;
 
 use common::Ray;
 use common::geometry::{Parallelogram, Shape, Sphere, SurfaceHit};
-use common::render::SampleCounters;
 use common::scene::{Material, PointLight, SceneBuilder};
 use glam::{Vec2, Vec3};
 
@@ -44,18 +43,16 @@ fn floor_world(lights: &[Vec3], blockers: &[(Vec3, f32)], two_sided: bool) -> Re
     Recording::new(build(builder, EYE, TARGET, (8, 8), 5))
 }
 
-/// What `direct_light` answers for the ray from `from` to [`TARGET`], the hit it lit, and how
-/// many rays it counted.
-fn light_floor(world: &Recording, from: Vec3, two_sided: bool) -> (Vec3, SurfaceHit, u64) {
+/// What `direct_light` answers for the ray from `from` to [`TARGET`], and the hit it lit.
+fn light_floor(world: &Recording, from: Vec3, two_sided: bool) -> (Vec3, SurfaceHit) {
     let ray = Ray::new(from, (TARGET - from).normalize()).with_time(TIME);
     let hit = world
         .scene
         .geometry
         .intersect(&ray)
         .expect("the ray sees the floor");
-    let mut counters = SampleCounters::default();
-    let radiance = direct_light(world, &ray, &hit, ALBEDO, two_sided, &mut counters);
-    (radiance, hit, counters.rays)
+    let radiance = direct_light(world, &ray, &hit, ALBEDO, two_sided);
+    (radiance, hit)
 }
 
 /// What a light at `light` with normal `normal` gives at `p`, as the lecture has it.
@@ -169,9 +166,9 @@ const BEHIND: &str = "a light behind the surface (cos(theta) <= 0) cannot light 
                       no shadow ray";
 
 /// The rays `direct_light` asked about (`asked`), checked: shadow rays only, each going
-/// somewhere, at the arriving ray's time, counted once in `counted` (what it added to
-/// `counters.rays`), and `needed` of them; `why_none` says why the others need none.
-fn check_shadow_rays(asked: &[Asked], counted: u64, needed: usize, case: &str, why_none: &str) {
+/// somewhere, at the arriving ray's time, and `needed` of them; `why_none` says why the others
+/// need none.
+fn check_shadow_rays(asked: &[Asked], needed: usize, case: &str, why_none: &str) {
     let shadow: Vec<_> = asked.iter().filter(|a| a.shadow).collect();
     if let Some(nowhere) = ray_to_nowhere(asked) {
         panic!(
@@ -194,13 +191,6 @@ fn check_shadow_rays(asked: &[Asked], counted: u64, needed: usize, case: &str, w
             wrong.ray.time
         );
     }
-    if shadow.len() != counted as usize {
-        panic!(
-            "direct_light ({case}): it traced {} shadow rays but added {counted} to \
-             counters.rays: count every shadow ray you trace, once",
-            shadow.len()
-        );
-    }
     if shadow.len() > needed {
         panic!(
             "direct_light ({case}): it traced {} shadow rays where {needed} can change the \
@@ -221,19 +211,19 @@ fn check_shadow_rays(asked: &[Asked], counted: u64, needed: usize, case: &str, w
 fn exercise_direct_light_of_one_light() {
     let light = Vec3::new(1.0, 2.0, 0.5);
     let world = floor_world(&[light], &[], false);
-    let (mine, hit, counted) = light_floor(&world, EYE, false);
+    let (mine, hit) = light_floor(&world, EYE, false);
     let asked = world.take();
     if let Some(mistake) = one_light_mistake(&world, &asked, mine, TARGET + light, hit.p, Vec3::Y) {
         panic!("direct_light, one light above the floor: {mistake}");
     }
-    check_shadow_rays(&asked, counted, 1, "one light above the floor", BEHIND);
+    check_shadow_rays(&asked, 1, "one light above the floor", BEHIND);
 }
 
 #[test]
 fn exercise_direct_light_adds_every_light() {
     let lights = [Vec3::new(1.0, 2.0, 0.5), Vec3::new(-2.0, 1.0, -1.0)];
     let world = floor_world(&lights, &[], false);
-    let (mine, hit, counted) = light_floor(&world, EYE, false);
+    let (mine, hit) = light_floor(&world, EYE, false);
     let each = lights.map(|l| expected_from(TARGET + l, hit.p, Vec3::Y));
     let expected = each[0] + each[1];
     let asked = world.take();
@@ -251,14 +241,14 @@ fn exercise_direct_light_adds_every_light() {
             String::new()
         }
     );
-    check_shadow_rays(&asked, counted, 2, "two lights above the floor", BEHIND);
+    check_shadow_rays(&asked, 2, "two lights above the floor", BEHIND);
 }
 
 #[test]
 fn exercise_direct_light_ignores_lights_behind_the_surface() {
     let above = Vec3::new(1.0, 2.0, 0.5);
     let world = floor_world(&[Vec3::new(0.5, -1.0, 0.0), above], &[], false);
-    let (mine, hit, counted) = light_floor(&world, EYE, false);
+    let (mine, hit) = light_floor(&world, EYE, false);
     let expected = expected_from(TARGET + above, hit.p, Vec3::Y);
     let asked = world.take();
     if !close(mine, expected, 1e-4) {
@@ -281,7 +271,7 @@ fn exercise_direct_light_ignores_lights_behind_the_surface() {
             }
         );
     }
-    check_shadow_rays(&asked, counted, 1, "a light below the floor", BEHIND);
+    check_shadow_rays(&asked, 1, "a light below the floor", BEHIND);
 }
 
 #[test]
@@ -289,7 +279,7 @@ fn exercise_direct_light_casts_shadows() {
     let light = Vec3::new(1.0, 2.0, 0.5);
     // A ball halfway to the light.
     let world = floor_world(&[light], &[(0.5 * light, 0.3)], false);
-    let (mine, _, counted) = light_floor(&world, EYE, false);
+    let (mine, _) = light_floor(&world, EYE, false);
     let asked = world.take();
     if mine != Vec3::ZERO {
         let answered_blocked = asked.iter().any(|a| {
@@ -306,17 +296,11 @@ fn exercise_direct_light_casts_shadows() {
             }
         );
     }
-    check_shadow_rays(
-        &asked,
-        counted,
-        1,
-        "a ball between the floor and the light",
-        BEHIND,
-    );
+    check_shadow_rays(&asked, 1, "a ball between the floor and the light", BEHIND);
 
     // A ball beyond the light, on the same line: it must not cast a shadow.
     let world = floor_world(&[light], &[(2.5 * light, 1.0)], false);
-    let (mine, hit, _) = light_floor(&world, EYE, false);
+    let (mine, hit) = light_floor(&world, EYE, false);
     let asked = world.take();
     let past = asked.iter().filter(|a| a.shadow).find(|a| {
         let reach = a.ray.t_max * a.ray.dir.length();
@@ -373,8 +357,7 @@ fn exercise_direct_light_leaves_its_own_surface() {
         shape: 0,
     };
     let ray = Ray::new(hit.p + n, -n).with_time(TIME);
-    let mut counters = SampleCounters::default();
-    let mine = direct_light(&world, &ray, &hit, ALBEDO, false, &mut counters);
+    let mine = direct_light(&world, &ray, &hit, ALBEDO, false);
     let asked = world.take();
     let starts_on_the_point = asked.iter().any(|a| a.shadow && a.ray.origin == hit.p);
     if mine == Vec3::ZERO && starts_on_the_point {
@@ -397,7 +380,7 @@ fn exercise_direct_light_on_the_back_side() {
     let under_the_floor = Vec3::new(0.0, -3.0, 3.0);
     // One-sided: the back is black, whatever shines on it, and no shadow ray is needed.
     let world = floor_world(&[below, above], &[], false);
-    let (mine, _, counted) = light_floor(&world, under_the_floor, false);
+    let (mine, _) = light_floor(&world, under_the_floor, false);
     assert!(
         mine == Vec3::ZERO,
         "direct_light: seen from below, a one-sided floor is black (Mitsuba's diffuse reflects \
@@ -405,7 +388,6 @@ fn exercise_direct_light_on_the_back_side() {
     );
     check_shadow_rays(
         &world.take(),
-        counted,
         0,
         "the back of a one-sided floor",
         "the back of a one-sided surface is black whatever shines on it, so no light there needs \
@@ -413,7 +395,7 @@ fn exercise_direct_light_on_the_back_side() {
     );
     // Two-sided: the back is matte too, lit by the light on its side.
     let world = floor_world(&[below, above], &[], true);
-    let (mine, hit, counted) = light_floor(&world, under_the_floor, true);
+    let (mine, hit) = light_floor(&world, under_the_floor, true);
     let asked = world.take();
     let case = "the back of a two-sided floor, lit from below";
     let shadow: Vec<&Ray> = asked.iter().filter(|a| a.shadow).map(|a| &a.ray).collect();
@@ -438,7 +420,6 @@ fn exercise_direct_light_on_the_back_side() {
     }
     check_shadow_rays(
         &asked,
-        counted,
         1,
         "the back of a two-sided floor",
         "the light above shines on the other side, so it needs no shadow ray",
@@ -461,14 +442,7 @@ fn exercise_direct_light_uses_the_shading_normal() {
         shape: 0,
     };
     let ray = Ray::new(EYE, (TARGET - EYE).normalize()).with_time(TIME);
-    let mine = direct_light(
-        &world,
-        &ray,
-        &hit,
-        ALBEDO,
-        false,
-        &mut SampleCounters::default(),
-    );
+    let mine = direct_light(&world, &ray, &hit, ALBEDO, false);
     let expected = expected_from(TARGET + light, TARGET, shading_n);
     if close(mine, expected_from(TARGET + light, TARGET, Vec3::Y), 1e-4) {
         panic!(
@@ -502,14 +476,7 @@ fn exercise_direct_light_of_a_light_on_the_surface() {
         uv: Vec2::ZERO,
         shape: 0,
     };
-    let mine = direct_light(
-        &world,
-        &ray,
-        &hit,
-        ALBEDO,
-        false,
-        &mut SampleCounters::default(),
-    );
+    let mine = direct_light(&world, &ray, &hit, ALBEDO, false);
     let asked = world.take();
     let why = "A light exactly at the lit point (distance 0) has no direction from it: \
                to_light / |to_light| is 0 / 0, which is NaN, and so is cos(theta); a test \

@@ -8,7 +8,6 @@
 use common::Ray;
 use common::geometry::{Parallelogram, Shape, Sphere};
 use common::image::Image;
-use common::render::SampleCounters;
 use common::scene::{Checkerboard, Material, PointLight, Scene, SceneBuilder, Texture};
 use glam::{Vec2, Vec3};
 use workbench::test_support::image_comparison;
@@ -258,14 +257,7 @@ impl Slips {
 }
 
 /// Whitted's recursion as the chapter tells it, with `slips` made on purpose.
-fn reference<W: World>(
-    world: &W,
-    ray: &Ray,
-    depth: u32,
-    slips: Slips,
-    counters: &mut SampleCounters,
-) -> Vec3 {
-    counters.rays += 1;
+fn reference<W: World>(world: &W, ray: &Ray, depth: u32, slips: Slips) -> Vec3 {
     let scene = world.scene();
     if slips.depth == Depth::LimitBeforeTheHit && depth >= scene.max_depth {
         return Vec3::ZERO;
@@ -285,16 +277,16 @@ fn reference<W: World>(
     if out_of_segments {
         return Vec3::ZERO;
     }
-    let mirror = |weight: Vec3, from_behind: bool, deeper: u32, counters: &mut SampleCounters| {
+    let mirror = |weight: Vec3, from_behind: bool, deeper: u32| {
         if !hit.front_face(ray.dir) && !from_behind {
             return Vec3::ZERO;
         }
         let reflected = hit.spawn_ray(reflect(ray.dir, hit.n), ray.time);
-        weight * reference(world, &reflected, depth + deeper, slips, counters)
+        weight * reference(world, &reflected, depth + deeper, slips)
     };
     match scene.surface(hit.shape).material {
         Material::Diffuse { albedo, two_sided } => {
-            direct_light(world, ray, &hit, albedo, two_sided, counters)
+            direct_light(world, ray, &hit, albedo, two_sided)
         }
         Material::TexturedDiffuse { texture, two_sided } => {
             let albedo = match texture {
@@ -303,7 +295,7 @@ fn reference<W: World>(
                 }
                 _ => scene.albedo(texture, hit.uv),
             };
-            direct_light(world, ray, &hit, albedo, two_sided, counters)
+            direct_light(world, ray, &hit, albedo, two_sided)
         }
         Material::Mirror { reflectance } => {
             let weight = if slips.mirror_without_reflectance {
@@ -312,10 +304,10 @@ fn reference<W: World>(
                 reflectance
             };
             let deeper = u32::from(!slips.mirror_same_depth);
-            mirror(weight, slips.mirror_from_behind, deeper, counters)
+            mirror(weight, slips.mirror_from_behind, deeper)
         }
         Material::Dielectric { int_ior, ext_ior } => match slips.glass {
-            Glass::AsMirror => mirror(Vec3::ONE, true, 1, counters),
+            Glass::AsMirror => mirror(Vec3::ONE, true, 1),
             Glass::Black => Vec3::ZERO,
             Glass::Right | Glass::IndicesSwapped => {
                 let (inside, outside) = if slips.glass == Glass::IndicesSwapped {
@@ -324,13 +316,11 @@ fn reference<W: World>(
                     (int_ior, ext_ior)
                 };
                 dielectric(ray, &hit, inside, outside, &mut |next| {
-                    reference(world, next, depth + 1, slips, counters)
+                    reference(world, next, depth + 1, slips)
                 })
             }
         },
-        Material::Glossy(glossy) if slips.glossy_as_mirror => {
-            mirror(glossy.reflectance, false, 1, counters)
-        }
+        Material::Glossy(glossy) if slips.glossy_as_mirror => mirror(glossy.reflectance, false, 1),
         Material::Glossy(_)
         | Material::RoughGlass(_)
         | Material::Conductor(_)
@@ -349,18 +339,16 @@ fn camera_ray(world: &Recording, x: u32, y: u32) -> Ray {
 }
 
 /// The picture `radiance` makes of `world` (one ray through each pixel centre, at [`TIME`]),
-/// and the rays it counted.
-fn render(
-    world: &Recording,
-    mut radiance: impl FnMut(&Ray, &mut SampleCounters) -> Vec3,
-) -> (Image, u64) {
+/// and the rays it asked the world about.
+fn render(world: &Recording, mut radiance: impl FnMut(&Ray) -> Vec3) -> (Image, u64) {
     let mut image = Image::new(SIZE.0, SIZE.1);
-    let mut counters = SampleCounters::default();
+    let mut rays = 0;
     for y in 0..SIZE.1 {
         for x in 0..SIZE.0 {
             let ray = camera_ray(world, x, y);
-            image.set(x, y, radiance(&ray, &mut counters));
+            image.set(x, y, radiance(&ray));
             let asked = world.take();
+            rays += asked.len() as u64;
             if let Some(late) = asked.iter().find(|a| a.ray.time != TIME) {
                 panic!(
                     "trace: a ray of the path through pixel ({x}, {y}) travels at shutter time \
@@ -379,7 +367,7 @@ fn render(
             }
         }
     }
-    (image, counters.rays)
+    (image, rays)
 }
 
 /// Whether `a` and `b` agree at the pixels `at` picks.
@@ -393,10 +381,7 @@ fn same_where(a: &Image, b: &Image, at: impl Fn(usize) -> bool) -> bool {
 
 /// The reference's picture with `slips`.
 fn slipped(world: &Recording, slips: Slips) -> Image {
-    render(world, |ray, counters| {
-        reference(world, ray, 1, slips, counters)
-    })
-    .0
+    render(world, |ray| reference(world, ray, 1, slips)).0
 }
 
 /// The words for slips `found`: each set's, joined by "or else".
@@ -513,14 +498,11 @@ fn starts_on_a_surface(world: &Recording, asked: &[Asked]) -> Option<String> {
 fn check_at_depth(max_depth: u32) {
     let mut world = Recording::new(scene(max_depth));
     world.limit = 5_000;
-    // Your picture, with every ray your trace asked the world about (shadow rays aside).
-    let (mut traced, mut shadow_rays) = (0, 0);
+    // Your picture, with every ray your trace asked the world about.
     let mut on_a_surface = None;
-    let (mine, my_rays) = render(&world, |ray, counters| {
-        let radiance = trace(&world, ray, 1, counters);
+    let (mine, my_rays) = render(&world, |ray| {
+        let radiance = trace(&world, ray, 1);
         let asked = world.take();
-        traced += asked.iter().filter(|a| !a.shadow).count() as u64;
-        shadow_rays += asked.iter().filter(|a| a.shadow).count() as u64;
         on_a_surface = on_a_surface
             .take()
             .or_else(|| starts_on_a_surface(&world, &asked));
@@ -528,9 +510,7 @@ fn check_at_depth(max_depth: u32) {
         world.asked.lock().unwrap().extend(asked);
         radiance
     });
-    let (expected, rays) = render(&world, |ray, counters| {
-        reference(&world, ray, 1, Slips::NONE, counters)
-    });
+    let (expected, rays) = render(&world, |ray| reference(&world, ray, 1, Slips::NONE));
     let exercise = "ch01-trace";
     if let Some(p) = mine.pixels.iter().find(|p| !p.is_finite()) {
         panic!(
@@ -548,13 +528,7 @@ fn check_at_depth(max_depth: u32) {
     if let Some(on_a_surface) = on_a_surface {
         panic!("trace, max_depth = {max_depth}: the picture is right, but {on_a_surface}");
     }
-    // Your trace's own count, against the rays it traced and then against the reference's.
-    assert!(
-        my_rays == traced + shadow_rays,
-        "trace, max_depth = {max_depth}: the picture is right, but counters.rays counted \
-         {my_rays} rays where your trace traced {traced}, besides the {shadow_rays} shadow rays \
-         that direct_light counts itself: count every ray trace follows, once"
-    );
+    // The rays your trace traced, against the reference's.
     assert!(
         my_rays == rays,
         "trace, max_depth = {max_depth}: the picture is right, but your trace traced {} rays \
