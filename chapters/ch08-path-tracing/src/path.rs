@@ -262,15 +262,7 @@ pub(crate) mod tests {
         use_tracer: impl FnOnce(&PathTracer) -> R,
     ) -> R {
         let world = spheres(&[material], options.max_depth);
-        let area_lights = AreaLights::of(&world.scene);
-        let tracer = PathTracer {
-            world: &world,
-            lights: SceneLights::of(&world, &area_lights, LightSampling::solid_angle()),
-            options,
-            fuzz: FuzzMethod::Lobe,
-            coatings: crate::microfacet::coating::Coatings::of(&world.scene),
-        };
-        use_tracer(&tracer)
+        with_path_tracer(&world, options, use_tracer)
     }
 
     /// What one call of `extend_path` did to a path carrying `throughput` and `eta_scale`:
