@@ -69,24 +69,18 @@ impl<L: Lighting> Tracer<'_, L> {
     pub fn trace<S: Sampler>(&self, ray: &Ray, depth: u32, sampler: &mut S) -> Vec3 {
         let world = self.world;
         let Some(hit) = world.intersect(ray) else {
-            return world.scene.environment;
+            return world.background(ray.dir);
         };
         let emitted = self.lighting.emitted(&hit, ray);
         if depth >= world.scene.max_depth {
             return emitted; // no segment left to carry reflected light
         }
-        let scattered = match world.scene.surface(hit.shape).material {
+        // The material with its texture read at the hit: a textured matte surface comes back
+        // as a matte one of the colour there.
+        let scattered = match *world.material_at(&hit) {
             Material::Diffuse { albedo, two_sided } => self
                 .lighting
                 .matte(world, ray, &hit, albedo, two_sided, sampler),
-            Material::TexturedDiffuse { texture, two_sided } => self.lighting.matte(
-                world,
-                ray,
-                &hit,
-                world.scene.albedo(texture, hit.uv),
-                two_sided,
-                sampler,
-            ),
             Material::Mirror { reflectance } => {
                 if !hit.front_face(ray.dir) {
                     return emitted; // mirrors reflect on their front side only
@@ -110,6 +104,7 @@ impl<L: Lighting> Tracer<'_, L> {
             // Chapter 08's materials: the capability check refuses them or puts the lecture's
             // stand-in (a mirror or a lobe for a metal) in their place.
             Material::Conductor(_)
+            | Material::TexturedDiffuse { .. }
             | Material::ThinDielectric { .. }
             | Material::Plastic(_)
             | Material::Mask(_)

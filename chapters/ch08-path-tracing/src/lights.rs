@@ -227,7 +227,7 @@ impl<'a> SceneLights<'a> {
     /// the shape's own `uv` exactly as a hit there would. `None` if the ray misses it (a
     /// point on the very edge, by rounding), which then sends nothing: a set of no area.
     fn uv_of(&self, shape: u32, x: Vec3, p: Vec3) -> Option<Vec2> {
-        let shape = self.scene.geometry.shapes().get(shape as usize)?;
+        let shape = self.scene.still_shape(shape)?;
         let to_p = p - x;
         let distance = to_p.length();
         let mut ray = Ray::new(x, to_p / distance);

@@ -149,6 +149,12 @@ impl Scene {
         }
     }
 
+    /// Still shape number `shape` itself (its geometry, as the BVH holds it); `None` for a
+    /// moving shape or a number the scene does not have.
+    pub fn still_shape(&self, shape: u32) -> Option<&Shape> {
+        self.geometry.shapes().get(shape as usize)
+    }
+
     /// The surface of shape number `shape`, as a hit reports it.
     #[inline]
     pub fn surface(&self, shape: u32) -> &Surface {
