@@ -14,15 +14,14 @@ use workbench::capabilities::Capabilities;
 use workbench::cli::{CliError, print_note, read_scene_file};
 use workbench::scene_file::load_scene_file;
 
-/// What this chapter reads from a scene file's film and sampler.
+/// What this chapter reads from a scene file's film and sampler; the sampler's sample count
+/// is the render's budget, which the render driver reads with `--spp`.
 #[derive(Clone, Debug)]
 pub struct FilmSide {
     /// The film's reconstruction filter.
     pub filter: ReconstructionFilter,
     /// The pixel sampler closest to the file's `<sampler>` type.
     pub sampler: PixelSamplerKind,
-    /// Samples per pixel the file asks for.
-    pub spp: u64,
     /// What the choices change, to print.
     pub notes: Vec<String>,
 }
@@ -34,7 +33,6 @@ pub fn film_side(scene: &Scene) -> Result<FilmSide, String> {
     Ok(FilmSide {
         filter,
         sampler,
-        spp: u64::from(scene.sampler.sample_count.max(1)),
         notes: note.into_iter().collect(),
     })
 }

@@ -30,12 +30,12 @@ pub fn lens_of(camera: &Camera) -> Result<Lens, String> {
 // ANCHOR_END: lens_of
 
 /// What chapters 04 on read from a scene file for the camera's side of a render: the lens,
-/// and chapter 03's film side (the film's filter, the pixel sampler and its sample count).
+/// and chapter 03's film side (the film's filter and the pixel sampler).
 #[derive(Clone, Debug)]
 pub struct CameraSide {
     /// The lens of the file's sensor.
     pub lens: Lens,
-    /// The film's filter, the pixel sampler and its sample count.
+    /// The film's filter and the pixel sampler.
     pub film: FilmSide,
 }
 

@@ -1,7 +1,10 @@
 //! `ch07-soft-shadows`: render a scene with area lights and soft shadows, or write the
 //! chapter's figures.
 
-use ch05_motion_blur::lab::render_setup::CameraArgs;
+use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
+use ch04_depth_of_field::lab::cli::LensArgs;
+use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render, read_with_camera_side};
+use ch05_motion_blur::lab::shot::Shot;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch07_soft_shadows::AreaLights;
 use ch07_soft_shadows::lab::CAPABILITIES;
@@ -9,8 +12,11 @@ use ch07_soft_shadows::lab::cli::LightArgs;
 use ch07_soft_shadows::lab::figures;
 use ch07_soft_shadows::render_with;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_MAX_DEPTH};
+use common::scene::Scene;
+use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::parse_number;
+use workbench::cli::{CliError, RenderArgs, parse_number};
+use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
 struct RenderCommand {
@@ -27,7 +33,11 @@ struct RenderCommand {
     #[command(flatten)]
     fuzzy: FuzzyArgs,
     #[command(flatten)]
-    camera: CameraArgs,
+    anti_aliasing: AntiAliasingArgs,
+    #[command(flatten)]
+    lens: LensArgs,
+    #[command(flatten)]
+    args: RenderArgs,
 }
 
 /// The light scale must keep every light a light: positive, finite, and within a range where
@@ -46,45 +56,75 @@ fn main() -> ExitCode {
 }
 
 fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let light_scale = check_light_scale(command.light_scale)?;
-    let builtin = || {
-        let scene = command.builtin.build(DEFAULT_MAX_DEPTH, light_scale).scene;
-        Ok((scene, command.builtin.name().to_string()))
-    };
-    let setup = command.camera.setup(
-        &CAPABILITIES,
-        builtin,
-        |scene| command.fuzzy.apply(scene),
-        Ok,
-    )?;
-    let args = &command.camera.args;
-    args.check_outputs()?;
-    let lights = command.lights.options();
-    let time_sampling = setup.default_time_sampling();
-    let world = &setup.world;
-    let rendered = render_with(
-        world,
-        lights,
-        command.fuzzy.options(),
-        &setup.lens,
-        &setup.film.settings,
-        &setup.sampler(time_sampling).map_err(anyhow::Error::msg)?,
-        &setup.film.filter,
-    );
-    let mut extra = setup.stats();
-    extra["area_lights"] = AreaLights::of(&world.scene).lights.len().into();
-    extra["point_lights"] = world.scene.point_lights.len().into();
-    extra["light_scale"] = serde_json::json!(args.scene.is_none().then_some(light_scale));
-    extra["light_samples"] = lights.samples.into();
-    extra["light_strata"] = lights.strata.name().into();
-    extra["light_sampling"] = lights.sampling.strategy.name().into();
-    extra["disc_warp"] = lights.sampling.disc_warp.name().into();
-    extra["time_sampling"] = time_sampling.name().into();
-    command.fuzzy.record_stats(&mut extra);
-    args.write_outputs(&rendered, extra)?;
-    args.report_written(
-        &rendered,
-        &format!(", {} shadow ray(s) per light", lights.samples),
-    );
-    Ok(())
+    check_light_scale(command.light_scale)?;
+    drive(command)
+}
+
+impl ChapterRender for RenderCommand {
+    type FromFile = CameraSide;
+    type Prepared = Shot;
+    const BUILTIN_SPP: u64 = 16;
+
+    fn args(&self) -> &RenderArgs {
+        &self.args
+    }
+
+    fn read_scene_file(
+        &self,
+        path: &Path,
+        defines: &[(String, String)],
+    ) -> Result<(Scene, CameraSide), CliError> {
+        read_with_camera_side(path, defines, &CAPABILITIES)
+    }
+
+    fn builtin(&self) -> anyhow::Result<(Scene, String)> {
+        let scene = self
+            .builtin
+            .build(DEFAULT_MAX_DEPTH, self.light_scale)
+            .scene;
+        Ok((scene, self.builtin.name().to_string()))
+    }
+
+    fn prepare(
+        &self,
+        scene: Scene,
+        side: Option<CameraSide>,
+        job: &RenderJob,
+    ) -> anyhow::Result<Shot> {
+        let world = motion_for_render(self.fuzzy.apply(scene)?, &job.name)?;
+        Shot::new(world, side, &self.anti_aliasing, &self.lens, None, job)
+    }
+
+    fn render(&self, shot: Shot, job: &RenderJob) -> anyhow::Result<Rendered> {
+        let lights = self.lights.options();
+        let world = &shot.world;
+        let output = render_with(
+            world,
+            lights,
+            self.fuzzy.options(),
+            &shot.lens,
+            &job.settings,
+            &shot.sampler,
+            &shot.film.filter,
+        );
+        let built_in = self.args.scene.is_none();
+        let mut stats = serde_json::json!({
+            "area_lights": AreaLights::of(&world.scene).lights.len(),
+            "point_lights": world.scene.point_lights.len(),
+            "light_scale": built_in.then_some(self.light_scale),
+            "light_samples": lights.samples,
+            "light_strata": lights.strata.name(),
+            "light_sampling": lights.sampling.strategy.name(),
+            "disc_warp": lights.sampling.disc_warp.name(),
+            "time_sampling": shot.time_sampling.name(),
+        });
+        shot.record_stats(&mut stats);
+        self.fuzzy.record_stats(&mut stats);
+        let detail = format!(", {} shadow ray(s) per light", lights.samples);
+        Ok(Rendered {
+            output,
+            stats,
+            detail,
+        })
+    }
 }
