@@ -6,13 +6,12 @@ use ch01_whitted::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch01_whitted::{PixelPattern, render};
 use common::render::Budget;
 use common::scene::Scene;
-use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::{CliError, RenderArgs, read_scene_file};
+use workbench::capabilities::Capabilities;
 use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Spheres, conflicts_with = "scene")]
     builtin: Builtin,
@@ -21,32 +20,19 @@ struct RenderCommand {
     /// [default: centre; for a scene file asking for a square number of samples, grid]
     #[arg(long, value_enum)]
     pixel: Option<PixelPattern>,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 fn main() -> ExitCode {
     let binary = workbench::chapter_binary!("Render a scene to an image.");
-    binary.run(drive::<RenderCommand>, figures::write_all)
+    binary.run(drive::<RenderOptions>, figures::write_all)
 }
 
-impl ChapterRender for RenderCommand {
+impl ChapterRender for RenderOptions {
     type FromFile = ();
     type Prepared = (Scene, PixelPattern);
     // Whitted's tracer is deterministic: one sample at the centre is the image.
+    const CAPABILITIES: Capabilities = CAPABILITIES;
     const BUILTIN_SPP: u64 = 1;
-
-    fn args(&self) -> &RenderArgs {
-        &self.args
-    }
-
-    fn read_scene_file(
-        &self,
-        path: &Path,
-        defines: &[(String, String)],
-    ) -> Result<(Scene, ()), CliError> {
-        Ok((read_scene_file(path, defines, &CAPABILITIES)?, ()))
-    }
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         let name = self.builtin.name().to_string();

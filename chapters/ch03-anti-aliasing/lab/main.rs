@@ -4,47 +4,33 @@
 use ch03_anti_aliasing::lab::CAPABILITIES;
 use ch03_anti_aliasing::lab::cli::{AntiAliasingArgs, FilmSetup};
 use ch03_anti_aliasing::lab::figures;
-use ch03_anti_aliasing::lab::scene_file::{FilmSide, read_with_film_side};
+use ch03_anti_aliasing::lab::scene_file::FilmSide;
 use ch03_anti_aliasing::render_with;
 use ch03_anti_aliasing::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use common::scene::Scene;
-use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::{CliError, RenderArgs};
+use workbench::capabilities::Capabilities;
 use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Edges, conflicts_with = "scene")]
     builtin: Builtin,
     #[command(flatten)]
     anti_aliasing: AntiAliasingArgs,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 fn main() -> ExitCode {
     let binary = workbench::chapter_binary!("Render a scene to an image.");
-    binary.run(drive::<RenderCommand>, figures::write_all)
+    binary.run(drive::<RenderOptions>, figures::write_all)
 }
 
-impl ChapterRender for RenderCommand {
+impl ChapterRender for RenderOptions {
     type FromFile = FilmSide;
     type Prepared = (Scene, FilmSetup);
+    const CAPABILITIES: Capabilities = CAPABILITIES;
     const BUILTIN_SPP: u64 = 16;
-
-    fn args(&self) -> &RenderArgs {
-        &self.args
-    }
-
-    fn read_scene_file(
-        &self,
-        path: &Path,
-        defines: &[(String, String)],
-    ) -> Result<(Scene, FilmSide), CliError> {
-        read_with_film_side(path, defines, &CAPABILITIES)
-    }
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         let name = self.builtin.name().to_string();

@@ -4,17 +4,16 @@ use ch03_anti_aliasing::lab::cli::{AntiAliasingArgs, FilmSetup};
 use ch04_depth_of_field::lab::CAPABILITIES;
 use ch04_depth_of_field::lab::cli::LensArgs;
 use ch04_depth_of_field::lab::figures;
-use ch04_depth_of_field::lab::scene_file::{CameraSide, read_with_camera_side};
+use ch04_depth_of_field::lab::scene_file::CameraSide;
 use ch04_depth_of_field::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch04_depth_of_field::{Aperture, Lens, render_with};
 use common::scene::Scene;
-use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::{CliError, RenderArgs};
+use workbench::capabilities::Capabilities;
 use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Bokeh, conflicts_with = "scene")]
     builtin: Builtin,
@@ -22,31 +21,18 @@ struct RenderCommand {
     anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
     lens: LensArgs,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 fn main() -> ExitCode {
     let binary = workbench::chapter_binary!("Render a scene through a thin lens.");
-    binary.run(drive::<RenderCommand>, figures::write_all)
+    binary.run(drive::<RenderOptions>, figures::write_all)
 }
 
-impl ChapterRender for RenderCommand {
+impl ChapterRender for RenderOptions {
     type FromFile = CameraSide;
     type Prepared = (Scene, Lens, FilmSetup);
+    const CAPABILITIES: Capabilities = CAPABILITIES;
     const BUILTIN_SPP: u64 = 16;
-
-    fn args(&self) -> &RenderArgs {
-        &self.args
-    }
-
-    fn read_scene_file(
-        &self,
-        path: &Path,
-        defines: &[(String, String)],
-    ) -> Result<(Scene, CameraSide), CliError> {
-        read_with_camera_side(path, defines, &CAPABILITIES)
-    }
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         let name = self.builtin.name().to_string();

@@ -7,12 +7,13 @@
 
 use crate::lens::Lens;
 use ch03_anti_aliasing::PixelSampler;
-use ch03_anti_aliasing::lab::scene_file::{FilmSide, read_with_film_side};
+use ch03_anti_aliasing::lab::scene_file::FilmSide;
 use common::render::RenderSettings;
 use common::scene::{Camera, CameraModel, Scene};
 use std::path::Path;
 use workbench::capabilities::Capabilities;
 use workbench::cli::CliError;
+use workbench::driver::FromSceneFile;
 
 // ANCHOR: lens_of
 /// The lens of the scene's camera: [`Lens::PINHOLE`] for a pinhole, else the thin lens of its
@@ -41,17 +42,19 @@ pub struct CameraSide {
 
 /// A scene file for a chapter's `render`: read with the `-D` overrides and checked against
 /// the chapter's `capabilities`, its film side and its lens read; every note printed.
-pub fn read_with_camera_side(
-    path: &Path,
-    defines: &[(String, String)],
-    capabilities: &Capabilities,
-) -> Result<(Scene, CameraSide), CliError> {
-    let (scene, film) = read_with_film_side(path, defines, capabilities)?;
-    let lens = lens_of(&scene.camera).map_err(|message| CliError::Unrenderable {
-        file: path.to_path_buf(),
-        message,
-    })?;
-    Ok((scene, CameraSide { lens, film }))
+impl FromSceneFile for CameraSide {
+    fn read(
+        path: &Path,
+        defines: &[(String, String)],
+        capabilities: &Capabilities,
+    ) -> Result<(Scene, CameraSide), CliError> {
+        let (scene, film) = FilmSide::read(path, defines, capabilities)?;
+        let lens = lens_of(&scene.camera).map_err(|message| CliError::Unrenderable {
+            file: path.to_path_buf(),
+            message,
+        })?;
+        Ok((scene, CameraSide { lens, film }))
+    }
 }
 
 /// A scene file as a chapter checks it against Mitsuba 3 (chapter 03's

@@ -5,19 +5,19 @@ use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::lab::cli::LensArgs;
 use ch05_motion_blur::lab::CAPABILITIES;
 use ch05_motion_blur::lab::figures;
-use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render, read_with_camera_side};
+use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render};
 use ch05_motion_blur::lab::shot::Shot;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
 use ch05_motion_blur::{Shutter, TimeSampling, render_with};
 use common::scene::Scene;
-use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::{CliError, RenderArgs, parse_number};
+use workbench::capabilities::Capabilities;
+use workbench::cli::parse_number;
 use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Street, conflicts_with = "scene")]
     builtin: Builtin,
@@ -39,31 +39,18 @@ struct RenderCommand {
     anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
     lens: LensArgs,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 fn main() -> ExitCode {
     let binary = workbench::chapter_binary!("Render a scene in motion over the shutter interval.");
-    binary.run(drive::<RenderCommand>, figures::write_all)
+    binary.run(drive::<RenderOptions>, figures::write_all)
 }
 
-impl ChapterRender for RenderCommand {
+impl ChapterRender for RenderOptions {
     type FromFile = CameraSide;
     type Prepared = Shot;
+    const CAPABILITIES: Capabilities = CAPABILITIES;
     const BUILTIN_SPP: u64 = 16;
-
-    fn args(&self) -> &RenderArgs {
-        &self.args
-    }
-
-    fn read_scene_file(
-        &self,
-        path: &Path,
-        defines: &[(String, String)],
-    ) -> Result<(Scene, CameraSide), CliError> {
-        read_with_camera_side(path, defines, &CAPABILITIES)
-    }
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         let scene = self.builtin.scene(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);

@@ -9,7 +9,7 @@
 
 use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
-pub use ch04_depth_of_field::lab::scene_file::{CameraSide, read_with_camera_side};
+pub use ch04_depth_of_field::lab::scene_file::CameraSide;
 use common::render::RenderSettings;
 use common::scene::Scene;
 use std::path::Path;

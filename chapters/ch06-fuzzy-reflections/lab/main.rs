@@ -3,7 +3,7 @@
 
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::lab::cli::LensArgs;
-use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render, read_with_camera_side};
+use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render};
 use ch05_motion_blur::lab::shot::Shot;
 use ch06_fuzzy_reflections::lab::CAPABILITIES;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
@@ -11,13 +11,12 @@ use ch06_fuzzy_reflections::lab::figures;
 use ch06_fuzzy_reflections::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use ch06_fuzzy_reflections::{PointLights, render_with};
 use common::scene::Scene;
-use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::{CliError, RenderArgs};
+use workbench::capabilities::Capabilities;
 use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Floor, conflicts_with = "scene")]
     builtin: Builtin,
@@ -27,31 +26,18 @@ struct RenderCommand {
     anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
     lens: LensArgs,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 fn main() -> ExitCode {
     let binary = workbench::chapter_binary!("Render a scene with glossy and frosted surfaces.");
-    binary.run(drive::<RenderCommand>, figures::write_all)
+    binary.run(drive::<RenderOptions>, figures::write_all)
 }
 
-impl ChapterRender for RenderCommand {
+impl ChapterRender for RenderOptions {
     type FromFile = CameraSide;
     type Prepared = Shot;
+    const CAPABILITIES: Capabilities = CAPABILITIES;
     const BUILTIN_SPP: u64 = 16;
-
-    fn args(&self) -> &RenderArgs {
-        &self.args
-    }
-
-    fn read_scene_file(
-        &self,
-        path: &Path,
-        defines: &[(String, String)],
-    ) -> Result<(Scene, CameraSide), CliError> {
-        read_with_camera_side(path, defines, &CAPABILITIES)
-    }
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         // Built with its own exponent; --exponent replaces it, as in a file.

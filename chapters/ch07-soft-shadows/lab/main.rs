@@ -3,7 +3,7 @@
 
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::lab::cli::LensArgs;
-use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render, read_with_camera_side};
+use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render};
 use ch05_motion_blur::lab::shot::Shot;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch07_soft_shadows::AreaLights;
@@ -13,13 +13,13 @@ use ch07_soft_shadows::lab::figures;
 use ch07_soft_shadows::render_with;
 use ch07_soft_shadows::scenes::{Builtin, DEFAULT_MAX_DEPTH};
 use common::scene::Scene;
-use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::{CliError, RenderArgs, parse_number};
-use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
+use workbench::capabilities::Capabilities;
+use workbench::cli::parse_number;
+use workbench::driver::{ChapterRender, RenderCommand, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Small, conflicts_with = "scene")]
     builtin: Builtin,
@@ -36,8 +36,6 @@ struct RenderCommand {
     anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
     lens: LensArgs,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 /// The light scale must keep every light a light: positive, finite, and within a range where
@@ -55,27 +53,17 @@ fn main() -> ExitCode {
     binary.run(run_render, figures::write_all)
 }
 
-fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    check_light_scale(command.light_scale)?;
+fn run_render(command: RenderCommand<RenderOptions>) -> anyhow::Result<()> {
+    check_light_scale(command.chapter.light_scale)?;
     drive(command)
 }
 
-impl ChapterRender for RenderCommand {
+impl ChapterRender for RenderOptions {
     type FromFile = CameraSide;
-    type Prepared = Shot;
+    /// The shot, and the light scale of a built-in scene (`None` for a file's).
+    type Prepared = (Shot, Option<f32>);
+    const CAPABILITIES: Capabilities = CAPABILITIES;
     const BUILTIN_SPP: u64 = 16;
-
-    fn args(&self) -> &RenderArgs {
-        &self.args
-    }
-
-    fn read_scene_file(
-        &self,
-        path: &Path,
-        defines: &[(String, String)],
-    ) -> Result<(Scene, CameraSide), CliError> {
-        read_with_camera_side(path, defines, &CAPABILITIES)
-    }
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         let scene = self
@@ -90,12 +78,18 @@ impl ChapterRender for RenderCommand {
         scene: Scene,
         side: Option<CameraSide>,
         job: &RenderJob,
-    ) -> anyhow::Result<Shot> {
+    ) -> anyhow::Result<(Shot, Option<f32>)> {
+        let light_scale = side.is_none().then_some(self.light_scale);
         let world = motion_for_render(self.fuzzy.apply(scene)?, &job.name)?;
-        Shot::new(world, side, &self.anti_aliasing, &self.lens, None, job)
+        let shot = Shot::new(world, side, &self.anti_aliasing, &self.lens, None, job)?;
+        Ok((shot, light_scale))
     }
 
-    fn render(&self, shot: Shot, job: &RenderJob) -> anyhow::Result<Rendered> {
+    fn render(
+        &self,
+        (shot, light_scale): (Shot, Option<f32>),
+        job: &RenderJob,
+    ) -> anyhow::Result<Rendered> {
         let lights = self.lights.options();
         let world = &shot.world;
         let output = render_with(
@@ -107,11 +101,10 @@ impl ChapterRender for RenderCommand {
             &shot.sampler,
             &shot.film.filter,
         );
-        let built_in = self.args.scene.is_none();
         let mut stats = serde_json::json!({
             "area_lights": AreaLights::of(&world.scene).lights.len(),
             "point_lights": world.scene.point_lights.len(),
-            "light_scale": built_in.then_some(self.light_scale),
+            "light_scale": light_scale,
             "light_samples": lights.samples,
             "light_strata": lights.strata.name(),
             "light_sampling": lights.sampling.strategy.name(),

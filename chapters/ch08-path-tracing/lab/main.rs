@@ -2,7 +2,7 @@
 
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::lab::cli::LensArgs;
-use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render, read_with_camera_side};
+use ch05_motion_blur::lab::scene_file::motion_for_render;
 use ch05_motion_blur::lab::shot::Shot;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
@@ -12,16 +12,15 @@ use ch08_path_tracing::dimensions::render_counted;
 use ch08_path_tracing::lab::CAPABILITIES;
 use ch08_path_tracing::lab::cli::PathArgs;
 use ch08_path_tracing::lab::figures;
-use ch08_path_tracing::lab::scene_file::path_options;
+use ch08_path_tracing::lab::scene_file::PathSide;
 use ch08_path_tracing::{Method, PathOptions};
 use common::scene::Scene;
-use std::path::Path;
 use std::process::ExitCode;
-use workbench::cli::{CliError, RenderArgs};
-use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
+use workbench::capabilities::Capabilities;
+use workbench::driver::{ChapterRender, RenderCommand, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     #[command(flatten)]
     path: PathArgs,
     #[command(flatten)]
@@ -32,8 +31,6 @@ struct RenderCommand {
     anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
     lens: LensArgs,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 fn main() -> ExitCode {
@@ -44,53 +41,39 @@ fn main() -> ExitCode {
 /// The options of chapters 06 and 07 that mean something for a path: a path follows one ray
 /// at glass, chosen by Fresnel, drops lobe directions below the surface, and sends one light
 /// sample per bounce.
-fn check_path_options(command: &RenderCommand) -> anyhow::Result<()> {
-    if command.fuzzy.glass != GlassStrategy::Fresnel {
+fn check_path_options(options: &RenderOptions) -> anyhow::Result<()> {
+    if options.fuzzy.glass != GlassStrategy::Fresnel {
         anyhow::bail!(
             "--glass {}: a path follows one ray per bounce, chosen at glass by the Fresnel term; only --glass fresnel applies",
-            command.fuzzy.glass.name()
+            options.fuzzy.glass.name()
         );
     }
-    if command.fuzzy.below_surface != BelowSurface::Drop {
+    if options.fuzzy.below_surface != BelowSurface::Drop {
         anyhow::bail!(
             "--below-surface {}: the path tracer's BSDFs drop lobe directions below the surface; only --below-surface drop applies",
-            command.fuzzy.below_surface.name()
+            options.fuzzy.below_surface.name()
         );
     }
-    if command.lights.light_samples != 1 {
+    if options.lights.light_samples != 1 {
         anyhow::bail!(
             "--light-samples {}: the path tracer sends one light sample per bounce, to one light picked uniformly",
-            command.lights.light_samples
+            options.lights.light_samples
         );
     }
     Ok(())
 }
 
-fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    check_path_options(&command)?;
+fn run_render(command: RenderCommand<RenderOptions>) -> anyhow::Result<()> {
+    check_path_options(&command.chapter)?;
     drive(command)
 }
 
-impl ChapterRender for RenderCommand {
-    /// The camera side, and the file's integrator, read before --max-depth changes the scene.
-    type FromFile = (CameraSide, PathOptions);
+impl ChapterRender for RenderOptions {
+    type FromFile = PathSide;
     type Prepared = (Shot, PathOptions);
+    const CAPABILITIES: Capabilities = CAPABILITIES;
     // Never used: the chapter renders scene files only.
     const BUILTIN_SPP: u64 = 16;
-
-    fn args(&self) -> &RenderArgs {
-        &self.args
-    }
-
-    fn read_scene_file(
-        &self,
-        path: &Path,
-        defines: &[(String, String)],
-    ) -> Result<(Scene, (CameraSide, PathOptions)), CliError> {
-        let (scene, side) = read_with_camera_side(path, defines, &CAPABILITIES)?;
-        let options = path_options(&scene);
-        Ok((scene, (side, options)))
-    }
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         anyhow::bail!(
@@ -101,18 +84,18 @@ impl ChapterRender for RenderCommand {
     fn prepare(
         &self,
         scene: Scene,
-        from_file: Option<(CameraSide, PathOptions)>,
+        from_file: Option<PathSide>,
         job: &RenderJob,
     ) -> anyhow::Result<(Shot, PathOptions)> {
-        let (side, file_options) = from_file.expect("the scene was read from a file");
+        let side = from_file.expect("the scene was read from a file");
         let world = motion_for_render(self.fuzzy.apply(scene)?, &job.name)?;
         let options = PathOptions {
             max_depth: world.scene.max_depth,
-            ..self.path.options(file_options)
+            ..self.path.options(side.options)
         };
         let shot = Shot::new(
             world,
-            Some(side),
+            Some(side.camera),
             &self.anti_aliasing,
             &self.lens,
             None,
