@@ -30,8 +30,8 @@ fn main() -> ExitCode {
 impl ChapterRender for RenderOptions {
     type FromFile = ();
     type Prepared = (Scene, PixelPattern);
-    // Whitted's tracer is deterministic: one sample at the centre is the image.
     const CAPABILITIES: Capabilities = CAPABILITIES;
+    // Whitted's tracer is deterministic: one sample at the centre is the image.
     const BUILTIN_SPP: u64 = 1;
 
     fn builtin(&self) -> anyhow::Result<(Scene, String)> {
