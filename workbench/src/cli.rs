@@ -1,5 +1,6 @@
 //! Command-line pieces every chapter binary shares: the `render` and `figures` options, their
-//! checks, and how errors are reported.
+//! checks, and how errors are reported. The render driver ([`crate::driver`]) is what uses the
+//! `render` options.
 //!
 //! Bad input must never panic or leave half a file behind: every option is checked before any
 //! work starts, and the output path is tried for writing before a long render, not after it.
@@ -229,7 +230,7 @@ impl RenderArgs {
     ///
     /// Only a binary calls this, so it is where Ctrl-C gets its meaning: the settings carry
     /// [`ctrl_c_stop_flag`], and [`RenderArgs::write_outputs`] then saves the completed passes.
-    pub fn settings(
+    pub(crate) fn settings(
         &self,
         default_size: (u32, u32),
         default_spp: u64,
@@ -253,7 +254,7 @@ impl RenderArgs {
     }
 
     /// Checks, before rendering, that the image and the statistics can be written where asked.
-    pub fn check_outputs(&self) -> Result<(), CliError> {
+    pub(crate) fn check_outputs(&self) -> Result<(), CliError> {
         output::check_image_path(&self.out)?;
         check_writable(&self.out)?;
         if let Some(stats) = &self.stats {
@@ -280,7 +281,7 @@ impl RenderArgs {
     /// An interrupted render still writes the image of its completed passes (nothing if none
     /// completed) and then returns [`CliError::Interrupted`], so that the binary says what it
     /// wrote and exits non-zero.
-    pub fn write_outputs(
+    pub(crate) fn write_outputs(
         &self,
         rendered: &RenderOutput,
         extra: serde_json::Value,
@@ -315,7 +316,7 @@ impl RenderArgs {
     /// The scene file to render, if one was given. `-D` sets a parameter of a scene file, so
     /// it is refused without one. (The option's `requires = "scene"` is not enough: clap lets
     /// it through when a chapter's `--builtin`, which conflicts with `--scene`, is given.)
-    pub fn scene_file(&self) -> Result<Option<&Path>, CliError> {
+    pub(crate) fn scene_file(&self) -> Result<Option<&Path>, CliError> {
         if self.scene.is_none() && !self.define.is_empty() {
             return Err(CliError::Invalid(
                 "-D sets a parameter of a scene file; it needs --scene FILE.xml".to_string(),
@@ -324,38 +325,11 @@ impl RenderArgs {
         Ok(self.scene.as_deref())
     }
 
-    /// The scene to render, what the chapter takes from its file, and its name: the
-    /// `--scene` file as `read_file` reads it, or the chapter's `builtin` scene with its name.
-    pub fn scene_or_builtin<T>(
-        &self,
-        read_file: impl FnOnce(&Path) -> anyhow::Result<(Scene, T)>,
-        builtin: impl FnOnce() -> anyhow::Result<(Scene, String)>,
-    ) -> anyhow::Result<(Scene, Option<T>, String)> {
-        match self.scene_file()? {
-            Some(path) => {
-                let (scene, from_file) = read_file(path)?;
-                Ok((scene, Some(from_file), path.display().to_string()))
-            }
-            None => {
-                let (scene, name) = builtin()?;
-                Ok((scene, None, name))
-            }
-        }
-    }
-
-    /// `scene` with the longest path `--max-depth` asks for, if it asks.
-    pub fn with_max_depth(&self, mut scene: Scene) -> Scene {
-        if let Some(max_depth) = self.max_depth {
-            scene.max_depth = max_depth;
-        }
-        scene
-    }
-
     /// Tells the user what [`write_outputs`](Self::write_outputs) wrote: the file, its size
     /// and samples, `detail` (what the chapter's options chose, such as ", glass fresnel";
     /// empty for nothing), the time and the ray rate; and warns when samples were not finite
     /// (they are left out of the image, and `--stats` counts them).
-    pub fn report_written(&self, rendered: &RenderOutput, detail: &str) {
+    pub(crate) fn report_written(&self, rendered: &RenderOutput, detail: &str) {
         let stats = &rendered.stats;
         eprintln!(
             "wrote {} ({}x{}, {} spp{detail}, {:.2} s, {:.0} rays/s)",

@@ -7,8 +7,7 @@
 use crate::filters::{FilterKind, ReconstructionFilter, check_radius};
 use crate::lab::scene_file::FilmSide;
 use crate::pixel_samplers::{PixelSampler, PixelSamplerKind};
-use common::render::{Budget, RenderSettings};
-use workbench::cli::RenderArgs;
+use common::render::Budget;
 
 /// The film side of a render, settled from the command line and the scene file.
 #[derive(Clone, Debug)]
@@ -19,8 +18,6 @@ pub struct FilmSetup {
     pub sampler_kind: PixelSamplerKind,
     /// The pixel sampler itself.
     pub pixel_sampler: PixelSampler,
-    /// Size, budget, threads.
-    pub settings: RenderSettings,
 }
 
 impl FilmSetup {
@@ -49,24 +46,21 @@ pub struct AntiAliasingArgs {
 }
 
 impl AntiAliasingArgs {
-    /// The film side of a render of `size`: the filter and the pixel sampler (the flags, else
-    /// the scene file's `film`, else the box and stratified), and the render's settings from
-    /// `args` (the sample count: the flag, else the file's, else 16).
+    /// The film side of a render of `budget` and `seed`: the filter and the pixel sampler (the
+    /// flags, else the scene file's `film`, else the box and stratified).
     pub fn film_setup(
         &self,
         film: Option<&FilmSide>,
-        args: &RenderArgs,
-        size: (u32, u32),
+        budget: &Budget,
+        seed: u64,
     ) -> anyhow::Result<FilmSetup> {
         let filter = self.filter(film.map(|film| film.filter))?;
         let sampler_kind = self.sampler_kind(film.map(|film| film.sampler));
-        let settings = args.settings(size, film.map_or(16, |film| film.spp))?;
-        let pixel_sampler = self.pixel_sampler(sampler_kind, &settings.budget, args.seed)?;
+        let pixel_sampler = self.pixel_sampler(sampler_kind, budget, seed)?;
         Ok(FilmSetup {
             filter,
             sampler_kind,
             pixel_sampler,
-            settings,
         })
     }
 

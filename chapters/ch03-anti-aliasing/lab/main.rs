@@ -2,65 +2,71 @@
 //! chapter's figures.
 
 use ch03_anti_aliasing::lab::CAPABILITIES;
-use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
+use ch03_anti_aliasing::lab::cli::{AntiAliasingArgs, FilmSetup};
 use ch03_anti_aliasing::lab::figures;
-use ch03_anti_aliasing::lab::scene_file::read_with_film_side;
+use ch03_anti_aliasing::lab::scene_file::FilmSide;
 use ch03_anti_aliasing::render_with;
 use ch03_anti_aliasing::scenes::{Builtin, DEFAULT_MAX_DEPTH};
+use common::scene::Scene;
 use std::process::ExitCode;
-use workbench::cli::RenderArgs;
+use workbench::capabilities::Capabilities;
+use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Edges, conflicts_with = "scene")]
     builtin: Builtin,
     #[command(flatten)]
     anti_aliasing: AntiAliasingArgs,
-    #[command(flatten)]
-    args: RenderArgs,
 }
 
 fn main() -> ExitCode {
     let binary = workbench::chapter_binary!("Render a scene to an image.");
-    binary.run(run_render, figures::write_all)
+    binary.run(drive::<RenderOptions>, figures::write_all)
 }
 
-fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let (scene, film, scene_name) = command.args.scene_or_builtin(
-        |path| {
-            Ok(read_with_film_side(
-                path,
-                &command.args.define,
-                &CAPABILITIES,
-            )?)
-        },
-        || {
-            let name = command.builtin.name().to_string();
-            Ok((command.builtin.build(DEFAULT_MAX_DEPTH), name))
-        },
-    )?;
-    let scene = command.args.with_max_depth(scene);
-    let size = (scene.film.width, scene.film.height);
-    let film = command
-        .anti_aliasing
-        .film_setup(film.as_ref(), &command.args, size)?;
-    command.args.check_outputs()?;
-    let rendered = render_with(&scene, &film.settings, &film.pixel_sampler, &film.filter);
-    let mut extra = serde_json::json!({
-        "scene": scene_name,
-        "max_depth": scene.max_depth,
-        "seed": command.args.seed,
-    });
-    film.record_stats(&mut extra);
-    command.args.write_outputs(&rendered, extra)?;
-    command.args.report_written(
-        &rendered,
-        &format!(
+impl ChapterRender for RenderOptions {
+    type FromFile = FilmSide;
+    type Prepared = (Scene, FilmSetup);
+    const CAPABILITIES: Capabilities = CAPABILITIES;
+    const BUILTIN_SPP: u64 = 16;
+
+    fn builtin(&self) -> anyhow::Result<(Scene, String)> {
+        let name = self.builtin.name().to_string();
+        Ok((self.builtin.build(DEFAULT_MAX_DEPTH), name))
+    }
+
+    fn prepare(
+        &self,
+        scene: Scene,
+        film: Option<FilmSide>,
+        job: &RenderJob,
+    ) -> anyhow::Result<(Scene, FilmSetup)> {
+        let budget = &job.settings.budget;
+        let film = self
+            .anti_aliasing
+            .film_setup(film.as_ref(), budget, job.seed)?;
+        Ok((scene, film))
+    }
+
+    fn render(
+        &self,
+        (scene, film): (Scene, FilmSetup),
+        job: &RenderJob,
+    ) -> anyhow::Result<Rendered> {
+        let output = render_with(&scene, &job.settings, &film.pixel_sampler, &film.filter);
+        let mut stats = serde_json::json!({});
+        film.record_stats(&mut stats);
+        let detail = format!(
             ", {} sampler, {} filter",
             film.sampler_kind.name(),
             film.filter.kind().name()
-        ),
-    );
-    Ok(())
+        );
+        Ok(Rendered {
+            output,
+            stats,
+            detail,
+        })
+    }
 }

@@ -12,17 +12,17 @@ use std::path::Path;
 use workbench::agreement::AGREEMENT_SPP;
 use workbench::capabilities::Capabilities;
 use workbench::cli::{CliError, print_note, read_scene_file};
+use workbench::driver::FromSceneFile;
 use workbench::scene_file::load_scene_file;
 
-/// What this chapter reads from a scene file's film and sampler.
+/// What this chapter reads from a scene file's film and sampler; the sampler's sample count
+/// is the render's budget, which the render driver reads with `--spp`.
 #[derive(Clone, Debug)]
 pub struct FilmSide {
     /// The film's reconstruction filter.
     pub filter: ReconstructionFilter,
     /// The pixel sampler closest to the file's `<sampler>` type.
     pub sampler: PixelSamplerKind,
-    /// Samples per pixel the file asks for.
-    pub spp: u64,
     /// What the choices change, to print.
     pub notes: Vec<String>,
 }
@@ -34,27 +34,28 @@ pub fn film_side(scene: &Scene) -> Result<FilmSide, String> {
     Ok(FilmSide {
         filter,
         sampler,
-        spp: u64::from(scene.sampler.sample_count.max(1)),
         notes: note.into_iter().collect(),
     })
 }
 
 /// A scene file for a chapter's `render`: read with the `-D` overrides and checked against
 /// the chapter's `capabilities` ([`read_scene_file`]), its film side read; every note printed.
-pub fn read_with_film_side(
-    path: &Path,
-    defines: &[(String, String)],
-    capabilities: &Capabilities,
-) -> Result<(Scene, FilmSide), CliError> {
-    let scene = read_scene_file(path, defines, capabilities)?;
-    let film = film_side(&scene).map_err(|message| CliError::Unrenderable {
-        file: path.to_path_buf(),
-        message,
-    })?;
-    for note in &film.notes {
-        print_note(note);
+impl FromSceneFile for FilmSide {
+    fn read(
+        path: &Path,
+        defines: &[(String, String)],
+        capabilities: &Capabilities,
+    ) -> Result<(Scene, FilmSide), CliError> {
+        let scene = read_scene_file(path, defines, capabilities)?;
+        let film = film_side(&scene).map_err(|message| CliError::Unrenderable {
+            file: path.to_path_buf(),
+            message,
+        })?;
+        for note in &film.notes {
+            print_note(note);
+        }
+        Ok((scene, film))
     }
-    Ok((scene, film))
 }
 
 /// A scene file as a chapter checks it against Mitsuba 3: loaded, checked against the

@@ -7,12 +7,13 @@
 
 use crate::lens::Lens;
 use ch03_anti_aliasing::PixelSampler;
-use ch03_anti_aliasing::lab::scene_file::{FilmSide, read_with_film_side};
+use ch03_anti_aliasing::lab::scene_file::FilmSide;
 use common::render::RenderSettings;
 use common::scene::{Camera, CameraModel, Scene};
 use std::path::Path;
 use workbench::capabilities::Capabilities;
 use workbench::cli::CliError;
+use workbench::driver::FromSceneFile;
 
 // ANCHOR: lens_of
 /// The lens of the scene's camera: [`Lens::PINHOLE`] for a pinhole, else the thin lens of its
@@ -30,28 +31,30 @@ pub fn lens_of(camera: &Camera) -> Result<Lens, String> {
 // ANCHOR_END: lens_of
 
 /// What chapters 04 on read from a scene file for the camera's side of a render: the lens,
-/// and chapter 03's film side (the film's filter, the pixel sampler and its sample count).
+/// and chapter 03's film side (the film's filter and the pixel sampler).
 #[derive(Clone, Debug)]
 pub struct CameraSide {
     /// The lens of the file's sensor.
     pub lens: Lens,
-    /// The film's filter, the pixel sampler and its sample count.
+    /// The film's filter and the pixel sampler.
     pub film: FilmSide,
 }
 
 /// A scene file for a chapter's `render`: read with the `-D` overrides and checked against
 /// the chapter's `capabilities`, its film side and its lens read; every note printed.
-pub fn read_with_camera_side(
-    path: &Path,
-    defines: &[(String, String)],
-    capabilities: &Capabilities,
-) -> Result<(Scene, CameraSide), CliError> {
-    let (scene, film) = read_with_film_side(path, defines, capabilities)?;
-    let lens = lens_of(&scene.camera).map_err(|message| CliError::Unrenderable {
-        file: path.to_path_buf(),
-        message,
-    })?;
-    Ok((scene, CameraSide { lens, film }))
+impl FromSceneFile for CameraSide {
+    fn read(
+        path: &Path,
+        defines: &[(String, String)],
+        capabilities: &Capabilities,
+    ) -> Result<(Scene, CameraSide), CliError> {
+        let (scene, film) = FilmSide::read(path, defines, capabilities)?;
+        let lens = lens_of(&scene.camera).map_err(|message| CliError::Unrenderable {
+            file: path.to_path_buf(),
+            message,
+        })?;
+        Ok((scene, CameraSide { lens, film }))
+    }
 }
 
 /// A scene file as a chapter checks it against Mitsuba 3 (chapter 03's

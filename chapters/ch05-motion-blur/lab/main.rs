@@ -1,18 +1,23 @@
 //! `ch05-motion-blur`: render a scene in motion through an open shutter, or write the
 //! chapter's figures.
 
-use ch05_motion_blur::MotionScene;
+use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
+use ch04_depth_of_field::lab::cli::LensArgs;
 use ch05_motion_blur::lab::CAPABILITIES;
 use ch05_motion_blur::lab::figures;
-use ch05_motion_blur::lab::render_setup::CameraArgs;
+use ch05_motion_blur::lab::scene_file::{CameraSide, motion_for_render};
+use ch05_motion_blur::lab::shot::Shot;
 use ch05_motion_blur::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER};
 use ch05_motion_blur::world::DEFAULT_STRETCHES;
 use ch05_motion_blur::{Shutter, TimeSampling, render_with};
+use common::scene::Scene;
 use std::process::ExitCode;
+use workbench::capabilities::Capabilities;
 use workbench::cli::parse_number;
+use workbench::driver::{ChapterRender, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     /// The built-in scene to render (when no --scene file is given).
     #[arg(long, value_enum, default_value_t = Builtin::Street, conflicts_with = "scene")]
     builtin: Builtin,
@@ -31,54 +36,71 @@ struct RenderCommand {
           value_parser = clap::value_parser!(u32).range(1..=1024))]
     stretches: u32,
     #[command(flatten)]
-    camera: CameraArgs,
+    anti_aliasing: AntiAliasingArgs,
+    #[command(flatten)]
+    lens: LensArgs,
 }
 
 fn main() -> ExitCode {
     let binary = workbench::chapter_binary!("Render a scene in motion over the shutter interval.");
-    binary.run(run_render, figures::write_all)
+    binary.run(drive::<RenderOptions>, figures::write_all)
 }
 
-fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    let builtin = || {
-        let scene = command.builtin.scene(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
-        Ok((scene, command.builtin.name().to_string()))
-    };
-    let adjust_world = |world: MotionScene| {
+impl ChapterRender for RenderOptions {
+    type FromFile = CameraSide;
+    type Prepared = Shot;
+    const CAPABILITIES: Capabilities = CAPABILITIES;
+    const BUILTIN_SPP: u64 = 16;
+
+    fn builtin(&self) -> anyhow::Result<(Scene, String)> {
+        let scene = self.builtin.scene(DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER);
+        Ok((scene, self.builtin.name().to_string()))
+    }
+
+    fn prepare(
+        &self,
+        scene: Scene,
+        side: Option<CameraSide>,
+        job: &RenderJob,
+    ) -> anyhow::Result<Shot> {
+        let world = motion_for_render(scene, &job.name)?;
         let shutter = Shutter::new(
-            command.shutter_open.unwrap_or(world.shutter.open),
-            command.shutter_close.unwrap_or(world.shutter.close),
+            self.shutter_open.unwrap_or(world.shutter.open),
+            self.shutter_close.unwrap_or(world.shutter.close),
         )
         .map_err(|e| anyhow::anyhow!("--shutter-open and --shutter-close: {e}"))?;
-        Ok(world.with_shutter(shutter, command.stretches as usize))
-    };
-    let setup = command
-        .camera
-        .setup(&CAPABILITIES, builtin, Ok, adjust_world)?;
-    let time_sampling = command.time_sampling;
-    let sampler = setup
-        .sampler(time_sampling)
-        .map_err(|e| anyhow::anyhow!("--time-sampling {}: {e}", time_sampling.name()))?;
-    let args = &command.camera.args;
-    args.check_outputs()?;
-    let world = &setup.world;
-    let rendered = render_with(
-        world,
-        &setup.lens,
-        &setup.film.settings,
-        &sampler,
-        &setup.film.filter,
-    );
-    let mut extra = setup.stats();
-    extra["time_sampling"] = command.time_sampling.name().into();
-    extra["stretches"] = world.moving.stretches().into();
-    args.write_outputs(&rendered, extra)?;
-    args.report_written(
-        &rendered,
-        &format!(
-            ", shutter [{}, {}]",
-            world.shutter.open, world.shutter.close
-        ),
-    );
-    Ok(())
+        let world = world.with_shutter(shutter, self.stretches as usize);
+        let time_sampling = Some(self.time_sampling);
+        Shot::new(
+            world,
+            side,
+            &self.anti_aliasing,
+            &self.lens,
+            time_sampling,
+            job,
+        )
+    }
+
+    fn render(&self, shot: Shot, job: &RenderJob) -> anyhow::Result<Rendered> {
+        let world = &shot.world;
+        let output = render_with(
+            world,
+            &shot.lens,
+            &job.settings,
+            &shot.sampler,
+            &shot.film.filter,
+        );
+        let mut stats = serde_json::json!({
+            "time_sampling": shot.time_sampling.name(),
+            "stretches": world.moving.stretches(),
+        });
+        shot.record_stats(&mut stats);
+        let shutter = world.shutter;
+        let detail = format!(", shutter [{}, {}]", shutter.open, shutter.close);
+        Ok(Rendered {
+            output,
+            stats,
+            detail,
+        })
+    }
 }

@@ -1,12 +1,12 @@
 //! The chapter's workbench, apart from its lecture: a scene file's motion made ready
-//! (`scene_file`), the setup every `render` from this chapter on shares (`render_setup`: the
-//! pixel sampler and filter of chapter 03, the lens of chapter 04, the scene, budget and
-//! outputs), and the book's figures. Built with the `lab` feature (on by default); the library
-//! without it is the lecture alone.
+//! (`scene_file`), what every `render` from this chapter on traces (`shot`: the scene in
+//! motion, chapter 04's lens, chapter 03's pixel sampler and filter, the shutter time), and
+//! the book's figures. Built with the `lab` feature (on by default); the library without it
+//! is the lecture alone.
 
 pub mod figures;
-pub mod render_setup;
 pub mod scene_file;
+pub mod shot;
 
 use workbench::capabilities::{Capabilities, Chapter};
 

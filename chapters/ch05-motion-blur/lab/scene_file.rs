@@ -9,12 +9,12 @@
 
 use crate::world::MotionScene;
 use ch03_anti_aliasing::PixelSampler;
-pub use ch04_depth_of_field::lab::scene_file::{CameraSide, read_with_camera_side};
+pub use ch04_depth_of_field::lab::scene_file::CameraSide;
 use common::render::RenderSettings;
 use common::scene::Scene;
 use std::path::Path;
 use workbench::capabilities::Capabilities;
-use workbench::cli::print_note;
+use workbench::cli::{CliError, print_note};
 
 // ANCHOR: motion_of
 /// The motion of a scene file's `scene` made ready for tracing (or why it cannot be), with a
@@ -45,9 +45,13 @@ pub fn for_agreement(
     Ok((world, side, settings, sampler))
 }
 
-/// [`motion_of`] for a chapter's `render`: the note, if any, printed.
-pub fn motion_for_render(scene: Scene) -> Result<MotionScene, String> {
-    let (world, note) = motion_of(scene)?;
+/// [`motion_of`] for a chapter's `render` of the scene `name` (a file's path, or a built-in
+/// scene's name, which a refusal starts with): the note, if any, printed.
+pub fn motion_for_render(scene: Scene, name: &str) -> Result<MotionScene, CliError> {
+    let (world, note) = motion_of(scene).map_err(|message| CliError::Unrenderable {
+        file: name.into(),
+        message,
+    })?;
     if let Some(note) = note {
         print_note(&note);
     }

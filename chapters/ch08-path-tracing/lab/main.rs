@@ -1,21 +1,26 @@
 //! `ch08-path-tracing`: path-trace a scene file, or write the chapter's figures.
 
-use ch05_motion_blur::lab::render_setup::CameraArgs;
+use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
+use ch04_depth_of_field::lab::cli::LensArgs;
+use ch05_motion_blur::lab::scene_file::motion_for_render;
+use ch05_motion_blur::lab::shot::Shot;
 use ch06_fuzzy_reflections::lab::cli::FuzzyArgs;
 use ch06_fuzzy_reflections::{BelowSurface, GlassStrategy};
 use ch07_soft_shadows::AreaLights;
 use ch07_soft_shadows::lab::cli::LightArgs;
-use ch08_path_tracing::Method;
 use ch08_path_tracing::dimensions::render_counted;
 use ch08_path_tracing::lab::CAPABILITIES;
 use ch08_path_tracing::lab::cli::PathArgs;
 use ch08_path_tracing::lab::figures;
-use ch08_path_tracing::lab::scene_file::path_options;
+use ch08_path_tracing::lab::scene_file::PathSide;
+use ch08_path_tracing::{Method, PathOptions};
 use common::scene::Scene;
 use std::process::ExitCode;
+use workbench::capabilities::Capabilities;
+use workbench::driver::{ChapterRender, RenderCommand, RenderJob, Rendered, drive};
 
 #[derive(clap::Args, Debug)]
-struct RenderCommand {
+struct RenderOptions {
     #[command(flatten)]
     path: PathArgs,
     #[command(flatten)]
@@ -23,7 +28,9 @@ struct RenderCommand {
     #[command(flatten)]
     fuzzy: FuzzyArgs,
     #[command(flatten)]
-    camera: CameraArgs,
+    anti_aliasing: AntiAliasingArgs,
+    #[command(flatten)]
+    lens: LensArgs,
 }
 
 fn main() -> ExitCode {
@@ -34,85 +41,111 @@ fn main() -> ExitCode {
 /// The options of chapters 06 and 07 that mean something for a path: a path follows one ray
 /// at glass, chosen by Fresnel, drops lobe directions below the surface, and sends one light
 /// sample per bounce.
-fn check_path_options(command: &RenderCommand) -> anyhow::Result<()> {
-    if command.fuzzy.glass != GlassStrategy::Fresnel {
+fn check_path_options(options: &RenderOptions) -> anyhow::Result<()> {
+    if options.fuzzy.glass != GlassStrategy::Fresnel {
         anyhow::bail!(
             "--glass {}: a path follows one ray per bounce, chosen at glass by the Fresnel term; only --glass fresnel applies",
-            command.fuzzy.glass.name()
+            options.fuzzy.glass.name()
         );
     }
-    if command.fuzzy.below_surface != BelowSurface::Drop {
+    if options.fuzzy.below_surface != BelowSurface::Drop {
         anyhow::bail!(
             "--below-surface {}: the path tracer's BSDFs drop lobe directions below the surface; only --below-surface drop applies",
-            command.fuzzy.below_surface.name()
+            options.fuzzy.below_surface.name()
         );
     }
-    if command.lights.light_samples != 1 {
+    if options.lights.light_samples != 1 {
         anyhow::bail!(
             "--light-samples {}: the path tracer sends one light sample per bounce, to one light picked uniformly",
-            command.lights.light_samples
+            options.lights.light_samples
         );
     }
     Ok(())
 }
 
-fn run_render(command: RenderCommand) -> anyhow::Result<()> {
-    check_path_options(&command)?;
-    let builtin = || {
+fn run_render(command: RenderCommand<RenderOptions>) -> anyhow::Result<()> {
+    check_path_options(&command.chapter)?;
+    drive(command)
+}
+
+impl ChapterRender for RenderOptions {
+    type FromFile = PathSide;
+    type Prepared = (Shot, PathOptions);
+    const CAPABILITIES: Capabilities = CAPABILITIES;
+    // Never used: the chapter renders scene files only.
+    const BUILTIN_SPP: u64 = 16;
+
+    fn builtin(&self) -> anyhow::Result<(Scene, String)> {
         anyhow::bail!(
             "render needs a scene: --scene FILE.xml (see chapters/ch08-path-tracing/scenes/)"
         )
-    };
-    // The file's integrator, before --max-depth changes the scene.
-    let mut file_options = None;
-    let adjust = |scene: Scene| {
-        file_options = Some(path_options(&scene));
-        command.fuzzy.apply(scene)
-    };
-    let setup = command.camera.setup(&CAPABILITIES, builtin, adjust, Ok)?;
-    let world = &setup.world;
-    let options = ch08_path_tracing::PathOptions {
-        max_depth: world.scene.max_depth,
-        ..command
-            .path
-            .options(file_options.expect("the scene was read"))
-    };
-    let args = &command.camera.args;
-    args.check_outputs()?;
-    let method = Method {
-        options,
-        light_sampling: command.lights.options().sampling,
-        fuzz: command.fuzzy.fuzz,
-    };
-    // Dimensions are counted only for --stats, where they are written.
-    let count = args.stats.is_some();
-    let (rendered, dimensions) = render_counted(
-        count,
-        world,
-        method,
-        &setup.lens,
-        &setup.film.settings,
-        &setup
-            .sampler(setup.default_time_sampling())
-            .map_err(anyhow::Error::msg)?,
-        &setup.film.filter,
-    );
-    let mut extra = setup.stats();
-    extra["nee"] = options.nee.into();
-    extra["mis"] = options.mis.name().into();
-    extra["rr_depth"] = serde_json::json!(options.rr_depth);
-    extra["area_lights"] = AreaLights::of(&world.scene).lights.len().into();
-    extra["point_lights"] = world.scene.point_lights.len().into();
-    command.fuzzy.record_stats(&mut extra);
-    if let Some(dimensions) = dimensions {
-        // What `--stats` writes of them: `{"mean": .., "max": .., "paths": ..}`.
-        extra["dimensions_per_path"] = serde_json::json!({
-            "mean": dimensions.mean,
-            "max": dimensions.max,
-            "paths": dimensions.paths,
-        });
     }
-    args.write_outputs(&rendered, extra)?;
-    args.report_written(&rendered, "");
-    Ok(())
+
+    fn prepare(
+        &self,
+        scene: Scene,
+        from_file: Option<PathSide>,
+        job: &RenderJob,
+    ) -> anyhow::Result<(Shot, PathOptions)> {
+        let side = from_file.expect("the scene was read from a file");
+        let world = motion_for_render(self.fuzzy.apply(scene)?, &job.name)?;
+        let options = PathOptions {
+            max_depth: world.scene.max_depth,
+            ..self.path.options(side.options)
+        };
+        let shot = Shot::new(
+            world,
+            Some(side.camera),
+            &self.anti_aliasing,
+            &self.lens,
+            None,
+            job,
+        )?;
+        Ok((shot, options))
+    }
+
+    fn render(
+        &self,
+        (shot, options): (Shot, PathOptions),
+        job: &RenderJob,
+    ) -> anyhow::Result<Rendered> {
+        let method = Method {
+            options,
+            light_sampling: self.lights.options().sampling,
+            fuzz: self.fuzzy.fuzz,
+        };
+        let world = &shot.world;
+        // Dimensions are counted only for --stats, where they are written.
+        let (output, dimensions) = render_counted(
+            job.writes_stats,
+            world,
+            method,
+            &shot.lens,
+            &job.settings,
+            &shot.sampler,
+            &shot.film.filter,
+        );
+        let mut stats = serde_json::json!({
+            "nee": options.nee,
+            "mis": options.mis.name(),
+            "rr_depth": options.rr_depth,
+            "area_lights": AreaLights::of(&world.scene).lights.len(),
+            "point_lights": world.scene.point_lights.len(),
+        });
+        shot.record_stats(&mut stats);
+        self.fuzzy.record_stats(&mut stats);
+        if let Some(dimensions) = dimensions {
+            // What `--stats` writes of them: `{"mean": .., "max": .., "paths": ..}`.
+            stats["dimensions_per_path"] = serde_json::json!({
+                "mean": dimensions.mean,
+                "max": dimensions.max,
+                "paths": dimensions.paths,
+            });
+        }
+        Ok(Rendered {
+            output,
+            stats,
+            detail: String::new(),
+        })
+    }
 }
