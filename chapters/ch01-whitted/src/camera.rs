@@ -73,7 +73,6 @@ impl PinholeCamera {
     }
 
     /// The camera ray through `p_film`.
-    #[inline]
     pub fn generate_ray(&self, p_film: Vec2) -> Ray {
         let d_camera = self.camera_direction(p_film).normalize();
         let dir = self.frame.to_world(d_camera);

@@ -52,7 +52,6 @@ pub fn refract(d: Vec3, n: Vec3, eta: f32) -> Option<Vec3> {
 /// incidence), `eta` the relative index `eta_i / eta_t`. The refracted share is
 /// `1 - fresnel_dielectric(...)`. The answer is a share for every `cos_i` in `[0, 1]`, at
 /// grazing incidence too, and whatever `eta` is, 1 included (the same index on both sides).
-#[inline]
 pub fn fresnel_dielectric(cos_i: f32, eta: f32) -> f32 {
     // BEGIN SOLUTION
     if eta == 1.0 {

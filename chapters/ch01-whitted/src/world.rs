@@ -35,13 +35,11 @@ impl World for Scene {
         self
     }
 
-    #[inline]
     fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         count_ray();
         self.geometry.intersect(ray)
     }
 
-    #[inline]
     fn occluded(&self, ray: &Ray) -> bool {
         count_ray();
         self.geometry.occluded(ray)

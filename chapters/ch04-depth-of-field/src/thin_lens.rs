@@ -61,7 +61,6 @@ impl ThinLensCamera {
     // ANCHOR: generate_ray
     /// The camera ray through film position `p_film`. The lens is the sample's next
     /// dimension after the pixel (and, from chapter 05, the time); a pinhole lens draws none.
-    #[inline]
     pub fn generate_ray<S: Sampler>(&self, p_film: Vec2, sampler: &mut S) -> Ray {
         if self.lens.is_pinhole() {
             return self.pinhole.generate_ray(p_film);

@@ -85,7 +85,6 @@ impl CameraRays {
     /// The camera ray through film point `p_film`. Draws, in order: the time (only if the
     /// shutter is open for a while and something moves), then the lens point (only for an
     /// aperture). The ray carries its time, which every ray of its path keeps.
-    #[inline]
     pub fn generate<S: TimeSampler>(
         &self,
         world: &MotionScene,

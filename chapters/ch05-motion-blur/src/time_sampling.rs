@@ -163,7 +163,6 @@ impl<S: Sampler> StratifiedTime<S> {
 }
 
 impl<S: Sampler> Sampler for StratifiedTime<S> {
-    #[inline]
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
         self.inner.start_pixel_sample(pixel, sample_index);
         if self.strata == 1 {
@@ -178,12 +177,10 @@ impl<S: Sampler> Sampler for StratifiedTime<S> {
         self.stratum = u64::from(permutation_element(i, self.strata as u32, key));
     }
 
-    #[inline]
     fn get_pixel_2d(&mut self) -> Vec2 {
         self.inner.get_pixel_2d()
     }
 
-    #[inline]
     fn get_1d(&mut self) -> f32 {
         self.inner.get_1d()
     }

@@ -133,7 +133,6 @@ impl World for MotionScene {
         &self.scene
     }
 
-    #[inline]
     fn intersect(&self, ray: &Ray) -> Option<SurfaceHit> {
         count_ray();
         let still = self.scene.geometry.intersect(ray);
@@ -145,7 +144,6 @@ impl World for MotionScene {
         self.moving.intersect(&Ray { t_max, ..*ray }).or(still)
     }
 
-    #[inline]
     fn occluded(&self, ray: &Ray) -> bool {
         count_ray();
         self.scene.geometry.occluded(ray) || (!self.moving.is_empty() && self.moving.occluded(ray))

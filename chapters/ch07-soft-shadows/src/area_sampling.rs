@@ -36,7 +36,6 @@ pub fn parallelogram_point_error(quad: &Parallelogram, u: Vec2) -> Vec3 {
 ///
 /// Far from the origin the order of the sums matters: `corner + e1` rounds, and the difference
 /// `(corner + e1) - corner` is then no longer `e1`.
-#[inline]
 pub fn sample_parallelogram_light(quad: &Parallelogram, u: Vec2) -> Option<LightSample> {
     // BEGIN SOLUTION
     use ch02_monte_carlo::warps::{parallelogram_pdf, sample_parallelogram};

@@ -38,7 +38,6 @@ use crate::light_sample::LightSample;
 /// a point chosen with density `pdf_area` per unit area of a light whose normal makes the
 /// angle `θ_A` with the direction to the receiver: `p_ω = p_A d² / |cos θ_A|`. Infinite for
 /// a patch seen edge-on, which covers no solid angle.
-#[inline]
 pub fn pdf_area_to_solid_angle(pdf_area: f32, distance_squared: f32, cos_theta_light: f32) -> f32 {
     pdf_area * distance_squared / cos_theta_light.abs()
 }

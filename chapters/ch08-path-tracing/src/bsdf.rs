@@ -181,7 +181,6 @@ impl Bsdf<'_> {
 
     /// `f(wo, wi) cos θ_i` without the delta parts (0 for a mirror, a smooth metal, smooth or
     /// thin glass; plastic's base without its smooth coat).
-    #[inline]
     pub fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         let hit = self.hit;
         match *self.material {
@@ -262,7 +261,6 @@ impl Bsdf<'_> {
 /// The side is the shading normal's, as in Mitsuba's shading frame: a mesh whose triangles
 /// are wound every which way but whose vertex normals agree (many a PLY teapot) is lit by its
 /// normals, not darkened wherever a triangle happens to face the other way.
-#[inline]
 pub fn facing_normal(hit: &SurfaceHit, wo: Vec3, two_sided: bool) -> Option<Vec3> {
     if wo.dot(hit.shading_n) > 0.0 {
         Some(hit.shading_n)

@@ -48,13 +48,11 @@ impl<'a> EnvironmentLight<'a> {
     }
 
     /// Whether any light comes from outside the scene.
-    #[inline]
     pub fn is_black(&self) -> bool {
         self.constant == Vec3::ZERO && self.map.is_none()
     }
 
     /// The radiance arriving along `direction` (towards the sky) from outside the scene.
-    #[inline]
     pub fn radiance(&self, direction: Vec3) -> Vec3 {
         match self.map {
             None => self.constant,
@@ -64,7 +62,6 @@ impl<'a> EnvironmentLight<'a> {
 
     /// The density per unit solid angle with which [`sample`](Self::sample) draws
     /// `direction`.
-    #[inline]
     pub fn pdf(&self, direction: Vec3) -> f32 {
         match self.map {
             None => uniform_sphere_pdf(),

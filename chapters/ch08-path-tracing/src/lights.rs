@@ -75,7 +75,6 @@ enum ShadowTarget {
 impl LightDirection {
     /// The shadow ray from `receiver` at shutter time `time`: what must be unblocked for the
     /// light to arrive.
-    #[inline]
     pub fn shadow_ray(&self, receiver: &SurfaceHit, time: f32) -> Ray {
         match self.target {
             ShadowTarget::Surface(sample) => sample.shadow_ray(receiver, time),
@@ -144,7 +143,6 @@ impl<'a> SceneLights<'a> {
     /// Whether a ray can find a light by hitting it: an area light or the environment (a
     /// point light it never can). Without, a path's last segment would find nothing. These
     /// are exactly the lights a light sample picks from.
-    #[inline]
     pub fn can_be_hit(&self) -> bool {
         self.count > 0
     }
@@ -156,13 +154,11 @@ impl<'a> SceneLights<'a> {
     }
 
     /// Whether the scene has area lights, which a ray may hit and must then count.
-    #[inline]
     pub fn has_area_lights(&self) -> bool {
         !self.area.is_empty()
     }
 
     /// Whether the scene has a (non-black) environment.
-    #[inline]
     pub fn has_environment(&self) -> bool {
         !self.environment.is_black()
     }
@@ -174,7 +170,6 @@ impl<'a> SceneLights<'a> {
 
     /// The light picked by `u` in `[0, 1)` among the area lights and the environment: area
     /// lights first, then the environment. `None` when there is none of them.
-    #[inline]
     pub fn pick(&self, u: f32) -> Option<LightRef> {
         let n = self.count();
         if n == 0 {
@@ -197,7 +192,6 @@ impl<'a> SceneLights<'a> {
     /// The radiance the area light `light`, which is shape number `shape`, sends from its
     /// point of normal `n` and surface parameters `uv` towards `towards_viewer`: its
     /// radiance on the front side, times its texture at `uv` if it has one.
-    #[inline]
     pub fn emitted(
         &self,
         light: &AreaLight,
@@ -237,7 +231,6 @@ impl<'a> SceneLights<'a> {
 
     /// A direction to `light` from `receiver` with the numbers `u`, or `None` when the light
     /// offers nothing there (no area, a degenerate sample).
-    #[inline]
     pub fn sample(
         &self,
         light: LightRef,
@@ -318,7 +311,6 @@ impl<'a> SceneLights<'a> {
     /// The parallelogram of `light` (shape number `shape`) and the density over its `uv` its
     /// light samples are drawn with, when its radiance is a texture; `None` for every other
     /// light.
-    #[inline]
     fn textured_panel(
         &self,
         light: &AreaLight,
@@ -343,7 +335,6 @@ impl<'a> SceneLights<'a> {
     }
 
     /// The density with which the environment is sampled in `direction`, pick included.
-    #[inline]
     pub fn environment_pdf(&self, direction: Vec3) -> f32 {
         self.pick_probability() * self.environment.pdf(direction)
     }

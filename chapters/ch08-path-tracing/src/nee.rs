@@ -25,7 +25,6 @@ use glam::Vec3;
 /// A delta light (`light_pdf` infinite: a point light, where `emitted` is already `I / d²`,
 /// picked with probability `pick_probability`) cannot be found by the BSDF. Anything with no
 /// chance (a density of 0, or NaN), or carrying nothing, is 0, never NaN.
-#[inline]
 pub fn mis_weighted_contribution(
     emitted: Vec3,
     f_cos: Vec3,
@@ -128,7 +127,6 @@ impl PathTracer<'_> {
 /// each at shutter time `time`, traced only where the light would add something. A point
 /// light is a delta, so no number is drawn and no MIS weight is needed: each one is counted
 /// with probability 1, as chapter 01 lights its matte surfaces.
-#[inline]
 pub fn point_lights<W: World>(
     world: &W,
     lights: &SceneLights,
@@ -166,7 +164,6 @@ pub fn point_lights<W: World>(
 /// of `bsdf`, seen from `wo`: like a point light, a delta counted with certainty through one
 /// shadow ray, but from one direction everywhere and with no fall-off: its irradiance on a
 /// surface facing it. The shadow ray leaves the scene unbounded.
-#[inline]
 pub fn directional_lights<W: World>(
     world: &W,
     lights: &SceneLights,

@@ -98,7 +98,6 @@ pub enum Source {
 impl TryRng for Source {
     type Error = Infallible;
 
-    #[inline]
     fn try_next_u32(&mut self) -> Result<u32, Infallible> {
         match self {
             Source::Randu(rng) => rng.try_next_u32(),
@@ -108,7 +107,6 @@ impl TryRng for Source {
         }
     }
 
-    #[inline]
     fn try_next_u64(&mut self) -> Result<u64, Infallible> {
         match self {
             Source::Randu(rng) => rng.try_next_u64(),
@@ -118,7 +116,6 @@ impl TryRng for Source {
         }
     }
 
-    #[inline]
     fn try_fill_bytes(&mut self, destination: &mut [u8]) -> Result<(), Infallible> {
         match self {
             Source::Randu(rng) => rng.try_fill_bytes(destination),

@@ -51,7 +51,6 @@ impl Minstd {
     /// The product of a 31-bit state and 16807 needs 46 bits, so it is formed in 64-bit
     /// arithmetic. (In the 1980s, without 64-bit integers, Schrage's method did the same with
     /// 32-bit operations.)
-    #[inline]
     pub fn next_state(&mut self) -> u32 {
         self.state = (u64::from(self.state) * MINSTD_MULTIPLIER % MINSTD_MODULUS) as u32;
         self.state
@@ -61,17 +60,14 @@ impl Minstd {
 impl TryRng for Minstd {
     type Error = Infallible;
 
-    #[inline]
     fn try_next_u32(&mut self) -> Result<u32, Infallible> {
         Ok(self.next_state() << 1)
     }
 
-    #[inline]
     fn try_next_u64(&mut self) -> Result<u64, Infallible> {
         next_u64_via_u32(self)
     }
 
-    #[inline]
     fn try_fill_bytes(&mut self, destination: &mut [u8]) -> Result<(), Infallible> {
         fill_bytes_via_next_word(destination, || self.try_next_u32())
     }

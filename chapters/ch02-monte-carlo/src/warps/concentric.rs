@@ -25,7 +25,6 @@ use super::disc::polar_to_cartesian;
 ///
 /// The centre of the square, `u = (1/2, 1/2)`, would divide 0 by 0 for its angle; it goes to
 /// the centre of the disc explicitly.
-#[inline]
 pub fn sample_uniform_disc_concentric(u: Vec2) -> Vec2 {
     let offset = 2.0 * u - Vec2::ONE;
     if offset == Vec2::ZERO {

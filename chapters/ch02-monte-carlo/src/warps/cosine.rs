@@ -27,7 +27,6 @@ use super::concentric;
 ///
 /// `1 - x² - y²` can round to a hair below 0 at the rim; clamping keeps the square root
 /// finite.
-#[inline]
 pub fn sample_cosine_hemisphere(u: Vec2) -> Vec3 {
     // BEGIN SOLUTION
     let d = concentric::sample_uniform_disc_concentric(u);

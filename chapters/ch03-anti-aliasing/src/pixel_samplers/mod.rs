@@ -125,7 +125,6 @@ impl PixelSampler {
 }
 
 impl Sampler for PixelSampler {
-    #[inline]
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
         match self {
             PixelSampler::Centre(s) => s.start_pixel_sample(pixel, sample_index),
@@ -135,7 +134,6 @@ impl Sampler for PixelSampler {
         }
     }
 
-    #[inline]
     fn get_pixel_2d(&mut self) -> Vec2 {
         match self {
             PixelSampler::Centre(s) => s.get_pixel_2d(),
@@ -145,7 +143,6 @@ impl Sampler for PixelSampler {
         }
     }
 
-    #[inline]
     fn get_1d(&mut self) -> f32 {
         match self {
             PixelSampler::Centre(s) => s.get_1d(),

@@ -33,19 +33,16 @@ impl RandomSampler {
 }
 
 impl Sampler for RandomSampler {
-    #[inline]
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
         self.numbers.start_pixel_sample(pixel, sample_index);
     }
 
-    #[inline]
     fn get_pixel_2d(&mut self) -> Vec2 {
         // For ξ in [1/4, 1) both steps of `0.5 + (ξ - 0.5)` are exact in f32 (Sterbenz), so
         // ξ just below 1 stays below 1: the sample never lands in the next pixel.
         random_offset(self.numbers.get_2d())
     }
 
-    #[inline]
     fn get_1d(&mut self) -> f32 {
         self.numbers.get_1d()
     }

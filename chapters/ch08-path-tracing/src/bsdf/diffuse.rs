@@ -26,7 +26,6 @@ pub fn sample(
 }
 
 /// `ρ / π · cos θ_i` for `wi` on `wo`'s side, else 0.
-#[inline]
 pub fn eval(hit: &SurfaceHit, wo: Vec3, wi: Vec3, albedo: Vec3, two_sided: bool) -> Vec3 {
     match facing_normal(hit, wo, two_sided) {
         Some(normal) => albedo * (FRAC_1_PI * wi.dot(normal).max(0.0)),
