@@ -146,9 +146,9 @@ mod tests {
             table.contains("| **ch01** | **all of the chapter's figures** | **1.80** | |"),
             "{table}"
         );
-        // 1.3 + ... + 8.3 and eight halves.
+        // 1.3 + ... + 9.3 and nine halves.
         assert!(
-            table.contains("| **every figure of the book** | **42.40** | |"),
+            table.contains("| **every figure of the book** | **52.20** | |"),
             "{table}"
         );
         assert_eq!(table.lines().count(), 2 + CHAPTERS.len() * 3 + 1);
