@@ -1,16 +1,14 @@
 //! Shared helpers: the mean radiance of many paths through fixed film positions, with its
-//! standard error, the chapter's scene files, and the binary's `render` at a tiny size or
+//! standard error, the crate's scene files, and the binary's `render` at a tiny size or
 //! on a scene written in the test.
 #![allow(dead_code)]
 
-use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::CameraRays;
 use ch05_motion_blur::MotionScene;
 use ch07_soft_shadows::AreaLights;
 use ch08_path_tracing::{Method, PathOptions, PathTracer, SceneLights};
-use ch09_materials::{SceneMaterials, render_with};
-use common::render::{RenderOutput, RenderSettings};
+use ch09_materials::SceneMaterials;
 use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 use std::path::Path;
@@ -36,25 +34,6 @@ pub fn scene_file(name: &str) -> SceneFile {
         options: ch08_path_tracing::lab::scene_file::path_options(&loaded.scene),
         world: MotionScene::new(loaded.scene).expect("its motion is valid"),
     }
-}
-
-/// `scene` path-traced through a pinhole at `width` x `height` with `spp` samples per pixel
-/// (box filter, independent samples from `seed`), with `options` and the default method.
-pub fn render_pinhole(
-    scene: &MotionScene,
-    options: PathOptions,
-    (width, height, spp): (u32, u32, u64),
-    seed: u64,
-) -> RenderOutput {
-    let filter = ReconstructionFilter::new(FilterKind::Box, None).unwrap();
-    render_with(
-        scene,
-        Method::new(options),
-        &Lens::PINHOLE,
-        &RenderSettings::new(width, height, spp),
-        &IndependentSampler::new(seed),
-        &filter,
-    )
 }
 
 /// The mean luminance-free green channel of `n` paths through each film position of
