@@ -20,10 +20,11 @@ pub const CHAPTERS: &[&str] = &[
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
     "ch08-path-tracing",
+    "ch09-materials",
 ];
 
 /// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
-/// Chapter 08 renders only scene files: run it with [`scene_args`].
+/// Chapter 08 and `ch09-materials` render only scene files: run them with [`scene_args`].
 pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch01-whitted",
     "ch03-anti-aliasing",
@@ -32,6 +33,7 @@ pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
     "ch08-path-tracing",
+    "ch09-materials",
 ];
 
 /// The suite's smallest scene file (8x6 pixels, one sample per pixel, a ball on a floor under
@@ -39,12 +41,13 @@ pub const RENDERING_CHAPTERS: &[&str] = &[
 pub const TINY_SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/tiny.xml");
 
 /// What `render` of `chapter` needs to render anything, to put after `render`: nothing for
-/// the chapters with built-in scenes, `--scene` [`TINY_SCENE`] for chapter 08, which has none.
+/// the chapters with built-in scenes, `--scene` [`TINY_SCENE`] for chapter 08 and
+/// `ch09-materials`, which have none.
 /// Tests give the size and sample count they want on the command line; those override the
 /// file's.
 pub fn scene_args(chapter: &str) -> &'static [&'static str] {
     match chapter {
-        "ch08-path-tracing" => &["--scene", TINY_SCENE],
+        "ch08-path-tracing" | "ch09-materials" => &["--scene", TINY_SCENE],
         _ => &[],
     }
 }

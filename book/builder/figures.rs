@@ -26,6 +26,7 @@ pub const CHAPTERS: &[(&str, &str)] = &[
     ("ch06", "ch06-fuzzy-reflections"),
     ("ch07", "ch07-soft-shadows"),
     ("ch08", "ch08-path-tracing"),
+    ("ch09", "ch09-materials"),
 ];
 
 /// Each chapter's figure writer, in the order of [`CHAPTERS`]. Only the `figures` feature
@@ -41,6 +42,7 @@ const WRITERS: &[WriteFigures] = &[
     ch06_fuzzy_reflections::lab::figures::write_all,
     ch07_soft_shadows::lab::figures::write_all,
     ch08_path_tracing::lab::figures::write_all,
+    ch09_materials::lab::figures::write_all,
 ];
 
 /// The name of the table of every figure's cost, beside the chapters' folders.
@@ -144,9 +146,9 @@ mod tests {
             table.contains("| **ch01** | **all of the chapter's figures** | **1.80** | |"),
             "{table}"
         );
-        // 1.3 + ... + 8.3 and eight halves.
+        // 1.3 + ... + 9.3 and nine halves.
         assert!(
-            table.contains("| **every figure of the book** | **42.40** | |"),
+            table.contains("| **every figure of the book** | **52.20** | |"),
             "{table}"
         );
         assert_eq!(table.lines().count(), 2 + CHAPTERS.len() * 3 + 1);

@@ -27,7 +27,8 @@ struct Case {
 
 const ALL: &[&str] = CHAPTERS;
 const RENDERING: &[&str] = RENDERING_CHAPTERS;
-/// The rendering chapters with built-in scenes (`--builtin`): all but chapter 08.
+/// The rendering chapters with built-in scenes (`--builtin`): all but chapter 08 and the
+/// renderer of real scene files.
 const BUILTIN: &[&str] = &[
     "ch01-whitted",
     "ch03-anti-aliasing",
@@ -44,6 +45,7 @@ const ANTI_ALIASED: &[&str] = &[
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
     "ch08-path-tracing",
+    "ch09-materials",
 ];
 /// The chapters with chapter 04's lens options.
 const WITH_LENS: &[&str] = &[
@@ -52,6 +54,7 @@ const WITH_LENS: &[&str] = &[
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
     "ch08-path-tracing",
+    "ch09-materials",
 ];
 const CH05: &[&str] = &["ch05-motion-blur"];
 /// The chapters with chapter 05's shutter and motion.
@@ -60,17 +63,20 @@ const WITH_MOTION: &[&str] = &[
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
     "ch08-path-tracing",
+    "ch09-materials",
 ];
 /// The chapters with chapter 06's lobes and choices at glass.
 const FUZZY: &[&str] = &[
     "ch06-fuzzy-reflections",
     "ch07-soft-shadows",
     "ch08-path-tracing",
+    "ch09-materials",
 ];
 const CH07: &[&str] = &["ch07-soft-shadows"];
 /// The chapters with chapter 07's area lights and their sampling options.
-const AREA_LIGHTS: &[&str] = &["ch07-soft-shadows", "ch08-path-tracing"];
-const CH08: &[&str] = &["ch08-path-tracing"];
+const AREA_LIGHTS: &[&str] = &["ch07-soft-shadows", "ch08-path-tracing", "ch09-materials"];
+/// Chapter 08's path options, which the renderer of real scene files shares.
+const CH08: &[&str] = &["ch08-path-tracing", "ch09-materials"];
 const CH01: &[&str] = &["ch01-whitted"];
 const CH02: &[&str] = &["ch02-monte-carlo"];
 /// The chapters before chapter 04, which have no lens.
@@ -98,7 +104,7 @@ const fn case(
     }
 }
 
-/// A row run exactly as written, even by chapter 08: a row about a missing scene.
+/// A row run exactly as written, even by chapter 08 and ch09: a row about a missing scene.
 const fn bare(
     chapters: &'static [&'static str],
     args: &'static [&'static str],

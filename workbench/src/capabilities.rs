@@ -21,7 +21,7 @@ use std::fmt;
 /// A chapter of the workbook, named in messages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Chapter {
-    /// Its number, 1 to 8.
+    /// Its number, 1 to 9.
     pub number: u32,
     /// Its package, such as `ch07-soft-shadows`.
     pub package: &'static str,
@@ -69,6 +69,11 @@ impl Chapter {
     pub const PATH_TRACING: Chapter = Chapter {
         number: 8,
         package: "ch08-path-tracing",
+    };
+    /// Beyond the lecture: Mitsuba's materials over chapter 08's path loop.
+    pub const MATERIALS: Chapter = Chapter {
+        number: 9,
+        package: "ch09-materials",
     };
 }
 
@@ -157,13 +162,13 @@ impl Feature {
             | Feature::DirectionalLight
             | Feature::HiddenEmitters
             | Feature::DirectSampleCounts
-            | Feature::MetalFresnel
+            | Feature::TexturedAreaLight => Some(Chapter::PATH_TRACING),
+            Feature::MetalFresnel
             | Feature::ThinDielectric
             | Feature::Plastic
             | Feature::Mask
             | Feature::TexturedMaterial
-            | Feature::TexturedAreaLight
-            | Feature::TintedGlass => Some(Chapter::PATH_TRACING),
+            | Feature::TintedGlass => Some(Chapter::MATERIALS),
             Feature::MovingAreaLight => None,
         }
     }
@@ -333,12 +338,13 @@ impl Capabilities {
         Ok(notes)
     }
 
-    /// Replaces, in a chapter before 08, every material with a lecture stand-in by it
-    /// ([`Material::lecture_stand_in`]), so that the chapter's tracer meets only the
-    /// lecture's materials; [`check`](Self::check) writes the notes that say so. Chapter 08
-    /// renders the materials themselves and leaves the scene as it is.
+    /// Replaces, in a chapter that does not render metals (the lecture's chapters), every
+    /// material with a lecture stand-in by it ([`Material::lecture_stand_in`]), so that the
+    /// chapter's tracer meets only the lecture's materials; [`check`](Self::check) writes the
+    /// notes that say so. The chapter that renders the materials themselves leaves the scene
+    /// as it is.
     pub fn put_in_stand_ins(&self, scene: &mut Scene) {
-        if self.chapter.number >= Chapter::PATH_TRACING.number {
+        if self.renders(Feature::MetalFresnel) {
             return;
         }
         for surface in &mut scene.surfaces {
@@ -728,9 +734,13 @@ mod tests {
     }
 
     #[test]
-    fn metals_get_the_lectures_stand_in_before_chapter_08_and_thin_glass_and_plastic_wait() {
+    fn metals_get_the_lectures_stand_in_before_chapter_09_and_thin_glass_and_plastic_wait() {
         const PATH_TRACING: Capabilities = Capabilities {
             chapter: Chapter::PATH_TRACING,
+            approximates: &[],
+        };
+        const MATERIALS: Capabilities = Capabilities {
+            chapter: Chapter::MATERIALS,
             approximates: &[],
         };
         let gold = common::scene::Conductor {
@@ -747,13 +757,15 @@ mod tests {
         assert!(
             notes[0].starts_with("a metal (shape 1: rendered as a mirror of reflectance (0.967")
                 && notes[0].contains("normal incidence")
-                && notes[0].contains("chapter 08"),
+                && notes[0].contains("chapter 09"),
             "{notes:?}"
         );
-        assert_eq!(PATH_TRACING.check(&metal), Ok(Vec::new()));
-        PATH_TRACING.put_in_stand_ins(&mut metal);
+        // Chapter 08, the last of the lecture, stands in as the chapters before it do.
+        assert_eq!(PATH_TRACING.check(&metal).unwrap(), notes);
+        assert_eq!(MATERIALS.check(&metal), Ok(Vec::new()));
+        MATERIALS.put_in_stand_ins(&mut metal);
         assert_eq!(metal.surfaces[0].material, Material::Conductor(gold));
-        WHITTED.put_in_stand_ins(&mut metal);
+        PATH_TRACING.put_in_stand_ins(&mut metal);
         assert!(
             matches!(metal.surfaces[0].material, Material::Mirror { reflectance } if reflectance.z < 0.5)
         );
@@ -816,10 +828,15 @@ mod tests {
             let beyond = scene(SceneBuilder::new().shape(sphere(), material));
             let refusal = SOFT_SHADOWS.check(&beyond).unwrap_err();
             assert!(
-                refusal.starts_with(words) && refusal.contains("chapter 08 (ch08-path-tracing)"),
+                refusal.starts_with(words) && refusal.contains("chapter 09 (ch09-materials)"),
                 "{refusal}"
             );
-            assert_eq!(PATH_TRACING.check(&beyond), Ok(Vec::new()));
+            let refusal = PATH_TRACING.check(&beyond).unwrap_err();
+            assert!(
+                refusal.starts_with(words) && refusal.contains("chapter 09 (ch09-materials)"),
+                "{refusal}"
+            );
+            assert_eq!(MATERIALS.check(&beyond), Ok(Vec::new()));
         }
     }
 

@@ -19,9 +19,9 @@ use glam::Vec3;
 /// Every ray it spawns leaves by `hit.spawn_ray` and keeps the ray's shutter `time`. A
 /// textured matte surface's albedo at the hit is `scene.albedo(texture, hit.uv)`. A mirror
 /// reflects on its front side only, the side `hit.n` points to. Chapter 06's materials
-/// (`Glossy`, `RoughGlass`) and chapter 08's (`Conductor`, `ThinDielectric`, `Plastic`, `Mask`,
-/// `TintedGlass`) reflect nothing here: the capability check refuses them or puts the
-/// lecture's stand-in in their place.
+/// (`Glossy`, `RoughGlass`) and those beyond the lecture, which `ch09-materials` renders
+/// (`Conductor`, `ThinDielectric`, `Plastic`, `Mask`, `TintedGlass`), reflect nothing here: the
+/// capability check refuses them or puts the lecture's stand-in in their place.
 pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32) -> Vec3 {
     // BEGIN SOLUTION
     use crate::optics::reflect;
@@ -54,8 +54,8 @@ pub fn trace<W: World>(world: &W, ray: &Ray, depth: u32) -> Vec3 {
                 trace(world, next, depth + 1)
             })
         }
-        // Chapters 06 and 08's materials; the capability check keeps them from this chapter
-        // (a metal arrives as the mirror that stands in for it).
+        // Chapter 06's materials and those beyond the lecture; the capability check keeps them
+        // from this chapter (a metal arrives as the mirror that stands in for it).
         Material::Glossy(_)
         | Material::RoughGlass(_)
         | Material::Conductor(_)

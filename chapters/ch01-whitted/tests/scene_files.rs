@@ -310,7 +310,7 @@ fn a_gold_sphere_renders_as_the_mirror_of_its_colour_square_on_with_a_note() {
     assert!(
         notes.iter().any(
             |n| n.contains("a metal (shape 2: rendered as a mirror of reflectance")
-                && n.contains("chapter 08")
+                && n.contains("chapter 09")
         ),
         "{notes:?}"
     );

@@ -101,8 +101,8 @@ impl<L: Lighting> Tracer<'_, L> {
                 depth,
                 sampler,
             ),
-            // Chapter 08's materials: the capability check refuses them or puts the lecture's
-            // stand-in (a mirror or a lobe for a metal) in their place.
+            // The materials beyond the lecture (ch09-materials): the capability check refuses
+            // them or puts the lecture's stand-in (a mirror or a lobe for a metal) in their place.
             Material::Conductor(_)
             | Material::TexturedDiffuse { .. }
             | Material::ThinDielectric { .. }

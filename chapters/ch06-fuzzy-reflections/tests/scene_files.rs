@@ -108,14 +108,14 @@ fn every_rough_material_is_read_and_wrong_ones_are_refused() {
         r#"<bsdf type="roughconductor"><string name="material" value="Au"/><float name="alpha" value="0.2"/></bsdf>"#,
     );
     assert!(matches!(gold, Material::Glossy(g) if g.reflectance.x > 0.9 && g.reflectance.z < 0.5));
-    // Plastic waits for chapter 08.
+    // Plastic waits for the materials beyond the lecture.
     let plastic = convert_with(r#"<bsdf type="plastic"/>"#).unwrap_err();
-    assert!(plastic.contains("chapter 08"), "{plastic}");
+    assert!(plastic.contains("chapter 09 (ch09-materials)"), "{plastic}");
     // So do cut-outs, named where the file writes them.
     let mask = convert_with(r#"<bsdf type="mask"><bsdf type="diffuse"/></bsdf>"#).unwrap_err();
     assert!(
         mask.starts_with("line 3, column 14: a cut-out (mask) (shape 1);")
-            && mask.contains("in chapter 08 (ch08-path-tracing)"),
+            && mask.contains("in chapter 09 (ch09-materials)"),
         "{mask}"
     );
     for (bsdf, expected) in [

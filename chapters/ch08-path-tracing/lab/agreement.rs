@@ -28,26 +28,6 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             variant: MITSUBA_VARIANT,
         },
         AgreementScene {
-            name: "metals",
-            checks: "smooth conductors: gold by Mitsuba's name (a sphere, and a sheet on the floor seen at grazing angles), eta and k given as colours, a chromium panel; the conductor Fresnel equations",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "coated-and-thin",
-            checks: "smooth plastic (linear and nonlinear) under an area light, with its light sample and MIS, and a thin glass pane that shows the light in its reflection and casts a shadow",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "rough-metals",
-            checks: "roughconductor: GGX gold, Beckmann aluminium and an anisotropic GGX copper sheet (alpha_u 0.05 along x, alpha_v 0.3) seen at grazing angles; visible-normal sampling, Smith's shadowing and the facets' Fresnel term, with light samples and MIS",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "rough-plastic-and-glass",
-            checks: "roughplastic with Beckmann and GGX coatings (linear and nonlinear) and a GGX roughdielectric sphere: the coating's tabulated transmittance, reflection and refraction through facets",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
             name: "textured",
             checks: "textures: a checkerboard scaled by its to_uv on a floor and on a disk, an sRGB bitmap read bilinearly and repeated on a wall and on a cube's faces, the same image read nearest and mirrored on a sphere turned by its to_world (its uv turn with it); each shape's uv as Mitsuba's",
             variant: MITSUBA_VARIANT,
@@ -63,36 +43,6 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             variant: MITSUBA_VARIANT,
         },
         AgreementScene {
-            name: "veach-plates",
-            checks: "Veach's multiple-importance plates, our own: the direct integrator (one light and one BSDF sample per hit, power heuristic) on four roughplastic plates from alpha 0.02 to 0.25 under four sphere lights of equal power from radius 0.1 to 0.8, hidden from the camera (which then sees through them, as Mitsuba's hide_emitters does)",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "veach-plates-counts",
-            checks: "the same plates with the direct integrator's emitter_samples 3 and bsdf_samples 2: the multi-sample power heuristic, each density weighed by its count, each estimate divided by it",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "masked",
-            checks: "mask: a two-sided card with holes cut by a checkerboard opacity and a one-sided card of opacity 0.4, with the sphere and box behind them seen through, their shadows (shadow rays stopped by a mask, as in Mitsuba) and light passing through them",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "textured-more",
-            checks: "textures beyond a diffuse reflectance: a bitmap as a rough plastic's base, a checkerboard as a smooth plastic's base and as a factor on rough gold's reflection, the bitmap again as a mirror's reflectance, smooth and rough glass with factors on their reflection and transmission (one a checkerboard), and two lights whose radiance is a checkerboard (a wall seen directly, the main light above), read where rays hit them and where light samples land on them",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "rough-textured",
-            checks: "roughness as a texture: a GGX gold floor whose alpha is a checkerboard of 0.1 and 0.35, a Beckmann glass sphere whose alpha is a checkerboard of 0.05 and 0.4; each width read as Mitsuba reads one number from a texture",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "envmap",
-            checks: "an environment map (envmap): a Radiance HDR sky with a small sun, scaled and turned by its to_world, seen directly, in a smooth chromium sphere and a rough gold one, and lighting a matte sphere and floor; its lookup, its light samples and their density in MIS",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
             name: "smooth-mesh",
             checks: "a coarse mesh sphere with vertex normals as glass and as a mirror: both turn light about the interpolated shading normal, as Mitsuba's shading frame does, so they look round rather than cut",
             variant: MITSUBA_VARIANT,
@@ -100,16 +50,6 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
         AgreementScene {
             name: "textured-light",
             checks: "a panel light whose radiance is an image with bright patches on a dim background: its light samples picked where the image is bright, as Mitsuba picks them by the texture (picked by area they are far noisier)",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "sunlit",
-            checks: "two directional lights (Mitsuba's directional: infinitely far away, one given by its direction, one by its to_world) with a constant sky: deltas connected through one shadow ray each, sharp shadows, their highlights on rough gold",
-            variant: MITSUBA_VARIANT,
-        },
-        AgreementScene {
-            name: "brushed",
-            checks: "anisotropic roughness (alpha_u and alpha_v) brushed along each shape's dp/du as Mitsuba's shading frame takes it: a turned sphere along its parallels, a mesh along its texture's u (not its edges), a disk along its radii, a copper panel and a rough glass pane turned about their normals",
             variant: MITSUBA_VARIANT,
         },
     ],

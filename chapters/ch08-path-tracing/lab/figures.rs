@@ -12,11 +12,6 @@
 //! - the numbers each path draws in the agreement scenes (`dimensions.md`), and the static
 //!   pinhole scene timed against chapter 03's tracer (`static-pinhole.md`), for the Speed
 //!   appendix;
-//! - beyond the lecture, the microfacet models: chapter 06's `cos^n` lobe against GGX and
-//!   Beckmann of the same roughness (`microfacet-lobes.png`), the white furnace of a rough
-//!   mirror (`microfacet-furnace.png`/`.md`), the visible normals against their density
-//!   (`microfacet-visible-normals.png`) and the chi-square test of the normal samplers
-//!   (`microfacet-chi2.md`);
 //! - the comparison with Mitsuba 3 (`mitsuba.md` and its images).
 //!
 //! Beside each CSV a small Markdown file (a table or a sentence) holds the numbers the page
@@ -24,12 +19,11 @@
 //!
 //! The quick level renders thumbnails at few samples, for CI.
 
+use crate::LectureMaterials;
 use crate::dimensions::render_counted;
 use crate::distribution_tracer::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
 use crate::distribution_tracer::{DistributionOptions, render_distribution};
 use crate::lab::agreement::AGREEMENT;
-use crate::lab::microfacet_chi2_table as chi2_table;
-use crate::lab::microfacet_figures as mf_figures;
 use crate::lab::scene_file::path_options;
 use crate::mis::MisHeuristic;
 use crate::options::PathOptions;
@@ -42,7 +36,7 @@ use common::image::Image;
 use common::metrics::rmse;
 use common::render::{Budget, RenderOutput, RenderSettings};
 use common::sampler::IndependentSampler;
-use common::scene::{Material, MicrofacetDistribution};
+use common::scene::Material;
 use std::path::Path;
 use std::time::Instant;
 use workbench::convergence::{
@@ -192,17 +186,6 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.make("the static pinhole scene against chapter 03", |out| {
         static_pinhole(out, &quality)
     })?;
-    figures.make(
-        "microfacets: the cos^n lobe against GGX and Beckmann",
-        microfacet_lobes,
-    )?;
-    figures.make("microfacets: the white furnace", |out| {
-        microfacet_furnace(out, &quality)
-    })?;
-    figures.make(
-        "microfacets: visible normals and the chi-square test",
-        |out| microfacet_sampling(out, &quality),
-    )?;
     figures.agreement(&AGREEMENT)?;
     figures.finish()
 }
@@ -593,58 +576,6 @@ fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
 }
 // ANCHOR_END: glossy_plates
 
-/// The roughnesses of the lobe figure: a sharp and a rough one.
-const LOBE_ALPHAS: [f32; 2] = [0.1, 0.4];
-
-/// Chapter 06's `cos^n` lobe beside GGX and Beckmann of the same `alpha`, light from 40°.
-fn microfacet_lobes(out: &Path) -> anyhow::Result<()> {
-    mf_figures::lobes(&out.join("microfacet-lobes.png"), &LOBE_ALPHAS, 40.0)?;
-    let mut text = String::from("| α | the exponent n = 2/α² − 2 |\n|---|---|\n");
-    for alpha in LOBE_ALPHAS {
-        text += &format!("| {alpha} | {:.0} |\n", mf_figures::lobe_exponent(alpha));
-    }
-    write_text(&out.join("microfacet-lobes.md"), &text)?;
-    Ok(())
-}
-
-/// The white furnace of a rough white mirror: albedo against roughness, the table at three
-/// roughnesses.
-fn microfacet_furnace(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    // The table's roughnesses are among the curves' at both levels.
-    let alphas: Vec<f32> = quality.level.pick(
-        vec![0.1, 0.25, 0.5, 0.75, 1.0],
-        (1..=20).map(|i| i as f32 * 0.05).collect(),
-    );
-    let incidences = quality
-        .level
-        .pick(&[0.0, 70.0, 85.0][..], &[0.0, 45.0, 70.0, 85.0]);
-    let curves = mf_figures::furnace(&out.join("microfacet-furnace.png"), incidences, &alphas)?;
-    write_text(
-        &out.join("microfacet-furnace.md"),
-        &mf_figures::furnace_markdown(&curves, &[0.1, 0.5, 1.0]),
-    )?;
-    Ok(())
-}
-
-/// GGX's visible normals against their density, and the chi-square table of the samplers.
-fn microfacet_sampling(out: &Path, quality: &Quality) -> anyhow::Result<()> {
-    let samples = quality.level.pick(50_000, 400_000);
-    mf_figures::visible_normals(
-        &out.join("microfacet-visible-normals.png"),
-        MicrofacetDistribution::Ggx,
-        0.5,
-        60.0,
-        samples,
-    )?;
-    let samples = quality.level.pick(20_000, 200_000);
-    let rows = chi2_table::rows(samples, &[0.3, 1.0], &[0.0, 60.0, 85.0]);
-    write_text(
-        &out.join("microfacet-chi2.md"),
-        &chi2_table::markdown(&rows, samples),
-    )?;
-    Ok(())
-}
-
 /// "lower than", "higher than" or "the same as", for `a` compared with `b`, as printed to
 /// three decimals: the generated sentences say what the numbers beside them say.
 fn lower_or_higher(a: f64, b: f64) -> &'static str {
@@ -691,6 +622,7 @@ fn dimensions(out: &Path, quality: &Quality) -> anyhow::Result<()> {
             true,
             scene,
             Method::new(file.options),
+            LectureMaterials::default(),
             &Lens::PINHOLE,
             &settings,
             &IndependentSampler::new(1),

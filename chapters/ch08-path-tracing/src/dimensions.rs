@@ -12,7 +12,8 @@
 //! tile) and reach the shared [`DimensionTally`] once, when the tile's copy is dropped: no
 //! atomic operation per sample. A render without `--stats` does not use the wrapper at all.
 
-use crate::{Method, render_with};
+use crate::bsdf::Materials;
+use crate::{Method, render_with_materials};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch05_motion_blur::TimeSampler;
@@ -167,13 +168,15 @@ impl<S> Drop for CountingSampler<'_, S> {
     }
 }
 
-/// [`render_with`], and with `count` also the dimensions per path. Without `count` this is
-/// exactly `render_with` with `sampler`; with it, the same image, through a
+/// [`render_with_materials`], and with `count` also the dimensions per path. Without `count`
+/// this is exactly `render_with_materials` with `sampler`; with it, the same image, through a
 /// [`CountingSampler`].
-pub fn render_counted<S: TimeSampler>(
+#[allow(clippy::too_many_arguments)]
+pub fn render_counted<S: TimeSampler, M: Materials>(
     count: bool,
     scene: &MotionScene,
     method: Method,
+    materials: M,
     lens: &Lens,
     settings: &RenderSettings,
     sampler: &S,
@@ -181,13 +184,13 @@ pub fn render_counted<S: TimeSampler>(
 ) -> (RenderOutput, Option<DimensionStats>) {
     if !count {
         return (
-            render_with(scene, method, lens, settings, sampler, filter),
+            render_with_materials(scene, method, materials, lens, settings, sampler, filter),
             None,
         );
     }
     let tally = DimensionTally::default();
     let counting = CountingSampler::new(sampler.clone(), &tally);
-    let output = render_with(scene, method, lens, settings, &counting, filter);
+    let output = render_with_materials(scene, method, materials, lens, settings, &counting, filter);
     drop(counting);
     (output, Some(tally.stats()))
 }

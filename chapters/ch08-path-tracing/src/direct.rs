@@ -21,7 +21,7 @@
 //! are lit for what Mitsuba shows, so the workbook shows the same; with one emitter sample,
 //! the default, the two agree with physics.
 
-use crate::bsdf::Bsdf;
+use crate::bsdf::{Materials, SurfaceBsdf};
 use crate::path::PathTracer;
 use ch01_whitted::world::World;
 use common::Ray;
@@ -29,7 +29,7 @@ use common::sampler::Sampler;
 use common::scene::DirectSamples;
 use glam::Vec3;
 
-impl PathTracer<'_> {
+impl<M: Materials> PathTracer<'_, M> {
     /// The radiance arriving along `camera_ray` by Mitsuba's `direct` integrator with
     /// `samples`: what the surface it meets emits, and the light reaching that surface
     /// straight from the lights, estimated by both strategies (see the module).
@@ -54,12 +54,8 @@ impl PathTracer<'_> {
                 .lights
                 .emitted(light, hit.shape, hit.n, || Some(hit.uv), -ray.dir);
         }
-        let bsdf = Bsdf {
-            material: &self.world.material_at(&hit),
-            hit: &hit,
-            fuzz: self.fuzz,
-            coatings: &self.coatings,
-        };
+        let material = self.world.material_at(&hit);
+        let bsdf = self.materials.bsdf(&material, &hit);
         let wo = -ray.dir;
         let counts = DirectSamples {
             emitter: if self.options.nee { samples.emitter } else { 0 },
@@ -88,7 +84,7 @@ impl PathTracer<'_> {
     /// samples and divided by its own count.
     fn counted_bsdf_sample<S: Sampler>(
         &self,
-        bsdf: &Bsdf,
+        bsdf: &impl SurfaceBsdf,
         wo: Vec3,
         time: f32,
         counts: DirectSamples,
@@ -97,13 +93,15 @@ impl PathTracer<'_> {
         let Some(sample) = bsdf.sample(wo, sampler) else {
             return Vec3::ZERO;
         };
-        let (emitted, light_pdf) = match self.world.intersect(&bsdf.hit.spawn_ray(sample.wi, time))
+        let (emitted, light_pdf) = match self
+            .world
+            .intersect(&bsdf.hit().spawn_ray(sample.wi, time))
         {
             Some(found) => match self.lights.area_light_of(found.shape) {
                 Some(light) => (
                     self.lights
                         .emitted(light, found.shape, found.n, || Some(found.uv), -sample.wi),
-                    self.lights.area_pdf(light, bsdf.hit.p, found.p, found.n),
+                    self.lights.area_pdf(light, bsdf.hit().p, found.p, found.n),
                 ),
                 None => return Vec3::ZERO,
             },

@@ -28,9 +28,8 @@
 
 pub mod ray_tree;
 
-use crate::bsdf::Bsdf;
+use crate::bsdf::{Bsdf, SurfaceBsdf};
 use crate::lights::SceneLights;
-use crate::microfacet::coating::Coatings;
 use crate::nee::point_lights;
 use ch01_whitted::world::World;
 use ch04_depth_of_field::Lens;
@@ -98,8 +97,6 @@ pub struct DistributionTracer<'a> {
     pub options: DistributionOptions,
     /// How fuzzy lobes spread.
     pub fuzz: FuzzMethod,
-    /// The rough plastics' coatings, tabulated here, before any ray is traced.
-    pub coatings: Coatings,
 }
 
 impl<'a> DistributionTracer<'a> {
@@ -117,7 +114,6 @@ impl<'a> DistributionTracer<'a> {
             lights: SceneLights::of(world, area_lights, light_options.sampling),
             options,
             fuzz: FuzzMethod::Lobe,
-            coatings: Coatings::of(&world.scene),
         }
     }
 
@@ -152,7 +148,6 @@ impl<'a> DistributionTracer<'a> {
             material: &self.world.material_at(&hit),
             hit: &hit,
             fuzz: self.fuzz,
-            coatings: &self.coatings,
         };
         let wo = -ray.dir.normalize();
         let k = self.options.material_samples.max(1);

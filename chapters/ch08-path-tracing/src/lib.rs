@@ -7,18 +7,17 @@
 //! by multiple importance sampling. Indirect diffuse light, which chapters 01 to 07 leave out,
 //! is now simply one more bounce.
 //!
-//! - [`bsdf`]: every chapter 06 material's sample, `f cos θ` and density, one module each.
+//! - [`bsdf`]: every lecture material's sample, `f cos θ` and density, one module each, and
+//!   the two traits through which the path loop takes its materials from outside.
 //! - [`lights`]: area lights, point lights and the environment; every point light is
 //!   connected, one of the others picked uniformly; [`environment`]: the constant environment
 //!   and the environment map as one light.
 //! - [`mis`]: the balance and the power heuristic; [`nee`]: the light sample, its MIS-weighted
 //!   contribution, and the point and directional lights' shadow rays.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
-//! - [`path`]: the path loop; [`render_with`].
+//! - [`path`]: the path loop, generic over the materials it knows; [`render_with`].
 //! - [`distribution_tracer`]: Cook's branching tracer with every effect, for comparison;
 //!   [`render_distribution`].
-//! - [`microfacet`]: beyond the lecture, Mitsuba 3's `roughconductor`, `roughdielectric` and
-//!   `roughplastic` (Beckmann and GGX, visible-normal sampling), in the local frame.
 //! - [`furnace`]: the white furnace.
 //!
 //! The chapter's workbench (its binary and options, a scene file's path options, the book's
@@ -34,7 +33,6 @@ pub mod distribution_tracer;
 pub mod environment;
 pub mod furnace;
 pub mod lights;
-pub mod microfacet;
 pub mod mis;
 pub mod nee;
 pub mod options;
@@ -45,7 +43,7 @@ pub mod roulette;
 #[path = "../lab/mod.rs"]
 pub mod lab;
 
-pub use bsdf::{Bsdf, BsdfSample};
+pub use bsdf::{Bsdf, BsdfSample, LectureMaterials, Materials, SurfaceBsdf};
 pub use distribution_tracer::{DistributionOptions, DistributionTracer, render_distribution};
 pub use lights::SceneLights;
 pub use mis::MisHeuristic;
@@ -59,7 +57,6 @@ use ch06_fuzzy_reflections::FuzzMethod;
 use ch07_soft_shadows::{AreaLights, LightSampling};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
-use microfacet::coating::Coatings;
 
 /// Everything about a path-traced render besides the scene and the image settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -84,12 +81,29 @@ impl Method {
 }
 
 // ANCHOR: render_with
-/// Path-traces `world` through `lens`. Each sample draws, in order: the pixel position, the
-/// time and the lens point (chapter 05's camera rays, each only when needed), then the numbers
-/// of each bounce (see [`path`]). The same seed gives the same image on any number of threads.
+/// Path-traces `world` through `lens` with the lecture's materials. Each sample draws, in
+/// order: the pixel position, the time and the lens point (chapter 05's camera rays, each only
+/// when needed), then the numbers of each bounce (see [`path`]). The same seed gives the same
+/// image on any number of threads.
 pub fn render_with<S: TimeSampler>(
     world: &MotionScene,
     method: Method,
+    lens: &Lens,
+    settings: &RenderSettings,
+    sampler: &S,
+    filter: &dyn Filter,
+) -> RenderOutput {
+    let materials = LectureMaterials { fuzz: method.fuzz };
+    render_with_materials(world, method, materials, lens, settings, sampler, filter)
+}
+// ANCHOR_END: render_with
+
+/// [`render_with`] with the materials given: the same loop over another set of materials
+/// (their tables, if any, made before the threads start).
+pub fn render_with_materials<S: TimeSampler, M: Materials>(
+    world: &MotionScene,
+    method: Method,
+    materials: M,
     lens: &Lens,
     settings: &RenderSettings,
     sampler: &S,
@@ -101,9 +115,7 @@ pub fn render_with<S: TimeSampler>(
         world,
         lights: SceneLights::of(world, &area_lights, method.light_sampling),
         options: method.options,
-        fuzz: method.fuzz,
-        // The rough plastics' coating tables, made before the threads start.
-        coatings: Coatings::of(&world.scene),
+        materials,
     };
     render::render(settings, sampler, filter, |p_film, sampler| {
         let ray = camera_rays.generate(world, p_film, sampler);
@@ -114,4 +126,3 @@ pub fn render_with<S: TimeSampler>(
         }
     })
 }
-// ANCHOR_END: render_with

@@ -7,7 +7,7 @@
 //! find it, so its weight is 1, and since there is nothing on it to sample, [`point_lights`]
 //! counts every one of them with certainty.
 
-use crate::bsdf::Bsdf;
+use crate::bsdf::{Materials, SurfaceBsdf};
 use crate::lights::SceneLights;
 use crate::mis::MisHeuristic;
 use crate::path::PathTracer;
@@ -45,12 +45,12 @@ pub fn mis_weighted_contribution(
 }
 // ANCHOR_END: mis_weighted_contribution
 
-impl PathTracer<'_> {
+impl<M: Materials> PathTracer<'_, M> {
     /// The light of every point light and every directional light at the surface of `bsdf`,
     /// seen from `wo`, each through its own shadow ray at shutter time `time`
     /// ([`point_lights`], [`directional_lights`]): deltas, with nothing to sample, so no number
     /// is drawn.
-    pub fn delta_lights(&self, bsdf: &Bsdf, wo: Vec3, time: f32) -> Vec3 {
+    pub fn delta_lights(&self, bsdf: &impl SurfaceBsdf, wo: Vec3, time: f32) -> Vec3 {
         let mut light = Vec3::ZERO;
         if !self.lights.points.is_empty() {
             light += point_lights(self.world, &self.lights, bsdf, wo, time);
@@ -79,7 +79,7 @@ impl PathTracer<'_> {
     /// at, which is itself a shape of the world.
     pub fn light_sample<S: Sampler>(
         &self,
-        bsdf: &Bsdf,
+        bsdf: &impl SurfaceBsdf,
         wo: Vec3,
         time: f32,
         counts: DirectSamples,
@@ -95,7 +95,7 @@ impl PathTracer<'_> {
         let Some(light) = self.lights.pick(u_pick) else {
             return Vec3::ZERO;
         };
-        let Some(sample) = self.lights.sample(light, bsdf.hit, sampler.get_2d()) else {
+        let Some(sample) = self.lights.sample(light, bsdf.hit(), sampler.get_2d()) else {
             return Vec3::ZERO;
         };
         // Each density times its count: the weight is the multi-sample heuristic's, and
@@ -112,7 +112,7 @@ impl PathTracer<'_> {
         if contribution == Vec3::ZERO {
             return Vec3::ZERO; // nothing to carry: no shadow ray
         }
-        if self.world.occluded(&sample.shadow_ray(bsdf.hit, time)) {
+        if self.world.occluded(&sample.shadow_ray(bsdf.hit(), time)) {
             Vec3::ZERO
         } else {
             contribution
@@ -130,13 +130,13 @@ impl PathTracer<'_> {
 pub fn point_lights<W: World>(
     world: &W,
     lights: &SceneLights,
-    bsdf: &Bsdf,
+    bsdf: &impl SurfaceBsdf,
     wo: Vec3,
     time: f32,
 ) -> Vec3 {
     let mut sum = Vec3::ZERO;
     for light in lights.points {
-        let to_light = light.position - bsdf.hit.p;
+        let to_light = light.position - bsdf.hit().p;
         let d2 = to_light.length_squared();
         let f_cos = bsdf.eval(wo, to_light / d2.sqrt());
         // A delta light: its density is infinite and only `I / d²` arrives.
@@ -152,7 +152,7 @@ pub fn point_lights<W: World>(
         if contribution == Vec3::ZERO || !contribution.is_finite() {
             continue; // behind the surface, or nowhere to come from: no shadow ray
         }
-        if !world.occluded(&bsdf.hit.spawn_ray_to(light.position, time)) {
+        if !world.occluded(&bsdf.hit().spawn_ray_to(light.position, time)) {
             sum += contribution;
         }
     }
@@ -167,7 +167,7 @@ pub fn point_lights<W: World>(
 pub fn directional_lights<W: World>(
     world: &W,
     lights: &SceneLights,
-    bsdf: &Bsdf,
+    bsdf: &impl SurfaceBsdf,
     wo: Vec3,
     time: f32,
 ) -> Vec3 {
@@ -185,7 +185,7 @@ pub fn directional_lights<W: World>(
         if contribution == Vec3::ZERO || !contribution.is_finite() {
             continue; // behind the surface: no shadow ray
         }
-        if !world.occluded(&bsdf.hit.spawn_ray(wi, time)) {
+        if !world.occluded(&bsdf.hit().spawn_ray(wi, time)) {
             sum += contribution;
         }
     }
@@ -195,6 +195,7 @@ pub fn directional_lights<W: World>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bsdf::Bsdf;
     use crate::options::PathOptions;
     use crate::path::tests::{sphere_light_scene, sphere_light_scene_blocked, with_path_tracer};
     use ch05_motion_blur::MotionScene;
@@ -341,7 +342,6 @@ mod tests {
                 material: &world.material_at(&hit),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
-                coatings: &crate::microfacet::coating::Coatings::default(),
             };
             let mut sampler = IndependentSampler::new(9);
             let (mut sum, mut sum2, mut shadow_rays) = (0.0f64, 0.0f64, 0);
@@ -471,7 +471,6 @@ mod tests {
                 material: &world.material_at(&hit),
                 hit: &hit,
                 fuzz: FuzzMethod::Lobe,
-                coatings: &crate::microfacet::coating::Coatings::default(),
             };
             let tally = crate::dimensions::DimensionTally::default();
             let mut sampler =

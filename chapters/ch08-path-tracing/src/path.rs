@@ -28,34 +28,30 @@
 //! could only find emission, is not traced. [`crate::dimensions`] counts the numbers a path
 //! draws.
 
-use crate::bsdf::{Bsdf, BsdfSample};
+use crate::bsdf::{BsdfSample, LectureMaterials, Materials, SurfaceBsdf};
 use crate::lights::SceneLights;
-use crate::microfacet::coating::Coatings;
 use crate::options::PathOptions;
 use ch01_whitted::world::World;
 use ch05_motion_blur::MotionScene;
-use ch06_fuzzy_reflections::FuzzMethod;
 use common::Ray;
 use common::sampler::Sampler;
 use glam::Vec3;
 
-/// A path tracer over a scene.
+/// A path tracer over a scene, with the materials it knows (`M`, the lecture's unless told):
+/// the loop is the same whatever materials it is given.
 #[derive(Clone)]
-pub struct PathTracer<'a> {
+pub struct PathTracer<'a, M: Materials = LectureMaterials> {
     /// The scene with its motion: shapes, surfaces, point lights, environment, camera.
     pub world: &'a MotionScene,
     /// Its lights as one list.
     pub lights: SceneLights<'a>,
     /// NEE, MIS, roulette, depth.
     pub options: PathOptions,
-    /// How fuzzy lobes spread.
-    pub fuzz: FuzzMethod,
-    /// The rough plastics' coatings, tabulated from the scene before the render
-    /// ([`Coatings::of`]).
-    pub coatings: Coatings,
+    /// The materials: what the BSDF of a surface is at a hit.
+    pub materials: M,
 }
 
-impl PathTracer<'_> {
+impl<M: Materials> PathTracer<'_, M> {
     // ANCHOR: radiance
     /// The radiance arriving along `camera_ray`: one path, segment after segment (the camera
     /// ray is segment 1), until the scene's edge, `max_depth`, the BSDF or the roulette ends
@@ -128,12 +124,8 @@ impl PathTracer<'_> {
             if depth >= self.options.max_depth {
                 break;
             }
-            let bsdf = Bsdf {
-                material: &self.world.material_at(&hit),
-                hit: &hit,
-                fuzz: self.fuzz,
-                coatings: &self.coatings,
-            };
+            let material = self.world.material_at(&hit);
+            let bsdf = self.materials.bsdf(&material, &hit);
             let wo = -ray.dir;
 
             // 4. Sample a light (NEE) where the BSDF is not a delta: each point and
@@ -220,7 +212,7 @@ impl PathTracer<'_> {
 /// segment follows and whose density the MIS weight of what that segment finds needs; `None`
 /// when the path ends here: no direction, or nothing left to carry.
 pub fn extend_path<S: Sampler>(
-    bsdf: &Bsdf,
+    bsdf: &impl SurfaceBsdf,
     wo: Vec3,
     throughput: &mut Vec3,
     eta_scale: &mut f32,
@@ -243,10 +235,12 @@ pub fn extend_path<S: Sampler>(
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
+    use crate::bsdf::Bsdf;
     use crate::bsdf::test_support::floor_hit;
     use crate::furnace::spheres;
     use crate::mis::MisHeuristic;
     use ch01_whitted::world::World;
+    use ch06_fuzzy_reflections::FuzzMethod;
     use ch07_soft_shadows::reference::sphere_irradiance;
     use ch07_soft_shadows::{AreaLights, LightSampling};
     use common::sampler::IndependentSampler;
@@ -302,7 +296,6 @@ pub(crate) mod tests {
             material: &grey,
             hit: &hit,
             fuzz: FuzzMethod::Lobe,
-            coatings: &crate::microfacet::coating::Coatings::default(),
         };
         let carried = Vec3::new(0.5, 1.0, 2.0);
         for i in 0..64 {
@@ -354,7 +347,6 @@ pub(crate) mod tests {
             material: &glass,
             hit: &hit,
             fuzz: FuzzMethod::Lobe,
-            coatings: &crate::microfacet::coating::Coatings::default(),
         };
         let wo = Vec3::new(0.3, 1.0, 0.2).normalize();
         let (carried, carried_eta) = (Vec3::new(0.5, 1.0, 2.0), 0.8);
@@ -410,7 +402,6 @@ pub(crate) mod tests {
             material: &black,
             hit: &hit,
             fuzz: FuzzMethod::Lobe,
-            coatings: &crate::microfacet::coating::Coatings::default(),
         };
         let went_on = (0..16)
             .filter(|&i| extend(&bsdf, Vec3::Y, Vec3::ONE, 1.0, i).sample.is_some())
@@ -441,7 +432,6 @@ pub(crate) mod tests {
                     material: &white,
                     hit: &hit,
                     fuzz: FuzzMethod::Lobe,
-                    coatings: &crate::microfacet::coating::Coatings::default(),
                 };
                 let next = extend_path(
                     &bsdf,
@@ -888,8 +878,9 @@ pub(crate) mod tests {
             world,
             lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
             options,
-            fuzz: FuzzMethod::Lobe,
-            coatings: crate::microfacet::coating::Coatings::of(&world.scene),
+            materials: LectureMaterials {
+                fuzz: FuzzMethod::Lobe,
+            },
         };
         use_tracer(&tracer)
     }

@@ -14,6 +14,7 @@
 
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::{MotionScene, Shutter};
+use ch08_path_tracing::LectureMaterials;
 use ch08_path_tracing::dimensions::{DimensionStats, render_counted};
 use ch08_path_tracing::{Method, PathOptions};
 use common::film::PixelBoxFilter;
@@ -105,6 +106,7 @@ fn dimensions(scene: &MotionScene, lens: &Lens, max_depth: u32) -> DimensionStat
         true,
         scene,
         Method::new(PathOptions::with_depth(max_depth)),
+        LectureMaterials::default(),
         lens,
         &RenderSettings::new(8, 8, 2),
         &IndependentSampler::new(1),
@@ -186,6 +188,7 @@ fn counting_leaves_the_image_bit_identical() {
             count,
             &scene,
             Method::new(PathOptions::with_depth(6)),
+            LectureMaterials::default(),
             &thin_lens(),
             &RenderSettings::new(16, 16, 4),
             &IndependentSampler::new(3),

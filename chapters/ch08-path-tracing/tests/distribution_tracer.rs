@@ -88,8 +88,7 @@ fn path(
         world: scene,
         lights: ch08_path_tracing::SceneLights::of(scene, area_lights, method.light_sampling),
         options,
-        fuzz: method.fuzz,
-        coatings: ch08_path_tracing::microfacet::coating::Coatings::of(&scene.scene),
+        materials: ch08_path_tracing::LectureMaterials { fuzz: method.fuzz },
     };
     move |ray, sampler| tracer.radiance(ray, sampler)
 }

@@ -64,29 +64,6 @@ fn a_white_matte_sphere_gives_one_at_every_depth_from_two() {
     }
 }
 
-/// `nested` behind a mask of uniform `opacity`.
-fn masked(opacity: f32, nested: Material) -> Material {
-    Material::Mask(common::scene::Mask {
-        opacity: common::scene::Opacity::Uniform(opacity),
-        nested: Box::new(nested),
-    })
-}
-
-#[test]
-fn a_white_sphere_with_a_cut_out_gives_one_and_a_transparent_black_one_is_not_seen() {
-    // Light passes through where the surface is not: inside, the two-sided white sphere's
-    // back face scatters the rest, so the furnace stays white at every opacity.
-    for opacity in [0.3, 1.0] {
-        assert_one(
-            &[masked(opacity, Smooth::two_sided_diffuse(Vec3::ONE))],
-            1000,
-            300,
-        );
-    }
-    // Opacity 0: a black sphere that is not there; paths pass on and find the sky.
-    assert_one(&[masked(0.0, Smooth::diffuse(Vec3::ZERO))], 8, 50);
-}
-
 #[test]
 fn depth_one_sees_only_the_sky() {
     let scene = spheres(&[Smooth::diffuse(Vec3::ONE)], 1);

@@ -7,7 +7,6 @@ use super::BsdfSample;
 use ch01_whitted::optics::{fresnel_dielectric, reflect, refract};
 use ch06_fuzzy_reflections::glass_choice::choose_fresnel;
 use common::geometry::SurfaceHit;
-use common::scene::TintedGlass;
 use glam::Vec3;
 
 /// The shading normal on `wo`'s side and the relative index `eta = eta_i / eta_t` of a ray
@@ -51,28 +50,6 @@ pub fn sample(
     })
 }
 
-/// Smooth glass with factors on its lobes (Mitsuba's `specular_reflectance` and
-/// `specular_transmittance`): the branch is chosen by `F` as for plain glass, with the same
-/// number `u`, and its weight is multiplied by its lobe's factor.
-pub fn sample_tinted(
-    hit: &SurfaceHit,
-    wo: Vec3,
-    glass: &TintedGlass,
-    u: f32,
-) -> Option<BsdfSample> {
-    let sample = sample(hit, wo, glass.int_ior, glass.ext_ior, u)?;
-    let reflected = sample.wi.dot(hit.shading_n) * wo.dot(hit.shading_n) > 0.0;
-    let factor = if reflected {
-        glass.specular_reflectance
-    } else {
-        glass.specular_transmittance
-    };
-    Some(BsdfSample {
-        weight: sample.weight * factor,
-        ..sample
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -87,31 +64,6 @@ mod tests {
             .intersect(&ray)
             .unwrap();
         (hit, wo)
-    }
-
-    #[test]
-    fn tinted_glass_chooses_as_glass_does_and_scales_each_branch_by_its_factor() {
-        let (hit, wo) = hit_and_wo();
-        let glass = TintedGlass {
-            int_ior: 1.5,
-            ext_ior: 1.0,
-            specular_reflectance: Vec3::new(0.9, 0.5, 0.1),
-            specular_transmittance: Vec3::new(0.2, 0.4, 0.8),
-            reflectance_texture: None,
-            transmittance_texture: None,
-            roughness: None,
-        };
-        // About 4 % is reflected at 30 degrees: u = 0.01 reflects, u = 0.5 refracts.
-        for (u, factor) in [
-            (0.01, glass.specular_reflectance),
-            (0.5, glass.specular_transmittance),
-        ] {
-            let plain = sample(&hit, wo, 1.5, 1.0, u).unwrap();
-            let tinted = sample_tinted(&hit, wo, &glass, u).unwrap();
-            assert_eq!(tinted.wi, plain.wi);
-            assert_eq!(tinted.weight, plain.weight * factor);
-            assert_eq!((tinted.pdf, tinted.eta_scale), (plain.pdf, plain.eta_scale));
-        }
     }
 
     #[test]

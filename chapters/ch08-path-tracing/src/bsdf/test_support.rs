@@ -1,8 +1,7 @@
 //! A hit on the floor `y = 0` for the BSDF tests, and the check that sampling, `eval` and
 //! `pdf` describe the same material.
 
-use super::Bsdf;
-use crate::microfacet::coating::Coatings;
+use super::{Bsdf, SurfaceBsdf};
 use ch06_fuzzy_reflections::FuzzMethod;
 use common::geometry::SurfaceHit;
 use common::sampler::{IndependentSampler, Sampler};
@@ -32,7 +31,6 @@ pub fn check_consistent(material: &Material, wo: Vec3, n: u64) -> (Vec3, f32) {
         material,
         hit: &hit,
         fuzz: FuzzMethod::Lobe,
-        coatings: &Coatings::of_materials([material]),
     };
     let mut sampler = IndependentSampler::new(3);
     let mut sum = Vec3::ZERO;

@@ -74,8 +74,7 @@ pub fn estimate(
         world,
         lights: SceneLights::of(world, &area_lights, method.light_sampling),
         options: method.options,
-        fuzz: method.fuzz,
-        coatings: ch08_path_tracing::microfacet::coating::Coatings::of(&world.scene),
+        materials: ch08_path_tracing::LectureMaterials { fuzz: method.fuzz },
     };
     let mut sampler = IndependentSampler::new(seed);
     let (mut sum, mut sum2, mut count) = (0.0f64, 0.0f64, 0u64);

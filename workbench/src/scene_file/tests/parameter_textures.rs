@@ -239,7 +239,7 @@ fn what_cannot_be_a_texture_or_is_given_twice_is_refused() {
 }
 
 #[test]
-fn chapters_before_08_refuse_these_textures_naming_chapter_08() {
+fn the_lecture_refuses_these_textures_naming_the_chapter_that_reads_them() {
     let soft_shadows = Capabilities {
         chapter: Chapter::SOFT_SHADOWS,
         approximates: &[],
@@ -248,27 +248,38 @@ fn chapters_before_08_refuse_these_textures_naming_chapter_08() {
         chapter: Chapter::PATH_TRACING,
         approximates: &[],
     };
-    for (shape, words) in [
+    let materials = Capabilities {
+        chapter: Chapter::MATERIALS,
+        approximates: &[],
+    };
+    for (shape, words, brought_by, by_08) in [
         (
             r#"<bsdf type="conductor"><texture type="checkerboard" name="specular_reflectance"/></bsdf>"#,
             "a texture (shape 1: a metal's specular_reflectance); textures on other parameters",
+            "chapter 09 (ch09-materials)",
+            false,
         ),
         (
             r#"<emitter type="area"><texture type="checkerboard" name="radiance"/></emitter>"#,
             "an area light whose radiance is a texture (shape 1); lights that vary",
+            "chapter 08 (ch08-path-tracing)",
+            true,
         ),
         (
             r#"<bsdf type="dielectric"><rgb name="specular_transmittance" value="0.5"/></bsdf>"#,
             "glass with a specular_reflectance or specular_transmittance (shape 1)",
+            "chapter 09 (ch09-materials)",
+            false,
         ),
     ] {
         let scene = one_shape(shape);
         let refusal = soft_shadows.check(&scene).unwrap_err();
         assert!(
-            refusal.contains(words) && refusal.contains("chapter 08 (ch08-path-tracing)"),
+            refusal.contains(words) && refusal.contains(brought_by),
             "{refusal}"
         );
-        assert!(path_tracing.check(&scene).is_ok());
+        assert_eq!(path_tracing.check(&scene).is_ok(), by_08, "{words}");
+        assert!(materials.check(&scene).is_ok());
     }
 }
 
@@ -319,7 +330,8 @@ fn glass_with_factors_or_textures_on_its_lobes_is_tinted_glass() {
     assert_eq!(right.transmittance_texture, None);
 }
 
-/// The microfacet roughness of the first shape's material at `uv`, as chapter 08 reads it.
+/// The microfacet roughness of the first shape's material at `uv`, as `ch09-materials` reads
+/// it.
 fn roughness_at(scene: &Scene, uv: Vec2) -> common::scene::Microfacet {
     match scene.material_at(0, uv).into_owned() {
         Material::Conductor(Conductor {
@@ -356,7 +368,7 @@ fn rough_metals_and_glass_take_their_widths_from_textures() {
             same_side.alpha_texture.is_none(),
             "read at the hit, none is left"
         );
-        // Chapter 07's lobes cannot vary over a surface: refused, naming chapter 08.
+        // The lecture's lobes cannot vary over a surface: refused, naming chapter 09.
         let refusal = Capabilities {
             chapter: Chapter::SOFT_SHADOWS,
             approximates: &[],
@@ -364,7 +376,7 @@ fn rough_metals_and_glass_take_their_widths_from_textures() {
         .check(&scene)
         .unwrap_err();
         assert!(
-            refusal.contains("alpha") && refusal.contains("chapter 08"),
+            refusal.contains("alpha") && refusal.contains("chapter 09"),
             "{refusal}"
         );
     }

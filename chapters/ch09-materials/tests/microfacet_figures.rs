@@ -1,7 +1,7 @@
 //! The microfacet figures are drawn: the `cos^n` lobe against GGX and Beckmann, the white
 //! furnace, and the visible normals' histogram beside their density. Set `MICROFACET_FIGURES=DIR` to keep them in `DIR` and look at them.
 
-use ch08_path_tracing::lab::microfacet_figures as figures;
+use ch09_materials::lab::microfacet_figures as figures;
 use common::scene::MicrofacetDistribution;
 use std::path::PathBuf;
 

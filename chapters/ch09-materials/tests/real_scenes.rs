@@ -4,7 +4,7 @@
 //! names the file, line and column: never a panic, never a broken image. Ignored by default:
 //!
 //! ```text
-//! REAL_SCENES=/path/to/mitsuba-data/docs/scenes cargo test -p ch08-path-tracing \
+//! REAL_SCENES=/path/to/mitsuba-data/docs/scenes cargo test -p ch09-materials \
 //!     --test real_scenes -- --ignored --nocapture
 //! ```
 //!

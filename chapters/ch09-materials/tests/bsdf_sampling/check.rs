@@ -6,8 +6,9 @@ use crate::chart::Chart;
 use ch02_monte_carlo::chi2::{Chi2Result, chi2_test_density};
 use ch02_monte_carlo::warps::WarpPoint;
 use ch06_fuzzy_reflections::FuzzMethod;
-use ch08_path_tracing::microfacet::coating::Coatings;
-use ch08_path_tracing::{Bsdf, BsdfSample};
+use ch08_path_tracing::{BsdfSample, SurfaceBsdf};
+use ch09_materials::SceneBsdf;
+use ch09_materials::microfacet::coating::Coatings;
 use common::geometry::SurfaceHit;
 use common::sampler::{IndependentSampler, Sampler};
 use common::scene::Material;
@@ -62,7 +63,7 @@ pub fn floor_hit() -> SurfaceHit {
 /// A sample's density and weight must be the BSDF's own: `pdf(wi)` and `eval(wi) / pdf(wi)`.
 /// (The chi-square test checks that the density is the one the directions follow; this, that
 /// the path tracer's throughput is the one that density implies.)
-fn assert_weight(bsdf: &Bsdf, wo: Vec3, s: &BsdfSample, name: &str) {
+fn assert_weight(bsdf: &SceneBsdf, wo: Vec3, s: &BsdfSample, name: &str) {
     assert!(
         !s.is_delta(),
         "{name}: a lobe sample must have a density: {s:?}"
@@ -84,7 +85,7 @@ fn assert_weight(bsdf: &Bsdf, wo: Vec3, s: &BsdfSample, name: &str) {
 /// Runs `case`'s test with the BSDF's numbers from an independent sampler seeded by `seed`.
 pub fn run(case: &Case, seed: u64) -> Outcome {
     let hit = floor_hit();
-    let bsdf = Bsdf {
+    let bsdf = SceneBsdf {
         material: &case.material,
         hit: &hit,
         fuzz: case.fuzz,

@@ -24,12 +24,12 @@
 //! direction, as Mitsuba's `sample(ctx, si, sample1, sample2)`, so the count is the same for
 //! all three.
 
-use super::{BsdfSample, facing_normal};
 use crate::microfacet::coating::Coatings;
 use crate::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
     RoughPlasticParameters,
 };
+use ch08_path_tracing::bsdf::{BsdfSample, facing_normal};
 use common::geometry::SurfaceHit;
 use common::scene::{Conductor, Microfacet, Plastic, RoughGlass, TintedGlass};
 use glam::{Vec2, Vec3};

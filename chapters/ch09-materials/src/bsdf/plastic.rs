@@ -15,9 +15,9 @@
 //! (Mitsuba's `specular_sampling_weight`), else a cosine-weighted direction. A rough coat
 //! (`roughplastic`) is [`super::microfacet`]'s.
 
-use super::{BsdfSample, facing_normal, to_world};
 use ch01_whitted::optics::{fresnel_dielectric, reflect};
 use ch02_monte_carlo::warps::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
+use ch08_path_tracing::bsdf::{BsdfSample, facing_normal, to_world};
 use common::geometry::SurfaceHit;
 use common::scene::Plastic;
 use glam::{Vec2, Vec3};

@@ -8,8 +8,8 @@
 //! unless both are above the surface.
 
 use super::distribution::NormalDistribution;
-use crate::BsdfSample;
 use crate::bsdf::conductor::fresnel_conductor_rgb;
+use ch08_path_tracing::BsdfSample;
 use glam::{Vec2, Vec3};
 
 /// A rough metal.

@@ -1,6 +1,7 @@
-//! `render` renders every scene file of the workbook: the path tracer computes every effect
-//! of chapters 01 to 07, so each chapter's scenes must render here too, tiny, to a finite
-//! image with no non-finite sample, or be refused with the reason listed in [`REFUSED`].
+//! `render` renders every scene file of the workbook: chapter 08's path tracer computes every
+//! effect of chapters 01 to 07, and this crate's materials are every material a file names, so
+//! each chapter's scenes must render here too, tiny, to a finite image with no non-finite
+//! sample, or be refused with the reason listed in [`REFUSED`].
 //!
 //! The files are found, not listed, so a new scene is tested as soon as it is added, and a
 //! scene that starts to be refused fails until its reason is written down here.
@@ -43,10 +44,10 @@ fn scene_files() -> Vec<PathBuf> {
 #[test]
 fn render_renders_every_scene_file_of_the_workbook() {
     let files = scene_files();
-    let own = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell-box.xml");
+    let own = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/metals.xml");
     assert!(
         files.contains(&own),
-        "the search finds the chapter's own scenes"
+        "the search finds the crate's own scenes"
     );
     let dir = tempfile::tempdir().unwrap();
     // The renders side by side, each in a folder of its own: each is a process of its own.

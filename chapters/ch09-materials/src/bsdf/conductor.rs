@@ -6,8 +6,8 @@
 //! A rough metal (`roughness: Some`) is Mitsuba's `roughconductor` ([`super::microfacet`]),
 //! whose facets reflect with the same [`fresnel_conductor_rgb`].
 
-use super::{BsdfSample, facing_normal};
 use ch01_whitted::optics::reflect;
+use ch08_path_tracing::bsdf::{BsdfSample, facing_normal};
 use common::geometry::SurfaceHit;
 use common::scene::Conductor;
 use glam::Vec3;

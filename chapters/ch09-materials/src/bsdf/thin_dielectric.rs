@@ -7,8 +7,8 @@
 //! The sample picks reflection with probability `R'`, so each branch has weight 1; both are
 //! deltas, and the pane scales no radiance (it leaves the light in the medium it came from).
 
-use super::BsdfSample;
 use ch01_whitted::optics::{fresnel_dielectric, reflect};
+use ch08_path_tracing::bsdf::BsdfSample;
 use common::geometry::SurfaceHit;
 use glam::Vec3;
 

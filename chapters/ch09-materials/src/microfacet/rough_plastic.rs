@@ -18,8 +18,8 @@
 use super::coating::Coating;
 use super::distribution::NormalDistribution;
 use super::fresnel;
-use crate::BsdfSample;
 use ch02_monte_carlo::warps::cosine::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
+use ch08_path_tracing::BsdfSample;
 use common::scene::MicrofacetDistribution;
 use glam::{Vec2, Vec3};
 use std::f32::consts::FRAC_1_PI;

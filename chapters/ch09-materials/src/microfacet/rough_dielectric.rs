@@ -16,7 +16,7 @@
 
 use super::distribution::NormalDistribution;
 use super::fresnel::{self, DielectricFresnel};
-use crate::BsdfSample;
+use ch08_path_tracing::BsdfSample;
 use glam::{Vec2, Vec3};
 
 /// Rough glass between the outside (above) and the inside (below).

@@ -23,7 +23,8 @@
 //!
 //! One number is drawn for the choice, before the nested material's own.
 
-use super::{Bsdf, BsdfSample};
+use super::SceneBsdf;
+use ch08_path_tracing::{BsdfSample, SurfaceBsdf};
 use common::sampler::Sampler;
 use common::scene::Opacity;
 use glam::Vec3;
@@ -42,7 +43,7 @@ pub fn opacity(opacity: Opacity) -> f32 {
 /// Passes on with probability `1 - alpha`, else samples `nested`.
 pub fn sample<S: Sampler>(
     alpha: f32,
-    nested: &Bsdf,
+    nested: &SceneBsdf,
     wo: Vec3,
     sampler: &mut S,
 ) -> Option<BsdfSample> {
@@ -62,18 +63,19 @@ pub fn sample<S: Sampler>(
 }
 
 /// `α f cos θ` of the nested material.
-pub fn eval(alpha: f32, nested: &Bsdf, wo: Vec3, wi: Vec3) -> Vec3 {
+pub fn eval(alpha: f32, nested: &SceneBsdf, wo: Vec3, wi: Vec3) -> Vec3 {
     alpha * nested.eval(wo, wi)
 }
 
 /// `α pdf` of the nested material.
-pub fn pdf(alpha: f32, nested: &Bsdf, wo: Vec3, wi: Vec3) -> f32 {
+pub fn pdf(alpha: f32, nested: &SceneBsdf, wo: Vec3, wi: Vec3) -> f32 {
     alpha * nested.pdf(wo, wi)
 }
 
 #[cfg(test)]
 mod tests {
     use super::super::test_support::check_consistent;
+    use ch08_path_tracing::SurfaceBsdf;
     use common::scene::{Mask, Material, Opacity};
     use glam::Vec3;
 
@@ -110,7 +112,7 @@ mod tests {
         let white = Material::diffuse(Vec3::ONE);
         let (wo, wi) = (Vec3::Y, Vec3::new(0.6, 0.8, 0.0));
         let bsdf = |material: Material| {
-            let plain = super::super::Bsdf {
+            let plain = super::super::SceneBsdf {
                 material: &material,
                 hit: &hit,
                 fuzz: ch06_fuzzy_reflections::FuzzMethod::Lobe,

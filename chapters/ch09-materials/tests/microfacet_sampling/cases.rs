@@ -3,9 +3,9 @@
 //! The charts only place the bins; the density compared is always the sampler's own.
 
 use crate::slope_chart::{Lobe, SlopeChart as Chart};
-use ch08_path_tracing::microfacet::coating::Coating;
-use ch08_path_tracing::microfacet::fresnel;
-use ch08_path_tracing::microfacet::{
+use ch09_materials::microfacet::coating::Coating;
+use ch09_materials::microfacet::fresnel;
+use ch09_materials::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
     RoughPlasticParameters,
 };

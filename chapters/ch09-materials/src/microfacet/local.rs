@@ -2,7 +2,7 @@
 //! material alike: so that one test, one figure or one caller serves all three.
 
 use super::{RoughConductor, RoughDielectric, RoughPlastic};
-use crate::BsdfSample;
+use ch08_path_tracing::BsdfSample;
 use glam::{Vec2, Vec3};
 
 /// A BSDF in the local frame (`z` the normal); `wo` points towards where the path came from,

@@ -6,13 +6,13 @@
 //! ignored by default. Run it with
 //!
 //! ```text
-//! MITSUBA_PYTHON=/path/to/python cargo test -p ch08-path-tracing --test mitsuba_microfacet -- --ignored --nocapture
+//! MITSUBA_PYTHON=/path/to/python cargo test -p ch09-materials --test mitsuba_microfacet -- --ignored --nocapture
 //! ```
 //!
 //! `tests/mitsuba_microfacet.py` asks Mitsuba (the `scalar_rgb` variant) for its values.
 
-use ch08_path_tracing::microfacet::coating::Coating;
-use ch08_path_tracing::microfacet::{
+use ch09_materials::microfacet::coating::Coating;
+use ch09_materials::microfacet::{
     LocalBsdf, NormalDistribution, RoughConductor, RoughDielectric, RoughPlastic,
     RoughPlasticParameters, albedo,
 };
