@@ -130,18 +130,20 @@ pub fn run(
 ///
 /// The answers are tried in a copy of the workspace (the student edition with its solutions
 /// put back, or a fresh copy when only the wrong answers are checked), all solutions in place
-/// but the ones being tried, in rounds of several answers, so that a round costs one build of
-/// the changed crates, not one per answer. A check may run the code of other exercises
-/// (`runs` says which exercises each check runs): no round holds an answer together with an
-/// answer of an exercise whose code its check runs, so every verdict is the answer's own
-/// ([`plan_rounds`]). The copy's crates have names of their own in the shared build directory
+/// but the ones being tried, in rounds: round `r` puts in the `r`-th wrong answer of every
+/// exercise that has one, so a round costs one build of the changed crates, not one per answer.
+/// A check may run the code of another exercise with an answer in the same round (`runs` says
+/// which exercises each check runs); one that then does not refuse its own answer as recorded
+/// is tried again, in rounds where no check runs the code of another answer of the round,
+/// before it counts. The copy's crates have names of their own in the shared build directory
 /// (see [`separate_crates_config`] and [`TRIALS_CONFIG`]).
 fn prove_wrong_answers(
     trial: &mut Trial<'_>,
     exercises: &[Exercise],
     runs: &HashMap<String, MarkedRun>,
 ) -> Result<()> {
-    if exercises.iter().all(|e| e.wrong.is_empty()) {
+    let rounds = exercises.iter().map(|e| e.wrong.len()).max().unwrap_or(0);
+    if rounds == 0 {
         println!("No wrong answers are recorded in {LIST_PATH}.");
         return Ok(());
     }
@@ -150,23 +152,53 @@ fn prove_wrong_answers(
         trial.copy.display()
     );
     println!("{:<28} {:<40} {:<20}", "exercise", "wrong answer", "check");
-    // Whether the check of exercise `check` runs the code of exercise `other`.
-    let runs_code_of = |check: usize, other: usize| {
-        runs.get(&exercises[check].name)
-            .is_some_and(|run| run.ran.contains(&exercises[other].name))
+    // Whether `check`'s check runs the code of `other`.
+    let runs_code_of = |check: &Exercise, other: &Exercise| {
+        check.name != other.name
+            && runs
+                .get(&check.name)
+                .is_some_and(|run| run.ran.contains(&other.name))
     };
-    let answers: Vec<&[WrongAnswer]> = exercises.iter().map(|e| e.wrong.as_slice()).collect();
-    let rounds = plan_rounds(&answers, runs_code_of);
     let mut tried = 0;
     let mut surprises = Vec::new();
-    for round in &rounds {
-        let in_round: Vec<(&Exercise, &WrongAnswer)> = round
+    let mut again = Vec::new();
+    for round in 0..rounds {
+        let in_round: Vec<(&Exercise, &WrongAnswer)> = exercises
             .iter()
-            .map(|&(exercise, answer)| (&exercises[exercise], &exercises[exercise].wrong[answer]))
+            .filter_map(|e| e.wrong.get(round).map(|wrong| (e, wrong)))
             .collect();
         for (exercise, wrong, outcome) in trial.wrong_answers(&in_round)? {
             tried += 1;
-            print_verdict(exercise, wrong, &outcome, "");
+            let disturbed = in_round
+                .iter()
+                .any(|(other, _)| runs_code_of(exercise, other));
+            if refused(wrong, &outcome) {
+                print_verdict(exercise, wrong, &outcome, "");
+            } else if disturbed {
+                print_verdict(exercise, wrong, &outcome, ", tried again alone");
+                again.push((exercise, wrong));
+            } else {
+                print_verdict(exercise, wrong, &outcome, "");
+                surprises.push((exercise, wrong, outcome));
+            }
+        }
+    }
+    // Alone: no check of a round runs the code of another answer of the round.
+    while !again.is_empty() {
+        let mut in_round: Vec<(&Exercise, &WrongAnswer)> = Vec::new();
+        again.retain(|&(exercise, wrong)| {
+            let apart = in_round.iter().all(|(other, _)| {
+                other.name != exercise.name
+                    && !runs_code_of(exercise, other)
+                    && !runs_code_of(other, exercise)
+            });
+            if apart {
+                in_round.push((exercise, wrong));
+            }
+            !apart
+        });
+        for (exercise, wrong, outcome) in trial.wrong_answers(&in_round)? {
+            print_verdict(exercise, wrong, &outcome, " (alone)");
             if !refused(wrong, &outcome) {
                 surprises.push((exercise, wrong, outcome));
             }
@@ -535,41 +567,6 @@ fn prove_in_order(
 }
 
 /// Whether the check refused the wrong answer in its recorded words.
-/// Puts the wrong answers (`answers[e]`: exercise `e`'s, in their recorded order) into
-/// rounds, as `(exercise, answer)` pairs: each answer in the first round that holds no other
-/// answer of its exercise (they would replace the same code) and no answer of an exercise
-/// whose code its check runs, or whose check runs its code (`runs_code_of(check, other)`):
-/// then a check that does not refuse its answer as recorded cannot blame another answer of
-/// its round. An exercise's answers keep their order, one per round at most.
-fn plan_rounds<T>(
-    answers: &[&[T]],
-    runs_code_of: impl Fn(usize, usize) -> bool,
-) -> Vec<Vec<(usize, usize)>> {
-    let mut rounds: Vec<Vec<(usize, usize)>> = Vec::new();
-    let most = answers.iter().map(|a| a.len()).max().unwrap_or(0);
-    for answer in 0..most {
-        for (exercise, _) in answers.iter().enumerate().filter(|(_, a)| answer < a.len()) {
-            let fits = |round: &Vec<(usize, usize)>| {
-                round.iter().all(|&(other, _)| {
-                    other != exercise
-                        && !runs_code_of(exercise, other)
-                        && !runs_code_of(other, exercise)
-                })
-            };
-            // After the round of the exercise's previous answer, so that the order holds.
-            let after = rounds
-                .iter()
-                .rposition(|round| round.iter().any(|&(other, _)| other == exercise))
-                .map_or(0, |last| last + 1);
-            match (after..rounds.len()).find(|&r| fits(&rounds[r])) {
-                Some(r) => rounds[r].push((exercise, answer)),
-                None => rounds.push(vec![(exercise, answer)]),
-            }
-        }
-    }
-    rounds
-}
-
 fn refused(wrong: &WrongAnswer, outcome: &Outcome) -> bool {
     !outcome.passed
         && outcome
@@ -991,53 +988,6 @@ fn last_lines(text: &str, count: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn rounds_keep_apart_the_answers_whose_checks_run_each_others_code() {
-        // Exercise 0's check runs the code of exercise 2; 1 and 3 are on their own.
-        let answers: Vec<Vec<char>> =
-            vec![vec!['a', 'b'], vec!['c', 'd', 'e'], vec!['f'], vec!['g']];
-        let answers: Vec<&[char]> = answers.iter().map(Vec::as_slice).collect();
-        let rounds = plan_rounds(&answers, |check, other| (check, other) == (0, 2));
-        for round in &rounds {
-            let exercises: Vec<usize> = round.iter().map(|&(e, _)| e).collect();
-            assert!(
-                !(exercises.contains(&0) && exercises.contains(&2)),
-                "exercise 0's check runs exercise 2's code, yet both have an answer in {round:?}"
-            );
-            let mut unique = exercises.clone();
-            unique.dedup();
-            assert_eq!(
-                unique.len(),
-                exercises.len(),
-                "two answers of one exercise in {round:?}"
-            );
-        }
-        // Every answer once, each exercise's in its order.
-        let mut placed: Vec<(usize, usize)> = rounds.concat();
-        placed.sort();
-        assert_eq!(
-            placed,
-            [(0, 0), (0, 1), (1, 0), (1, 1), (1, 2), (2, 0), (3, 0)]
-        );
-        for exercise in 0..4 {
-            let order: Vec<usize> = rounds
-                .iter()
-                .flat_map(|round| {
-                    round
-                        .iter()
-                        .filter(|&&(e, _)| e == exercise)
-                        .map(|&(_, a)| a)
-                })
-                .collect();
-            assert!(
-                order.is_sorted(),
-                "exercise {exercise}'s answers out of order: {order:?}"
-            );
-        }
-        // No more rounds than the most answers of one exercise need here.
-        assert_eq!(rounds.len(), 3, "{rounds:?}");
-    }
 
     fn exercise(name: &str, chapter: &str) -> Exercise {
         Exercise {
