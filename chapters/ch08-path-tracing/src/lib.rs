@@ -16,6 +16,10 @@
 //!   contribution, and the point and directional lights' shadow rays.
 //! - [`roulette`]: Russian roulette; [`options`]: what is switched on.
 //! - [`path`]: the path loop, generic over the materials it knows; [`render_with`].
+//! - [`direct`]: Mitsuba's `direct` integrator (light and BSDF samples in other numbers than
+//!   one of each), from the same light sample and BSDF step.
+//! - [`dimensions`]: a sampler that counts the numbers each path draws, so that a scene is
+//!   seen to pay only for what it uses.
 //! - [`distribution_tracer`]: Cook's branching tracer with every effect, for comparison;
 //!   [`render_distribution`].
 //! - [`furnace`]: the white furnace.
