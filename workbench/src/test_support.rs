@@ -4,10 +4,11 @@
 //! Nothing here is used by a renderer; it lives in `common` so that every chapter's tests ask
 //! the same questions in the same way.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use common::image::Image;
+use glam::Vec2;
 
 pub mod mesh_files;
 
@@ -350,6 +351,92 @@ pub fn image_summary(image: &Image, rays: u64) -> String {
         mean[0], mean[1], mean[2]
     ));
     text
+}
+
+/// Runs `binary`'s `render` on the scene file `scene` at 16 x 12 pixels and 2 samples per
+/// pixel on one thread, writing its image and statistics into the folder `out`; `Err` with
+/// the message if it refuses the file. A panic or a non-finite sample fails the test.
+pub fn render_tiny(binary: &str, scene: &Path, out: &Path) -> Result<Image, String> {
+    let image = out.join("image.pfm");
+    let stats = out.join("stats.json");
+    let output = run_binary(
+        binary,
+        &[
+            "render",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--width",
+            "16",
+            "--height",
+            "12",
+            "--spp",
+            "2",
+            "--threads",
+            "1",
+            "--out",
+            image.to_str().unwrap(),
+            "--stats",
+            stats.to_str().unwrap(),
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    assert!(
+        !stderr.contains("panicked"),
+        "{}: {stderr}",
+        scene.display()
+    );
+    if !output.status.success() {
+        return Err(stderr);
+    }
+    let stats: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    assert_eq!(
+        stats["nonfinite_samples"],
+        0,
+        "{}: {stderr}",
+        scene.display()
+    );
+    Ok(crate::output::read_image(&image).unwrap())
+}
+
+/// The image `binary`'s `render` makes of the scene file `text` (written to a temporary
+/// folder), at the file's own size and sample count. A refusal fails the test with its
+/// message.
+pub fn render_text(binary: &str, text: &str) -> Image {
+    let folder = tempfile::tempdir().unwrap();
+    let file = folder.path().join("scene.xml");
+    std::fs::write(&file, text).unwrap();
+    let image = folder.path().join("image.pfm");
+    let output = run_binary(
+        binary,
+        &[
+            "render",
+            "--scene",
+            file.to_str().unwrap(),
+            "--out",
+            image.to_str().unwrap(),
+        ],
+    );
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    crate::output::read_image(&image).unwrap()
+}
+
+/// A `k x k` grid of film positions over a `width x height` image, each a pixel's centre.
+pub fn pixel_centre_grid(width: u32, height: u32, k: u32) -> Vec<Vec2> {
+    let mut points = Vec::new();
+    for j in 0..k {
+        for i in 0..k {
+            points.push(Vec2::new(
+                ((i * width / k) as f32 + 0.5).min(width as f32 - 0.5),
+                ((j * height / k) as f32 + 0.5).min(height as f32 - 0.5),
+            ));
+        }
+    }
+    points
 }
 
 #[cfg(test)]

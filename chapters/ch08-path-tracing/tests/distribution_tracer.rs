@@ -107,7 +107,7 @@ fn one_sample_per_effect_is_chapter_07s_tracer() {
         let file = scene_at_depth(name, depth);
         let scene = &file.world;
         let film = scene.scene.film;
-        let pixels = support::grid(film.width, film.height, k);
+        let pixels = workbench::test_support::pixel_centre_grid(film.width, film.height, k);
         let area_lights = AreaLights::of(&scene.scene);
         let lighting = area_lights.lighting(LightOptions::default());
         let chapter_07 = Tracer {
@@ -137,7 +137,7 @@ fn branching_with_indirect_diffuse_is_the_path_tracer() {
     let file = scene_at_depth("cornell-box.xml", depth);
     let scene = &file.world;
     let film = scene.scene.film;
-    let pixels = support::grid(film.width, film.height, 5);
+    let pixels = workbench::test_support::pixel_centre_grid(film.width, film.height, 5);
     let options = DistributionOptions::branching(2, depth, true);
     let ours = estimate(scene, &pixels, 1200, 3, distribution(scene, options));
     let pt = PathOptions {
@@ -157,7 +157,7 @@ fn without_indirect_diffuse_on_a_scene_without_it_is_the_path_tracer() {
     let file = scene_at_depth("glossy-plates.xml", depth);
     let scene = &file.world;
     let film = scene.scene.film;
-    let pixels = support::grid(film.width, film.height, 8);
+    let pixels = workbench::test_support::pixel_centre_grid(film.width, film.height, 8);
     let options = DistributionOptions::branching(3, depth, false);
     let ours = estimate(scene, &pixels, 400, 5, distribution(scene, options));
     let theirs = estimate(

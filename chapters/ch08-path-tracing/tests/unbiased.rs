@@ -13,7 +13,7 @@ use ch08_path_tracing::{Method, MisHeuristic, PathOptions};
 fn nee_mis_and_roulette_variants_agree() {
     let scene = support::scene_file("cornell-box.xml");
     let world = &scene.world.scene;
-    let pixels = support::grid(world.film.width, world.film.height, 6);
+    let pixels = workbench::test_support::pixel_centre_grid(world.film.width, world.film.height, 6);
     let base = PathOptions {
         max_depth: 5,
         ..scene.options

@@ -7,14 +7,15 @@
 mod support;
 use ch08_path_tracing::{Method, PathOptions};
 use common::scene::DirectSamples;
-use support::{estimate, grid, render_text, scene_file};
+use support::{estimate, render_text, scene_file};
+use workbench::test_support::pixel_centre_grid;
 
 #[test]
 fn every_sample_count_estimates_the_same_direct_light() {
     let file = scene_file("veach-plates.xml");
     let film = file.world.scene.film;
     // Film positions over the plates and the lights' reflections.
-    let pixels: Vec<_> = grid(film.width, film.height, 8)
+    let pixels: Vec<_> = pixel_centre_grid(film.width, film.height, 8)
         .into_iter()
         .filter(|p| p.y > 0.4 * film.height as f32)
         .collect();

@@ -19,7 +19,7 @@ fn light_samples_read_a_textured_light_where_they_land() {
     // The floor's half of the image, which the panel lights (the upper half shows the
     // glowing wall, found alike by both estimators, which would only add to the mean).
     let (width, height) = (world.film.width, world.film.height);
-    let pixels: Vec<_> = support::grid(width, height / 2, 6)
+    let pixels: Vec<_> = workbench::test_support::pixel_centre_grid(width, height / 2, 6)
         .into_iter()
         .map(|p| p + glam::Vec2::new(0.0, (height / 2) as f32))
         .collect();
