@@ -12,12 +12,14 @@
 //! | [`histogram_vs_pdf`] | whether a sampler draws from the density it claims |
 //! | [`line_plot`] | error against samples or time, usually on log-log axes |
 //! | [`bar_chart`] | a number per named case |
+//! | [`Diagram`] | geometry drawn from the chapter's own numbers, as SVG |
 
 #[cfg(test)]
 mod awkward_data;
 mod axis;
 mod bar;
 mod canvas;
+mod diagram;
 mod fonts;
 mod grid;
 mod heatmap;
@@ -27,6 +29,7 @@ mod palette;
 mod scatter;
 
 pub use bar::bar_chart;
+pub use diagram::{Anchor, Diagram, Ink, Point};
 pub use grid::{comparison_grid, crop};
 pub use heatmap::histogram_vs_pdf;
 pub use line::{Axes, Series, SeriesStyle, line_plot};
