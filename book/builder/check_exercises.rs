@@ -999,6 +999,7 @@ mod tests {
             hint: "Which part changes?".into(),
             needs: Vec::new(),
             wrong: Vec::new(),
+            giveaway: Vec::new(),
         }
     }
 

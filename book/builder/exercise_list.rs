@@ -42,6 +42,19 @@ pub struct Exercise {
     /// Plausible wrong answers, each of which the check must refuse with its own words.
     #[serde(default)]
     pub wrong: Vec<WrongAnswer>,
+    /// The solution's key expressions as a page might write them (a formula, inline code): no
+    /// page may state one before the exercise (see `giveaways`).
+    #[serde(default)]
+    pub giveaway: Vec<Giveaway>,
+}
+
+/// A key expression of an exercise's solution, which no page may state before the exercise.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Giveaway {
+    /// The expression as TeX or code: `d - 2 (d \cdot n) n`. Spaces, braces, `\mathbf` and
+    /// the like do not matter (see `giveaways::normalized`).
+    pub written: String,
 }
 
 /// A plausible wrong answer to an exercise: code that stands where the solution stands, and

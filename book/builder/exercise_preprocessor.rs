@@ -10,7 +10,9 @@
 //!   exercise) is shown as its `todo!()` too, so no page gives an answer away before its
 //!   exercise; marker lines outside code blocks are dropped;
 //! - a page that writes out a line of any exercise's solution outside its "Solution" block is
-//!   an error naming the page, the exercise and the line ([`solution_leaks`]).
+//!   an error naming the page, the exercise and the line ([`solution_leaks`]); so is a page
+//!   that states a solution's key expression, as a formula or inline code, before the exercise
+//!   ([`giveaways`]).
 //!
 //! Both leave fenced code blocks alone where that matters: a `{{#exercise}}` line inside a fence
 //! is shown as written (that is how a page documents the syntax). A page that needs to show the
@@ -19,11 +21,11 @@
 use std::path::Path;
 
 use anyhow::{Context, Result, bail};
-use mdbook_driver::book::Book;
+use mdbook_driver::book::{Book, BookItem};
 use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
 
-use crate::exercise_list;
 use crate::solution_markers::{self, Marker, MarkerError};
+use crate::{exercise_list, giveaways};
 
 /// A page containing this comment keeps its solution marker lines.
 pub const KEEP_MARKERS: &str = "<!-- keep solution markers -->";
@@ -41,7 +43,7 @@ impl Preprocessor for ExercisePreprocessor {
         let src_dir = context.root.join(&context.config.book.src);
         let workspace = context.root.parent().unwrap_or(Path::new("."));
         let solutions = known_solutions(workspace)?;
-        let mut problems = Vec::new();
+        let mut problems = giveaways_before_their_exercises(&book, workspace)?;
         book.for_each_chapter_mut(|chapter| {
             let Some(path) = &chapter.path else { return };
             let page_dir = src_dir.join(path.parent().unwrap_or(Path::new("")));
@@ -60,6 +62,30 @@ impl Preprocessor for ExercisePreprocessor {
         }
         Ok(book)
     }
+}
+
+/// Every key expression of a solution that a page states before its exercise (see
+/// [`giveaways`]), over the pages in the book's order.
+fn giveaways_before_their_exercises(book: &Book, workspace: &Path) -> Result<Vec<String>> {
+    let exercises = exercise_list::load(workspace)?;
+    let pages: Vec<giveaways::Page> = book
+        .iter()
+        .filter_map(|item| match item {
+            BookItem::Chapter(chapter) => chapter.path.as_ref().map(|path| giveaways::Page {
+                name: path.display().to_string(),
+                text: &chapter.content,
+            }),
+            _ => None,
+        })
+        .collect();
+    let is_home = |line: &str, exercise: &exercise_list::Exercise| {
+        exercise_directive(line)
+            .and_then(|target| target.rsplit_once(':'))
+            .is_some_and(|(path, anchor)| {
+                anchor == exercise.anchor && Path::new(path).ends_with(&exercise.file)
+            })
+    };
+    Ok(giveaways::check(&pages, &exercises, is_home))
 }
 
 /// One page with its exercises expanded and its marker lines dropped. Paths in `{{#exercise}}`

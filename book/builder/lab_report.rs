@@ -392,6 +392,7 @@ mod tests {
             hint: String::new(),
             needs: Vec::new(),
             wrong: Vec::new(),
+            giveaway: Vec::new(),
         };
         let exercises = [
             exercise("a", "ch01-whitted"),

@@ -21,6 +21,7 @@ mod exercise_list;
 mod exercise_needs;
 mod exercise_preprocessor;
 mod figures;
+mod giveaways;
 mod katex_offline;
 mod lab_report;
 #[cfg(feature = "browser")]

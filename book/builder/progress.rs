@@ -234,6 +234,7 @@ mod tests {
             hint: "Which part changes?\nAnd which does not?".into(),
             needs: Vec::new(),
             wrong: Vec::new(),
+            giveaway: Vec::new(),
         }
     }
 

@@ -209,14 +209,15 @@ fn packages_with_exercises(exercises: &[Exercise]) -> Vec<PathBuf> {
 }
 
 /// The exercise list as the student gets it: without the recorded wrong answers, whose
-/// mistakes would give the right answers away. Checked by reading it back: the same
-/// exercises, none with a wrong answer left.
+/// mistakes would give the right answers away, and without the giveaways (the solutions' key
+/// expressions). Checked by reading it back: the same exercises, none with a wrong answer or a
+/// giveaway left.
 fn without_wrong_answers(list: &str) -> Result<String> {
     let mut out = String::with_capacity(list.len());
     let mut skipping = false;
     for line in list.lines() {
         let trimmed = line.trim();
-        if trimmed == "[[exercise.wrong]]" {
+        if trimmed == "[[exercise.wrong]]" || trimmed == "[[exercise.giveaway]]" {
             skipping = true;
             continue;
         }
@@ -236,7 +237,8 @@ fn without_wrong_answers(list: &str) -> Result<String> {
             .iter()
             .zip(&after)
             .all(|(a, b)| a.name == b.name && a.hint == b.hint);
-    if !same || after.iter().any(|exercise| !exercise.wrong.is_empty()) {
+    let left = |exercise: &Exercise| !exercise.wrong.is_empty() || !exercise.giveaway.is_empty();
+    if !same || after.iter().any(left) {
         bail!("{LIST_PATH}: its wrong answers could not be taken out cleanly");
     }
     Ok(out)
@@ -457,15 +459,23 @@ mod tests {
     }
 
     #[test]
-    fn the_students_list_keeps_its_exercises_but_not_their_wrong_answers() {
+    fn the_students_list_keeps_its_exercises_but_not_their_wrong_answers_or_giveaways() {
         let list = format!(
-            "{LIST}\n[[exercise.wrong]]\nmistake = \"no sign change\"\ncode = \"\"\"\nx\n\"\"\"\nsays = \"flip\"\n\n{}",
+            "{LIST}\n[[exercise.wrong]]\nmistake = \"no sign change\"\ncode = \"\"\"\nx\n\"\"\"\nsays = \"flip\"\n\n\
+             [[exercise.giveaway]]\nwritten = 'd - 2 (d \\cdot n) n'\n\n{}",
             LIST.replace("ch01-reflect", "ch01-other")
         );
+        assert_eq!(exercise_list::parse(&list).unwrap()[0].giveaway.len(), 1);
         let stripped = without_wrong_answers(&list).unwrap();
         assert!(!stripped.contains("no sign change"), "{stripped}");
+        assert!(!stripped.contains("cdot"), "{stripped}");
         let exercises = exercise_list::parse(&stripped).unwrap();
         assert_eq!(exercises.len(), 2);
         assert!(exercises.iter().all(|exercise| exercise.wrong.is_empty()));
+        assert!(
+            exercises
+                .iter()
+                .all(|exercise| exercise.giveaway.is_empty())
+        );
     }
 }
