@@ -1,12 +1,16 @@
 //! `checkpoint`: puts reference solutions back into the student's copy, so that a student stuck
 //! on an exercise, or skipping a chapter, can go on.
 //!
-//! - `checkpoint NAME --from WORKBOOK`: one exercise, whatever it holds now;
-//! - `checkpoint CHAPTER --from WORKBOOK` (`ch04-depth-of-field` or `ch04`): every exercise of
-//!   the chapter that is still a stub;
-//! - `checkpoint --needs NAME --from WORKBOOK`: every exercise whose code NAME's check runs
-//!   (its `needs` in the list) that is still a stub, so that the check runs the student's
-//!   own answer and nothing not written yet.
+//! - `checkpoint NAME`: one exercise, whatever it holds now;
+//! - `checkpoint CHAPTER` (`ch04-depth-of-field` or `ch04`): every exercise of the chapter that
+//!   is still a stub;
+//! - `checkpoint --needs NAME`: every exercise whose code NAME's check runs (its `needs` in the
+//!   list) that is still a stub, so that the check runs the student's own answer and nothing
+//!   not written yet.
+//!
+//! The reference solutions come from the edition's own sealed solutions when the teacher handed
+//! it out with them ([`crate::sealed_solutions`]), or from the workbook given with
+//! `--from WORKBOOK`.
 //!
 //! An exercise the student has written is kept in the last two cases (the command names it, and
 //! `checkpoint NAME` replaces it). The student's own attempt is never lost: the lines it
@@ -18,8 +22,62 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 
 use crate::exercise_list::{self, Exercise, LIST_PATH};
+use crate::sealed_solutions::{self, References};
 use crate::solution_markers::{self, Marker};
 use crate::workspace;
+
+/// Where the reference solutions come from.
+pub enum Source {
+    /// The workbook (the repository with the solutions) at this path, with its exercise list.
+    Workbook(PathBuf, Vec<Exercise>),
+    /// The sealed solutions the edition was handed out with.
+    Sealed(References),
+}
+
+impl Source {
+    /// The workbook at `workbook`; an error unless it is one (with solutions).
+    pub fn workbook(workbook: &Path) -> Result<Self> {
+        Ok(Source::Workbook(
+            workbook.to_owned(),
+            workbook_exercises(workbook)?,
+        ))
+    }
+
+    /// The sealed solutions of the edition at `root`; an error saying what to do when the
+    /// edition was handed out without them.
+    pub fn sealed(root: &Path) -> Result<Self> {
+        match sealed_solutions::read(root)? {
+            Some(references) => Ok(Source::Sealed(references)),
+            None => bail!(
+                "this edition was handed out without its solutions ({} is missing): ask your \
+                 teacher for the workbook and give its path with `--from PATH`",
+                sealed_solutions::SEALED_PATH
+            ),
+        }
+    }
+
+    /// Where a student can copy an exercise from by hand, in words.
+    fn describe(&self, exercise: &Exercise) -> String {
+        match self {
+            Source::Workbook(workbook, _) => workbook.join(&exercise.file).display().to_string(),
+            Source::Sealed(_) => "the solution on the exercise's page of the site".to_owned(),
+        }
+    }
+
+    /// The reference lines of `exercise`.
+    fn reference(&self, exercise: &Exercise) -> Result<Vec<String>> {
+        match self {
+            Source::Workbook(workbook, list) => reference_lines(workbook, list, exercise),
+            Source::Sealed(references) => references.get(&exercise.name).cloned().with_context(|| {
+                format!(
+                    "the sealed solutions have no exercise `{}`: they belong to another version \
+                     of the workbook than this edition's list",
+                    exercise.name
+                )
+            }),
+        }
+    }
+}
 
 /// What to put back.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -75,15 +133,14 @@ pub struct Outcome {
     pub already: Vec<String>,
 }
 
-/// Puts in the reference solutions `target` asks for, read from the workbook at `workbook`,
-/// in the student's workspace at `root`.
+/// Puts in the reference solutions `target` asks for, read from `source`, in the student's
+/// workspace at `root`.
 pub fn run(
     root: &Path,
     exercises: &[Exercise],
     target: &Target,
-    workbook: &Path,
+    source: &Source,
 ) -> Result<Outcome> {
-    let workbook_list = workbook_exercises(workbook)?;
     let mut outcome = Outcome::default();
     let chosen: Vec<&Exercise> = match target {
         Target::Exercise(name) => vec![find(exercises, name)?],
@@ -99,11 +156,11 @@ pub fn run(
     };
     let only_stubs = !matches!(target, Target::Exercise(_));
     for exercise in chosen {
-        let reference = reference_lines(workbook, &workbook_list, exercise)?;
+        let reference = source.reference(exercise)?;
         let path = root.join(&exercise.file);
-        let source = std::fs::read_to_string(&path)
+        let text = std::fs::read_to_string(&path)
             .with_context(|| format!("cannot read {}", exercise.file.display()))?;
-        let body = body_lines(&source, exercise, workbook)?;
+        let body = body_lines(&text, exercise, source)?;
         if body == reference {
             outcome.already.push(exercise.name.clone());
             continue;
@@ -112,7 +169,7 @@ pub fn run(
             outcome.kept.push(exercise.name.clone());
             continue;
         }
-        let saved = put_in(root, &path, &source, exercise, &reference)?;
+        let saved = put_in(root, &path, &text, exercise, &reference)?;
         outcome.restored.push(Restored {
             name: exercise.name.clone(),
             file: exercise.file.clone(),
@@ -142,7 +199,7 @@ pub fn is_stub(body: &[String], exercise: &Exercise) -> bool {
 }
 
 /// The lines of `exercise`'s anchor in `source`, without the anchor comments.
-fn body_lines(source: &str, exercise: &Exercise, workbook: &Path) -> Result<Vec<String>> {
+fn body_lines(source: &str, exercise: &Exercise, from: &Source) -> Result<Vec<String>> {
     let lines: Vec<&str> = source.lines().collect();
     let body = solution_markers::anchor_body(&lines, &exercise.anchor).with_context(|| {
         format!(
@@ -150,7 +207,7 @@ fn body_lines(source: &str, exercise: &Exercise, workbook: &Path) -> Result<Vec<
              around the exercise, so it cannot tell which lines to replace; put them back, or \
              copy the function by hand from {}",
             exercise.file.display(),
-            workbook.join(&exercise.file).display(),
+            from.describe(exercise),
             anchor = exercise.anchor
         )
     })?;
@@ -234,15 +291,8 @@ fn reference_lines(workbook: &Path, list: &[Exercise], exercise: &Exercise) -> R
     let path = workbook.join(&reference.file);
     let source = std::fs::read_to_string(&path)
         .with_context(|| format!("cannot read {}", path.display()))?;
-    let lines: Vec<&str> = source.lines().collect();
-    solution_markers::locate(&lines, &reference.anchor)
-        .with_context(|| format!("{}: exercise `{}`", path.display(), exercise.name))?;
-    let body = solution_markers::anchor_body(&lines, &reference.anchor)?;
-    Ok(lines[body]
-        .iter()
-        .filter(|line| Marker::of_line(line).is_none())
-        .map(|line| (*line).to_owned())
-        .collect())
+    sealed_solutions::reference_lines(&source, &reference.anchor)
+        .with_context(|| format!("{}: exercise `{}`", path.display(), exercise.name))
 }
 
 /// Writes `text` to `path` whole or not at all: into a file beside it, then renamed over it.
@@ -256,6 +306,16 @@ fn write_whole(path: &Path, text: &str) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`run`] with the reference solutions of the workbook at `workbook`.
+    fn run_from(
+        root: &Path,
+        exercises: &[Exercise],
+        target: &Target,
+        workbook: &Path,
+    ) -> Result<Outcome> {
+        run(root, exercises, target, &Source::workbook(workbook)?)
+    }
 
     /// A file with one exercise `name` whose body is `body`, built from escaped strings so that
     /// no marker sits at the start of a line of this file.
@@ -320,7 +380,7 @@ mod tests {
         let student = workspace(&[]);
         let exercises = exercise_list::load(student.path()).unwrap();
         let target = Target::named("a", &exercises).unwrap();
-        let outcome = run(student.path(), &exercises, &target, workbook.path()).unwrap();
+        let outcome = run_from(student.path(), &exercises, &target, workbook.path()).unwrap();
         assert_eq!(names(&outcome.restored), ["a"]);
         assert_eq!(
             read(&student, "a"),
@@ -334,7 +394,7 @@ mod tests {
             &exercises[1..]
         ));
         // Again: nothing to do, and the student's saved attempt is not overwritten.
-        let again = run(student.path(), &exercises, &target, workbook.path()).unwrap();
+        let again = run_from(student.path(), &exercises, &target, workbook.path()).unwrap();
         assert!(again.restored.is_empty());
         assert_eq!(again.already, ["a"]);
         let still = std::fs::read_to_string(&outcome.restored[0].saved).unwrap();
@@ -355,7 +415,7 @@ mod tests {
             );
         }
         let target = Target::named("ch01", &exercises).unwrap();
-        let outcome = run(student.path(), &exercises, &target, workbook.path()).unwrap();
+        let outcome = run_from(student.path(), &exercises, &target, workbook.path()).unwrap();
         assert_eq!(names(&outcome.restored), ["a"]);
         assert_eq!(outcome.kept, ["b"]);
         assert_eq!(read(&student, "b"), written);
@@ -368,7 +428,7 @@ mod tests {
         let student = workspace(&[]);
         let exercises = exercise_list::load(student.path()).unwrap();
         let target = Target::NeedsOf("c".into());
-        let outcome = run(student.path(), &exercises, &target, workbook.path()).unwrap();
+        let outcome = run_from(student.path(), &exercises, &target, workbook.path()).unwrap();
         assert_eq!(names(&outcome.restored), ["a", "b"]);
         assert!(read(&student, "a").contains("    -d\n"));
         assert!(read(&student, "c").contains("exercise::todo(\"c: hint\")"));
@@ -385,28 +445,60 @@ mod tests {
         let other = workspace(&[]);
         let exercises = exercise_list::load(student.path()).unwrap();
         let a = Target::Exercise("a".into());
-        let error = run(student.path(), &exercises, &a, other.path()).unwrap_err();
+        let error = run_from(student.path(), &exercises, &a, other.path()).unwrap_err();
         assert!(
             format!("{error:#}").contains("holds no solutions"),
             "{error:#}"
         );
 
         let workbook = workspace(&["a", "b", "c"]);
-        let error = run(workbook.path(), &exercises, &a, workbook.path()).unwrap_err();
+        let error = run_from(workbook.path(), &exercises, &a, workbook.path()).unwrap_err();
         assert!(format!("{error:#}").contains("solved already"), "{error:#}");
 
         let nothing = Target::Exercise("ch01-nothing".into());
-        let error = run(student.path(), &exercises, &nothing, workbook.path()).unwrap_err();
+        let error = run_from(student.path(), &exercises, &nothing, workbook.path()).unwrap_err();
         assert!(
             format!("{error:#}").contains("no exercise `ch01-nothing`"),
             "{error:#}"
         );
         let nowhere = student.path().join("no-such-dir");
-        let error = run(student.path(), &exercises, &a, &nowhere).unwrap_err();
+        let error = run_from(student.path(), &exercises, &a, &nowhere).unwrap_err();
         assert!(
             format!("{error:#}").contains("not the workbook"),
             "{error:#}"
         );
+    }
+
+    #[test]
+    fn sealed_solutions_put_in_what_the_workbook_would() {
+        let workbook = workspace(&["a", "b", "c"]);
+        let workbook_list = exercise_list::load(workbook.path()).unwrap();
+        let sealed = sealed_solutions::seal(
+            &sealed_solutions::collect(workbook.path(), &workbook_list).unwrap(),
+        )
+        .unwrap();
+        let from_workbook = workspace(&[]);
+        let from_seal = workspace(&[]);
+        let exercises = exercise_list::load(from_seal.path()).unwrap();
+        let chapter = Target::named("ch01", &exercises).unwrap();
+
+        let error = Source::sealed(from_seal.path()).err().unwrap();
+        assert!(
+            format!("{error:#}").contains("handed out without its solutions"),
+            "{error:#}"
+        );
+        let path = from_seal.path().join(sealed_solutions::SEALED_PATH);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(&path, sealed).unwrap();
+        let source = Source::sealed(from_seal.path()).unwrap();
+
+        let outcome = run(from_seal.path(), &exercises, &chapter, &source).unwrap();
+        run_from(from_workbook.path(), &exercises, &chapter, workbook.path()).unwrap();
+        assert_eq!(names(&outcome.restored), ["a", "b"]);
+        for file in ["src/a.rs", "src/b.rs", "src/c.rs"] {
+            let read = |root: &Path| std::fs::read_to_string(root.join(file)).unwrap();
+            assert_eq!(read(from_seal.path()), read(from_workbook.path()), "{file}");
+        }
     }
 
     #[test]
@@ -419,7 +511,7 @@ mod tests {
             "pub fn a(d: f32) -> f32 {\n    d\n}\n",
         )
         .unwrap();
-        let error = run(
+        let error = run_from(
             student.path(),
             &exercises,
             &Target::Exercise("a".into()),

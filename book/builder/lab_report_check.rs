@@ -2,8 +2,8 @@
 //! result in the browser.
 //!
 //! It writes a fresh student edition (with the workbook's figures, which must have been built:
-//! CI's site step builds them), puts the reference solutions of chapters 01 and 02 in with
-//! `checkpoint`, runs the edition's own `progress --site`, and then requires that the pages
+//! CI's site step builds them, and with its solutions sealed), puts the reference solutions of
+//! chapters 01 and 02 in with `checkpoint` from the edition's sealed solutions alone, runs the edition's own `progress --site`, and then requires that the pages
 //! set the student's figures of chapters 01 and 02 beside the reference ones, that a later
 //! chapter says it is not finished, and that `check-site` finds nothing wrong with the site.
 //! Nothing in the workbook's own build exercises that path, so without this check it breaks
@@ -39,6 +39,9 @@ pub fn run(root: &Path, screenshots: &Path) -> Result<()> {
     let edition = student_dir.join("edition");
     println!("Writing a student edition to {}", edition.display());
     student_edition::write(root, &exercises, &edition, true)?;
+    // Handed out with sealed solutions, so that the checkpoints below come from the edition
+    // alone, as a student's would.
+    student_edition::seal_solutions(root, &exercises, &edition)?;
     if !lab_report::ship_reference_figures(root, &edition)? {
         bail!(
             "the workbook has no figures built, so the lab report would have nothing to compare \
@@ -51,9 +54,10 @@ pub fn run(root: &Path, screenshots: &Path) -> Result<()> {
     )?;
 
     let student_list = exercise_list::load(&edition)?;
+    let sealed = checkpoint::Source::sealed(&edition)?;
     for (chapter, _) in FINISHED {
         let target = Target::Chapter((*chapter).to_owned());
-        let outcome = checkpoint::run(&edition, &student_list, &target, root)?;
+        let outcome = checkpoint::run(&edition, &student_list, &target, &sealed)?;
         println!(
             "checkpoint {chapter}: put in {} exercise(s)",
             outcome.restored.len()

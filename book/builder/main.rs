@@ -31,6 +31,7 @@ mod mutants;
 mod offline_check;
 mod progress;
 mod prose_numbers;
+mod sealed_solutions;
 mod site;
 #[cfg(feature = "browser")]
 mod site_check;
@@ -66,6 +67,11 @@ enum Task {
         /// Delete what `--out` holds first.
         #[arg(long)]
         force: bool,
+        /// Hand it out with its solutions sealed: `checkpoint` then works from the edition
+        /// alone, while its site and its sources still show none (without this flag the
+        /// edition holds no solution, and `checkpoint` needs the workbook).
+        #[arg(long)]
+        sealed_solutions: bool,
     },
     /// List the exercises in order, with the command that checks each and its hint.
     Exercises,
@@ -111,9 +117,10 @@ enum Task {
         /// check can run: `--needs ch08-path-loop`.
         #[arg(long, value_name = "NAME", conflicts_with = "name")]
         needs: Option<String>,
-        /// The workbook: the repository with the solutions, from which this edition was made.
+        /// The workbook: the repository with the solutions, from which this edition was made
+        /// [default: the solutions sealed in this edition, if it was handed out with them].
         #[arg(long, value_name = "PATH")]
-        from: PathBuf,
+        from: Option<PathBuf>,
     },
     /// Walk a student's path to their lab report, as CI does: a fresh student edition with
     /// chapters 01 and 02 checkpointed runs `progress --site`, and its site must show their
@@ -151,7 +158,11 @@ fn main() -> Result<()> {
     let root = workspace::root();
     match cli.task {
         None => build_book(&root, cli.quick),
-        Some(Task::Student { out, force }) => {
+        Some(Task::Student {
+            out,
+            force,
+            sealed_solutions,
+        }) => {
             let exercises = exercise_list::load(&root)?;
             let files = student_edition::write(&root, &exercises, &out, force)?;
             println!(
@@ -159,6 +170,18 @@ fn main() -> Result<()> {
                 out.display(),
                 exercises.len()
             );
+            if sealed_solutions {
+                let path = student_edition::seal_solutions(&root, &exercises, &out)?;
+                println!(
+                    "With the solutions sealed in {}: `checkpoint` works without the workbook.",
+                    path.display()
+                );
+            } else {
+                println!(
+                    "Without solutions: `checkpoint` needs the workbook (`--from PATH`); \
+                     `--sealed-solutions` hands the edition out with them sealed."
+                );
+            }
             if lab_report::ship_reference_figures(&root, &out)? {
                 println!(
                     "With the workbook's figures in {}, for the student's own site \
@@ -216,10 +239,14 @@ fn main() -> Result<()> {
                 (None, Some(needs)) => checkpoint::Target::NeedsOf(needs),
                 _ => unreachable!("clap takes exactly one"),
             };
-            let outcome = checkpoint::run(&root, &exercises, &target, &from)?;
+            let source = match &from {
+                Some(workbook) => checkpoint::Source::workbook(workbook)?,
+                None => checkpoint::Source::sealed(&root)?,
+            };
+            let outcome = checkpoint::run(&root, &exercises, &target, &source)?;
             print!(
                 "{}",
-                checkpoint_report(&target, &outcome, &exercises, &from)
+                checkpoint_report(&target, &outcome, &exercises, from.as_deref())
             );
             Ok(())
         }
@@ -380,7 +407,7 @@ fn checkpoint_report(
     target: &checkpoint::Target,
     outcome: &checkpoint::Outcome,
     exercises: &[exercise_list::Exercise],
-    from: &Path,
+    from: Option<&Path>,
 ) -> String {
     let mut text = String::new();
     for restored in &outcome.restored {
@@ -399,9 +426,9 @@ fn checkpoint_report(
     }
     if !outcome.kept.is_empty() {
         text += &format!(
-            "Kept as you wrote them: {} (`checkpoint NAME --from {}` replaces one).\n",
+            "Kept as you wrote them: {} (`checkpoint NAME{}` replaces one).\n",
             outcome.kept.join(", "),
-            from.display()
+            from.map_or(String::new(), |from| format!(" --from {}", from.display()))
         );
     }
     let check = |name: &str| {

@@ -257,6 +257,24 @@ pub fn write(root: &Path, exercises: &[Exercise], out: &Path, force: bool) -> Re
     Ok(edition.len())
 }
 
+/// Seals the reference solutions of `exercises`, read from the workbook at `root`, into the
+/// edition at `out` (see [`crate::sealed_solutions`]); returns the sealed file's path.
+pub fn seal_solutions(root: &Path, exercises: &[Exercise], out: &Path) -> Result<PathBuf> {
+    use crate::sealed_solutions::{SEALED_PATH, collect, seal};
+    let sealed = seal(&collect(root, exercises)?)?;
+    let path = out.join(SEALED_PATH);
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent)
+            .with_context(|| format!("cannot create {}", parent.display()))?;
+    }
+    let temporary = path.with_extension("sealed.partial");
+    std::fs::write(&temporary, sealed)
+        .with_context(|| format!("cannot write {}", temporary.display()))?;
+    std::fs::rename(&temporary, &path)
+        .with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(path)
+}
+
 /// Writes a plain copy of the workspace's sources into `out`, solutions and all, replacing
 /// what `out` held: where `check-exercises` tries the recorded wrong answers.
 pub fn write_copy(root: &Path, out: &Path) -> Result<usize> {
