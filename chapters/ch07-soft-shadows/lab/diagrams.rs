@@ -3,7 +3,7 @@
 //!
 //! - `area-to-solid-angle.svg`: a receiver under a tilted panel light, points on the panel
 //!   from [`sample_parallelogram_light`], and one small patch `dA` of the panel with the cone
-//!   of directions `dω` it covers from the receiver: the angles `θ` and `θ′` and the distance
+//!   of directions `dω` it covers from the receiver: the angles `θ` and `θ_A` and the distance
 //!   `r` that turn the one into the other.
 //! - `sphere-cone.svg`: a receiver and a sphere light, the cone [`sphere_cone`] finds (its
 //!   axis, its half-angle, the tangent lines touching the sphere), and directions drawn in it
@@ -106,13 +106,14 @@ impl PanelScene {
     }
 }
 
-const PANEL_DESCRIPTION: &str = "A receiver point on a floor, with its normal, under a tilted \
-    panel light seen edge-on; dots mark points sampled on the panel. One small patch dA of \
-    the panel is highlighted, with the thin cone of directions dω it covers from the \
-    receiver, drawn where the cone crosses the unit circle around the receiver. The patch is \
-    at distance r, its normal makes the angle θ′ with the direction back to the receiver and \
-    the receiver's normal the angle θ with the direction to the patch: the patch covers the \
-    solid angle dω = cos θ′ dA / r², smaller the farther away or the more edge-on it is";
+const PANEL_DESCRIPTION: &str = "A receiver point x on a floor, with its normal, under a \
+    tilted panel light seen edge-on; dots mark points sampled on the panel. One small patch dA \
+    of the panel, around the point y, is highlighted, with the thin cone of directions dω it \
+    covers from the receiver, drawn where the cone crosses the unit circle around the \
+    receiver. The patch is at distance r, the light's normal makes the angle θ_A with the \
+    direction back to the receiver and the receiver's normal the angle θ with the direction \
+    to the patch: the patch covers the solid angle dω = cos θ_A dA / r², smaller the farther \
+    away or the more edge-on it is";
 
 fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
     let mut diagram = Diagram::new(PANEL_DESCRIPTION, (-1.3, 2.3), (-0.35, 2.75), WIDTH);
@@ -145,9 +146,9 @@ fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
         )
         .line(end_a, end_b, Ink::OtherRay)
         .label(
-            (end_b.0 + 0.02, end_b.1 + 0.1),
-            "dA",
-            Anchor::Centre,
+            (end_a.0 - 0.02, end_a.1 + 0.16),
+            "dA around y",
+            Anchor::Right,
             Ink::OtherRay,
         );
     for sample in &scene.samples {
@@ -156,7 +157,7 @@ fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
     // The receiver, its normal and the angle θ to the patch.
     diagram
         .dot(x, Ink::Surface)
-        .label((0.0, -0.1), "receiver", Anchor::Above, Ink::Surface)
+        .label((0.0, -0.1), "receiver x", Anchor::Above, Ink::Surface)
         .arrow(x, point(RECEIVER + 0.7 * RECEIVER_NORMAL), Ink::Normal)
         .label((0.0, 0.75), "n̂", Anchor::Below, Ink::Normal)
         .arc(
@@ -176,7 +177,7 @@ fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
             Anchor::Centre,
             Ink::Guide,
         );
-    // The distance r and the patch's normal, with the angle θ′ to the way back.
+    // The distance r and the patch's normal, with the angle θ_A to the way back.
     let yp = point(y);
     let mid = (0.3 * x.0 + 0.7 * yp.0, 0.3 * x.1 + 0.7 * yp.1);
     let normal_tip = point(y + 0.6 * scene.chosen.n);
@@ -188,7 +189,7 @@ fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
         .arrow(yp, normal_tip, Ink::Normal)
         .label(
             (normal_tip.0 + 0.05, normal_tip.1 - 0.05),
-            "n̂′",
+            "light normal",
             Anchor::Left,
             Ink::Normal,
         )
@@ -201,14 +202,14 @@ fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
         )
         .label(
             polar(yp, 0.47, (back + light_normal) / 2.0),
-            "θ′",
+            "θ_A",
             Anchor::Centre,
             Ink::Guide,
         )
         .dot(yp, Ink::OtherRay)
         .label(
             (-1.2, 2.55),
-            "dω = cos θ′ dA / r²",
+            "dω = cos θ_A dA / r²",
             Anchor::Left,
             Ink::OtherRay,
         );
@@ -265,7 +266,7 @@ impl SphereScene {
 
 const SPHERE_DESCRIPTION: &str = "A receiver point on a floor and a sphere light above it. \
     From the receiver, two tangent lines touch the sphere; between them lies the cone of \
-    directions in which the sphere is seen, of half-angle θmax about the axis to the sphere's \
+    directions in which the sphere is seen, of half-angle θ_max about the axis to the sphere's \
     centre, at distance d; R is the sphere's radius. Six directions sampled uniformly in the \
     cone end on the cap of the sphere that faces the receiver, between the two points of \
     tangency; the far side of the sphere gets none";
@@ -330,7 +331,7 @@ fn sphere_cone_diagram(scene: &SphereScene) -> Diagram {
         .arc(x, 0.5, axis.min(rim_a), axis.max(rim_a), Ink::OtherRay)
         .label(
             polar(x, 0.55, axis.max(rim_a) + 0.08),
-            "θmax",
+            "θ_max",
             Anchor::Right,
             Ink::OtherRay,
         )
@@ -387,7 +388,7 @@ mod tests {
     #[test]
     fn the_patch_covers_cos_theta_prime_da_over_r_squared() {
         // The patch of the diagram, as a square of the panel, measured exactly from the
-        // receiver; the label's cos θ′ dA / r² and the chapter's conversion of densities must
+        // receiver; the label's cos θ_A dA / r² and the chapter's conversion of densities must
         // agree with it.
         let scene = PanelScene::new();
         let corner = |dx: f32, dy: f32| {
