@@ -7,10 +7,10 @@
 //! near it:
 //!
 //! - **The empirical approach** ([`sample_disc_perturbation`]): move the tip of `center` by a
-//!   random point of a disc of radius `R` lying across it. It is quick and looks plausible, but the directions it
-//!   makes have no named distribution, and a renderer that uses it weights every ray by the
-//!   surface's reflectance alone, so what it computes is whatever that distribution happens
-//!   to be.
+//!   random point of a disc of radius `R` lying across it. It is quick and looks plausible,
+//!   but the directions it makes have no named distribution, and a renderer that uses it
+//!   weights every ray by the surface's reflectance alone, so what it computes is whatever
+//!   that distribution happens to be.
 //! - **The `cos^n` lobe** ([`sample_lobe_around`]): directions with density
 //!   `(n + 1) / 2π · cos^n α` per solid angle, `α` the angle from `center` (chapter 02's
 //!   warp, turned to point along `center`). The exponent `n` is the roughness: `n = 0` spreads

@@ -3,9 +3,9 @@
 //! Seen from a receiver at `x`, a sphere of radius `R` at distance `d` covers the cone of
 //! directions within `θ_max` of its centre ([`sphere_cone`], an exercise). Area sampling
 //! wastes samples on it: half its surface faces away from `x` and, of the rest, the parts near
-//! the silhouette are seen at a grazing angle and get as many samples as the parts facing `x`. Sampling the
-//! cone uniformly instead (chapter 02's spherical cap, pbrt-v4's `Sphere::Sample`) sends every
-//! shadow ray towards the light, with the constant density
+//! the silhouette are seen at a grazing angle and get as many samples as the parts facing `x`.
+//! Sampling the cone uniformly instead (chapter 02's spherical cap, pbrt-v4's
+//! `Sphere::Sample`) sends every shadow ray towards the light, with the constant density
 //!
 //! ```text
 //! p_ω = 1 / (2π (1 - cos θ_max))   per steradian,
