@@ -47,6 +47,9 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch06", out, quick)?;
     let level = figures.level();
     let quality = quality(level);
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the roughness series", |out| {
         roughness_series(out, &quality)
     })?;

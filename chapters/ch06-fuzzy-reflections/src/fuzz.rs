@@ -6,12 +6,11 @@
 //! ideal direction `center` (the mirror or the refracted direction) and return a direction
 //! near it:
 //!
-//! - **The empirical approach** ([`sample_disc_perturbation`]): build an orthonormal frame
-//!   `(a, b)` around `center`, draw a point `(x, y)` on a disc of radius `R`, and add
-//!   `x a + y b` to the direction. It is quick and looks plausible, but the directions it
-//!   makes have no named distribution, and a renderer that uses it weights every ray by the
-//!   surface's reflectance alone, so what it computes is whatever that distribution happens
-//!   to be.
+//! - **The empirical approach** ([`sample_disc_perturbation`]): move the tip of `center` by a
+//!   random point of a disc of radius `R` lying across it. It is quick and looks plausible,
+//!   but the directions it makes have no named distribution, and a renderer that uses it
+//!   weights every ray by the surface's reflectance alone, so what it computes is whatever
+//!   that distribution happens to be.
 //! - **The `cos^n` lobe** ([`sample_lobe_around`]): directions with density
 //!   `(n + 1) / 2π · cos^n α` per solid angle, `α` the angle from `center` (chapter 02's
 //!   warp, turned to point along `center`). The exponent `n` is the roughness: `n = 0` spreads
@@ -80,9 +79,9 @@ impl FuzzMethod {
 /// unit solid angle, `α` the angle between the direction and `center`
 /// ([`lobe_around_pdf`]).
 ///
-/// Chapter 02's `sample_cos_lobe` draws the lobe around `+z`; here it is turned so that `+z`
-/// becomes `center`, through any orthonormal frame `(a, b, center)`: the lobe is symmetric
-/// about its axis, so which `a` and `b` does not matter.
+/// Chapter 02's `sample_cos_lobe` draws the lobe around `+z`. Which map carries `+z` to
+/// `center` and keeps every angle between directions, and does it matter how it turns the
+/// lobe about its own axis?
 pub fn sample_lobe_around(center: Vec3, exponent: f32, u: Vec2) -> Vec3 {
     // BEGIN SOLUTION
     use ch02_monte_carlo::warps::sample_cos_lobe;

@@ -6,13 +6,13 @@
 //! path of `d` glass surfaces costs `2^d` rays, most of them carrying almost nothing.
 //!
 //! Picking one of the two at random keeps one ray per bounce. The estimate stays right on
-//! average if the chosen ray's light is divided by the chance of choosing it:
+//! average if the chosen ray's light is weighted for the chance of choosing it:
 //!
-//! - [`GlassStrategy::Half`], the lecture's rule: reflect if `ξ < 1/2`, else refract. Each
-//!   is chosen half the time, so its light counts twice: `L = 2 F L_r` or `2 (1 - F) L_t`.
+//! - [`GlassStrategy::Half`], the lecture's rule: reflect if `ξ < 1/2`, else refract, each
+//!   with the weight the chapter's first exercise finds.
 //! - [`GlassStrategy::Fresnel`]: reflect with probability `F`. The chance equals the share,
-//!   so the weight is exactly 1 and no ray is spent on a branch that carries little light
-//!   (Mitsuba's `dielectric` chooses this way).
+//!   so no ray is spent on a branch that carries little light (Mitsuba's `dielectric` chooses
+//!   this way).
 //!
 //! Both are unbiased; they differ in noise, which the chapter's figures measure against the
 //! run time.
@@ -23,7 +23,7 @@
 pub enum GlassStrategy {
     /// Trace both rays (Whitted's method): exponential in the depth.
     Both,
-    /// One ray, each with probability 1/2, weighted by twice its Fresnel share.
+    /// One ray, each with probability 1/2, weighted to stay unbiased.
     Half,
     /// One ray, reflection with probability F, weighted by 1.
     Fresnel,

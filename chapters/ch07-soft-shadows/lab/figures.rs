@@ -45,6 +45,9 @@ fn quality(level: Level) -> RenderQuality {
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch07", out, quick)?;
     let q = quality(figures.level());
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the gallery of lights", |out| gallery(out, &q))?;
     figures.make("the shadow rays per light", |out| {
         samples_per_light(out, &q)

@@ -5,6 +5,7 @@
 
 pub mod agreement;
 pub mod cli;
+pub mod diagrams;
 pub mod figures;
 
 use ch06_fuzzy_reflections::lab::MICROFACET_AS_LOBE;

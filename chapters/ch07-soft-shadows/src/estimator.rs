@@ -12,9 +12,10 @@
 //! segment and 0 otherwise. `cos θ_A dA / |x - y|²` is the solid angle the patch `dA` covers
 //! from `x`, so this is the familiar `∫ L cos θ dω` written over the light.
 //!
-//! Draw `y` with density `p_A(y)` and the integral becomes the expectation of
-//! `L V cos θ cos θ_A / (|x - y|² p_A(y))`. For a uniform point, `p_A = 1 / A`: "scale intensity
-//! by area and cosine", as the lecture puts it. Averaging `N` such terms gives an unbiased
+//! Draw `y` with density `p_A(y)` and the integral becomes the expectation of one sample's
+//! term, the integrand at `y` over the density ([`area_light_contribution`], an exercise). For
+//! a uniform point, `p_A = 1 / A`: "scale intensity by area and cosine", as the lecture puts
+//! it. Averaging `N` such terms gives an unbiased
 //! estimate whose error falls as `1 / √N`; the partly visible lights of a penumbra are exactly
 //! where `V` varies and the samples disagree, which is why soft shadows are noisy.
 //!

@@ -1,11 +1,11 @@
 //! Sampling a sphere light by the directions it covers, and the change of measure.
 //!
 //! Seen from a receiver at `x`, a sphere of radius `R` at distance `d` covers the cone of
-//! directions within `θ_max` of its centre, `sin θ_max = R / d`. Area sampling wastes samples
-//! on it: half its surface faces away from `x` and, of the rest, the parts near the silhouette
-//! are seen at a grazing angle and get as many samples as the parts facing `x`. Sampling the
-//! cone uniformly instead (chapter 02's spherical cap, pbrt-v4's `Sphere::Sample`) sends every
-//! shadow ray towards the light, with the constant density
+//! directions within `θ_max` of its centre ([`sphere_cone`], an exercise). Area sampling
+//! wastes samples on it: half its surface faces away from `x` and, of the rest, the parts near
+//! the silhouette are seen at a grazing angle and get as many samples as the parts facing `x`.
+//! Sampling the cone uniformly instead (chapter 02's spherical cap, pbrt-v4's
+//! `Sphere::Sample`) sends every shadow ray towards the light, with the constant density
 //!
 //! ```text
 //! p_ω = 1 / (2π (1 - cos θ_max))   per steradian,
@@ -58,7 +58,7 @@ pub struct SphereCone {
     pub axis: Vec3,
     /// The distance `d` from the point to the centre.
     pub distance: f32,
-    /// `sin θ_max = R / d`.
+    /// `sin θ_max`, of the cone's half-angle.
     pub sin_theta_max: f32,
     /// `sin² θ_max`.
     pub sin2_theta_max: f32,
