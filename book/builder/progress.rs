@@ -202,8 +202,8 @@ pub fn report(exercises: &[Exercise], statuses: &[Status]) -> String {
             if !missing.is_empty() {
                 text.push_str(&format!(
                     "Its check cannot pass until {} {} done too: do {}, or put the reference \
-                     solutions in with `cargo run -p book -- checkpoint --needs {} --from <the \
-                     workbook>`.\n",
+                     solutions in with `cargo run -p book -- checkpoint --needs {}` (with \
+                     `--from <the workbook>` if your edition has no sealed solutions).\n",
                     missing.join(", "),
                     if missing.len() == 1 { "is" } else { "are" },
                     if missing.len() == 1 { "it" } else { "them" },
@@ -211,8 +211,9 @@ pub fn report(exercises: &[Exercise], statuses: &[Status]) -> String {
                 ));
             }
             text.push_str(&format!(
-                "Stuck? `cargo run -p book -- checkpoint {} --from <the workbook>` puts the \
-                 reference solution in (your version is kept), so you can go on.\n",
+                "Stuck? `cargo run -p book -- checkpoint {}` puts the reference solution in \
+                 (your version is kept), so you can go on; add `--from <the workbook>` if your \
+                 edition has no sealed solutions.\n",
                 exercise.name
             ));
         }
