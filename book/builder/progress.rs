@@ -281,7 +281,7 @@ mod tests {
         );
         assert!(text.contains("Next: ch01-refract in chapters/ch01-whitted/src/optics.rs"));
         assert!(text.contains("hint: Which part changes?\n        And which does not?"));
-        assert!(text.contains("checkpoint ch01-refract --from"), "{text}");
+        assert!(text.contains("checkpoint ch01-refract` puts"), "{text}");
         let all = report(&exercises[..1], &[Status::Done]);
         assert!(all.contains("Every exercise is done."), "{all}");
     }
