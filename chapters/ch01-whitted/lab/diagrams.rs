@@ -16,7 +16,7 @@ use std::path::Path;
 use workbench::output::figures::{Anchor, Diagram, Ink, Point};
 
 /// The page's description (and the SVG's title) of the Snell's law diagram.
-const SNELL: &str = "Snell's law at a flat interface. Left: rays from air (η = 1.0) at three \
+const SNELL: &str = "Snell's law at a flat interface. Left: rays from air (η = 1) at three \
     angles enter glass (η = 1.5) and bend towards the normal. Right: rays from inside the glass \
     at three angles leave into air and bend away from the normal; the one beyond the critical \
     angle θc has no refracted ray and is reflected back into the glass (total internal \
@@ -128,16 +128,17 @@ fn snell_diagram() -> Diagram {
         } else {
             (eta_t, eta_i)
         };
-        let name = |eta: f32| if eta == GLASS { "glass" } else { "air" };
+        // The indices as the page writes them: 1 for air, 1.5 for glass.
+        let name = |eta: f32| if eta == GLASS { "1.5 (glass)" } else { "1 (air)" };
         diagram.label(
             (right - 0.05, 1.45),
-            &format!("η = {eta_above:.1} ({})", name(eta_above)),
+            &format!("η = {}", name(eta_above)),
             Anchor::Right,
             Ink::Surface,
         );
         diagram.label(
             (right - 0.05, -1.45),
-            &format!("η = {eta_below:.1} ({})", name(eta_below)),
+            &format!("η = {}", name(eta_below)),
             Anchor::Right,
             Ink::Surface,
         );
