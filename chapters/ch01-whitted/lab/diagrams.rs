@@ -129,7 +129,13 @@ fn snell_diagram() -> Diagram {
             (eta_t, eta_i)
         };
         // The indices as the page writes them: 1 for air, 1.5 for glass.
-        let name = |eta: f32| if eta == GLASS { "1.5 (glass)" } else { "1 (air)" };
+        let name = |eta: f32| {
+            if eta == GLASS {
+                "1.5 (glass)"
+            } else {
+                "1 (air)"
+            }
+        };
         diagram.label(
             (right - 0.05, 1.45),
             &format!("η = {}", name(eta_above)),
@@ -260,11 +266,7 @@ fn glass_split(ray: &Ray, hit: &SurfaceHit) -> Vec<(Ray, f32)> {
         spawned.push(*next);
         answers[spawned.len() - 1]
     });
-    spawned
-        .into_iter()
-        .zip(total.to_array())
-        .map(|(ray, weight)| (ray, weight))
-        .collect()
+    spawned.into_iter().zip(total.to_array()).collect()
 }
 
 /// The ray tree of one camera ray, computed with the chapter's optics and the workbook's sphere.
