@@ -55,6 +55,9 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch01", out, quick)?;
     let level = figures.level();
     let quality = Quality::at(level);
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the recursion-depth figure", |out| {
         recursion_depth(out, &quality)
     })?;

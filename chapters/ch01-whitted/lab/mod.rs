@@ -3,6 +3,7 @@
 //! default); the library without it is the lecture alone.
 
 pub mod agreement;
+pub mod diagrams;
 pub mod figures;
 
 use workbench::capabilities::{Capabilities, Chapter};

@@ -51,6 +51,9 @@ impl Quality {
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch02", out, quick)?;
     let quality = Quality::at(figures.level());
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the warp scatter plots", |out| {
         warp_scatter_plots(out, &quality)
     })?;

@@ -22,7 +22,7 @@ pub fn plot_error_vs_n_with_slope(
 ) -> Result<(), OutputError> {
     let mut series = series_by_technique(records, |r| r.spp as f64);
     series.extend(inverse_sqrt_reference(records));
-    let axes = Axes::log_log("samples n", "RMSE");
+    let axes = Axes::log_log("samples N", "RMSE");
     line_plot(path, title, &axes, &series)
 }
 
@@ -38,7 +38,7 @@ pub fn inverse_sqrt_reference(records: &[ConvergenceRecord]) -> Option<Series> {
         .iter()
         .map(|&n| (n as f64, constant / (n as f64).sqrt()))
         .collect();
-    Some(Series::new("1/√n", points, SeriesStyle::Dashed))
+    Some(Series::new("1/√N", points, SeriesStyle::Dashed))
 }
 
 /// Writes the three outputs of a convergence experiment into `directory`: the table

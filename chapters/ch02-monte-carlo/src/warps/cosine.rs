@@ -4,12 +4,12 @@
 //! wants directions with density `p(ω) = cos θ / π` (the `π` normalises:
 //! `∫ cos θ dω = π` over the hemisphere).
 //!
-//! Malley's observation gives this density for free. Take a uniform point of the unit disc and
-//! lift it straight up onto the hemisphere above it, `z = √(1 - x² - y²)`. The disc is the
-//! hemisphere's orthographic projection, and a patch `dω` of the hemisphere projects to a
-//! patch of area `dA = cos θ dω` (it is tilted by `θ` against the disc). The probability in
-//! a patch is the same above and below, so `p(ω) dω = p(A) dA = (1 / π) cos θ dω`, which is
-//! exactly `cos θ / π`.
+//! Malley's observation gives this density for free. Take a uniform point of the unit disc
+//! and lift it straight up onto the unit hemisphere above it (how high is the exercise). The
+//! disc is the hemisphere's orthographic projection, and a patch `dω` of the hemisphere
+//! projects to a patch of area `dA = cos θ dω` (it is tilted by `θ` against the disc). The
+//! probability in a patch is the same above and below, so
+//! `p(ω) dω = p(A) dA = (1 / π) cos θ dω`, which is exactly `cos θ / π`.
 //!
 //! Any uniform disc warp gives this density; this one lifts the concentric map's point,
 //! which keeps stratified samples compact.
@@ -25,8 +25,9 @@ use super::concentric;
 /// ([`cosine_hemisphere_pdf`]): a uniform disc point (the concentric map) lifted to the unit
 /// hemisphere above it.
 ///
-/// `1 - x² - y²` can round to a hair below 0 at the rim; clamping keeps the square root
-/// finite.
+/// The answer is a unit direction with `z ≥ 0` for every `u` of the square, its edges
+/// included: there the disc point lies on the rim, where rounding can carry it a hair outside
+/// the disc.
 pub fn sample_cosine_hemisphere(u: Vec2) -> Vec3 {
     // BEGIN SOLUTION
     let d = concentric::sample_uniform_disc_concentric(u);
