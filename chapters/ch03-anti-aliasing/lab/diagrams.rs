@@ -96,7 +96,11 @@ fn filter_footprint() -> Diagram {
         diagram.polyline(outline, Ink::Light);
         for i in 0..=COLUMNS {
             let x = i as f32;
-            diagram.line(at(Vec2::new(x, 0.0)), at(Vec2::new(x, ROWS as f32)), Ink::Guide);
+            diagram.line(
+                at(Vec2::new(x, 0.0)),
+                at(Vec2::new(x, ROWS as f32)),
+                Ink::Guide,
+            );
         }
         for j in 0..=ROWS {
             let y = j as f32;

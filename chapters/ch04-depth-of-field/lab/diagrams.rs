@@ -95,8 +95,17 @@ fn thin_lens() -> Diagram {
         }
         diagram.line((film, dy - 1.0), (film, dy + 1.0), Ink::Surface);
         diagram.label((film + 0.1, dy + 0.95), "film", Anchor::Left, Ink::Surface);
-        let lens_label = if k == 0 { "lens, aperture D" } else { "aperture D" };
-        diagram.label((0.0, dy + r + 0.08), lens_label, Anchor::Below, Ink::Surface);
+        let lens_label = if k == 0 {
+            "lens, aperture D"
+        } else {
+            "aperture D"
+        };
+        diagram.label(
+            (0.0, dy + r + 0.08),
+            lens_label,
+            Anchor::Below,
+            Ink::Surface,
+        );
         if k == 0 {
             diagram.label((focal, dy + 1.05), "focal plane", Anchor::Below, Ink::Guide);
         }
@@ -145,11 +154,24 @@ fn thin_lens() -> Diagram {
     }
     // The focus distance, under the lower panel.
     let y = -panel - 1.15;
-    diagram.line((-f64::from(FOCUS), y - 0.1), (-f64::from(FOCUS), y + 0.1), Ink::Surface);
+    diagram.line(
+        (-f64::from(FOCUS), y - 0.1),
+        (-f64::from(FOCUS), y + 0.1),
+        Ink::Surface,
+    );
     diagram.line((0.0, y - 0.1), (0.0, y + 0.1), Ink::Surface);
-    diagram.arrow((-1.25, y + 0.22), (-f64::from(FOCUS), y + 0.22), Ink::Surface);
+    diagram.arrow(
+        (-1.25, y + 0.22),
+        (-f64::from(FOCUS), y + 0.22),
+        Ink::Surface,
+    );
     diagram.arrow((-1.25, y + 0.22), (0.0, y + 0.22), Ink::Surface);
-    diagram.label((-1.25, y + 0.12), "focus distance d_f", Anchor::Above, Ink::Surface);
+    diagram.label(
+        (-1.25, y + 0.12),
+        "focus distance d_f",
+        Anchor::Above,
+        Ink::Surface,
+    );
     diagram
 }
 
@@ -259,7 +281,12 @@ fn focal_plane() -> Diagram {
     let y = -panel - 1.0;
     diagram.arrow((d_f / 2.0, y + 0.22), (0.0, y + 0.22), Ink::Surface);
     diagram.arrow((d_f / 2.0, y + 0.22), (d_f, y + 0.22), Ink::Surface);
-    diagram.label((d_f / 2.0, y + 0.12), "focus distance d_f", Anchor::Above, Ink::Surface);
+    diagram.label(
+        (d_f / 2.0, y + 0.12),
+        "focus distance d_f",
+        Anchor::Above,
+        Ink::Surface,
+    );
     diagram
 }
 
@@ -272,7 +299,11 @@ mod tests {
     fn the_point_in_focus_meets_on_the_film_and_the_others_spread_by_the_circle_of_confusion() {
         let focused = bundle(IN_FOCUS.0, IN_FOCUS.1);
         for hit in focused.on_film {
-            assert!((hit - focused.image).length() < 1e-5, "{hit} {:?}", focused.image);
+            assert!(
+                (hit - focused.image).length() < 1e-5,
+                "{hit} {:?}",
+                focused.image
+            );
         }
         let film = film_distance();
         for (depth, height) in [NEARER, FARTHER] {
@@ -290,7 +321,10 @@ mod tests {
             }
             let spread = (b.on_film[0].y - b.on_film[2].y).abs();
             let c = circle_of_confusion_on_film(FOCAL_LENGTH, DIAMETER, FOCUS, depth);
-            assert!((spread - c).abs() < 1e-5, "depth {depth}: {spread} drawn, {c}");
+            assert!(
+                (spread - c).abs() < 1e-5,
+                "depth {depth}: {spread} drawn, {c}"
+            );
             // The same blur as the chapter's model sees it, in tangent units.
             let tangent = circle_of_confusion(DIAMETER / 2.0, FOCUS, depth);
             assert!((spread / film - tangent).abs() < 1e-5);
@@ -314,7 +348,10 @@ mod tests {
             }
             let spread = (rays.focus[0].x - rays.focus[2].x).abs() / MODEL_FOCUS;
             let c = circle_of_confusion(MODEL_RADIUS, MODEL_FOCUS, depth);
-            assert!((spread - c).abs() < 1e-5, "depth {depth}: {spread} drawn, {c}");
+            assert!(
+                (spread - c).abs() < 1e-5,
+                "depth {depth}: {spread} drawn, {c}"
+            );
         }
     }
 

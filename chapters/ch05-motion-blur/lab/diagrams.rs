@@ -100,21 +100,11 @@ fn shutter_opening() -> Diagram {
     diagram.label((-0.1, 1.0), "1", Anchor::Right, Ink::Ray);
     diagram.label((-0.1, plateau), "1/(1 − r)", Anchor::Right, Ink::OtherRay);
     diagram.line((-0.05, plateau), (x(RAMP), plateau), Ink::Guide);
-    for (t, text) in [
-        (0.0, "0"),
-        (RAMP, "r"),
-        (1.0 - RAMP, "1 − r"),
-        (1.0, "1"),
-    ] {
+    for (t, text) in [(0.0, "0"), (RAMP, "r"), (1.0 - RAMP, "1 − r"), (1.0, "1")] {
         diagram.line((x(t), 0.0), (x(t), -0.08), Ink::Surface);
         diagram.label((x(t), -0.1), text, Anchor::Above, Ink::Surface);
     }
-    diagram.label(
-        (x(0.5), 1.0 - 0.08),
-        "box",
-        Anchor::Above,
-        Ink::Ray,
-    );
+    diagram.label((x(0.5), 1.0 - 0.08), "box", Anchor::Above, Ink::Ray);
     diagram.label(
         (x(0.5), plateau + 0.06),
         "trapezoid, r = ¼",
