@@ -1,8 +1,9 @@
-//! The chapter's figures: every sampler at growing sample counts, zoomed edges, the filters on
-//! the checkerboard, where the samples of a pixel land, the filter profiles, the error of one
-//! edge pixel, and error against time. Every number the chapter's page quotes from a run is
-//! written here too, as a small Markdown file the page includes (`edge_pixel.md`,
-//! `convergence.md`, `mitsuba_wider_tent.md`), so that the text and the figures always agree.
+//! The chapter's figures: the diagrams (`diagrams/`), every sampler at growing sample counts,
+//! zoomed edges, the filters on the checkerboard, where the samples of a pixel land, the filter
+//! profiles, the error of one edge pixel, and error against time. Every number the chapter's
+//! page quotes from a run is written here too, as a small Markdown file the page includes
+//! (`edge_pixel.md`, `convergence.md`, `mitsuba_wider_tent.md`), so that the text and the
+//! figures always agree.
 
 use crate::coverage::{HalfPlane, coverage_mse};
 use crate::filters::{FilterKind, ReconstructionFilter};
@@ -59,6 +60,9 @@ impl Quality {
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch03", out, quick)?;
     let quality = Quality::at(figures.level());
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the sampler comparison", |out| samplers(out, &quality))?;
     figures.make("the filter comparison", |out| filters(out, &quality))?;
     figures.make("the sample-position plots", pixel_samples)?;
@@ -261,8 +265,10 @@ fn filter_profiles(out: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Mean squared error of one pixel's coverage by an edge against samples per pixel: the slopes
-/// of random (-1), stratified (-3/2) and Halton sampling, and the centre's fixed error.
+/// The RMSE (root mean squared error) of one pixel's coverage by an edge against samples per
+/// pixel: the slopes of random (-1/2), stratified (-3/4) and Halton sampling, and the centre's
+/// fixed error. RMSE, like the error-against-time figures, so that the page speaks of one
+/// measure of error throughout.
 fn edge_pixel(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     let edge = HalfPlane {
         slope: 0.35,
@@ -274,7 +280,10 @@ fn edge_pixel(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         .map(|kind| {
             let points = counts
                 .iter()
-                .map(|&n| (n as f64, coverage_mse(kind, n, quality.repetitions, edge)))
+                .map(|&n| {
+                    let mse = coverage_mse(kind, n, quality.repetitions, edge);
+                    (n as f64, mse.sqrt())
+                })
                 .collect();
             Series::new(kind.name(), points, SeriesStyle::LineAndPoints)
         })
@@ -282,27 +291,27 @@ fn edge_pixel(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     line_plot(
         &out.join("edge_pixel.png"),
         "Error of one pixel cut by an edge",
-        &Axes::log_log("samples per pixel", "mean squared error of the coverage"),
+        &Axes::log_log("samples per pixel", "RMSE of the coverage"),
         &series,
     )?;
     write_text(&out.join("edge_pixel.md"), &edge_pixel_table(&series))?;
     Ok(())
 }
 
-/// The slope the theory predicts for the mean squared error of one edge pixel with `kind`.
+/// The slope the theory predicts for the RMSE of one edge pixel with `kind`.
 fn predicted_edge_slope(kind: &str) -> &'static str {
     match kind {
         "centre" => "0 (a fixed error)",
-        "random" => "-1",
-        "stratified" => "-3/2",
-        _ => "about -3/2",
+        "random" => "-1/2",
+        "stratified" => "-3/4",
+        _ => "about -3/4",
     }
 }
 
 /// The Markdown table of the fitted slopes of the edge pixel's error, one row per sampler.
 fn edge_pixel_table(series: &[Series]) -> String {
     let mut table = String::from(
-        "| sampler | fitted slope of log MSE against log n | the theory's slope | MSE at the largest n |\n\
+        "| sampler | fitted slope of log RMSE against log n | the theory's slope | RMSE at the largest n |\n\
          |---|---:|---|---:|\n",
     );
     for s in series {

@@ -6,6 +6,7 @@
 
 pub mod agreement;
 pub mod cli;
+pub mod diagrams;
 pub mod figures;
 pub mod scene_file;
 

@@ -1,8 +1,8 @@
-//! The chapter's figures: the lecture's aperture series, three focus settings, the naive lens
-//! warp against the correct ones, polygonal bokeh, where lens samples land, the circle of
-//! confusion against depth, and error against time. Every number the chapter's page quotes
-//! from a run is written here too, as a small Markdown file the page includes
-//! (`circle_of_confusion.md`, `convergence.md`, `mitsuba_naive.md`).
+//! The chapter's figures: the diagrams (`diagrams/`), the lecture's aperture series, three
+//! focus settings, the naive lens warp against the correct ones, polygonal bokeh, where lens
+//! samples land, the circle of confusion against depth, and error against time. Every number
+//! the chapter's page quotes from a run is written here too, as a small Markdown file the page
+//! includes (`circle_of_confusion.md`, `convergence.md`, `mitsuba_naive.md`).
 
 use crate::aperture::{
     Aperture, LensWarp, sample_uniform_regular_polygon, sample_uniform_regular_polygon_pdf,
@@ -73,6 +73,9 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch04", out, quick)?;
     let quality = Quality::at(figures.level());
     let scene = Builtin::Bokeh.build(DEFAULT_MAX_DEPTH);
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     let gallery = Gallery::new(&scene, &quality);
     figures.make("the aperture series", |out| aperture_series(out, &gallery))?;
     figures.make("the focus figure", |out| focus_depths(out, &gallery))?;
@@ -362,7 +365,7 @@ fn circle_of_confusion_plot(out: &Path, quality: &Quality) -> anyhow::Result<()>
     let mut series = Vec::new();
     for radius in [0.03, 0.12, 0.35] {
         series.push(Series::new(
-            format!("R = {radius}: 2R |d - d_f| / (d d_f)"),
+            format!("the circle of confusion, R = {radius}"),
             depths
                 .iter()
                 .map(|&d| {

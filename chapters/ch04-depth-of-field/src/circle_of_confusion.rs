@@ -11,10 +11,10 @@
 //! plane), so the point's image is a disc whose diameter, in tangent units, is the exercise
 //! below (times `W / (2 tan(fov_x / 2))` in pixels).
 //!
-//! **In a photographer's terms** (focal length `f`, aperture diameter `A = f / N`, film at
+//! **In a photographer's terms** (focal length `f`, aperture diameter `D = f / N`, film at
 //! `v = f d_f / (d_f - f)` behind the lens by the thin lens equation): similar triangles give
 //! the blur disc on the film ([`circle_of_confusion_on_film`]). Divided by the film distance
-//! `v`, the angle it covers, it is the same diameter with `A = 2R`: the two models agree, and
+//! `v`, the angle it covers, it is the same diameter with `D = 2R`: the two models agree, and
 //! Mitsuba's only drops the focal length, which affects nothing but the film's distance (and
 //! that the field of view already fixes).
 //!
@@ -51,8 +51,8 @@ pub fn circle_of_confusion_pixels(
 }
 
 /// The photographer's version: the blur disc's diameter *on the film*, for focal length
-/// `focal_length`, aperture diameter `aperture_diameter = f / N`, focused at `focus_distance`
-/// (which must exceed the focal length): `A |d - d_f| / d * f / (d_f - f)`.
+/// `focal_length`, aperture diameter `aperture_diameter` (`D = f / N`), focused at
+/// `focus_distance` (which must exceed the focal length), by similar triangles behind the lens.
 pub fn circle_of_confusion_on_film(
     focal_length: f32,
     aperture_diameter: f32,

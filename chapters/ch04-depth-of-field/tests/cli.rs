@@ -186,6 +186,8 @@ fn quick_figures_are_written() {
         "circle_of_confusion.png",
         "convergence.csv",
         "convergence.png",
+        "diagrams/thin-lens.svg",
+        "diagrams/focal-plane.svg",
     ] {
         assert!(dir.path().join(name).exists(), "{name} is missing");
     }

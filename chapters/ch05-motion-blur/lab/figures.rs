@@ -1,7 +1,8 @@
-//! The chapter's figures: a fast and a slow object, a spinning one and a moving camera; the
-//! shutter from short to long; where time samples land; error against time for independent
-//! and stratified time; the streak of a shutter that opens over a while; and what motion bounds
-//! cost a BVH.
+//! The chapter's figures: the diagrams (`diagrams/`: the shutter's opening over time and a
+//! moving sphere at stratified times); a fast and a slow object, a spinning one and a moving
+//! camera; the shutter from short to long; where time samples land; error against time for
+//! independent and stratified time; the streak of a shutter that opens over a while; and what
+//! motion bounds cost a BVH.
 
 use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH, DEFAULT_SHUTTER, swarm};
 use crate::shutter_opening::{sample_trapezoid_opening, trapezoid_opening_pdf};
@@ -43,6 +44,9 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch05", out, quick)?;
     let level = figures.level();
     let quality = quality(level);
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the gallery of motions", |out| gallery(out, &quality))?;
     figures.make("the shutter series", |out| shutter_lengths(out, &quality))?;
     figures.make("the time-sample plot", time_samples)?;

@@ -4,6 +4,7 @@
 //! the book's figures. Built with the `lab` feature (on by default); the library without it
 //! is the lecture alone.
 
+pub mod diagrams;
 pub mod figures;
 pub mod scene_file;
 pub mod shot;

@@ -6,12 +6,13 @@
 //! shrinks the object by `cos 45° = 1/√2` across the axis and leaves it as it is along the
 //! axis (a non-uniform scale, not a shear). So every keyframe matrix is split into a
 //! translation `T`, a rotation `R` and a scale `S` (`M = T R S`, a polar decomposition), and
-//! the parts are interpolated each in its own way: `T` and `S` linearly, `R` as a quaternion
-//! along the great circle (slerp), which turns at constant speed about a fixed axis.
+//! the parts are interpolated each in its own way ([`interpolate`]), so that the object moves
+//! along a straight line, turns about a fixed axis at constant speed and changes its size
+//! evenly.
 //!
-//! Slerp takes the shorter way round, so two neighbouring keyframes must differ by less than
-//! half a turn; a spin by one turn or more is written as several keyframes (see
-//! [`AnimatedTransform::spin`]).
+//! The rotation's interpolation takes the shorter way round, so two neighbouring keyframes
+//! must differ by less than half a turn; a spin by one turn or more is written as several
+//! keyframes (see [`AnimatedTransform::spin`]).
 
 use glam::{DMat3, Mat3, Mat4, Quat, Vec3};
 use std::fmt;
@@ -178,7 +179,7 @@ impl AnimatedTransform {
 
     /// A spin by `turns` full turns (any number, negative for the other way) about the unit
     /// `axis` through the origin, from `start` to `end`, followed by `then` (a placement).
-    /// Written with a keyframe every quarter turn, so slerp never has to guess the way round.
+    /// Written with a keyframe every quarter turn, so the rotation's interpolation never has to guess the way round.
     pub fn spin(axis: Vec3, turns: f32, start: f32, end: f32, then: Mat4) -> Self {
         let quarters = (turns.abs() * 4.0).ceil().max(1.0) as usize;
         let keyframes: Vec<(f32, Mat4)> = (0..=quarters)

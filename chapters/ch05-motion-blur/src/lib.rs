@@ -7,8 +7,8 @@
 //!
 //! - [`shutter`]: the interval and the time a uniform number picks; [`shutter_opening`]: a
 //!   shutter that opens and closes over a fraction of the exposure.
-//! - [`animated_transform`]: transforms between keyframes (translation, slerped rotation,
-//!   scale).
+//! - [`animated_transform`]: transforms between keyframes (translation, rotation and scale,
+//!   each interpolated in its own way).
 //! - [`object_space`]: intersecting a moving object by taking the ray into its own space.
 //! - [`motion_bounds`]: boxes that hold a moving object over an interval.
 //! - [`moving`]: moving shapes and the BVH over their motion bounds, per stretch of the

@@ -10,7 +10,8 @@
 //! the length of the path between them, which the corner's **speed bound** limits. Within a
 //! segment, with `u` running from 0 to 1, a point `x` of object space is at
 //! `T(u) + R(u) S(u) x`; its speed is at most `|T1 - T0| + θ max(|S0 x|, |S1 x|) + |(S1 - S0) x|`,
-//! where `θ` is the angle the rotation turns through (slerp turns at constant speed `θ`).
+//! where `θ` is the angle the rotation turns through (the interpolated rotation turns at the
+//! constant speed `θ`).
 //! pbrt-v4 instead solves for the exact extrema of each corner's path; more work for a box
 //! that is only slightly smaller.
 

@@ -72,7 +72,7 @@ pub enum ReconstructionFilter {
         /// Half-width in pixels.
         radius: f32,
     },
-    /// `(1 - |x|/r) (1 - |y|/r)`.
+    /// The tent of half-width `radius` along `x` times the same along `y`.
     Tent {
         /// Half-width in pixels.
         radius: f32,
