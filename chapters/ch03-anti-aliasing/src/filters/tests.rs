@@ -124,7 +124,7 @@ fn exercise_mitchell() {
             } else if x.abs() < 1.0 {
                 "the inner piece (|x| < 1) is off: at x = 0 it is (6 - 2B) / 6"
             } else {
-                "the outer piece (1 ≤ |x| < 2) is off: at x = 1 it is (B + 6C) / 6, and between \
+                "the outer piece (1 ≤ |x| < 2) is off: at x = 1 it is B / 6, and between \
                  1 and 2 the recommended B = C = 1/3 dips below 0"
             };
             panic!(
