@@ -78,14 +78,16 @@ fn giveaways_before_their_exercises(book: &Book, workspace: &Path) -> Result<Vec
             _ => None,
         })
         .collect();
-    let is_home = |line: &str, exercise: &exercise_list::Exercise| {
-        exercise_directive(line)
-            .and_then(|target| target.rsplit_once(':'))
-            .is_some_and(|(path, anchor)| {
-                anchor == exercise.anchor && Path::new(path).ends_with(&exercise.file)
-            })
-    };
-    Ok(giveaways::check(&pages, &exercises, is_home))
+    Ok(giveaways::check(&pages, &exercises, shows_exercise))
+}
+
+/// Whether `line` is the `{{#exercise}}` line that shows `exercise`.
+fn shows_exercise(line: &str, exercise: &exercise_list::Exercise) -> bool {
+    exercise_directive(line)
+        .and_then(|target| target.rsplit_once(':'))
+        .is_some_and(|(path, anchor)| {
+            anchor == exercise.anchor && Path::new(path).ends_with(&exercise.file)
+        })
 }
 
 /// One page with its exercises expanded and its marker lines dropped. Paths in `{{#exercise}}`
@@ -453,6 +455,36 @@ mod tests {
             }
         }
         assert!(leaks.is_empty(), "{}", leaks.join("\n"));
+    }
+
+    #[test]
+    fn no_page_of_the_book_states_a_key_expression_before_its_exercise() {
+        let workspace = crate::workspace::root();
+        let exercises = exercise_list::load(&workspace).unwrap();
+        let src = workspace.join("book/src");
+        let summary = std::fs::read_to_string(src.join("SUMMARY.md")).unwrap();
+        // The pages in the book's order, as SUMMARY.md lists them.
+        let names: Vec<&str> = summary
+            .split("](")
+            .skip(1)
+            .filter_map(|rest| rest.split_once(')').map(|(name, _)| name))
+            .filter(|name| name.ends_with(".md"))
+            .collect();
+        assert!(names.len() > 10, "{names:?}");
+        let texts: Vec<String> = names
+            .iter()
+            .map(|name| expand_includes(&std::fs::read_to_string(src.join(name)).unwrap(), &src))
+            .collect();
+        let pages: Vec<giveaways::Page> = names
+            .iter()
+            .zip(&texts)
+            .map(|(name, text)| giveaways::Page {
+                name: (*name).to_owned(),
+                text,
+            })
+            .collect();
+        let problems = giveaways::check(&pages, &exercises, shows_exercise);
+        assert!(problems.is_empty(), "{}", problems.join("\n"));
     }
 
     #[test]
