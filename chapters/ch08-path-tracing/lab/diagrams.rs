@@ -4,12 +4,12 @@
 //! Every point drawn comes from the chapter's code. The ray tree is walked over a small scene
 //! in the plane `z = 0` (a glass sphere, a mirror, a matte floor and a point light), where
 //! mirrors and glass keep every ray in that plane: at each hit the walk asks the chapter's
-//! [`Bsdf`] for its direction, as [`DistributionTracer`] does, and the tests check that the
+//! [`Bsdf`] for its direction, as [`DistributionTracer`](crate::DistributionTracer) does, and the tests check that the
 //! walk casts exactly as many rays as the tracer itself does with the same random numbers.
 //! The densities come from [`SceneLights::sample`] and [`SurfaceBsdf::pdf`].
 
 use crate::bsdf::{Bsdf, SurfaceBsdf};
-use crate::distribution_tracer::{DistributionOptions, DistributionTracer};
+use crate::distribution_tracer::DistributionOptions;
 use crate::lights::{LightRef, SceneLights};
 use ch01_whitted::world::World;
 use ch05_motion_blur::MotionScene;
@@ -126,26 +126,7 @@ impl Sampler for Fixed {
     }
 }
 
-/// A sampler that plays back the numbers a walk drew, and panics if asked for more.
-#[derive(Clone)]
-struct Script {
-    numbers: Vec<f32>,
-    next: usize,
-}
-
-impl Sampler for Script {
-    fn start_pixel_sample(&mut self, _: UVec2, _: u64) {}
-    fn get_pixel_2d(&mut self) -> Vec2 {
-        self.get_2d()
-    }
-    fn get_1d(&mut self) -> f32 {
-        let u = self.numbers[self.next];
-        self.next += 1;
-        u
-    }
-}
-
-/// Walks the tree that [`DistributionTracer`] grows from `ray` at depth `depth`, in its
+/// Walks the tree that [`DistributionTracer`](crate::DistributionTracer) grows from `ray` at depth `depth`, in its
 /// order: at a matte surface one shadow ray to each point light above it (the scene has no
 /// area lights and Cook's tracer gathers no indirect diffuse light), at a mirror one ray, at
 /// glass `k` rays, branch `b` drawing its Fresnel choice from `choice(b)`.
@@ -357,6 +338,8 @@ const WO: Vec3 = Vec3::new(-0.8, 0.6, 0.0);
 /// Panel A (picked) and panel B, each a parallelogram `1` deep in `z` whose edge in the plane
 /// `z = 0` runs from the first point to the second; their normals face down.
 const PANEL_A: (Vec3, Vec3) = (Vec3::new(0.2, 3.0, -0.5), Vec3::new(2.0, 3.6, -0.5));
+/// Panel A's number among the scene's shapes (the floor is 0).
+const PANEL_A_SHAPE: u32 = 1;
 const PANEL_B: (Vec3, Vec3) = (Vec3::new(-3.4, 2.2, -0.5), Vec3::new(-2.2, 3.0, -0.5));
 
 fn panel(edge: (Vec3, Vec3)) -> Parallelogram {
@@ -405,9 +388,8 @@ struct Vertex {
     y2: Vec3,
     bsdf_pdf: f32,
     bsdf_dir_light_pdf: f32,
-    /// The shape the BSDF direction's ray hits, and panel A's shape.
+    /// The shape the BSDF direction's ray hits.
     bsdf_ray_hits: Option<u32>,
-    panel_a_shape: u32,
 }
 
 fn vertex() -> Vertex {
@@ -449,7 +431,6 @@ fn vertex() -> Vertex {
         bsdf_pdf: bsdf.pdf(wo, to_y2),
         bsdf_dir_light_pdf: lights.area_pdf(light_a, hit.p, y2, quad.normal()),
         bsdf_ray_hits: world.intersect(&hit.spawn_ray(to_y2, 0.0)).map(|h| h.shape),
-        panel_a_shape: 1,
     }
 }
 
@@ -527,8 +508,14 @@ fn light_sample_densities() -> Diagram {
         Ink::Ray,
     );
     // The BSDF direction that reaches the same panel.
-    d.arrow(x, pt(v.y2), Ink::OtherRay);
-    d.dot(pt(v.y2), Ink::OtherRay);
+    // Drawn as a warning if it missed the panel, which the tests forbid.
+    let bsdf_ink = if v.bsdf_ray_hits == Some(PANEL_A_SHAPE) {
+        Ink::OtherRay
+    } else {
+        Ink::Warning
+    };
+    d.arrow(x, pt(v.y2), bsdf_ink);
+    d.dot(pt(v.y2), bsdf_ink);
     let bsdf_at = along(v.y2, 0.4);
     d.label(
         (bsdf_at.0 + 0.15, bsdf_at.1),
@@ -575,7 +562,27 @@ fn light_sample_densities() -> Diagram {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::distribution_tracer::DistributionTracer;
     use common::render::counting_rays;
+
+    /// A sampler that plays back the numbers a walk drew, and panics if asked for more.
+    #[derive(Clone)]
+    struct Script {
+        numbers: Vec<f32>,
+        next: usize,
+    }
+
+    impl Sampler for Script {
+        fn start_pixel_sample(&mut self, _: UVec2, _: u64) {}
+        fn get_pixel_2d(&mut self) -> Vec2 {
+            self.get_2d()
+        }
+        fn get_1d(&mut self) -> f32 {
+            let u = self.numbers[self.next];
+            self.next += 1;
+            u
+        }
+    }
 
     /// The rays the chapter's tracer casts from the camera ray with the numbers `numbers`,
     /// and how many of the numbers it drew.
@@ -674,7 +681,7 @@ mod tests {
         assert!((v.light_pdf - expected / v.pick).abs() > 0.1 * expected);
         assert_eq!(
             v.bsdf_ray_hits,
-            Some(v.panel_a_shape),
+            Some(PANEL_A_SHAPE),
             "the BSDF direction reaches panel A"
         );
         assert!(v.bsdf_pdf > 0.0 && v.bsdf_dir_light_pdf > 0.0 && v.light_dir_bsdf_pdf > 0.0);
