@@ -210,8 +210,8 @@ fn polar(theta: f32, r: f32) -> Point {
 fn ggx_density_polar() -> Diagram {
     let mut d = Diagram::new(
         "A polar plot of GGX's density of facet normals D against the angle from the surface's \
-         normal, each curve divided by its value at the normal: for roughness 0.2 a narrow \
-         spike, for roughness 0.5 a wider lobe. The dashed rays mark where each falls to half \
+         normal, each curve divided by its value at the normal: for a roughness of one fifth a \
+         narrow spike, for one half a wider lobe. The dashed rays mark where each falls to half \
          its peak; the rougher surface's normals spread further from the normal.",
         (-1.25, 1.25),
         (-0.2, 1.3),
