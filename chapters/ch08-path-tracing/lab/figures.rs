@@ -1,5 +1,7 @@
 //! The chapter's figures, in the order of the page:
 //!
+//! - the diagrams (`diagrams/`, [`crate::lab::diagrams`]): Cook's ray tree against a path,
+//!   and the densities of a light sample and a BSDF sample at one vertex;
 //! - the ray tree: rays per camera ray against the depth limit for branching factors 1, 2
 //!   and 4 (`ray-tree.csv`/`.png`), and the share of the pixel carried by each depth
 //!   (`depth-shares.csv`/`.png`);
@@ -172,6 +174,9 @@ impl Quality {
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch08", out, quick)?;
     let quality = Quality::at(figures.level());
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the ray-tree figures", |out| ray_tree(out, &quality))?;
     figures.make("distribution against path tracing", |out| {
         distribution_vs_path(out, &quality)

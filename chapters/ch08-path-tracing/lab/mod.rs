@@ -5,6 +5,7 @@
 
 pub mod agreement;
 pub mod cli;
+pub mod diagrams;
 pub mod estimate;
 pub mod figures;
 pub mod scene_file;

@@ -18,7 +18,7 @@ pub enum MisHeuristic {
     None,
     /// `p_a / (p_a + p_b)`.
     Balance,
-    /// `p_a² / (p_a² + p_b²)`.
+    /// Veach's power heuristic with exponent 2 ([`power_heuristic`]).
     Power,
 }
 

@@ -1,11 +1,10 @@
 //! Russian roulette: ending paths at random without bias.
 //!
 //! A path that carries little light costs as much to extend as one that carries much. From a
-//! depth on, continue with probability `q` and divide what survives by `q`: on average the
-//! estimate is unchanged, `q · (L / q) + (1 - q) · 0 = L`, and weak paths stop early. Mitsuba
-//! 3 takes `q = min(max throughput · eta², 0.95)`: the throughput without the radiance
-//! scaling of refractions (which says nothing about how much the path still matters), and
-//! never 1, so even a white furnace ends.
+//! depth on, continue with probability `q` and scale what survives so that on average the
+//! estimate is unchanged, and weak paths stop early. Mitsuba 3 takes `q` from the throughput
+//! without the radiance scaling of refractions (which says nothing about how much the path
+//! still matters), and never 1, so even a white furnace ends.
 
 /// The highest continuation probability: every path ends eventually.
 pub const MAX_SURVIVAL: f32 = 0.95;

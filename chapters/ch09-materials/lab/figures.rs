@@ -1,5 +1,7 @@
 //! The crate's figures, for the page "Beyond the lecture: Mitsuba's materials":
 //!
+//! - the diagrams (`diagrams/`, [`crate::lab::diagrams`]): the facets and the half vector,
+//!   GGX's density for two roughnesses, and the visible normals projected;
 //! - chapter 06's `cos^n` lobe against GGX and Beckmann of the same roughness
 //!   (`microfacet-lobes.png`, the exponents in `microfacet-lobes.md`);
 //! - the white furnace of a rough mirror (`microfacet-furnace.png`/`.md`);
@@ -19,6 +21,9 @@ use workbench::output::write_text;
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch09", out, quick)?;
     let level = figures.level();
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make(
         "microfacets: the cos^n lobe against GGX and Beckmann",
         microfacet_lobes,

@@ -5,6 +5,7 @@
 //! library without it is the materials alone.
 
 pub mod agreement;
+pub mod diagrams;
 pub mod figures;
 pub mod microfacet_chi2_table;
 pub mod microfacet_figures;

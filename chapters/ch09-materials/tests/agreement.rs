@@ -16,6 +16,16 @@ fn renders_agree_with_the_stored_mitsuba_renders() {
     AGREEMENT.check_stored().unwrap();
 }
 
+/// The diagrams, `figures/ch09/diagrams/NAME.svg`, that `page` shows.
+fn shown_diagrams(page: &str) -> Vec<String> {
+    page.match_indices("](figures/ch09/diagrams/")
+        .filter_map(|(at, prefix)| {
+            let rest = &page[at + prefix.len()..];
+            Some(format!("diagrams/{}", &rest[..rest.find(')')?]))
+        })
+        .collect()
+}
+
 /// The `figures/ch09/NAME.md` files that `page` includes.
 fn included_markdown(page: &str) -> Vec<String> {
     page.match_indices("{{#include figures/ch09/")
@@ -44,6 +54,14 @@ fn the_quick_figures_write_every_markdown_file_the_pages_include() {
             );
             checked += 1;
         }
+    }
+    let page = std::fs::read_to_string(book.join("ch09-materials.md")).unwrap();
+    let diagrams = shown_diagrams(&page);
+    assert!(diagrams.len() >= 3, "the page shows {diagrams:?}");
+    for name in diagrams {
+        let svg = std::fs::read_to_string(out.path().join(&name))
+            .unwrap_or_else(|e| panic!("ch09-materials.md shows figures/ch09/{name}: {e}"));
+        assert!(svg.contains("<title>"), "{name} has no title");
     }
     assert!(checked >= 4, "only {checked} generated files are included");
 }

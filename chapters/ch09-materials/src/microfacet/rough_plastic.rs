@@ -2,9 +2,11 @@
 //!
 //! - the coating's reflection, a rough dielectric's: `F(wo·h) D G / (4 cos θ_o)`;
 //! - the base, seen through the coating: `ρ' / π · cos θ_i · T(cos θ_o) T(cos θ_i) / η²`,
-//!   with `T` the [`Coating`]'s tabulated transmittance, `1/η²` the narrowing of the beam into
-//!   the denser coating, and `ρ' = ρ / (1 - R_int)` the base's albedo raised by the light the
-//!   coating reflects back down onto it (Mitsuba's default; `nonlinear` uses `ρ / (1 - ρ R_int)`).
+//!   with `T` the [`Coating`]'s tabulated transmittance, `1/η²` the widening of the beam as the
+//!   light leaves the denser coating into the air (on the way in, the base reflects the power
+//!   that reaches it, which the narrowing does not change), and `ρ' = ρ / (1 - R_int)` the
+//!   base's albedo raised by the light the coating reflects back down onto it (Mitsuba's linear
+//!   approximation, its default; `nonlinear` sums the series, `ρ / (1 - ρ R_int)`).
 //!
 //! Sampling picks the coating's lobe (visible normals) or the base's (cosine) with
 //! probabilities proportional to `(1 - T(cos θ_o)) w` and `T(cos θ_o) (1 - w)`, where `w` is
