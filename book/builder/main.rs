@@ -7,7 +7,8 @@
 //! - `cargo run -p book -- check-exercises` proves every exercise fails as a stub and passes as
 //!   solved, in order, and refuses its recorded wrong answers (CI runs it).
 //! - `cargo run -p book -- progress` (in the student edition) lists what is done and what next.
-//! - `cargo run -p book -- checkpoint NAME --from WORKBOOK` puts one reference solution back.
+//! - `cargo run -p book -- checkpoint NAME [--from WORKBOOK]` puts one reference solution back,
+//!   from the edition's sealed solutions or from the workbook.
 //! - `cargo run -p book -- check-prose` finds numbers typed into the pages that a run measured
 //!   (the site build runs it too).
 //! - `cargo run -p book --features browser -- check-site` opens every page of the built site in
@@ -29,6 +30,7 @@ mod lab_report_check;
 mod mdbook_log;
 mod mutants;
 mod offline_check;
+mod page_shape;
 mod progress;
 mod prose_numbers;
 mod sealed_solutions;
@@ -103,8 +105,9 @@ enum Task {
         #[arg(long, requires = "site")]
         full: bool,
     },
-    /// Find numbers in the pages' prose that should come from a generated file (the site build
-    /// runs this check first).
+    /// Find numbers in the pages' prose that should come from a generated file, and chapter
+    /// pages without a diagram, questions to check yourself or links to the primer (the site
+    /// build runs these checks first).
     CheckProse,
     /// Put reference solutions back, to go on: one exercise, the stubs of a chapter, or the
     /// stubs among what one check needs (your versions are saved first).
@@ -226,8 +229,10 @@ fn main() -> Result<()> {
         }
         Some(Task::CheckProse) => {
             prose_numbers::check(&root, &root.join("book").join("src"))?;
+            page_shape::check(&root.join("book").join("src"))?;
             println!(
-                "No page's prose holds a number that is not listed in {}.",
+                "No page's prose holds a number that is not listed in {}, and every chapter \
+                 page has its diagram, its questions and its links to the primer.",
                 prose_numbers::ALLOWED_PATH
             );
             Ok(())

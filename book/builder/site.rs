@@ -12,7 +12,7 @@ use mdbook_katex::preprocess::KatexProcessor;
 use mdbook_preprocessor::Preprocessor;
 
 use crate::exercise_preprocessor::ExercisePreprocessor;
-use crate::{katex_offline, mdbook_log, offline_check, prose_numbers};
+use crate::{katex_offline, mdbook_log, offline_check, page_shape, prose_numbers};
 
 /// Builds the book whose `book.toml` is in `book_dir`; returns the path of its front page.
 pub fn build(book_dir: &Path) -> Result<PathBuf> {
@@ -27,6 +27,8 @@ pub fn build(book_dir: &Path) -> Result<PathBuf> {
 pub fn build_with(book_dir: &Path, extra: Option<impl Preprocessor + 'static>) -> Result<PathBuf> {
     // A number typed into a page fails the build before anything is written.
     prose_numbers::check(book_dir.parent().unwrap_or(book_dir), &book_dir.join("src"))?;
+    // So does a chapter page without its diagram, its questions or its way to the primer.
+    page_shape::check(&book_dir.join("src"))?;
     let mut book = MDBook::load(book_dir)
         .with_context(|| format!("cannot load the book in {}", book_dir.display()))?;
     katex_offline::configure(&mut book.config)?;
