@@ -3,7 +3,7 @@
 //!
 //! - `area-to-solid-angle.svg`: a receiver under a tilted panel light, points on the panel
 //!   from [`sample_parallelogram_light`], and one small patch `dA` of the panel with the cone
-//!   of directions `dω` it covers from the receiver: the angles `θ` and `θ_A` and the distance
+//!   of directions `dω` it covers from the receiver: the angles `θ` and `θ′` and the distance
 //!   `r` that turn the one into the other.
 //! - `sphere-cone.svg`: a receiver and a sphere light, the cone [`sphere_cone`] finds (its
 //!   axis, its half-angle, the tangent lines touching the sphere), and directions drawn in it
@@ -111,9 +111,9 @@ const PANEL_DESCRIPTION: &str = "A receiver point x on a floor, with its normal,
     tilted panel light seen edge-on; dots mark points sampled on the panel. One small patch dA \
     of the panel, around the point y, is highlighted, with the thin cone of directions dω it \
     covers from the receiver, drawn where the cone crosses the unit circle around the \
-    receiver. The patch is at distance r, the light's normal makes the angle θ_A with the \
+    receiver. The patch is at distance r, the light's normal makes the angle θ′ with the \
     direction back to the receiver and the receiver's normal the angle θ with the direction \
-    to the patch: the patch covers the solid angle dω = cos θ_A dA / r², smaller the farther \
+    to the patch: the patch covers the solid angle dω = cos θ′ dA / r², smaller the farther \
     away or the more edge-on it is";
 
 fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
@@ -178,7 +178,7 @@ fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
             Anchor::Centre,
             Ink::Guide,
         );
-    // The distance r and the patch's normal, with the angle θ_A to the way back.
+    // The distance r and the patch's normal, with the angle θ′ to the way back.
     let yp = point(y);
     let mid = (0.3 * x.0 + 0.7 * yp.0, 0.3 * x.1 + 0.7 * yp.1);
     let normal_tip = point(y + 0.6 * scene.chosen.n);
@@ -203,14 +203,14 @@ fn area_to_solid_angle(scene: &PanelScene) -> Diagram {
         )
         .label(
             polar(yp, 0.47, (back + light_normal) / 2.0),
-            "θ_A",
+            "θ′",
             Anchor::Centre,
             Ink::Guide,
         )
         .dot(yp, Ink::OtherRay)
         .label(
             (-1.2, 2.55),
-            "dω = cos θ_A dA / r²",
+            "dω = cos θ′ dA / r²",
             Anchor::Left,
             Ink::OtherRay,
         );
@@ -389,7 +389,7 @@ mod tests {
     #[test]
     fn the_patch_covers_cos_theta_prime_da_over_r_squared() {
         // The patch of the diagram, as a square of the panel, measured exactly from the
-        // receiver; the label's cos θ_A dA / r² and the chapter's conversion of densities must
+        // receiver; the label's cos θ′ dA / r² and the chapter's conversion of densities must
         // agree with it.
         let scene = PanelScene::new();
         let corner = |dx: f32, dy: f32| {

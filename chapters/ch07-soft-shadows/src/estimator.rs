@@ -4,12 +4,12 @@
 //! an integral over the light's surface `A`:
 //!
 //! ```text
-//! E(x) = ∫_A  L(y → x)  V(x, y)  cos θ  cos θ_A / |x - y|²  dA(y)
+//! E(x) = ∫_A  L(y → x)  V(x, y)  cos θ  cos θ′ / |x - y|²  dA(y)
 //! ```
 //!
-//! where `θ` is the angle between `n` and the direction to `y`, `θ_A` the angle between the
+//! where `θ` is the angle between `n` and the direction to `y`, `θ′` the angle between the
 //! light's normal at `y` and the direction back to `x`, and `V` is 1 if nothing blocks the
-//! segment and 0 otherwise. `cos θ_A dA / |x - y|²` is the solid angle the patch `dA` covers
+//! segment and 0 otherwise. `cos θ′ dA / |x - y|²` is the solid angle the patch `dA` covers
 //! from `x`, so this is the familiar `∫ L cos θ dω` written over the light.
 //!
 //! Draw `y` with density `p_A(y)` and the integral becomes the expectation of one sample's
@@ -55,7 +55,7 @@ pub fn area_light_contribution(light: &AreaLight, x: Vec3, n: Vec3, sample: &Lig
 /// One sample's term when the point was chosen by its direction with density `pdf_solid_angle`
 /// per steradian (a sphere's cone): `L cos θ / p_ω`, the integral `∫ L cos θ dω` sampled
 /// directly. Mathematically the same as [`area_light_contribution`] with the density converted
-/// to area, but `cos θ_A` and `d²` never appear, so nothing is divided by a tiny `cos θ_A` at
+/// to area, but `cos θ′` and `d²` never appear, so nothing is divided by a tiny `cos θ′` at
 /// the silhouette. May be NaN when the point coincides with `x`; callers check.
 pub fn solid_angle_contribution(
     light: &AreaLight,

@@ -113,8 +113,8 @@ impl Lighting for AreaLighting<'_> {
                     continue; // a light without area
                 };
                 // The term in the measure the point was chosen in: by its direction,
-                // `L cos θ / p_ω` (no cos θ_A / d² to divide by at the silhouette); by area,
-                // `L cos θ cos θ_A / (d² p_A)`.
+                // `L cos θ / p_ω` (no cos θ′ / d² to divide by at the silhouette); by area,
+                // `L cos θ cos θ′ / (d² p_A)`.
                 let term = match sample.pdf_solid_angle {
                     Some(pdf_solid_angle) => {
                         let wi = (sample.p - hit.p).normalize();
@@ -275,7 +275,7 @@ mod tests {
                 se,
                 reference,
                 &slips,
-                "the term of a point chosen by area is L cos θ cos θ_A / (d² p_A), averaged \
+                "the term of a point chosen by area is L cos θ cos θ′ / (d² p_A), averaged \
                  over the shadow rays that reach the light",
             );
         }
@@ -313,7 +313,7 @@ mod tests {
             let (mean, se, _) = reflected(&world, samples, calls);
             let too_bright = "too bright: a point chosen by its direction has a density per unit \
                 solid angle, and its term is L cos θ / p_ω; divided by the density per unit \
-                area instead, it lacks the conversion d² / |cos θ_A|";
+                area instead, it lacks the conversion d² / |cos θ′|";
             judge(
                 &format!(
                     "a floor of albedo 0.5 under a sphere light, sampled by its cone, \

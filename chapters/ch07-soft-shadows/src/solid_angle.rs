@@ -14,9 +14,9 @@
 //! and the estimator becomes `L cos θ / p_ω`: the integrand's only varying factor left is the
 //! receiver's `cos θ`, so for a small or distant sphere the variance all but disappears.
 //!
-//! Densities per area and per solid angle are related by the solid angle `dω = |cos θ_A| dA / d²`
-//! that a patch `dA` of the light, seen at angle `θ_A` to its normal from distance `d`,
-//! covers: `p_ω = p_A d² / |cos θ_A|` ([`pdf_area_to_solid_angle`]).
+//! Densities per area and per solid angle are related by the solid angle `dω = |cos θ′| dA / d²`
+//! that a patch `dA` of the light, seen at angle `θ′` to its normal from distance `d`,
+//! covers: `p_ω = p_A d² / |cos θ′|` ([`pdf_area_to_solid_angle`]).
 //!
 //! Numerics. A distant sphere makes a tiny cap: at `R / d = 10⁻⁴`, `1 - cos θ_max = 5·10⁻⁹` is
 //! below the spacing of floats near 1, so `cos θ_max` itself rounds to 1 and `1 - cos θ_max`,
@@ -36,13 +36,13 @@ use crate::light_sample::LightSample;
 
 /// The density per unit solid angle, seen from a receiver at distance `√distance_squared`, of
 /// a point chosen with density `pdf_area` per unit area of a light whose normal makes the
-/// angle `θ_A` with the direction to the receiver: `p_ω = p_A d² / |cos θ_A|`. Infinite for
+/// angle `θ′` with the direction to the receiver: `p_ω = p_A d² / |cos θ′|`. Infinite for
 /// a patch seen edge-on, which covers no solid angle.
 pub fn pdf_area_to_solid_angle(pdf_area: f32, distance_squared: f32, cos_theta_light: f32) -> f32 {
     pdf_area * distance_squared / cos_theta_light.abs()
 }
 
-/// The inverse of [`pdf_area_to_solid_angle`]: `p_A = p_ω |cos θ_A| / d²`.
+/// The inverse of [`pdf_area_to_solid_angle`]: `p_A = p_ω |cos θ′| / d²`.
 pub fn pdf_solid_angle_to_area(
     pdf_solid_angle: f32,
     distance_squared: f32,

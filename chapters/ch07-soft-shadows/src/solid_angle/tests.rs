@@ -272,11 +272,11 @@ fn exercise_sample_sphere_solid_angle_carries_both_densities() {
             let why = if s.pdf < 0.0 {
                 "a density is never negative: the light's normal at the point faces the \
                  receiver, away from the direction the receiver looks along, so the cosine \
-                 between them that converts the density is taken as |cos θ_A|"
+                 between them that converts the density is taken as |cos θ′|"
             } else if (s.pdf / pdf_solid_angle - 1.0).abs() < 1e-4 {
                 "it is the density per unit solid angle, not converted to area: a patch dA of \
-                 the light, seen from x at distance d and at angle θ_A to its normal, covers the \
-                 solid angle |cos θ_A| dA / d²"
+                 the light, seen from x at distance d and at angle θ′ to its normal, covers the \
+                 solid angle |cos θ′| dA / d²"
             } else {
                 "the two densities describe the same choice, so p_ω dω = p_A dA"
             };
