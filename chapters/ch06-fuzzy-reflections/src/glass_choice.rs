@@ -52,8 +52,8 @@ impl GlassStrategy {
 pub struct GlassChoice {
     /// `true` for the reflected ray, `false` for the refracted one.
     pub reflect: bool,
-    /// What the chosen ray's radiance is multiplied by: its Fresnel share over the
-    /// probability of choosing it.
+    /// What the chosen ray's radiance is multiplied by, so that the average over the random
+    /// choice is Whitted's `F L_r + (1 - F) L_t`.
     pub weight: f32,
 }
 
@@ -78,9 +78,9 @@ pub fn choose_half(u: f32, reflectance: f32) -> GlassChoice {
 }
 // ANCHOR_END: choose_half
 
-/// Reflection with probability `reflectance` (the Fresnel `F`), else refraction; the share
-/// and the probability are equal, so the weight is 1. Total internal reflection (`F = 1`)
-/// always reflects, and `F = 0` (index-matched glass) always refracts.
+/// Reflection with probability `reflectance` (the Fresnel `F`), else refraction, each with the
+/// weight that keeps the average Whitted's sum. Total internal reflection (`F = 1`) always
+/// reflects, and `F = 0` (index-matched glass) always refracts.
 pub fn choose_fresnel(u: f32, reflectance: f32) -> GlassChoice {
     GlassChoice {
         reflect: u < reflectance,
