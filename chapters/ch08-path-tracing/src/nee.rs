@@ -69,9 +69,9 @@ impl<M: Materials> PathTracer<'_, M> {
     ///
     /// `counts` says how many light samples and BSDF samples the surface takes: the path
     /// takes one of each ([`DirectSamples::ONE_EACH`]), Mitsuba's `direct` integrator may take
-    /// more ([`crate::direct`]). In Veach's multi-sample model each strategy's density enters
-    /// the heuristic multiplied by its count, and one of `n` samples counts for `1/n` of its
-    /// strategy's share.
+    /// more ([`crate::direct`]). In Veach's multi-sample model the counts matter twice: in the
+    /// heuristic, where each strategy's density stands for all of its samples, and in the
+    /// estimate, where one sample is one of several (the page asks how).
     ///
     /// A scene pays only for what it has: with a single light to pick from, the pick draws no
     /// number. What does the BSDF say about the sampled direction, for the term and for the

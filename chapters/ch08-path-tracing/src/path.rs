@@ -206,11 +206,11 @@ impl<M: Materials> PathTracer<'_, M> {
 
 // ANCHOR: extend_path
 /// The BSDF step at the surface of `bsdf`, seen from `wo`: a direction sampled from the BSDF,
-/// whose weight `f cos θ / p` multiplies what the path carries, `throughput`, and whose
-/// radiance scaling `(eta_i / eta_t)²` (1 without refraction) multiplies `eta_scale`, the
-/// product of the scalings inside `throughput`. Returns the sample, whose direction the next
-/// segment follows and whose density the MIS weight of what that segment finds needs; `None`
-/// when the path ends here: no direction, or nothing left to carry.
+/// and what that sample does to the two numbers the path carries: `throughput`, what the path
+/// carries to the camera, and `eta_scale`, the product of the radiance scalings of refraction
+/// (chapter 01) that `throughput` holds. Returns the sample, whose direction the next segment
+/// follows and whose density the MIS weight of what that segment finds needs; `None` when the
+/// path ends here: no direction, or nothing left to carry.
 pub fn extend_path<S: Sampler>(
     bsdf: &impl SurfaceBsdf,
     wo: Vec3,
