@@ -7,7 +7,7 @@
 //! | question | tool |
 //! |---|---|
 //! | are single numbers spread evenly? | [`uniformity_chi2`] |
-//! | are consecutive triples spread evenly? | [`serial_chi2_3d`] (coarse), [`randu_plane_index`] (sharp) |
+//! | are consecutive triples spread evenly? | [`triples_chi2`] and [`serial_chi2_3d`] (coarse), [`randu_plane_index`] (sharp) |
 //! | how fast? | [`numbers_per_second`], and the benchmark `benches/generators.rs` |
 //!
 //! All generators implement rand's [`rand::Rng`] trait; a number in `[0, 1)` is made from a
