@@ -7,7 +7,7 @@
 //! | question | tool |
 //! |---|---|
 //! | are single numbers spread evenly? | [`uniformity_chi2`] |
-//! | are consecutive triples spread evenly? | [`serial_chi2_3d`] (coarse), [`randu_plane_index`] (sharp) |
+//! | are consecutive triples spread evenly? | [`triples_chi2`] and [`serial_chi2_3d`] (coarse), [`randu_plane_index`] (sharp) |
 //! | how fast? | [`numbers_per_second`], and the benchmark `benches/generators.rs` |
 //!
 //! All generators implement rand's [`rand::Rng`] trait; a number in `[0, 1)` is made from a
@@ -26,7 +26,9 @@ pub use lattice::{consecutive_triples, fraction_on_randu_planes, randu_plane_ind
 pub use minstd::{MINSTD_MODULUS, MINSTD_MULTIPLIER, Minstd};
 pub use randu::{RANDU_MULTIPLIER, Randu};
 pub use speed::numbers_per_second;
-pub use uniformity::{ChiSquareOutcome, serial_chi2_3d, uniformity_chi2};
+pub use uniformity::{
+    ChiSquareOutcome, serial_chi2_3d, serial_threshold, triples_chi2, uniformity_chi2,
+};
 
 /// Maps a 32-bit word to `word / 2^32` in `[0, 1)`, keeping all 32 bits.
 ///

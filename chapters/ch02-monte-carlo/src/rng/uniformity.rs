@@ -18,6 +18,8 @@
 use rand::Rng;
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
+use super::unit_f64;
+
 /// The result of a chi-square test against the uniform distribution.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ChiSquareOutcome {
@@ -49,8 +51,46 @@ pub fn uniformity_chi2<R: Rng + ?Sized>(
     chi_square_against_uniform(&counts)
 }
 
+// ANCHOR: triples_chi2
+/// How evenly consecutive triples of `numbers` fill the unit cube: Pearson's statistic of
+/// their counts in the `k³` equal cubic cells, `k = cells_per_axis`.
+///
+/// The numbers are read as a renderer hands them out: the first three are the coordinates
+/// `(x, y, z)` of the first point, the next three those of the second point, and so on. Each
+/// number belongs to one point only, and a last incomplete triple is left out. Each axis of
+/// `[0, 1]` is cut into `k` equal parts, and a number equal to 1 (rounding to a float can make
+/// one) counts in the last part. The statistic is the plain sum over all cells, not divided by
+/// the number of points, of cells or of degrees of freedom.
+///
+/// # Panics
+///
+/// If `cells_per_axis` is 0 or `numbers` hold no complete triple.
+pub fn triples_chi2(numbers: &[f64], cells_per_axis: usize) -> f64 {
+    assert!(
+        cells_per_axis > 0 && numbers.len() >= 3,
+        "triples_chi2 needs at least one cell and one triple"
+    );
+    // BEGIN SOLUTION
+    let k = cells_per_axis;
+    let part = |u: f64| ((u * k as f64) as usize).min(k - 1);
+    let mut counts = vec![0u64; k.pow(3)];
+    let points = numbers.chunks_exact(3);
+    let point_count = points.len();
+    for point in points {
+        counts[(part(point[0]) * k + part(point[1])) * k + part(point[2])] += 1;
+    }
+    let expected = point_count as f64 / counts.len() as f64;
+    counts
+        .iter()
+        .map(|&observed| (observed as f64 - expected).powi(2) / expected)
+        .sum()
+    // END SOLUTION
+}
+// ANCHOR_END: triples_chi2
+
 /// Pearson's test that `triples` consecutive non-overlapping triples `(x, y, z)` from `source`
-/// fall evenly into the `k^3` cells of the unit cube, `k = cells_per_axis`.
+/// fall evenly into the `k^3` cells of the unit cube, `k = cells_per_axis`: the statistic of
+/// [`triples_chi2`] with its p-value, `k^3 - 1` degrees of freedom.
 ///
 /// # Panics
 ///
@@ -62,14 +102,22 @@ pub fn serial_chi2_3d<R: Rng + ?Sized>(
 ) -> ChiSquareOutcome {
     let cells = cells_per_axis.pow(3);
     check_expected_counts(triples, cells);
-    let mut counts = vec![0u64; cells];
-    for _ in 0..triples {
-        let x = cell_of(source.next_u32(), cells_per_axis);
-        let y = cell_of(source.next_u32(), cells_per_axis);
-        let z = cell_of(source.next_u32(), cells_per_axis);
-        counts[(x * cells_per_axis + y) * cells_per_axis + z] += 1;
-    }
-    chi_square_against_uniform(&counts)
+    // Every number word / 2^32 is exact in an f64, and so is its product with a cell count:
+    // the cells are the same as those of exact integer arithmetic.
+    let numbers: Vec<f64> = (0..3 * triples)
+        .map(|_| unit_f64(source.next_u32()))
+        .collect();
+    outcome(triples_chi2(&numbers, cells_per_axis), cells - 1)
+}
+
+/// The largest statistic [`serial_chi2_3d`] accepts at `significance`: the value a perfect
+/// generator exceeds with probability `significance`, from the chi-square distribution with
+/// `cells_per_axis^3 - 1` degrees of freedom.
+pub fn serial_threshold(cells_per_axis: usize, significance: f64) -> f64 {
+    let degrees_of_freedom = cells_per_axis.pow(3) - 1;
+    ChiSquared::new(degrees_of_freedom as f64)
+        .expect("at least one degree of freedom")
+        .inverse_cdf(1.0 - significance)
 }
 
 /// Which of `cells` equal parts of `[0, 1)` the number `word / 2^32` falls in.
@@ -97,7 +145,11 @@ fn chi_square_against_uniform(counts: &[u64]) -> ChiSquareOutcome {
         .iter()
         .map(|&observed| (observed as f64 - expected).powi(2) / expected)
         .sum();
-    let degrees_of_freedom = counts.len() - 1;
+    outcome(statistic, counts.len() - 1)
+}
+
+/// A statistic with its degrees of freedom and p-value.
+fn outcome(statistic: f64, degrees_of_freedom: usize) -> ChiSquareOutcome {
     let distribution =
         ChiSquared::new(degrees_of_freedom as f64).expect("at least one degree of freedom");
     ChiSquareOutcome {
@@ -113,7 +165,11 @@ mod tests {
     use crate::rng::Generator;
     use std::convert::Infallible;
 
-    use rand::TryRng;
+    use rand::{Rng, TryRng};
+
+    const RANDU_RECORDED: f64 = 72.52053333333335;
+    const MT_RECORDED: f64 = 54.387200000000014;
+    const PCG_RECORDED: f64 = 79.62453333333335;
 
     /// Reject uniformity below this p-value. With fixed seeds each test is deterministic; the
     /// threshold only says how surprised a perfect generator would have to be to fail.
@@ -178,6 +234,188 @@ mod tests {
                 "{cells_per_axis} per axis: {outcome:?}"
             );
         }
+    }
+
+    /// What is wrong with `answer`, the student's statistic for a hand-made sequence whose
+    /// points fall into the cells of `k` per axis with the `right` counts, in words; `None` if
+    /// it is right to rounding. `overlapping` are the counts of the sequence's overlapping
+    /// triples `(u₀, u₁, u₂), (u₁, u₂, u₃), ...`, when they tell that mistake apart.
+    fn triples_mistake(
+        answer: f64,
+        right: &[u64],
+        k: usize,
+        overlapping: Option<&[u64]>,
+    ) -> Option<String> {
+        let points = right.iter().sum::<u64>() as f64;
+        let cells = right.len() as f64;
+        let sum_with = |counts: &[u64], expected: f64, divide: bool| -> f64 {
+            counts
+                .iter()
+                .map(|&observed| {
+                    let squared = (observed as f64 - expected).powi(2);
+                    if divide { squared / expected } else { squared }
+                })
+                .sum()
+        };
+        let expected = sum_with(right, points / cells, true);
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs().max(1.0);
+        if close(answer, expected) {
+            return None;
+        }
+        let mistake = if !answer.is_finite() {
+            "it is not a finite number: does a cell expect no points?".to_string()
+        } else if close(answer, sum_with(right, points / k as f64, true)) {
+            format!(
+                "that is the statistic with {points} / {k} points expected in each cell: the \
+                 expected count is per cell, and a point lands in one of the {k}³ cells, not \
+                 in one part of one axis"
+            )
+        } else if overlapping.is_some_and(|counts| {
+            let triples = counts.iter().sum::<u64>() as f64;
+            close(answer, sum_with(counts, triples / cells, true))
+        }) {
+            "the triples overlap: (u₁, u₂, u₃) is not a point, because each number is a \
+             coordinate of one point only; read the numbers three at a time"
+                .to_string()
+        } else if close(answer, expected / (cells - 1.0)) {
+            "that is the statistic divided by its degrees of freedom; the statistic is not \
+             divided or normalised by anything, as documented"
+                .to_string()
+        } else if close(answer, expected / points) || close(answer, expected / cells) {
+            "that is the statistic divided by the number of points or of cells; the statistic \
+             is not divided or normalised by anything, as documented"
+                .to_string()
+        } else if close(answer, sum_with(right, points / cells, false)) {
+            "the squared differences are not divided by the expected count".to_string()
+        } else if right.iter().all(|&count| count == right[0]) {
+            format!(
+                "every cell holds the same number of points, so the statistic is 0: a point is \
+                 counted in the wrong cell (which of the {k} parts holds u = i / {k}, and u = 1?)"
+            )
+        } else {
+            format!("the statistic should be {expected}")
+        };
+        Some(format!(
+            "{mistake}; yours gave {answer}, expected {expected}"
+        ))
+    }
+
+    /// The student's statistic, with a panic turned into words.
+    fn students_triples_chi2(numbers: &[f64], k: usize, what: &str) -> f64 {
+        workbench::test_support::catch_panic(|| triples_chi2(numbers, k)).unwrap_or_else(
+            |message| {
+                panic!(
+                    "triples_chi2 on {what} ({k} parts per axis) panicked ({message}). Every \
+                     number of [0, 1] is in one of the {k} parts of its axis: a number equal \
+                     to 1 counts in the last part, not in a part {k} that does not exist"
+                )
+            },
+        )
+    }
+
+    #[test]
+    fn exercise_triples_chi2_all_points_in_one_cell() {
+        // Ten points at (0.3, 0.3, 0.3): one cell of the 2³ holds all ten, seven hold none.
+        let numbers = [0.3; 30];
+        let answer = students_triples_chi2(&numbers, 2, "ten points in one cell");
+        let mut right = [0; 8];
+        right[0] = 10;
+        let mut overlapping = [0; 8];
+        overlapping[0] = 28;
+        if let Some(mistake) = triples_mistake(answer, &right, 2, Some(&overlapping)) {
+            panic!("triples_chi2: ten points in one of the 2³ cells: {mistake}");
+        }
+        // A last incomplete triple is left out.
+        let with_leftover: Vec<f64> = numbers.iter().copied().chain([0.9, 0.9]).collect();
+        let leftover = students_triples_chi2(&with_leftover, 2, "ten points and two numbers");
+        assert!(
+            leftover == answer,
+            "triples_chi2: two numbers after the last complete triple are not a point and must \
+             be left out; with them the statistic went from {answer} to {leftover}"
+        );
+    }
+
+    /// The points of the perfect lattice of `k` per axis with coordinates `coordinate(i)`,
+    /// `i < k`, each cell `repeat` times, in a scrambled order.
+    fn lattice(k: usize, repeat: usize, coordinate: impl Fn(usize) -> f64) -> Vec<f64> {
+        let mut points = Vec::new();
+        for copy in 0..repeat {
+            for cell in 0..k.pow(3) {
+                // A stride coprime with k³ visits every cell once, not in the counting order.
+                let cell = (cell * 7 + copy) % k.pow(3);
+                points.extend([cell / (k * k), cell / k % k, cell % k].map(&coordinate));
+            }
+        }
+        points
+    }
+
+    #[test]
+    fn exercise_triples_chi2_perfect_lattices() {
+        for (what, k, coordinate) in [
+            (
+                "the lattice of cell corners i / 4",
+                4,
+                &(|i: usize| i as f64 / 4.0) as &dyn Fn(usize) -> f64,
+            ),
+            (
+                "the lattice of cell centres (i + 1/2) / 3, with 1 in place of the last",
+                3,
+                &|i: usize| if i == 2 { 1.0 } else { (i as f64 + 0.5) / 3.0 },
+            ),
+        ] {
+            let numbers = lattice(k, 2, coordinate);
+            let answer = students_triples_chi2(&numbers, k, what);
+            if let Some(mistake) = triples_mistake(answer, &vec![2; k.pow(3)], k, None) {
+                panic!("triples_chi2: {what}, two points in every cell: {mistake}");
+            }
+        }
+    }
+
+    #[test]
+    fn exercise_triples_chi2_of_generators() {
+        // Recorded from the lecture's solution, and equal to the statistics of the same cells
+        // counted from the 32-bit words in exact integer arithmetic: 30 000 triples in 4³
+        // cells, seed 7. RANDU passes at this coarse resolution (63 degrees of freedom).
+        for (generator, recorded) in [
+            (Generator::Randu, RANDU_RECORDED),
+            (Generator::Mt19937, MT_RECORDED),
+            (Generator::Pcg32, PCG_RECORDED),
+        ] {
+            let mut source = generator.new_source(7);
+            let numbers: Vec<f64> = (0..90_000)
+                .map(|_| crate::rng::unit_f64(source.next_u32()))
+                .collect();
+            let answer = students_triples_chi2(&numbers, 4, generator.name());
+            assert!(
+                (answer - recorded).abs() <= 1e-9 * recorded,
+                "triples_chi2: the first 30 000 triples of {generator} (seed 7) in 4³ cells \
+                 give the statistic {recorded}; yours gave {answer}"
+            );
+        }
+    }
+
+    #[test]
+    fn exercise_triples_chi2_refuses_randu_and_passes_pcg() {
+        // 8³ = 512 cells: a perfect generator's statistic follows the chi-square distribution
+        // with 511 degrees of freedom, and exceeds this once in a thousand runs.
+        let threshold = serial_threshold(8, 1e-3);
+        assert!((threshold - 615.5).abs() < 0.1, "threshold {threshold}");
+        let randu = serial_chi2_3d(&mut Generator::Randu.new_source(7), 100_000, 8);
+        let pcg = serial_chi2_3d(&mut Generator::Pcg32.new_source(7), 100_000, 8);
+        assert_eq!(randu.degrees_of_freedom, 511);
+        assert!(
+            randu.statistic > threshold,
+            "triples_chi2: RANDU's triples lie on 15 planes and leave most of the 8³ cells \
+             empty, but your statistic {} stays below the threshold {threshold} (511 degrees \
+             of freedom, significance 0.001)",
+            randu.statistic
+        );
+        assert!(
+            pcg.statistic <= threshold,
+            "triples_chi2: PCG32's triples fill the 8³ cells evenly, but your statistic {} is \
+             above the threshold {threshold} (511 degrees of freedom, significance 0.001)",
+            pcg.statistic
+        );
     }
 
     #[test]
