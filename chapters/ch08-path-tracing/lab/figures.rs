@@ -3,7 +3,8 @@
 //! - the diagrams (`diagrams/`, [`crate::lab::diagrams`]): Cook's ray tree against a path,
 //!   and the densities of a light sample and a BSDF sample at one vertex;
 //! - the ray tree: rays per camera ray against the depth limit for branching factors 1, 2
-//!   and 4 (`ray-tree.csv`/`.png`), and the share of the pixel carried by each depth
+//!   and 4 (`ray-tree.csv`/`.png`), the worst case counted by `rays_by_depth` against one path
+//!   (`ray-tree-growth.md`), and the share of the pixel carried by each depth
 //!   (`depth-shares.csv`/`.png`);
 //! - distribution ray tracing against path tracing of the same scene at equal time
 //!   (`drt-vs-pt.png`), with error against time (`drt-vs-pt-convergence.*`), and the
@@ -23,7 +24,10 @@
 
 use crate::LectureMaterials;
 use crate::dimensions::render_counted;
-use crate::distribution_tracer::ray_tree::{depth_shares, rays_per_camera_ray, render_small};
+use crate::distribution_tracer::ray_tree::{
+    LightCounts, Surface, depth_shares, rays_by_depth, rays_per_camera_ray, render_small,
+    total_rays,
+};
 use crate::distribution_tracer::{DistributionOptions, render_distribution};
 use crate::lab::agreement::AGREEMENT;
 use crate::lab::scene_file::path_options;
@@ -241,6 +245,7 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
         table += "\n";
     }
     write_text(&out.join("ray-tree.md"), &table)?;
+    write_text(&out.join("ray-tree-growth.md"), &ray_tree_growth(deepest))?;
     let log_y = Axes {
         log_y: true,
         ..Axes::linear(
@@ -250,7 +255,7 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     };
     line_plot(
         &out.join("ray-tree.png"),
-        "Cornell box: the ray tree grows as k^depth",
+        "Cornell box: the ray tree grows exponentially with depth",
         &log_y,
         &series,
     )?;
@@ -304,6 +309,41 @@ fn ray_tree(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     Ok(())
 }
 // ANCHOR_END: ray_tree
+
+/// The worst case counted by [`rays_by_depth`]: a closed matte room lit by one area light,
+/// `k = m = 2` with indirect diffuse light, against one path (`k = m = 1`) to the same depth.
+fn ray_tree_growth(deepest: u32) -> String {
+    let lights = LightCounts { area: 1, point: 0 };
+    let tree = rays_by_depth(
+        Surface::Matte,
+        DistributionOptions::branching(2, deepest, true),
+        lights,
+    );
+    let mut table = String::from(
+        "| depth | rays | shadow rays | the tree to this depth | one path to this depth | tree / path |\n\
+         |---|---|---|---|---|---|\n",
+    );
+    for count in &tree {
+        let depth = count.depth;
+        let tree_total = total_rays(&rays_by_depth(
+            Surface::Matte,
+            DistributionOptions::branching(2, depth, true),
+            lights,
+        ));
+        let path_total = total_rays(&rays_by_depth(
+            Surface::Matte,
+            DistributionOptions::branching(1, depth, true),
+            lights,
+        ));
+        table += &format!(
+            "| {depth} | {} | {} | {tree_total} | {path_total} | {} |\n",
+            count.rays,
+            count.shadow_rays,
+            rays_number(tree_total as f64 / path_total.max(1) as f64)
+        );
+    }
+    table
+}
 
 // ANCHOR: distribution_vs_path
 /// The Cornell box at depth 4 by distribution ray tracing (k = m = 2, indirect diffuse

@@ -3,10 +3,10 @@
 //!
 //! Chapters 03 to 07 each spent their samples on one dimension. Combined, a camera ray meets
 //! a glossy plate that sends `k` rays into its lobe; each of those finds a matte wall that
-//! sends `m` shadow rays to each light, or another glossy surface that sends `k` more. The
-//! tree has `k^d` branches at depth `d`: the "exponential growth" of the lecture, and the
-//! reason [`crate::path`] keeps a single branch. [`ray_tree`] counts the rays and measures
-//! how little the deep ones carry.
+//! sends `m` shadow rays to each light, or another glossy surface that sends `k` more. Every
+//! depth multiplies the branches: the "exponential growth" of the lecture, and the reason
+//! [`crate::path`] keeps a single branch. [`ray_tree`] counts the rays and measures how
+//! little the deep ones carry.
 //!
 //! At each hit, what the tracer does:
 //!
