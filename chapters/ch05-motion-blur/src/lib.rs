@@ -2,8 +2,8 @@
 //!
 //! A real shutter stays open for a while, and whatever moves meanwhile is smeared along its
 //! path. This chapter gives every camera ray a time, uniform over the shutter interval, and
-//! keeps that time for every ray of its path, so the image becomes the average of the world
-//! over the interval.
+//! follows its path through a world that answers each ray at its time, so the image becomes
+//! the average of the world over the interval.
 //!
 //! - [`shutter`]: the interval and the time a uniform number picks; [`shutter_opening`]: a
 //!   shutter that opens and closes over a fraction of the exposure.
@@ -13,7 +13,9 @@
 //! - [`motion_bounds`]: boxes that hold a moving object over an interval.
 //! - [`moving`]: moving shapes and the BVH over their motion bounds, per stretch of the
 //!   shutter.
-//! - [`world`]: the scene in motion, traced by chapter 01's tracer through its `World` trait.
+//! - [`world`]: the scene in motion, answering chapter 01's `World` questions at a ray's time.
+//! - [`path`]: the tracer of the chapter's images, chapter 01's recursion through the world in
+//!   motion, with one time for a whole path.
 //! - [`time_sampling`]: independent and stratified time samples.
 //! - [`scenes`]: what to look at.
 //!
@@ -27,6 +29,7 @@ pub mod animated_transform;
 pub mod motion_bounds;
 pub mod moving;
 pub mod object_space;
+pub mod path;
 pub mod scenes;
 pub mod shutter;
 pub mod shutter_opening;
@@ -43,7 +46,6 @@ pub use shutter::Shutter;
 pub use time_sampling::{StratifiedTime, TimeSampler, TimeSampling};
 pub use world::MotionScene;
 
-use ch01_whitted::tracer;
 use ch04_depth_of_field::{Lens, ThinLensCamera};
 use common::film::Filter;
 use common::render::{self, RenderOutput, RenderSettings};
@@ -84,7 +86,7 @@ impl CameraRays {
 
     /// The camera ray through film point `p_film`. Draws, in order: the time (only if the
     /// shutter is open for a while and something moves), then the lens point (only for an
-    /// aperture). The ray carries its time, which every ray of its path keeps.
+    /// aperture). The ray carries its time.
     pub fn generate<S: TimeSampler>(
         &self,
         world: &MotionScene,
@@ -109,8 +111,8 @@ impl CameraRays {
 
 /// Renders `world` through `lens` over its shutter interval. Each sample draws, in order: the
 /// pixel position (in the render loop), the time (only if the shutter is open for a while and
-/// something moves), the lens point (only for an aperture). Every ray of the path keeps the
-/// camera ray's time. Without motion this is chapter 04's render, bit for bit.
+/// something moves), the lens point (only for an aperture). The path goes on through
+/// [`path::trace_in_motion`]. Without motion this is chapter 04's render, bit for bit.
 pub fn render_with<S: TimeSampler>(
     world: &MotionScene,
     lens: &Lens,
@@ -121,7 +123,7 @@ pub fn render_with<S: TimeSampler>(
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     render::render(settings, sampler, filter, |p_film, sampler| {
         let ray = camera_rays.generate(world, p_film, sampler);
-        tracer::trace(world, &ray, 1)
+        path::trace_in_motion(world, &ray, 1)
     })
 }
 // ANCHOR_END: render_with

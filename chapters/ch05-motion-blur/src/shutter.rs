@@ -1,8 +1,8 @@
 //! The shutter: open at `open`, closed at `close`, and every time in between equally likely.
 //!
-//! A camera ray gets the time `open + u (close - open)` for a uniform `u`; every ray of its
-//! path (reflections, refractions, shadow rays) keeps that time, so a whole path sees the
-//! world at one instant. Averaging many instants is the motion blur.
+//! A camera ray gets the time a uniform `u` picks in the interval; the rays its path spawns
+//! get theirs from the tracer ([`path`](crate::path)). Averaging many instants is the motion
+//! blur.
 
 use std::fmt;
 

@@ -3,10 +3,11 @@
 //!
 //! The scene says how things move (keyframes); this chapter says how to find them at a
 //! time: transforms interpolated between keyframes, moving shapes behind a BVH per stretch of
-//! the shutter. [`MotionScene`] implements chapter 01's [`World`], so chapter 01's tracer
-//! traces it unchanged: the nearest hit is the nearer of the still BVH's and the moving
-//! objects', and a shadow ray is blocked by either, each at the ray's time. A scene with no
-//! moving shapes asks the still BVH only, at chapter 01's cost.
+//! the shutter. [`MotionScene`] implements chapter 01's [`World`], so chapter 01's recursion
+//! (here [`trace_in_motion`](crate::path::trace_in_motion)) traces it: the nearest hit is the
+//! nearer of the still BVH's and the moving objects', and a shadow ray is blocked by either,
+//! each at the ray's time. A scene with no moving shapes asks the still BVH only, at chapter
+//! 01's cost.
 
 use crate::animated_transform::AnimatedTransform;
 use crate::moving::{MovingObjects, MovingShape};
