@@ -371,3 +371,93 @@ fn exercise_filtered_pixel_unreached_pixels_are_black() {
         filter(FilterKind::Mitchell, Some(1.0)),
     );
 }
+
+/// The chapter's render draws every pixel with `filtered_pixel`: a tiny render of the
+/// checkerboard through [`crate::render_with`], for three samplers and filters, against the same
+/// render through the film, which scatters every sample. Writes both images and their
+/// difference when they differ.
+#[test]
+fn exercise_filtered_pixel_draws_the_chapter_images() {
+    use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH};
+    use ch01_whitted::camera::PinholeCamera;
+    let scene = Builtin::Checkerboard.build(DEFAULT_MAX_DEPTH);
+    let size = UVec2::new(24, 16);
+    let camera = PinholeCamera::of(&scene.camera, size.x, size.y);
+    for (kind, spp, filter) in [
+        (
+            PixelSamplerKind::Stratified,
+            4,
+            filter(FilterKind::Box, None),
+        ),
+        (PixelSamplerKind::Random, 3, filter(FilterKind::Tent, None)),
+        (
+            PixelSamplerKind::Halton,
+            4,
+            filter(FilterKind::Mitchell, None),
+        ),
+    ] {
+        let settings = RenderSettings::new(size.x, size.y, spp);
+        let sampler = PixelSampler::new(kind, spp, 5).unwrap();
+        let expected = render::render(&settings, &sampler, &filter, |p, _: &mut PixelSampler| {
+            ch01_whitted::tracer::trace(&scene, &camera.generate_ray(p), 1)
+        })
+        .image;
+        let mine = workbench::test_support::catch_panic(|| {
+            crate::render_with(&scene, &settings, &sampler, &filter).image
+        })
+        .unwrap_or_else(|message| {
+            panic!(
+                "the chapter's render panicked in filtered_pixel ({message}); it draws every \
+                 pixel of a {} x {} image with it",
+                size.x, size.y
+            )
+        });
+        let wrong: Vec<UVec2> = (0..size.y)
+            .flat_map(|y| (0..size.x).map(move |x| UVec2::new(x, y)))
+            .filter(|p| !close(mine.get(p.x, p.y), expected.get(p.x, p.y)))
+            .collect();
+        if let Some(&pixel) = wrong.first() {
+            panic!(
+                "filtered_pixel draws the chapter's images, and the checkerboard ({kind:?} \
+                 samples, {spp} per pixel, {filter:?}) came out wrong at {} of its {} pixels: \
+                 pixel {pixel} is {}, the film gives {}. The checks above name the likely \
+                 slip; {}",
+                wrong.len(),
+                size.x * size.y,
+                mine.get(pixel.x, pixel.y),
+                expected.get(pixel.x, pixel.y),
+                workbench::test_support::image_comparison(EXERCISE, &mine, &expected)
+            );
+        }
+    }
+}
+
+/// The gathered render is the film's render bit for bit, image and ray count, for every sampler
+/// and filter, on any number of threads.
+#[test]
+fn the_gathered_render_is_the_films_bit_for_bit() {
+    for kind in PixelSamplerKind::ALL {
+        for filter_kind in FilterKind::ALL {
+            for radius in [None, Some(2.5)] {
+                let filter = filter(filter_kind, radius);
+                let spp = 5;
+                let sampler = PixelSampler::new(kind, spp, 11).unwrap();
+                let film = render::render(
+                    &RenderSettings::new(37, 21, spp),
+                    &sampler,
+                    &filter,
+                    radiance,
+                );
+                for threads in [1, 3] {
+                    let settings = RenderSettings {
+                        threads: Some(threads),
+                        ..RenderSettings::new(37, 21, spp)
+                    };
+                    let gathered = super::render(&settings, &sampler, &filter, radiance);
+                    assert_eq!(gathered.image, film.image, "{kind:?} {filter:?} {threads}");
+                    assert_eq!(gathered.stats.samples, film.stats.samples);
+                }
+            }
+        }
+    }
+}
