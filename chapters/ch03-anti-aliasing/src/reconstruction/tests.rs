@@ -372,17 +372,14 @@ fn exercise_filtered_pixel_unreached_pixels_are_black() {
     );
 }
 
-/// The chapter's render draws every pixel with `filtered_pixel`: a tiny render of the
-/// checkerboard through [`crate::render_with`], for three samplers and filters, against the same
-/// render through the film, which scatters every sample. Writes both images and their
-/// difference when they differ.
+/// The chapter's render draws every pixel with `filtered_pixel`: a tiny render of the test's
+/// picture through the chapter's render loop ([`super::render`], which `crate::render_with`
+/// calls with chapter 01's tracer), for three samplers and filters, against the same render
+/// through the film, which scatters every sample. Writes both images and their difference when
+/// they differ.
 #[test]
 fn exercise_filtered_pixel_draws_the_chapter_images() {
-    use crate::scenes::{Builtin, DEFAULT_MAX_DEPTH};
-    use ch01_whitted::camera::PinholeCamera;
-    let scene = Builtin::Checkerboard.build(DEFAULT_MAX_DEPTH);
     let size = UVec2::new(24, 16);
-    let camera = PinholeCamera::of(&scene.camera, size.x, size.y);
     for (kind, spp, filter) in [
         (
             PixelSamplerKind::Stratified,
@@ -398,12 +395,9 @@ fn exercise_filtered_pixel_draws_the_chapter_images() {
     ] {
         let settings = RenderSettings::new(size.x, size.y, spp);
         let sampler = PixelSampler::new(kind, spp, 5).unwrap();
-        let expected = render::render(&settings, &sampler, &filter, |p, _: &mut PixelSampler| {
-            ch01_whitted::tracer::trace(&scene, &camera.generate_ray(p), 1)
-        })
-        .image;
+        let expected = render::render(&settings, &sampler, &filter, radiance).image;
         let mine = workbench::test_support::catch_panic(|| {
-            crate::render_with(&scene, &settings, &sampler, &filter).image
+            super::render(&settings, &sampler, &filter, radiance).image
         })
         .unwrap_or_else(|message| {
             panic!(
@@ -418,9 +412,9 @@ fn exercise_filtered_pixel_draws_the_chapter_images() {
             .collect();
         if let Some(&pixel) = wrong.first() {
             panic!(
-                "filtered_pixel draws the chapter's images, and the checkerboard ({kind:?} \
-                 samples, {spp} per pixel, {filter:?}) came out wrong at {} of its {} pixels: \
-                 pixel {pixel} is {}, the film gives {}. The checks above name the likely \
+                "filtered_pixel draws the chapter's images, and a render of the test's \
+                 picture ({kind:?} samples, {spp} per pixel, {filter:?}) came out wrong at {} \
+                 of its {} pixels: pixel {pixel} is {}, the film gives {}. The checks above name the likely \
                  slip; {}",
                 wrong.len(),
                 size.x * size.y,
