@@ -455,3 +455,30 @@ fn the_gathered_render_is_the_films_bit_for_bit() {
         }
     }
 }
+
+/// A time budget renders at least once, and its image is the film's at the samples per pixel
+/// it reached; a stop before the first render leaves no samples.
+#[test]
+fn a_time_budget_and_a_stop() {
+    let sampler = PixelSampler::new(PixelSamplerKind::Random, 1, 3).unwrap();
+    let filter = filter(FilterKind::Tent, None);
+    let timed = RenderSettings {
+        budget: render::Budget::Seconds(1e-9),
+        ..RenderSettings::new(9, 7, 1)
+    };
+    let out = super::render(&timed, &sampler, &filter, radiance);
+    assert!(out.stats.spp >= 1 && !out.stats.interrupted);
+    assert_eq!(out.stats.requested_spp, None);
+    let film = render::render(
+        &RenderSettings::new(9, 7, out.stats.spp),
+        &sampler,
+        &filter,
+        radiance,
+    );
+    assert_eq!(out.image, film.image);
+    let stopped = RenderSettings::new(9, 7, 4);
+    stopped.stop.request();
+    let out = super::render(&stopped, &sampler, &filter, radiance);
+    assert!(out.stats.interrupted);
+    assert_eq!((out.stats.spp, out.stats.samples), (0, 0));
+}
