@@ -8,7 +8,8 @@
 //!
 //! - [`pixel_samplers`]: where in its pixel each sample looks.
 //! - [`filters`]: how samples are weighted into pixels, `Σ f L / Σ f`.
-//! - [`reconstruction`]: that weighted average gathered for one pixel, as the lecture writes it.
+//! - [`reconstruction`]: that weighted average gathered for one pixel, as the lecture writes it,
+//!   and the render that draws every pixel of the chapter's images with it.
 //! - [`scenes`]: scenes that alias.
 //! - [`coverage`]: one pixel cut by an edge, the samplers' error in its purest form.
 //!
@@ -36,13 +37,14 @@ pub use pixel_samplers::{PixelSampler, PixelSamplerKind};
 
 use ch01_whitted::camera::PinholeCamera;
 use common::film::Filter;
-use common::render::{self, RenderOutput, RenderSettings};
+use common::render::{RenderOutput, RenderSettings};
 use common::sampler::Sampler;
 use common::scene::Scene;
 
 // ANCHOR: render_with
 /// Renders a chapter 01 `scene` with Whitted's tracer: pixel positions from `sampler`, each
-/// sample one camera ray, reconstructed with `filter`.
+/// sample one camera ray, and every pixel reconstructed with `filter` by
+/// [`reconstruction::filtered_pixel`].
 pub fn render_with<S: Sampler>(
     scene: &Scene,
     settings: &RenderSettings,
@@ -50,7 +52,7 @@ pub fn render_with<S: Sampler>(
     filter: &dyn Filter,
 ) -> RenderOutput {
     let camera = PinholeCamera::of(&scene.camera, settings.width, settings.height);
-    render::render(settings, sampler, filter, |p_film, _sampler| {
+    reconstruction::render(settings, sampler, filter, |p_film, _sampler| {
         ch01_whitted::tracer::trace(scene, &camera.generate_ray(p_film), 1)
     })
 }

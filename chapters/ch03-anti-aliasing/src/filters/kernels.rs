@@ -2,9 +2,11 @@
 //! `f(x, y) = f(x) f(y)`, as in pbrt and Mitsuba.
 
 // ANCHOR: box_filter
-/// The box: 1 within `radius` of the centre, 0 outside.
+/// The box: 1 on `[-radius, radius)`, 0 outside. Half-open, as pixel `(i, j)` covers
+/// `[i, i+1) x [j, j+1)`: with radius 1/2, a sample on the border of two pixels counts for one
+/// of them, not for both.
 pub fn box_1d(x: f32, radius: f32) -> f32 {
-    if x.abs() <= radius { 1.0 } else { 0.0 }
+    if -radius <= x && x < radius { 1.0 } else { 0.0 }
 }
 // ANCHOR_END: box_filter
 

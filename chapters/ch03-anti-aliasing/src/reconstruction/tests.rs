@@ -371,3 +371,114 @@ fn exercise_filtered_pixel_unreached_pixels_are_black() {
         filter(FilterKind::Mitchell, Some(1.0)),
     );
 }
+
+/// The chapter's render draws every pixel with `filtered_pixel`: a tiny render of the test's
+/// picture through the chapter's render loop ([`super::render`], which `crate::render_with`
+/// calls with chapter 01's tracer), for three samplers and filters, against the same render
+/// through the film, which scatters every sample. Writes both images and their difference when
+/// they differ.
+#[test]
+fn exercise_filtered_pixel_draws_the_chapter_images() {
+    let size = UVec2::new(24, 16);
+    for (kind, spp, filter) in [
+        (
+            PixelSamplerKind::Stratified,
+            4,
+            filter(FilterKind::Box, None),
+        ),
+        (PixelSamplerKind::Random, 3, filter(FilterKind::Tent, None)),
+        (
+            PixelSamplerKind::Halton,
+            4,
+            filter(FilterKind::Mitchell, None),
+        ),
+    ] {
+        let settings = RenderSettings::new(size.x, size.y, spp);
+        let sampler = PixelSampler::new(kind, spp, 5).unwrap();
+        let expected = render::render(&settings, &sampler, &filter, radiance).image;
+        let mine = workbench::test_support::catch_panic(|| {
+            super::render(&settings, &sampler, &filter, radiance).image
+        })
+        .unwrap_or_else(|message| {
+            panic!(
+                "the chapter's render panicked in filtered_pixel ({message}); it draws every \
+                 pixel of a {} x {} image with it",
+                size.x, size.y
+            )
+        });
+        let wrong: Vec<UVec2> = (0..size.y)
+            .flat_map(|y| (0..size.x).map(move |x| UVec2::new(x, y)))
+            .filter(|p| !close(mine.get(p.x, p.y), expected.get(p.x, p.y)))
+            .collect();
+        if let Some(&pixel) = wrong.first() {
+            panic!(
+                "filtered_pixel draws the chapter's images, and a render of the test's \
+                 picture ({kind:?} samples, {spp} per pixel, {filter:?}) came out wrong at {} \
+                 of its {} pixels: pixel {pixel} is {}, the film gives {}. The checks above name the likely \
+                 slip; {}",
+                wrong.len(),
+                size.x * size.y,
+                mine.get(pixel.x, pixel.y),
+                expected.get(pixel.x, pixel.y),
+                workbench::test_support::image_comparison(EXERCISE, &mine, &expected)
+            );
+        }
+    }
+}
+
+/// The gathered render is the film's render bit for bit, image and ray count, for every sampler
+/// and filter, on any number of threads.
+#[test]
+fn the_gathered_render_is_the_films_bit_for_bit() {
+    for kind in PixelSamplerKind::ALL {
+        for filter_kind in FilterKind::ALL {
+            for radius in [None, Some(2.5)] {
+                let filter = filter(filter_kind, radius);
+                let spp = 5;
+                let sampler = PixelSampler::new(kind, spp, 11).unwrap();
+                let film = render::render(
+                    &RenderSettings::new(37, 21, spp),
+                    &sampler,
+                    &filter,
+                    radiance,
+                );
+                for threads in [1, 3] {
+                    let settings = RenderSettings {
+                        threads: Some(threads),
+                        ..RenderSettings::new(37, 21, spp)
+                    };
+                    let gathered = super::render(&settings, &sampler, &filter, radiance);
+                    assert_eq!(gathered.image, film.image, "{kind:?} {filter:?} {threads}");
+                    assert_eq!(gathered.stats.samples, film.stats.samples);
+                }
+            }
+        }
+    }
+}
+
+/// A time budget renders at least once, and its image is the film's at the samples per pixel
+/// it reached; a stop before the first render leaves no samples.
+#[test]
+fn a_time_budget_and_a_stop() {
+    let sampler = PixelSampler::new(PixelSamplerKind::Random, 1, 3).unwrap();
+    let filter = filter(FilterKind::Tent, None);
+    let timed = RenderSettings {
+        budget: render::Budget::Seconds(1e-9),
+        ..RenderSettings::new(9, 7, 1)
+    };
+    let out = super::render(&timed, &sampler, &filter, radiance);
+    assert!(out.stats.spp >= 1 && !out.stats.interrupted);
+    assert_eq!(out.stats.requested_spp, None);
+    let film = render::render(
+        &RenderSettings::new(9, 7, out.stats.spp),
+        &sampler,
+        &filter,
+        radiance,
+    );
+    assert_eq!(out.image, film.image);
+    let stopped = RenderSettings::new(9, 7, 4);
+    stopped.stop.request();
+    let out = super::render(&stopped, &sampler, &filter, radiance);
+    assert!(out.stats.interrupted);
+    assert_eq!((out.stats.spp, out.stats.samples), (0, 0));
+}
