@@ -1,8 +1,9 @@
 //! Does the path tracer's general machinery cost anything on a scene that needs none of it?
 //!
 //! Run with `cargo bench -p ch08-path-tracing --bench static_pinhole`. Chapter 01's Cornell box
-//! (one point light, static, pinhole) is rendered by chapter 03's Whitted tracer and by this
-//! chapter's path tracer, at the same size, samples and seed, on one thread.
+//! (one point light, static, pinhole) is rendered by chapter 01's Whitted tracer through the
+//! film (as chapter 03 rendered it before its pixels were gathered) and by this chapter's path
+//! tracer, at the same size, samples and seed, on one thread.
 //!
 //! The two tracers do the same work only where the scene asks for the same work:
 //! - `direct`: the box with its mirror and glass spheres made matte, at `max_depth` 2. Both
@@ -69,14 +70,7 @@ fn whitted(bencher: Bencher, max_depth: u32, matte: bool) {
     let settings = settings();
     bencher
         .counter(ItemsCount::new(u64::from(SIDE * SIDE) * SPP))
-        .bench(|| {
-            ch03_anti_aliasing::render_with(
-                &scene,
-                &settings,
-                &IndependentSampler::new(1),
-                &PixelBoxFilter,
-            )
-        });
+        .bench(|| ch08_path_tracing::lab::figures::whitted_through_the_film(&scene, &settings));
 }
 
 fn path_traced(bencher: Bencher, max_depth: u32, matte: bool) {
