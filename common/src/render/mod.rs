@@ -16,11 +16,13 @@
 //! image of the passes completed so far.
 
 mod budget;
+mod gather;
 mod progress;
 mod stats;
 mod stop;
 
 pub use budget::Budget;
+pub use gather::{GatherPixel, render_gathered};
 pub use stats::RenderStats;
 pub use stop::StopFlag;
 
