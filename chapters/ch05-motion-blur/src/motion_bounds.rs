@@ -42,9 +42,9 @@ pub fn speed_bound(x: Vec3, a: &Decomposed, b: &Decomposed) -> f32 {
 
 // ANCHOR: segment_bounds
 /// A box holding the `corners` (in object space) at every fraction `u` in `[u0, u1]` of the
-/// segment from keyframe parts `a` to `b`: the corners placed at `steps + 1` evenly spaced
-/// fractions, the box of those points grown on every side by the largest distance a corner
-/// can travel in half a step (`speed_bound` times half the step).
+/// segment from keyframe parts `a` to `b`, from the corners placed at `steps + 1` evenly spaced
+/// fractions. Between two of those fractions a corner moves on: how far from the nearer one
+/// can it stray, given `speed_bound`, and what does the box need for it?
 pub fn segment_bounds(
     corners: &[Vec3; 8],
     a: &Decomposed,

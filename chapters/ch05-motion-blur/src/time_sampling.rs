@@ -82,10 +82,10 @@ impl TimeSampling {
 pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 
 // ANCHOR: stratified_time_sample
-/// The time sample of stratum `stratum` out of `strata`, jittered by `jitter` in `[0, 1)`:
-/// `(stratum + jitter) / strata`, a uniform number inside the stratum. Always below 1, even
-/// where rounding `(strata - 1 + jitter) / strata` would give exactly 1, and otherwise that
-/// number as it is (`ONE_MINUS_EPSILON` is the largest `f32` below 1).
+/// The time sample of stratum `stratum` out of `strata` equal parts of `[0, 1)`, jittered by
+/// `jitter` in `[0, 1)`: a uniform number inside that part, `jitter` saying where. Always
+/// below 1, even where `f32` rounding of the last part's top would give exactly 1
+/// (`ONE_MINUS_EPSILON` is the largest `f32` below 1).
 pub fn stratified_time_sample(stratum: u64, strata: u64, jitter: f32) -> f32 {
     // BEGIN SOLUTION
     let u = (stratum as f64 + f64::from(jitter)) / strata.max(1) as f64;
