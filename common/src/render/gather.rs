@@ -47,10 +47,11 @@ const TILE_SIZE: u32 = 32;
 /// which scatters each sample into the film instead; with a gathering that computes the
 /// film's weighted average, both give the same image.
 ///
-/// A sample budget renders every pixel's `0..spp` samples at once. A time budget renders the
-/// whole image at 1, 2, 4, ... samples per pixel, each render from scratch, and keeps the last
-/// one that was completed before the time ran out. A stop keeps the last completed render too
-/// (with a sample budget: none, so the image is black). Samples whose radiance is not finite
+/// The image is rendered whole at growing sample counts, each render from scratch, and the last
+/// one completed is kept: with a sample budget at 1, 4, 16, ... samples per pixel up to the
+/// budget (the earlier renders cost at most a third of the last), with a time budget at 1, 2,
+/// 4, ... until the time is up. A stop keeps the last completed render, and ends the one under
+/// way within a pixel's samples. Samples whose radiance is not finite
 /// are counted in the statistics but, unlike the film, not left out: a pixel they reach shows
 /// the bug.
 pub fn render_gathered<S, F, G>(
@@ -67,26 +68,35 @@ where
 {
     let start = Instant::now();
     let gather = |spp| gather_image(settings, spp, sampler, filter, &radiance, gather);
-    let run = || match settings.budget {
-        Budget::Samples(spp) => match gather(spp) {
-            Some(done) => (Some(done), spp, false),
-            None => (None, 0, true),
-        },
-        Budget::Seconds(seconds) => {
-            let mut kept = None;
-            let mut spp = 1u64;
-            loop {
-                let started = Instant::now();
-                let Some(done) = gather(spp) else {
-                    break (kept, spp / 2, true);
-                };
-                kept = Some(done);
-                // The next render takes about twice as long as this one.
-                let left = seconds - start.elapsed().as_secs_f64();
-                if left.is_nan() || left < 2.0 * started.elapsed().as_secs_f64() {
-                    break (kept, spp, false);
+    // Whole renders of growing sample counts, each from scratch; the last one completed is
+    // kept, so a stop loses no more than the render under way.
+    let run = || {
+        let mut kept = None;
+        let mut kept_spp = 0;
+        let mut spp = 1u64;
+        loop {
+            let Some(done) = gather(spp) else {
+                break (kept, kept_spp, true);
+            };
+            kept = Some(done);
+            kept_spp = spp;
+            match settings.budget {
+                // Four times the samples each time: the renders before the last cost a third
+                // of it at most.
+                Budget::Samples(target) => {
+                    if spp >= target {
+                        break (kept, kept_spp, false);
+                    }
+                    spp = spp.saturating_mul(4).min(target);
                 }
-                spp = spp.saturating_mul(2);
+                // Twice the samples each time, until the time is up.
+                Budget::Seconds(seconds) => {
+                    let elapsed = start.elapsed().as_secs_f64();
+                    if elapsed.is_nan() || elapsed >= seconds {
+                        break (kept, kept_spp, false);
+                    }
+                    spp = spp.saturating_mul(2);
+                }
             }
         }
     };
@@ -232,6 +242,9 @@ where
     let mut totals = Totals::default();
     let mut traced = Vec::with_capacity(border.width() as usize * border.height() as usize);
     for q in border.pixels() {
+        if stop.is_requested() {
+            return None;
+        }
         let own = q.cmpge(rect.min).all() && q.cmplt(rect.max).all();
         for index in 0..spp {
             tracer.start_pixel_sample(q, index);
@@ -258,6 +271,9 @@ where
     let pixels = rect
         .pixels()
         .map(|pixel| {
+            if stop.is_requested() {
+                return None;
+            }
             let mut traced = |p_film: Vec2, replay: &mut Replay<S>| {
                 match replay.traced_radiance(p_film) {
                     Some(l) => l,
@@ -267,9 +283,9 @@ where
                     None => radiance(p_film, replay.inner()),
                 }
             };
-            gather.pixel(pixel, size, spp, &mut replay, filter, &mut traced)
+            Some(gather.pixel(pixel, size, spp, &mut replay, filter, &mut traced))
         })
-        .collect();
+        .collect::<Option<_>>()?;
     Some((pixels, totals))
 }
 
