@@ -14,6 +14,7 @@
 use glam::{UVec2, Vec2, Vec3};
 use std::time::Instant;
 
+use super::stats::Totals;
 use super::{Budget, RenderOutput, RenderSettings, RenderStats, StopFlag, counting_rays};
 use crate::film::{Filter, PixelRect};
 use crate::image::Image;
@@ -115,39 +116,8 @@ where
         )
     });
     let seconds = start.elapsed().as_secs_f64();
-    let per_second = |n: u64| {
-        if seconds > 0.0 {
-            n as f64 / seconds
-        } else {
-            0.0
-        }
-    };
-    let stats = RenderStats {
-        seconds,
-        spp,
-        requested_spp: match settings.budget {
-            Budget::Samples(spp) => Some(spp),
-            Budget::Seconds(_) => None,
-        },
-        interrupted,
-        width: settings.width,
-        height: settings.height,
-        rays: totals.rays,
-        samples: totals.samples,
-        samples_per_second: per_second(totals.samples),
-        rays_per_second: per_second(totals.rays),
-        nonfinite_samples: totals.nonfinite_samples,
-        threads: settings.threads.unwrap_or_else(rayon::current_num_threads),
-    };
+    let stats = RenderStats::new(settings, spp, interrupted, seconds, &totals);
     RenderOutput { image, stats }
-}
-
-/// What one tile, or the whole image, cost.
-#[derive(Clone, Copy, Debug, Default)]
-struct Totals {
-    rays: u64,
-    samples: u64,
-    nonfinite_samples: u64,
 }
 
 /// Every pixel of the image gathered with `spp` samples per pixel, tiles in parallel; `None`
@@ -199,9 +169,7 @@ where
         for (p, &value) in rect.pixels().zip(pixels) {
             image.set(p.x, p.y, value);
         }
-        totals.rays += tile_totals.rays;
-        totals.samples += tile_totals.samples;
-        totals.nonfinite_samples += tile_totals.nonfinite_samples;
+        totals.add(tile_totals);
     }
     Some((image, totals))
 }
