@@ -538,7 +538,7 @@ mod tests {
             &lines("    todo!(\"ch01-reflect: hint\")"),
             exercise
         ));
-        assert!(!is_stub(&lines("    d - 2.0 * d.dot(n) * n"), exercise));
+        assert!(!is_stub(&lines("    u - 3.0 * u.dot(v) * w"), exercise));
         assert!(!is_stub(&lines("    todo!()"), exercise));
     }
 }

@@ -52,7 +52,7 @@ pub struct Exercise {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Giveaway {
-    /// The expression as TeX or code: `d - 2 (d \cdot n) n`. Spaces, braces, `\mathbf` and
+    /// The expression as TeX or code: `u - 3 (u \cdot v) w`. Spaces, braces, `\mathbf` and
     /// the like do not matter (see `giveaways::normalized`).
     pub written: String,
 }

@@ -150,7 +150,7 @@ mod tests {
         references.insert(
             "ch01-reflect".into(),
             vec![
-                "    d - 2.0 * d.dot(n) * n".into(),
+                "    u - 3.0 * u.dot(v) * w".into(),
                 "    \"quoted\" \\ ok".into(),
             ],
         );
@@ -158,7 +158,7 @@ mod tests {
         let bytes = seal(&references).unwrap();
         assert!(bytes.starts_with(HEADER));
         let shown = String::from_utf8_lossy(&bytes);
-        assert!(!shown.contains("d.dot(n)"), "readable in the sealed file");
+        assert!(!shown.contains("u.dot(v)"), "readable in the sealed file");
         assert_eq!(open(&bytes).unwrap(), references);
     }
 

@@ -90,16 +90,18 @@ mod tests {
     const UP: Vec3 = Vec3::Z;
 
     /// What is wrong with `r`, an answer to `reflect(d, n)`, in words; `None` if it is right.
+    /// A mirror direction is known by its two parts: along the surface it is d's, along n it
+    /// is d's with the sign turned.
     fn reflect_mistake(d: Vec3, n: Vec3, r: Vec3) -> Option<String> {
-        let expected = d - 2.0 * d.dot(n) * n;
         if !r.is_finite() {
             return Some(format!("the result {r} is not a finite vector"));
         }
-        if (r - expected).length() < 1e-5 {
+        let (dn, rn) = (d.dot(n), r.dot(n));
+        let along_surface_kept = ((r - rn * n) - (d - dn * n)).length() <= 1e-5;
+        if along_surface_kept && (rn + dn).abs() <= 1e-5 {
             return None;
         }
-        let (dn, rn) = (d.dot(n), r.dot(n));
-        let mistake = if ((r - rn * n) - (d - dn * n)).length() > 1e-4 {
+        let mistake = if !along_surface_kept {
             "the part of d along the surface changed: a mirror keeps it as it is and flips only \
              the part along n"
                 .to_string()
@@ -117,7 +119,8 @@ mod tests {
             format!("the part along n is {rn}, where it should be {}", -dn)
         };
         Some(format!(
-            "{mistake}.\n  d = {d}, n = {n}: your reflect gave {r}, the mirror direction is {expected}"
+            "{mistake}.\n  d = {d}, n = {n}: your reflect gave {r}, whose part along n is {rn} \
+             (d's is {dn})"
         ))
     }
 

@@ -81,16 +81,13 @@ impl BelowSurface {
             BelowSurface::Resample => (1..MAX_RESAMPLES)
                 .map(|_| draw(sampler.get_2d()))
                 .find(|&d| above(d)),
-            BelowSurface::Reflect => Some(mirror_through_plane(d, side)).filter(|&d| above(d)),
+            BelowSurface::Reflect => {
+                Some(ch01_whitted::optics::reflect(d, side)).filter(|&d| above(d))
+            }
         }
         // END SOLUTION
     }
     // ANCHOR_END: scatter
-}
-
-/// `d` mirrored through the plane with unit normal `n`: the part along `n` changes sign.
-pub fn mirror_through_plane(d: Vec3, n: Vec3) -> Vec3 {
-    d - 2.0 * d.dot(n) * n
 }
 
 #[cfg(test)]
