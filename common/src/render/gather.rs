@@ -14,6 +14,7 @@
 use glam::{UVec2, Vec2, Vec3};
 use std::time::Instant;
 
+use super::progress::Progress;
 use super::stats::Totals;
 use super::{Budget, RenderOutput, RenderSettings, RenderStats, StopFlag, counting_rays};
 use crate::film::{Filter, PixelRect};
@@ -68,7 +69,23 @@ where
     G: GatherPixel,
 {
     let start = Instant::now();
-    let gather = |spp| gather_image(settings, spp, sampler, filter, &radiance, gather);
+    let size = UVec2::new(settings.width, settings.height);
+    let tiles = tiles_of(size);
+    let planned_spp = match settings.budget {
+        Budget::Samples(target) => std::iter::successors(Some(1), |&spp| {
+            (spp < target).then(|| next_spp(spp, target))
+        })
+        .sum(),
+        Budget::Seconds(_) => 0,
+    };
+    let progress = Progress::new(settings, tiles.len(), planned_spp);
+    let gather = |spp| {
+        let done = gather_image(
+            settings, &tiles, spp, sampler, filter, &radiance, gather, &progress,
+        );
+        progress.pass_done(spp);
+        done
+    };
     // Whole renders of growing sample counts, each from scratch; the last one completed is
     // kept, so a stop loses no more than the render under way.
     let run = || {
@@ -82,13 +99,11 @@ where
             kept = Some(done);
             kept_spp = spp;
             match settings.budget {
-                // Four times the samples each time: the renders before the last cost a third
-                // of it at most.
                 Budget::Samples(target) => {
                     if spp >= target {
                         break (kept, kept_spp, false);
                     }
-                    spp = spp.saturating_mul(4).min(target);
+                    spp = next_spp(spp, target);
                 }
                 // Twice the samples each time, until the time is up.
                 Budget::Seconds(seconds) => {
@@ -109,6 +124,7 @@ where
             .install(run),
         None => run(),
     };
+    progress.finish();
     let (image, totals) = done.unwrap_or_else(|| {
         (
             Image::new(settings.width, settings.height),
@@ -120,24 +136,15 @@ where
     RenderOutput { image, stats }
 }
 
-/// Every pixel of the image gathered with `spp` samples per pixel, tiles in parallel; `None`
-/// when a stop is requested before it is done.
-fn gather_image<S, F, G>(
-    settings: &RenderSettings,
-    spp: u64,
-    sampler: &S,
-    filter: &dyn Filter,
-    radiance: &F,
-    gather: &G,
-) -> Option<(Image, Totals)>
-where
-    S: Sampler,
-    F: Fn(Vec2, &mut S) -> Vec3 + Sync,
-    G: GatherPixel,
-{
-    use rayon::prelude::*;
-    let size = UVec2::new(settings.width, settings.height);
-    let tiles: Vec<PixelRect> = (0..size.y)
+/// The samples per pixel of the render after one of `spp`, under a budget of `target`: four
+/// times as many, so that the renders before the last cost a third of it at most.
+fn next_spp(spp: u64, target: u64) -> u64 {
+    spp.saturating_mul(4).min(target)
+}
+
+/// The tiles of an image of `size`, row by row.
+fn tiles_of(size: UVec2) -> Vec<PixelRect> {
+    (0..size.y)
         .step_by(TILE_SIZE as usize)
         .flat_map(|y| {
             (0..size.x)
@@ -147,11 +154,33 @@ where
                     max: (UVec2::new(x, y) + TILE_SIZE).min(size),
                 })
         })
-        .collect();
+        .collect()
+}
+
+/// Every pixel of the image gathered with `spp` samples per pixel, tiles in parallel; `None`
+/// when a stop is requested before it is done.
+#[allow(clippy::too_many_arguments)]
+fn gather_image<S, F, G>(
+    settings: &RenderSettings,
+    tiles: &[PixelRect],
+    spp: u64,
+    sampler: &S,
+    filter: &dyn Filter,
+    radiance: &F,
+    gather: &G,
+    progress: &Progress,
+) -> Option<(Image, Totals)>
+where
+    S: Sampler,
+    F: Fn(Vec2, &mut S) -> Vec3 + Sync,
+    G: GatherPixel,
+{
+    use rayon::prelude::*;
+    let size = UVec2::new(settings.width, settings.height);
     let gathered: Vec<(Vec<Vec3>, Totals)> = tiles
         .par_iter()
         .map(|&rect| {
-            gather_tile(
+            let done = gather_tile(
                 rect,
                 size,
                 spp,
@@ -160,7 +189,9 @@ where
                 radiance,
                 gather,
                 &settings.stop,
-            )
+            );
+            progress.tile_done(spp);
+            done
         })
         .collect::<Option<_>>()?;
     let mut image = Image::new(size.x, size.y);

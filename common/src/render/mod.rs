@@ -120,7 +120,11 @@ where
     let start = Instant::now();
     let mut film = Film::new(settings.width, settings.height);
     let tiles = tiles(settings.width, settings.height);
-    let progress = progress::Progress::new(settings, tiles.len());
+    let planned_spp = match settings.budget {
+        Budget::Samples(spp) => spp,
+        Budget::Seconds(_) => 0,
+    };
+    let progress = progress::Progress::new(settings, tiles.len(), planned_spp);
     let mut totals = stats::Totals::default();
 
     let stop = &settings.stop;
@@ -146,7 +150,7 @@ where
                             &radiance,
                             stop,
                         );
-                        progress.tile_done();
+                        progress.tile_done(pass);
                         out
                     })
                     .collect()

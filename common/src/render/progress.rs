@@ -15,38 +15,38 @@ pub(super) struct Progress;
 
 #[cfg(not(feature = "progress"))]
 impl Progress {
-    pub(super) fn new(_settings: &RenderSettings, _tiles_per_pass: usize) -> Self {
+    pub(super) fn new(_settings: &RenderSettings, _tiles: usize, _planned_spp: u64) -> Self {
         Self
     }
 
-    pub(super) fn tile_done(&self) {}
+    pub(super) fn tile_done(&self, _spp: u64) {}
 
     pub(super) fn pass_done(&self, _spp: u64) {}
 
     pub(super) fn finish(&self) {}
 }
 
-/// Counts finished tiles; draws nothing when disabled or when stderr is not a terminal
-/// (tests, CI logs, pipes).
+/// The bar of a render: with a sample budget, the samples traced against those planned (a tile
+/// of `n` samples per pixel advances it by `n`); with a time budget, the time spent against the
+/// budget. Its message is the samples per pixel done. It draws nothing when disabled or when
+/// stderr is not a terminal (tests, CI logs, pipes).
 #[cfg(feature = "progress")]
 pub(super) struct Progress {
     bar: Option<ProgressBar>,
-    tiles_per_pass: u64,
+    timed: bool,
 }
 
 #[cfg(feature = "progress")]
 impl Progress {
-    pub(super) fn new(settings: &RenderSettings, tiles_per_pass: usize) -> Self {
-        let tiles_per_pass = tiles_per_pass as u64;
+    /// `planned_spp` is the samples per pixel the whole render traces with a sample budget,
+    /// counting every pass (and every whole render, for a render that starts over).
+    pub(super) fn new(settings: &RenderSettings, tiles: usize, planned_spp: u64) -> Self {
         let bar = (settings.progress && std::io::stderr().is_terminal()).then(|| {
             let (len, unit) = match settings.budget {
-                Budget::Samples(spp) => (spp, "spp"),
-                Budget::Seconds(_) => (0, "spp so far"),
+                Budget::Samples(_) => (planned_spp.saturating_mul(tiles as u64), "spp"),
+                Budget::Seconds(seconds) => ((seconds.max(0.0) * 1000.0) as u64, "spp so far"),
             };
-            let bar = ProgressBar::with_draw_target(
-                Some(len * tiles_per_pass),
-                ProgressDrawTarget::stderr(),
-            );
+            let bar = ProgressBar::with_draw_target(Some(len), ProgressDrawTarget::stderr());
             let template = format!(
                 "{{spinner}} [{{elapsed_precise}}] {{wide_bar}} {{msg}} {unit} (eta {{eta}})"
             );
@@ -54,31 +54,30 @@ impl Progress {
                 ProgressStyle::with_template(&template)
                     .unwrap_or_else(|_| ProgressStyle::default_bar()),
             );
-            if len == 0 {
-                bar.set_length(tiles_per_pass);
-            }
             bar
         });
         Self {
             bar,
-            tiles_per_pass,
+            timed: matches!(settings.budget, Budget::Seconds(_)),
         }
     }
 
-    pub(super) fn tile_done(&self) {
+    /// A tile is done with `spp` samples per pixel.
+    pub(super) fn tile_done(&self, spp: u64) {
         if let Some(bar) = &self.bar {
-            bar.inc(1);
+            if self.timed {
+                let spent = bar.elapsed().as_millis().min(u128::from(u64::MAX)) as u64;
+                bar.set_position(spent.min(bar.length().unwrap_or(u64::MAX)));
+            } else {
+                bar.inc(spp);
+            }
         }
     }
 
-    /// A pass has finished; `spp` samples per pixel are now done. A samples budget advances
-    /// the bar per tile of each pass; a time budget grows the bar as passes are added.
+    /// A pass (or a whole render) has finished; `spp` samples per pixel are now done.
     pub(super) fn pass_done(&self, spp: u64) {
         if let Some(bar) = &self.bar {
             bar.set_message(spp.to_string());
-            if bar.length().is_some_and(|len| bar.position() >= len) {
-                bar.inc_length(self.tiles_per_pass);
-            }
         }
     }
 
