@@ -1,8 +1,9 @@
-//! Helpers for the chapters' own tests: running a chapter's binary on bad input, and the text
-//! summary of a tiny render that snapshot tests store.
+//! Helpers for the chapters' own tests: running a chapter's binary on bad input, the pictures
+//! of a failing check, the written diagrams, and the text summary of a tiny render that
+//! snapshot tests store.
 //!
-//! Nothing here is used by a renderer; it lives in `common` so that every chapter's tests ask
-//! the same questions in the same way.
+//! Nothing here is used by a renderer; it lives in the workbench so that every chapter's tests
+//! ask the same questions in the same way.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -437,6 +438,40 @@ pub fn pixel_centre_grid(width: u32, height: u32, k: u32) -> Vec<Vec2> {
         }
     }
     points
+}
+
+/// Writes a chapter's diagrams with `write_all` into a fresh folder and gives the description
+/// of each of `files` (the `<title>` a screen reader reads, which the page's alt text says
+/// again), after checking that each is an SVG document with a description that is not empty.
+/// With `DIAGRAMS_OUT` set to a folder, the diagrams are written there too, to look at.
+pub fn written_diagrams(
+    write_all: impl Fn(&Path) -> anyhow::Result<()>,
+    files: &[&str],
+) -> Vec<String> {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    write_all(dir.path()).expect("the diagrams are written");
+    let descriptions = files
+        .iter()
+        .map(|file| {
+            let path = dir.path().join(file);
+            let svg = std::fs::read_to_string(&path)
+                .unwrap_or_else(|e| panic!("{file} was not written: {e}"));
+            let document = roxmltree::Document::parse(&svg)
+                .unwrap_or_else(|e| panic!("{file} is not well-formed XML: {e}"));
+            assert_eq!(document.root_element().tag_name().name(), "svg", "{file}");
+            let title = document
+                .descendants()
+                .find(|node| node.has_tag_name("title"))
+                .and_then(|node| node.text())
+                .unwrap_or_default();
+            assert!(!title.trim().is_empty(), "{file} has no description");
+            title.to_owned()
+        })
+        .collect();
+    if let Some(out) = std::env::var_os("DIAGRAMS_OUT") {
+        write_all(Path::new(&out)).expect("the diagrams are written to DIAGRAMS_OUT");
+    }
+    descriptions
 }
 
 #[cfg(test)]

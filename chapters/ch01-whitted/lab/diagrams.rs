@@ -407,6 +407,7 @@ fn ray_tree_diagram() -> Diagram {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use workbench::test_support::written_diagrams;
 
     /// `sin θ` of a unit direction against the normal `±y`.
     fn sine(v: Vec3) -> f32 {
@@ -479,20 +480,10 @@ mod tests {
     }
 
     #[test]
-    fn write_all_writes_well_formed_svg_with_its_description() {
-        let dir = tempfile::tempdir().unwrap();
-        write_all(dir.path()).unwrap();
-        for (file, description) in [("snell.svg", SNELL), ("ray-tree.svg", RAY_TREE)] {
-            let svg = std::fs::read_to_string(dir.path().join(file)).unwrap();
-            let document = roxmltree::Document::parse(&svg).unwrap();
-            let title = document
-                .descendants()
-                .find(|node| node.tag_name().name() == "title")
-                .and_then(|node| node.text());
-            assert_eq!(title, Some(description));
-        }
-        if let Ok(out) = std::env::var("CH01_DIAGRAMS") {
-            write_all(Path::new(&out)).unwrap();
-        }
+    fn write_all_writes_each_diagram_as_svg_with_its_description() {
+        assert_eq!(
+            written_diagrams(write_all, &["snell.svg", "ray-tree.svg"]),
+            [SNELL, RAY_TREE]
+        );
     }
 }

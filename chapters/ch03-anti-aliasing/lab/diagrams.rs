@@ -257,6 +257,7 @@ mod tests {
     use super::*;
     use common::film::{Film, PixelRect};
     use glam::{UVec2, Vec3};
+    use workbench::test_support::written_diagrams;
 
     /// The pixels whose sums the film changes when it takes `sample` through `filter`.
     fn film_reached(filter: &ReconstructionFilter, sample: Vec2, (w, h): (u32, u32)) -> Film {
@@ -332,18 +333,7 @@ mod tests {
     }
 
     #[test]
-    fn write_all_writes_svg_files_that_parse() {
-        let dir = tempfile::tempdir().unwrap();
-        write_all(dir.path()).unwrap();
-        for name in ["filter-footprint.svg", "filter-weights.svg"] {
-            let text = std::fs::read_to_string(dir.path().join(name)).unwrap();
-            let document = roxmltree::Document::parse(&text).expect(name);
-            assert_eq!(document.root_element().tag_name().name(), "svg");
-            assert!(text.contains("<title>"), "{name}");
-        }
-        // To look at them: DIAGRAMS_OUT=/some/dir cargo test ... write_all
-        if let Ok(out) = std::env::var("DIAGRAMS_OUT") {
-            write_all(Path::new(&out)).unwrap();
-        }
+    fn write_all_writes_each_diagram_as_svg_with_its_description() {
+        written_diagrams(write_all, &["filter-footprint.svg", "filter-weights.svg"]);
     }
 }

@@ -294,6 +294,7 @@ fn focal_plane() -> Diagram {
 mod tests {
     use super::*;
     use crate::circle_of_confusion::{circle_of_confusion, circle_of_confusion_on_film};
+    use workbench::test_support::written_diagrams;
 
     #[test]
     fn the_point_in_focus_meets_on_the_film_and_the_others_spread_by_the_circle_of_confusion() {
@@ -356,18 +357,7 @@ mod tests {
     }
 
     #[test]
-    fn write_all_writes_svg_files_that_parse() {
-        let dir = tempfile::tempdir().unwrap();
-        write_all(dir.path()).unwrap();
-        for name in ["thin-lens.svg", "focal-plane.svg"] {
-            let text = std::fs::read_to_string(dir.path().join(name)).unwrap();
-            let document = roxmltree::Document::parse(&text).expect(name);
-            assert_eq!(document.root_element().tag_name().name(), "svg");
-            assert!(text.contains("<title>"), "{name}");
-        }
-        // To look at them: DIAGRAMS_OUT=/some/dir cargo test ... write_all
-        if let Ok(out) = std::env::var("DIAGRAMS_OUT") {
-            write_all(Path::new(&out)).unwrap();
-        }
+    fn write_all_writes_each_diagram_as_svg_with_its_description() {
+        written_diagrams(write_all, &["thin-lens.svg", "focal-plane.svg"]);
     }
 }

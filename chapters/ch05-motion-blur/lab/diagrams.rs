@@ -206,6 +206,7 @@ fn moving_sphere() -> Diagram {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use workbench::test_support::written_diagrams;
 
     /// The area a closed outline of points `(t, w)` encloses (the shoelace formula).
     fn area(outline: &[(f32, f32)]) -> f64 {
@@ -276,18 +277,7 @@ mod tests {
     }
 
     #[test]
-    fn write_all_writes_svg_files_that_parse() {
-        let dir = tempfile::tempdir().unwrap();
-        write_all(dir.path()).unwrap();
-        for name in ["shutter-opening.svg", "moving-sphere.svg"] {
-            let text = std::fs::read_to_string(dir.path().join(name)).unwrap();
-            let document = roxmltree::Document::parse(&text).expect(name);
-            assert_eq!(document.root_element().tag_name().name(), "svg");
-            assert!(text.contains("<title>"), "{name}");
-        }
-        // To look at them: DIAGRAMS_OUT=/some/dir cargo test ... write_all
-        if let Ok(out) = std::env::var("DIAGRAMS_OUT") {
-            write_all(Path::new(&out)).unwrap();
-        }
+    fn write_all_writes_each_diagram_as_svg_with_its_description() {
+        written_diagrams(write_all, &["shutter-opening.svg", "moving-sphere.svg"]);
     }
 }

@@ -360,6 +360,7 @@ fn fuzzy_refraction(scene: &RefractionScene) -> Diagram {
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+    use workbench::test_support::written_diagrams;
 
     /// The angle between two unit vectors, in radians.
     fn angle(a: Vec3, b: Vec3) -> f32 {
@@ -435,26 +436,10 @@ mod tests {
     }
 
     #[test]
-    fn write_all_writes_svg_with_the_descriptions() {
-        let dir = tempfile::tempdir().unwrap();
-        let out = dir.path().join("diagrams");
-        write_all(&out).unwrap();
-        for (file, description) in [
-            ("fuzzy-lobe.svg", LOBE_DESCRIPTION),
-            ("fuzzy-refraction.svg", REFRACTION_DESCRIPTION),
-        ] {
-            let svg = std::fs::read_to_string(out.join(file)).unwrap();
-            let document = roxmltree::Document::parse(&svg).expect("the SVG parses as XML");
-            let title = document
-                .descendants()
-                .find(|node| node.tag_name().name() == "title")
-                .and_then(|node| node.text());
-            assert_eq!(title, Some(description));
-        }
-        if let Ok(keep) = std::env::var("CH06_DIAGRAMS") {
-            for file in ["fuzzy-lobe.svg", "fuzzy-refraction.svg"] {
-                std::fs::copy(out.join(file), Path::new(&keep).join(file)).unwrap();
-            }
-        }
+    fn write_all_writes_each_diagram_as_svg_with_its_description() {
+        assert_eq!(
+            written_diagrams(write_all, &["fuzzy-lobe.svg", "fuzzy-refraction.svg"]),
+            [LOBE_DESCRIPTION, REFRACTION_DESCRIPTION]
+        );
     }
 }

@@ -363,6 +363,7 @@ mod tests {
     use crate::solid_angle::pdf_area_to_solid_angle;
     use approx::assert_relative_eq;
     use glam::DVec3;
+    use workbench::test_support::written_diagrams;
 
     /// The solid angle of the triangle `a b c` seen from the origin (Van Oosterom and
     /// Strackee), in `f64`: a measure computed without the chapter's conversion.
@@ -471,27 +472,10 @@ mod tests {
     }
 
     #[test]
-    fn write_all_writes_svg_with_the_descriptions() {
-        let dir = tempfile::tempdir().unwrap();
-        let out = dir.path().join("diagrams");
-        write_all(&out).unwrap();
-        let files = [
-            ("area-to-solid-angle.svg", PANEL_DESCRIPTION),
-            ("sphere-cone.svg", SPHERE_DESCRIPTION),
-        ];
-        for (file, description) in files {
-            let svg = std::fs::read_to_string(out.join(file)).unwrap();
-            let document = roxmltree::Document::parse(&svg).expect("the SVG parses as XML");
-            let title = document
-                .descendants()
-                .find(|node| node.tag_name().name() == "title")
-                .and_then(|node| node.text());
-            assert_eq!(title, Some(description));
-        }
-        if let Ok(keep) = std::env::var("CH07_DIAGRAMS") {
-            for (file, _) in files {
-                std::fs::copy(out.join(file), Path::new(&keep).join(file)).unwrap();
-            }
-        }
+    fn write_all_writes_each_diagram_as_svg_with_its_description() {
+        assert_eq!(
+            written_diagrams(write_all, &["area-to-solid-angle.svg", "sphere-cone.svg"]),
+            [PANEL_DESCRIPTION, SPHERE_DESCRIPTION]
+        );
     }
 }

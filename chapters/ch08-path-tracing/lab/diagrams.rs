@@ -564,6 +564,7 @@ mod tests {
     use super::*;
     use crate::distribution_tracer::DistributionTracer;
     use common::render::counting_rays;
+    use workbench::test_support::written_diagrams;
 
     /// A sampler that plays back the numbers a walk drew, and panics if asked for more.
     #[derive(Clone)]
@@ -688,16 +689,10 @@ mod tests {
     }
 
     #[test]
-    fn write_all_writes_svg_that_parses() {
-        let dir = tempfile::tempdir().unwrap();
-        write_all(dir.path()).unwrap();
-        for name in ["ray-tree-against-path.svg", "light-sample-densities.svg"] {
-            let text = std::fs::read_to_string(dir.path().join(name)).unwrap();
-            let doc = roxmltree::Document::parse(&text).unwrap();
-            assert!(doc.descendants().any(|n| n.has_tag_name("title")));
-        }
-        if let Some(out) = std::env::var_os("DIAGRAMS_OUT") {
-            write_all(Path::new(&out)).unwrap();
-        }
+    fn write_all_writes_each_diagram_as_svg_with_its_description() {
+        written_diagrams(
+            write_all,
+            &["ray-tree-against-path.svg", "light-sample-densities.svg"],
+        );
     }
 }
