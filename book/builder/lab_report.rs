@@ -95,6 +95,8 @@ pub fn build(
                 .with_context(|| format!("cannot copy {}", table.display()))?;
         }
     }
+    // The demos run the student's code: an exercise not written yet shows as such in them.
+    crate::demos::build(root, &book_dir.join("src"))?;
     crate::site::build_with(&book_dir, Some(LabReport { chapters }))
 }
 

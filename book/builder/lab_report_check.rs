@@ -131,6 +131,7 @@ pub fn run(root: &Path, screenshots: &Path) -> Result<()> {
         screenshots: screenshots.to_path_buf(),
         alt_check: true,
         search_word: Some("Fresnel".to_owned()),
+        demos_may_wait: true,
     };
     let outcome = site_check::run(&options)?;
     if !outcome.problems.is_empty() {

@@ -17,6 +17,9 @@
 
 mod check_exercises;
 mod checkpoint;
+#[cfg(feature = "browser")]
+mod demo_check;
+mod demos;
 mod exercise_calls;
 mod exercise_list;
 mod exercise_needs;
@@ -337,6 +340,7 @@ fn check_site(site: PathBuf, screenshots: PathBuf, alt_check: bool, search: Stri
         screenshots,
         alt_check,
         search_word: Some(search),
+        demos_may_wait: false,
     };
     let started = Instant::now();
     println!(
@@ -396,6 +400,7 @@ fn build_book(root: &Path, quick: bool) -> Result<()> {
     mdbook_log::install();
 
     regenerate_figures(&book_dir.join("src").join("figures"), quick)?;
+    demos::build(root, &book_dir.join("src"))?;
 
     println!("Building the site with mdBook and KaTeX ...");
     let front_page = site::build(&book_dir)?;

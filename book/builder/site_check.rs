@@ -50,6 +50,9 @@ pub struct Options {
     /// A word to type into the search box of `index.html`, which must then show results; `None`
     /// for a site without mdBook's search.
     pub search_word: Option<String>,
+    /// Whether a demo stopped by an exercise not written yet is only a note (the student's own
+    /// site, which runs the student's code) rather than a problem (the workbook's).
+    pub demos_may_wait: bool,
 }
 
 /// One thing wrong, on one page.
@@ -573,6 +576,42 @@ pub fn run(options: &Options) -> Result<Outcome> {
                 }
             }
         }
+        let demos = crate::demo_check::play(&tab)
+            .with_context(|| format!("cannot play the demos of {page}"))?;
+        for (index, demo) in demos.iter().enumerate() {
+            let name = format!("demo `{}`", demo.name);
+            for what in &demo.problems {
+                problems.push(problem(format!("{name}: {what}")));
+            }
+            if let Some(waiting) = &demo.waiting {
+                let stopped = problem(format!("{name} stopped: {waiting}"));
+                if options.demos_may_wait {
+                    notes.push(stopped);
+                } else {
+                    problems.push(stopped);
+                }
+            }
+            if let Some(rect) = demo.rect {
+                let shot = options.screenshots.join(format!(
+                    "demo-{index}-{}-{}",
+                    demo.name,
+                    screenshot_name(page)
+                ));
+                let clip = Page::Viewport {
+                    x: rect.x,
+                    y: rect.y,
+                    width: rect.width.max(1.0),
+                    height: rect.height.max(1.0),
+                    scale: 1.0,
+                };
+                capture(&tab, &shot, clip)
+                    .with_context(|| format!("cannot take a screenshot of {name} on {page}"))?;
+            }
+        }
+        // The demos' console errors and exceptions too.
+        std::thread::sleep(Duration::from_millis(50));
+        let messages = std::mem::take(&mut events.lock().expect("events lock").messages);
+        problems.extend(messages.into_iter().map(problem));
         for error in &page_facts.katex_errors {
             problems.push(problem(format!(
                 "<span class=\"katex-error\">: KaTeX could not typeset `{}`: {}",
@@ -584,8 +623,17 @@ pub fn run(options: &Options) -> Result<Outcome> {
                 "a formula left as TeX source (KaTeX could not typeset it): {tex}"
             )));
         }
+        let played = if demos.is_empty() {
+            String::new()
+        } else {
+            let controls: usize = demos.iter().map(|demo| demo.controls).sum();
+            format!(
+                ", {} demo(s) played ({controls} control(s) moved)",
+                demos.len()
+            )
+        };
         println!(
-            "  {page}: {} image(s), {} link(s), {} id(s), in {:.1} s with its screenshot",
+            "  {page}: {} image(s), {} link(s), {} id(s){played}, in {:.1} s with its screenshot",
             page_facts.images.len(),
             page_facts.links.len(),
             page_facts.ids.len(),
@@ -721,6 +769,11 @@ fn screenshot(tab: &Tab, file: &Path, size: PageSize) -> Result<()> {
         height: size.height.clamp(1.0, MAX_SCREENSHOT_HEIGHT),
         scale: 1.0,
     };
+    capture(tab, file, clip)
+}
+
+/// A PNG of the part `clip` of the page, written to `file`.
+fn capture(tab: &Tab, file: &Path, clip: Page::Viewport) -> Result<()> {
     let png = tab
         .call_method(Page::CaptureScreenshot {
             format: Some(Page::CaptureScreenshotFormatOption::Png),
@@ -1187,6 +1240,7 @@ mod tests {
             screenshots: shots.path().to_owned(),
             alt_check: true,
             search_word: None,
+            demos_may_wait: false,
         };
         let outcome = run(&options).unwrap();
 
@@ -1270,6 +1324,7 @@ mod tests {
             site: small.path().to_owned(),
             alt_check: false,
             search_word: Some("dot".to_owned()),
+            demos_may_wait: false,
             ..options
         })
         .unwrap();
@@ -1285,6 +1340,130 @@ mod tests {
 
     /// A small book built by the builder itself: a formula mdbook-katex cannot typeset stays in
     /// the page as its TeX source, which the check finds, and search works from disk.
+    /// A WebAssembly module in the demos' shape whose first call aborts, as a panic does,
+    /// leaving `message` in its text buffer.
+    fn panicking_module(message: &str) -> Vec<u8> {
+        fn section(id: u8, content: &[u8]) -> Vec<u8> {
+            [&[id, content.len() as u8][..], content].concat()
+        }
+        fn named(name: &str, kind: u8, index: u8) -> Vec<u8> {
+            [&[name.len() as u8][..], name.as_bytes(), &[kind, index]].concat()
+        }
+        let message = message.as_bytes();
+        assert!(message.len() < 100, "lengths are written as single bytes");
+        let returns = |value: u8| vec![4u8, 0, 0x41, value, 0x0b];
+        let exports = [
+            named("memory", 2, 0),
+            named("init", 0, 0),
+            named("warp_count", 0, 1),
+            named("text_ptr", 0, 2),
+            named("text_len", 0, 3),
+            named("numbers_ptr", 0, 4),
+            named("numbers_len", 0, 5),
+        ];
+        let code = [
+            vec![6u8],
+            vec![2, 0, 0x0b],
+            vec![3, 0, 0x00, 0x0b], // unreachable: the abort of a panic
+            returns(16),
+            returns(message.len() as u8),
+            returns(0),
+            returns(0),
+        ]
+        .concat();
+        let data = [&[1u8, 0, 0x41, 16, 0x0b, message.len() as u8][..], message].concat();
+        [
+            &b"\0asm\x01\0\0\0"[..],
+            &section(1, &[2, 0x60, 0, 0, 0x60, 0, 1, 0x7f]),
+            &section(3, &[6, 0, 1, 1, 1, 1, 1]),
+            &section(5, &[1, 0, 1]),
+            &section(7, &[&[exports.len() as u8][..], &exports.concat()].concat()),
+            &section(10, &code),
+            &section(11, &data),
+        ]
+        .concat()
+    }
+
+    /// A demo whose module is missing or whose code panics fails the check, naming the demo
+    /// and the panic's words; one stopped by an exercise not written yet fails the workbook's
+    /// site but is only a note on a student's.
+    #[test]
+    fn a_demo_without_its_module_or_that_panics_is_a_problem() {
+        if !browser_is_here("a_demo_without_its_module_or_that_panics_is_a_problem") {
+            return;
+        }
+        let site = tempfile::tempdir().unwrap();
+        std::fs::write(
+            site.path().join("demos.js"),
+            include_str!("../theme/demos.js"),
+        )
+        .unwrap();
+        let with_module = |message: &str| {
+            format!(
+                "<div class=\"demo\" data-demo=\"warps\"></div>\
+                 <script>window.BOOK_DEMOS_WASM = \"{}\";</script>\
+                 <script src=\"demos.js\"></script>",
+                BASE64_STANDARD.encode(panicking_module(message))
+            )
+        };
+        let pages = [
+            ("index.html", String::new()),
+            (
+                "no-module.html",
+                "<div class=\"demo\" data-demo=\"warps\"></div><script src=\"demos.js\"></script>"
+                    .to_owned(),
+            ),
+            ("panics.html", with_module("index out of bounds in warps")),
+            (
+                "waits.html",
+                with_module("this demo needs ch02-disc-polar (not written yet)"),
+            ),
+        ];
+        for (name, body) in &pages {
+            std::fs::write(site.path().join(name), page(name, body)).unwrap();
+        }
+        let check = |demos_may_wait| {
+            let shots = tempfile::tempdir().unwrap();
+            run(&Options {
+                site: site.path().to_owned(),
+                screenshots: shots.path().to_owned(),
+                alt_check: true,
+                search_word: None,
+                demos_may_wait,
+            })
+            .unwrap()
+        };
+        let outcome = check(false);
+        let listing = outcome
+            .problems
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("\n");
+        for (page, words) in [
+            ("no-module.html", "the demos' module is missing"),
+            ("panics.html", "index out of bounds in warps"),
+            ("waits.html", "ch02-disc-polar (not written yet)"),
+        ] {
+            assert!(
+                outcome.problems.iter().any(|p| p.page == page
+                    && p.what.contains("demo `warps`")
+                    && p.what.contains(words)),
+                "{page}: {listing}"
+            );
+        }
+        assert_eq!(outcome.problems.len(), 3, "{listing}");
+
+        // On the student's own site, the exercise not written yet is a note.
+        let outcome = check(true);
+        assert_eq!(outcome.problems.len(), 2, "{:?}", outcome.problems);
+        assert!(
+            outcome.notes.iter().any(|n| n.page == "waits.html"),
+            "{:?}",
+            outcome.notes
+        );
+    }
+
     #[test]
     fn a_real_book_with_a_broken_formula_fails_and_its_search_finds_words() {
         if !browser_is_here("a_real_book_with_a_broken_formula_fails_and_its_search_finds_words") {
@@ -1354,6 +1533,7 @@ mod tests {
             screenshots: shots.path().to_owned(),
             alt_check: true,
             search_word: Some("Fresnel".to_owned()),
+            demos_may_wait: false,
         })
         .unwrap();
         let listing = outcome

@@ -25,7 +25,14 @@ pub fn target_dir(root: &Path) -> PathBuf {
 }
 
 /// Generated or private paths that are never source, for trees outside git.
-const NOT_SOURCE: &[&str] = &["target", ".git", "out", "book/site", "book/src/figures"];
+const NOT_SOURCE: &[&str] = &[
+    "target",
+    ".git",
+    "out",
+    "book/site",
+    "book/src/figures",
+    "book/src/demos",
+];
 
 /// The workspace's source files, relative to `root`, sorted.
 ///

@@ -100,9 +100,36 @@ pub fn chi2_test_density(
     samples: usize,
     seed: u64,
     resolution: (usize, usize),
-    mut sample: impl FnMut(Vec2) -> WarpPoint,
+    sample: impl FnMut(Vec2) -> WarpPoint,
     pdf: impl Fn(WarpPoint) -> f32,
 ) -> Chi2Result {
+    chi2_tables(domain, samples, seed, resolution, sample, pdf).result
+}
+
+/// What the test compares, bin by bin, with its verdict: the tables Nori's `warptest` draws
+/// side by side.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chi2Tables {
+    /// The samples counted in each bin, row by row (`columns` per row); an impossible sample
+    /// is in none.
+    pub observed: Vec<u64>,
+    /// The samples the claimed density expects in each bin, in the same order.
+    pub expected: Vec<f64>,
+    /// Bins per row.
+    pub columns: usize,
+    /// The verdict.
+    pub result: Chi2Result,
+}
+
+/// [`chi2_test_density`], keeping the observed and expected counts of every bin.
+pub fn chi2_tables(
+    domain: Domain,
+    samples: usize,
+    seed: u64,
+    resolution: (usize, usize),
+    mut sample: impl FnMut(Vec2) -> WarpPoint,
+    pdf: impl Fn(WarpPoint) -> f32,
+) -> Chi2Tables {
     let grid = BinGrid::new(domain, resolution);
     let expected = expected_counts(&grid, &pdf, samples);
 
@@ -130,12 +157,18 @@ pub fn chi2_test_density(
         // and the subtraction would give 0 instead of, say, 1e-40.
         distribution.sf(pearson.statistic)
     };
-    Chi2Result {
+    let result = Chi2Result {
         statistic: pearson.statistic,
         dof,
         p_value,
         pooled_bins: pearson.pooled_bins,
         impossible_samples,
+    };
+    Chi2Tables {
+        observed,
+        expected,
+        columns: resolution.0,
+        result,
     }
 }
 

@@ -1,0 +1,270 @@
+// The book's live demos: each chapter's own Rust code, compiled to WebAssembly (the `web`
+// crate), driven from here. A page asks for a demo with `<div class="demo" data-demo="NAME">`
+// and loads the module with `<script src="demos/web.js"></script>`, which sets
+// `window.BOOK_DEMOS_WASM` to the module in base64: a page opened from disk (file://) may run a
+// script but not fetch a `.wasm` file, so the module travels inside a script.
+//
+// The module's exports take and return numbers; results wait in two buffers of its memory (a
+// list of f64 and a UTF-8 text) read through `numbers_ptr` and `text_ptr`. A panic in the
+// chapter's code (an exercise not written yet) aborts the call: it surfaces here as an
+// exception, and the panic's message is the text buffer, shown on the demo's canvas.
+(function () {
+  'use strict';
+
+  let module = null;
+  let instance = null;
+
+  function wasm() {
+    if (instance) return instance;
+    if (!module) {
+      const base64 = window.BOOK_DEMOS_WASM;
+      if (!base64) throw new Error('the demos\' module is missing (demos/web.js did not load)');
+      module = new WebAssembly.Module(Uint8Array.from(atob(base64), c => c.charCodeAt(0)));
+    }
+    instance = new WebAssembly.Instance(module, {}).exports;
+    instance.init();
+    return instance;
+  }
+
+  function text() {
+    const m = wasm();
+    const bytes = new Uint8Array(m.memory.buffer, m.text_ptr(), m.text_len());
+    return new TextDecoder().decode(bytes);
+  }
+
+  function numbers() {
+    const m = wasm();
+    return new Float64Array(m.memory.buffer, m.numbers_ptr(), m.numbers_len()).slice();
+  }
+
+  // Calls export `name` with `args`; gives its result, or throws a DemoError carrying the
+  // panic's message when the chapter's code panicked (the instance is then dropped: an aborted
+  // instance is not to be trusted) or the export refused its arguments (it returns u32::MAX).
+  function call(name, ...args) {
+    const m = wasm();
+    let result;
+    try {
+      result = m[name](...args) >>> 0;
+    } catch (error) {
+      let message = '';
+      try {
+        message = text();
+      } catch (_) {
+        message = String(error);
+      }
+      instance = null;
+      throw new DemoError(message || String(error));
+    }
+    if (result === 0xffffffff) throw new DemoError(text());
+    return result;
+  }
+
+  class DemoError extends Error {}
+
+  // What a demo shows when the chapter's code stopped: "not written yet: exercise NAME" for a
+  // stub, or the panic's message.
+  function showFailure(canvas, message) {
+    const g = canvas.getContext('2d');
+    g.fillStyle = '#fff3f0';
+    g.fillRect(0, 0, canvas.width, canvas.height);
+    g.fillStyle = '#8a1f11';
+    g.font = '15px sans-serif';
+    const words = message.split(/\s+/);
+    let line = '';
+    let y = 30;
+    for (const word of words) {
+      if (g.measureText(line + word).width > canvas.width - 30) {
+        g.fillText(line, 15, y);
+        line = '';
+        y += 20;
+      }
+      line += word + ' ';
+    }
+    g.fillText(line, 15, y);
+    canvas.dataset.failure = message;
+  }
+
+  function element(tag, attributes, children) {
+    const node = document.createElement(tag);
+    for (const [key, value] of Object.entries(attributes || {})) {
+      if (key === 'text') node.textContent = value;
+      else node.setAttribute(key, value);
+    }
+    for (const child of children || []) node.appendChild(child);
+    return node;
+  }
+
+  function labelled(text, control) {
+    return element('label', { class: 'demo-control' }, [document.createTextNode(text + ' '), control]);
+  }
+
+  // ---- Chapter 02: the warp explorer -------------------------------------------------------
+
+  function warpExplorer(root) {
+    const count = call('warp_count');
+    const names = [];
+    for (let i = 0; i < count; i++) { call('warp_name', i); names.push(text()); }
+
+    const warpSelect = element('select', { 'data-control': 'warp' },
+      names.map((name, i) => element('option', { value: String(i), text: name })));
+    warpSelect.value = String(names.indexOf('disc-naive'));
+    const pointsInput = element('input', {
+      type: 'range', min: '2', max: '5', step: '0.25', value: '3.5', 'data-control': 'points',
+    });
+    const pointsShown = element('span', { class: 'demo-value' });
+    const exponentInput = element('input', {
+      type: 'range', min: '0', max: '100', step: '1', value: '20', 'data-control': 'exponent',
+    });
+    const exponentShown = element('span', { class: 'demo-value' });
+    const viewSelect = element('select', { 'data-control': 'view' }, [
+      element('option', { value: 'points', text: 'points' }),
+      element('option', { value: 'histogram', text: 'histogram against the density' }),
+    ]);
+    const seedInput = element('input', { type: 'number', min: '1', value: '1', 'data-control': 'seed' });
+    const canvas = element('canvas', { width: '640', height: '320', class: 'demo-canvas' });
+    const verdict = element('p', { class: 'demo-verdict', 'aria-live': 'polite' });
+    const exponentLabel = labelled('exponent n', exponentInput);
+    exponentLabel.appendChild(exponentShown);
+    const pointsLabel = labelled('points', pointsInput);
+    pointsLabel.appendChild(pointsShown);
+    root.append(
+      element('div', { class: 'demo-controls' }, [
+        labelled('warp', warpSelect), pointsLabel, exponentLabel, labelled('show', viewSelect),
+        labelled('seed', seedInput),
+      ]),
+      canvas, verdict);
+
+    const COLUMNS = 16;
+    const ROWS = 16;
+
+    function draw() {
+      const index = Number(warpSelect.value);
+      const n = Math.round(Math.pow(10, Number(pointsInput.value)));
+      const exponent = Number(exponentInput.value);
+      const seed = Math.max(1, Math.floor(Number(seedInput.value) || 1));
+      const lobe = names[index] === 'cos-lobe';
+      exponentLabel.style.display = lobe ? '' : 'none';
+      pointsShown.textContent = n.toLocaleString('en');
+      exponentShown.textContent = String(exponent);
+      delete canvas.dataset.failure;
+      const started = performance.now();
+      let chi2;
+      let points;
+      try {
+        call('warp_chi2', index, exponent, n, seed, COLUMNS, ROWS);
+        chi2 = numbers();
+        if (viewSelect.value === 'points') {
+          const drawn = Math.min(n, 20000);
+          call('warp_points', index, exponent, drawn, seed);
+          points = numbers();
+        }
+      } catch (error) {
+        showFailure(canvas, error.message);
+        verdict.textContent = '';
+        return;
+      }
+      const g = canvas.getContext('2d');
+      g.fillStyle = '#ffffff';
+      g.fillRect(0, 0, canvas.width, canvas.height);
+      const directions = call('warp_gives_directions', index) === 1;
+      const panel = (x0, title) => {
+        g.strokeStyle = '#999';
+        g.strokeRect(x0 + 10.5, 20.5, 290, 290);
+        g.fillStyle = '#333';
+        g.font = '13px sans-serif';
+        g.fillText(title, x0 + 12, 14);
+      };
+      const toCanvas = (x0, x, y) => [x0 + 10 + 290 * x, 20 + 290 * (1 - y)];
+      if (viewSelect.value === 'points') {
+        panel(0, directions ? 'directions over (φ / 2π, (cos θ + 1) / 2)' : 'points');
+        g.fillStyle = 'rgba(20, 60, 160, 0.55)';
+        for (let i = 0; i < points.length; i += 2) {
+          const [x, y] = toCanvas(0, points[i], points[i + 1]);
+          g.fillRect(x - 0.75, y - 0.75, 1.5, 1.5);
+        }
+      } else {
+        const observed = chi2.subarray(4, 4 + COLUMNS * ROWS);
+        const expected = chi2.subarray(4 + COLUMNS * ROWS);
+        let most = 0;
+        for (let i = 0; i < observed.length; i++) most = Math.max(most, observed[i], expected[i]);
+        const heat = (x0, counts, title) => {
+          panel(x0, title);
+          for (let row = 0; row < ROWS; row++) {
+            for (let column = 0; column < COLUMNS; column++) {
+              const value = most > 0 ? counts[row * COLUMNS + column] / most : 0;
+              const shade = Math.round(255 * (1 - value));
+              g.fillStyle = `rgb(${shade}, ${shade}, 255)`;
+              const [x, y] = toCanvas(x0, column / COLUMNS, (row + 1) / ROWS);
+              g.fillRect(x, y, 290 / COLUMNS + 0.5, 290 / ROWS + 0.5);
+            }
+          }
+        };
+        heat(0, observed, 'observed counts');
+        heat(320, expected, 'expected from the claimed density');
+      }
+      const [statistic, dof, pValue, impossible] = chi2;
+      const alpha = 0.01;
+      const passes = pValue >= alpha;
+      const ms = performance.now() - started;
+      verdict.textContent =
+        `χ² = ${statistic.toFixed(1)} with ${dof} degrees of freedom` +
+        (impossible > 0 ? `, ${impossible} impossible sample(s)` : '') +
+        `: p ${pValue > 0 ? '= ' + pValue.toPrecision(3) : '< 1e-300'}, ` +
+        (passes ? 'passes' : 'fails') + ` at α = ${alpha} (${n.toLocaleString('en')} samples, ${ms.toFixed(0)} ms)`;
+      root.dataset.verdict = passes ? 'passes' : 'fails';
+      root.dataset.frames = String(Number(root.dataset.frames || 0) + 1);
+    }
+
+    for (const control of [warpSelect, pointsInput, exponentInput, viewSelect, seedInput]) {
+      control.addEventListener('input', () => requestAnimationFrame(draw));
+    }
+    draw();
+
+    // What the controls promise, for the site's check: with 100,000 samples the naive disc
+    // fails the test and the polar disc passes it; the lobe's exponent changes the lobe.
+    root.demoCheck = async () => {
+      const problems = [];
+      const show = (name, points) => {
+        warpSelect.value = String(names.indexOf(name));
+        pointsInput.value = String(points);
+        viewSelect.value = 'histogram';
+        draw();
+        return canvas.dataset.failure === undefined;
+      };
+      if (!show('disc-naive', 5)) return problems;
+      if (root.dataset.verdict !== 'fails') {
+        problems.push('the naive disc passed the chi-square test with 100,000 samples');
+      }
+      if (!show('disc-polar', 5)) return problems;
+      if (root.dataset.verdict !== 'passes') {
+        problems.push('the polar disc failed the chi-square test with 100,000 samples');
+      }
+      if (!show('cos-lobe', 3.5)) return problems;
+      if (exponentLabel.style.display === 'none') problems.push('the lobe shows no exponent');
+      const before = canvas.toDataURL();
+      exponentInput.value = exponentInput.value === '3' ? '60' : '3';
+      draw();
+      if (canvas.dataset.failure === undefined && canvas.toDataURL() === before) {
+        problems.push('moving the exponent left the lobe\'s histogram as it was');
+      }
+      return problems;
+    };
+  }
+
+  const DEMOS = { warps: warpExplorer };
+
+  for (const root of document.querySelectorAll('div.demo[data-demo]')) {
+    const demo = DEMOS[root.dataset.demo];
+    try {
+      if (!demo) throw new Error(`no demo called ${root.dataset.demo}`);
+      demo(root);
+      root.dataset.ready = 'yes';
+    } catch (error) {
+      const canvas = root.querySelector('canvas') ||
+        root.appendChild(element('canvas', { width: '640', height: '120', class: 'demo-canvas' }));
+      showFailure(canvas, error.message);
+      root.dataset.ready = 'failed';
+      console.warn(error);
+    }
+  }
+})();

@@ -1,0 +1,15 @@
+//! The book's live demos: the chapters' own code behind a few functions that a page's
+//! JavaScript calls in a WebAssembly module.
+//!
+//! The interface is raw exports (`extern "C"` functions of numbers) and buffers the page reads
+//! out of the module's memory, with no binding generator: a demo asks for numbers and gets
+//! numbers, and the page's glue (`book/theme/demos.js`) is a few lines per call. Every export
+//! returns at once (a demo asks for a slice of work per animation frame), runs on one thread,
+//! and never unwinds into JavaScript: a panic, such as an exercise not written yet, is caught
+//! by [`outcome::run`], kept as text for the page to show, and reported as a failure.
+//!
+//! One module per demo: [`warps`] for chapter 02.
+
+pub mod buffers;
+pub mod outcome;
+pub mod warps;
