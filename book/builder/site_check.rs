@@ -1356,8 +1356,8 @@ mod tests {
             named("memory", 2, 0),
             named("init", 0, 0),
             named("warp_count", 0, 1),
-            named("text_ptr", 0, 2),
-            named("text_len", 0, 3),
+            named("panic_ptr", 0, 2),
+            named("panic_len", 0, 3),
             named("numbers_ptr", 0, 4),
             named("numbers_len", 0, 5),
         ];

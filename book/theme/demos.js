@@ -7,7 +7,8 @@
 // The module's exports take and return numbers; results wait in two buffers of its memory (a
 // list of f64 and a UTF-8 text) read through `numbers_ptr` and `text_ptr`. A panic in the
 // chapter's code (an exercise not written yet) aborts the call: it surfaces here as an
-// exception, and the panic's message is the text buffer, shown on the demo's canvas.
+// exception, and the panic's message, kept in a third buffer (`panic_ptr`), is shown on the
+// demo's canvas.
 (function () {
   'use strict';
 
@@ -48,7 +49,7 @@
     } catch (error) {
       let message = '';
       try {
-        message = text();
+        message = new TextDecoder().decode(new Uint8Array(m.memory.buffer, m.panic_ptr(), m.panic_len()));
       } catch (_) {
         message = String(error);
       }
@@ -64,12 +65,16 @@
   // What a demo shows when the chapter's code stopped: "not written yet: exercise NAME" for a
   // stub, or the panic's message.
   function showFailure(canvas, message) {
+    const stub = message.match(/needs (\S+) \(not written yet\)(?:; a hint for it: ([^\n]*))?/);
+    const shown = stub
+      ? `not written yet: exercise ${stub[1]}` + (stub[2] ? `. Its hint: ${stub[2].trim()}` : '')
+      : message;
     const g = canvas.getContext('2d');
     g.fillStyle = '#fff3f0';
     g.fillRect(0, 0, canvas.width, canvas.height);
     g.fillStyle = '#8a1f11';
     g.font = '15px sans-serif';
-    const words = message.split(/\s+/);
+    const words = shown.split(/\s+/);
     let line = '';
     let y = 30;
     for (const word of words) {

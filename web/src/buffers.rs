@@ -6,6 +6,26 @@ use std::cell::RefCell;
 thread_local! {
     static NUMBERS: RefCell<Vec<f64>> = const { RefCell::new(Vec::new()) };
     static TEXT: RefCell<String> = const { RefCell::new(String::new()) };
+    pub(crate) static PANIC: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+/// Keeps the message of the last panic for the page. It has a buffer of its own: an exercise's
+/// stub reports itself once per process and then unwinds without calling the panic hook again,
+/// so its message must outlive the calls that write text in between.
+pub fn set_panic(message: &str) {
+    PANIC.with(|cell| *cell.borrow_mut() = message.to_owned());
+}
+
+/// The address of the last panic's message, UTF-8 in the module's memory.
+#[unsafe(no_mangle)]
+pub extern "C" fn panic_ptr() -> *const u8 {
+    PANIC.with(|cell| cell.borrow().as_ptr())
+}
+
+/// How many bytes the last panic's message has.
+#[unsafe(no_mangle)]
+pub extern "C" fn panic_len() -> u32 {
+    PANIC.with(|cell| cell.borrow().len() as u32)
 }
 
 /// Replaces the numbers the page reads next; gives how many there are.

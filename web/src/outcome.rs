@@ -3,7 +3,7 @@
 //! page.
 //!
 //! WebAssembly built for `wasm32-unknown-unknown` aborts on a panic, it cannot unwind; the
-//! panic hook runs first, though. So the hook keeps the message as the text buffer, and the
+//! panic hook runs first, though. So the hook keeps the message in a buffer of its own, and the
 //! page, which catches the abort as a JavaScript exception, reads it from there.
 
 use std::sync::Once;
@@ -25,7 +25,7 @@ pub fn install_hook() {
                 .map(String::as_str)
                 .or_else(|| info.payload().downcast_ref::<&str>().copied())
                 .unwrap_or("a panic without a message");
-            buffers::set_text(message.to_owned());
+            buffers::set_panic(message);
             default(info);
         }));
     });
@@ -42,4 +42,17 @@ pub fn run<T>(work: impl FnOnce() -> T) -> T {
 #[unsafe(no_mangle)]
 pub extern "C" fn init() {
     install_hook();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_panic_leaves_its_message_for_the_page() {
+        let caught = std::panic::catch_unwind(|| run(|| panic!("ch02-disc-polar stopped")));
+        assert!(caught.is_err());
+        let message = crate::buffers::PANIC.with(|cell| cell.borrow().clone());
+        assert_eq!(message, "ch02-disc-polar stopped");
+    }
 }
