@@ -315,7 +315,7 @@ pub(crate) mod tests {
                 "the throughput became the sample's weight: it is multiplied into what the path \
                  already carries"
             } else {
-                "it is what the path carried times the sample's weight"
+                "what does the sample's weight do to what the path already carries?"
             };
             assert!(
                 (throughput - expected).abs().max_element() < 1e-6,
@@ -374,7 +374,7 @@ pub(crate) mod tests {
                 } else if (got - carried_eta / sample.eta_scale).abs() <= 1e-6 * got {
                     "the path's eta_scale was divided by the sample's; it is multiplied by it"
                 } else {
-                    "it is the path's eta_scale times the sample's"
+                    "what does the sample's radiance scaling do to the path's?"
                 };
                 panic!(
                     "extend_path: through glass the sample scales radiance by {}, so the path's \
@@ -387,7 +387,7 @@ pub(crate) mod tests {
                 (next.throughput - throughput).abs().max_element()
                     <= 1e-5 * throughput.max_element(),
                 "extend_path: through glass the new throughput is {}, expected {throughput}: \
-                 what the path carried times the sample's weight",
+                 the sample's weight carries over to the path as on a matte surface",
                 next.throughput
             );
         }
