@@ -23,7 +23,7 @@ use glam::{UVec2, Vec2, Vec3};
 use workbench::output::figures::{Anchor, Diagram, Ink, Point};
 
 use crate::below_surface::BelowSurface;
-use crate::fuzz::{lobe_around_pdf, sample_lobe_around};
+use crate::fuzz::{lobe_around_pdf, sample_lobe_around, to_world};
 use crate::tracer::transmission_exponent;
 
 /// The width of every diagram, in pixels.
@@ -52,7 +52,8 @@ fn arriving_at(degrees: f32) -> Vec3 {
 /// (its share of directions closer to the axis) on the side `towards` of the axis `center`,
 /// in the plane spanned by the two: `ξ1` is the turn about the axis that points at `towards`.
 fn xi_in_plane(center: Vec3, towards: Vec3, xi2: f32) -> Vec2 {
-    let (a, b) = center.any_orthonormal_pair();
+    // The frame's own axes, whichever frame the lobe is turned by.
+    let (a, b) = (to_world(center, Vec3::X), to_world(center, Vec3::Y));
     let phi = towards.dot(b).atan2(towards.dot(a));
     Vec2::new((phi / TAU).rem_euclid(1.0), xi2)
 }

@@ -18,10 +18,11 @@
 //!   mirror.
 //!
 //! The chapter's glossy material *is* the `cos^n` lobe: a fuzzy mirror of reflectance `k`
-//! sends the light arriving from direction `ω` (density `(n + 1)/2π · cos^n α` around the
-//! mirror direction) towards the viewer. Sampling that lobe gives each ray the weight `k`,
-//! which is its proper weight `f_r cos θ / pdf`. The disc is then a different, empirical lobe,
-//! which [`disc_radius_for_exponent`] sizes to spread as wide as the `cos^n` one.
+//! sends the light arriving from direction `ω` towards the viewer in the proportion the lobe
+//! around the mirror direction gives `ω`. What weight a ray sampled from that lobe carries,
+//! its `f_r cos θ / pdf`, is for the chapter's glossy exercise to work out. The disc is then a
+//! different, empirical lobe, which [`disc_radius_for_exponent`] sizes to spread as wide as
+//! the `cos^n` one.
 
 use glam::{Vec2, Vec3};
 
@@ -75,22 +76,30 @@ impl FuzzMethod {
 }
 
 // ANCHOR: lobe_around
-/// A direction around the unit vector `center` with density `(n + 1) / 2π · cos^n α` per
-/// unit solid angle, `α` the angle between the direction and `center`
-/// ([`lobe_around_pdf`]).
+/// The direction whose coordinates are `local` in a frame that has the unit vector `center`
+/// as its `z` axis: a direction drawn around `+z` (by chapter 02's warps) turned to be drawn
+/// around `center`, every angle between directions kept. [`sample_lobe_around`] turns the
+/// `cos^n` lobe with it, and chapter 08 its cosine-weighted hemisphere around the normal.
 ///
-/// Chapter 02's `sample_cos_lobe` draws the lobe around `+z`. Which map carries `+z` to
-/// `center` and keeps every angle between directions, and does it matter how it turns the
-/// lobe about its own axis?
-pub fn sample_lobe_around(center: Vec3, exponent: f32, u: Vec2) -> Vec3 {
+/// What frame turns `+z` into the centre and keeps every angle between directions, is it
+/// defined for every centre, and does it matter how it is turned about the centre?
+pub fn to_world(center: Vec3, local: Vec3) -> Vec3 {
     // BEGIN SOLUTION
-    use ch02_monte_carlo::warps::sample_cos_lobe;
     let (a, b) = center.any_orthonormal_pair();
-    let local = sample_cos_lobe(u, exponent);
     local.x * a + local.y * b + local.z * center
     // END SOLUTION
 }
 // ANCHOR_END: lobe_around
+
+/// A direction around the unit vector `center` with density `(n + 1) / 2π · cos^n α` per
+/// unit solid angle, `α` the angle between the direction and `center`
+/// ([`lobe_around_pdf`]): chapter 02's lobe around `+z`, turned by [`to_world`].
+pub fn sample_lobe_around(center: Vec3, exponent: f32, u: Vec2) -> Vec3 {
+    to_world(
+        center,
+        ch02_monte_carlo::warps::sample_cos_lobe(u, exponent),
+    )
+}
 
 /// The density of [`sample_lobe_around`] per unit solid angle, from `cos α = d · center`.
 pub fn lobe_around_pdf(cos_alpha: f32, exponent: f32) -> f32 {
@@ -160,8 +169,8 @@ mod tests {
         if center.x.abs().max(center.y.abs()).max(center.z.abs()) > 1.0 - 1e-6 {
             "is the frame around the centre defined when the centre lies along a coordinate \
              axis? A cross product with a fixed axis vanishes for a centre along it, and \
-             normalising zero gives NaN (glam's any_orthonormal_pair works for every unit \
-             vector)"
+             normalising zero gives NaN (glam's Vec3 can build a frame that works for every \
+             unit vector)"
         } else {
             "is every vector that is normalised non-zero?"
         }
@@ -182,6 +191,84 @@ mod tests {
             sampler.start_pixel_sample(UVec2::ZERO, i);
             sampler.get_2d()
         })
+    }
+
+    /// A unit vector perpendicular to the unit `center`: the coordinate axis least along it,
+    /// with its part along `center` taken out.
+    fn perpendicular(center: Vec3) -> Vec3 {
+        let axis = if center.x.abs() < 0.6 {
+            Vec3::X
+        } else {
+            Vec3::Y
+        };
+        (axis - axis.dot(center) * center).normalize()
+    }
+
+    /// How far `d` is turned about the unit `center`, as a fraction of a full turn in
+    /// `[0, 1)`, counted from [`perpendicular`]`(center)`.
+    fn turn_about(center: Vec3, d: Vec3) -> f32 {
+        let reference = perpendicular(center);
+        let sine = center.dot(reference.cross(d));
+        let cosine = reference.dot(d);
+        sine.atan2(cosine).rem_euclid(std::f32::consts::TAU) / std::f32::consts::TAU
+    }
+
+    /// A few unit directions given in the frame of the centre.
+    const LOCAL: [Vec3; 5] = [
+        Vec3::X,
+        Vec3::Y,
+        Vec3::new(0.6, 0.0, 0.8),
+        Vec3::new(-0.48, 0.64, 0.6),
+        Vec3::new(0.0, -0.28, -0.96),
+    ];
+
+    #[test]
+    fn exercise_lobe_around_turns_z_to_the_centre_keeping_angles() {
+        for center in centres() {
+            let z = to_world(center, Vec3::Z);
+            assert!(
+                z.is_finite(),
+                "to_world: around the centre {center}, +z gave {z}, which is not finite: {}",
+                not_finite_why(center)
+            );
+            assert!(
+                (z - center).length() < 1e-5,
+                "to_world: +z, the lobe's own axis, has to land on the centre {center}, and \
+                 lands on {z}{}",
+                if (z - Vec3::Z).length() < 1e-6 {
+                    ": it was not turned to the centre"
+                } else {
+                    ": is the lobe's own axis, its z, the one turned to the centre?"
+                }
+            );
+            for (i, &p) in LOCAL.iter().enumerate() {
+                let wp = to_world(center, p);
+                assert!(
+                    wp.is_finite() && (wp.length() - 1.0).abs() < 1e-5,
+                    "to_world: around the centre {center}, the unit {p} became {wp}, of length \
+                     {}: turning a unit vector with an orthonormal frame keeps it unit{}",
+                    wp.length(),
+                    if wp.is_finite() {
+                        String::new()
+                    } else {
+                        format!(" ({})", not_finite_why(center))
+                    }
+                );
+                for &q in &LOCAL[i + 1..] {
+                    let wq = to_world(center, q);
+                    assert!(
+                        (wp.dot(wq) - p.dot(q)).abs() < 1e-5,
+                        "to_world: around the centre {center}, {p} and {q} (cosine {:.3} \
+                         between them) became {wp} and {wq} (cosine {:.3}): a turn keeps every \
+                         angle between directions, so the frame's three axes have to be \
+                         perpendicular to each other, the two sideways ones perpendicular to \
+                         the centre",
+                        p.dot(q),
+                        wp.dot(wq)
+                    );
+                }
+            }
+        }
     }
 
     #[test]
@@ -259,13 +346,13 @@ mod tests {
                 }
                 // The picture: each direction as (its turn about the centre, cos^(n+1) α),
                 // which the cos^n lobe spreads evenly over the unit square.
-                let (a, b) = center.any_orthonormal_pair();
                 let points: Vec<Vec2> = uniforms(n)
                     .map(|u| {
                         let d = sample_lobe_around(center, exponent, u);
-                        let turn = d.dot(b).atan2(d.dot(a)).rem_euclid(std::f32::consts::TAU)
-                            / std::f32::consts::TAU;
-                        Vec2::new(turn, d.dot(center).max(0.0).powf(exponent + 1.0))
+                        Vec2::new(
+                            turn_about(center, d),
+                            d.dot(center).max(0.0).powf(exponent + 1.0),
+                        )
                     })
                     .collect();
                 let picture = workbench::test_support::not_uniform(
@@ -330,16 +417,24 @@ mod tests {
                 ));
             }
         }
-        // Every way of tilting equally likely: as much spread along a as along b.
-        let (a, b) = center.any_orthonormal_pair();
+        // Every way of tilting equally likely: as much spread along every direction across the
+        // centre. Measured along the coordinate axes' parts across it (those not nearly along
+        // the centre).
         let spread = |axis: Vec3| -> f64 {
             samples
                 .iter()
                 .map(|&(_, d)| f64::from((d - d.dot(center) * center).dot(axis).powi(2)))
                 .sum()
         };
-        let (spread_a, spread_b) = (spread(a), spread(b));
-        let ratio = spread_a.min(spread_b) / spread_a.max(spread_b).max(1e-30);
+        let (least, most) = [Vec3::X, Vec3::Y, Vec3::Z]
+            .into_iter()
+            .map(|axis| axis - axis.dot(center) * center)
+            .filter(|across| across.length() > 0.3)
+            .map(|across| spread(across.normalize()))
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+                (lo.min(x), hi.max(x))
+            });
+        let ratio = least / most.max(1e-30);
         if ratio < 0.8 {
             return Some(format!(
                 "the directions spread {:.2} times as much one way as the other across the \
@@ -385,35 +480,29 @@ mod tests {
                 } else {
                     "the disc point should be uniform by area over the disc of the given radius"
                 };
-                // The picture: each direction's point on the disc one unit along the centre,
-                // in units of the radius, where a uniform point spreads evenly.
+                // The picture: each direction as (its turn about the centre, the square of
+                // its disc point's distance from the centre in units of the radius), which a
+                // point uniform over the disc spreads evenly over the unit square.
                 let points: Vec<Vec2> = samples
                     .iter()
                     .map(|&(_, d)| {
-                        let on_disc = d / d.dot(center) - center;
-                        Vec2::new(on_disc.dot(a), on_disc.dot(b)) / radius
+                        Vec2::new(turn_about(center, d), (tan(d) / radius).powi(2).min(1.0))
                     })
                     .collect();
                 let picture = workbench::test_support::not_uniform(
                     "ch06-disc-fuzz",
                     "sample_disc_perturbation",
-                    "disc",
+                    "disc, drawn as (turn about the centre, (distance from the centre / radius)²)",
                     0.0,
                     &points,
-                    &|q| {
-                        if q.length() <= 1.0 {
-                            std::f64::consts::FRAC_1_PI
-                        } else {
-                            0.0
-                        }
-                    },
-                    [Vec2::splat(-1.0), Vec2::ONE],
+                    &|_| 1.0,
+                    [Vec2::ZERO, Vec2::ONE],
                 );
                 let picture = picture.split("; see ").nth(1).unwrap_or("");
                 return Some(format!(
                     "{:.1} % of the directions should lie within {s} of the disc's radius from \
                      the centre, and {:.1} % of yours do: {why}; see {picture}, the disc points \
-                     in units of the radius",
+                     by turn and squared distance",
                     100.0 * p,
                     100.0 * share
                 ));

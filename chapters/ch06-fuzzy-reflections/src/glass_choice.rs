@@ -112,7 +112,7 @@ mod tests {
     }
 
     #[test]
-    fn exercise_choose_half_picks_each_ray_half_the_time_at_twice_its_share() {
+    fn exercise_choose_half_averages_to_whitteds_sum() {
         // Unbiased: the mean equals Whitted's F a + (1 - F) b within 5 standard errors.
         for f in [0.04f32, 0.5, 0.9, 0.0, 1.0] {
             let (a, b) = (3.0, 0.5);

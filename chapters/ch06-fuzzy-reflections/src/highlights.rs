@@ -3,10 +3,11 @@
 //! A point light is a single direction, which no sampled reflection ray will ever hit. A
 //! perfect mirror therefore never shows one (chapter 01), but a fuzzy mirror does: its lobe
 //! has a density in every direction, so the light arriving from a point light's direction
-//! `l` is reflected in the proportion the lobe gives it. With the material's reflectance `k`
-//! and the lobe's density `p(l)` per solid angle around the ideal direction, the radiance sent
-//! towards the viewer is `k p(l) I / r²`: the glossy highlight, a blurred image of the light,
-//! tight and bright for a large exponent, wide and dim for a small one.
+//! `l` is reflected in the proportion the lobe's density `p(l)` per solid angle (around the
+//! ideal direction) gives it. How much of the light's intensity `I` arrives from distance `r`,
+//! and how much of it goes back towards the viewer, is the chapter's highlights exercise. The
+//! result is the glossy highlight, a blurred image of the light, tight and bright for a large
+//! exponent, wide and dim for a small one.
 
 use crate::fuzz::FuzzMethod;
 use ch01_whitted::world::World;

@@ -528,8 +528,30 @@ mod tests {
         })
     }
 
+    /// For each light of [`exercise_highlights_add_each_light_the_lobe_sees`], per method
+    /// (lobe, disc): the red light the floor's lobe sends back from it (intensity 1); the same
+    /// with the lobe's density taken at the angle from the normal; and with the light seen from
+    /// the scene's origin instead of the hit point. Worked out beforehand from the highlight
+    /// the exercise derives, to 8 digits; a light the lobe cannot reflect gives 0.
+    const HIGHLIGHT_TERMS: [[[f32; 3]; 5]; 2] = [
+        [
+            [2.066649e-1, 2.878977e-4, 2.132706e-1],
+            [8.355635e-1, 4.046319e-3, 4.441542e-1],
+            [2.005664e-3, 1.149003e-9, 6.187571e-4],
+            [0.0, 0.0, 5.365881e-23],
+            [6.887929e-1, 1.354097e-2, 1.955808e-1],
+        ],
+        [
+            [2.220522e-1, 0.0, 1.857953e-1],
+            [4.575705e-1, 0.0, 3.656879e-1],
+            [0.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [9.128527e-1, 0.0, 0.0],
+        ],
+    ];
+
     #[test]
-    fn exercise_highlights_are_the_lobes_density_times_the_light() {
+    fn exercise_highlights_add_each_light_the_lobe_sees() {
         // Lights around the mirror direction of a ray at 40° that meets the floor at `seen`,
         // off its origin (the first light hidden at time 0.8 by the moving ball, the last
         // always by the still one), one below the floor. They are red: intensity (1, 0, 0).
@@ -564,24 +586,23 @@ mod tests {
                 let (got_rgb, rays) =
                     counting_rays(|| point_light_highlights(&world, &hit, &lobe, time));
                 let got = got_rgb.x;
-                // The lobe's density towards the light at `at` seen from `from`, and its term.
-                let density_from =
-                    |from: Vec3, at: Vec3| method.pdf((at - from).normalize().dot(mirror), 20.0);
-                let term_from =
-                    |from: Vec3, at: Vec3| density_from(from, at) / (at - from).length_squared();
-                let density = |at: Vec3| density_from(seen, at);
-                let term = |at: Vec3| term_from(seen, at);
+                // The lobe's density towards the light at `at`.
+                let density = |at: Vec3| method.pdf((at - seen).normalize().dot(mirror), 20.0);
+                let terms = &HIGHLIGHT_TERMS[match method {
+                    FuzzMethod::Lobe => 0,
+                    FuzzMethod::Disc => 1,
+                }];
+                let sum = |column: usize, which: &[usize]| -> f32 {
+                    which.iter().map(|&i| terms[i][column]).sum()
+                };
                 // At time 0.2 the moving ball is still far off.
-                let visible: Vec<Vec3> = lights
+                let above: Vec<usize> = (0..lights.len()).filter(|&i| lights[i].y > 0.0).collect();
+                let visible: Vec<usize> = above
                     .iter()
                     .copied()
-                    .enumerate()
-                    .filter(|&(i, at)| {
-                        at.y > 0.0 && i != lights.len() - 1 && (i != 0 || time < 0.5)
-                    })
-                    .map(|(_, at)| at)
+                    .filter(|&i| i != lights.len() - 1 && (i != 0 || time < 0.5))
                     .collect();
-                let expected: f32 = visible.iter().map(|&at| term(at)).sum();
+                let expected = sum(0, &visible);
                 let at = format!(
                     "point_light_highlights: a glossy floor's {method:?} lobe of exponent 20 \
                      around the mirror direction {mirror} at {seen}, at time {time}, with five \
@@ -589,23 +610,11 @@ mod tests {
                      by a ball, one hidden by a moving ball from time 0.5 on)"
                 );
                 if (got - expected).abs() > 1e-3 * expected.max(1e-3) {
-                    let all_above: f32 = lights
-                        .iter()
-                        .filter(|at| at.y > 0.0)
-                        .map(|&at| term(at))
-                        .sum();
-                    let unblocked_now: f32 = visible.iter().map(|&at| term(at)).sum::<f32>()
-                        + if time > 0.5 { term(lights[0]) } else { 0.0 };
-                    let no_falloff: f32 = visible.iter().map(|&at| density(at)).sum();
-                    let around_normal: f32 = visible
-                        .iter()
-                        .map(|&at| {
-                            method.pdf((at - seen).normalize().dot(Vec3::Y), 20.0)
-                                / (at - seen).length_squared()
-                        })
-                        .sum();
-                    let from_origin: f32 =
-                        visible.iter().map(|&at| term_from(Vec3::ZERO, at)).sum();
+                    let all_above = sum(0, &above);
+                    let unblocked_now = expected + if time > 0.5 { terms[0][0] } else { 0.0 };
+                    let no_falloff: f32 = visible.iter().map(|&i| density(lights[i])).sum();
+                    let around_normal = sum(1, &visible);
+                    let from_origin = sum(2, &visible);
                     let why = if got == 0.0 {
                         "no light got through: does each shadow ray stop at its light? One that \
                          goes on past the light meets whatever lies behind it (here a ceiling)"
@@ -632,8 +641,8 @@ mod tests {
                     } else if got > expected {
                         "a light below the surface cannot be seen in it".to_string()
                     } else {
-                        "each light seen gives the lobe's density towards it times the \
-                         intensity that arrives"
+                        "how much of each light's intensity arrives, and what share of it does \
+                         the lobe send back along the ray?"
                             .to_string()
                     };
                     panic!("{at} should show {expected} in red, and yours gave {got}: {why}");
@@ -673,16 +682,16 @@ mod tests {
             side: Vec3::Y,
             method: FuzzMethod::Lobe,
         };
-        let term =
-            |at: Vec3| FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared();
-        let expected = term(above);
+        // Worked out beforehand from the highlight the exercise derives, to 7 digits: what the
+        // light above sends back, and what the one below would if it were counted.
+        let (expected, from_below) = (2.601_479e-1f32, 5.013_752e-1f32);
         let got = point_light_highlights(&world, &hit, &lobe, 0.2).x;
         assert!(
             (got - expected).abs() <= 1e-3 * expected,
             "point_light_highlights: a lobe around the grazing mirror direction {mirror}, a light \
              above the floor and one just below it (inside the lobe's cone, but under the \
              surface), should show {expected}, and yours gave {got}{}",
-            if (got - expected - term(below)).abs() <= 1e-3 * got {
+            if (got - expected - from_below).abs() <= 1e-3 * got {
                 ": a light below the surface cannot be seen in it"
             } else if got == 0.0 {
                 ": no light got through; does each shadow ray stop at its light?"
@@ -745,7 +754,8 @@ mod tests {
                  showed {got}: {}",
                 0.5 * RED,
                 if got.abs_diff_eq(RED, 1e-4) {
-                    "sampling the material's own lobe leaves the reflectance as the ray's weight"
+                    "twice too bright: a ray drawn from the material's own lobe still carries \
+                     only the material's share of the light"
                 } else if got.x < 0.25 {
                     "is the lobe centred on the mirror direction, on the side the ray comes from?"
                 } else {
@@ -782,11 +792,21 @@ mod tests {
             Material::glossy(Vec3::splat(0.5), 20.0),
             &[lights[0], lights[1], Vec3::new(0.0, 5.0, 40.0)],
         );
-        let term = |at: Vec3| {
-            0.5 * FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared()
+        // The highlights are chapter 06's own (its highlights exercise), at the ray's time and
+        // at a time when the moving ball is still far off, and for a lobe around the normal.
+        let hit = world.intersect(&ray).expect("the ray meets the floor");
+        let highlights = |center: Vec3, time: f32| {
+            let lobe = Lobe {
+                center,
+                exponent: 20.0,
+                side: Vec3::Y,
+                method: FuzzMethod::Lobe,
+            };
+            point_light_highlights(&world, &hit, &lobe, time).x
         };
-        let expected = term(lights[1]);
-        let around_normal = 0.5 * FuzzMethod::Lobe.pdf(lights[1].normalize().y, 20.0) / 4.0;
+        let expected = 0.5 * highlights(mirror, 0.8);
+        let unhidden = 0.5 * highlights(mirror, 0.2);
+        let around_normal = 0.5 * highlights(Vec3::Y, 0.8);
         // The spread rays find the black ceiling: only the highlights remain.
         let (got, _, _) = mean_of(&world, &Glow(Vec::new()), TraceOptions::default(), &ray, 20);
         assert!(
@@ -798,14 +818,15 @@ mod tests {
             if (got.x - 2.0 * expected).abs() <= 1e-3 * expected {
                 "the highlight is not weighted by the reflectance: the material reflects only \
                  its share of the light arriving from the lamp too"
-            } else if (got.x - expected - term(lights[0])).abs() <= 1e-3 * expected {
+            } else if (got.x - unhidden).abs() <= 1e-3 * expected {
                 "the hidden light shows: the highlights' shadow rays lost the ray's shutter time"
             } else if (got.x - around_normal).abs() <= 1e-3 * around_normal {
                 "is the lobe centred on the mirror direction? Yours is centred on the normal"
             } else if got.x == 0.0 {
                 "a fuzzy mirror shows the point lights its lobe sees, as highlights"
             } else {
-                "the highlight is the lobe's density towards the light times the light arriving"
+                "a fuzzy mirror shows the highlights its lobe finds, as much of them as the \
+                 material reflects"
             }
         );
     }
@@ -1058,12 +1079,12 @@ mod tests {
                 }
                 let (near, far) = if from_above { (RED, BLUE) } else { (BLUE, RED) };
                 let why = if within(0.5 * expected) {
-                    "half of it: a branch taken with probability 1/2 has to count twice when it \
-                     is taken"
+                    "half of it: a branch taken only half the time has to count for more when \
+                     it is taken"
                 } else if within(0.5 * near + 0.5 * eta * eta * far) {
                     "the chosen branch's light was not weighted: each branch is taken with \
-                     some probability, and its light has to be divided by that probability and \
-                     multiplied by its Fresnel share"
+                     some probability, and its light has to be weighted both for that chance and \
+                     for its Fresnel share"
                 } else if within(f * f * near + (1.0 - f) * (1.0 - f) * eta * eta * far) {
                     "the Fresnel share was applied twice: the choice's weight already holds the \
                      branch's share, divided by the probability of choosing it"
@@ -1103,18 +1124,21 @@ mod tests {
             let normal = if from_above { Vec3::Y } else { -Vec3::Y };
             let mirror = reflect(ray.dir, normal);
             let refracted = ch01_whitted::optics::refract(ray.dir, normal, eta).unwrap();
-            let highlight = |light: Vec3, center: Vec3, exponent: f32, intensity: f32| {
-                let l = light.normalize();
-                FuzzMethod::Lobe.pdf(l.dot(center), exponent) * intensity / light.length_squared()
+            // Each lobe's highlights are chapter 06's own (its highlights exercise): one light
+            // on each side, each of one colour, so the channels add up to its highlight.
+            let hit = world.intersect(&ray).expect("the ray meets the glass");
+            let highlight = |center: Vec3, exponent: f32, side: Vec3| {
+                let lobe = Lobe {
+                    center,
+                    exponent,
+                    side,
+                    method: FuzzMethod::Lobe,
+                };
+                point_light_highlights(&world, &hit, &lobe, ray.time).element_sum()
             };
-            let (near, far) = if from_above {
-                (above, below)
-            } else {
-                (below, above)
-            };
-            let reflected = f * highlight(near, mirror, 30.0, 5.0);
+            let reflected = f * highlight(mirror, 30.0, normal);
             let exponent = transmission_exponent(30.0, eta);
-            let transmitted = (1.0 - f) * eta * eta * highlight(far, refracted, exponent, 5.0);
+            let transmitted = (1.0 - f) * eta * eta * highlight(refracted, exponent, -normal);
             let (reflected_got, transmitted_got) = if from_above {
                 (got.x, got.z)
             } else {
@@ -1141,7 +1165,7 @@ mod tests {
             );
             if !near_enough(transmitted_got, transmitted) {
                 let with_reflection_exponent =
-                    (1.0 - f) * eta * eta * highlight(far, refracted, 30.0, 5.0);
+                    (1.0 - f) * eta * eta * highlight(refracted, 30.0, -normal);
                 panic!(
                     "{at}: the light on the other side should show as a highlight of \
                      {transmitted} through the refraction lobe, and yours gave \
@@ -1172,10 +1196,19 @@ mod tests {
         let glass = Material::rough_glass(1.5, 20.0);
         let world = floor_of_with_lights(glass, &[lights[0], lights[1], Vec3::new(0.0, 5.0, 40.0)]);
         let (_, f, _) = whitted(40.0, true);
-        let term = |at: Vec3| {
-            f * FuzzMethod::Lobe.pdf(at.normalize().dot(mirror), 20.0) / at.length_squared()
+        // The highlights are chapter 06's own (its highlights exercise), at the ray's time and
+        // at a time when the moving ball is still far off.
+        let hit = world.intersect(&ray).expect("the ray meets the glass");
+        let highlights = |time: f32| {
+            let lobe = Lobe {
+                center: mirror,
+                exponent: 20.0,
+                side: Vec3::Y,
+                method: FuzzMethod::Lobe,
+            };
+            f * point_light_highlights(&world, &hit, &lobe, time).x
         };
-        let expected = term(lights[1]);
+        let expected = highlights(0.8);
         let (got, _, _) = mean_of(
             &world,
             &Glow(Vec::new()),
@@ -1189,7 +1222,7 @@ mod tests {
              near its mirror direction and another hidden at that time by a moving ball, should \
              show the highlight {expected} (times F = {f:.4}), and yours showed {}{}",
             got.x,
-            if (got.x - expected - term(lights[0])).abs() <= 1e-3 * expected {
+            if (got.x - highlights(0.2)).abs() <= 1e-3 * expected {
                 ": the hidden light shows; the highlights' shadow rays lost the ray's shutter time"
             } else {
                 ""

@@ -4,8 +4,8 @@
 //! Choosing one ray at glass instead of both changes the noise, never the expected image. The
 //! test renders the same pixel positions (the first dimension of every sample, so the same
 //! for every strategy) both ways and checks that the mean per-pixel difference is zero within
-//! five standard errors of that mean: a weight of `1.5 F` instead of `2 F` moves it by far
-//! more.
+//! five standard errors of that mean: a reflection weighted three quarters of what it should
+//! be moves it by far more.
 
 mod support;
 

@@ -1,16 +1,13 @@
 //! The direct light an area light sends to a matte receiver, by Monte Carlo.
 //!
-//! The irradiance at a receiver point `x` with unit normal `n` from a light of radiance `L` is
-//! an integral over the light's surface `A`:
-//!
-//! ```text
-//! E(x) = ∫_A  L(y → x)  V(x, y)  cos θ  cos θ′ / |x - y|²  dA(y)
-//! ```
-//!
-//! where `θ` is the angle between `n` and the direction to `y`, `θ′` the angle between the
-//! light's normal at `y` and the direction back to `x`, and `V` is 1 if nothing blocks the
-//! segment and 0 otherwise. `cos θ′ dA / |x - y|²` is the solid angle the patch `dA` covers
-//! from `x`, so this is the familiar `∫ L cos θ dω` written over the light.
+//! The irradiance `E(x)` at a receiver point `x` with unit normal `n` from a light of
+//! radiance `L` is the familiar `∫ L cos θ dω` over the directions in which the light is seen,
+//! `θ` the angle between `n` and the direction. A sampler of the light picks points `y` on its
+//! surface `A`, not directions, so the integral is rewritten over the light's area: each patch
+//! `dA(y)` that `x` sees (the visibility `V(x, y)` is 1 if nothing blocks the segment, else 0)
+//! covers a solid angle that depends on its distance from `x` and on the angle `θ′` between
+//! the light's normal at `y` and the direction back to `x`. Working that change of measure
+//! into the integrand is left to the exercise below.
 //!
 //! Draw `y` with density `p_A(y)` and the integral becomes the expectation of one sample's
 //! term, the integrand at `y` over the density ([`area_light_contribution`], an exercise). For
@@ -55,8 +52,9 @@ pub fn area_light_contribution(light: &AreaLight, x: Vec3, n: Vec3, sample: &Lig
 /// One sample's term when the point was chosen by its direction with density `pdf_solid_angle`
 /// per steradian (a sphere's cone): `L cos θ / p_ω`, the integral `∫ L cos θ dω` sampled
 /// directly. Mathematically the same as [`area_light_contribution`] with the density converted
-/// to area, but `cos θ′` and `d²` never appear, so nothing is divided by a tiny `cos θ′` at
-/// the silhouette. May be NaN when the point coincides with `x`; callers check.
+/// to area, but the light's tilt towards `x` never enters, so nothing blows up at the
+/// silhouette, where the light is seen edge-on. May be NaN when the point coincides with `x`;
+/// callers check.
 pub fn solid_angle_contribution(
     light: &AreaLight,
     x: Vec3,

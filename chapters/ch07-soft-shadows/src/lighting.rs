@@ -275,8 +275,9 @@ mod tests {
                 se,
                 reference,
                 &slips,
-                "the term of a point chosen by area is L cos θ cos θ′ / (d² p_A), averaged \
-                 over the shadow rays that reach the light",
+                "is each point's term the light it sends, turned from a patch of the light's \
+                 area into light arriving at the receiver and divided by the density it was \
+                 chosen with, averaged over the shadow rays that reach the light?",
             );
         }
     }
@@ -285,13 +286,15 @@ mod tests {
     fn exercise_matte_estimates_a_sphere_light_by_its_cone() {
         // A sphere of radius 0.5 off to the side: sampled by the cone it covers.
         let center = Vec3::new(1.0, 1.5, 0.0);
-        let (radius, d) = (0.5f64, f64::from((center - RECEIVER).length()));
+        let d = f64::from((center - RECEIVER).length());
         let cos = f64::from(center.y - RECEIVER.y) / d;
         let irradiance = f64::from(sphere_irradiance(Vec3::ONE, 0.5, d as f32, cos as f32).y);
         let reference = f64::from(ALBEDO) * irradiance / PI;
         // Without the receiver's cosine the estimate is L times the cone's solid angle.
-        let s = radius / d;
-        let solid_angle = 2.0 * PI * s * s / (1.0 + (1.0 - s * s).sqrt());
+        // The cone's solid angle, from chapter 07's own cone.
+        let cone = crate::solid_angle::sphere_cone(&Sphere::new(center, 0.5), RECEIVER)
+            .expect("the receiver is outside the sphere");
+        let solid_angle = 2.0 * PI * f64::from(cone.one_minus_cos_theta_max);
         let no_cos = solid_angle / irradiance;
         // The directions to the points taken from the scene's origin instead of the receiver.
         let light = AreaLight::new(Sphere::new(center, 0.5), Vec3::ONE);

@@ -228,11 +228,10 @@ pub fn facing_normal(hit: &SurfaceHit, wo: Vec3, two_sided: bool) -> Option<Vec3
     }
 }
 
-/// `local` (z along `normal`) in world space, through any frame around the unit `normal`.
-pub fn to_world(normal: Vec3, local: Vec3) -> Vec3 {
-    let (a, b) = normal.any_orthonormal_pair();
-    local.x * a + local.y * b + local.z * normal
-}
+/// A direction drawn around `+z` turned to be drawn around a unit normal: chapter 06's frame,
+/// which turned its `cos^n` lobe to the mirror direction, turns the cosine-weighted hemisphere
+/// here.
+pub use ch06_fuzzy_reflections::fuzz::to_world;
 
 #[cfg(test)]
 pub(crate) mod test_support;

@@ -4,11 +4,10 @@
 //! With one of each it is the path tracer stopped after its first bounce, and the chapter
 //! renders it that way ([`PathTracer::radiance`] with `max_depth` 2). Other counts change how
 //! the two strategies share the work. With `n_l` light samples and `n_b` BSDF samples, each
-//! strategy's density enters the heuristic multiplied by its count (Veach's multi-sample
-//! model): a light sample is weighed by `w(n_l p_l, n_b p_b)`, a BSDF sample by
-//! `w(n_b p_b, n_l p_l)`, and each sample's estimate is divided by the count of its kind. The
-//! light samples are the path tracer's own ([`PathTracer::light_sample`], given the counts). A
-//! count of 0 leaves the other strategy alone, with weight 1: `emitter_samples` 0 is pure
+//! strategy's density enters the heuristic together with its count (Veach's multi-sample
+//! model), and each sample's estimate is divided by the count of its kind. The light samples
+//! are the path tracer's own ([`PathTracer::light_sample`], given the counts). A count of 0
+//! leaves the other strategy alone, with weight 1: `emitter_samples` 0 is pure
 //! BSDF sampling, `bsdf_samples` 0 pure light sampling.
 //!
 //! Point lights, which no BSDF sample can find, are connected once per hit whenever there

@@ -152,7 +152,7 @@ mod tests {
                     .to_string()
             } else if (w - balance * balance).abs() <= 1e-6 && a.is_finite() {
                 "that is the balance heuristic's weight squared: the power heuristic squares the \
-                 densities, p_a² / (p_a² + p_b²), and its two weights still add up to 1"
+                 densities before it shares the sample out, so its two weights still add up to 1"
                     .to_string()
             } else {
                 why.to_string()

@@ -1,9 +1,9 @@
 //! Next-event estimation: at each bounce, a shadow ray to every point light (and every
 //! directional light) and one to one sampled light.
 //!
-//! The light sample ([`PathTracer::light_sample`]) estimates `∫ L_e f cos θ dω` by
-//! `L_e f cos θ / p_light`, weighted by MIS against the BSDF sample that could have found the
-//! same light ([`mis_weighted_contribution`]). A point light is a delta: no BSDF sample can
+//! The light sample ([`PathTracer::light_sample`]) estimates `∫ L_e f cos θ dω` from one
+//! direction drawn towards a light, weighted by MIS against the BSDF sample that could have
+//! found the same light ([`mis_weighted_contribution`]). A point light is a delta: no BSDF sample can
 //! find it, so its weight is 1, and since there is nothing on it to sample, [`point_lights`]
 //! counts every one of them with certainty.
 
@@ -222,7 +222,7 @@ mod tests {
                 1.0,
                 MisHeuristic::None,
                 Vec3::new(1.0, 2.0, 4.0),
-                "plain NEE: L f cos / p_light",
+                "plain NEE: no heuristic, the light sample counts in full",
             ),
             (
                 1.0,
@@ -254,7 +254,7 @@ mod tests {
                 0.25,
                 MisHeuristic::Power,
                 Vec3::new(2.0, 4.0, 8.0),
-                "a point light (infinite density) takes weight 1 and is divided only by the chance of picking it",
+                "a point light (infinite density) cannot be found by the BSDF; what makes up for picking it one time in four?",
             ),
             (
                 0.5,
@@ -262,7 +262,7 @@ mod tests {
                 0.25,
                 MisHeuristic::None,
                 Vec3::new(1.0, 2.0, 4.0),
-                "the light's density already holds the chance of picking the light: only a delta light, which has no density, is divided by that chance",
+                "the light's density already holds the chance of picking the light",
             ),
         ];
         for (light_pdf, bsdf_pdf, pick, mis, expected, why) in cases {
@@ -270,33 +270,33 @@ mod tests {
             if (c - expected).abs().max_element() < 1e-6 {
                 continue;
             }
-            let unweighted = le * f / light_pdf;
-            let mistake = if light_pdf.is_finite()
-                && (c - unweighted).abs().max_element() < 1e-6
-                && mis != MisHeuristic::None
-            {
-                "the MIS weight is missing".to_string()
-            } else if light_pdf.is_finite()
-                && (c - le * f * mis.weight(bsdf_pdf, light_pdf) / light_pdf)
-                    .abs()
-                    .max_element()
-                    < 1e-6
-            {
-                "the weight is the BSDF strategy's: this sample came from the light, so its \
+            // The usual slips, by how far they are off the expected value: the light
+            // strategy's weight left out, or the BSDF strategy's used instead.
+            let (light_weight, bsdf_weight) = (
+                mis.weight(light_pdf, bsdf_pdf),
+                mis.weight(bsdf_pdf, light_pdf),
+            );
+            let off_by = |factor: f32| (c - expected * factor).abs().max_element() < 1e-6;
+            let mistake =
+                if light_pdf.is_finite() && mis != MisHeuristic::None && off_by(1.0 / light_weight)
+                {
+                    "the MIS weight is missing".to_string()
+                } else if light_pdf.is_finite() && off_by(bsdf_weight / light_weight) {
+                    "the weight is the BSDF strategy's: this sample came from the light, so its \
                  weight is the light's density against the BSDF's"
-                    .to_string()
-            } else if light_pdf.is_finite()
-                && pick < 1.0
-                && (c * pick - expected).abs().max_element() < 1e-6
-            {
-                "divided by the chance of picking the light twice: the light's density already \
+                        .to_string()
+                } else if light_pdf.is_finite()
+                    && pick < 1.0
+                    && (c * pick - expected).abs().max_element() < 1e-6
+                {
+                    "divided by the chance of picking the light twice: the light's density already \
                  holds it"
-                    .to_string()
-            } else if !c.is_finite() {
-                format!("{c} is not finite")
-            } else {
-                why.to_string()
-            };
+                        .to_string()
+                } else if !c.is_finite() {
+                    format!("{c} is not finite")
+                } else {
+                    why.to_string()
+                };
             panic!(
                 "mis_weighted_contribution: {mistake}.\n  L = {le}, f cos = {f}, p_light = \
                  {light_pdf}, p_bsdf = {bsdf_pdf}, pick {pick}, {mis:?}: yours gave {c}, \

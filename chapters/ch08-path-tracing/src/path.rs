@@ -315,7 +315,7 @@ pub(crate) mod tests {
                 "the throughput became the sample's weight: it is multiplied into what the path \
                  already carries"
             } else {
-                "it is what the path carried times the sample's weight"
+                "what does the sample's weight do to what the path already carries?"
             };
             assert!(
                 (throughput - expected).abs().max_element() < 1e-6,
@@ -374,7 +374,7 @@ pub(crate) mod tests {
                 } else if (got - carried_eta / sample.eta_scale).abs() <= 1e-6 * got {
                     "the path's eta_scale was divided by the sample's; it is multiplied by it"
                 } else {
-                    "it is the path's eta_scale times the sample's"
+                    "what does the sample's radiance scaling do to the path's?"
                 };
                 panic!(
                     "extend_path: through glass the sample scales radiance by {}, so the path's \
@@ -387,7 +387,7 @@ pub(crate) mod tests {
                 (next.throughput - throughput).abs().max_element()
                     <= 1e-5 * throughput.max_element(),
                 "extend_path: through glass the new throughput is {}, expected {throughput}: \
-                 what the path carried times the sample's weight",
+                 the sample's weight carries over to the path as on a matte surface",
                 next.throughput
             );
         }
@@ -783,10 +783,12 @@ pub(crate) mod tests {
         // (its radiance scaled by 1/1.5² = 0.44), out of it (scaled back by 1.5²), and leaves
         // for the sky. With roulette from segment 1, both bounces see the throughput without
         // its scaling, 1, so they survive with the chance MAX_SURVIVAL = 0.95 (0.6 is below
-        // it) and divide what they carry by it: the path brings back 1 / 0.95².
-        use crate::roulette::MAX_SURVIVAL;
+        // it) and each carries the roulette's factor for a survivor: the path brings back
+        // that factor twice over.
+        use crate::roulette::russian_roulette;
         let (to_sphere, _) = furnace_rays();
-        let expected = 1.0 / (MAX_SURVIVAL * MAX_SURVIVAL);
+        let factor = russian_roulette(1.0, 0.6).expect("a throughput of 1 survives 0.6");
+        let expected = factor * factor;
         let played = PathOptions {
             rr_depth: Some(1),
             ..PathOptions::with_depth(8)
@@ -798,7 +800,7 @@ pub(crate) mod tests {
                     "the path ended at its first bounce, where the roulette saw 0.44: it looks at \
                      the throughput without its radiance scaling (throughput / eta_scale, 1 here), \
                      which says how much the path still matters"
-                } else if (l - 1.0 / MAX_SURVIVAL).abs() < 1e-4 {
+                } else if (l - factor).abs() < 1e-4 {
                     "only the second bounce played the roulette: it is played from segment \
                      rr_depth on, that one included"
                 } else if (l - 1.0).abs() < 1e-4 {
@@ -810,8 +812,8 @@ pub(crate) mod tests {
                 };
                 panic!(
                     "radiance: with roulette from segment 1 and every number 0.6, a path through \
-                     a glass sphere survives both bounces and brings back 1 / 0.95² = \
-                     {expected:.4}; yours brought back {l:.4}: {why}"
+                     a glass sphere survives both bounces and brings back the survivor's factor \
+                     {factor:.4} twice over, {expected:.4}; yours brought back {l:.4}: {why}"
                 );
             }
         });

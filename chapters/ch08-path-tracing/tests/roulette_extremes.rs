@@ -1,6 +1,6 @@
-//! Russian roulette at its extremes: a throughput near 0, where a survivor is multiplied by
-//! an enormous `1 / q`, and near 1, where `q` is capped at 0.95 so that even a white furnace
-//! ends. The factor must stay finite, the game fair, and renders finite and unbiased.
+//! Russian roulette at its extremes: a throughput near 0, where a survivor's factor is
+//! enormous, and near 1, where the chance of surviving is capped at 0.95 so that even a white
+//! furnace ends. The factor must stay finite, the game fair, and renders finite and unbiased.
 //! `beta` is what the roulette is given: the throughput's largest channel, its radiance
 //! scaling removed.
 
@@ -19,25 +19,41 @@ use glam::{Vec2, Vec3};
 /// The step between the uniform numbers a sampler hands out (`common::sampler::unit_f32`).
 const U_STEP: f32 = 1.0 / (1u32 << 24) as f32;
 
+/// The chance that a path of throughput `beta` survives, found without knowing the rule: the
+/// smallest `u` that ends it, by bisection over the positive floats in order (their bit
+/// patterns are ordered as they are), given that small `u` survive and large `u` end.
+fn survival_chance(beta: f32) -> f32 {
+    let (mut survives, mut ends) = (0u32, 1.0f32.to_bits());
+    assert!(russian_roulette(beta, 0.0).is_some() && russian_roulette(beta, 1.0).is_none());
+    while ends - survives > 1 {
+        let middle = survives + (ends - survives) / 2;
+        if russian_roulette(beta, f32::from_bits(middle)).is_some() {
+            survives = middle;
+        } else {
+            ends = middle;
+        }
+    }
+    f32::from_bits(ends)
+}
+
 #[test]
 fn near_zero_the_factor_is_finite_and_the_game_fair_on_the_samplers_numbers() {
-    // From the smallest normal float up (below it, 1 / q would overflow f32).
+    // From the smallest normal float up (below it, a survivor's factor would overflow f32).
     for beta in [f32::MIN_POSITIVE, 1e-30, 1e-12, 1e-7, 1e-4, 1e-3] {
-        // The smallest u survives, with exactly 1 / β, finite, that brings β back to 1.
-        let factor = russian_roulette(beta, 0.0).expect("u = 0 survives any q > 0");
+        // The smallest u survives, with a finite factor that makes up exactly for the chance
+        // of surviving (found by bisection), which is the throughput itself down here.
+        let factor = russian_roulette(beta, 0.0).expect("u = 0 survives any chance above 0");
+        let chance = survival_chance(beta);
+        assert_eq!(chance, beta, "{beta}: the chance of surviving");
+        assert!(factor.is_finite(), "{beta}: {factor}");
         assert!(
-            factor.is_finite() && factor == 1.0 / beta,
-            "{beta}: {factor}"
-        );
-        assert!(
-            (beta * factor - 1.0).abs() <= f32::EPSILON,
-            "{beta}: {}",
-            beta * factor
+            (f64::from(chance) * f64::from(factor) - 1.0).abs() <= f64::from(f32::EPSILON),
+            "{beta}: the chance {chance} times the factor {factor}"
         );
         assert_eq!(
             russian_roulette(beta, beta),
             None,
-            "{beta}: u = q ends the path"
+            "{beta}: u at the chance of surviving ends the path"
         );
         assert_eq!(russian_roulette(beta, 0.5), None, "{beta}");
         // Fair on the numbers a sampler can give, k · 2^-24: the survivors are the
@@ -53,7 +69,7 @@ fn near_zero_the_factor_is_finite_and_the_game_fair_on_the_samplers_numbers() {
                 "{beta}: mean factor {mean}"
             );
         } else {
-            assert_eq!(survivors, 1.0, "{beta}: only u = 0 is below q");
+            assert_eq!(survivors, 1.0, "{beta}: only u = 0 is below the chance");
         }
     }
 }
@@ -70,10 +86,21 @@ fn near_one_the_survival_is_capped_so_every_path_ends() {
         1e30,
         f32::MAX,
     ] {
-        let q = beta.min(MAX_SURVIVAL);
-        assert_eq!(russian_roulette(beta, q - U_STEP), Some(1.0 / q), "{beta}");
+        // Below the cap the chance is the throughput; at and above it, the cap.
+        let chance = survival_chance(beta);
+        let capped = if beta < MAX_SURVIVAL {
+            beta
+        } else {
+            MAX_SURVIVAL
+        };
+        assert_eq!(chance, capped, "{beta}: the chance of surviving");
+        let factor = russian_roulette(beta, chance - U_STEP).expect("survives below the chance");
+        assert!(
+            (f64::from(chance) * f64::from(factor) - 1.0).abs() <= f64::from(f32::EPSILON),
+            "{beta}: the chance {chance} times the factor {factor}"
+        );
         // A path of throughput 1 or more still ends one time in twenty.
-        assert_eq!(russian_roulette(beta, q), None, "{beta}");
+        assert_eq!(russian_roulette(beta, chance), None, "{beta}");
         assert_eq!(russian_roulette(beta, 1.0 - U_STEP), None, "{beta}");
         // The mean factor over u (midpoints of 10⁵ cells) is 1.
         let n = 100_000;
@@ -103,7 +130,8 @@ fn roulette_from_the_start() -> PathOptions {
 #[test]
 fn roulette_at_throughput_one_keeps_the_white_furnace_at_one() {
     // White spheres and glass keep the throughput (radiance scaling removed) at 1: every
-    // bounce plays at q = 0.95 and multiplies by 1 / 0.95.
+    // bounce plays at the cap, surviving 19 times in 20, and its survivors make up for the
+    // paths that ended.
     let white = Smooth::diffuse(Vec3::ONE);
     let glass = Smooth::glass(1.5);
     for materials in [
@@ -124,7 +152,7 @@ fn roulette_at_throughput_one_keeps_the_white_furnace_at_one() {
 #[test]
 fn roulette_at_throughput_near_zero_is_unbiased_and_finite() {
     // A dark convex sphere in the furnace sends back exactly its albedo; after the first
-    // bounce the path survives with q = 0.02 and carries 50 times more.
+    // bounce the path survives one time in fifty, and its survivors make up for the rest.
     let albedo = 0.02;
     let dark = spheres(&[Smooth::diffuse(Vec3::splat(albedo))], 1000);
     let method = Method::new(roulette_from_the_start());

@@ -63,67 +63,75 @@ fn one_sample(p: Vec3, n: Vec3, pdf: f32) -> LightSample {
     }
 }
 
-/// What is wrong with `got`, an answer to `area_light_contribution(light, x, n, sample)`, in
-/// words; `None` if it is right. The plausible slips are each worked out and compared.
+/// What is wrong with `got`, an answer to `area_light_contribution(light, x, n, sample)`
+/// whose right value is `expected`, in words; `None` if it is right. The plausible slips are
+/// recognised by how far off they are: each leaves out (or doubles) one factor of the
+/// geometry, so `got` is `expected` times that factor or its inverse.
 fn contribution_mistake(
     light: &AreaLight,
     x: Vec3,
     n: Vec3,
     sample: &LightSample,
     got: Vec3,
+    expected: Vec3,
 ) -> Option<String> {
-    let to_light = sample.p - x;
-    let d2 = to_light.length_squared();
-    let wi = to_light / d2.sqrt();
-    let (cos, cos_light) = (n.dot(wi), sample.n.dot(wi).abs());
-    let radiance = light.emitted(sample.n, -wi);
-    let term = |value: f32| radiance * value;
-    let expected = term(cos.max(0.0) * cos_light / (d2 * sample.pdf));
     let close =
         |a: Vec3, b: Vec3| (a - b).abs().max_element() <= 1e-5 * b.abs().max_element().max(1e-6);
     if close(got, expected) {
         return None;
     }
-    let slips: [(Vec3, &str); 7] = [
+    // The geometry of the sample: the squared distance, the cosines at the receiver and at
+    // the light, and the density.
+    let to_light = sample.p - x;
+    let d2 = to_light.length_squared();
+    let wi = to_light / d2.sqrt();
+    let (cos, cos_light) = (n.dot(wi), sample.n.dot(wi).abs());
+    let pdf = sample.pdf;
+    let slips: [(f32, &str); 6] = [
         (
-            term(cos.max(0.0) / (d2 * sample.pdf)),
+            1.0 / cos_light,
             "the cosine at the light is missing: a panel seen edge-on sends less light than one \
              seen face-on",
         ),
         (
-            term(cos_light / (d2 * sample.pdf)),
+            1.0 / cos,
             "the cosine at the receiver is missing: light arriving at a slant spreads over more \
              of the surface",
         ),
         (
-            term(cos.max(0.0) * cos_light / sample.pdf),
+            d2,
             "the squared distance is missing (or cancelled: are both cosines taken with the \
              unit direction to the light?): a patch of the light covers less of the sky seen \
              from further away",
         ),
         (
-            term(cos.max(0.0) * cos_light / (d2.sqrt() * sample.pdf)),
-            "the distance is not squared: the solid angle of a patch falls as 1 / d²",
+            d2.sqrt(),
+            "the distance is not squared: the solid angle of a patch falls with the square of \
+             the distance",
         ),
         (
-            term(cos.max(0.0) * cos_light * sample.pdf / d2),
+            pdf * pdf,
             "multiplied by the density instead of divided: a sample chosen with density p \
              stands for 1 / p of the light's area",
         ),
         (
-            term(cos.max(0.0) * cos_light / d2),
+            pdf,
             "not divided by the density: a sample chosen with density p stands for 1 / p of \
              the light's area",
         ),
-        (
-            term(cos * cos_light / (d2 * sample.pdf)),
-            "the cosine at the receiver went negative: light from below its horizon does not \
-             reach it, so that cosine is clamped at 0",
-        ),
     ];
     let towards_light = light.emitted(sample.n, wi);
-    let mistake = match slips.iter().find(|(value, _)| close(got, *value)) {
+    let radiance = light.emitted(sample.n, -wi);
+    let mistake = match slips
+        .iter()
+        .find(|(factor, _)| (factor - 1.0).abs() > 1e-3 && close(got, expected * *factor))
+    {
         Some((_, mistake)) => (*mistake).to_string(),
+        None if cos < 0.0 && got.min_element() < 0.0 => {
+            "the cosine at the receiver went negative: light from below its horizon does not \
+             reach it, so that cosine is clamped at 0"
+                .to_string()
+        }
         None if got == Vec3::ZERO && radiance != Vec3::ZERO && towards_light == Vec3::ZERO => {
             "yours is 0, as if the receiver were behind the light: the light's emitted radiance \
              is asked for the direction it leaves in, from the light towards the receiver"
@@ -141,48 +149,70 @@ fn contribution_mistake(
     ))
 }
 
-fn check_contribution(light: &AreaLight, x: Vec3, n: Vec3, sample: &LightSample) {
+/// Checks one term against `expected_per_radiance`, the right term for a light of radiance 1
+/// in every channel (the panel's radiance `L` scales it).
+fn check_contribution(
+    light: &AreaLight,
+    x: Vec3,
+    n: Vec3,
+    sample: &LightSample,
+    expected_per_radiance: f32,
+) {
     let got = area_light_contribution(light, x, n, sample);
-    if let Some(mistake) = contribution_mistake(light, x, n, sample, got) {
+    let expected = L * expected_per_radiance;
+    if let Some(mistake) = contribution_mistake(light, x, n, sample, got, expected) {
         panic!("area_light_contribution: {mistake}");
     }
 }
 
+// The expected terms below were worked out beforehand from the conversion of a patch of the
+// light's area into the light arriving at the receiver, to 6 digits, for a light of radiance 1.
+// The first, for instance: the point (1, 2, 0) on a light facing down, seen from the origin
+// under a receiver facing up, is at distance √5 with both cosines 2/√5, density 1/4.
+
 #[test]
-fn exercise_area_light_contribution_is_the_lectures_formula() {
+fn exercise_area_light_contribution_turns_area_into_arriving_light() {
     let light = AreaLight::new(ceiling_panel(), L);
     let sample = one_sample(Vec3::new(1.0, 2.0, 0.0), -Vec3::Y, 0.25);
-    check_contribution(&light, Vec3::ZERO, Vec3::Y, &sample);
+    check_contribution(&light, Vec3::ZERO, Vec3::Y, &sample, 0.64);
     // The two cosines are different things: tilt the receiver, then the light.
-    check_contribution(&light, Vec3::ZERO, Vec3::X, &sample);
+    check_contribution(&light, Vec3::ZERO, Vec3::X, &sample, 0.32);
     let n_light = Vec3::new(-1.0, -1.0, 0.0).normalize();
     let turned = one_sample(Vec3::new(1.0, 2.0, 0.0), n_light, 0.25);
-    check_contribution(&light, Vec3::ZERO, Vec3::Y, &turned);
+    check_contribution(&light, Vec3::ZERO, Vec3::Y, &turned, 0.678_822_5);
     let tilted = one_sample(
         Vec3::new(0.4, 1.3, -0.6),
         Vec3::new(0.2, -1.0, 0.3).normalize(),
         0.7,
     );
-    check_contribution(&light, Vec3::new(0.1, 0.0, 0.2), tilted_normal(), &tilted);
+    check_contribution(
+        &light,
+        Vec3::new(0.1, 0.0, 0.2),
+        tilted_normal(),
+        &tilted,
+        0.495_206_4,
+    );
 }
 
 #[test]
 fn exercise_area_light_contribution_divides_by_the_density() {
     let light = AreaLight::new(ceiling_panel(), L);
-    for pdf in [1.0, 2.0, 0.1] {
+    for (pdf, expected) in [(1.0, 0.397_217_75), (2.0, 0.198_608_88), (0.1, 3.972_177_5)] {
         check_contribution(
             &light,
             Vec3::ZERO,
             Vec3::Y,
             &one_sample(Vec3::new(0.3, 1.5, 0.2), -Vec3::Y, pdf),
+            expected,
         );
     }
-    // And falls as 1/d² along the normal.
+    // And falls with the distance along the normal.
     check_contribution(
         &light,
         Vec3::ZERO,
         Vec3::Y,
         &one_sample(Vec3::new(0.0, 3.0, 0.0), -Vec3::Y, 1.0),
+        1.0 / 9.0,
     );
 }
 
@@ -198,7 +228,7 @@ fn exercise_area_light_contribution_is_zero_behind_the_light_and_below_the_horiz
          it), which sends it nothing; yours gave {got}: is the light's own emitted radiance \
          towards the receiver used, asked for the direction from the light to the receiver?"
     );
-    check_contribution(&light, Vec3::ZERO, -Vec3::Y, &s);
+    check_contribution(&light, Vec3::ZERO, -Vec3::Y, &s, 0.0);
 }
 
 #[test]

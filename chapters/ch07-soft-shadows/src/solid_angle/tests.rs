@@ -23,27 +23,50 @@ fn the_cone_density_is_chapter_02s_spherical_cap() {
 
 // The cone (exercise).
 
-/// `1 - cos θ_max` of `sin θ_max = s`, in `f64` and without cancellation.
-fn exact_one_minus_cos(s: f64) -> f64 {
-    s * s / (1.0 + (1.0 - s * s).sqrt())
-}
-
 #[test]
 fn exercise_sphere_cone_finds_the_cone_a_sphere_covers() {
-    // (centre, radius, receiver): a large cone seen along a tilted axis, a small one, a
-    // sphere far off and one so far that cos θ_max rounds to 1 in f32.
+    // (centre, radius, receiver, 1 - cos θ_max, and what it comes to when cos θ_max is taken
+    // as R / d in the identity with sin² θ_max): a large cone seen along a tilted axis, a
+    // small one, a sphere far off and one so far that cos θ_max rounds to 1 in f32. The last
+    // two columns were worked out beforehand in f64 from the receiver's distance, to 9 digits.
     let cases = [
         (
             Vec3::new(0.3, 1.0, -0.4),
             1.0f32,
             Vec3::new(-0.3, 0.25, -1.2),
+            3.999_999_674e-1,
+            3.555_555_387e-1,
         ),
-        (Vec3::new(0.0, 0.0, 4.0), 1.0, Vec3::ZERO),
-        (Vec3::new(1.0, 2.0, 3.0), 0.5, Vec3::new(-0.5, 1.0, 2.0)),
-        (Vec3::new(0.0, 1e4, 0.0), 1.0, Vec3::ZERO),
-        (Vec3::new(0.0, 1e6, 0.0), 1.0, Vec3::ZERO),
+        (
+            Vec3::new(0.0, 0.0, 4.0),
+            1.0,
+            Vec3::ZERO,
+            3.175_416_345e-2,
+            5.0e-2,
+        ),
+        (
+            Vec3::new(1.0, 2.0, 3.0),
+            0.5,
+            Vec3::new(-0.5, 1.0, 2.0),
+            2.985_749_985e-2,
+            4.734_152_344e-2,
+        ),
+        (
+            Vec3::new(0.0, 1e4, 0.0),
+            1.0,
+            Vec3::ZERO,
+            5.000_000_013e-9,
+            9.999_000_100e-9,
+        ),
+        (
+            Vec3::new(0.0, 1e6, 0.0),
+            1.0,
+            Vec3::ZERO,
+            5.0e-13,
+            9.999_990_000e-13,
+        ),
     ];
-    for (center, radius, x) in cases {
+    for (center, radius, x, expected, with_cos_as_sin) in cases {
         let sphere = Sphere::new(center, radius);
         let d = (center.as_dvec3() - x.as_dvec3()).length();
         let s = radius as f64 / d;
@@ -78,10 +101,9 @@ fn exercise_sphere_cone_finds_the_cone_a_sphere_covers() {
             cone.sin2_theta_max,
             s * s
         );
-        let expected = exact_one_minus_cos(s);
         let got = cone.one_minus_cos_theta_max;
         if !close(got, expected) {
-            let why = if close(got, s * s / (1.0 + s)) || close(got, 1.0 - s) {
+            let why = if close(got, with_cos_as_sin) || close(got, 1.0 - s) {
                 "cos θ_max came out as R / d, which is sin θ_max: θ_max is the angle whose sine \
                  is R / d, so what is its cosine?"
                     .to_string()

@@ -1,6 +1,6 @@
-//! Chapter 06's fuzzy mirror: `f cos θ_i = k · p(wi)`, `p` the lobe around the mirror
-//! direction, so sampling the lobe gives the weight `k`. Directions the lobe puts below the
-//! surface are dropped (chapter 06's `BelowSurface::Drop`): they carry no light, and `eval`
+//! Chapter 06's fuzzy mirror as a BSDF: its `f cos θ_i` follows the lobe around the mirror
+//! direction, which it samples (chapter 06's glossy exercise works out the weight). Directions
+//! the lobe puts below the surface are dropped (chapter 06's `BelowSurface::Drop`): they carry no light, and `eval`
 //! and `pdf` are 0 there too, so the light sample and the BSDF sample describe the same
 //! material.
 
@@ -40,7 +40,7 @@ pub fn sample(
     })
 }
 
-/// `k · p(wi)` above the surface, else 0.
+/// `f cos θ_i` at `wi` above the surface, else 0.
 pub fn eval(hit: &SurfaceHit, wo: Vec3, wi: Vec3, glossy: &Glossy, fuzz: FuzzMethod) -> Vec3 {
     glossy.reflectance * pdf(hit, wo, wi, glossy, fuzz)
 }

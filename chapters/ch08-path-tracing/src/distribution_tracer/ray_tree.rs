@@ -272,22 +272,23 @@ mod tests {
         counts
     }
 
-    /// What the usual slips give, for naming the one that `got` matches.
+    /// What the usual slips give, for naming the one that `got` matches; `right` is what the
+    /// tracer was [`measured`] to cast.
     fn mistake(
         surface: Surface,
         options: DistributionOptions,
         lights: LightCounts,
         got: &[RayCount],
+        right: &[RayCount],
     ) -> &'static str {
-        let right = rays_by_depth_reference(surface, options, lights);
         let k = u64::from(options.material_samples.max(1));
         let m = u64::from(options.light_samples.max(1));
         let rays_right =
-            got.len() == right.len() && got.iter().zip(&right).all(|(g, r)| g.rays == r.rays);
+            got.len() == right.len() && got.iter().zip(right).all(|(g, r)| g.rays == r.rays);
         let shadows_right = got.len() == right.len()
             && got
                 .iter()
-                .zip(&right)
+                .zip(right)
                 .all(|(g, r)| g.shadow_rays == r.shadow_rays);
         if got.len() == right.len() + 1 {
             return "one depth too many: the tracer stops at depth max_depth, counting the \
@@ -346,7 +347,7 @@ mod tests {
             if got[last].shadow_rays > 0
                 && got[..last]
                     .iter()
-                    .zip(&right)
+                    .zip(right)
                     .all(|(g, r)| g.shadow_rays == r.shadow_rays)
             {
                 return "shadow rays at the last depth: a hit of depth max_depth only adds \
@@ -363,46 +364,12 @@ mod tests {
             if let Some(p) = per_hit(&got[0])
                 && wrong_lights.contains(&p)
             {
-                return "the shadow rays of one hit: m to each area light (points drawn on it), \
-                        one to each point light (it has one point)";
+                return "the shadow rays of one hit: how many points does a hit draw on each \
+                        area light, and how many on a point light?";
             }
             return "the shadow rays per depth differ from the tracer's";
         }
         "right"
-    }
-
-    /// The counts of the solution, written again here so that the diagnosis does not depend on
-    /// the student's routine.
-    fn rays_by_depth_reference(
-        surface: Surface,
-        options: DistributionOptions,
-        lights: LightCounts,
-    ) -> Vec<RayCount> {
-        let k = u64::from(options.material_samples.max(1));
-        let m = u64::from(options.light_samples.max(1));
-        let (branches, per_hit) = match surface {
-            Surface::Glass => (k, 0),
-            Surface::Matte => (
-                if options.indirect_diffuse { k } else { 0 },
-                m * u64::from(lights.area) + u64::from(lights.point),
-            ),
-        };
-        let mut rays = 1;
-        (1..=options.max_depth)
-            .map(|depth| {
-                let count = RayCount {
-                    depth,
-                    rays,
-                    shadow_rays: if depth < options.max_depth {
-                        rays * per_hit
-                    } else {
-                        0
-                    },
-                };
-                rays *= branches;
-                count
-            })
-            .collect()
     }
 
     #[test]
@@ -431,7 +398,7 @@ mod tests {
                 "rays_by_depth: {}.\n  {surface:?} room, k = {k}, m = {m}, max_depth = \
                  {max_depth}, indirect_diffuse = {indirect_diffuse}, {} area and {} point \
                  lights:\n  yours:      {}\n  the tracer: {}",
-                mistake(surface, options, lights, &got),
+                mistake(surface, options, lights, &got, &tracer),
                 lights.area,
                 lights.point,
                 show(&got),
@@ -450,12 +417,16 @@ mod tests {
     }
 
     #[test]
-    fn the_reference_is_the_measured_tree_and_names_no_mistake_on_itself() {
+    fn the_measured_tree_names_no_mistake_on_itself() {
         let options = DistributionOptions::branching(2, 4, true);
         let lights = LightCounts { area: 1, point: 1 };
-        let right = rays_by_depth_reference(Surface::Matte, options, lights);
-        assert_eq!(measured(Surface::Matte, options, lights), right);
-        assert_eq!(mistake(Surface::Matte, options, lights, &right), "right");
-        assert_eq!(total_rays(&right), 1 + 2 + 4 + 8 + 3 * (1 + 2 + 4));
+        let right = measured(Surface::Matte, options, lights);
+        assert_eq!(
+            mistake(Surface::Matte, options, lights, &right, &right),
+            "right"
+        );
+        // Worked out beforehand for two branches per hit, four points on the area light and
+        // one on the point light, depth 4: 15 rays and 21 shadow rays.
+        assert_eq!(total_rays(&right), 36);
     }
 }

@@ -1,7 +1,7 @@
 //! Mitsuba 3's `roughconductor`: a metal made of mirror facets, Walter et al.'s model
 //! `f(wo, wi) = F(wo·h) D(h) G(wo, wi, h) / (4 cos θ_o cos θ_i)` with `h` the half vector, the
 //! conductor's complex Fresnel term at the facet, and sampling of the visible normals, so a
-//! sample's weight is `F G1(wi, m)`, never above 1.
+//! sample's weight never exceeds 1.
 //!
 //! Directions are in the local frame (`z` the normal) and point away from the surface: `wo`
 //! towards where the path came from, `wi` towards the light. One-sided, as Mitsuba's: black
@@ -55,7 +55,8 @@ impl RoughConductor {
     // ANCHOR_END: rough_conductor_eval
 
     /// The density per unit solid angle with which [`sample`](Self::sample) picks `wi`: the
-    /// visible-normal density of the half vector, times `dh / dwi = 1 / (4 wi·h)`.
+    /// visible-normal density of the half vector, carried over from normals to the directions
+    /// they mirror `wo` into.
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         if wo.z <= 0.0 || wi.z <= 0.0 {
             return 0.0;

@@ -8,7 +8,8 @@
 //!
 //! Sampling draws a facet normal visible from `wo` (on `wo`'s side), then reflects with the
 //! probability `F` of that facet and refracts otherwise, as Mitsuba does: the weight is then
-//! `G1(wi, m)` (times `1/η²` through refraction).
+//! only the shadowing the facet's density does not already hold (times `1/η²` through
+//! refraction).
 //!
 //! Directions are in the local frame (`z` the normal, pointing outside, where the index is
 //! `ext_ior`) and point away from the surface: `wo` towards where the path came from, `wi`

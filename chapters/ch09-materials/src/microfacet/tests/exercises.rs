@@ -21,49 +21,49 @@ fn ggx_by_angles(m: Vec3, alpha_u: f32, alpha_v: f32) -> f64 {
     1.0 / (PI * au * av * cos2 * cos2 * (1.0 + tan2 * stretch).powi(2))
 }
 
-/// Names the slip that turns the right density into `got`, if it is one of the usual ones.
-fn ggx_mistake(got: f64, m: Vec3, alpha_u: f32, alpha_v: f32) -> Option<&'static str> {
-    let (x, y, z) = (f64::from(m.x), f64::from(m.y), f64::from(m.z));
+/// Names the slip that turns the right density `expected` into `got`, if it is one of the
+/// usual ones. Each slip is recognised through the formula with the angles: a roughness
+/// ignored, swapped or inverted is GGX of another roughness; a missing square or `1/π` shows
+/// in how `got` relates to `expected`.
+fn ggx_mistake(
+    got: f64,
+    expected: f64,
+    m: Vec3,
+    alpha_u: f32,
+    alpha_v: f32,
+) -> Option<&'static str> {
     let (au, av) = (f64::from(alpha_u), f64::from(alpha_v));
-    let s = (x / au).powi(2) + (y / av).powi(2) + z * z;
     let close = |value: f64| (got - value).abs() <= 1e-4 * value.abs().max(1e-12);
-    let slopes2 = ((x / au).powi(2) + (y / av).powi(2)) / (z * z);
+    let cos2 = f64::from(m.z).powi(2);
+    let slopes2 = ((f64::from(m.x) / au).powi(2) + (f64::from(m.y) / av).powi(2)) / cos2;
     let candidates = [
         (
-            1.0 / (au * av * s * s),
+            PI * expected,
             "it is π times too large: the 1/π is missing, and without it the facets' projected \
              area is π times the surface's",
         ),
         (
-            1.0 / (PI * au * av * s),
-            "the sum x²/α_u² + y²/α_v² + z² must be squared (that square is where \
-             cos⁴ θ (1 + tan² θ/α²)² went)",
+            // Unsquared, the density's square times π α_u α_v is the right density.
+            (expected / (PI * au * av)).sqrt(),
+            "the sum in the denominator must be squared (the formula with the angles squares \
+             its bracket, and multiplying cos⁴ θ_m in keeps a square)",
         ),
         (
-            (-slopes2).exp() / (PI * au * av * z.powi(4)),
+            (-slopes2).exp() / (PI * au * av * cos2 * cos2),
             "that is Beckmann's distribution (a Gaussian in the slope); GGX's tail falls like a \
              power of tan θ, not an exponential",
         ),
         (
-            {
-                let t = (x * au).powi(2) + (y * av).powi(2) + z * z;
-                1.0 / (PI * au * av * t * t)
-            },
+            ggx_by_angles(m, 1.0 / alpha_u, 1.0 / alpha_v) / (au * av).powi(2),
             "the tangential parts x and y are multiplied by the roughness; divide them by it (a \
              rougher surface spreads the normals wider)",
         ),
         (
-            {
-                let t = (x / au).powi(2) + (y / au).powi(2) + z * z;
-                1.0 / (PI * au * au * t * t)
-            },
+            ggx_by_angles(m, alpha_u, alpha_u),
             "alpha_v is ignored: the roughness along y is alpha_v",
         ),
         (
-            {
-                let t = (x / av).powi(2) + (y / au).powi(2) + z * z;
-                1.0 / (PI * au * av * t * t)
-            },
+            ggx_by_angles(m, alpha_v, alpha_u),
             "alpha_u and alpha_v are swapped: alpha_u is the roughness along x (the tangent), \
              alpha_v along y",
         ),
@@ -89,8 +89,9 @@ fn exercise_ggx_density() {
             if (got - expected).abs() <= 1e-4 * expected {
                 continue;
             }
-            let why = ggx_mistake(got, m, au, av).unwrap_or(
-                "D(m) = 1 / (π α_u α_v cos⁴ θ_m (1 + tan² θ_m (cos² φ/α_u² + sin² φ/α_v²))²)",
+            let why = ggx_mistake(got, expected, m, au, av).unwrap_or(
+                "the density differs from Walter et al.'s GGX, written with the angles in the \
+                 function's documentation",
             );
             panic!(
                 "ggx_density: {why}.\n  ggx_density(m = {m}, alpha_u = {au}, alpha_v = {av}) gave \
@@ -183,34 +184,40 @@ fn check_sample(metal: &RoughConductor, wo: Vec3, u: Vec2) -> Result<(), String>
         };
         return Err(format!("{call}: {why}; wi = {}, expected {wi}", s.wi));
     }
+    // The density must be the material's own (its `pdf`, which the renderer's MIS weighs
+    // light samples by), and the weight its own `f cos θ_i` over that density.
     let pdf = metal.pdf(wo, wi);
     if !close(s.pdf, pdf) {
         let pdf_m = d.visible_normal_pdf(wo, m);
         let why = if close(s.pdf, pdf_m) {
-            "that is the density of the normal m, not of the direction wi: mirroring turns \
-             dω_m into dω_i = 4 (wi·m) dω_m"
-        } else if close(s.pdf, d.normal_pdf(m) / (4.0 * wi.dot(m))) {
-            "that is the density of all the normals, D(m) cos θ_m; the visible ones have \
-             D_w(m) = G1(wo, m) (wo·m) D(m) / cos θ_o"
+            "that is the density of the normal m, not of the direction wi: how much solid angle \
+             of mirrored directions does a small patch of normals around m make?"
+        } else if close(s.pdf, 4.0 * pdf) {
+            "it is 4 times too large: the density of wi is the density of the normal m divided \
+             by how much larger a patch of mirrored directions is than its patch of normals"
+        } else if close(s.pdf * pdf_m, pdf * d.normal_pdf(m)) {
+            "that is the density of all the normals, D(m) cos θ_m, carried over to wi; the \
+             normal was drawn among those wo can see"
         } else if !s.pdf.is_finite() {
-            "a density is a finite number; the density of wi is D_w(m) / (4 wi·m)"
+            "a density is a finite number"
         } else {
-            "the density of wi is D_w(m) / (4 wi·m)"
+            "the density of wi is the visible normal's density carried over from normals to \
+             mirrored directions"
         };
         return Err(format!("{call}: {why}; pdf = {}, expected {pdf}", s.pdf));
     }
-    let fresnel = metal.fresnel(wo.dot(m));
-    let expected = fresnel * d.g1(wi, m);
+    let expected = metal.eval(wo, wi) / pdf;
     if !close3(s.weight, expected) {
-        let why = if close3(s.weight, fresnel * d.g(wo, wi, m)) {
-            "G1(wo, m) is counted twice: the visible-normal density already holds it, so only \
-             G1(wi, m) is left in the weight"
-        } else if close3(s.weight, fresnel) {
+        let (g1_wo, g1_wi) = (d.g1(wo, m), d.g1(wi, m));
+        let why = if close3(s.weight, expected * g1_wo) {
+            "G1(wo, m) is counted twice: the visible-normal density already holds it"
+        } else if close3(s.weight * g1_wi, expected) {
             "G1(wi, m) is missing: the facet may be shadowed from the light's side"
         } else if close3(s.weight, metal.eval(wo, wi)) {
             "that is f cos θ_i itself; the weight is f cos θ_i / pdf"
         } else {
-            "the weight is f cos θ_i / pdf, which comes to F(wo·m) G1(wi, m)"
+            "the weight is f cos θ_i / pdf: work out what is left of that quotient at the \
+             sampled facet"
         };
         return Err(format!(
             "{call}: {why}; weight = {}, expected {expected}",
