@@ -54,7 +54,7 @@ pub mod triangle;
 #[cfg(test)]
 pub(crate) mod test_support;
 
-pub use cap::{invert_spherical_cap, sample_spherical_cap, spherical_cap_pdf};
+pub use cap::{sample_spherical_cap, spherical_cap_pdf};
 pub use catalogue::{Domain, Warp, WarpPoint};
 pub use concentric::{invert_uniform_disc_concentric, sample_uniform_disc_concentric};
 pub use cosine::{cosine_hemisphere_pdf, invert_cosine_hemisphere, sample_cosine_hemisphere};
