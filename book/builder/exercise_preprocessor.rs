@@ -372,14 +372,14 @@ mod tests {
     fn a_solution_written_out_on_a_page_is_found_but_not_in_its_block() {
         let solutions = vec![(
             "ch01-reflect".to_string(),
-            normalized("wi - 2.0 * wi.dot(n) * n"),
+            normalized("u - 3.0 * u.dot(v) * w"),
         )];
-        let page = "The answer:\n\n```rust\nwi - 2.0*wi.dot(n)*n\n```\n";
+        let page = "The answer:\n\n```rust\nu - 3.0*u.dot(v)*w\n```\n";
         let leaks = solution_leaks(page, &solutions);
         assert_eq!(leaks.len(), 1, "{leaks:?}");
         assert!(leaks[0].contains("ch01-reflect"), "{leaks:?}");
         let hidden = format!(
-            "{SOLUTION_OPEN}\n\n```rust\nwi - 2.0 * wi.dot(n) * n\n```\n\n{SOLUTION_CLOSE}\n"
+            "{SOLUTION_OPEN}\n\n```rust\nu - 3.0 * u.dot(v) * w\n```\n\n{SOLUTION_CLOSE}\n"
         );
         assert!(solution_leaks(&hidden, &solutions).is_empty());
     }

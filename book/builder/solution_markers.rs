@@ -554,14 +554,14 @@ mod tests {
 
     // Test sources are built from escaped one-line strings on purpose: a marker on a line of
     // its own here would be a stray marker in the workspace's own sources.
-    const REFLECT: &str = "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    wi - 2.0 * wi.dot(n) * n\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n";
+    const REFLECT: &str = "use glam::Vec3;\n\n// ANCHOR: reflect\n/// A made-up formula in the place of the mirror direction.\npub fn reflect(u: Vec3, v: Vec3, w: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    u - 3.0 * u.dot(v) * w\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n";
 
     #[test]
     fn a_mark_goes_first_in_the_solution_which_stays() {
         let marked = mark_solution(REFLECT, "reflect", "mark();").unwrap();
         assert_eq!(
             marked,
-            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    mark();\n    wi - 2.0 * wi.dot(n) * n\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n"
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// A made-up formula in the place of the mirror direction.\npub fn reflect(u: Vec3, v: Vec3, w: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    mark();\n    u - 3.0 * u.dot(v) * w\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n"
         );
         assert!(mark_solution(REFLECT, "refract", "mark();").is_err());
     }
@@ -582,7 +582,7 @@ mod tests {
         let stub = book_stub(REFLECT, "reflect").unwrap();
         assert_eq!(
             stub,
-            "/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    todo!()\n}"
+            "/// A made-up formula in the place of the mirror direction.\npub fn reflect(u: Vec3, v: Vec3, w: Vec3) -> Vec3 {\n    todo!()\n}"
         );
     }
 
@@ -606,12 +606,12 @@ mod tests {
     fn student_source_replaces_only_the_region_and_keeps_the_rest() {
         let cut = Cut {
             anchor: "reflect",
-            message: "ch01-reflect: mirror `wi` about `n`".to_owned(),
+            message: "ch01-reflect: lever `u` about `v`".to_owned(),
         };
         let student = student_source(REFLECT, &[cut]).unwrap();
         assert_eq!(
             student,
-            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    let _ = (&wi, &n); // the inputs, until your code uses them\n    ::common::exercise::todo(\"ch01-reflect: mirror `wi` about `n`\")\n}\n// ANCHOR_END: reflect\n"
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// A made-up formula in the place of the mirror direction.\npub fn reflect(u: Vec3, v: Vec3, w: Vec3) -> Vec3 {\n    let _ = (&u, &v, &w); // the inputs, until your code uses them\n    ::common::exercise::todo(\"ch01-reflect: lever `u` about `v`\")\n}\n// ANCHOR_END: reflect\n"
         );
     }
 
@@ -775,10 +775,10 @@ mod tests {
 
     #[test]
     fn a_wrong_answer_takes_the_solutions_place() {
-        let spliced = splice_code(REFLECT, "reflect", "wi - wi.dot(n) * n\n").unwrap();
+        let spliced = splice_code(REFLECT, "reflect", "u - u.dot(v) * w\n").unwrap();
         assert_eq!(
             spliced,
-            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// Mirror reflection.\npub fn reflect(wi: Vec3, n: Vec3) -> Vec3 {\n    wi - wi.dot(n) * n\n}\n// ANCHOR_END: reflect\n"
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// A made-up formula in the place of the mirror direction.\npub fn reflect(u: Vec3, v: Vec3, w: Vec3) -> Vec3 {\n    u - u.dot(v) * w\n}\n// ANCHOR_END: reflect\n"
         );
         assert!(splice_code(REFLECT, "refract", "x").is_err());
     }

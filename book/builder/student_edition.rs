@@ -480,7 +480,7 @@ mod tests {
     fn the_students_list_keeps_its_exercises_but_not_their_wrong_answers_or_giveaways() {
         let list = format!(
             "{LIST}\n[[exercise.wrong]]\nmistake = \"no sign change\"\ncode = \"\"\"\nx\n\"\"\"\nsays = \"flip\"\n\n\
-             [[exercise.giveaway]]\nwritten = 'd - 2 (d \\cdot n) n'\n\n{}",
+             [[exercise.giveaway]]\nwritten = 'u - 3 (u \\cdot v) w'\n\n{}",
             LIST.replace("ch01-reflect", "ch01-other")
         );
         assert_eq!(exercise_list::parse(&list).unwrap()[0].giveaway.len(), 1);

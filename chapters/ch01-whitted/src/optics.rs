@@ -80,7 +80,6 @@ pub fn critical_angle(eta_i: f32, eta_t: f32) -> Option<f32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use approx::assert_relative_eq;
 
     /// A unit direction hitting the plane z = 0 from above at `theta` from the normal.
     fn incoming(theta: f32) -> Vec3 {
@@ -236,98 +235,173 @@ mod tests {
         }
     }
 
-    /// What is wrong with `f`, an answer to `fresnel_dielectric(cos_i, eta)`, in words; `None`
-    /// if it is right.
-    fn fresnel_mistake(cos_i: f32, eta: f32, f: f32) -> Option<String> {
-        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
-        let (r_s, r_p) = if sin2_t > 1.0 || eta == 1.0 {
-            (f32::NAN, f32::NAN)
+    /// A case of `fresnel_dielectric(cos_i, eta)` where a refracted ray exists, worked out
+    /// beforehand from the Fresnel equations (in `f32`, to 6 digits): the reflectance of
+    /// unpolarised light, and the reflectances `r_s^2` and `r_p^2` of light polarised
+    /// perpendicular and parallel to the plane of incidence, to name a mistake.
+    struct Reflection {
+        cos_i: f32,
+        eta: f32,
+        reflectance: f32,
+        r_s2: f32,
+        r_p2: f32,
+    }
+
+    /// Air into glass of index 1.5 (`eta = 1 / 1.5`) square on, at Brewster's angle
+    /// (`tan(theta_B) = 1.5`, where `r_p` vanishes), obliquely and at grazing incidence; glass
+    /// and water into air square on and obliquely, and glass into air just inside the critical
+    /// angle, where the reflectance climbs steeply towards 1.
+    const REFLECTIONS: [Reflection; 9] = [
+        // Air into glass.
+        Reflection {
+            cos_i: 1.0,
+            eta: 1.0 / 1.5,
+            reflectance: 0.04,
+            r_s2: 0.04,
+            r_p2: 0.04,
+        },
+        Reflection {
+            cos_i: 0.554_700_2,
+            eta: 1.0 / 1.5,
+            reflectance: 0.073_964_5,
+            r_s2: 0.147_929,
+            r_p2: 0.0,
+        },
+        Reflection {
+            cos_i: 0.9,
+            eta: 1.0 / 1.5,
+            reflectance: 0.040_791_9,
+            r_s2: 0.052_537_8,
+            r_p2: 0.029_046,
+        },
+        Reflection {
+            cos_i: 0.5,
+            eta: 1.0 / 1.5,
+            reflectance: 0.089_186_7,
+            r_s2: 0.176_571,
+            r_p2: 0.001_801_94,
+        },
+        Reflection {
+            cos_i: 0.2,
+            eta: 1.0 / 1.5,
+            reflectance: 0.338_894,
+            r_s2: 0.490_770,
+            r_p2: 0.187_019,
+        },
+        Reflection {
+            cos_i: 0.0,
+            eta: 1.0 / 1.5,
+            reflectance: 1.0,
+            r_s2: 1.0,
+            r_p2: 1.0,
+        },
+        // Glass and water into air.
+        Reflection {
+            cos_i: 1.0,
+            eta: 1.5,
+            reflectance: 0.04,
+            r_s2: 0.04,
+            r_p2: 0.04,
+        },
+        Reflection {
+            cos_i: 0.9,
+            eta: 1.33,
+            reflectance: 0.022_332_8,
+            r_s2: 0.036_090_7,
+            r_p2: 0.008_574_96,
+        },
+        Reflection {
+            cos_i: 0.746,
+            eta: 1.5,
+            reflectance: 0.767_063,
+            r_s2: 0.846_821,
+            r_p2: 0.687_304,
+        },
+    ];
+
+    /// What is wrong with `f`, an answer to `fresnel_dielectric(case.cos_i, case.eta)`, in
+    /// words; `None` if it is right.
+    fn fresnel_mistake(case: &Reflection, f: f32) -> Option<String> {
+        let &Reflection {
+            cos_i,
+            eta,
+            reflectance,
+            r_s2,
+            r_p2,
+        } = case;
+        // Just inside the critical angle the reflectance is steep in cos_i: a correct answer
+        // written another way rounds differently there.
+        let tolerance = if eta > 1.0 && reflectance > 0.5 {
+            1e-4
         } else {
-            let cos_t = (1.0 - sin2_t).max(0.0).sqrt();
-            (
-                (eta * cos_i - cos_t) / (eta * cos_i + cos_t),
-                (cos_i - eta * cos_t) / (cos_i + eta * cos_t),
-            )
+            1e-5
         };
-        let expected = if eta == 1.0 {
-            0.0
-        } else if sin2_t > 1.0 {
-            1.0
-        } else {
-            0.5 * (r_s * r_s + r_p * r_p)
-        };
-        if (f - expected).abs() <= 1e-5 {
+        if (f - reflectance).abs() <= tolerance {
             return None;
         }
-        let mistake = if eta == 1.0 {
-            "with eta = 1 both sides have the same index: there is no interface, and nothing is \
-             reflected at any angle, even at grazing incidence (cos_i = 0), where the formulas \
-             divide 0 by 0"
-                .to_string()
-        } else if sin2_t > 1.0 {
-            format!(
-                "beyond the critical angle sin^2(theta_t) = {sin2_t:.3} is above 1: there is no \
-                 refracted ray and all the light is reflected (total internal reflection), so the \
-                 reflectance is 1"
-            )
-        } else if !f.is_finite() {
+        let near = |x: f32| (f - x).abs() <= 1e-5;
+        let halves = "unpolarised light is half s-polarised and half p-polarised, and each half \
+                      is reflected by its own share";
+        let mistake = if !f.is_finite() {
             "the result is not a number".to_string()
-        } else if (f - r_s * r_s).abs() <= 1e-5 {
-            "that is r_s^2 alone: unpolarised light is half s and half p, so the reflectance is \
-             the mean of r_s^2 and r_p^2"
+        } else if near(r_s2) {
+            format!("that is r_s^2 alone: {halves}")
+        } else if near(r_p2) {
+            format!("that is r_p^2 alone: {halves}")
+        } else if near(0.5 * (r_s2.sqrt() + r_p2.sqrt())) {
+            "that is the mean of the amplitude ratios |r_s| and |r_p|: a reflectance is a share \
+             of the energy, which goes with the square of an amplitude"
                 .to_string()
-        } else if (f - r_p * r_p).abs() <= 1e-5 {
-            "that is r_p^2 alone: unpolarised light is half s and half p, so the reflectance is \
-             the mean of r_s^2 and r_p^2"
-                .to_string()
-        } else if (f - 0.5 * (r_s.abs() + r_p.abs())).abs() <= 1e-5 {
-            "that is the mean of the amplitude ratios: the reflectance is the mean of their \
-             squares"
-                .to_string()
-        } else if (f - (r_s * r_s + r_p * r_p)).abs() <= 1e-5 {
-            "that is the sum of r_s^2 and r_p^2: unpolarised light is half s and half p, so the \
-             reflectance is their mean"
-                .to_string()
+        } else if near(r_s2 + r_p2) {
+            format!(
+                "that is the sum of r_s^2 and r_p^2: {halves}; summed, grazing light would \
+                 reflect twice what arrives"
+            )
         } else {
             let r0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
             let schlick = r0 + (1.0 - r0) * (1.0 - cos_i).powi(5);
-            if (f - schlick).abs() <= 1e-5 {
+            if near(schlick) {
                 "that is Schlick's approximation: the exercise asks for the Fresnel equations \
                  themselves"
                     .to_string()
             } else {
                 format!(
-                    "it is not the mean of r_s^2 and r_p^2 (here r_s = {r_s}, r_p = {r_p}, with \
-                     cos(theta_t) from Snell's law)"
+                    "it is not what the Fresnel equations give for unpolarised light (here \
+                     r_s^2 = {r_s2} and r_p^2 = {r_p2}, with cos(theta_t) from Snell's law)"
                 )
             }
         };
         Some(format!(
             "{mistake}.\n  cos_i = {cos_i}, eta = {eta}: your fresnel_dielectric gave {f}, \
-             the reflectance is {expected}"
+             the reflectance is {reflectance}"
         ))
-    }
-
-    fn check_fresnel(cos_i: f32, eta: f32) {
-        if let Some(mistake) = fresnel_mistake(cos_i, eta, fresnel_dielectric(cos_i, eta)) {
-            panic!("fresnel_dielectric: {mistake}");
-        }
     }
 
     #[test]
     fn exercise_fresnel_matches_known_values() {
-        // Normal incidence: ((n1 - n2) / (n1 + n2))^2 = 0.04 for air to glass of 1.5.
-        check_fresnel(1.0, 1.0 / 1.5);
-        check_fresnel(1.0, 1.5);
-        assert_relative_eq!(fresnel_dielectric(1.0, 1.0 / 1.5), 0.04, epsilon = 1e-6);
-        // Brewster's angle, tan(theta_B) = 1.5, where r_p vanishes; oblique angles either way.
-        check_fresnel(1.5f32.atan().cos(), 1.0 / 1.5);
-        for cos_i in [0.9f32, 0.5, 0.2] {
-            check_fresnel(cos_i, 1.0 / 1.5);
-            check_fresnel(cos_i, 1.33);
+        for case in &REFLECTIONS {
+            if let Some(mistake) = fresnel_mistake(case, fresnel_dielectric(case.cos_i, case.eta)) {
+                panic!("fresnel_dielectric: {mistake}");
+            }
         }
-        // Grazing incidence reflects everything.
-        check_fresnel(0.0, 1.0 / 1.5);
+    }
+
+    /// Fails unless `fresnel_dielectric(cos_i, eta)` reflects everything, for a `cos_i` beyond
+    /// the critical angle of `eta`.
+    fn check_total_reflection(cos_i: f32, eta: f32) {
+        let f = fresnel_dielectric(cos_i, eta);
+        if !f.is_finite() || (f - 1.0).abs() > 1e-5 {
+            let critical = critical_angle(eta, 1.0).expect("eta above 1 has a critical angle");
+            panic!(
+                "fresnel_dielectric: at {:.4} rad, beyond the critical angle {critical:.4}, \
+                 sin(theta_t) = eta sin(theta_i) would be {:.4}, above 1: there is no refracted \
+                 ray and all the light is reflected (total internal reflection), so the \
+                 reflectance is 1.\n  cos_i = {cos_i}, eta = {eta}: your fresnel_dielectric \
+                 gave {f}",
+                cos_i.acos(),
+                eta * (1.0 - cos_i * cos_i).sqrt()
+            );
+        }
     }
 
     #[test]
@@ -339,16 +413,12 @@ mod tests {
             1.5,
             std::f32::consts::FRAC_PI_2,
         ] {
-            check_fresnel(theta.cos(), 1.5);
+            check_total_reflection(theta.cos(), 1.5);
         }
+        // Out of water, beyond its critical angle of 0.85 rad.
+        check_total_reflection(0.5, 1.33);
+        check_total_reflection(0.2, 1.33);
         // The reflectance rises steeply but continuously to 1 at the critical angle.
-        check_fresnel((critical - 1e-3).cos(), 1.5);
-        let below = fresnel_dielectric((critical - 1e-3).cos(), 1.5);
-        assert!(
-            below > 0.5 && below < 1.0,
-            "fresnel_dielectric: just inside the critical angle the reflectance is between 0.5 \
-             and 1, not {below}"
-        );
         let at = fresnel_dielectric(critical.cos(), 1.5);
         assert!(
             at.is_finite() && at > 0.9,
@@ -359,7 +429,14 @@ mod tests {
     #[test]
     fn exercise_fresnel_at_index_one_reflects_nothing() {
         for cos_i in [0.0f32, 1e-7, 0.5, 1.0] {
-            check_fresnel(cos_i, 1.0);
+            let f = fresnel_dielectric(cos_i, 1.0);
+            assert!(
+                f.abs() <= 1e-6,
+                "fresnel_dielectric: with eta = 1 both sides have the same index: there is no \
+                 interface, and nothing is reflected at any angle, even at grazing incidence \
+                 (cos_i = 0), where the formulas divide 0 by 0.\n  cos_i = {cos_i}, eta = 1: \
+                 your fresnel_dielectric gave {f}, the reflectance is 0"
+            );
         }
     }
 

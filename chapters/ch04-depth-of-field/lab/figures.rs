@@ -246,7 +246,7 @@ fn naive_against_correct(out: &Path, quality: &Quality, gallery: &Gallery) -> an
             LensWarp::Naive,
             "naive warp r = ξ2: too bright in the middle",
         ),
-        (LensWarp::Polar, "polar warp r = √ξ2"),
+        (LensWarp::Polar, "corrected polar warp"),
         (LensWarp::Concentric, "concentric warp (Mitsuba's)"),
     ];
     // The full pictures of the two extremes; the details below show all three warps.

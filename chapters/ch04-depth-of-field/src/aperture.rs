@@ -68,7 +68,7 @@ impl Aperture {
 pub enum LensWarp {
     /// Shirley and Chiu's concentric map: uniform, little distortion; Mitsuba's choice.
     Concentric,
-    /// Polar coordinates with `r = √ξ2`: uniform.
+    /// Polar coordinates with the radius that makes them uniform (chapter 02's exercise).
     Polar,
     /// Polar coordinates with `r = ξ2`: **not** uniform, too many points near the centre, so
     /// blurred highlights come out too bright in their middle. Kept to show the mistake.

@@ -1,8 +1,9 @@
 //! Which warp of chapter 02 puts the points on a disc light.
 //!
 //! Three ways to turn `u` into a point of the unit disc, from chapter 02: Shirley and Chiu's
-//! concentric map and the polar map `r = √ξ2` are uniform by area; the lecture's first try,
-//! `r = ξ2`, is not: it crowds the centre, with density `1 / (2π r)`. A disc light sampled
+//! concentric map and the polar map whose radius chapter 02's exercise derives are uniform by
+//! area; the lecture's first try, `r = ξ2`, is not: it crowds the centre, with density
+//! `1 / (2π r)`. A disc light sampled
 //! with it still *claims* the uniform density `1 / area`, which is exactly the lecture's
 //! mistake, and the estimate then weights the middle of the light too much: the penumbra of a
 //! shadow edge comes out wrong and the irradiance below the light too bright.
@@ -20,7 +21,7 @@ pub enum DiscWarp {
     /// choice, and the default).
     #[default]
     Concentric,
-    /// Polar coordinates with `r = √ξ2`: uniform.
+    /// Polar coordinates with the radius that makes them uniform (chapter 02's exercise).
     Polar,
     /// Polar coordinates with `r = ξ2`: **not** uniform, yet sampled as if it were. Kept to
     /// show the mistake.

@@ -92,7 +92,8 @@ fn uniform_disc(point: WarpPoint) -> f32 {
 
 #[test]
 fn a_slightly_wrong_radius_is_caught() {
-    // r = ξ2^0.45 instead of ξ2^0.5: only a little too far out.
+    // The radius a little too far out for every ξ2 (a slightly smaller power of ξ2 than the
+    // right one), a mistake too small to see in a scatter plot.
     let result = broken(
         unit_disc(),
         |u| {

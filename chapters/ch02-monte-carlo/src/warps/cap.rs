@@ -20,9 +20,6 @@ use std::f32::consts::TAU;
 
 use glam::{Vec2, Vec3};
 
-use super::disc::azimuth;
-use super::sphere::one_minus_cos_theta;
-
 // ANCHOR: spherical_cap_pdf
 /// The density of [`sample_spherical_cap`] per unit solid angle, for directions inside the
 /// cap of directions within `θ_max` of +z (`-1 ≤ cos_theta_max < 1`): every direction of the
@@ -56,19 +53,11 @@ pub fn sample_spherical_cap(u: Vec2, cos_theta_max: f32) -> Vec3 {
 }
 // ANCHOR_END: spherical_cap
 
-/// The `u` that [`sample_spherical_cap`] maps to `d`, for the round trip of the tests and for
-/// chapter 07.
-pub fn invert_spherical_cap(d: Vec3, cos_theta_max: f32) -> Vec2 {
-    Vec2::new(
-        azimuth(d.truncate()) / TAU,
-        one_minus_cos_theta(d) / (1.0 - cos_theta_max),
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::chi2::{chi2_test, significance_level};
+    use crate::warps::disc::azimuth;
     use crate::warps::test_support::{edge_points, integrate_over_sphere, interior_grid};
     use crate::warps::{Warp, sample_uniform_sphere};
     use approx::assert_relative_eq;
@@ -76,14 +65,28 @@ mod tests {
 
     const CAPS: [f32; 5] = [-1.0, -0.5, 0.0, 0.8, 0.999_9];
 
-    /// What is wrong with `pdf`, an answer to `spherical_cap_pdf(cos_max)`, in words; `None`
-    /// if it is right.
-    fn cap_pdf_mistake(cos_max: f32, pdf: f32) -> Option<String> {
-        let solid_angle = 2.0 * PI * (1.0 - f64::from(cos_max));
-        let expected = 1.0 / solid_angle;
+    /// The smallest cap an `f32` `cos θ_max` can describe: the largest float below 1, so that
+    /// `1 - cos θ_max = 6e-8`. Its directions lie about 2.4e-4 radians from the pole.
+    const TINY_CAP: f32 = 0.999_999_94;
+
+    /// The density of a uniform direction of the cap of each `cos θ_max`, worked out
+    /// beforehand from the cap's solid angle (to 7 digits, for the `f32` value of `cos θ_max`).
+    const CAP_DENSITIES: [(f32, f64); 6] = [
+        (0.0, 0.159_154_9),
+        (0.8, 0.795_774_8),
+        (-0.5, 0.106_103_3),
+        (-1.0, 0.079_577_47),
+        (0.999_9, 1_591.285),
+        (TINY_CAP, 2_670_177.0),
+    ];
+
+    /// What is wrong with `pdf`, an answer to `spherical_cap_pdf(cos_max)` whose right value
+    /// is `expected`, in words; `None` if it is right.
+    fn cap_pdf_mistake(cos_max: f32, expected: f64, pdf: f32) -> Option<String> {
         let pdf = f64::from(pdf);
-        // The density is constant over the cap, so its integral is the density times Ω.
-        let integral = pdf * solid_angle;
+        // The density is constant over the cap, so its integral over the cap is its ratio
+        // to the right density.
+        let integral = pdf / expected;
         if (integral - 1.0).abs() < 1e-5 {
             return None;
         }
@@ -119,8 +122,9 @@ mod tests {
 
     #[test]
     fn exercise_spherical_cap_pdf_integrates_to_one() {
-        for cos_max in [0.0, 0.8, -0.5, -1.0, 0.999_9] {
-            if let Some(mistake) = cap_pdf_mistake(cos_max, spherical_cap_pdf(cos_max)) {
+        for (cos_max, expected) in &CAP_DENSITIES[..4] {
+            let pdf = spherical_cap_pdf(*cos_max);
+            if let Some(mistake) = cap_pdf_mistake(*cos_max, *expected, pdf) {
                 panic!("spherical_cap_pdf: {mistake}");
             }
         }
@@ -142,21 +146,59 @@ mod tests {
 
     #[test]
     fn exercise_spherical_cap_pdf_of_a_tiny_cap() {
-        // The smallest cap an f32 cos θ_max can describe: 1 - cos θ_max = 6e-8.
-        let cos_max = f32::from_bits(0x3f7f_ffff);
-        if let Some(mistake) = cap_pdf_mistake(cos_max, spherical_cap_pdf(cos_max)) {
-            panic!("spherical_cap_pdf of the tiniest cap: {mistake}");
+        for (cos_max, expected) in &CAP_DENSITIES[4..] {
+            let pdf = spherical_cap_pdf(*cos_max);
+            if let Some(mistake) = cap_pdf_mistake(*cos_max, *expected, pdf) {
+                panic!("spherical_cap_pdf of a tiny cap: {mistake}");
+            }
         }
     }
 
-    /// What is wrong with `d = sample_spherical_cap(u, cos_max)`, in words; `None` if it is
-    /// the lecture's uniform direction with `φ = 2π ξ1` and `ξ2 = 0` at the pole.
-    fn cap_mistake(u: Vec2, cos_max: f32, d: Vec3) -> Option<String> {
-        let (u64x, u64y, m) = (f64::from(u.x), f64::from(u.y), f64::from(cos_max));
-        let z = 1.0 - u64y * (1.0 - m);
-        let phi = 2.0 * PI * u64x;
-        let sin = (u64y * (1.0 - m) * (1.0 + z)).sqrt();
-        let expected = Vec3::new((sin * phi.cos()) as f32, (sin * phi.sin()) as f32, z as f32);
+    /// Directions of [`sample_spherical_cap`] worked out beforehand (in `f64`, to 8 decimals):
+    /// `(ξ, cos θ_max, the direction)`.
+    const CAP_DIRECTIONS: [(Vec2, f32, Vec3); 7] = [
+        (
+            Vec2::new(0.1, 0.3),
+            -0.5,
+            Vec3::new(0.675_662_4, 0.490_897_48, 0.549_999_98),
+        ),
+        (
+            Vec2::new(0.6, 0.85),
+            -0.5,
+            Vec3::new(-0.777_824_63, -0.565_122_85, -0.275_000_04),
+        ),
+        (
+            Vec2::new(0.1, 0.3),
+            0.8,
+            Vec3::new(0.276_015_9, 0.200_537_3, 0.94),
+        ),
+        (
+            Vec2::new(0.6, 0.85),
+            0.8,
+            Vec3::new(-0.451_24, -0.327_845_2, 0.83),
+        ),
+        (
+            Vec2::new(0.1, 0.3),
+            0.999_9,
+            Vec3::new(0.006_267_09, 0.004_553_31, 0.999_97),
+        ),
+        (
+            Vec2::new(0.6, 0.85),
+            0.999_9,
+            Vec3::new(-0.010_548_94, -0.007_664_26, 0.999_915),
+        ),
+        // Half way into the tiniest cap: sin θ = 2^-12, and cos θ rounds to 1.
+        (
+            Vec2::new(0.0, 0.5),
+            TINY_CAP,
+            Vec3::new(2.441_406_2e-4, 0.0, 1.0),
+        ),
+    ];
+
+    /// What is wrong with `d = sample_spherical_cap(u, cos_max)`, where the lecture's uniform
+    /// direction (`φ = 2π ξ1`, `ξ2 = 0` at the pole) is `expected`, in words; `None` if it is
+    /// right.
+    fn cap_mistake(u: Vec2, cos_max: f32, expected: Vec3, d: Vec3) -> Option<String> {
         if d.is_finite() && (d - expected).length() < 1e-6 {
             return None;
         }
@@ -169,15 +211,11 @@ mod tests {
                 "it lies outside the cap: cos θ = {} is below cos θ_max",
                 d.z
             )
-        } else if (f64::from(d.z) - (m + u64y * (1.0 - m))).abs() < 1e-5 && u.y != 0.5 {
-            "ξ2 = 0 gives the rim and ξ2 → 1 the pole: the chapter's warps start at the pole, \
-             ξ2 = 0"
-                .to_string()
-        } else if (f64::from(d.z) - z).abs() > 1e-5 {
+        } else if (d.z - expected.z).abs() > 1e-5 {
             format!(
-                "cos θ = {} is not where a uniform direction's height lies: which coordinate is \
-                 uniform over the cap, and over what range?",
-                d.z
+                "cos θ = {} is not where a uniform direction's height lies (it should be {}): \
+                 which coordinate is uniform over the cap, and over what range?",
+                d.z, expected.z
             )
         } else if (d.truncate().length() - expected.truncate().length()).abs() > 1e-6 {
             format!(
@@ -196,28 +234,62 @@ mod tests {
         ))
     }
 
+    /// What is wrong with `d = sample_spherical_cap(u, cos_max)` that every direction of the
+    /// cap shows, in words; `None` if nothing is.
+    fn cap_property_mistake(u: Vec2, cos_max: f32, d: Vec3) -> Option<String> {
+        let pole = u.y == 0.0;
+        let mistake = if !d.is_finite() {
+            "it is not a finite direction".to_string()
+        } else if (d.length() - 1.0).abs() > 1e-5 {
+            format!("it has length {}, not 1", d.length())
+        } else if d.z < cos_max - 1e-6 {
+            format!(
+                "it lies outside the cap: cos θ = {} is below cos θ_max",
+                d.z
+            )
+        } else if pole && (d.z - cos_max).abs() < 1e-5 {
+            "ξ2 = 0 gives the rim and ξ2 → 1 the pole: the chapter's warps start at the pole, \
+             ξ2 = 0"
+                .to_string()
+        } else if pole && d.z < 1.0 - 1e-6 {
+            format!(
+                "ξ2 = 0 should give the pole, cos θ = 1, not cos θ = {}",
+                d.z
+            )
+        } else if d.truncate().length() > 1e-3
+            && (azimuth(d.truncate()) / TAU - u.x).abs() > 1e-4
+            && u.x < 0.999
+        {
+            format!(
+                "its azimuth is {:.4} of a turn, where φ = 2π ξ1 is {:.4} of a turn, measured \
+                 from +x towards +y",
+                azimuth(d.truncate()) / TAU,
+                u.x
+            )
+        } else {
+            return None;
+        };
+        Some(format!(
+            "{mistake}.\n  ξ = {u}, cos θ_max = {cos_max}: your sample_spherical_cap gave {d}"
+        ))
+    }
+
     #[test]
     fn exercise_spherical_cap_follows_the_chapters_parametrisation() {
-        // The height first, everywhere: a wrong height also spoils sin θ, and it is the cause.
-        let cases = CAPS.into_iter().flat_map(|m| {
-            edge_points()
-                .into_iter()
-                .chain(interior_grid(12))
-                .map(move |u| (u, m))
-        });
-        for (u, cos_max) in cases {
-            let d = sample_spherical_cap(u, cos_max);
-            let z = 1.0 - f64::from(u.y) * (1.0 - f64::from(cos_max));
-            if !d.is_finite() || (f64::from(d.z) - z).abs() > 1e-5 {
-                let mistake = cap_mistake(u, cos_max, d).expect("a wrong height is a mistake");
-                panic!("sample_spherical_cap: {mistake}");
-            }
-        }
+        // What every direction shows first, everywhere: a wrong height also spoils sin θ.
         for cos_max in CAPS {
             for u in edge_points().into_iter().chain(interior_grid(12)) {
-                if let Some(mistake) = cap_mistake(u, cos_max, sample_spherical_cap(u, cos_max)) {
+                let d = sample_spherical_cap(u, cos_max);
+                if let Some(mistake) = cap_property_mistake(u, cos_max, d) {
                     panic!("sample_spherical_cap: {mistake}");
                 }
+            }
+        }
+        for (u, cos_max, expected) in CAP_DIRECTIONS {
+            if let Some(mistake) =
+                cap_mistake(u, cos_max, expected, sample_spherical_cap(u, cos_max))
+            {
+                panic!("sample_spherical_cap: {mistake}");
             }
         }
         // With cos θ_max = -1 the cap is the whole sphere.
@@ -232,11 +304,8 @@ mod tests {
 
     #[test]
     fn exercise_spherical_cap_keeps_a_tiny_cap_in_shape() {
-        // The smallest cap an f32 cos θ_max can describe: the largest float below 1, so that
-        // 1 - cos θ_max = 6e-8. Its directions lie about 2.4e-4 radians from the pole.
-        let cos_max = f32::from_bits(0x3f7f_ffff);
-        let u = Vec2::new(0.0, 0.5);
-        if let Some(mistake) = cap_mistake(u, cos_max, sample_spherical_cap(u, cos_max)) {
+        let (u, cos_max, expected) = CAP_DIRECTIONS[6];
+        if let Some(mistake) = cap_mistake(u, cos_max, expected, sample_spherical_cap(u, cos_max)) {
             panic!("sample_spherical_cap, the tiniest cap: {mistake}");
         }
     }
@@ -244,8 +313,9 @@ mod tests {
     #[test]
     fn exercise_spherical_cap_has_its_density() {
         // The pdf is yours too (the exercise before): it must integrate to one...
-        for cos_max in [-0.5, 0.0, 0.8] {
-            if let Some(mistake) = cap_pdf_mistake(cos_max, spherical_cap_pdf(cos_max)) {
+        for (cos_max, expected) in &CAP_DENSITIES[..3] {
+            let pdf = spherical_cap_pdf(*cos_max);
+            if let Some(mistake) = cap_pdf_mistake(*cos_max, *expected, pdf) {
                 panic!("spherical_cap_pdf: {mistake}");
             }
         }
@@ -283,18 +353,6 @@ mod tests {
                         [Vec2::new(0.0, cos_max), Vec2::ONE],
                     )
                 );
-            }
-        }
-    }
-
-    #[test]
-    fn inverse_round_trips() {
-        for cos_max in CAPS {
-            for u in interior_grid(20) {
-                let d = sample_spherical_cap(u, cos_max);
-                let back = invert_spherical_cap(d, cos_max);
-                assert_relative_eq!(back, u, epsilon = 1e-4);
-                assert_relative_eq!(sample_spherical_cap(back, cos_max), d, epsilon = 1e-5);
             }
         }
     }

@@ -64,12 +64,14 @@ mod tests {
         for u in edge_points().into_iter().chain(interior_grid(30)) {
             let d = sample_cosine_hemisphere(u);
             let problem = if !d.is_finite() {
-                "is not a number: at the rim of the disc, 1 - x² - y² can come out a hair below 0"
+                "is not a number: at the rim of the disc rounding can carry the point a hair \
+                 outside it, where there is no hemisphere above it to lift it to; the lift has to \
+                 give the horizon there"
                     .to_string()
             } else if (d.length() - 1.0).abs() >= 1e-5 {
                 format!(
                     "has length {}, not 1: the disc point has to be lifted onto the unit \
-                     hemisphere, where x² + y² + z² = 1",
+                     hemisphere, whose points are all at distance 1 from the centre",
                     d.length()
                 )
             } else if d.z < 0.0 {

@@ -54,13 +54,13 @@ pub mod triangle;
 #[cfg(test)]
 pub(crate) mod test_support;
 
-pub use cap::{invert_spherical_cap, sample_spherical_cap, spherical_cap_pdf};
+pub use cap::{sample_spherical_cap, spherical_cap_pdf};
 pub use catalogue::{Domain, Warp, WarpPoint};
 pub use concentric::{invert_uniform_disc_concentric, sample_uniform_disc_concentric};
 pub use cosine::{cosine_hemisphere_pdf, invert_cosine_hemisphere, sample_cosine_hemisphere};
 pub use disc::{
-    disc_naive_pdf, invert_disc_naive, invert_uniform_disc_polar, sample_disc_naive,
-    sample_uniform_disc_polar, uniform_disc_pdf,
+    disc_naive_pdf, invert_disc_naive, sample_disc_naive, sample_uniform_disc_polar,
+    uniform_disc_pdf,
 };
 pub use lobe::{cos_lobe_pdf, invert_cos_lobe, sample_cos_lobe};
 pub use parallelogram::{invert_parallelogram, parallelogram_pdf, sample_parallelogram};

@@ -190,8 +190,8 @@ fn exercise_disc_light_point_lies_on_the_disc_with_the_uniform_density() {
 
 #[test]
 fn exercise_disc_light_point_follows_the_lectures_parametrisation() {
-    // ξ1 is the angle (a quarter turn goes to the bitangent), ξ2 the squared relative radius,
-    // as chapter 02's polar map.
+    // ξ1 is the angle (a quarter turn goes to the bitangent), ξ2 picks the radius as in
+    // chapter 02's polar map.
     let disc = slanted_disc();
     let radius = disc.radii().x;
     for u in [Vec2::new(0.25, 0.64)]
@@ -210,14 +210,14 @@ fn exercise_disc_light_point_follows_the_lectures_parametrisation() {
             "the radius came out as R ξ2: rings of equal width then get equal shares of the \
              points, but an inner ring has less area than an outer one"
                 .to_string()
-        } else if (r - u.y.sqrt()).abs() < 1e-4 {
+        } else if (r - q.length() / radius).abs() < 1e-4 {
             "the radius is right but the angle is not: ξ1 is the share of a turn, measured from \
              the disc's tangent towards its bitangent"
                 .to_string()
         } else {
             format!(
                 "the point should lie {} of the radius from the centre",
-                u.y.sqrt()
+                q.length() / radius
             )
         };
         panic!(

@@ -4,7 +4,7 @@
 //! [`fresnel_conductor_rgb`](crate::bsdf::conductor::fresnel_conductor_rgb): one formula for
 //! both.
 
-use ch01_whitted::optics::fresnel_dielectric;
+use ch01_whitted::optics::{fresnel_dielectric, reflect};
 use glam::Vec3;
 
 /// What light meeting a dielectric interface does, Mitsuba's `fresnel()`.
@@ -54,9 +54,10 @@ pub fn refract_away(w: Vec3, m: Vec3, fresnel: &DielectricFresnel) -> Vec3 {
 }
 
 /// The mirror image of `w` about the facet normal `m`, both pointing away from the surface:
-/// chapter 01's `optics::reflect(-w, m)`, written for directions that leave the surface.
+/// chapter 01's `optics::reflect`, which follows the ray (its `d` points at the surface), fed
+/// the ray that arrives along `-w`.
 pub fn reflect_away(w: Vec3, m: Vec3) -> Vec3 {
-    2.0 * w.dot(m) * m - w
+    reflect(-w, m)
 }
 
 #[cfg(test)]
