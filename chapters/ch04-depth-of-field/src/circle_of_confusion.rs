@@ -4,8 +4,8 @@
 //! **In Mitsuba's terms** (aperture radius `R`, focus distance `d_f`, no focal length): the
 //! rays through one film position leave the lens disc of radius `R` and all meet at the focus
 //! point on the plane `z = d_f`. Look at it the other way round: which film positions see a
-//! point `Q` at depth `d`? A ray from lens point `P_l` through `Q` reaches the focal plane at
-//! `P_f = P_l + (Q - P_l) d_f / d = Q d_f / d + P_l (1 - d_f / d)`. As `P_l` runs over the
+//! point `Q` at depth `d`? A ray from lens point `P_l` through `Q` goes on to the focal plane
+//! and meets it at some point `P_f`: where, by similar triangles? As `P_l` runs over the
 //! lens disc, `P_f` runs over a disc on the focal plane: of which radius? The film sees the
 //! focal plane through the pinhole at scale `1 / d_f` (tangent units, the pinhole's `z = 1`
 //! plane), so the point's image is a disc whose diameter, in tangent units, is the exercise
@@ -144,12 +144,14 @@ mod tests {
              has diameter 0, not {at_focus}"
         );
         let far = circle_of_confusion(0.3, 4.0, 1e9);
-        let limit = 2.0 * 0.3 / 4.0;
+        // The limit for a lens of radius 0.3 focused at 4, worked out beforehand.
+        let limit = 0.15;
         assert!(
             (far - limit).abs() < 1e-6,
             "circle_of_confusion: far behind the focus the rays from a point are almost \
              parallel, and the circle tends to the lens's diameter seen from the focus \
-             distance, 2 R / d_f = {limit}; yours is {far} at depth 1e9{}",
+             distance, {limit} for a lens of radius 0.3 focused at 4; yours is {far} at depth \
+             1e9{}",
             if (2.0 * far - limit).abs() < 1e-6 {
                 " (half: the circle's diameter is asked, not its radius)"
             } else {
@@ -211,13 +213,26 @@ mod tests {
         ThinLensCamera::new(pinhole, Lens::new(0.15, 4.0).unwrap())
     }
 
-    /// The strip of the lens, as a share of its diameter, from which the rays through one
-    /// film position hit a sphere of radius `rho` at `depth`: a ray from lens point `x_l`
-    /// meets the depth `d` at `x_l (1 - d / d_f)` plus a term of the film position alone, so
-    /// the lens points whose rays pass within `rho` of the axis span `2 rho d_f / |d_f - d|`.
-    fn strip_share(camera: &ThinLensCamera, rho: f32, depth: f32) -> f32 {
-        let (r, focus) = (camera.lens.aperture_radius, camera.lens.focus_distance);
-        (2.0 * rho * focus / (focus - depth).abs() / (2.0 * r)).min(1.0)
+    /// The strip of the lens, as a share of its diameter, from which the rays through the
+    /// middle film position hit `sphere` (on the axis): the lens points on the horizontal
+    /// diameter that see it form one stretch around the centre, whose end bisection finds.
+    fn strip_share(camera: &ThinLensCamera, sphere: &Sphere) -> f32 {
+        let r = camera.lens.aperture_radius;
+        let middle = camera.pinhole.width as f32 / 2.0;
+        let sees = |x: f32| seen_from(camera, sphere, &[Vec2::new(x, 0.0)], middle);
+        if sees(r) {
+            return 1.0;
+        }
+        let (mut inside, mut outside) = (0.0, r);
+        for _ in 0..40 {
+            let x = 0.5 * (inside + outside);
+            if sees(x) {
+                inside = x;
+            } else {
+                outside = x;
+            }
+        }
+        inside / r
     }
 
     #[test]
@@ -232,7 +247,7 @@ mod tests {
         let rho = 0.003;
         for depth in [1.5f32, 4.0, 10.0] {
             let sphere = Sphere::new(Vec3::new(0.0, 0.0, depth), rho);
-            let share = strip_share(&camera, rho, depth);
+            let share = strip_share(&camera, &sphere);
             let too_sparse = format!(
                 "Through one film position, the rays that hit a sphere of radius {rho} at depth \
                  {depth} leave from a strip of the lens only {:.4} wide, 1/{:.0} of its \

@@ -75,7 +75,8 @@ fn exercise_tent_filter() {
         } else if x < 0.0 && (got - tent_1d(-x, radius)).abs() > 1e-6 {
             "the tent is symmetric: a sample left of the pixel centre weighs what one as far to \
              the right does"
-        } else if (got - (1.0 - x.abs())).abs() <= 1e-6 && radius != 1.0 {
+        } else if radius != 1.0 && (got - tent_1d(x, 1.0)).abs() <= 1e-6 {
+            // The same value as a tent of radius 1 gives at this x: the radius changed nothing.
             "the slope ignores the radius: the tent falls from 1 at the centre to 0 at the radius"
         } else {
             "the tent is 1 at the centre and falls in a straight line to 0 at the radius"
