@@ -92,19 +92,29 @@ pub fn coverage_mse(kind: PixelSamplerKind, spp: u64, repetitions: u64, edge: Ha
 mod tests {
     use super::*;
 
-    /// The area by a fine midpoint rule, for comparison.
-    fn area_by_columns(edge: HalfPlane) -> f64 {
-        let n = 200_000;
-        let (m, b) = (f64::from(edge.slope), f64::from(edge.intercept));
-        (0..n)
-            .map(|i| (m * ((i as f64 + 0.5) / n as f64) + b).clamp(0.0, 1.0))
-            .sum::<f64>()
-            / n as f64
+    /// The share of a 100 x 100 grid of points, one in the middle of each cell, that lies
+    /// below the edge: the area to about 1/100 of the pixel's width along the edge, a rough
+    /// check only.
+    fn area_by_grid(edge: HalfPlane) -> f64 {
+        let n = 100;
+        let below = (0..n * n)
+            .filter(|&i| {
+                let cell = Vec2::new((i % n) as f32, (i / n) as f32);
+                edge.contains((cell + Vec2::splat(0.5)) / n as f32)
+            })
+            .count();
+        below as f64 / (n * n) as f64
     }
 
-    /// What is wrong with `got = edge.coverage()`, in words; `None` if right.
-    fn coverage_mistake(edge: HalfPlane, expected: f64, got: f64) -> Option<String> {
-        if (got - expected).abs() <= 1e-6 {
+    /// What is wrong with `got = edge.coverage()`, which should be `expected` within
+    /// `tolerance`, in words; `None` if right.
+    fn coverage_mistake(
+        edge: HalfPlane,
+        expected: f64,
+        tolerance: f64,
+        got: f64,
+    ) -> Option<String> {
+        if (got - expected).abs() <= tolerance {
             return None;
         }
         let (m, b) = (f64::from(edge.slope), f64::from(edge.intercept));
@@ -135,22 +145,23 @@ mod tests {
     #[test]
     fn exercise_edge_coverage_is_the_exact_area() {
         // Horizontal, the diagonal, through a corner, across both sides, above and below the
-        // pixel, falling, in at the bottom and out at the top, out through top and bottom.
+        // pixel, falling, in at the bottom and out at the top, out through top and bottom:
+        // (slope, intercept, area), the areas worked out beforehand in f64 from the f32 slope
+        // and intercept.
         let cases = [
-            (0.0, 0.3),
-            (1.0, 0.0),
-            (2.0, 0.0),
-            (0.5, 0.25),
-            (0.0, 1.5),
-            (-1.0, -0.1),
-            (-0.2, 0.9),
-            (3.0, -1.0),
-            (-4.0, 2.5),
+            (0.0, 0.3, 0.30000001192092896),
+            (1.0, 0.0, 0.5),
+            (2.0, 0.0, 0.75),
+            (0.5, 0.25, 0.5),
+            (0.0, 1.5, 1.0),
+            (-1.0, -0.1, 0.0),
+            (-0.2, 0.9, 0.799999974668026),
+            (3.0, -1.0, 0.5),
+            (-4.0, 2.5, 0.5),
         ];
-        for (slope, intercept) in cases {
+        for (slope, intercept, expected) in cases {
             let edge = HalfPlane { slope, intercept };
-            let expected = area_by_columns(edge);
-            if let Some(mistake) = coverage_mistake(edge, expected, edge.coverage()) {
+            if let Some(mistake) = coverage_mistake(edge, expected, 1e-9, edge.coverage()) {
                 panic!("coverage: {mistake}");
             }
         }
@@ -166,10 +177,28 @@ mod tests {
                 slope: 8.0 * numbers.get_1d() - 4.0,
                 intercept: 3.0 * numbers.get_1d() - 1.0,
             };
-            let expected = area_by_columns(edge);
-            if let Some(mistake) = coverage_mistake(edge, expected, edge.coverage()) {
-                panic!("coverage: {mistake}");
+            // Roughly the share of a fine grid of points below the edge ...
+            let rough = area_by_grid(edge);
+            if let Some(mistake) = coverage_mistake(edge, rough, 0.02, edge.coverage()) {
+                panic!("coverage: {mistake} (roughly: counted on a 100 x 100 grid)");
             }
+            // ... and exactly what the pixel turned half round about its centre leaves above
+            // the same edge: the two areas make the whole pixel.
+            let (m, b) = (edge.slope, edge.intercept);
+            let turned = HalfPlane {
+                slope: m,
+                intercept: 1.0 - m - b,
+            };
+            let (area, other) = (edge.coverage(), turned.coverage());
+            assert!(
+                (area + other - 1.0).abs() <= 1e-6,
+                "coverage: the part of the pixel below the edge of slope {m}, intercept {b} \
+                 ({area}) and the part below the edge turned half round about the pixel's \
+                 centre (slope {m}, intercept {}: {other}) make the whole pixel, but they add \
+                 up to {}",
+                turned.intercept,
+                area + other
+            );
         }
     }
 }

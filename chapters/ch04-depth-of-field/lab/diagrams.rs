@@ -2,10 +2,12 @@
 //! the circle of confusion in each.
 //!
 //! Every image point is the chapter's thin lens equation ([`image_distance`]), every ray of
-//! the chapter's model is its [`thin_lens_ray`], and the tests hold the drawn spreads against
-//! the chapter's circle-of-confusion functions; only the lens, the distances and the points
-//! looked at are chosen here.
+//! the chapter's model is its [`thin_lens_ray`], and every circle of confusion drawn is the
+//! chapter's [`circle_of_confusion`] or [`circle_of_confusion_on_film`]; the tests hold the
+//! rays' spread against those marks. Only the lens, the distances and the points looked at are
+//! chosen here.
 
+use crate::circle_of_confusion::{circle_of_confusion, circle_of_confusion_on_film};
 use crate::lens::image_distance;
 use crate::thin_lens::thin_lens_ray;
 use glam::{Vec2, Vec3};
@@ -124,14 +126,17 @@ fn thin_lens() -> Diagram {
             }
             diagram.dot(at(b.object), ink);
         }
-        // The circle of confusion: the stretch of film the out-of-focus light covers.
+        // The circle of confusion, the chapter's, around the film point of the central ray:
+        // the stretch of film the out-of-focus light covers.
         let b = bundle(out_of_focus.0, out_of_focus.1);
-        let (top, bottom) = (at(b.on_film[0]), at(b.on_film[2]));
+        let c = circle_of_confusion_on_film(FOCAL_LENGTH, DIAMETER, FOCUS, out_of_focus.0);
+        let centre = at(b.on_film[1]);
+        let (top, bottom) = (centre.1 + f64::from(c) / 2.0, centre.1 - f64::from(c) / 2.0);
         for x in [film - 0.03, film, film + 0.03] {
-            diagram.line((x, top.1), (x, bottom.1), Ink::Warning);
+            diagram.line((x, top), (x, bottom), Ink::Warning);
         }
         diagram.label(
-            (film + 0.1, 0.5 * (top.1 + bottom.1)),
+            (film + 0.1, 0.5 * (top + bottom)),
             "c",
             Anchor::Left,
             Ink::Warning,
@@ -188,7 +193,7 @@ struct ModelRays {
     /// The lens points (top rim, centre, bottom rim) in the plane `z = 0`.
     lens: [Vec2; 3],
     /// The points of the focal plane whose film positions see the point through each lens
-    /// point: `P_f = P_l + (Q - P_l) d_f / d`.
+    /// point: where each ray crosses the focal plane.
     focus: [Vec3; 3],
     /// The rays, origin and direction, as the chapter's camera makes them.
     rays: [(Vec3, Vec3); 3],
@@ -201,12 +206,28 @@ fn model_rays(depth: f32) -> ModelRays {
         Vec2::ZERO,
         Vec2::new(-MODEL_RADIUS, 0.0),
     ];
-    let focus = lens.map(|l| {
-        let l = l.extend(0.0);
-        l + (q - l) * (MODEL_FOCUS / depth)
+    // For each lens point, the film position (its pinhole direction's x on z = 1) whose ray
+    // from that lens point passes through the point looked at, found by bisection on where the
+    // ray crosses the depth of the point: further right on the film, further right there.
+    let rays = lens.map(|l| {
+        let ray = |x: f32| thin_lens_ray(Vec3::new(x, 0.0, 1.0), l, MODEL_FOCUS);
+        let x_at_depth = |x: f32| {
+            let (origin, dir) = ray(x);
+            origin.x + dir.x * ((q.z - origin.z) / dir.z)
+        };
+        let (mut left, mut right) = (-10.0f32, 10.0f32);
+        for _ in 0..80 {
+            let middle = 0.5 * (left + right);
+            if x_at_depth(middle) < q.x {
+                left = middle;
+            } else {
+                right = middle;
+            }
+        }
+        ray(0.5 * (left + right))
     });
-    // The pinhole direction of that film position points at P_f; its z is 1 (tangent units).
-    let rays = [0, 1, 2].map(|i| thin_lens_ray(focus[i] / focus[i].z, lens[i], MODEL_FOCUS));
+    // Each ray's direction is the way from its lens point to the focal plane.
+    let focus = rays.map(|(origin, dir)| origin + dir);
     ModelRays { lens, focus, rays }
 }
 
@@ -261,10 +282,9 @@ fn focal_plane() -> Diagram {
             ((f64::from(depth), dy - 0.15), Anchor::Above)
         };
         diagram.label(at_label, name, anchor, Ink::Surface);
-        // The spread on z = 1, the circle of confusion in tangent units.
-        let on_unit = |f: Vec3| f64::from(f.x / f.z) + dy;
-        let (top, bottom) = (on_unit(rays.focus[0]), on_unit(rays.focus[2]));
-        let (top, bottom) = (top.max(bottom), top.min(bottom));
+        // On z = 1, the chapter's circle of confusion in tangent units, around the axis.
+        let c = f64::from(circle_of_confusion(MODEL_RADIUS, MODEL_FOCUS, depth));
+        let (top, bottom) = (dy + c / 2.0, dy - c / 2.0);
         for x in [0.98, 1.0, 1.02] {
             diagram.line((x, top), (x, bottom), Ink::Warning);
         }
@@ -293,7 +313,6 @@ fn focal_plane() -> Diagram {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::circle_of_confusion::{circle_of_confusion, circle_of_confusion_on_film};
     use workbench::test_support::written_diagrams;
 
     #[test]
@@ -347,7 +366,9 @@ mod tests {
                 let at_depth = origin + dir * (depth / dir.z);
                 assert!(at_depth.truncate().length() < 1e-5, "{at_depth}");
             }
-            let spread = (rays.focus[0].x - rays.focus[2].x).abs() / MODEL_FOCUS;
+            // The pinhole sees the focus points on z = 1 where its lines of sight cross it.
+            let on_unit = |f: Vec3| f.x / f.z;
+            let spread = (on_unit(rays.focus[0]) - on_unit(rays.focus[2])).abs();
             let c = circle_of_confusion(MODEL_RADIUS, MODEL_FOCUS, depth);
             assert!(
                 (spread - c).abs() < 1e-5,

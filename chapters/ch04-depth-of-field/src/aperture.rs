@@ -226,14 +226,9 @@ mod tests {
     }
 
     /// Whether `p` lies in the regular `blades`-gon turned by `rotation`, its edges included
-    /// with room for rounding: worked out here, so that the sampler's check does not lean on
-    /// the density of the exercise before it.
+    /// with room for rounding: where the density of the exercise before is not 0.
     fn inside_polygon(p: Vec2, blades: u32, rotation: f32) -> bool {
-        (0..blades).all(|k| {
-            let a = polygon_corner(k, blades, rotation);
-            let b = polygon_corner(k + 1, blades, rotation);
-            (b - a).perp_dot(p - a) >= -1e-5
-        })
+        sample_uniform_regular_polygon_pdf(p, blades, rotation) > 0.0
     }
 
     #[test]
@@ -297,48 +292,61 @@ mod tests {
         }
     }
 
+    /// The density inside the regular `blades`-gon, worked out beforehand from its area (see
+    /// `regular_polygon_area`), to 7 digits.
+    fn density_inside(blades: u32) -> f32 {
+        match blades {
+            3 => 0.7698004,
+            4 => 0.5,
+            5 => 0.4205849,
+            6 => 0.3849002,
+            8 => 0.3535534,
+            _ => unreachable!("no density worked out for {blades} blades"),
+        }
+    }
+
+    /// Where a point of the check lies: inside the polygon, on its edge or outside.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    enum Place {
+        Inside,
+        OnEdge,
+        Outside,
+    }
+
     /// What is wrong with `got = sample_uniform_regular_polygon_pdf(p, blades, rotation)`, in
-    /// words; `None` if right. `inside` says whether `p` is in the polygon.
+    /// words; `None` if right. `place` says where `p` lies, by construction.
     fn polygon_density_mistake(
         p: Vec2,
         blades: u32,
         rotation: f32,
-        inside: bool,
+        place: Place,
         got: f32,
     ) -> Option<String> {
         let area = regular_polygon_area(blades);
-        let expected = if inside { 1.0 / area } else { 0.0 };
+        let inside = place != Place::Outside;
+        let on_edge = place == Place::OnEdge;
+        let expected = if inside { density_inside(blades) } else { 0.0 };
         if (got - expected).abs() <= 1e-5 * expected.max(1.0) {
             return None;
         }
         let near = |a: f32, b: f32| (a - b).abs() <= 1e-5 * b.abs().max(1.0);
-        let unturned = |q: Vec2| {
-            (0..blades).all(|k| {
-                let a = polygon_corner(k, blades, 0.0);
-                let b = polygon_corner(k + 1, blades, 0.0);
-                (b - a).perp_dot(q - a) >= -1e-4
-            })
-        };
-        let on_edge = (0..blades).any(|k| {
-            let a = polygon_corner(k, blades, rotation);
-            let b = polygon_corner(k + 1, blades, rotation);
-            (b - a).perp_dot(p - a).abs() < 1e-4
-        });
+        // The same point in the polygon not turned, by your own density.
+        let unturned = sample_uniform_regular_polygon_pdf(p, blades, 0.0);
         let mistake = if !got.is_finite() {
             "the density is not a number".to_string()
         } else if inside && near(got, std::f32::consts::FRAC_1_PI) {
-            "inside, the density is one over the polygon's area, not over the disc's".to_string()
+            "inside, the points spread over the polygon's area, not over the disc's".to_string()
         } else if inside && near(got, 1.0) {
             format!(
-                "a density integrates to one over its shape: inside, it is one over the \
-                 polygon's area {area}"
+                "a density integrates to one over its shape, and this polygon's area is {area}, \
+                 not 1"
             )
         } else if inside && got == 0.0 && on_edge {
             "a point on the polygon's edge counts as inside: the sampler's points reach the \
              edges and corners, and there the density is not 0 (leave a little room for \
              rounding)"
                 .to_string()
-        } else if rotation != 0.0 && unturned(p) != inside && (got > 0.0) == unturned(p) {
+        } else if rotation != 0.0 && (got > 0.0) != inside && got == unturned {
             format!(
                 "the polygon is turned by the rotation {rotation}: its first corner is at that \
                  angle, and so is every other corner"
@@ -352,7 +360,10 @@ mod tests {
              to be tested"
                 .to_string()
         } else {
-            format!("inside, the density is one over the polygon's area {area}")
+            format!(
+                "inside, the density is the same everywhere and integrates to one over the \
+                 polygon (of area {area})"
+            )
         };
         Some(format!(
             "{mistake}.\n  sample_uniform_regular_polygon_pdf({p}, {blades} blades, rotation \
@@ -363,23 +374,23 @@ mod tests {
     #[test]
     fn exercise_polygon_density_inside_and_outside() {
         for (blades, rotation) in [(3, 0.0f32), (5, 0.4), (6, 0.0), (8, 1.0), (4, 0.3)] {
-            let mut points: Vec<(Vec2, bool)> = vec![(Vec2::ZERO, true)];
+            let mut points: Vec<(Vec2, Place)> = vec![(Vec2::ZERO, Place::Inside)];
             for k in 0..blades {
                 let corner = polygon_corner(k, blades, rotation);
                 let middle = 0.5 * (corner + polygon_corner(k + 1, blades, rotation));
                 points.extend([
-                    (0.9 * corner, true),
-                    (0.98 * middle, true),
-                    (corner, true),
-                    (middle, true),
-                    (1.03 * middle, false),
-                    (1.1 * corner, false),
+                    (0.9 * corner, Place::Inside),
+                    (0.98 * middle, Place::Inside),
+                    (corner, Place::OnEdge),
+                    (middle, Place::OnEdge),
+                    (1.03 * middle, Place::Outside),
+                    (1.1 * corner, Place::Outside),
                 ]);
             }
-            points.push((Vec2::new(3.0, -2.0), false));
-            for (p, inside) in points {
+            points.push((Vec2::new(3.0, -2.0), Place::Outside));
+            for (p, place) in points {
                 let got = sample_uniform_regular_polygon_pdf(p, blades, rotation);
-                if let Some(mistake) = polygon_density_mistake(p, blades, rotation, inside, got) {
+                if let Some(mistake) = polygon_density_mistake(p, blades, rotation, place, got) {
                     panic!("sample_uniform_regular_polygon_pdf: {mistake}");
                 }
             }
@@ -420,16 +431,12 @@ mod tests {
 
     #[test]
     fn a_wrong_polygon_sampler_fails_the_same_test() {
-        // Picking a triangle well, then a point by the *unfolded* map of the square onto the
-        // triangle (squeezing it towards the centre corner) is not uniform: the test must see it.
+        // Good points pulled towards the centre, each by its own distance from it: they stay
+        // inside the polygon but crowd its middle, and the test must see that.
         let blades = 6;
         let squeezed = |u: Vec2| {
-            let k = ((u.x * blades as f32) as u32).min(blades - 1);
-            let s = u.x * blades as f32 - k as f32;
-            let a = polygon_corner(k, blades, 0.0);
-            let b = polygon_corner(k + 1, blades, 0.0);
-            // radius u.y, position along the edge s: a "naive" triangle warp
-            u.y * (a + (b - a) * s)
+            let p = sample_uniform_regular_polygon(u, blades, 0.0);
+            p * p.length()
         };
         let result = polygon_chi2(blades, 0.0, squeezed);
         assert!(result.p_value < 1e-6, "{result:?}");

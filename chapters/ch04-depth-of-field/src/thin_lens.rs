@@ -127,7 +127,9 @@ mod tests {
     }
 
     /// What is wrong with `(origin, dir) = thin_lens_ray(pinhole_dir, lens_point, focus)`,
-    /// in words; `None` if it is right.
+    /// in words; `None` if it is right. Right means: it leaves the lens point, its direction's
+    /// `z` is the focus distance, and so it reaches the focal plane at `origin + dir`, which
+    /// must lie on the pinhole ray.
     fn thin_lens_mistake(
         pinhole_dir: Vec3,
         lens_point: Vec2,
@@ -135,10 +137,14 @@ mod tests {
         (origin, dir): (Vec3, Vec3),
     ) -> Option<String> {
         let lens = lens_point.extend(0.0);
-        // Where the pinhole ray crosses the focal plane z = focus.
-        let focus_point = pinhole_dir * (focus / pinhole_dir.z);
         let close = |a: Vec3, b: Vec3| (a - b).length() <= 1e-5 * b.length().max(1.0);
-        if close(origin, lens) && close(dir, focus_point - lens) {
+        // Whether a point lies on the pinhole ray, ahead of the lens centre.
+        let on_pinhole_ray = |p: Vec3| {
+            let along = p.dot(pinhole_dir.normalize());
+            along > 0.0 && close(p, pinhole_dir.normalize() * along)
+        };
+        let z_is_focus = (dir.z - focus).abs() <= 1e-5 * focus;
+        if close(origin, lens) && z_is_focus && on_pinhole_ray(origin + dir) {
             return None;
         }
         let mistake = if !origin.is_finite() || !dir.is_finite() {
@@ -154,12 +160,14 @@ mod tests {
         } else if dir.z.abs() < 1e-6 {
             "the direction runs parallel to the lens: it should reach the focal plane".to_string()
         } else {
+            // Where the ray, continued, crosses the focal plane.
             let crossing = origin + dir * (focus / dir.z);
-            if close(crossing, focus_point + lens) {
+            let parallel = close(dir.normalize(), pinhole_dir.normalize());
+            if parallel && lens_point != Vec2::ZERO {
                 "the ray runs parallel to the pinhole ray, shifted by the lens point: it must \
                  meet the pinhole ray in the focal plane, or nothing is ever in focus"
                     .to_string()
-            } else if (dir.z - focus).abs() > 1e-4 * focus && close(crossing, focus_point) {
+            } else if !z_is_focus && on_pinhole_ray(crossing) {
                 format!(
                     "the ray goes the right way, but its direction has z = {}, not the focus \
                      distance {focus}: the direction asked for is P_f - P_l",
@@ -167,8 +175,8 @@ mod tests {
                 )
             } else {
                 format!(
-                    "the ray crosses the focal plane z = {focus} at {crossing}; it should cross \
-                     where the pinhole ray does, at {focus_point}"
+                    "the ray crosses the focal plane z = {focus} at {crossing}, off the pinhole \
+                     ray: it should cross where the pinhole ray does"
                 )
             }
         };
@@ -252,7 +260,12 @@ mod tests {
         let lens = &camera.lens;
         let (radius, focus) = (lens.aperture_radius, lens.focus_distance);
         let pinhole_dir = camera.pinhole.camera_direction(p_film);
-        let focus_point = pinhole_dir * (focus / pinhole_dir.z);
+        // Where the pinhole ray meets the focal plane: the thin-lens ray from the lens centre
+        // reaches it there.
+        let focus_point = {
+            let (centre, to_focus) = thin_lens_ray(pinhole_dir, Vec2::ZERO, focus);
+            centre + to_focus
+        };
         let unit = unit_aperture_point(lens, u);
         let expected = recipe_ray(camera, p_film, radius * unit, focus_point);
         let scale = 1.0 + radius + camera.pinhole.frame.origin.length();

@@ -98,7 +98,7 @@ fn shutter_opening() -> Diagram {
     // The heights and the ramps, labelled.
     let plateau = f64::from(trapezoid_opening_pdf(0.5, RAMP));
     diagram.label((-0.1, 1.0), "1", Anchor::Right, Ink::Ray);
-    diagram.label((-0.1, plateau), "1/(1 − r)", Anchor::Right, Ink::OtherRay);
+    diagram.label((-0.1, plateau), "h", Anchor::Right, Ink::OtherRay);
     diagram.line((-0.05, plateau), (x(RAMP), plateau), Ink::Guide);
     for (t, text) in [(0.0, "0"), (RAMP, "r"), (1.0 - RAMP, "1 − r"), (1.0, "1")] {
         diagram.line((x(t), 0.0), (x(t), -0.08), Ink::Surface);
@@ -227,11 +227,14 @@ mod tests {
             let outline = opening_outline(ramp);
             let enclosed = area(&outline);
             assert!((enclosed - 1.0).abs() < 1e-3, "ramp {ramp}: {enclosed}");
+            // The middle is as high as the outline goes, higher than the box when it ramps.
             let highest = outline.iter().map(|p| p.1).fold(0.0, f32::max);
-            assert!((highest - 1.0 / (1.0 - ramp)).abs() < 1e-6, "ramp {ramp}");
+            let middle = trapezoid_opening_pdf(0.5, ramp);
+            assert_eq!(highest, middle, "ramp {ramp}");
+            assert_eq!(highest > 1.0, ramp > 0.0, "ramp {ramp}: {highest}");
         }
         // The trapezoid is fully open exactly from r to 1 - r.
-        let plateau = 1.0 / (1.0 - RAMP);
+        let plateau = trapezoid_opening_pdf(0.5, RAMP);
         for (t, w) in opening_outline(RAMP) {
             let open_fully = (w - plateau).abs() < 1e-6;
             assert_eq!(open_fully, (RAMP..=1.0 - RAMP).contains(&t), "t {t}: w {w}");
@@ -247,10 +250,16 @@ mod tests {
                 .filter(|&&t| t > 1.0 - RAMP)
                 .count()
         };
-        // The box: a quarter of the twelve; the trapezoid: the ramp's weight r / (2 (1 - r)).
+        // The box: a quarter of the twelve; the trapezoid: its share of the weight under the
+        // rising ramp, the area under the drawn outline up to r.
         assert_eq!(in_first_quarter(0.0), 3);
         assert_eq!(in_last_quarter(0.0), 3);
-        let ramp_weight = RAMP / (2.0 * (1.0 - RAMP));
+        let outline = opening_outline(RAMP);
+        let ramp_weight: f32 = outline
+            .windows(2)
+            .filter(|pair| pair[1].0 <= RAMP)
+            .map(|pair| 0.5 * (pair[0].1 + pair[1].1) * (pair[1].0 - pair[0].0))
+            .sum();
         let expected = (ramp_weight * SAMPLES as f32).round() as usize;
         assert_eq!(expected, 2);
         assert_eq!(in_first_quarter(RAMP), expected);

@@ -298,31 +298,47 @@ mod tests {
             rotation: Quat::from_axis_angle(axis, 0.2 + turn),
             scale: Mat3::from_diagonal(Vec3::new(3.0, 1.0, 0.5)),
         };
+        // Where the object should be and how large, a fraction u of the way from a to b: for
+        // each u, the translation and the scale's diagonal, worked out beforehand from a's and
+        // b's.
+        #[rustfmt::skip]
+        let table: [(f32, Vec3, Vec3); 7] = [
+            (0.0, Vec3::new(1.0, 2.0, 3.0), Vec3::new(1.0, 2.0, 1.0)),
+            (0.2, Vec3::new(0.2, 1.6, 3.4), Vec3::new(1.4, 1.8, 0.9)),
+            (0.25, Vec3::new(0.0, 1.5, 3.5), Vec3::new(1.5, 1.75, 0.875)),
+            (0.5, Vec3::new(-1.0, 1.0, 4.0), Vec3::new(2.0, 1.5, 0.75)),
+            (0.75, Vec3::new(-2.0, 0.5, 4.5), Vec3::new(2.5, 1.25, 0.625)),
+            (0.8, Vec3::new(-2.2, 0.4, 4.6), Vec3::new(2.6, 1.2, 0.6)),
+            (1.0, Vec3::new(-3.0, 0.0, 5.0), Vec3::new(3.0, 1.0, 0.5)),
+        ];
+        let expected_at = |u: f32| {
+            let row = table.iter().find(|row| (row.0 - u).abs() < 1e-6);
+            let row = row.expect("u in the table");
+            (row.1, Mat3::from_diagonal(row.2))
+        };
         for u in [0.0f32, 0.25, 0.5, 0.8, 1.0] {
             let got = interpolate(&a, &b, u);
             let at = format!("interpolate: a fraction u = {u} of the way");
-            let translation = a.translation + u * (b.translation - a.translation);
+            // Running from b to a puts the object where a fraction 1 - u would.
+            let (translation, scale) = expected_at(u);
+            let (backwards_translation, backwards_scale) = expected_at(1.0 - u);
             assert!(
                 got.translation.abs_diff_eq(translation, 1e-5),
                 "{at}, the translation should be {translation}, and yours is {}: {}",
                 got.translation,
-                if got
-                    .translation
-                    .abs_diff_eq(b.translation.lerp(a.translation, u), 1e-5)
-                {
+                if got.translation.abs_diff_eq(backwards_translation, 1e-5) {
                     "it runs from b to a, backwards (u = 0 is a)"
                 } else {
                     "the object moves along the straight line from a to b at constant speed"
                 }
             );
-            let scale = a.scale * (1.0 - u) + b.scale * u;
             if !close_mat3(got.scale, scale, 1e-4) {
                 let lerped_matrices = a.matrix() * (1.0 - u) + b.matrix() * u;
                 let why = if close_mat3(got.scale, Decomposed::new(lerped_matrices).scale, 1e-4) {
                     "it is what lerping the two matrices gives: a blend of two rotations is no \
                      rotation, and the object shrinks across the axis on the way; interpolate the \
                      parts each in its own way"
-                } else if close_mat3(got.scale, b.scale * (1.0 - u) + a.scale * u, 1e-4) {
+                } else if close_mat3(got.scale, backwards_scale, 1e-4) {
                     "it runs from b's scale to a's, backwards (u = 0 is a)"
                 } else {
                     "the scale changes evenly from a's to b's"
@@ -338,14 +354,16 @@ mod tests {
                 "{at}, the rotation is a quaternion of length {length}: a rotation is a unit \
                  quaternion (a blend of two unit quaternions is shorter than 1)"
             );
-            let rotation = Quat::from_axis_angle(axis, 0.2 + u * turn);
+            // About the one axis, turned by the share u of the whole turn.
+            let turned_by = |share: f32| Quat::from_axis_angle(axis, 0.2 + share * turn);
+            let rotation = turned_by(u);
             if !same_rotation(got.rotation, rotation, 1e-5) {
                 let turned = (a.rotation.inverse() * got.rotation).to_axis_angle().1;
                 let why = if same_rotation(got.rotation, a.rotation.lerp(b.rotation, u), 1e-5) {
                     "blending the quaternions and normalising follows the right great circle, \
                      but not at constant speed: the object turns slowly at the ends and fast in \
                      the middle"
-                } else if same_rotation(got.rotation, b.rotation.slerp(a.rotation, u), 1e-5) {
+                } else if same_rotation(got.rotation, turned_by(1.0 - u), 1e-5) {
                     "it turns from b's rotation to a's, backwards (u = 0 is a)"
                 } else {
                     "the object turns about one axis at constant angular speed, the shorter way"
@@ -432,7 +450,7 @@ mod tests {
                         .to_string()
                 } else if let Some(w) = segment {
                     let (ka, kb) = (Decomposed::new(linear_motion(w[0])), linear_motion(w[1]));
-                    let u = (time - w[0]) / (w[1] - w[0]);
+                    let (_, u) = motion.segment_at(time).expect("time inside the keyframes");
                     let lerped = linear_motion(w[0]) * (1.0 - u) + kb * u;
                     let unscaled = interpolate(&ka, &Decomposed::new(kb), time - w[0]).matrix();
                     let backwards = interpolate(&Decomposed::new(kb), &ka, u).matrix();

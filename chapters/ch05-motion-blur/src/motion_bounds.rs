@@ -6,8 +6,8 @@
 //! The method here (conservative, simple, and checked by tests): the object at any time lies
 //! inside the transformed corners of its object-space box, so it is enough to bound the paths
 //! of the eight corners. Each path is sampled at `steps` times per keyframe segment, and the
-//! box of the samples is grown by how far a corner can stray between two samples: at most half
-//! the length of the path between them, which the corner's **speed bound** limits. Within a
+//! box of the samples is grown so that no corner, between two samples, can stray outside it:
+//! how far can it stray, when the corner's **speed bound** limits its path? Within a
 //! segment, with `u` running from 0 to 1, a point `x` of object space is at
 //! `T(u) + R(u) S(u) x`; its speed is at most `|T1 - T0| + θ max(|S0 x|, |S1 x|) + |(S1 - S0) x|`,
 //! where `θ` is the angle the rotation turns through (the interpolated rotation turns at the
@@ -149,15 +149,19 @@ mod tests {
             (1.0, Mat4::from_translation(Vec3::new(3.0, 1.0, 0.0))),
         ])
         .unwrap();
-        for (what, motion, steps) in [("spun", &spinning, 3), ("slid", &sliding, 2)] {
+        // Each motion with its number of steps and the fractions of the segment those steps
+        // sample, worked out beforehand.
+        let thirds: &[f32] = &[0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0];
+        let halves: &[f32] = &[0.0, 0.5, 1.0];
+        for (what, motion, steps, samples) in [
+            ("spun", &spinning, 3, thirds),
+            ("slid", &sliding, 2, halves),
+        ] {
             let (a, b) = (&motion.keyframes()[0].parts, &motion.keyframes()[1].parts);
             let corners = corners(&unit_box());
             // Few steps: only the margin keeps the corners in between the samples inside.
             let (u0, u1) = (0.0, 1.0);
             let bounds = segment_bounds(&corners, a, b, u0, u1, steps);
-            let samples: Vec<f32> = (0..=steps)
-                .map(|i| u0 + (u1 - u0) * i as f32 / steps as f32)
-                .collect();
             // The sampled fractions first: a corner missing there is a missing sample, not a
             // missing margin.
             let dense = (0..=1000).map(|i| i as f32 / 1000.0);
@@ -172,8 +176,9 @@ mod tests {
                         "at one of the sampled fractions itself: are the corners placed at all \
                          steps + 1 fractions from u0 to u1, ends included?"
                     } else {
-                        "between two sampled fractions: the sampled corners' box has to grow by \
-                         as far as a corner can travel in half a step"
+                        "between two sampled fractions: the sampled corners' box has to grow, \
+                         since a corner between two samples can travel away from both (how far, \
+                         at most, from the nearer one?)"
                     };
                     panic!(
                         "segment_bounds: the corner {c} {what} to {p} at u = {u} lies outside \

@@ -247,7 +247,8 @@ mod tests {
     }
 
     /// The hit of `ray` with the unit sphere placed by `motion` at `time`, solved in world
-    /// space in f64: `|W x| = 1` on the surface, `W` world to object. `(t, p, n)`.
+    /// space in f64: `|W x| = 1` on the surface, `W` world to object. `(t, p, n)`, the normal
+    /// the direction in which `|W x|` grows fastest at the point, by central differences.
     fn ellipsoid_hit(
         motion: &AnimatedTransform,
         ray: &Ray,
@@ -265,13 +266,15 @@ mod tests {
         let t = [(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)]
             .into_iter()
             .find(|&t| t > 1e-4 && t < f64::from(ray.t_max))?;
-        let object_point = o + t * d;
-        let normal: DVec3 = glam::DMat3::from_mat4(w).transpose() * object_point;
-        Some((
-            t as f32,
-            (origin + t * dir).as_vec3(),
-            normal.normalize().as_vec3(),
-        ))
+        let point = origin + t * dir;
+        let size = |x: DVec3| w.transform_point3(x).length();
+        let h = 1e-6;
+        let normal = DVec3::new(
+            size(point + DVec3::X * h) - size(point - DVec3::X * h),
+            size(point + DVec3::Y * h) - size(point - DVec3::Y * h),
+            size(point + DVec3::Z * h) - size(point - DVec3::Z * h),
+        );
+        Some((t as f32, point.as_vec3(), normal.normalize().as_vec3()))
     }
 
     /// What is wrong with `got = shape.intersect(ray)`, in words; `None` if it is right.
@@ -426,11 +429,12 @@ mod tests {
                     ": it was transformed like a direction, and under a stretch a normal moved \
                      that way leans over with the surface; what matrix keeps it perpendicular?"
                 } else if close(got_n, by_transpose) {
-                    ": it was transformed by the transpose of the object-to-world matrix; a \
-                     normal goes by the transpose of its inverse"
+                    ": it was transformed by the transpose of the object-to-world matrix, which \
+                     stretches a normal as the surface is stretched, where it has to undo the \
+                     stretch"
                 } else if close(got_n, by_inverse) {
-                    ": it was transformed by the world-to-object matrix itself; a normal goes by \
-                     that matrix transposed"
+                    ": it was transformed by the world-to-object matrix itself, which keeps a \
+                     normal perpendicular only where nothing is stretched"
                 } else if close(got_n, -n) {
                     ": it points into the object"
                 } else {

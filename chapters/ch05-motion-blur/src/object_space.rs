@@ -53,12 +53,17 @@ mod tests {
     use super::*;
 
     /// What is wrong with `local = to_object_space(ray, world_to_object)`, in words; `None`
-    /// if it is right.
+    /// if it is right. Right means: the object's transform takes the object-space ray's point
+    /// at every `t` back to the world ray's point at the same `t`.
     fn object_space_mistake(ray: &Ray, world_to_object: &Mat4, local: &Ray) -> Option<String> {
         let object_to_world = world_to_object.inverse();
-        let origin = world_to_object.transform_point3(ray.origin);
-        let dir = world_to_object.transform_vector3(ray.dir);
         let close = |a: Vec3, b: Vec3| (a - b).length() <= 1e-4 * b.length().max(1.0);
+        // The object-space ray's point at t, taken back to world space.
+        let back = |t: f32| object_to_world.transform_point3(local.origin + local.dir * t);
+        let world = |t: f32| ray.origin + ray.dir * t;
+        let wrong_t = [0.0, 1.0, 2.5]
+            .into_iter()
+            .find(|&t| !close(back(t), world(t)));
         let mistake = if local.t_max != ray.t_max {
             format!(
                 "t_max is {} instead of the ray's {}: a shadow ray must still stop at its light, \
@@ -71,26 +76,40 @@ mod tests {
                  every space and on every bounce",
                 local.time, ray.time
             )
-        } else if close(local.origin, origin) && close(local.dir, dir) {
-            return None;
-        } else if close(local.origin, world_to_object.transform_vector3(ray.origin)) {
-            "the origin did not move with the object: it is a point, so the matrix's \
-             translation applies to it"
-                .to_string()
-        } else if close(local.dir, world_to_object.transform_point3(ray.dir)) {
-            "the direction was moved by the translation: it is a vector, which a translation \
-             leaves alone"
-                .to_string()
-        } else if close(local.dir, dir.normalize()) && !close(dir, dir.normalize()) {
-            "the direction was normalised: then t no longer means the same point in both spaces \
-             (a scaled object would report its hits at other distances)"
-                .to_string()
-        } else if close(local.origin, object_to_world.transform_point3(ray.origin)) {
-            "the ray went the wrong way: the matrix given already takes world space to object \
-             space"
-                .to_string()
+        } else if let Some(t) = wrong_t {
+            // The step back to world space, and whether it runs along the world ray.
+            let step = back(1.0) - back(0.0);
+            let along = step.normalize().dot(ray.dir.normalize()) > 1.0 - 1e-5;
+            if close(local.origin, world_to_object.transform_vector3(ray.origin)) {
+                "the origin did not move with the object: it is a point, so the matrix's \
+                 translation applies to it"
+                    .to_string()
+            } else if close(local.dir, world_to_object.transform_point3(ray.dir)) {
+                "the direction was moved by the translation: it is a vector, which a \
+                 translation leaves alone"
+                    .to_string()
+            } else if close(back(0.0), world(0.0))
+                && along
+                && (local.dir.length() - 1.0).abs() < 1e-5
+            {
+                "the direction was normalised: then t no longer means the same point in both \
+                 spaces (a scaled object would report its hits at other distances)"
+                    .to_string()
+            } else if close(world_to_object.transform_point3(local.origin), ray.origin) {
+                "the ray went the wrong way: the matrix given already takes world space to \
+                 object space"
+                    .to_string()
+            } else {
+                format!(
+                    "taken back to world space by the object's transform, your ray's point at \
+                     t = {t} is {}, but the world ray's is {}: the two rays must be the same \
+                     line, point for point",
+                    back(t),
+                    world(t)
+                )
+            }
         } else {
-            format!("the ray should start at {origin} with direction {dir}")
+            return None;
         };
         Some(format!(
             "{mistake}.\n  world ray {ray:?}: your to_object_space gave {local:?}"

@@ -81,10 +81,10 @@ impl Shutter {
 mod tests {
     use super::*;
 
-    /// What is wrong with `time = shutter.time_at(u)`, in words; `None` if it is right.
-    fn time_at_mistake(shutter: &Shutter, u: f32, time: f32) -> Option<String> {
+    /// What is wrong with `time = shutter.time_at(u)`, which should be `expected`, in words;
+    /// `None` if it is right.
+    fn time_at_mistake(shutter: &Shutter, u: f32, expected: f64, time: f32) -> Option<String> {
         let (open, close) = (f64::from(shutter.open), f64::from(shutter.close));
-        let expected = open + f64::from(u) * (close - open);
         let tolerance = 4.0 * f64::from(f32::EPSILON) * open.abs().max(close.abs()).max(1.0);
         let near = |x: f64| (f64::from(time) - x).abs() <= tolerance;
         if near(expected) {
@@ -113,12 +113,12 @@ mod tests {
     }
 
     /// Fails, saying what is wrong, if `time_at` of the shutter open from `open` to `close`
-    /// is wrong at any of `us`.
-    fn check_time_at(open: f32, close: f32, us: &[f32]) {
+    /// is wrong at any of `us`, whose times should be `expected`.
+    fn check_time_at(open: f32, close: f32, us: &[f32], expected: &[f64]) {
         let shutter = Shutter::new(open, close).unwrap();
-        for &u in us {
+        for (&u, &expected) in us.iter().zip(expected) {
             let time = shutter.time_at(u);
-            if let Some(mistake) = time_at_mistake(&shutter, u, time) {
+            if let Some(mistake) = time_at_mistake(&shutter, u, expected, time) {
                 panic!(
                     "Shutter::time_at: the shutter open from {open} to {close} and u = {u} \
                      gave the time {time}, but {mistake}"
@@ -129,27 +129,39 @@ mod tests {
 
     #[test]
     fn exercise_time_at_maps_u_onto_the_interval() {
-        for (open, close) in [
-            (2.0, 6.0),
-            (-1.5, 0.5),
-            (0.25, 0.75),
-            (0.0, 1.0),
-            (3.0, 3.0),
-        ] {
-            check_time_at(open, close, &[0.0, 0.1, 0.5, 0.75, 0.999]);
+        // Each shutter interval and the times of u = 0, 0.1, 0.5, 0.75 and 0.999, worked out
+        // beforehand in f64 from the f32 values.
+        #[rustfmt::skip]
+        let cases: [(f32, f32, [f64; 5]); 5] = [
+            (2.0, 6.0, [2.0, 2.4000000059604645, 4.0, 5.0, 5.996000051498413]),
+            (-1.5, 0.5, [-1.5, -1.2999999970197678, -0.5, 0.0, 0.49800002574920654]),
+            (0.25, 0.75, [0.25, 0.30000000074505806, 0.5, 0.625, 0.7495000064373016]),
+            (0.0, 1.0, [0.0, 0.10000000149011612, 0.5, 0.75, 0.9990000128746033]),
+            (3.0, 3.0, [3.0; 5]),
+        ];
+        for (open, close, expected) in cases {
+            check_time_at(open, close, &[0.0, 0.1, 0.5, 0.75, 0.999], &expected);
         }
     }
 
     #[test]
     fn exercise_time_at_never_leaves_the_interval() {
-        // Intervals where `open + 1 * (close - open)` rounds past `close` in f32.
-        for (open, close) in [
-            (-421.926_57_f32, -67.055_67_f32),
-            (-81_375_136.0, 3_248_766.0),
-            (-1.989_266, 0.001_094_891_6),
-            (1e7, 1e7 + 3.0),
-        ] {
-            check_time_at(open, close, &[0.0, 0.3, 1.0 - f32::EPSILON / 2.0, 1.0]);
+        // Intervals where float rounding can carry the time of u = 1 past `close` in f32, and
+        // the times of u = 0, 0.3, just below 1 and 1, worked out beforehand in f64.
+        #[rustfmt::skip]
+        let cases: [(f32, f32, [f64; 4]); 4] = [
+            (-421.926_57, -67.055_67, [-421.92657470703125, -315.4652995720994, -67.05569284384865, -67.05567169189453]),
+            (-81_375_136.0, 3_248_766.0, [-81375136.0, -55987964.39120448, 3248760.956022382, 3248766.0]),
+            (-1.989_266, 0.001_094_891_6, [-1.989266037940979, -1.3921577353597434, 0.0010947729385462068, 0.0010948915733024478]),
+            (1e7, 1e7 + 3.0, [10000000.0, 10000000.900000036, 10000002.999999821, 10000003.0]),
+        ];
+        for (open, close, expected) in cases {
+            check_time_at(
+                open,
+                close,
+                &[0.0, 0.3, 1.0 - f32::EPSILON / 2.0, 1.0],
+                &expected,
+            );
         }
     }
 

@@ -60,17 +60,42 @@ pub fn sample_trapezoid_opening(u: f32, ramp: f32) -> f32 {
 mod tests {
     use super::*;
 
-    /// The distribution function of the trapezoid, integrated in closed form.
-    fn cdf(s: f64, ramp: f64) -> f64 {
-        let height = 1.0 / (1.0 - ramp);
-        let rising = |s: f64| height * s * s / (2.0 * ramp);
-        if s <= ramp {
-            rising(s)
-        } else if s <= 1.0 - ramp {
-            rising(ramp) + height * (s - ramp)
+    /// The opening's shape, at any height: 0 at the ends of the exposure, 1 on the flat top
+    /// from `ramp` to `1 - ramp`, straight lines between (a `ramp` of 0 is the box).
+    fn shape(s: f64, ramp: f64) -> f64 {
+        if !(0.0..=1.0).contains(&s) {
+            0.0
+        } else if ramp == 0.0 {
+            1.0
         } else {
-            1.0 - rising(1.0 - s)
+            (s.min(1.0 - s) / ramp).min(1.0)
         }
+    }
+
+    /// The area under [`shape`] over `[a, b]`, by the trapezoid rule on pieces cut at its
+    /// corners: exact, up to rounding, since the shape is straight between them.
+    fn area_under_shape(a: f64, b: f64, ramp: f64) -> f64 {
+        let mut cuts = vec![a];
+        cuts.extend([ramp, 1.0 - ramp].into_iter().filter(|&c| a < c && c < b));
+        cuts.push(b);
+        let steps = 64;
+        cuts.windows(2)
+            .map(|piece| {
+                let h = (piece[1] - piece[0]) / f64::from(steps);
+                (0..steps)
+                    .map(|i| {
+                        let x = piece[0] + f64::from(i) * h;
+                        0.5 * (shape(x, ramp) + shape(x + h, ramp)) * h
+                    })
+                    .sum::<f64>()
+            })
+            .sum()
+    }
+
+    /// The distribution function of the trapezoid, the share of the weight before `s`,
+    /// integrated numerically.
+    fn cdf(s: f64, ramp: f64) -> f64 {
+        area_under_shape(0.0, s.clamp(0.0, 1.0), ramp) / area_under_shape(0.0, 1.0, ramp)
     }
 
     /// The ramps the checks try, the box and the triangle included.
@@ -161,7 +186,8 @@ mod tests {
         if near(expected) {
             return None;
         }
-        let share = 0.5 * ramp / (1.0 - ramp);
+        // The share of the weight under the rising ramp (and as much under the falling one).
+        let share = cdf(ramp, ramp);
         let why = if ramp > 0.0 && near(u) {
             "that is the lecture's box, u itself: the warp has to follow the trapezoid, so \
              that fewer times fall where the shutter is only partly open"
@@ -180,26 +206,27 @@ mod tests {
         ))
     }
 
-    /// The exact inverse of [`cdf`].
+    /// The inverse of [`cdf`]: the `s` before which the share `u` of the weight lies, found
+    /// by bisection (the distribution function only grows).
     fn inverse_cdf(u: f64, ramp: f64) -> f64 {
-        if ramp == 0.0 {
-            return u;
+        let (mut below, mut above) = (0.0, 1.0);
+        for _ in 0..60 {
+            let middle = 0.5 * (below + above);
+            if cdf(middle, ramp) < u {
+                below = middle;
+            } else {
+                above = middle;
+            }
         }
-        let share = 0.5 * ramp / (1.0 - ramp);
-        if u < share {
-            (2.0 * ramp * (1.0 - ramp) * u).sqrt()
-        } else if u > 1.0 - share {
-            1.0 - (2.0 * ramp * (1.0 - ramp) * (1.0 - u)).sqrt()
-        } else {
-            ramp + (u - share) * (1.0 - ramp)
-        }
+        0.5 * (below + above)
     }
 
     #[test]
     fn exercise_sample_trapezoid_opening_inverts_the_distribution_function() {
         for ramp in RAMPS {
             let r = f64::from(ramp);
-            let share = if r == 0.0 { 0.0 } else { 0.5 * r / (1.0 - r) };
+            // The share of the weight under one ramp.
+            let share = cdf(r, r);
             // Inside the ramps first, then where they end, then the flat top.
             for u in [
                 share / 4.0,

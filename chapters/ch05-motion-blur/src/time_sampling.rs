@@ -236,8 +236,8 @@ mod tests {
         assert!(
             u < 1.0,
             "stratified_time_sample: the last of 2^30 strata with the largest jitter gave {u}: \
-             in f32, (stratum + jitter) / strata can round up to 1, which is outside the shutter \
-             interval [0, 1)"
+             in f32, the largest jitter in the last stratum can round up to 1, which is outside \
+             the shutter interval [0, 1)"
         );
         let u = stratified_time_sample(0, 1, ONE_MINUS_EPSILON);
         assert!(

@@ -13,8 +13,8 @@
 //! Each `<transform>` is an ordinary one (lookat, translate, rotate, scale, matrix, composed as
 //! usual) with a `time` attribute. The reader only checks what makes keyframes meaningful: at
 //! least two, finite times in strictly increasing order, each matrix invertible. How a
-//! transform *between* keyframes is found (decomposed, with the rotation slerped) is chapter
-//! 05's business, not the reader's.
+//! transform *between* keyframes is found (from the keyframes' parts, each interpolated in its
+//! own way) is chapter 05's business, not the reader's.
 
 use super::element::Element;
 use glam::Mat4;

@@ -154,4 +154,6 @@ impl Sampler for PixelSampler {
 }
 
 #[cfg(test)]
+mod radical_inverse_values;
+#[cfg(test)]
 mod tests;

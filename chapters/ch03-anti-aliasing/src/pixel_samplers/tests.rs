@@ -1,18 +1,22 @@
+use super::radical_inverse_values::RADICAL_INVERSES;
 use super::*;
 use common::sampler::IndependentSampler;
 
 const ALL_KINDS: [PixelSamplerKind; 4] = PixelSamplerKind::ALL;
 
-/// What is wrong with `p = jittered(index, columns, rows, xi)`, in words; `None` if right.
-fn jittered_mistake(index: u64, columns: u32, rows: u32, xi: Vec2, p: Vec2) -> Option<String> {
+/// What is wrong with `p = jittered(index, columns, rows, xi)`, which should be `expected`,
+/// in words; `None` if right.
+fn jittered_mistake(
+    (index, columns, rows, xi): (u64, u32, u32, Vec2),
+    expected: Vec2,
+    p: Vec2,
+) -> Option<String> {
     let strata = u64::from(columns) * u64::from(rows);
-    let stratum = index % strata;
-    let (column, row) = (stratum % u64::from(columns), stratum / u64::from(columns));
-    let expected = Vec2::new(
-        (column as f32 + xi.x) / columns as f32,
-        (row as f32 + xi.y) / rows as f32,
-    )
-    .min(Vec2::splat(ONE_MINUS_EPSILON));
+    // The stratum the expected position lies in.
+    let (column, row) = (
+        (expected.x * columns as f32).floor() as u64,
+        (expected.y * rows as f32).floor() as u64,
+    );
     if p == expected
         || (p.is_finite() && (p - expected).abs().max_element() < 1e-6 && p.max_element() < 1.0)
     {
@@ -25,8 +29,8 @@ fn jittered_mistake(index: u64, columns: u32, rows: u32, xi: Vec2, p: Vec2) -> O
     let mistake = if !p.is_finite() {
         "the position is not a number".to_string()
     } else if p.x == 1.0 || p.y == 1.0 {
-        "the sample lands on 1.0, which is the edge of the next pixel: in f32, (k + ξ) / n can \
-         round up to 1 in the last stratum, and a sample must stay below 1"
+        "the sample lands on 1.0, which is the edge of the next pixel: in f32, with a ξ just \
+         below 1 the last stratum's position can round up to 1, and a sample must stay below 1"
             .to_string()
     } else if p.min_element() < 0.0 || p.max_element() > 1.0 {
         if index >= strata {
@@ -70,38 +74,41 @@ fn jittered_mistake(index: u64, columns: u32, rows: u32, xi: Vec2, p: Vec2) -> O
 
 #[test]
 fn exercise_jittered() {
-    let mut cases: Vec<(u64, u32, u32, Vec2)> = Vec::new();
-    // Strata are visited row by row, and start again after the last one.
-    cases.extend((0..5).map(|i| (i, 2, 2, Vec2::splat(0.5))));
+    // (sample index, columns, rows, ξ) and the position expected, worked out beforehand in
+    // f32. Strata are visited row by row, and start again after the last one.
+    let mut cases: Vec<((u64, u32, u32, Vec2), Vec2)> = [(0.25, 0.25), (0.75, 0.25), (0.25, 0.75)]
+        .into_iter()
+        .chain([(0.75, 0.75), (0.25, 0.25)])
+        .enumerate()
+        .map(|(i, (x, y))| ((i as u64, 2, 2, Vec2::splat(0.5)), Vec2::new(x, y)))
+        .collect();
     // Wide and tall grids; jitter at the stratum's corners.
     cases.extend([
-        (2, 3, 1, Vec2::ZERO),
-        (1, 3, 1, Vec2::new(0.5, 0.25)),
-        (5, 2, 3, Vec2::new(0.1, 0.9)),
-        (7, 4, 2, Vec2::new(0.3, 0.6)),
+        ((2, 3, 1, Vec2::ZERO), Vec2::new(0.6666667, 0.0)),
+        ((1, 3, 1, Vec2::new(0.5, 0.25)), Vec2::new(0.5, 0.25)),
+        ((5, 2, 3, Vec2::new(0.1, 0.9)), Vec2::new(0.55, 0.9666667)),
+        ((7, 4, 2, Vec2::new(0.3, 0.6)), Vec2::new(0.825, 0.8)),
     ]);
     // ξ just below 1 in the last stratum stays inside the pixel.
-    cases.push((8, 3, 3, Vec2::splat(ONE_MINUS_EPSILON)));
-    for (index, columns, rows, xi) in cases {
+    cases.push((
+        (8, 3, 3, Vec2::splat(ONE_MINUS_EPSILON)),
+        Vec2::splat(ONE_MINUS_EPSILON),
+    ));
+    for (case @ (index, columns, rows, xi), expected) in cases {
         let p = jittered(index, columns, rows, xi);
-        if let Some(mistake) = jittered_mistake(index, columns, rows, xi, p) {
+        if let Some(mistake) = jittered_mistake(case, expected, p) {
             panic!("jittered: {mistake}");
         }
     }
 }
 
-/// What is wrong with `got = strata_grid(spp)`, in words; `None` if right.
-fn strata_grid_mistake(spp: u64, got: Option<(u32, u32)>) -> Option<String> {
-    // The squarest grid: the largest divisor not above the square root gives the rows.
-    let expected = (spp > 0)
-        .then(|| {
-            let rows = (1..=spp.isqrt())
-                .rev()
-                .find(|&r| spp.is_multiple_of(r))
-                .unwrap();
-            Some((u32::try_from(spp / rows).ok()?, u32::try_from(rows).ok()?))
-        })
-        .flatten();
+/// What is wrong with `got = strata_grid(spp)`, which should be `expected`, in words; `None`
+/// if right.
+fn strata_grid_mistake(
+    spp: u64,
+    expected: Option<(u32, u32)>,
+    got: Option<(u32, u32)>,
+) -> Option<String> {
     if got == expected {
         return None;
     }
@@ -124,7 +131,7 @@ fn strata_grid_mistake(spp: u64, got: Option<(u32, u32)>) -> Option<String> {
         }
         Some((columns, rows)) => format!(
             "{columns} x {rows} has the right number of cells but is not as square as {spp} \
-             allows: the rows are the largest divisor of {spp} not above its square root"
+             allows: a grid of {spp} cells with rows and columns closer together exists"
         ),
     };
     Some(format!(
@@ -134,25 +141,30 @@ fn strata_grid_mistake(spp: u64, got: Option<(u32, u32)>) -> Option<String> {
 
 #[test]
 fn exercise_strata_grid_is_as_square_as_the_count_allows() {
+    // Each count and its squarest grid, (columns, rows), worked out beforehand by trying
+    // every divisor.
     let counts = [
-        1,
-        2,
-        4,
-        8,
-        12,
-        7,
-        18,
-        64,
-        4096,
-        1_000_000_000,
+        (1, Some((1, 1))),
+        (2, Some((2, 1))),
+        (4, Some((2, 2))),
+        (8, Some((4, 2))),
+        (12, Some((4, 3))),
+        (7, Some((7, 1))),
+        (18, Some((6, 3))),
+        (64, Some((8, 8))),
+        (4096, Some((64, 64))),
+        (1_000_000_000, Some((32_000, 31_250))),
         // Squares of large primes, where a square root off by one finds no divisor near it.
-        67_108_859u64 * 67_108_859,
-        4_294_967_291u64 * 4_294_967_291,
+        (67_108_859u64 * 67_108_859, Some((67_108_859, 67_108_859))),
+        (
+            4_294_967_291u64 * 4_294_967_291,
+            Some((4_294_967_291, 4_294_967_291)),
+        ),
         // The smallest prime above u32::MAX: a single row too long to count in u32.
-        4_294_967_311,
-        0,
+        (4_294_967_311, None),
+        (0, None),
     ];
-    for spp in counts {
+    for (spp, expected) in counts {
         let got =
             workbench::test_support::catch_panic(|| strata_grid(spp)).unwrap_or_else(|message| {
                 panic!(
@@ -164,7 +176,7 @@ fn exercise_strata_grid_is_as_square_as_the_count_allows() {
                     }
                 )
             });
-        if let Some(mistake) = strata_grid_mistake(spp, got) {
+        if let Some(mistake) = strata_grid_mistake(spp, expected, got) {
             panic!("strata_grid: {mistake}");
         }
     }
@@ -243,44 +255,20 @@ fn stratified_samples_fill_every_stratum_once() {
     }
 }
 
-/// The radical inverse written out by hand: `digits` of `index` in `base`, lowest first.
-fn mirrored(base: u64, digits: &[u64]) -> f64 {
-    let mut value = 0.0;
-    let mut scale = 1.0 / base as f64;
-    for &digit in digits {
-        value += digit as f64 * scale;
-        scale /= base as f64;
-    }
-    value
-}
-
-/// The digits of `index` in `base`, lowest first.
-fn digits_of(base: u64, mut index: u64) -> Vec<u64> {
-    let mut digits = Vec::new();
-    while index > 0 {
-        digits.push(index % base);
-        index /= base;
-    }
-    digits
-}
-
-/// What is wrong with `got = radical_inverse(base, index)`, in words; `None` if right.
-fn radical_inverse_mistake(base: u32, index: u64, got: f64) -> Option<String> {
-    let b = u64::from(base);
-    let digits = digits_of(b, index);
-    let expected = mirrored(b, &digits);
+/// What is wrong with `got = radical_inverse(base, index)`, which should be `expected`, in
+/// words; `None` if right. `not_mirrored` is what the digits give in their written order, and
+/// `written` the index written in the base.
+fn radical_inverse_mistake(
+    (base, index, expected, not_mirrored, written): (u32, u64, f64, f64, &str),
+    got: f64,
+) -> Option<String> {
     if (got - expected).abs() <= 1e-12 {
         return None;
     }
-    let written = digits.iter().rev().map(u64::to_string).collect::<String>();
-    let not_mirrored = {
-        let mut highest_first = digits.clone();
-        highest_first.reverse();
-        mirrored(b, &highest_first)
-    };
+    let digit_sum: u32 = written.chars().filter_map(|c| c.to_digit(10)).sum();
     let mistake = if !got.is_finite() {
         "the value is not a number".to_string()
-    } else if (got - digits.iter().sum::<u64>() as f64 / b as f64).abs() <= 1e-12 {
+    } else if (got - f64::from(digit_sum) / f64::from(base)).abs() <= 1e-12 {
         "every digit is worth 1/base: each place after the point is worth 1/base of the place \
          before it"
             .to_string()
@@ -306,18 +294,10 @@ fn radical_inverse_mistake(base: u32, index: u64, got: f64) -> Option<String> {
 
 #[test]
 fn exercise_radical_inverse_mirrors_the_digits() {
-    // First a few indices of several digits, on which the usual slips all differ.
-    let mut cases: Vec<(u32, u64)> = vec![(2, 11), (3, 7), (5, 38), (2, 6)];
-    for base in [2, 3, 5, 7] {
-        cases.extend((0..30).map(|index| (base, index)));
-    }
-    cases.extend([
-        (2, 1 << 40),
-        (3, 3u64.pow(20) + 5),
-        (2, u64::MAX),
-        (3, u64::MAX),
-    ]);
-    for (base, index) in cases {
+    // First a few indices of several digits, on which the usual slips all differ; then the
+    // first 30 indices in bases 2, 3, 5 and 7; then indices too large for a power of the base
+    // to fit in a u64.
+    for case @ (base, index, _, _, written) in RADICAL_INVERSES {
         let got = workbench::test_support::catch_panic(|| radical_inverse(base, index))
             .unwrap_or_else(|message| {
                 panic!(
@@ -328,14 +308,14 @@ fn exercise_radical_inverse_mirrors_the_digits() {
                             ". {index} has {} digits in base {base}, and a power of the base that \
                              large does not fit in a u64; a digit's place value can be kept as \
                              an f64, which only grows smaller",
-                            digits_of(u64::from(base), index).len()
+                            written.len()
                         )
                     } else {
                         String::new()
                     }
                 )
             });
-        if let Some(mistake) = radical_inverse_mistake(base, index, got) {
+        if let Some(mistake) = radical_inverse_mistake(case, got) {
             panic!("radical_inverse: {mistake}");
         }
     }
@@ -365,45 +345,67 @@ fn exercise_radical_inverse_fills_every_interval_once() {
     }
 }
 
-/// What is wrong with `got = halton_position(index, shift)`, in words; `None` if right.
-fn halton_position_mistake(index: u64, shift: Vec2, got: Vec2) -> Option<String> {
-    let unit = |v: f64| (v as f32).min(ONE_MINUS_EPSILON);
-    let point = Vec2::new(
-        unit(radical_inverse(2, index)),
-        unit(radical_inverse(3, index)),
-    );
-    let wrap = |s: f32| if s >= 1.0 { s - 1.0 } else { s };
-    let expected = Vec2::new(wrap(point.x + shift.x), wrap(point.y + shift.y));
+/// Halton points of a pixel without a shift, `(index, position)`, and shifted ones, `(index,
+/// shift, position)`, worked out beforehand in f32 (the largest index's x is the f32 just
+/// below 1: its radical inverse, 1 - 2^-25, would round up to 1).
+#[rustfmt::skip]
+const HALTON_POINTS: [(u64, Vec2); 13] = [
+    (0, Vec2::new(0.0, 0.0)), (1, Vec2::new(0.5, 0.33333334)),
+    (2, Vec2::new(0.25, 0.6666667)), (3, Vec2::new(0.75, 0.11111111)),
+    (4, Vec2::new(0.125, 0.44444445)), (5, Vec2::new(0.625, 0.7777778)),
+    (6, Vec2::new(0.375, 0.22222222)), (7, Vec2::new(0.875, 0.5555556)),
+    (8, Vec2::new(0.0625, 0.8888889)), (9, Vec2::new(0.5625, 0.037037037)),
+    (10, Vec2::new(0.3125, 0.37037036)), (11, Vec2::new(0.8125, 0.7037037)),
+    ((1 << 25) - 1, Vec2::new(0.99999994, 0.40842927)),
+];
+#[rustfmt::skip]
+const SHIFTED_HALTON_POINTS: [(u64, Vec2, Vec2); 5] = [
+    (1, Vec2::new(0.75, 0.8), Vec2::new(0.25, 0.13333333)),
+    (3, Vec2::new(0.1, 0.95), Vec2::new(0.85, 0.061111093)),
+    (5, Vec2::new(0.6, 0.3), Vec2::new(0.22500002, 0.07777786)),
+    (7, Vec2::splat(ONE_MINUS_EPSILON), Vec2::new(0.875, 0.5555556)),
+    (0, Vec2::new(0.3, 0.7), Vec2::new(0.3, 0.7)),
+];
+
+/// What is wrong with `got = halton_position(index, shift)`, which should be `expected`, in
+/// words; `None` if right.
+fn halton_position_mistake(index: u64, shift: Vec2, expected: Vec2, got: Vec2) -> Option<String> {
     let inside = got.cmpge(Vec2::ZERO).all() && got.cmplt(Vec2::ONE).all();
     if inside && (got - expected).abs().max_element() <= 1e-6 {
         return None;
     }
     let near = |a: Vec2, b: Vec2| (a - b).abs().max_element() <= 1e-6;
-    let swapped = Vec2::new(wrap(point.y + shift.x), wrap(point.x + shift.y));
-    let base_2_twice = Vec2::new(point.x, point.x) + shift;
-    let base_3_twice = Vec2::new(point.y, point.y) + shift;
-    let wrap2 = |p: Vec2| Vec2::new(wrap(p.x), wrap(p.y));
-    let rounded = Vec2::new(
-        radical_inverse(2, index) as f32,
-        radical_inverse(3, index) as f32,
-    );
+    // The same index's point without a shift.
+    let point = HALTON_POINTS
+        .iter()
+        .find(|&&(i, _)| i == index)
+        .map(|&(_, p)| p)
+        .expect("every index checked has its unshifted point in the table");
+    let unshifted = shift == Vec2::ZERO;
+    // A coordinate a whole pixel away from the right one, yet inside: one that reached 1 and
+    // was wrapped to the opposite edge.
+    let wrapped_from_one = ((got - expected).abs() - Vec2::ONE).abs().min_element() < 1e-6;
+    let rounded_up = "a radical inverse just below 1 can round up to 1 in f32, which is the edge \
+                      of the next pixel (or, wrapped, the opposite edge of this one): a position \
+                      must stay below 1";
     let mistake = if !got.is_finite() {
         "the position is not a number"
-    } else if got.x == 1.0
-        || got.y == 1.0
-        || (rounded != point && near(got, wrap2(rounded + shift)))
-    {
-        "a radical inverse just below 1 can round up to 1 in f32, which is the edge of the next \
-         pixel (or, wrapped, the opposite edge of this one): a position must stay below 1"
+    } else if got.x == 1.0 || got.y == 1.0 {
+        rounded_up
     } else if near(got, point + shift) {
         "the shifted point leaves the pixel: the shift moves the points around the pixel as on \
          a torus, so what passes 1 comes back in at 0"
-    } else if near(got, point) && shift != Vec2::ZERO {
+    } else if inside && wrapped_from_one {
+        rounded_up
+    } else if near(got, point) && !unshifted {
         "the pixel's shift is not applied: every pixel would get the same points, and the image \
          their pattern"
-    } else if near(got, swapped) && index > 0 {
+    } else if unshifted && near(got, Vec2::new(point.y, point.x)) && index > 0 {
         "the bases are swapped: base 2 gives x, base 3 gives y"
-    } else if near(got, wrap2(base_2_twice)) || near(got, wrap2(base_3_twice)) {
+    } else if unshifted
+        && (got.x - got.y).abs() <= 1e-6
+        && (near(got, Vec2::splat(point.x)) || near(got, Vec2::splat(point.y)))
+    {
         "both coordinates use the same base, so every point lies on the diagonal: x and y need \
          different bases (2 for x, 3 for y)"
     } else if !inside {
@@ -419,19 +421,10 @@ fn halton_position_mistake(index: u64, shift: Vec2, got: Vec2) -> Option<String>
 
 #[test]
 fn exercise_halton_position_is_the_shifted_sequence() {
-    let mut cases: Vec<(u64, Vec2)> = (0..12).map(|i| (i, Vec2::ZERO)).collect();
-    cases.extend([
-        (1, Vec2::new(0.75, 0.8)),
-        (3, Vec2::new(0.1, 0.95)),
-        (5, Vec2::new(0.6, 0.3)),
-        (7, Vec2::splat(ONE_MINUS_EPSILON)),
-        (0, Vec2::new(0.3, 0.7)),
-        // The largest f32 below 1 in x: the radical inverse 1 - 2^-25 rounds up in f32.
-        ((1 << 25) - 1, Vec2::ZERO),
-    ]);
-    for (index, shift) in cases {
+    let unshifted = HALTON_POINTS.map(|(index, p)| (index, Vec2::ZERO, p));
+    for (index, shift, expected) in unshifted.into_iter().chain(SHIFTED_HALTON_POINTS) {
         let got = halton_position(index, shift);
-        if let Some(mistake) = halton_position_mistake(index, shift, got) {
+        if let Some(mistake) = halton_position_mistake(index, shift, expected, got) {
             panic!("halton_position: {mistake}");
         }
     }
