@@ -64,8 +64,9 @@ impl Preprocessor for ExercisePreprocessor {
     }
 }
 
-/// Every key expression of a solution that a page states before its exercise (see
-/// [`giveaways`]), over the pages in the book's order.
+/// Every key expression of a solution that a page states before its exercise, or that the
+/// shipped code states outside a solution (see [`giveaways`]), over the pages in the book's
+/// order.
 fn giveaways_before_their_exercises(book: &Book, workspace: &Path) -> Result<Vec<String>> {
     let exercises = exercise_list::load(workspace)?;
     let pages: Vec<giveaways::Page> = book
@@ -78,7 +79,9 @@ fn giveaways_before_their_exercises(book: &Book, workspace: &Path) -> Result<Vec
             _ => None,
         })
         .collect();
-    Ok(giveaways::check(&pages, &exercises, shows_exercise))
+    let mut problems = giveaways::check(&pages, &exercises, shows_exercise);
+    problems.extend(giveaways::in_code(workspace, &exercises)?);
+    Ok(problems)
 }
 
 /// Whether `line` is the `{{#exercise}}` line that shows `exercise`.

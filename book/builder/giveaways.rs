@@ -96,7 +96,6 @@ const SHIPPED_CODE: &[&str] = &[
 
 /// Every giveaway in the workspace's shipped Rust code outside solution regions, as
 /// `file:line: ...` messages naming the exercise and the expression.
-#[allow(dead_code)] // wired into the site build once the chapters are free of giveaways
 pub fn in_code(workspace: &Path, exercises: &[Exercise]) -> Result<Vec<String>> {
     let mut files = Vec::new();
     for folder in SHIPPED_CODE {
@@ -355,7 +354,6 @@ written = 'u - 3 (u \cdot v) w'
     }
 
     #[test]
-    #[ignore = "wired in once the chapters' code is free of giveaways"]
     fn the_workspace_code_states_no_giveaway_outside_its_solutions() {
         let workspace = crate::workspace::root();
         let exercises = crate::exercise_list::load(&workspace).unwrap();
