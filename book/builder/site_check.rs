@@ -1486,12 +1486,14 @@ mod tests {
         let our_config =
             std::fs::read_to_string(crate::workspace::root().join("book/book.toml")).unwrap();
         std::fs::write(book.join("book.toml"), our_config).unwrap();
-        // The other stylesheet the configuration names.
-        std::fs::copy(
-            crate::workspace::root().join("book/theme/lab-report.css"),
-            book.join("theme/lab-report.css"),
-        )
-        .unwrap();
+        // The other stylesheets and the script the configuration names.
+        for file in ["lab-report.css", "demos.css", "demos.js"] {
+            std::fs::copy(
+                crate::workspace::root().join("book/theme").join(file),
+                book.join("theme").join(file),
+            )
+            .unwrap();
+        }
         // A workspace without chapters or exercises, for the exercise preprocessor.
         std::fs::write(book.join("exercises.toml"), "").unwrap();
         for dir in ["common", "workbench", "chapters"] {
