@@ -16,8 +16,6 @@
 //! should likewise pass an accurate `cos θ_max`; for the tiniest caps the API would better take
 //! `1 - cos θ_max` itself.
 
-use std::f32::consts::TAU;
-
 use glam::{Vec2, Vec3};
 
 // ANCHOR: spherical_cap_pdf
@@ -27,6 +25,8 @@ use glam::{Vec2, Vec3};
 /// (`cos_theta_max` the largest float below 1).
 pub fn spherical_cap_pdf(cos_theta_max: f32) -> f32 {
     // BEGIN SOLUTION
+    use std::f32::consts::TAU;
+
     1.0 / (TAU * (1.0 - cos_theta_max))
     // END SOLUTION
 }
@@ -44,6 +44,7 @@ pub fn spherical_cap_pdf(cos_theta_max: f32) -> f32 {
 pub fn sample_spherical_cap(u: Vec2, cos_theta_max: f32) -> Vec3 {
     // BEGIN SOLUTION
     use super::sphere::spherical_direction;
+    use std::f32::consts::TAU;
 
     let one_minus_cos = u.y * (1.0 - cos_theta_max);
     let cos_theta = 1.0 - one_minus_cos;
@@ -61,6 +62,7 @@ mod tests {
     use crate::warps::test_support::{edge_points, integrate_over_sphere, interior_grid};
     use crate::warps::{Warp, sample_uniform_sphere};
     use approx::assert_relative_eq;
+    use std::f32::consts::TAU;
     use std::f64::consts::PI;
 
     const CAPS: [f32; 5] = [-1.0, -0.5, 0.0, 0.8, 0.999_9];
