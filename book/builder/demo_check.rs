@@ -36,10 +36,13 @@ pub struct Rect {
     pub height: f64,
 }
 
-/// Plays every demo of the page open in `tab`.
-pub fn play(tab: &Tab) -> Result<Vec<DemoReport>> {
+/// Plays every demo of the page open in `tab`: moves every control and runs each demo's own
+/// check when `thorough`, or only sees each start and draw its first frame (the print page,
+/// which shows again the demos already played on their own pages).
+pub fn play(tab: &Tab, thorough: bool) -> Result<Vec<DemoReport>> {
+    let probe = PROBE.replace("THOROUGH", if thorough { "true" } else { "false" });
     let result = tab
-        .evaluate(PROBE, true)
+        .evaluate(&probe, true)
         .context("the demos' probe did not run")?;
     match result.value {
         Some(serde_json::Value::String(json)) => {
@@ -52,9 +55,11 @@ pub fn play(tab: &Tab) -> Result<Vec<DemoReport>> {
 /// Runs in the page: for each demo, waits up to 20 s for it to be ready, then moves each visible
 /// control in turn (a select to its next option, a slider to its other end, a number up by one,
 /// a checkbox over), waits for the demo to draw again, and checks that the canvas changed; then
-/// runs the demo's own check. A failure whose message is an exercise's stub ("(not written
+/// runs the demo's own check. A render demo (`data-progressive`) refines its picture over many
+/// frames, and its first frames after a move may show only rows that did not change (the sky):
+/// it is compared once it has finished (`data-done`), before and after each move. A failure whose message is an exercise's stub ("(not written
 /// yet)") is reported apart, as `waiting`: the student's own site shows it on purpose.
-const PROBE: &str = r#"(async () => {
+const PROBE: &str = r#"(async (thorough) => {
   const sleep = ms => new Promise(done => setTimeout(done, ms));
   const reports = [];
   for (const root of document.querySelectorAll('div.demo')) {
@@ -77,14 +82,29 @@ const PROBE: &str = r#"(async () => {
       else report.problems.push('it did not start within 20 s');
       continue;
     }
-    if (failure()) { stopped('its first frame failed'); continue; }
+    const progressive = root.dataset.progressive === 'yes';
+    const finished = async () => {
+      const waited = Date.now();
+      while (progressive && root.dataset.done !== 'yes' && !failure() && Date.now() - waited < 30000) await sleep(20);
+      if (progressive && root.dataset.done !== 'yes' && !failure()) {
+        report.problems.push('it did not finish its picture within 30 s');
+      }
+    };
     const settle = async frames => {
       const waited = Date.now();
       while (root.dataset.frames === frames && !failure() && Date.now() - waited < 10000) await sleep(10);
+      if (root.dataset.frames !== frames) await finished();
     };
+    if (!failure() && progressive) {
+      const waited = Date.now();
+      while (!root.dataset.frames && !failure() && Date.now() - waited < 10000) await sleep(10);
+    }
+    if (failure()) { stopped('its first frame failed'); continue; }
+    if (!thorough) continue;
     for (const control of root.querySelectorAll('[data-control]')) {
       if (control.offsetParent === null) continue;
       report.controls++;
+      await finished();
       const before = canvas.toDataURL();
       const frames = root.dataset.frames;
       if (control.tagName === 'SELECT') {
@@ -119,4 +139,4 @@ const PROBE: &str = r#"(async () => {
   // demos in their screenshots.
   window.scrollTo(0, 0);
   return JSON.stringify(reports);
-})()"#;
+})(THOROUGH)"#;

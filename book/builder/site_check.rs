@@ -576,7 +576,7 @@ pub fn run(options: &Options) -> Result<Outcome> {
                 }
             }
         }
-        let demos = crate::demo_check::play(&tab)
+        let demos = crate::demo_check::play(&tab, page != "print.html")
             .with_context(|| format!("cannot play the demos of {page}"))?;
         for (index, demo) in demos.iter().enumerate() {
             let name = format!("demo `{}`", demo.name);

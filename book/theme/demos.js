@@ -256,12 +256,234 @@
     };
   }
 
+  // ---- Every other chapter: a render refined one sample per pixel at a time ---------------
+  //
+  // The module describes the demo (its controls, views and claims, `demo_spec`); the page
+  // builds the controls, starts every view with their values (`demo_start`), and on each
+  // animation frame gives each unfinished view an equal share of about 14 ms of tracing
+  // (`demo_advance`, in whole rows; the rows per millisecond are measured as it goes), then
+  // draws the films (`demo_image`). Views side by side get equal time: all stop when the first
+  // reaches its samples per pixel, so the slower technique shows fewer.
+
+  function writeText(value) {
+    const bytes = new TextEncoder().encode(value);
+    const m = wasm();
+    const at = m.input_text_ptr(bytes.length);
+    new Uint8Array(m.memory.buffer, at, bytes.length).set(bytes);
+  }
+
+  function writeNumbers(values) {
+    const m = wasm();
+    const at = m.input_numbers_ptr(values.length);
+    new Float64Array(m.memory.buffer, at, values.length).set(values);
+  }
+
+  function bytes(length) {
+    const m = wasm();
+    return new Uint8ClampedArray(m.memory.buffer, m.bytes_ptr(), length).slice();
+  }
+
+  const FRAME_MS = 14;
+  // Each view of each demo on the page refines in a slot of its own in the module.
+  let slots = 0;
+
+  function renderDemo(root) {
+    root.dataset.progressive = 'yes';
+    writeText(root.dataset.demo);
+    const index = call('demo_find');
+    call('demo_spec', index);
+    const spec = JSON.parse(text());
+    const width = spec.width;
+    const height = spec.height;
+    const views = spec.views.length;
+    const firstSlot = slots;
+    slots += views;
+
+    const controls = spec.controls.map(control => {
+      let input;
+      const shown = element('span', { class: 'demo-value' });
+      if (control.options) {
+        input = element('select', { 'data-control': control.name },
+          control.options.map((option, i) => element('option', { value: String(i), text: option })));
+      } else {
+        input = element('input', {
+          type: 'range', min: String(control.min), max: String(control.max),
+          step: String(control.step), 'data-control': control.name,
+        });
+      }
+      input.value = String(control.value);
+      const label = labelled(control.label, input);
+      if (!control.options) label.appendChild(shown);
+      const show = () => { shown.textContent = input.value; };
+      show();
+      return { input, label, show };
+    });
+    let zoom = null;
+    const extra = [];
+    if (spec.zoom) {
+      zoom = element('select', { 'data-control': 'zoom' },
+        [1, 2, 4, 8].map(z => element('option', { value: String(z), text: z === 1 ? 'whole image' : `${z}× on the centre` })));
+      extra.push(labelled('zoom', zoom));
+    }
+    const scale = 2;
+    const gap = 12;
+    const canvas = element('canvas', {
+      width: String(views * width * scale + (views - 1) * gap),
+      height: String(height * scale + (views > 1 || spec.views[0] ? 20 : 0)),
+      class: 'demo-canvas',
+    });
+    const status = element('p', { class: 'demo-verdict', 'aria-live': 'polite' });
+    root.append(
+      element('div', { class: 'demo-controls' }, [...controls.map(c => c.label), ...extra]),
+      canvas, status);
+
+    const film = element('canvas', { width: String(width), height: String(height) });
+    let state = null;
+
+    function fail(error) {
+      if (!(error instanceof DemoError)) throw error;
+      showFailure(canvas, error.message);
+      status.textContent = '';
+      state = null;
+    }
+
+    function draw() {
+      const g = canvas.getContext('2d');
+      g.fillStyle = '#ffffff';
+      g.fillRect(0, 0, canvas.width, canvas.height);
+      const top = canvas.height - height * scale;
+      const z = zoom ? Number(zoom.value) : 1;
+      for (let view = 0; view < views; view++) {
+        const length = call('demo_image', firstSlot + view);
+        film.getContext('2d').putImageData(new ImageData(bytes(length), width, height), 0, 0);
+        const x0 = view * (width * scale + gap);
+        g.imageSmoothingEnabled = false;
+        const w = width / z;
+        const h = height / z;
+        g.drawImage(film, (width - w) / 2, (height - h) / 2, w, h, x0, top, width * scale, height * scale);
+        if (top > 0 && state) {
+          g.fillStyle = '#333';
+          g.font = '13px sans-serif';
+          g.fillText(`${spec.views[view]}: ${state.spp[view]} spp, ${(state.ms[view] / 1000).toFixed(2)} s`, x0 + 2, 14);
+        }
+      }
+      root.dataset.frames = String(Number(root.dataset.frames || 0) + 1);
+    }
+
+    function report() {
+      const spp = Math.min(...state.spp);
+      const ms = performance.now() - state.started;
+      status.textContent = views > 1
+        ? `equal time: ${spec.views.map((v, i) => `${v} ${state.spp[i]} spp`).join(', ')} (${(ms / 1000).toFixed(2)} s)`
+        : `${spp} of ${state.target[0]} samples per pixel, ${width} × ${height}, ${(ms / 1000).toFixed(2)} s`;
+      root.dataset.spp = String(spp);
+    }
+
+    // A demo refines only while it is on screen: the print page holds every demo at once.
+    let visible = false;
+    let scheduled = false;
+    function schedule() {
+      if (scheduled || !visible || !state || state.finished) return;
+      scheduled = true;
+      const generation = state.generation;
+      requestAnimationFrame(() => { scheduled = false; frame(generation); });
+    }
+    new IntersectionObserver(entries => {
+      visible = entries.some(entry => entry.isIntersecting);
+      schedule();
+    }).observe(root);
+
+    function frame(generation) {
+      if (!state || state.finished || state.generation !== generation) return;
+      try {
+        const share = FRAME_MS / views;
+        for (let view = 0; view < views; view++) {
+          if (state.spp[view] >= state.target[view]) continue;
+          const budget = Math.max(width, Math.round(state.rate[view] * share));
+          const t0 = performance.now();
+          const traced = call('demo_advance', firstSlot + view, budget);
+          const dt = Math.max(performance.now() - t0, 0.05);
+          state.rate[view] = traced / dt;
+          state.ms[view] += dt;
+          state.spp[view] = call('demo_spp', firstSlot + view);
+        }
+      } catch (error) {
+        fail(error);
+        return;
+      }
+      const now = performance.now() - state.started;
+      const done = views > 1
+        ? state.spp.some((spp, view) => spp >= state.target[view])
+        : state.spp[0] >= state.target[0];
+      draw();
+      report();
+      if (root.dataset.firstFrameMs === undefined) root.dataset.firstFrameMs = now.toFixed(1);
+      if (root.dataset.firstPassMs === undefined && Math.min(...state.spp) >= 1) {
+        root.dataset.firstPassMs = now.toFixed(1);
+      }
+      if (done) {
+        root.dataset.doneMs = now.toFixed(1);
+        root.dataset.done = 'yes';
+        state.finished = true;
+      } else {
+        schedule();
+      }
+    }
+
+    let generations = 0;
+    function restart() {
+      delete canvas.dataset.failure;
+      for (const key of ['firstFrameMs', 'firstPassMs', 'doneMs', 'done']) delete root.dataset[key];
+      for (const control of controls) control.show();
+      const values = controls.map(control => Number(control.input.value));
+      generations += 1;
+      state = {
+        generation: generations, started: performance.now(),
+        target: [], spp: Array(views).fill(0), ms: Array(views).fill(0), rate: Array(views).fill(0),
+      };
+      try {
+        for (let view = 0; view < views; view++) {
+          writeNumbers(values);
+          state.target.push(call('demo_start', index, view, firstSlot + view, width, height));
+        }
+      } catch (error) {
+        fail(error);
+        return;
+      }
+      scheduled = false;
+      schedule();
+    }
+    root.demoRestart = restart;
+
+    for (const control of controls) control.input.addEventListener('input', restart);
+    if (zoom) zoom.addEventListener('input', () => { if (state && !canvas.dataset.failure) draw(); });
+    restart();
+
+    // What the controls promise, for the site's check: the demo's claims, each checked by the
+    // module on small renders of the chapter's code.
+    root.demoCheck = async () => {
+      const problems = [];
+      for (let claim = 0; claim < spec.claims.length; claim++) {
+        try {
+          call('demo_claim', index, claim);
+        } catch (error) {
+          if (!(error instanceof DemoError)) throw error;
+          if (error.message.includes('(not written yet)')) {
+            showFailure(canvas, error.message);
+            return problems;
+          }
+          problems.push(error.message);
+        }
+      }
+      return problems;
+    };
+  }
+
   const DEMOS = { warps: warpExplorer };
 
   for (const root of document.querySelectorAll('div.demo[data-demo]')) {
-    const demo = DEMOS[root.dataset.demo];
+    const demo = DEMOS[root.dataset.demo] || renderDemo;
     try {
-      if (!demo) throw new Error(`no demo called ${root.dataset.demo}`);
       demo(root);
       root.dataset.ready = 'yes';
     } catch (error) {

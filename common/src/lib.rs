@@ -19,6 +19,7 @@ pub mod ray;
 pub mod render;
 pub mod sampler;
 pub mod scene;
+pub mod srgb;
 
 pub use glam::{DVec3, UVec2, Vec2, Vec3};
 pub use ray::Ray;

@@ -8,8 +8,14 @@
 //! and never unwinds into JavaScript: a panic, such as an exercise not written yet, is caught
 //! by [`outcome::run`], kept as text for the page to show, and reported as a failure.
 //!
-//! One module per demo: [`warps`] for chapter 02.
+//! Chapter 02's warp explorer has exports of its own ([`warps`]); every other demo renders,
+//! and is a [`demo::Demo`] listed in [`renders::DEMOS`]: a chapter's scene, camera and tracer
+//! behind controls, refined a slice at a time ([`progressive`]).
 
 pub mod buffers;
+pub mod demo;
 pub mod outcome;
+pub mod progressive;
+pub mod renders;
 pub mod warps;
+pub mod whitted;

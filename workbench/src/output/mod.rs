@@ -18,9 +18,9 @@ pub mod figures;
 mod image_file;
 mod pfm;
 mod png;
-mod srgb;
 
 pub use atomic::{write_atomic, write_text};
 pub use error::OutputError;
 pub use image_file::{check_image_path, read_image, write_image};
-pub use srgb::{linear_to_srgb, srgb_to_linear, srgb8_to_linear, to_srgb8};
+// The sRGB curve is `common`'s: the live demos encode their pixels with it too.
+pub use common::srgb::{linear_to_srgb, srgb_to_linear, srgb8_to_linear, to_srgb8};

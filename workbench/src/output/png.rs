@@ -7,8 +7,8 @@
 use glam::Vec3;
 use image::{ExtendedColorType, ImageEncoder, ImageError, ImageFormat};
 
-use super::srgb::{srgb_to_linear, srgb8_to_linear, to_srgb8};
 use common::image::Image;
+use common::srgb::{srgb_to_linear, srgb8_to_linear, to_srgb8};
 
 /// Encodes linear `image` as an 8-bit sRGB PNG in memory.
 pub(super) fn encode(image: &Image) -> Result<Vec<u8>, ImageError> {
@@ -66,7 +66,7 @@ pub(super) fn decode(bytes: &[u8]) -> Result<Image, ImageError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::output::srgb::linear_to_srgb;
+    use common::srgb::linear_to_srgb;
 
     #[test]
     fn stores_srgb_bytes() {
