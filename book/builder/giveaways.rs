@@ -92,6 +92,7 @@ const SHIPPED_CODE: &[&str] = &[
     "tests",
     "book/builder",
     "fuzz",
+    "web",
 ];
 
 /// Every giveaway in the workspace's shipped Rust code outside solution regions, as

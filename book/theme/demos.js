@@ -316,8 +316,18 @@
       if (!control.options) label.appendChild(shown);
       const show = () => { shown.textContent = input.value; };
       show();
-      return { input, label, show };
+      return { control, input, label, show };
     });
+    // A control that matters only for one value of another (a polygon's blades) hides
+    // otherwise.
+    const showRelevant = () => {
+      for (const { control, label } of controls) {
+        if (!control.when) continue;
+        const other = controls.find(c => c.control.name === control.when.name);
+        label.style.display = other && Number(other.input.value) === control.when.value ? '' : 'none';
+      }
+    };
+    showRelevant();
     let zoom = null;
     const extra = [];
     if (spec.zoom) {
@@ -435,6 +445,7 @@
       delete canvas.dataset.failure;
       for (const key of ['firstFrameMs', 'firstPassMs', 'doneMs', 'done']) delete root.dataset[key];
       for (const control of controls) control.show();
+      showRelevant();
       const values = controls.map(control => Number(control.input.value));
       generations += 1;
       state = {

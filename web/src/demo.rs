@@ -26,6 +26,9 @@ pub struct Control {
     pub kind: ControlKind,
     /// Its value when the demo starts (an option's index for a choice).
     pub value: f64,
+    /// Shown only while another control has one value (`(name, value)`): a polygon's blades
+    /// only while the aperture is a polygon. A hidden control keeps its value.
+    pub shown_when: Option<(&'static str, f64)>,
 }
 
 /// A slider or a list of choices.
@@ -52,6 +55,7 @@ impl Control {
             label,
             kind: ControlKind::Range { min, max, step },
             value,
+            shown_when: None,
         }
     }
 
@@ -67,11 +71,19 @@ impl Control {
             label,
             kind: ControlKind::Choice(options),
             value: value as f64,
+            shown_when: None,
         }
     }
 
+    /// This control, shown only while control `name` has value `value` (an option's index for
+    /// a choice).
+    pub const fn when(mut self, name: &'static str, value: f64) -> Self {
+        self.shown_when = Some((name, value));
+        self
+    }
+
     /// Whether `value` is one this control can take.
-    fn allows(&self, value: f64) -> bool {
+    pub(crate) fn allows(&self, value: f64) -> bool {
         match self.kind {
             ControlKind::Range { min, max, .. } => (min..=max).contains(&value),
             ControlKind::Choice(options) => {

@@ -43,8 +43,9 @@ pub extern "C" fn demo_find() -> u32 {
 }
 
 /// Puts the description of demo `index` in the text buffer, as JSON: its chapter, views, the
-/// size of its picture, whether it zooms, its controls (name, label, a range's `min`, `max`, `step` or a choice's
-/// `options`, and the starting `value`) and its claims' words. Gives the text's length.
+/// size of its picture, whether it zooms, its controls (name, label, a range's `min`, `max`,
+/// `step` or a choice's `options`, the starting `value`, and `when` another control's value
+/// shows it) and its claims' words. Gives the text's length.
 #[unsafe(no_mangle)]
 pub extern "C" fn demo_spec(index: u32) -> u32 {
     let Some(demo) = demo(index) else {
@@ -82,8 +83,14 @@ fn spec_json(demo: &dyn Demo) -> String {
                     list(options.iter().map(|o| quote(o)).collect())
                 ),
             };
+            let when = match c.shown_when {
+                Some((name, value)) => {
+                    format!(",\"when\":{{\"name\":{},\"value\":{value}}}", quote(name))
+                }
+                None => String::new(),
+            };
             format!(
-                "{{\"name\":{},\"label\":{},{kind},\"value\":{}}}",
+                "{{\"name\":{},\"label\":{},{kind},\"value\":{}{when}}}",
                 quote(c.name),
                 quote(c.label),
                 c.value
@@ -212,8 +219,20 @@ mod tests {
             assert_eq!(length as usize, spec.len());
             assert!(spec.starts_with('{') && spec.ends_with('}'), "{spec}");
             assert!(spec.contains(&format!("\"name\":\"{}\"", demo.name())));
-            for control in demo.controls() {
+            let controls = demo.controls();
+            for control in &controls {
                 assert!(spec.contains(&format!("\"name\":\"{}\"", control.name)));
+                if let Some((name, value)) = control.shown_when {
+                    let other = controls
+                        .iter()
+                        .find(|c| c.name == name && c.name != control.name);
+                    assert!(
+                        other.is_some_and(|other| other.allows(value)),
+                        "{}: {} is shown when {name} is {value}, which no other control can be",
+                        demo.name(),
+                        control.name
+                    );
+                }
             }
         }
         buffers::give_text("no-such-demo");
