@@ -8,12 +8,14 @@
 //! and never unwinds into JavaScript: a panic, such as an exercise not written yet, is caught
 //! by [`outcome::run`], kept as text for the page to show, and reported as a failure.
 //!
-//! Chapter 02's warp explorer has exports of its own ([`warps`]); every other demo renders,
+//! Chapter 02's warp explorer and generators have exports of their own ([`warps`],
+//! [`generators`]); every other demo renders,
 //! and is a [`demo::Demo`] listed in [`renders::DEMOS`]: a chapter's scene, camera and tracer
 //! behind controls, refined a slice at a time ([`progressive`]).
 
 pub mod buffers;
 pub mod demo;
+pub mod generators;
 pub mod outcome;
 pub mod progressive;
 pub mod renders;
