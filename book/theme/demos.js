@@ -455,6 +455,7 @@
     const width = spec.width;
     const height = spec.height;
     const views = spec.views.length;
+    root.dataset.size = `${width} x ${height}`;
     const firstSlot = slots;
     slots += views;
 

@@ -48,7 +48,10 @@ mod tests {
     use super::*;
 
     fn index_of(name: &str) -> u32 {
-        Generator::ALL.iter().position(|g| g.name() == name).unwrap() as u32
+        Generator::ALL
+            .iter()
+            .position(|g| g.name() == name)
+            .unwrap() as u32
     }
 
     #[test]
