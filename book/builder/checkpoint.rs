@@ -295,8 +295,6 @@ fn reference_lines(workbook: &Path, list: &[Exercise], exercise: &Exercise) -> R
         .with_context(|| format!("{}: exercise `{}`", path.display(), exercise.name))
 }
 
-/// Writes `text` to `path` whole or not at all: into a file beside it, then renamed over it.
-
 #[cfg(test)]
 mod tests {
     use super::*;
