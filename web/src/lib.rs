@@ -16,6 +16,7 @@
 pub mod buffers;
 pub mod demo;
 pub mod generators;
+pub mod materials;
 pub mod outcome;
 pub mod progressive;
 pub mod renders;
