@@ -49,7 +49,7 @@ pub fn build(root: &Path, book_src: &Path) -> Result<PathBuf> {
     let bytes = std::fs::read(&module)
         .with_context(|| format!("cannot read the compiled demos, {}", module.display()))?;
     let script = book_src.join(SCRIPT);
-    crate::workspace::write_whole(&script, &script_of(&bytes))?;
+    crate::workspace::write_whole(&script, script_of(&bytes))?;
     println!(
         "Demos ready in {:.1} s: {} KiB of WebAssembly in {}",
         started.elapsed().as_secs_f64(),
