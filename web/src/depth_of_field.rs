@@ -102,6 +102,12 @@ impl Demo for DepthOfFieldDemo {
         ]
     }
 
+    fn target_spp(&self, _: &Values) -> u64 {
+        // A blurred light is a handful of bright samples spread over dozens of pixels: its
+        // shape (a disc, a polygon, a bright core) shows only once each pixel has many.
+        64
+    }
+
     fn size(&self) -> (u32, u32) {
         // The chapter's scene is framed 3:2.
         (180, 120)
