@@ -138,8 +138,8 @@ impl Demo for DepthOfFieldDemo {
                     let (narrow, wide) =
                         (render(demo, &values(16.0))?, render(demo, &values(1.4))?);
                     let depths = depths();
-                    let focus = f64::from(BOKEH_SPHERE_DEPTHS[1]) as f32;
-                    let far = |image: &Image| sharpness(image, &depths, |d| d > 10.0);
+                    let focus = defaults(demo).f32("focus");
+                    let far = |image: &Image| sharpness(image, &depths, |d| d > FAR);
                     let on = |image: &Image| sharpness(image, &depths, |d| (d - focus).abs() < 0.5);
                     if far(&wide) > 0.7 * far(&narrow) {
                         return Err(format!(
@@ -163,23 +163,24 @@ impl Demo for DepthOfFieldDemo {
                 says: "focusing near sharpens the near things and blurs the far ones, focusing \
                        far the other way round",
                 check: |demo| {
+                    let [near_sphere, _, far_sphere] = BOKEH_SPHERE_DEPTHS.map(f64::from);
                     let at = |focus| render(demo, &defaults(demo).with("focus", focus));
-                    let (near_focus, far_focus) = (at(3.5)?, at(12.0)?);
+                    let (near_focus, far_focus) = (at(near_sphere)?, at(far_sphere)?);
                     let depths = depths();
-                    let near = |image: &Image| sharpness(image, &depths, |d| d < 5.0);
-                    let far = |image: &Image| sharpness(image, &depths, |d| d > 10.0);
+                    let near = |image: &Image| sharpness(image, &depths, |d| d < NEAR);
+                    let far = |image: &Image| sharpness(image, &depths, |d| d > FAR);
                     if near(&near_focus) < 1.3 * near(&far_focus) {
                         return Err(format!(
-                            "the near things are not clearly sharper focused at 3.5 than at 12 \
-                             ({:.4} against {:.4})",
+                            "the near things are not clearly sharper focused at {near_sphere} \
+                             than at {far_sphere} ({:.4} against {:.4})",
                             near(&near_focus),
                             near(&far_focus)
                         ));
                     }
                     if far(&far_focus) < 1.3 * far(&near_focus) {
                         return Err(format!(
-                            "the far things are not clearly sharper focused at 12 than at 3.5 \
-                             ({:.4} against {:.4})",
+                            "the far things are not clearly sharper focused at {far_sphere} \
+                             than at {near_sphere} ({:.4} against {:.4})",
                             far(&far_focus),
                             far(&near_focus)
                         ));
@@ -193,7 +194,7 @@ impl Demo for DepthOfFieldDemo {
                     let holes = holes();
                     let middles = |warp| -> Result<f64, String> {
                         let values = defaults(demo)
-                            .with("focus", 3.5)
+                            .with("focus", f64::from(BOKEH_SPHERE_DEPTHS[0]))
                             .with("f-number", 1.4)
                             .with("warp", warp);
                         Ok(mean_where(&render(demo, &values)?, &holes))
@@ -215,6 +216,13 @@ impl Demo for DepthOfFieldDemo {
 /// The size of the claims' renders (the scene's 3:2) and their samples per pixel.
 const CLAIM_SIZE: UVec2 = UVec2::new(72, 48);
 const CLAIM_SPP: u64 = 32;
+
+/// Depths nearer than this are the near things (the near sphere, the floor before it), farther
+/// than [`FAR`] the far ones (the far sphere, the floor behind it, the wall and its lights): the
+/// middle sphere, where the demo starts focused, lies between.
+const NEAR: f32 = 5.0;
+/// See [`NEAR`].
+const FAR: f32 = 10.0;
 
 /// The demo's starting values.
 fn defaults(demo: &dyn Demo) -> Values {
