@@ -13,8 +13,11 @@
 //! and is a [`demo::Demo`] listed in [`renders::DEMOS`]: a chapter's scene, camera and tracer
 //! behind controls, refined a slice at a time ([`progressive`]).
 
+pub mod anti_aliasing;
 pub mod buffers;
+pub mod contrast;
 pub mod demo;
+pub mod depth_of_field;
 pub mod generators;
 pub mod materials;
 pub mod outcome;

@@ -14,6 +14,8 @@ use crate::{buffers, outcome};
 /// Every render demo, one or more per chapter.
 pub static DEMOS: &[&dyn Demo] = &[
     &crate::whitted::WhittedDemo,
+    &crate::anti_aliasing::AntiAliasingDemo,
+    &crate::depth_of_field::DepthOfFieldDemo,
     &crate::materials::MaterialsDemo,
 ];
 
