@@ -14,6 +14,8 @@
 
 pub mod buffers;
 pub mod demo;
+pub mod fuzzy;
+pub mod motion_blur;
 pub mod outcome;
 pub mod progressive;
 pub mod renders;

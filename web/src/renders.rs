@@ -12,7 +12,11 @@ use crate::progressive::Session;
 use crate::{buffers, outcome};
 
 /// Every render demo, one or more per chapter.
-pub static DEMOS: &[&dyn Demo] = &[&crate::whitted::WhittedDemo];
+pub static DEMOS: &[&dyn Demo] = &[
+    &crate::whitted::WhittedDemo,
+    &crate::motion_blur::MotionBlurDemo,
+    &crate::fuzzy::FuzzyDemo,
+];
 
 /// The most sessions a page may run at once.
 const MOST_SLOTS: u32 = 256;
