@@ -140,7 +140,7 @@ impl Demo for FuzzyDemo {
                 "at glass, follow",
                 &[
                     "both rays",
-                    "one ray, each at 1/2, weighted 2F or 2(1 - F)",
+                    "one ray, each at probability 1/2",
                     "one ray, reflection at probability F",
                 ],
                 2,
