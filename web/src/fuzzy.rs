@@ -189,6 +189,26 @@ impl Demo for FuzzyDemo {
                 },
             },
             Claim {
+                says: "the lecture's disc changes the floor's reflections and hardly the matte \
+                       wall and balls seen directly",
+                check: |demo| {
+                    let defaults = Values::defaults(&demo.controls());
+                    let lobe = render(&defaults.clone().with("fuzz", 0.0), SEED);
+                    let disc = render(&defaults.with("fuzz", 1.0), SEED);
+                    let floor = mean_difference(&lobe, &disc, |view| view.glossy);
+                    let matte = mean_difference(&lobe, &disc, |view| view.matte);
+                    // A pixel's samples spread over it: at a ball's edge some reach the floor.
+                    if floor > 0.0 && matte < 0.02 * floor {
+                        Ok(())
+                    } else {
+                        Err(format!(
+                            "the disc changed the floor by {floor} on average, and the matte \
+                             surfaces seen directly by {matte}"
+                        ))
+                    }
+                },
+            },
+            Claim {
                 says: "what happens below the surface changes the floor where the view grazes \
                        it, and hardly where the camera looks down on it",
                 check: |demo| {
@@ -242,6 +262,8 @@ fn render(values: &Values, seed: u64) -> Image {
 struct ViewHit {
     /// Whether it is a glossy surface.
     glossy: bool,
+    /// Whether it is a matte one (its colour read from its texture).
+    matte: bool,
     /// The cosine between the ray and the surface's normal.
     cos_to_normal: f32,
 }
@@ -270,6 +292,7 @@ fn mean_difference(a: &Image, b: &Image, which: impl Fn(&ViewHit) -> bool) -> f3
             let accepted = hit.is_some_and(|hit| {
                 which(&ViewHit {
                     glossy: matches!(world.material_at(&hit).as_ref(), Material::Glossy(_)),
+                    matte: matches!(world.material_at(&hit).as_ref(), Material::Diffuse { .. }),
                     cos_to_normal: ray.dir.dot(hit.n).abs(),
                 })
             });

@@ -238,6 +238,24 @@ impl Demo for MotionBlurDemo {
                 },
             },
             Claim {
+                says: "a shutter that takes a while to open and close shows the ball more in the \
+                       middle of its path and fades the ends of its streak",
+                check: |demo| {
+                    let open = Values::defaults(&demo.controls()).with("shutter", 1.0);
+                    let at_once = middle_share(&open.clone().with("opening", 0.0));
+                    let gradual = middle_share(&open.with("opening", 1.0).with("ramp", 0.5));
+                    if gradual > 1.1 * at_once {
+                        Ok(())
+                    } else {
+                        Err(format!(
+                            "the middle fifth of the picture holds {at_once} of the ball's \
+                             showing with a shutter that opens at once, and {gradual} with one \
+                             that opens over half the exposure: it should hold clearly more"
+                        ))
+                    }
+                },
+            },
+            Claim {
                 says: "a sliding camera blurs the still floor too",
                 check: |demo| {
                     let defaults = Values::defaults(&demo.controls());
@@ -267,10 +285,11 @@ fn render(scene: Scene, values: &Values) -> Image {
     render_still(Box::new(picture), CLAIM_SIZE.x, CLAIM_SIZE.y, CLAIM_SPP)
 }
 
-/// The pixels the red ball is seen in, directly or in the mirror, at any time the shutter is
-/// open: those that change when the ball's colour does. The two renders draw the same
-/// numbers, so nothing else changes (the ball's shadow does not depend on its colour).
-fn smear(values: &Values) -> usize {
+/// How much the red ball shows in each pixel, seen directly or in the mirror at any time the
+/// shutter is open: how much the pixel changes when the ball's colour does. The two renders
+/// draw the same numbers, so nothing else changes (the ball's shadow does not depend on its
+/// colour).
+fn ball_showing(values: &Values) -> Vec<f32> {
     let ball = red_ball(&Builtin::Street.scene(DEFAULT_MAX_DEPTH, Shutter::INSTANT));
     let mut scene = scene(values);
     let shown = render(scene.clone(), values);
@@ -283,8 +302,26 @@ fn smear(values: &Values) -> usize {
         .pixels
         .iter()
         .zip(&recoloured.pixels)
-        .filter(|(a, b)| a != b)
-        .count()
+        .map(|(a, b)| (*a - *b).abs().element_sum())
+        .collect()
+}
+
+/// The pixels the red ball shows in.
+fn smear(values: &Values) -> usize {
+    ball_showing(values).iter().filter(|&&d| d > 0.0).count()
+}
+
+/// The share of the red ball's showing (see [`ball_showing`]) in the middle fifth of the
+/// picture's columns, where the middle of its path is, directly and in the mirror.
+fn middle_share(values: &Values) -> f32 {
+    let showing = ball_showing(values);
+    let width = CLAIM_SIZE.x as usize;
+    let middle = 2 * width / 5..3 * width / 5;
+    let in_middle: f32 = (showing.iter().enumerate())
+        .filter(|(i, _)| middle.contains(&(i % width)))
+        .map(|(_, d)| d)
+        .sum();
+    in_middle / showing.iter().sum::<f32>()
 }
 
 /// Checks that the red ball covers more pixels with `more` than with `less`.
