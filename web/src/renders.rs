@@ -16,6 +16,8 @@ pub static DEMOS: &[&dyn Demo] = &[
     &crate::whitted::WhittedDemo,
     &crate::anti_aliasing::AntiAliasingDemo,
     &crate::depth_of_field::DepthOfFieldDemo,
+    &crate::motion_blur::MotionBlurDemo,
+    &crate::fuzzy::FuzzyDemo,
     &crate::materials::MaterialsDemo,
 ];
 
