@@ -565,6 +565,11 @@
 
     function frame(generation) {
       if (!state || state.finished || state.generation !== generation) return;
+      // A demo started off screen waits for the reader: its clock starts when it first runs.
+      if (!state.running) {
+        state.running = true;
+        if (!state.visibleAtStart) state.started = performance.now();
+      }
       try {
         const share = FRAME_MS / views;
         for (let view = 0; view < views; view++) {
@@ -612,7 +617,7 @@
       const values = controls.map(control => Number(control.input.value));
       generations += 1;
       state = {
-        generation: generations, started: performance.now(),
+        generation: generations, started: performance.now(), visibleAtStart: visible, running: false,
         target: [], spp: Array(views).fill(0), ms: Array(views).fill(0), rate: Array(views).fill(0),
       };
       try {
