@@ -15,7 +15,9 @@
 pub mod buffers;
 pub mod demo;
 pub mod outcome;
+pub mod path_tracing;
 pub mod progressive;
 pub mod renders;
+pub mod soft_shadows;
 pub mod warps;
 pub mod whitted;

@@ -12,7 +12,11 @@ use crate::progressive::Session;
 use crate::{buffers, outcome};
 
 /// Every render demo, one or more per chapter.
-pub static DEMOS: &[&dyn Demo] = &[&crate::whitted::WhittedDemo];
+pub static DEMOS: &[&dyn Demo] = &[
+    &crate::whitted::WhittedDemo,
+    &crate::soft_shadows::SoftShadowsDemo,
+    &crate::path_tracing::PathTracingDemo,
+];
 
 /// The most sessions a page may run at once.
 const MOST_SLOTS: u32 = 256;
