@@ -173,10 +173,12 @@ impl Demo for PathTracingDemo {
     }
 
     /// The MIS heuristic comes before NEE, which it needs: the site's check moves the controls
-    /// in this order, and would find the heuristic hidden once NEE is off.
+    /// in this order, and would find the heuristic hidden once NEE is off. The depth starts at
+    /// 3, one below the chapter's figure: the tree's rays double with every level, and its
+    /// first pass must stay quick.
     fn controls(&self) -> Vec<Control> {
         vec![
-            Control::range("max-depth", "max depth", 1.0, 6.0, 1.0, 4.0),
+            Control::range("max-depth", "max depth", 1.0, 6.0, 1.0, 3.0),
             Control::range(
                 "roulette",
                 "Russian roulette from segment",
