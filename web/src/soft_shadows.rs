@@ -1,5 +1,6 @@
 //! Chapter 07's demo: the lecture's ball and block under one area light, traced as the
-//! chapter's `render_with` traces them (chapter 06's tracer lit by [`AreaLighting`]), with the
+//! chapter's `render_with` traces them (chapter 06's tracer lit by
+//! [`AreaLighting`](ch07_soft_shadows::AreaLighting)), with the
 //! light's shape and size, the shadow rays each light gets at a matte hit, and how a sphere
 //! light is sampled.
 //!
@@ -27,6 +28,9 @@ pub struct SoftShadowsDemo;
 /// second, so that the site's check, which moves each control to its next option in turn, finds
 /// a sphere when it reaches the sampling control.
 const SHAPES: &[&str] = &["square panel", "sphere", "triangle", "disc"];
+
+/// The `sampling` control's options, in the order of [`Strategy::ALL`].
+const SAMPLING: &[&str] = &["area", "solid angle"];
 
 /// The `light-shape` option that is a sphere: the only shape the sampling strategy matters for.
 const SPHERE: f64 = 1.0;
@@ -162,7 +166,7 @@ impl Demo for SoftShadowsDemo {
             Control::choice("light-shape", "light's shape", SHAPES, 0),
             Control::range("light-size", "light's size", 0.1, 2.5, 0.05, 1.0),
             Control::range("shadow-rays", "shadow rays per light", 1.0, 16.0, 1.0, 1.0),
-            Control::choice("sampling", "sphere sampled by", &["area", "solid angle"], 1)
+            Control::choice("sampling", "sphere sampled by", SAMPLING, 1)
                 .when("light-shape", SPHERE),
         ]
     }
@@ -279,6 +283,7 @@ fn less(ours: f64, theirs: f64, what: &str, against: &str) -> Result<(), String>
 /// the channels, and is left out.
 fn partly_lit(demo: &dyn Demo, size: f64) -> Result<usize, String> {
     let values = Values::defaults(&demo.controls())
+        .with("light-shape", 0.0)
         .with("light-size", size)
         .with("shadow-rays", 16.0);
     let spp = 4;
@@ -318,5 +323,12 @@ mod tests {
         assert_eq!(SHAPES[SPHERE as usize], "sphere");
         let values = Values::defaults(&SoftShadowsDemo.controls()).with("light-shape", SPHERE);
         assert!(matches!(light_shape(&values), Shape::Sphere(_)));
+    }
+
+    #[test]
+    fn the_sampling_options_are_the_chapters_strategies_in_order() {
+        let names: Vec<String> = SAMPLING.iter().map(|o| o.replace(' ', "-")).collect();
+        let strategies: Vec<&str> = Strategy::ALL.iter().map(|s| s.name()).collect();
+        assert_eq!(names, strategies);
     }
 }
