@@ -252,7 +252,7 @@ fn put_in(
     if source.ends_with('\n') {
         text.push('\n');
     }
-    write_whole(path, &text)?;
+    crate::workspace::write_whole(path, &text)?;
     Ok(saved)
 }
 
@@ -293,14 +293,6 @@ fn reference_lines(workbook: &Path, list: &[Exercise], exercise: &Exercise) -> R
         .with_context(|| format!("cannot read {}", path.display()))?;
     sealed_solutions::reference_lines(&source, &reference.anchor)
         .with_context(|| format!("{}: exercise `{}`", path.display(), exercise.name))
-}
-
-/// Writes `text` to `path` whole or not at all: into a file beside it, then renamed over it.
-fn write_whole(path: &Path, text: &str) -> Result<()> {
-    let temporary = path.with_extension("rs.checkpoint");
-    std::fs::write(&temporary, text)
-        .with_context(|| format!("cannot write {}", temporary.display()))?;
-    std::fs::rename(&temporary, path).with_context(|| format!("cannot replace {}", path.display()))
 }
 
 #[cfg(test)]

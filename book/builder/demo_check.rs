@@ -57,7 +57,8 @@ pub fn play(tab: &Tab, thorough: bool) -> Result<Vec<DemoReport>> {
 /// a checkbox over), waits for the demo to draw again, and checks that the canvas changed; then
 /// runs the demo's own check. A render demo (`data-progressive`) refines its picture over many
 /// frames, and its first frames after a move may show only rows that did not change (the sky):
-/// it is compared once it has finished (`data-done`), before and after each move. A failure whose message is an exercise's stub ("(not written
+/// it is compared once it has finished (`data-done`), before and after each move, refined to two
+/// samples per pixel only (`demoCap`). A failure whose message is an exercise's stub ("(not written
 /// yet)") is reported apart, as `waiting`: the student's own site shows it on purpose.
 const PROBE: &str = r#"(async (thorough) => {
   const sleep = ms => new Promise(done => setTimeout(done, ms));
@@ -101,6 +102,8 @@ const PROBE: &str = r#"(async (thorough) => {
     }
     if (failure()) { stopped('its first frame failed'); continue; }
     if (!thorough) continue;
+    // Two samples per pixel show what a control changes, at an eighth of the usual time.
+    if (typeof root.demoCap === 'function') root.demoCap(2);
     for (const control of root.querySelectorAll('[data-control]')) {
       if (control.offsetParent === null) continue;
       report.controls++;

@@ -49,7 +49,7 @@ pub fn build(root: &Path, book_src: &Path) -> Result<PathBuf> {
     let bytes = std::fs::read(&module)
         .with_context(|| format!("cannot read the compiled demos, {}", module.display()))?;
     let script = book_src.join(SCRIPT);
-    write_whole(&script, &script_of(&bytes))?;
+    crate::workspace::write_whole(&script, script_of(&bytes))?;
     println!(
         "Demos ready in {:.1} s: {} KiB of WebAssembly in {}",
         started.elapsed().as_secs_f64(),
@@ -66,16 +66,6 @@ fn script_of(module: &[u8]) -> String {
          module, in base64.\nwindow.BOOK_DEMOS_WASM = \"{}\";\n",
         BASE64_STANDARD.encode(module)
     )
-}
-
-/// Writes `text` to `path` whole or not at all: into a file beside it, then renamed.
-fn write_whole(path: &Path, text: &str) -> Result<()> {
-    let dir = path.parent().unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let partial = path.with_extension("js.partial");
-    std::fs::write(&partial, text)
-        .with_context(|| format!("cannot write {}", partial.display()))?;
-    std::fs::rename(&partial, path).with_context(|| format!("cannot write {}", path.display()))
 }
 
 #[cfg(test)]

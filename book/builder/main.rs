@@ -14,9 +14,13 @@
 //! - `cargo run -p book --features browser -- check-site` opens every page of the built site in
 //!   headless Chromium, offline, and fails on broken images, links and formulas, script errors,
 //!   or a search that finds nothing; it leaves a screenshot of every page (CI runs it).
+//! - `cargo run --release -p book --features browser -- bench-demos` times every live demo in
+//!   headless Chromium (a benchmark: it reports, it does not fail on a time).
 
 mod check_exercises;
 mod checkpoint;
+#[cfg(feature = "browser")]
+mod demo_bench;
 #[cfg(feature = "browser")]
 mod demo_check;
 mod demos;
@@ -137,6 +141,17 @@ enum Task {
         /// cargo's target directory].
         #[arg(long, value_name = "DIR")]
         screenshots: Option<PathBuf>,
+    },
+    /// Time every live demo of the built site in headless Chromium: its first frame, its first
+    /// complete pass and its target samples per pixel (a benchmark; pin it to one core with
+    /// `taskset -c 0` to measure as on a small machine).
+    BenchDemos {
+        /// The built site [default: book/site].
+        #[arg(long, value_name = "DIR")]
+        site: Option<PathBuf>,
+        /// Also write the table of times, in Markdown, to this file.
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
     },
     /// Open every page of the built site in headless Chromium (offline, from disk) and fail on
     /// a broken image, an image without alt text, a broken link or anchor, a formula KaTeX
@@ -288,6 +303,9 @@ fn main() -> Result<()> {
                 .unwrap_or_else(|| workspace::target_dir(&root).join("lab-report-screenshots"));
             check_lab_report(&root, &screenshots)
         }
+        Some(Task::BenchDemos { site, out }) => {
+            bench_demos(&site.unwrap_or_else(|| root.join("book").join("site")), out)
+        }
         Some(Task::CheckSite {
             site,
             screenshots,
@@ -314,6 +332,31 @@ fn check_lab_report(_root: &Path, _screenshots: &Path) -> Result<()> {
         "check-lab-report opens the student's site in headless Chromium, and this build of the \
          book leaves the browser driver out: run `cargo run -p book --features browser -- \
          check-lab-report`"
+    )
+}
+
+/// Times the demos and prints the table (and writes it whole to `out`, if given).
+#[cfg(feature = "browser")]
+fn bench_demos(site: &Path, out: Option<PathBuf>) -> Result<()> {
+    println!(
+        "Timing every live demo of {} in headless Chromium ...",
+        site.display()
+    );
+    let times = demo_bench::run(site)?;
+    let table = demo_bench::table(&times);
+    println!("{table}");
+    if let Some(out) = out {
+        workspace::write_whole(&out, &table)?;
+    }
+    Ok(())
+}
+
+/// Without the browser driver, `bench-demos` says how to build it in.
+#[cfg(not(feature = "browser"))]
+fn bench_demos(_site: &Path, _out: Option<PathBuf>) -> Result<()> {
+    anyhow::bail!(
+        "bench-demos drives headless Chromium, and this build of the book leaves the browser \
+         driver out: run `cargo run --release -p book --features browser -- bench-demos`"
     )
 }
 

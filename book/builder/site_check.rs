@@ -686,7 +686,7 @@ fn without_repeats(problems: Vec<Problem>) -> Vec<Problem> {
 
 /// Starts headless Chromium with a fresh profile and everything that would reach the network
 /// turned off.
-fn launch(chromium: &Path, profile: &Path) -> Result<Browser> {
+pub(crate) fn launch(chromium: &Path, profile: &Path) -> Result<Browser> {
     let args: Vec<&OsStr> = [
         "--disable-quic",
         "--no-first-run",
@@ -715,7 +715,7 @@ fn launch(chromium: &Path, profile: &Path) -> Result<Browser> {
 }
 
 /// A `file://` URL for an absolute path, with the characters URLs cannot hold escaped.
-fn file_url(path: &Path) -> String {
+pub(crate) fn file_url(path: &Path) -> String {
     let mut url = String::from("file://");
     for component in path.components() {
         match component {

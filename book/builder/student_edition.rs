@@ -263,15 +263,7 @@ pub fn seal_solutions(root: &Path, exercises: &[Exercise], out: &Path) -> Result
     use crate::sealed_solutions::{SEALED_PATH, collect, seal};
     let sealed = seal(&collect(root, exercises)?)?;
     let path = out.join(SEALED_PATH);
-    if let Some(parent) = path.parent() {
-        std::fs::create_dir_all(parent)
-            .with_context(|| format!("cannot create {}", parent.display()))?;
-    }
-    let temporary = path.with_extension("sealed.partial");
-    std::fs::write(&temporary, sealed)
-        .with_context(|| format!("cannot write {}", temporary.display()))?;
-    std::fs::rename(&temporary, &path)
-        .with_context(|| format!("cannot write {}", path.display()))?;
+    workspace::write_whole(&path, &sealed)?;
     Ok(path)
 }
 

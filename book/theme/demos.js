@@ -33,6 +33,8 @@
     return new TextDecoder().decode(bytes);
   }
 
+  function numbers_() { return numbers(); }
+
   function numbers() {
     const m = wasm();
     return new Float64Array(m.memory.buffer, m.numbers_ptr(), m.numbers_len()).slice();
@@ -256,6 +258,163 @@
     };
   }
 
+  // ---- Chapter 02: the generators' triples in the unit cube --------------------------------
+  //
+  // Consecutive triples of a generator's numbers as points of the cube, seen from a direction
+  // the reader turns (azimuth and elevation), drawn in orthographic projection. With the planes
+  // 9x - 6y + z = k seen edge-on, RANDU's points show as a few lines; a good generator's stay a
+  // cloud from every side.
+
+  function generatorPlanes(root) {
+    const count = call('generator_count');
+    const names = [];
+    for (let i = 0; i < count; i++) { call('generator_name', i); names.push(text()); }
+    const generatorSelect = element('select', { 'data-control': 'generator' },
+      names.map((name, i) => element('option', { value: String(i), text: name })));
+    const pointsInput = element('input', {
+      type: 'range', min: '500', max: '20000', step: '500', value: '6000', 'data-control': 'triples',
+    });
+    const pointsShown = element('span', { class: 'demo-value' });
+    const azimuthInput = element('input', {
+      type: 'range', min: '-180', max: '180', step: '0.1', value: '30', 'data-control': 'azimuth',
+    });
+    const azimuthShown = element('span', { class: 'demo-value' });
+    const elevationInput = element('input', {
+      type: 'range', min: '-90', max: '90', step: '0.1', value: '20', 'data-control': 'elevation',
+    });
+    const elevationShown = element('span', { class: 'demo-value' });
+    // Directions to look from, as (azimuth, elevation) in degrees. The screen's up is
+    // (-sin e cos a, -sin e sin a, cos e): for the planes 9x - 6y + z = k to be seen edge-on, as
+    // horizontal lines, it must be their normal.
+    const normal = [9, -6, 1];
+    const edgeOn = [
+      Math.atan2(-normal[1], -normal[0]) * 180 / Math.PI,
+      Math.acos(normal[2] / Math.hypot(...normal)) * 180 / Math.PI,
+    ].map(angle => Math.round(angle * 10) / 10);
+    const presets = [
+      ['turned by hand', null],
+      ['planes 9x − 6y + z = k edge-on', edgeOn],
+      ['down the z axis', [0, 90]],
+    ];
+    const presetSelect = element('select', { 'data-control': 'look' },
+      presets.map(([label], i) => element('option', { value: String(i), text: label })));
+    const canvas = element('canvas', { width: '420', height: '420', class: 'demo-canvas' });
+    const verdict = element('p', { class: 'demo-verdict', 'aria-live': 'polite' });
+    const with_ = (label, input, shown) => { const l = labelled(label, input); l.appendChild(shown); return l; };
+    root.append(
+      element('div', { class: 'demo-controls' }, [
+        labelled('generator', generatorSelect), with_('triples', pointsInput, pointsShown),
+        labelled('look', presetSelect),
+        with_('azimuth °', azimuthInput, azimuthShown), with_('elevation °', elevationInput, elevationShown),
+      ]),
+      canvas, verdict);
+
+    function draw() {
+      const n = Number(pointsInput.value);
+      const azimuth = Number(azimuthInput.value) * Math.PI / 180;
+      const elevation = Number(elevationInput.value) * Math.PI / 180;
+      pointsShown.textContent = n.toLocaleString('en');
+      azimuthShown.textContent = azimuthInput.value;
+      elevationShown.textContent = elevationInput.value;
+      delete canvas.dataset.failure;
+      let numbers;
+      try {
+        call('generator_triples', Number(generatorSelect.value), n, 1);
+        numbers = numbers_();
+      } catch (error) {
+        if (!(error instanceof DemoError)) throw error;
+        showFailure(canvas, error.message);
+        verdict.textContent = '';
+        return;
+      }
+      // The screen's axes: right and up, for a viewer looking from direction `view` at the
+      // cube's centre.
+      const [ca, sa, ce, se] = [Math.cos(azimuth), Math.sin(azimuth), Math.cos(elevation), Math.sin(elevation)];
+      const right = [-sa, ca, 0];
+      const up = [-se * ca, -se * sa, ce];
+      const g = canvas.getContext('2d');
+      g.fillStyle = '#ffffff';
+      g.fillRect(0, 0, canvas.width, canvas.height);
+      const half = canvas.width / 2;
+      const scale = canvas.width / 1.8;
+      const project = (x, y, z) => {
+        const q = [x - 0.5, y - 0.5, z - 0.5];
+        return [
+          half + scale * (q[0] * right[0] + q[1] * right[1] + q[2] * right[2]),
+          half - scale * (q[0] * up[0] + q[1] * up[1] + q[2] * up[2]),
+        ];
+      };
+      g.strokeStyle = '#bbb';
+      g.beginPath();
+      for (const [a, b] of [[0, 1], [1, 3], [3, 2], [2, 0], [4, 5], [5, 7], [7, 6], [6, 4], [0, 4], [1, 5], [2, 6], [3, 7]]) {
+        const corner = i => [i & 1, (i >> 1) & 1, (i >> 2) & 1];
+        g.moveTo(...project(...corner(a)));
+        g.lineTo(...project(...corner(b)));
+      }
+      g.stroke();
+      g.fillStyle = 'rgba(20, 60, 160, 0.6)';
+      for (let i = 0; i + 2 < numbers.length - 1; i += 3) {
+        const [x, y] = project(numbers[i], numbers[i + 1], numbers[i + 2]);
+        g.fillRect(x - 0.7, y - 0.7, 1.4, 1.4);
+      }
+      const share = numbers[numbers.length - 1];
+      verdict.textContent =
+        `${names[Number(generatorSelect.value)]}: ${(100 * share).toFixed(share > 0.01 ? 1 : 4)} % of ` +
+        `${n.toLocaleString('en')} triples (x, y, z) within 10⁻⁶ of a plane 9x − 6y + z = integer`;
+      root.dataset.share = String(share);
+      root.dataset.frames = String(Number(root.dataset.frames || 0) + 1);
+    }
+
+    presetSelect.addEventListener('input', () => {
+      const preset = presets[Number(presetSelect.value)][1];
+      if (preset) [azimuthInput.value, elevationInput.value] = preset.map(String);
+      requestAnimationFrame(draw);
+    });
+    for (const input of [azimuthInput, elevationInput]) {
+      input.addEventListener('input', () => { presetSelect.value = '0'; requestAnimationFrame(draw); });
+    }
+    for (const input of [generatorSelect, pointsInput]) {
+      input.addEventListener('input', () => requestAnimationFrame(draw));
+    }
+    draw();
+
+    // What the controls promise: every RANDU triple lies on one of its planes, few of a
+    // good generator's do; and with the planes edge-on, RANDU's points crowd onto a few lines
+    // across the screen, which a good generator's do not.
+    root.demoCheck = async () => {
+      const problems = [];
+      const pick = name => { generatorSelect.value = String(names.indexOf(name)); };
+      presetSelect.value = '1';
+      presetSelect.dispatchEvent(new Event('input'));
+      const rowsFilled = () => {
+        const image = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+        let rows = 0;
+        for (let y = 0; y < canvas.height; y++) {
+          let inked = 0;
+          for (let x = 0; x < canvas.width; x++) {
+            const at = 4 * (y * canvas.width + x);
+            if (image[at + 2] > 120 && image[at] < 150) inked++;
+          }
+          if (inked > 3) rows++;
+        }
+        return rows;
+      };
+      pick('randu');
+      draw();
+      if (canvas.dataset.failure !== undefined) return problems;
+      const randuRows = rowsFilled();
+      if (Number(root.dataset.share) !== 1) problems.push(`only ${root.dataset.share} of RANDU's triples lie on its planes`);
+      pick('pcg32');
+      draw();
+      const pcgRows = rowsFilled();
+      if (Number(root.dataset.share) > 0.01) problems.push(`${root.dataset.share} of PCG32's triples lie on RANDU's planes`);
+      if (!(randuRows < pcgRows / 2)) {
+        problems.push(`with the planes edge-on, RANDU's points cover ${randuRows} rows of pixels and PCG32's ${pcgRows}: RANDU's should crowd onto a few lines`);
+      }
+      return problems;
+    };
+  }
+
   // ---- Every other chapter: a render refined one sample per pixel at a time ---------------
   //
   // The module describes the demo (its controls, views and claims, `demo_spec`); the page
@@ -296,6 +455,7 @@
     const width = spec.width;
     const height = spec.height;
     const views = spec.views.length;
+    root.dataset.size = `${width} x ${height}`;
     const firstSlot = slots;
     slots += views;
 
@@ -441,6 +601,9 @@
     }
 
     let generations = 0;
+    // The site's check refines to fewer samples per pixel (`demoCap`): it needs to see a
+    // control change the picture, not a converged one.
+    let cap = Infinity;
     function restart() {
       delete canvas.dataset.failure;
       for (const key of ['firstFrameMs', 'firstPassMs', 'doneMs', 'done']) delete root.dataset[key];
@@ -455,7 +618,7 @@
       try {
         for (let view = 0; view < views; view++) {
           writeNumbers(values);
-          state.target.push(call('demo_start', index, view, firstSlot + view, width, height));
+          state.target.push(Math.min(cap, call('demo_start', index, view, firstSlot + view, width, height)));
         }
       } catch (error) {
         fail(error);
@@ -465,6 +628,7 @@
       schedule();
     }
     root.demoRestart = restart;
+    root.demoCap = samples => { cap = samples; restart(); };
 
     for (const control of controls) control.input.addEventListener('input', restart);
     if (zoom) zoom.addEventListener('input', () => { if (state && !canvas.dataset.failure) draw(); });
@@ -490,7 +654,7 @@
     };
   }
 
-  const DEMOS = { warps: warpExplorer };
+  const DEMOS = { warps: warpExplorer, generators: generatorPlanes };
 
   for (const root of document.querySelectorAll('div.demo[data-demo]')) {
     const demo = DEMOS[root.dataset.demo] || renderDemo;

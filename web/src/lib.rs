@@ -8,12 +8,18 @@
 //! and never unwinds into JavaScript: a panic, such as an exercise not written yet, is caught
 //! by [`outcome::run`], kept as text for the page to show, and reported as a failure.
 //!
-//! Chapter 02's warp explorer has exports of its own ([`warps`]); every other demo renders,
+//! Chapter 02's warp explorer and generators have exports of their own ([`warps`],
+//! [`generators`]); every other demo renders,
 //! and is a [`demo::Demo`] listed in [`renders::DEMOS`]: a chapter's scene, camera and tracer
 //! behind controls, refined a slice at a time ([`progressive`]).
 
+pub mod anti_aliasing;
 pub mod buffers;
+pub mod contrast;
 pub mod demo;
+pub mod depth_of_field;
+pub mod generators;
+pub mod materials;
 pub mod outcome;
 pub mod path_tracing;
 pub mod progressive;

@@ -14,8 +14,11 @@ use crate::{buffers, outcome};
 /// Every render demo, one or more per chapter.
 pub static DEMOS: &[&dyn Demo] = &[
     &crate::whitted::WhittedDemo,
+    &crate::anti_aliasing::AntiAliasingDemo,
+    &crate::depth_of_field::DepthOfFieldDemo,
     &crate::soft_shadows::SoftShadowsDemo,
     &crate::path_tracing::PathTracingDemo,
+    &crate::materials::MaterialsDemo,
 ];
 
 /// The most sessions a page may run at once.

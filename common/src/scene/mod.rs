@@ -25,6 +25,7 @@ mod grid_distribution;
 mod lat_long;
 mod light;
 mod material;
+mod metals;
 mod settings;
 mod texture;
 
@@ -40,6 +41,7 @@ pub use material::{
     AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
     Plastic, RoughGlass, TintedGlass, check_exponent,
 };
+pub use metals::{named_metal, named_metal_names};
 pub use settings::{
     DirectSamples, FilmFilter, FilmSettings, Integrator, Origins, SamplerSettings, TextPosition,
 };

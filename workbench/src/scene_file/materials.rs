@@ -4,7 +4,6 @@ use super::element::Element;
 use glam::Vec3;
 
 use super::error::SceneError;
-use super::metals::{named_metal, named_metal_names};
 use super::properties::Properties;
 use super::reader::Reader;
 use super::textures::{NamedTexture, refuse_texture, take_textures};
@@ -13,6 +12,7 @@ use common::scene::{
     AlphaTexture, Conductor, Glossy, Mask, Material, Microfacet, MicrofacetDistribution, Opacity,
     Plastic, RoughGlass, Texture, TintedGlass, check_exponent,
 };
+use common::scene::{named_metal, named_metal_names};
 
 /// Mitsuba's default interior index of refraction of glass, BK7.
 const BK7_IOR: f32 = 1.5046;

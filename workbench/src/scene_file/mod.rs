@@ -45,7 +45,6 @@ mod error;
 mod integrator;
 mod lights;
 mod materials;
-mod metals;
 mod obj;
 mod ply;
 mod properties;
@@ -74,7 +73,8 @@ pub use description::{
 };
 pub use error::{SceneError, SceneWarning, TextPosition};
 pub use materials::{named_ior, named_ior_names};
-pub use metals::{named_metal, named_metal_names};
+// The table of named metals is the scene model's (`common`): the live demos read it too.
+pub use common::scene::{named_metal, named_metal_names};
 pub use obj::{load_obj, parse_obj};
 pub use ply::{load_ply, parse_ply};
 pub use serialized::{load_serialized, parse_serialized};

@@ -1,5 +1,5 @@
-//! The metals Mitsuba 3 knows by name (`<string name="material" value="Au"/>`), with the
-//! complex index of refraction `eta + i k` its RGB variants give them.
+//! The metals Mitsuba 3 knows by name (a scene file's `<string name="material" value="Au"/>`),
+//! with the complex index of refraction `eta + i k` its RGB variants give them.
 //!
 //! Mitsuba ships each metal as two measured spectra (`data/ior/<name>.eta.spd` and `.k.spd`,
 //! from the Luxpop database after Palik et al. and CXRO/LLNL, the data pbrt distributes) and,
