@@ -18,6 +18,8 @@ pub static DEMOS: &[&dyn Demo] = &[
     &crate::depth_of_field::DepthOfFieldDemo,
     &crate::motion_blur::MotionBlurDemo,
     &crate::fuzzy::FuzzyDemo,
+    &crate::soft_shadows::SoftShadowsDemo,
+    &crate::path_tracing::PathTracingDemo,
     &crate::materials::MaterialsDemo,
 ];
 
