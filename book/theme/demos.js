@@ -14,6 +14,9 @@
 
   let module = null;
   let instance = null;
+  // How many times a panic has dropped the instance: a render demo whose sessions lived in a
+  // dropped instance starts them again in the new one.
+  let resets = 0;
 
   function wasm() {
     if (instance) return instance;
@@ -56,6 +59,7 @@
         message = String(error);
       }
       instance = null;
+      resets += 1;
       throw new DemoError(message || String(error));
     }
     if (result === 0xffffffff) throw new DemoError(text());
@@ -565,6 +569,8 @@
 
     function frame(generation) {
       if (!state || state.finished || state.generation !== generation) return;
+      // Another demo's panic dropped the module's instance, and this demo's sessions with it.
+      if (state.resets !== resets) { restart(); return; }
       // A demo started off screen waits for the reader: its clock starts when it first runs.
       if (!state.running) {
         state.running = true;
@@ -621,6 +627,8 @@
         target: [], spp: Array(views).fill(0), ms: Array(views).fill(0), rate: Array(views).fill(0),
       };
       try {
+        wasm();
+        state.resets = resets;
         for (let view = 0; view < views; view++) {
           writeNumbers(values);
           state.target.push(Math.min(cap, call('demo_start', index, view, firstSlot + view, width, height)));
@@ -636,7 +644,13 @@
     root.demoCap = samples => { cap = samples; restart(); };
 
     for (const control of controls) control.input.addEventListener('input', restart);
-    if (zoom) zoom.addEventListener('input', () => { if (state && !canvas.dataset.failure) draw(); });
+    if (zoom) {
+      zoom.addEventListener('input', () => {
+        if (!state || canvas.dataset.failure) return;
+        if (state.resets !== resets) { restart(); return; }
+        try { draw(); } catch (error) { fail(error); }
+      });
+    }
     restart();
 
     // What the controls promise, for the site's check: the demo's claims, each checked by the
