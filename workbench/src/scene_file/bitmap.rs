@@ -5,6 +5,7 @@
 //! linear ones unless the texture says `raw` (for data that is not a colour); a floating-point
 //! image (EXR, Radiance HDR) is linear already. Alpha is dropped; a grey image gives three equal channels.
 
+use super::bounded_read::{IMAGE_FILE_LIMIT, read_bytes};
 use glam::Vec3;
 
 use crate::output::srgb_to_linear;
@@ -26,8 +27,7 @@ pub struct DecodedImage {
 
 /// Reads and decodes the image file at `path`; errors name it.
 pub fn load_bitmap(path: &Path, raw: bool) -> Result<DecodedImage, String> {
-    let bytes = std::fs::read(path)
-        .map_err(|e| format!("cannot read the image {}: {e}", path.display()))?;
+    let bytes = read_bytes(path, "image", IMAGE_FILE_LIMIT)?;
     parse_bitmap(&bytes, raw).map_err(|e| format!("the image {}: {e}", path.display()))
 }
 

@@ -13,6 +13,7 @@ use std::sync::Arc;
 
 use roxmltree::Document;
 
+use super::bounded_read::{SCENE_FILE_LIMIT, read_text};
 use super::error::{SceneError, TextPosition};
 use super::values::substitute;
 
@@ -20,6 +21,12 @@ mod upgrade;
 
 /// How deep includes may nest before the loader assumes a file includes itself.
 const MAX_INCLUDE_DEPTH: usize = 16;
+
+/// How deep elements may nest in one file. A scene nests a handful of levels (a shape, its
+/// two-sided BSDF, a blend, a texture); a file nested thousands deep is hostile, and the tree
+/// is built and walked recursively, so it is refused before it is built. With includes the
+/// whole tree nests at most `MAX_INCLUDE_DEPTH` times as deep.
+const MAX_NESTING: usize = 100;
 
 /// One XML element with its attributes as written (`$name`s not yet substituted).
 #[derive(Clone, Debug)]
@@ -185,6 +192,18 @@ impl TreeBuilder<'_> {
                 message: format!("malformed XML: {error}"),
             }
         })?;
+        if let Some(node) = first_too_deep(document.root_element()) {
+            let position = document.text_pos_at(node.range().start);
+            return Err(SceneError {
+                file: file_for_errors.to_path_buf(),
+                line: position.row,
+                column: position.col,
+                message: format!(
+                    "elements nest more than {MAX_NESTING} levels deep here (a scene nests a \
+                     handful); the reader refuses deeper files"
+                ),
+            });
+        }
         let mut root = convert(&document, document.root_element(), included);
         if !root.has_name("scene") {
             let message = format!(
@@ -252,12 +271,8 @@ impl TreeBuilder<'_> {
                 ),
             ));
         }
-        let text = std::fs::read_to_string(&path).map_err(|error| {
-            self.error(
-                element,
-                format!("cannot read the included file {}: {error}", path.display()),
-            )
-        })?;
+        let text = read_text(&path, "included file", SCENE_FILE_LIMIT)
+            .map_err(|message| self.error(element, message))?;
         self.include_chain.push(path.clone());
         let included: Arc<Path> = Arc::from(path.as_path());
         let scene = self.read_file(&text, Some(&included));
@@ -287,6 +302,25 @@ impl TreeBuilder<'_> {
 }
 
 /// The element `node` of `document` with its subtree, positions naming `file`.
+/// The first element, in file order, nested deeper than [`MAX_NESTING`] below `root`, found
+/// without recursion (the depth is what is not trusted).
+fn first_too_deep<'a, 'input>(
+    root: roxmltree::Node<'a, 'input>,
+) -> Option<roxmltree::Node<'a, 'input>> {
+    let mut stack = vec![(root, 0usize)];
+    while let Some((node, depth)) = stack.pop() {
+        if depth > MAX_NESTING {
+            return Some(node);
+        }
+        let children: Vec<_> = node
+            .children()
+            .filter(roxmltree::Node::is_element)
+            .collect();
+        stack.extend(children.into_iter().rev().map(|child| (child, depth + 1)));
+    }
+    None
+}
+
 fn convert(document: &Document, node: roxmltree::Node, file: Option<&Arc<Path>>) -> Element {
     let start = document.text_pos_at(node.range().start);
     Element {

@@ -36,6 +36,7 @@
 
 mod animation;
 mod bitmap;
+mod bounded_read;
 mod camera;
 mod description;
 mod document;
@@ -108,12 +109,13 @@ pub fn load_scene_file(
     path: &Path,
     overrides: &[(String, String)],
 ) -> Result<LoadedScene, SceneError> {
-    let text = std::fs::read_to_string(path).map_err(|error| SceneError {
-        file: path.to_path_buf(),
-        line: 0,
-        column: 0,
-        message: format!("cannot read the scene file: {error}"),
-    })?;
+    let text = bounded_read::read_text(path, "scene file", bounded_read::SCENE_FILE_LIMIT)
+        .map_err(|message| SceneError {
+            file: path.to_path_buf(),
+            line: 0,
+            column: 0,
+            message,
+        })?;
     parse_scene(&text, path, overrides)
 }
 

@@ -11,6 +11,7 @@
 //! textures put it at the top. The mesh has texture coordinates if any corner names one; a
 //! corner without one gets `(0, 0)`, as in Mitsuba.
 
+use super::bounded_read::{MESH_FILE_LIMIT, read_text};
 use common::geometry::TriangleMesh;
 use glam::{Vec2, Vec3};
 use std::collections::HashMap;
@@ -18,8 +19,7 @@ use std::path::Path;
 
 /// Reads the OBJ file at `path`. Errors name the file and, for bad content, the line.
 pub fn load_obj(path: &Path) -> Result<TriangleMesh, String> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read the mesh {}: {e}", path.display()))?;
+    let text = read_text(path, "mesh", MESH_FILE_LIMIT)?;
     parse_obj(&text).map_err(|e| format!("{}:{e}", path.display()))
 }
 

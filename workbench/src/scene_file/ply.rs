@@ -16,6 +16,7 @@
 //! follow it, so a short file or a made-up count is an error that says so, and reading never
 //! loops over records that cannot be there.
 
+use super::bounded_read::{MESH_FILE_LIMIT, read_bytes};
 use std::io::Cursor;
 use std::path::Path;
 
@@ -30,8 +31,7 @@ use common::geometry::TriangleMesh;
 
 /// Reads the PLY file at `path`. Errors name the file.
 pub fn load_ply(path: &Path) -> Result<TriangleMesh, String> {
-    let bytes =
-        std::fs::read(path).map_err(|e| format!("cannot read the mesh {}: {e}", path.display()))?;
+    let bytes = read_bytes(path, "mesh", MESH_FILE_LIMIT)?;
     parse_ply(&bytes).map_err(|e| format!("{}: {e}", path.display()))
 }
 

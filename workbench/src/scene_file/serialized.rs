@@ -22,6 +22,7 @@
 //! inflated, so a made-up count ends in an error when the stream runs out, not in a huge
 //! allocation.
 
+use super::bounded_read::{MESH_FILE_LIMIT, read_bytes};
 use std::io::Read;
 use std::path::Path;
 
@@ -43,8 +44,7 @@ const CHUNK: usize = 1 << 14;
 
 /// Reads mesh number `shape_index` of the `.serialized` file at `path`. Errors name the file.
 pub fn load_serialized(path: &Path, shape_index: u32) -> Result<TriangleMesh, String> {
-    let bytes =
-        std::fs::read(path).map_err(|e| format!("cannot read the mesh {}: {e}", path.display()))?;
+    let bytes = read_bytes(path, "mesh", MESH_FILE_LIMIT)?;
     parse_serialized(&bytes, shape_index)
         .map_err(|e| format!("{} (shape {shape_index}): {e}", path.display()))
 }

@@ -12,6 +12,7 @@ mod to_srgb;
 #[cfg(test)]
 mod tests;
 
+use super::bounded_read::{SPECTRUM_FILE_LIMIT, read_text};
 use std::path::Path;
 
 pub(super) use element::read_spectrum;
@@ -189,7 +190,6 @@ pub fn parse_spd(text: &str) -> Result<Spectrum, String> {
 /// file, and the line when one is wrong.
 pub fn read_spd_file(path: &Path) -> Result<Spectrum, String> {
     let shown = path.display();
-    let text = std::fs::read_to_string(path)
-        .map_err(|error| format!("cannot read the spectrum file {shown}: {error}"))?;
+    let text = read_text(path, "spectrum file", SPECTRUM_FILE_LIMIT)?;
     parse_spd(&text).map_err(|message| format!("spectrum file {shown}: {message}"))
 }

@@ -257,3 +257,69 @@ fn a_missing_file_is_an_error_naming_it() {
     assert!(error.to_string().contains("no-such-scene.xml"), "{error}");
     assert!(error.message.contains("cannot read"), "{error}");
 }
+
+/// `depth` `<bsdf>`s inside a shape, one a line from line 3, closed on the last line.
+fn nested_bsdfs(depth: usize) -> String {
+    let mut body = String::from("<shape type=\"sphere\">");
+    for _ in 0..depth {
+        body.push_str("\n<bsdf type=\"diffuse\">");
+    }
+    body.push('\n');
+    body.push_str(&"</bsdf>".repeat(depth));
+    body.push_str("</shape>");
+    scene_with(&body)
+}
+
+#[test]
+fn a_file_nested_thousands_deep_is_refused_where_it_gets_too_deep() {
+    // 20 000 levels overflowed the stack and aborted the process before the reader measured
+    // the depth: the element tree is built and walked recursively.
+    let error = parse(&nested_bsdfs(20_000)).expect_err("far too deep");
+    assert!(
+        error.message.contains("nest more than 100 levels"),
+        "{error}"
+    );
+    // The scene is depth 0 and the shape 1, so the 100th <bsdf>, on line 102, is the first
+    // element deeper than 100 levels.
+    assert_eq!(error.line, 102, "{error}");
+    assert_eq!(error.file, Path::new("test.xml"));
+}
+
+#[test]
+fn a_file_nested_as_deep_as_allowed_is_read_past_the_depth_check() {
+    let error = parse(&nested_bsdfs(99)).expect_err("a diffuse BSDF holds no BSDF");
+    assert!(!error.message.contains("levels"), "{error}");
+    assert!(error.message.contains("cannot contain <bsdf>"), "{error}");
+}
+
+#[test]
+fn a_device_named_as_a_mesh_or_an_include_is_refused_not_read() {
+    if !Path::new("/dev/zero").exists() {
+        return;
+    }
+    // Read as an OBJ without a bound, /dev/zero took gigabytes within seconds.
+    let directory = tempfile::tempdir().expect("temporary directory");
+    for (body, what) in [
+        (
+            "<shape type=\"obj\"><string name=\"filename\" value=\"/dev/zero\"/></shape>",
+            "the mesh /dev/zero is not a regular file",
+        ),
+        (
+            "<shape type=\"ply\"><string name=\"filename\" value=\"/dev/urandom\"/></shape>",
+            "the mesh /dev/urandom is not a regular file",
+        ),
+        (
+            "<include filename=\"/dev/zero\"/>",
+            "the included file /dev/zero is not a regular file",
+        ),
+    ] {
+        let path = directory.path().join("scene.xml");
+        std::fs::write(&path, scene_with(body)).expect("the scene file");
+        let error = match load_scene_file(&path, &[]) {
+            Ok(_) => panic!("{body}: loaded"),
+            Err(error) => error,
+        };
+        assert!(error.message.contains(what), "{body}: {error}");
+        assert_eq!(error.line, 2, "{body}: {error}");
+    }
+}
