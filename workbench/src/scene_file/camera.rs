@@ -66,18 +66,26 @@ pub(super) fn read_sensor<'a>(
         offset("principal_point_offset_y")?,
     );
 
+    let near_clip = properties.float(reader, "near_clip")?.unwrap_or(0.01);
+    let far_clip = properties.float(reader, "far_clip")?.unwrap_or(10_000.0);
     let model = if type_name == "thinlens" {
-        let mut required = |name: &str| {
-            properties.float(reader, name)?.ok_or_else(|| {
+        let aperture_radius = properties
+            .float(reader, "aperture_radius")?
+            .ok_or_else(|| {
                 reader.error(
                     node,
-                    format!("a thinlens sensor needs <float name=\"{name}\">"),
+                    "a thinlens sensor needs <float name=\"aperture_radius\"> (Mitsuba 3 has no \
+                 default for it either)",
                 )
-            })
-        };
+            })?;
+        // Mitsuba 3 focuses a thin lens without a focus_distance at its far clip plane
+        // (measured on Mitsuba 3.9.1: 10000 by default, the far_clip when one is given).
+        let focus_distance = properties
+            .float(reader, "focus_distance")?
+            .unwrap_or(far_clip);
         CameraModel::ThinLens {
-            aperture_radius: required("aperture_radius")?,
-            focus_distance: required("focus_distance")?,
+            aperture_radius,
+            focus_distance,
         }
     } else {
         CameraModel::Pinhole
@@ -88,8 +96,8 @@ pub(super) fn read_sensor<'a>(
         model,
         fov_x_degrees,
         principal_point_offset,
-        near_clip: properties.float(reader, "near_clip")?.unwrap_or(0.01),
-        far_clip: properties.float(reader, "far_clip")?.unwrap_or(10_000.0),
+        near_clip,
+        far_clip,
         shutter_open: properties.float(reader, "shutter_open")?.unwrap_or(0.0),
         shutter_close: properties.float(reader, "shutter_close")?.unwrap_or(0.0),
         to_world: to_world.unwrap_or(Mat4::IDENTITY),

@@ -273,3 +273,34 @@ fn mitchell_and_catmull_rom_filters_are_read_with_mitsubas_parameters() {
         "{error}"
     );
 }
+
+#[test]
+fn a_thin_lens_without_a_focus_distance_focuses_where_mitsuba_does() {
+    use common::scene::CameraModel;
+    let thin_lens = |extra: &str| {
+        let text = format!(
+            "<scene version=\"3.0.0\">\n<sensor type=\"thinlens\"><float name=\"fov\" \
+             value=\"40\"/><float name=\"aperture_radius\" value=\"0.1\"/>{extra}</sensor>\n\
+             </scene>"
+        );
+        super::parse(&text).map(|loaded| loaded.scene.sensor.model)
+    };
+    // Mitsuba 3.9.1 focuses at the far clip plane: 10000 unless the file sets far_clip.
+    let focus = |model| match model {
+        Ok(CameraModel::ThinLens { focus_distance, .. }) => focus_distance,
+        other => panic!("not a thin lens: {other:?}"),
+    };
+    assert_eq!(focus(thin_lens("")), 10_000.0);
+    assert_eq!(
+        focus(thin_lens("<float name=\"far_clip\" value=\"50\"/>")),
+        50.0
+    );
+    assert_eq!(
+        focus(thin_lens("<float name=\"focus_distance\" value=\"3\"/>")),
+        3.0
+    );
+    // Mitsuba has no default aperture_radius either, and refuses the sensor without one.
+    let text = "<scene version=\"3.0.0\">\n<sensor type=\"thinlens\"/>\n</scene>";
+    let error = super::parse(text).expect_err("no aperture_radius");
+    assert!(error.message.contains("aperture_radius"), "{error}");
+}
