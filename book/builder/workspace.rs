@@ -99,19 +99,15 @@ fn walk(root: &Path, relative: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
     Ok(())
 }
 
-/// Writes `contents` to `path` whole or not at all: into a file beside it, then renamed over it, so
-/// that a reader never sees half a file (the demos' script, a checkpointed exercise, the sealed solutions, a table).
+/// Writes `contents` to `path` whole or not at all (the demos' script, a checkpointed
+/// exercise, the sealed solutions, a table), creating its folder first: the workbench's
+/// `write_atomic`, which every image and figure goes through too.
 pub fn write_whole(path: &Path, contents: impl AsRef<[u8]>) -> Result<()> {
-    let dir = path.parent().unwrap_or(Path::new("."));
-    if !dir.as_os_str().is_empty() {
+    if let Some(dir) = path.parent().filter(|dir| !dir.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
-    let mut partial = path.as_os_str().to_owned();
-    partial.push(".partial");
-    let partial = PathBuf::from(partial);
-    std::fs::write(&partial, contents)
-        .with_context(|| format!("cannot write {}", partial.display()))?;
-    std::fs::rename(&partial, path).with_context(|| format!("cannot replace {}", path.display()))
+    workbench::output::write_atomic(path, |out| out.write_all(contents.as_ref()))?;
+    Ok(())
 }
 
 #[cfg(test)]
