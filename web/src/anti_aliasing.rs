@@ -60,10 +60,6 @@ impl Demo for AntiAliasingDemo {
         "anti-aliasing"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch03-anti-aliasing"
-    }
-
     fn controls(&self) -> Vec<Control> {
         vec![
             Control::choice("sampler", "pixel sampler", SAMPLERS, 1),

@@ -205,9 +205,6 @@ pub trait Demo: Sync {
     /// The name a page asks for (`data-demo`).
     fn name(&self) -> &'static str;
 
-    /// The chapter whose code it runs (for messages).
-    fn chapter(&self) -> &'static str;
-
     /// Its controls, in the order the page shows them.
     fn controls(&self) -> Vec<Control>;
 

@@ -73,10 +73,6 @@ impl Demo for DepthOfFieldDemo {
         "depth-of-field"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch04-depth-of-field"
-    }
-
     fn controls(&self) -> Vec<Control> {
         vec![
             Control::range("f-number", "f-number", 1.4, 16.0, 0.1, 2.0),

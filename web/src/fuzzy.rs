@@ -106,10 +106,6 @@ impl Demo for FuzzyDemo {
         "fuzzy"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch06-fuzzy-reflections"
-    }
-
     fn controls(&self) -> Vec<Control> {
         // The policy below the surface comes before the exponent: it shows on the floor where
         // the view grazes it, which a sharp lobe hardly ever leaves.

@@ -131,10 +131,6 @@ impl Demo for MaterialsDemo {
         "materials"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch09-materials"
-    }
-
     fn controls(&self) -> Vec<Control> {
         vec![
             Control::choice("material", "material", MATERIALS, 0),

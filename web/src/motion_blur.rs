@@ -159,10 +159,6 @@ impl Demo for MotionBlurDemo {
         "motion-blur"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch05-motion-blur"
-    }
-
     fn controls(&self) -> Vec<Control> {
         vec![
             Control::range("shutter", "shutter open for", 0.0, 1.0, 0.05, 0.3),

@@ -170,10 +170,6 @@ impl Demo for PathTracingDemo {
         "path-tracing"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch08-path-tracing"
-    }
-
     /// The MIS heuristic comes before NEE, which it needs: the site's check moves the controls
     /// in this order, and would find the heuristic hidden once NEE is off. The depth starts at
     /// 3, one below the chapter's figure: the tree's rays double with every level, and its

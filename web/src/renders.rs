@@ -51,7 +51,7 @@ pub extern "C" fn demo_find() -> u32 {
     }
 }
 
-/// Puts the description of demo `index` in the text buffer, as JSON: its chapter, views, the
+/// Puts the description of demo `index` in the text buffer, as JSON: its name, views, the
 /// size of its picture, whether it zooms, its controls (name, label, a range's `min`, `max`,
 /// `step` or a choice's `options`, the starting `value`, and `when` another control's value
 /// shows it) and its claims' words. Gives the text's length.
@@ -108,10 +108,9 @@ fn spec_json(demo: &dyn Demo) -> String {
         .collect();
     let (width, height) = demo.size();
     format!(
-        "{{\"name\":{},\"chapter\":{},\"views\":{},\"width\":{width},\"height\":{height},\
+        "{{\"name\":{},\"views\":{},\"width\":{width},\"height\":{height},\
          \"zoom\":{},\"controls\":{},\"claims\":{}}}",
         quote(demo.name()),
-        quote(demo.chapter()),
         list(demo.views().iter().map(|v| quote(v)).collect()),
         demo.zoom(),
         list(controls),

@@ -157,10 +157,6 @@ impl Demo for SoftShadowsDemo {
         "soft-shadows"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch07-soft-shadows"
-    }
-
     fn controls(&self) -> Vec<Control> {
         vec![
             Control::choice("light-shape", "light's shape", SHAPES, 0),

@@ -52,10 +52,6 @@ impl Demo for WhittedDemo {
         "whitted"
     }
 
-    fn chapter(&self) -> &'static str {
-        "ch01-whitted"
-    }
-
     fn controls(&self) -> Vec<Control> {
         vec![
             Control::range("max-depth", "max depth", 1.0, 12.0, 1.0, 5.0),
