@@ -18,7 +18,7 @@ use glam::{UVec2, Vec2, Vec3};
 
 use crate::contrast::rms_neighbour_difference;
 use crate::demo::{Claim, Control, Demo, Picture, Values, trace_each};
-use crate::progressive::render_still;
+use crate::progressive::render_demo;
 
 /// The demo (`data-demo="anti-aliasing"`).
 pub struct AntiAliasingDemo;
@@ -183,13 +183,7 @@ fn defaults(demo: &dyn Demo) -> Values {
 
 /// The demo with `values`, rendered whole at the claims' size and the values' samples.
 fn render(demo: &dyn Demo, values: &Values) -> Result<Image, String> {
-    let picture = demo.picture(values, 0, CLAIM_SIZE.x, CLAIM_SIZE.y)?;
-    Ok(render_still(
-        picture,
-        CLAIM_SIZE.x,
-        CLAIM_SIZE.y,
-        demo.target_spp(values),
-    ))
+    render_demo(demo, values, CLAIM_SIZE, demo.target_spp(values))
 }
 
 /// The edges scene as the pixel box sees it, nearly exactly: Halton samples, far more of them
@@ -200,8 +194,7 @@ fn reference(demo: &dyn Demo) -> Result<Image, String> {
         .with("filter", 0.0)
         .with("radius", 0.5)
         .with("sampler", 3.0);
-    let picture = demo.picture(&values, 0, CLAIM_SIZE.x, CLAIM_SIZE.y)?;
-    Ok(render_still(picture, CLAIM_SIZE.x, CLAIM_SIZE.y, 256))
+    render_demo(demo, &values, CLAIM_SIZE, 256)
 }
 
 /// `Ok` if `value` is at most `bound`.

@@ -21,7 +21,7 @@ use glam::{UVec2, Vec2, Vec3};
 
 use crate::contrast::rms_neighbour_difference;
 use crate::demo::{Claim, Control, Demo, Picture, Values, trace_each};
-use crate::progressive::render_still;
+use crate::progressive::render_demo;
 
 /// The demo (`data-demo="depth-of-field"`).
 pub struct DepthOfFieldDemo;
@@ -227,8 +227,7 @@ fn defaults(demo: &dyn Demo) -> Values {
 
 /// The demo with `values`, rendered whole at the claims' size.
 fn render(demo: &dyn Demo, values: &Values) -> Result<Image, String> {
-    let picture = demo.picture(values, 0, CLAIM_SIZE.x, CLAIM_SIZE.y)?;
-    Ok(render_still(picture, CLAIM_SIZE.x, CLAIM_SIZE.y, CLAIM_SPP))
+    render_demo(demo, values, CLAIM_SIZE, CLAIM_SPP)
 }
 
 /// The depth, along the camera's axis, of what the pinhole sees through the centre of each

@@ -18,7 +18,7 @@ use common::scene::{
 use glam::{UVec2, Vec2, Vec3};
 
 use crate::demo::{Claim, Control, Demo, Picture, Values, trace_each};
-use crate::progressive::render_still;
+use crate::progressive::render_demo;
 
 /// The demo (`data-demo="materials"`).
 pub struct MaterialsDemo;
@@ -231,8 +231,7 @@ fn render(demo: &dyn Demo, changes: &[(&str, f64)]) -> Result<Image, String> {
         Values::defaults(&demo.controls()),
         |values, (name, value)| values.with(name, *value),
     );
-    let picture = demo.picture(&values, 0, CLAIM_SIZE.x, CLAIM_SIZE.y)?;
-    Ok(render_still(picture, CLAIM_SIZE.x, CLAIM_SIZE.y, CLAIM_SPP))
+    render_demo(demo, &values, CLAIM_SIZE, CLAIM_SPP)
 }
 
 /// The pixels whose centre's camera ray hits the ball first.

@@ -11,7 +11,7 @@ use common::image::Image;
 use common::srgb::to_srgb8;
 use glam::UVec2;
 
-use crate::demo::Picture;
+use crate::demo::{Demo, Picture, Values};
 
 /// One view of a demo, being refined.
 pub struct Session {
@@ -104,6 +104,18 @@ impl Session {
         }
         bytes
     }
+}
+
+/// View 0 of `demo` with `values`, rendered whole at `size` and `spp` samples per pixel (for
+/// claims), or why the demo cannot make that picture.
+pub fn render_demo(
+    demo: &dyn Demo,
+    values: &Values,
+    size: UVec2,
+    spp: u64,
+) -> Result<Image, String> {
+    let picture = demo.picture(values, 0, size.x, size.y)?;
+    Ok(render_still(picture, size.x, size.y, spp))
 }
 
 /// Renders `picture` whole at `spp` samples per pixel (for claims and tests).

@@ -13,7 +13,7 @@ use common::scene::{Material, Scene};
 use glam::{UVec2, Vec2, Vec3};
 
 use crate::demo::{Claim, Control, Demo, Picture, Values, trace_each};
-use crate::progressive::render_still;
+use crate::progressive::render_demo;
 
 /// The demo (`data-demo="whitted"`).
 pub struct WhittedDemo;
@@ -127,11 +127,7 @@ fn changes_only(
 ) -> Result<(), String> {
     let defaults = Values::defaults(&demo.controls());
     let render = |values: &Values| -> Result<(Image, Scene), String> {
-        let picture = demo.picture(values, 0, CLAIM_SIZE.x, CLAIM_SIZE.y)?;
-        Ok((
-            render_still(picture, CLAIM_SIZE.x, CLAIM_SIZE.y, 1),
-            scene(values),
-        ))
+        Ok((render_demo(demo, values, CLAIM_SIZE, 1)?, scene(values)))
     };
     let (first, scene_a) = render(&defaults.clone().with(a.0, a.1))?;
     let (second, _) = render(&defaults.with(b.0, b.1))?;
