@@ -4,11 +4,11 @@
 // `window.BOOK_DEMOS_WASM` to the module in base64: a page opened from disk (file://) may run a
 // script but not fetch a `.wasm` file, so the module travels inside a script.
 //
-// The module's exports take and return numbers; results wait in two buffers of its memory (a
-// list of f64 and a UTF-8 text) read through `numbers_ptr` and `text_ptr`. A panic in the
-// chapter's code (an exercise not written yet) aborts the call: it surfaces here as an
-// exception, and the panic's message, kept in a third buffer (`panic_ptr`), is shown on the
-// demo's canvas.
+// The module's exports take and return numbers; results wait in buffers of its memory (a list
+// of f64, a UTF-8 text, an image's bytes) read through `numbers_ptr`, `text_ptr` and
+// `bytes_ptr`. A panic in the chapter's code (an exercise not written yet) aborts the call: it
+// surfaces here as an exception, and the panic's message, kept in a buffer of its own
+// (`panic_ptr`), is shown on the demo's canvas.
 (function () {
   'use strict';
 
@@ -35,8 +35,6 @@
     const bytes = new Uint8Array(m.memory.buffer, m.text_ptr(), m.text_len());
     return new TextDecoder().decode(bytes);
   }
-
-  function numbers_() { return numbers(); }
 
   function numbers() {
     const m = wasm();
@@ -321,10 +319,10 @@
       azimuthShown.textContent = azimuthInput.value;
       elevationShown.textContent = elevationInput.value;
       delete canvas.dataset.failure;
-      let numbers;
+      let triples;
       try {
         call('generator_triples', Number(generatorSelect.value), n, 1);
-        numbers = numbers_();
+        triples = numbers();
       } catch (error) {
         if (!(error instanceof DemoError)) throw error;
         showFailure(canvas, error.message);
@@ -357,11 +355,11 @@
       }
       g.stroke();
       g.fillStyle = 'rgba(20, 60, 160, 0.6)';
-      for (let i = 0; i + 2 < numbers.length - 1; i += 3) {
-        const [x, y] = project(numbers[i], numbers[i + 1], numbers[i + 2]);
+      for (let i = 0; i + 2 < triples.length - 1; i += 3) {
+        const [x, y] = project(triples[i], triples[i + 1], triples[i + 2]);
         g.fillRect(x - 0.7, y - 0.7, 1.4, 1.4);
       }
-      const share = numbers[numbers.length - 1];
+      const share = triples[triples.length - 1];
       verdict.textContent =
         `${names[Number(generatorSelect.value)]}: ${(100 * share).toFixed(share > 0.01 ? 1 : 4)} % of ` +
         `${n.toLocaleString('en')} triples (x, y, z) within 10⁻⁶ of a plane 9x − 6y + z = integer`;
