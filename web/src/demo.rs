@@ -12,6 +12,7 @@
 //! site check in the browser, through the same code.
 
 use common::film::{Filter, PixelBoxFilter};
+use common::render::trace_pixel_sample;
 use common::sampler::Sampler;
 use glam::{UVec2, Vec2, Vec3};
 
@@ -175,8 +176,8 @@ pub trait Picture {
     fn trace(&self, pixels: &[UVec2], index: u64, add: &mut dyn FnMut(Vec2, Vec3));
 }
 
-/// Traces sample `index` of each of `pixels` as the render loop does: the sampler starts the
-/// sample, its first dimension places it in the pixel, and `radiance` draws the rest.
+/// Traces sample `index` of each of `pixels` as the render loop does
+/// ([`trace_pixel_sample`]).
 pub fn trace_each<S: Sampler>(
     sampler: &S,
     pixels: &[UVec2],
@@ -186,9 +187,8 @@ pub fn trace_each<S: Sampler>(
 ) {
     let mut sampler = sampler.clone();
     for &pixel in pixels {
-        sampler.start_pixel_sample(pixel, index);
-        let p_film = pixel.as_vec2() + sampler.get_pixel_2d();
-        add(p_film, radiance(p_film, &mut sampler));
+        let (p_film, l) = trace_pixel_sample(&mut sampler, pixel, index, &radiance);
+        add(p_film, l);
     }
 }
 

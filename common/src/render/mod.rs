@@ -210,9 +210,8 @@ where
             return None;
         }
         for index in samples.clone() {
-            sampler.start_pixel_sample(pixel, index);
-            let p_film = pixel.as_vec2() + sampler.get_pixel_2d();
-            let (l, rays) = counting_rays(|| radiance(p_film, &mut sampler));
+            let ((p_film, l), rays) =
+                counting_rays(|| trace_pixel_sample(&mut sampler, pixel, index, radiance));
             totals.rays += rays;
             totals.samples += 1;
             if l.is_finite() {
@@ -225,6 +224,24 @@ where
         }
     }
     Some((tile, totals))
+}
+
+/// Sample `index` of `pixel`: the sampler starts the sample, its first dimension places it in
+/// the pixel, and `radiance` draws the rest. Gives the film position and the radiance. The
+/// render loop takes every sample this way, and so do the book's live demos, a slice at a time.
+pub fn trace_pixel_sample<S, F>(
+    sampler: &mut S,
+    pixel: UVec2,
+    index: u64,
+    radiance: &F,
+) -> (Vec2, Vec3)
+where
+    S: Sampler,
+    F: Fn(Vec2, &mut S) -> Vec3,
+{
+    sampler.start_pixel_sample(pixel, index);
+    let p_film = pixel.as_vec2() + sampler.get_pixel_2d();
+    (p_film, radiance(p_film, sampler))
 }
 
 /// The image cut into tiles, row by row.
