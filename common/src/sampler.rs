@@ -17,8 +17,9 @@ use rand_pcg::Pcg32;
 ///
 /// `start_pixel_sample` must be called before each sample; it resets the dimension counter.
 /// Implementations differ in *where* the pixel position lands (chapter 01 uses the pixel
-/// centre, chapter 03 jitters and stratifies it); every other dimension is a uniform number in
-/// `[0, 1)`.
+/// centre, chapter 03 jitters and stratifies it) and in how the other dimensions spread over
+/// a pixel's samples (independent, or stratified like the pixel position: chapter 03); each
+/// number is uniform in `[0, 1)`.
 pub trait Sampler: Clone + Send + Sync {
     /// Starts sample number `sample_index` of `pixel`.
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64);
@@ -29,7 +30,10 @@ pub trait Sampler: Clone + Send + Sync {
     /// The next dimension: a number in `[0, 1)`.
     fn get_1d(&mut self) -> f32;
 
-    /// The next two dimensions as a point of the unit square.
+    /// The next dimension as a point of the unit square. By default two 1D draws; a sampler
+    /// that places its 2D points jointly (a grid of strata, a 2D sequence) says so here, and
+    /// a sampler that wraps another must hand this call on as it is, or the pairs would lose
+    /// their joint placement.
     fn get_2d(&mut self) -> Vec2 {
         let x = self.get_1d();
         let y = self.get_1d();

@@ -194,7 +194,7 @@ const CASES: &[Case] = &[
     case(CH01, &["render", "--out", "{out}", "--pixel", "grid", "--time", "1"], "--time"),
     case(CH01, &["render", "--out", "{out}", "--pixel", "jitter"], "jitter"),
     // Chapter 03's samplers and filters (chapter 04 has them too).
-    case(ANTI_ALIASED, &["render", "--out", "{out}", "--sampler", "sobol"], "sobol"),
+    case(ANTI_ALIASED, &["render", "--out", "{out}", "--sampler", "blue-noise"], "blue-noise"),
     case(ANTI_ALIASED, &["render", "--out", "{out}", "--sampler", "stratified", "--time", "1"], "--spp"),
     case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter", "lanczos"], "lanczos"),
     case(ANTI_ALIASED, &["render", "--out", "{out}", "--filter-radius", "0"], "radius"),

@@ -57,6 +57,10 @@ impl<S: Sampler> Sampler for OpeningTime<S> {
     fn get_1d(&mut self) -> f32 {
         self.inner.get_1d()
     }
+
+    fn get_2d(&mut self) -> Vec2 {
+        self.inner.get_2d()
+    }
 }
 
 impl<S: TimeSampler> TimeSampler for OpeningTime<S> {

@@ -81,8 +81,9 @@ impl AntiAliasingArgs {
     ) -> anyhow::Result<PixelSampler> {
         let spp = match *budget {
             Budget::Samples(spp) => spp,
-            Budget::Seconds(_) if kind == PixelSamplerKind::Stratified => anyhow::bail!(
-                "--sampler stratified lays out a fixed number of strata, so it needs --spp, not --time (random and halton work with --time)"
+            Budget::Seconds(_) if kind.needs_sample_count() => anyhow::bail!(
+                "--sampler {} lays out a fixed number of strata, so it needs --spp, not --time (random, halton and sobol work with --time)",
+                kind.name()
             ),
             // The other samplers do not need to know the count in advance.
             Budget::Seconds(_) => 1,

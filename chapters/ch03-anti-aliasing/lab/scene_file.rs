@@ -76,10 +76,12 @@ pub fn for_agreement(
     Ok((scene, film, settings, sampler))
 }
 
-/// The chapter's pixel sampler for a Mitsuba `<sampler>` type, and a note when it is only the
-/// closest one: Mitsuba's `independent` is our random sampler and its `stratified` our
-/// stratified one; its `multijitter` and `orthogonal` are refinements of stratification, and
-/// its `ldsampler` a low-discrepancy sequence like our Halton points.
+/// The chapter's sampler for a Mitsuba `<sampler>` type, and a note when it is only the
+/// closest one: Mitsuba's `independent` is our random sampler, its `stratified` and
+/// `multijitter` ours, each placing every dimension, its `ldsampler` our Sobol sampler (both
+/// draw Owen-scrambled points of the same (0, 2)-sequence); its `orthogonal` (orthogonal
+/// arrays, which stratify every 2D projection) is rendered with our multi-jittered sampler,
+/// which stratifies the pairs a sample draws together.
 pub fn sampler_of(type_name: &str) -> (PixelSamplerKind, Option<String>) {
     let closest = |kind: PixelSamplerKind| {
         let note = format!(
@@ -91,8 +93,9 @@ pub fn sampler_of(type_name: &str) -> (PixelSamplerKind, Option<String>) {
     match type_name {
         "independent" => (PixelSamplerKind::Random, None),
         "stratified" => (PixelSamplerKind::Stratified, None),
-        "multijitter" | "orthogonal" => closest(PixelSamplerKind::Stratified),
-        "ldsampler" => closest(PixelSamplerKind::Halton),
+        "multijitter" => (PixelSamplerKind::MultiJitter, None),
+        "ldsampler" => (PixelSamplerKind::Sobol, None),
+        "orthogonal" => closest(PixelSamplerKind::MultiJitter),
         _ => closest(PixelSamplerKind::Stratified),
     }
 }

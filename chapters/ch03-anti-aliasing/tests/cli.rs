@@ -30,7 +30,10 @@ fn bad_input_is_refused_with_a_clear_message() {
         (&["render", "--out", png, "--spp", "0"], "--spp"),
         (&["render", "--out", png, "--width", "0"], "--width"),
         (&["render", "--out", png, "--time", "nan"], "time budget"),
-        (&["render", "--out", png, "--sampler", "sobol"], "sobol"),
+        (
+            &["render", "--out", png, "--sampler", "blue-noise"],
+            "blue-noise",
+        ),
         (&["render", "--out", png, "--filter", "lanczos"], "lanczos"),
         (&["render", "--out", png, "--filter-radius", "0"], "radius"),
         (&["render", "--out", png, "--filter-radius", "-1"], "radius"),
@@ -47,6 +50,18 @@ fn bad_input_is_refused_with_a_clear_message() {
                 png,
                 "--sampler",
                 "stratified",
+                "--time",
+                "1",
+            ],
+            "--spp",
+        ),
+        (
+            &[
+                "render",
+                "--out",
+                png,
+                "--sampler",
+                "multijitter",
                 "--time",
                 "1",
             ],
@@ -126,7 +141,14 @@ fn a_small_render_writes_the_image_and_its_statistics() {
 #[test]
 fn a_timed_render_works_with_samplers_that_need_no_count() {
     let dir = tempfile::tempdir().unwrap();
-    for sampler in ["random", "halton", "centre"] {
+    for sampler in [
+        "random",
+        "halton",
+        "centre",
+        "sobol",
+        "independent",
+        "ldsampler",
+    ] {
         let image = dir.path().join(format!("{sampler}.png"));
         let out = run(&[
             "render",

@@ -13,6 +13,7 @@
 //! position and the lens, which other samplers stratify by sample index too.
 
 use ch03_anti_aliasing::PixelSampler;
+use ch03_anti_aliasing::pixel_samplers::permutation_element;
 use common::render::Budget;
 use common::sampler::{IndependentSampler, Sampler, mix};
 use glam::{UVec2, Vec2};
@@ -94,43 +95,6 @@ pub fn stratified_time_sample(stratum: u64, strata: u64, jitter: f32) -> f32 {
 }
 // ANCHOR_END: stratified_time_sample
 
-/// Element `i` of a random permutation of `0..n` chosen by `key`, without building the
-/// permutation (Kensler's hash-based permutation, as in pbrt-v4's `PermutationElement`).
-pub fn permutation_element(i: u32, n: u32, key: u32) -> u32 {
-    let p = key;
-    let mut w = n.max(1) - 1;
-    w |= w >> 1;
-    w |= w >> 2;
-    w |= w >> 4;
-    w |= w >> 8;
-    w |= w >> 16;
-    let mut i = i;
-    loop {
-        i ^= p;
-        i = i.wrapping_mul(0xe170_893d);
-        i ^= p >> 16;
-        i ^= (i & w) >> 4;
-        i ^= p >> 8;
-        i = i.wrapping_mul(0x0929_eb3f);
-        i ^= p >> 23;
-        i ^= (i & w) >> 1;
-        i = i.wrapping_mul(1 | (p >> 27));
-        i = i.wrapping_mul(0x6935_fa69);
-        i ^= (i & w) >> 11;
-        i = i.wrapping_mul(0x74dc_b303);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0x9e50_1cc3);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0xc860_a3df);
-        i &= w;
-        i ^= i >> 5;
-        if i < n {
-            break;
-        }
-    }
-    i.wrapping_add(p) % n.max(1)
-}
-
 /// Wraps a sampler and stratifies its time dimension over the `strata` samples of a pixel;
 /// every other dimension comes from the inner sampler unchanged. With one stratum the time is
 /// the inner sampler's own number, as independent time draws it.
@@ -183,6 +147,10 @@ impl<S: Sampler> Sampler for StratifiedTime<S> {
 
     fn get_1d(&mut self) -> f32 {
         self.inner.get_1d()
+    }
+
+    fn get_2d(&mut self) -> Vec2 {
+        self.inner.get_2d()
     }
 }
 
@@ -251,20 +219,6 @@ mod tests {
                 ""
             }
         );
-    }
-
-    #[test]
-    fn permutations_are_permutations_and_differ_by_key() {
-        for n in [1u32, 2, 5, 16, 33] {
-            for key in [0u32, 1, 0xdead_beef] {
-                let mut seen: Vec<u32> = (0..n).map(|i| permutation_element(i, n, key)).collect();
-                seen.sort();
-                assert_eq!(seen, (0..n).collect::<Vec<_>>(), "n {n} key {key}");
-            }
-        }
-        let a: Vec<u32> = (0..16).map(|i| permutation_element(i, 16, 1)).collect();
-        let b: Vec<u32> = (0..16).map(|i| permutation_element(i, 16, 2)).collect();
-        assert_ne!(a, b);
     }
 
     #[test]

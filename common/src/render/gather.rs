@@ -371,4 +371,8 @@ impl<S: Sampler> Sampler for Replay<'_, S> {
     fn get_1d(&mut self) -> f32 {
         self.inner().get_1d()
     }
+
+    fn get_2d(&mut self) -> Vec2 {
+        self.inner().get_2d()
+    }
 }

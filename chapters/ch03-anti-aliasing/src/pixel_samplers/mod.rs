@@ -1,4 +1,5 @@
-//! Where in its pixel each sample looks: the four strategies of the chapter.
+//! Where each sample of a pixel looks, and where its other dimensions land: the chapter's
+//! samplers.
 //!
 //! A pixel is not a point but a small square, and its value is the integral of the image over
 //! that square (weighted by a filter, see [`crate::filters`]). Chapter 01 evaluated the image
@@ -10,20 +11,32 @@
 //! | [`Random`](PixelSamplerKind::Random) | uniform in the pixel | noise, `O(n^-1/2)` |
 //! | [`Stratified`](PixelSamplerKind::Stratified) | uniform in stratum `i` of an `x` by `y` grid | less noise at edges, `O(n^-3/4)` |
 //! | [`Halton`](PixelSamplerKind::Halton) | point `i` of the Halton sequence (bases 2, 3), shifted per pixel | low discrepancy, close to `O(n^-1)` at edges |
+//! | [`MultiJitter`](PixelSamplerKind::MultiJitter) | stratified, and in `n` intervals of each axis too | as stratified, better for edges along an axis |
+//! | [`Sobol`](PixelSamplerKind::Sobol) | point `i` of Sobol's sequence, Owen-scrambled per pixel | low discrepancy at every power of two |
 //!
-//! Only the *pixel position* differs. Every other dimension a sample asks for (`get_1d`: the
-//! lens in chapter 04, the time in chapter 05, ...) comes from chapter 01's
-//! `IndependentSampler` keyed by `(seed, pixel, sample index)`, so an image does not depend
-//! on the number of threads, and the strategies can be compared fairly. The pixel position is
-//! always the first dimension drawn.
+//! The pixel position is a sample's first dimension; the later chapters draw more of them (the
+//! lens in chapter 04, the time in chapter 05, the light and the bounces after). The centre,
+//! random and Halton samplers draw those from chapter 01's `IndependentSampler`, keyed by
+//! `(seed, pixel, sample index)`. The stratified, multi-jittered and Sobol samplers place them
+//! as they place the pixel position, each dimension with an order of its own
+//! ([`dimension_keys`], [`permutation`]), as Mitsuba 3's `stratified`, `multijitter` and
+//! `ldsampler` do. Every number still depends on the seed, the pixel and the sample index
+//! only, so an image does not depend on the number of threads.
 
+pub mod dimension_keys;
 mod halton;
+mod multi_jitter;
+pub mod permutation;
 mod random;
+mod sobol;
 mod stratified;
 
 pub use halton::{HaltonSampler, halton_position, radical_inverse};
+pub use multi_jitter::{MultiJitterSampler, multi_jittered};
+pub use permutation::permutation_element;
 pub use random::{RandomSampler, random_offset};
-pub use stratified::{StratifiedSampler, jittered, strata_grid};
+pub use sobol::{SobolSampler, owen_scramble, scrambled_sobol_2d, sobol_2d};
+pub use stratified::{StratifiedSampler, jittered, shuffled_stratum, strata_grid};
 
 use ch01_whitted::pixel::CentreSampler;
 use common::sampler::Sampler;
@@ -40,21 +53,34 @@ pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 pub enum PixelSamplerKind {
     /// Every sample at the pixel centre (chapter 01): aliasing that more samples cannot fix.
     Centre,
-    /// Independent uniform positions in the pixel.
+    /// Independent uniform numbers, the position in the pixel among them (Mitsuba's
+    /// `independent`).
+    #[cfg_attr(feature = "lab", value(alias = "independent"))]
     Random,
-    /// Jittered: one uniform position in each cell of a grid of `spp` cells.
+    /// Jittered: one uniform position in each cell of a grid of `spp` cells, and every other
+    /// dimension stratified too, in an order of its own.
     Stratified,
-    /// The Halton sequence in bases 2 and 3, rotated by a random shift per pixel.
+    /// The Halton sequence in bases 2 and 3 for the position, rotated by a random shift per
+    /// pixel; the other dimensions independent.
     Halton,
+    /// Multi-jittered (Kensler's correlated form) in every dimension.
+    #[cfg_attr(feature = "lab", value(name = "multijitter"))]
+    MultiJitter,
+    /// Owen-scrambled Sobol points in every dimension (Mitsuba's `ldsampler` draws from the
+    /// same sequence).
+    #[cfg_attr(feature = "lab", value(alias = "ldsampler"))]
+    Sobol,
 }
 
 impl PixelSamplerKind {
     /// Every strategy, in the order of the enum.
-    pub const ALL: [PixelSamplerKind; 4] = [
+    pub const ALL: [PixelSamplerKind; 6] = [
         PixelSamplerKind::Centre,
         PixelSamplerKind::Random,
         PixelSamplerKind::Stratified,
         PixelSamplerKind::Halton,
+        PixelSamplerKind::MultiJitter,
+        PixelSamplerKind::Sobol,
     ];
 
     /// The name used on the command line and in figures.
@@ -64,7 +90,18 @@ impl PixelSamplerKind {
             PixelSamplerKind::Random => "random",
             PixelSamplerKind::Stratified => "stratified",
             PixelSamplerKind::Halton => "halton",
+            PixelSamplerKind::MultiJitter => "multijitter",
+            PixelSamplerKind::Sobol => "sobol",
         }
+    }
+
+    /// Whether the sampler lays out its strata for a sample count known in advance (and so
+    /// cannot render to a time budget).
+    pub fn needs_sample_count(self) -> bool {
+        matches!(
+            self,
+            PixelSamplerKind::Stratified | PixelSamplerKind::MultiJitter
+        )
     }
 }
 
@@ -82,13 +119,17 @@ pub enum PixelSampler {
     Stratified(StratifiedSampler),
     /// See [`PixelSamplerKind::Halton`].
     Halton(HaltonSampler),
+    /// See [`PixelSamplerKind::MultiJitter`].
+    MultiJitter(MultiJitterSampler),
+    /// See [`PixelSamplerKind::Sobol`].
+    Sobol(SobolSampler),
 }
 
 impl PixelSampler {
     /// The strategy `kind` for `spp` samples per pixel, every random number fixed by `seed`.
     ///
-    /// Only the stratified sampler uses `spp` (to lay out its grid); the others accept any
-    /// number of samples. Errors: `spp == 0`, or a count too large for a grid of strata.
+    /// Only the stratified and multi-jittered samplers use `spp` (to lay out their grid); the
+    /// others accept any number of samples. Errors: `spp == 0`, or a count too large for a grid of strata.
     pub fn new(kind: PixelSamplerKind, spp: u64, seed: u64) -> Result<Self, String> {
         if spp == 0 {
             return Err("a pixel needs at least one sample, got spp 0".to_string());
@@ -100,6 +141,10 @@ impl PixelSampler {
                 PixelSampler::Stratified(StratifiedSampler::new(spp, seed)?)
             }
             PixelSamplerKind::Halton => PixelSampler::Halton(HaltonSampler::new(seed)),
+            PixelSamplerKind::MultiJitter => {
+                PixelSampler::MultiJitter(MultiJitterSampler::new(spp, seed)?)
+            }
+            PixelSamplerKind::Sobol => PixelSampler::Sobol(SobolSampler::new(seed)),
         })
     }
 
@@ -110,6 +155,8 @@ impl PixelSampler {
             PixelSampler::Random(_) => PixelSamplerKind::Random,
             PixelSampler::Stratified(_) => PixelSamplerKind::Stratified,
             PixelSampler::Halton(_) => PixelSamplerKind::Halton,
+            PixelSampler::MultiJitter(_) => PixelSamplerKind::MultiJitter,
+            PixelSampler::Sobol(_) => PixelSamplerKind::Sobol,
         }
     }
 
@@ -124,35 +171,40 @@ impl PixelSampler {
     }
 }
 
+/// Hands a call to the sampler inside.
+macro_rules! each {
+    ($self:ident, $s:ident => $call:expr) => {
+        match $self {
+            PixelSampler::Centre($s) => $call,
+            PixelSampler::Random($s) => $call,
+            PixelSampler::Stratified($s) => $call,
+            PixelSampler::Halton($s) => $call,
+            PixelSampler::MultiJitter($s) => $call,
+            PixelSampler::Sobol($s) => $call,
+        }
+    };
+}
+
 impl Sampler for PixelSampler {
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
-        match self {
-            PixelSampler::Centre(s) => s.start_pixel_sample(pixel, sample_index),
-            PixelSampler::Random(s) => s.start_pixel_sample(pixel, sample_index),
-            PixelSampler::Stratified(s) => s.start_pixel_sample(pixel, sample_index),
-            PixelSampler::Halton(s) => s.start_pixel_sample(pixel, sample_index),
-        }
+        each!(self, s => s.start_pixel_sample(pixel, sample_index))
     }
 
     fn get_pixel_2d(&mut self) -> Vec2 {
-        match self {
-            PixelSampler::Centre(s) => s.get_pixel_2d(),
-            PixelSampler::Random(s) => s.get_pixel_2d(),
-            PixelSampler::Stratified(s) => s.get_pixel_2d(),
-            PixelSampler::Halton(s) => s.get_pixel_2d(),
-        }
+        each!(self, s => s.get_pixel_2d())
     }
 
     fn get_1d(&mut self) -> f32 {
-        match self {
-            PixelSampler::Centre(s) => s.get_1d(),
-            PixelSampler::Random(s) => s.get_1d(),
-            PixelSampler::Stratified(s) => s.get_1d(),
-            PixelSampler::Halton(s) => s.get_1d(),
-        }
+        each!(self, s => s.get_1d())
+    }
+
+    fn get_2d(&mut self) -> Vec2 {
+        each!(self, s => s.get_2d())
     }
 }
 
+#[cfg(test)]
+mod every_dimension_tests;
 #[cfg(test)]
 mod radical_inverse_values;
 #[cfg(test)]

@@ -6,7 +6,9 @@
 //! is the lecture's "less noise near edges": for a pixel cut by an edge the variance falls as
 //! `n^-3/2` instead of `n^-1`.
 
-use common::sampler::{IndependentSampler, Sampler};
+use super::dimension_keys::DimensionKeys;
+use super::permutation::permutation_element;
+use common::sampler::{IndependentSampler, Sampler, mix};
 use glam::{UVec2, Vec2};
 
 // ANCHOR: strata_grid
@@ -58,26 +60,47 @@ pub fn jittered(sample_index: u64, columns: u32, rows: u32, xi: Vec2) -> Vec2 {
 }
 // ANCHOR_END: jittered
 
-/// Jittered positions for a fixed number of samples per pixel. Sample `i` goes into stratum
-/// `i mod spp`, the jitter inside it comes from the first two numbers of the sample's stream.
+// ANCHOR: shuffled_stratum
+/// The stratum, out of `strata`, that sample `sample_index` of a pixel takes in a dimension
+/// whose order is chosen by `key`: the pixel's first `strata` samples take every stratum once,
+/// in a random order, and each further round of `strata` samples again, in a new order.
+pub fn shuffled_stratum(sample_index: u64, strata: u32, key: u32) -> u32 {
+    let strata = strata.max(1);
+    let round = sample_index / u64::from(strata);
+    let round_key = key ^ (mix(round) as u32);
+    permutation_element((sample_index % u64::from(strata)) as u32, strata, round_key)
+}
+// ANCHOR_END: shuffled_stratum
+
+/// Jittered samples for a fixed number of samples per pixel, in every dimension.
+///
+/// The pixel position of sample `i` goes into cell `i mod spp` of the pixel's grid. Every
+/// further dimension is stratified too: a 1D draw into one of `spp` equal intervals, a 2D draw
+/// into one cell of the same grid, each dimension dealing out its strata in an order of its
+/// own ([`shuffled_stratum`]). Where in its stratum a number lands comes from the sample's
+/// own stream, as in Mitsuba 3's `stratified` sampler.
 #[derive(Clone, Debug)]
 pub struct StratifiedSampler {
     columns: u32,
     rows: u32,
     index: u64,
+    keys: DimensionKeys,
     numbers: IndependentSampler,
 }
 
 impl StratifiedSampler {
-    /// Strata for `spp` samples per pixel; see [`strata_grid`].
+    /// Strata for `spp` samples per pixel; see [`strata_grid`]. At most `u32::MAX` strata.
     pub fn new(spp: u64, seed: u64) -> Result<Self, String> {
-        let (columns, rows) = strata_grid(spp).ok_or_else(|| {
-            format!("stratified sampling cannot lay out {spp} samples per pixel as a grid")
-        })?;
+        let (columns, rows) = strata_grid(spp)
+            .filter(|_| spp <= u64::from(u32::MAX))
+            .ok_or_else(|| {
+                format!("stratified sampling cannot lay out {spp} samples per pixel as a grid")
+            })?;
         Ok(Self {
             columns,
             rows,
             index: 0,
+            keys: DimensionKeys::new(seed),
             numbers: IndependentSampler::new(seed),
         })
     }
@@ -86,11 +109,17 @@ impl StratifiedSampler {
     pub fn grid(&self) -> (u32, u32) {
         (self.columns, self.rows)
     }
+
+    fn strata(&self) -> u32 {
+        self.columns * self.rows
+    }
 }
 
+// ANCHOR: stratified_every_dimension
 impl Sampler for StratifiedSampler {
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
         self.index = sample_index;
+        self.keys.start(pixel);
         self.numbers.start_pixel_sample(pixel, sample_index);
     }
 
@@ -99,7 +128,17 @@ impl Sampler for StratifiedSampler {
         jittered(self.index, self.columns, self.rows, xi)
     }
 
+    /// One of `spp` equal intervals: a grid of `spp` columns and one row.
     fn get_1d(&mut self) -> f32 {
-        self.numbers.get_1d()
+        let stratum = shuffled_stratum(self.index, self.strata(), self.keys.next_key());
+        let xi = Vec2::new(self.numbers.get_1d(), 0.0);
+        jittered(u64::from(stratum), self.strata(), 1, xi).x
+    }
+
+    fn get_2d(&mut self) -> Vec2 {
+        let cell = shuffled_stratum(self.index, self.strata(), self.keys.next_key());
+        let xi = self.numbers.get_2d();
+        jittered(u64::from(cell), self.columns, self.rows, xi)
     }
 }
+// ANCHOR_END: stratified_every_dimension

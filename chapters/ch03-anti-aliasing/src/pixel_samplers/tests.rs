@@ -2,7 +2,7 @@ use super::radical_inverse_values::RADICAL_INVERSES;
 use super::*;
 use common::sampler::IndependentSampler;
 
-const ALL_KINDS: [PixelSamplerKind; 4] = PixelSamplerKind::ALL;
+const ALL_KINDS: [PixelSamplerKind; 6] = PixelSamplerKind::ALL;
 
 /// What is wrong with `p = jittered(index, columns, rows, xi)`, which should be `expected`,
 /// in words; `None` if right.
@@ -225,17 +225,19 @@ fn other_dimensions_come_from_the_independent_stream_after_the_pixel() {
     let mut reference = IndependentSampler::new(11);
     reference.start_pixel_sample(pixel, index);
     let stream: Vec<f32> = (0..6).map(|_| reference.get_1d()).collect();
-    for kind in ALL_KINDS {
+    // The samplers that place the pixel position only; the others place every dimension
+    // (every_dimension_tests.rs).
+    for (kind, skipped) in [
+        // A random position uses the first two numbers of the stream; the centre and Halton
+        // positions use none of them.
+        (PixelSamplerKind::Random, 2),
+        (PixelSamplerKind::Centre, 0),
+        (PixelSamplerKind::Halton, 0),
+    ] {
         let mut s = PixelSampler::new(kind, 16, 11).unwrap();
         s.start_pixel_sample(pixel, index);
         s.get_pixel_2d();
         let next: Vec<f32> = (0..3).map(|_| s.get_1d()).collect();
-        // Random and stratified positions use the first two numbers of the stream; the centre
-        // and Halton positions use none of them.
-        let skipped = match kind {
-            PixelSamplerKind::Random | PixelSamplerKind::Stratified => 2,
-            PixelSamplerKind::Centre | PixelSamplerKind::Halton => 0,
-        };
         assert_eq!(next, stream[skipped..skipped + 3], "{kind:?}");
     }
 }
