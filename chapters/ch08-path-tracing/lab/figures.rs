@@ -12,6 +12,9 @@
 //! - NEE, MIS and Russian roulette on the Cornell box (`bsdf-only.png`, `nee.png`, ...,
 //!   `roulette.png`, `convergence.*`) and on Veach's glossy plates (`mis-plates.png`,
 //!   `plates-convergence.*`);
+//! - chapter 03's samplers, placing every dimension of a path, against independent numbers
+//!   on the Cornell box and the glossy plates (`samplers-cornell.*`, `samplers-plates.*`,
+//!   `samplers.md`);
 //! - the numbers each path draws in the agreement scenes (`dimensions.md`), and the static
 //!   pinhole scene timed against chapter 03's tracer (`static-pinhole.md`), for the Speed
 //!   appendix;
@@ -34,9 +37,9 @@ use crate::lab::scene_file::path_options;
 use crate::mis::MisHeuristic;
 use crate::options::PathOptions;
 use crate::{Method, render_with};
-use ch03_anti_aliasing::{FilterKind, ReconstructionFilter};
+use ch03_anti_aliasing::{FilterKind, PixelSampler, PixelSamplerKind, ReconstructionFilter};
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::MotionScene;
+use ch05_motion_blur::{MotionScene, TimeSampler};
 use common::film::PixelBoxFilter;
 use common::image::Image;
 use common::metrics::rmse;
@@ -106,6 +109,17 @@ fn path_trace(
     budget: Budget,
     seed: u64,
 ) -> RenderOutput {
+    path_trace_sampled(scene, options, size, budget, &IndependentSampler::new(seed))
+}
+
+/// Path-traces `scene` with `options` under `budget`, numbers from `sampler`, box filter.
+fn path_trace_sampled<S: TimeSampler>(
+    scene: &MotionScene,
+    options: PathOptions,
+    size: (u32, u32),
+    budget: Budget,
+    sampler: &S,
+) -> RenderOutput {
     let settings = RenderSettings {
         budget,
         ..RenderSettings::new(size.0, size.1, 1)
@@ -115,7 +129,7 @@ fn path_trace(
         Method::new(options),
         &Lens::PINHOLE,
         &settings,
-        &IndependentSampler::new(seed),
+        sampler,
         &box_filter(),
     )
 }
@@ -190,6 +204,9 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     })?;
     figures.make("MIS on the glossy plates", |out| {
         glossy_plates(out, &quality)
+    })?;
+    figures.make("the samplers on the path tracer", |out| {
+        samplers_on_paths(out, &quality)
     })?;
     figures.make("dimensions drawn per path", |out| dimensions(out, &quality))?;
     figures.make("the static pinhole scene against chapter 03", |out| {
@@ -620,6 +637,85 @@ fn glossy_plates(out: &Path, quality: &Quality) -> anyhow::Result<()> {
     Ok(())
 }
 // ANCHOR_END: glossy_plates
+
+// ANCHOR: samplers_on_paths
+/// Chapter 03's samplers, which place every dimension of a path, against independent numbers:
+/// error against time on the Cornell box (every bounce, the file's depth) and on Veach's
+/// glossy plates (direct light only, where a path draws few dimensions), each sampler's render
+/// of the pixel, lens, light and BSDF numbers with the power heuristic.
+fn samplers_on_paths(out: &Path, quality: &Quality) -> anyhow::Result<()> {
+    let kinds = [
+        PixelSamplerKind::Random,
+        PixelSamplerKind::Stratified,
+        PixelSamplerKind::MultiJitter,
+        PixelSamplerKind::Sobol,
+    ];
+    let plates = PathOptions {
+        rr_depth: None,
+        ..PathOptions::with_depth(2)
+    };
+    let mut summary = String::from(
+        "| sampler | Cornell box: RMSE | against random | glossy plates: RMSE | against random |\n\
+         |---|---:|---:|---:|---:|\n",
+    );
+    let mut last_errors = Vec::new();
+    for (name, file_name, quick_size, depth) in [
+        ("cornell", "cornell-box.xml", (32, 32), None),
+        ("plates", "glossy-plates.xml", (96, 64), Some(plates)),
+    ] {
+        let file = load(file_name)?;
+        let scene = &file.world;
+        let options = depth.unwrap_or(file.options);
+        let size = quality.size(scene, quick_size);
+        let reference = render(scene, options, size, quality.reference_spp, 99);
+        let runs: Vec<Technique> = kinds
+            .iter()
+            .map(|&kind| {
+                Technique::new(kind.name(), move |spp| {
+                    let sampler = PixelSampler::new(kind, spp, 1).expect("a sample count");
+                    path_trace_sampled(scene, options, size, Budget::Samples(spp), &sampler).image
+                })
+            })
+            .collect();
+        let records = run_convergence(&runs, quality.budgets, &reference);
+        write_convergence_csv(&out.join(format!("samplers-{name}.csv")), &records)?;
+        write_text(
+            &out.join(format!("samplers-{name}.md")),
+            &convergence_markdown(&records, "samples per pixel"),
+        )?;
+        plot_error_vs_time(
+            &out.join(format!("samplers-{name}.png")),
+            &format!("{file_name}: samplers, error against time"),
+            &records,
+        )?;
+        // The errors at the largest count, in the order of `kinds`.
+        let most = quality.budgets.last().copied().unwrap_or(1);
+        last_errors.push(
+            records
+                .iter()
+                .filter(|r| r.spp == most)
+                .map(|r| r.rmse)
+                .collect::<Vec<f64>>(),
+        );
+    }
+    for (k, kind) in kinds.iter().enumerate() {
+        let cell = |errors: &Vec<f64>| {
+            let ratio = errors[k] / errors[0];
+            format!("{:.3e} | {ratio:.2}", errors[k])
+        };
+        summary += &format!(
+            "| {} | {} | {} |\n",
+            kind.name(),
+            cell(&last_errors[0]),
+            cell(&last_errors[1])
+        );
+    }
+    let most = quality.budgets.last().copied().unwrap_or(1);
+    summary += &format!("\nAt {}.\n", samples_per_pixel(most));
+    write_text(&out.join("samplers.md"), &summary)?;
+    Ok(())
+}
+// ANCHOR_END: samplers_on_paths
 
 /// "lower than", "higher than" or "the same as", for `a` compared with `b`, as printed to
 /// three decimals: the generated sentences say what the numbers beside them say.

@@ -7,6 +7,7 @@ use super::description::{FilmDescription, SamplerDescription, Sensor};
 use super::error::SceneError;
 use super::properties::Properties;
 use super::reader::Reader;
+use super::sample_counts::mitsuba_sample_count;
 use super::values::parse_float;
 use common::scene::{CameraModel, FilmFilter};
 
@@ -302,7 +303,8 @@ fn read_filter(reader: &mut Reader, node: &Element) -> Result<FilmFilter, SceneE
     Ok(filter)
 }
 
-/// Reads a sampler of any type: only `sample_count` and `seed` are interpreted.
+/// Reads a sampler of any type: only `sample_count` (rounded as Mitsuba 3 rounds it for its
+/// type) and `seed` are interpreted.
 fn read_sampler(reader: &mut Reader, node: &Element) -> Result<SamplerDescription, SceneError> {
     let type_name = reader.required_attribute(node, "type")?;
     let mut properties = Properties::read(reader, node, format!("{type_name} sampler"))?;
@@ -323,9 +325,27 @@ fn read_sampler(reader: &mut Reader, node: &Element) -> Result<SamplerDescriptio
                 )
             })
     };
+    let asked = count_or_seed("sample_count", 4, 1)?;
+    let seed = count_or_seed("seed", 0, 0)?;
+    // Mitsuba's structured samplers round the count up to one they can lay out; so do we.
+    let sample_count = mitsuba_sample_count(&type_name, asked).ok_or_else(|| {
+        reader.error(
+            node,
+            format!("a {type_name} sampler cannot lay out {asked} samples per pixel"),
+        )
+    })?;
+    if sample_count != asked {
+        reader.warn_at(
+            reader.position(node),
+            format!(
+                "the {type_name} sampler takes {sample_count} samples per pixel where the file \
+                 asks for {asked}, as Mitsuba 3 rounds them"
+            ),
+        );
+    }
     let sampler = SamplerDescription {
-        sample_count: count_or_seed("sample_count", 4, 1)?,
-        seed: count_or_seed("seed", 0, 0)?,
+        sample_count,
+        seed,
         type_name,
     };
     if let Some(object) = properties.objects.first() {

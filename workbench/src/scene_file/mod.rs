@@ -50,6 +50,7 @@ mod obj;
 mod ply;
 mod properties;
 mod reader;
+mod sample_counts;
 mod serialized;
 mod shapes;
 mod spectrum;

@@ -304,3 +304,47 @@ fn a_thin_lens_without_a_focus_distance_focuses_where_mitsuba_does() {
     let error = super::parse(text).expect_err("no aperture_radius");
     assert!(error.message.contains("aperture_radius"), "{error}");
 }
+
+#[test]
+fn structured_samplers_take_the_sample_counts_mitsuba_takes() {
+    let with_sampler = |type_name: &str, count: u32| {
+        let text = format!(
+            r#"<scene version="3.0.0">
+    <sensor type="perspective">
+        <sampler type="{type_name}">
+            <integer name="sample_count" value="{count}"/>
+        </sampler>
+    </sensor>
+</scene>"#
+        );
+        parse_scene(&text, Path::new("test.xml"), &[]).unwrap()
+    };
+    let independent = with_sampler("independent", 10);
+    assert_eq!(independent.scene.sampler.sample_count, 10);
+    assert!(independent.warnings.is_empty());
+    for (type_name, count) in [
+        ("stratified", 16),
+        ("multijitter", 12),
+        ("orthogonal", 25),
+        ("ldsampler", 16),
+    ] {
+        let loaded = with_sampler(type_name, 10);
+        assert_eq!(loaded.scene.sampler.sample_count, count, "{type_name}");
+        assert_eq!(loaded.scene.sampler.type_name, type_name);
+        let warning = &loaded.warnings[0];
+        assert_eq!(warning.line, 3, "{warning:?}");
+        assert!(
+            warning.message.contains(&format!("takes {count} samples"))
+                && warning.message.contains("asks for 10"),
+            "{warning:?}"
+        );
+    }
+    let huge = format!(
+        r#"<scene version="3.0.0"><sensor type="perspective">
+        <sampler type="stratified"><integer name="sample_count" value="{}"/></sampler>
+    </sensor></scene>"#,
+        u32::MAX
+    );
+    let error = parse_scene(&huge, Path::new("test.xml"), &[]).unwrap_err();
+    assert!(error.to_string().contains("cannot lay out"), "{error}");
+}
