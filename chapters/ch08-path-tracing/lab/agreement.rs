@@ -23,6 +23,21 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             variant: MITSUBA_VARIANT,
         },
         AgreementScene {
+            name: "cornell-box-stratified",
+            checks: "the Cornell box with Mitsuba's stratified sampler: every dimension of a path stratified over a pixel's samples, each in an order of its own; the noise, not only the mean, is Mitsuba's",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "cornell-box-multijitter",
+            checks: "the Cornell box with Mitsuba's multijitter sampler, rendered by chapter 03's multi-jittered sampler in every dimension",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "cornell-box-ldsampler",
+            checks: "the Cornell box with Mitsuba's ldsampler, rendered by chapter 03's Owen-scrambled Sobol sampler in every dimension",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
             name: "point-and-sky",
             checks: "a point light and a constant environment picked among three lights, a glass sphere, max_depth 5",
             variant: MITSUBA_VARIANT,
