@@ -27,7 +27,14 @@ pub struct AntiAliasingDemo;
 const SEED: u64 = 3;
 
 /// The samplers, in the order of [`PixelSamplerKind::ALL`] (the choice's index is the kind's).
-const SAMPLERS: &[&str] = &["centre", "random", "stratified", "halton"];
+const SAMPLERS: &[&str] = &[
+    "centre",
+    "random",
+    "stratified",
+    "halton",
+    "multijitter",
+    "sobol",
+];
 
 /// The filters, in the order of [`FilterKind::ALL`].
 const FILTERS: &[&str] = &["box", "tent", "gaussian", "mitchell"];

@@ -3,6 +3,58 @@
 
 use super::*;
 
+#[test]
+fn exercise_shuffled_stratum() {
+    let order = |strata: u32, key: u32, round: u64| -> Vec<u32> {
+        (0..u64::from(strata))
+            .map(|i| shuffled_stratum(round * u64::from(strata) + i, strata, key))
+            .collect()
+    };
+    for strata in [1u32, 2, 7, 16, 64] {
+        for key in [1u32, 0xdead_beef] {
+            for round in 0..3 {
+                let taken = order(strata, key, round);
+                let mut sorted = taken.clone();
+                sorted.sort();
+                let every_once: Vec<u32> = (0..strata).collect();
+                assert!(
+                    sorted == every_once,
+                    "shuffled_stratum: samples {} to {} of a pixel are round {round} of {strata} \
+                     strata and must take every stratum once; they took {taken:?}{}",
+                    round * u64::from(strata),
+                    (round + 1) * u64::from(strata) - 1,
+                    if taken.iter().any(|&s| s >= strata) {
+                        ": a stratum past the last, so the index given to the permutation is not \
+                         the sample's place within its round"
+                    } else {
+                        ""
+                    }
+                );
+            }
+        }
+    }
+    let identity: Vec<u32> = (0..16).collect();
+    let first = order(16, 1, 0);
+    assert!(
+        first != identity,
+        "shuffled_stratum: 16 samples took the strata 0, 1, 2, ... in order: in every dimension \
+         sample k would sit in stratum k, and the samples would lie along the diagonal of the \
+         cube of all dimensions; the strata must be dealt in a random order"
+    );
+    assert!(
+        order(16, 2, 0) != first,
+        "shuffled_stratum: keys 1 and 2 dealt the 16 strata in the same order {first:?}: each \
+         dimension has a key, and its order must be its own, or two dimensions of a sample would \
+         always take the same stratum"
+    );
+    assert!(
+        order(16, 1, 1) != first,
+        "shuffled_stratum: samples 16 to 31 took the strata in the same order as samples 0 to 15, \
+         {first:?}: each round of samples must deal them in a new order (mix the round into the \
+         key), or sample k and sample k + 16 would always share a stratum in every dimension"
+    );
+}
+
 /// The samplers that place every dimension, with sample counts they lay out exactly.
 const PLACING: [(PixelSamplerKind, &[u64]); 3] = [
     (PixelSamplerKind::Stratified, &[1, 7, 12, 16, 64]),

@@ -8,7 +8,14 @@
 
 /// Element `i` of a random permutation of `0..n` chosen by `key`, without building the
 /// permutation (Kensler's hash-based permutation, as in pbrt-v4's `PermutationElement`).
+///
+/// `i` must be below `n`: the walk below only ends for an element of the order, so any other
+/// `i` is refused rather than left to loop.
 pub fn permutation_element(i: u32, n: u32, key: u32) -> u32 {
+    assert!(
+        i < n.max(1),
+        "permutation_element: there is no element {i} in an order of 0..{n}; the index must be below n"
+    );
     let p = key;
     let mut w = n.max(1) - 1;
     w |= w >> 1;

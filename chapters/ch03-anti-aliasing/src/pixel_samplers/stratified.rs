@@ -7,8 +7,7 @@
 //! `n^-3/2` instead of `n^-1`.
 
 use super::dimension_keys::DimensionKeys;
-use super::permutation::permutation_element;
-use common::sampler::{IndependentSampler, Sampler, mix};
+use common::sampler::{IndependentSampler, Sampler};
 use glam::{UVec2, Vec2};
 
 // ANCHOR: strata_grid
@@ -61,14 +60,23 @@ pub fn jittered(sample_index: u64, columns: u32, rows: u32, xi: Vec2) -> Vec2 {
 // ANCHOR_END: jittered
 
 // ANCHOR: shuffled_stratum
-/// The stratum, out of `strata`, that sample `sample_index` of a pixel takes in a dimension
-/// whose order is chosen by `key`: the pixel's first `strata` samples take every stratum once,
-/// in a random order, and each further round of `strata` samples again, in a new order.
+/// The stratum, out of `strata` (at least 1), that sample `sample_index` of a pixel takes in a
+/// dimension whose order is chosen by `key`: the pixel's first `strata` samples take every
+/// stratum once, in a random order, and each further round of `strata` samples again, in a new
+/// order. [`permutation_element`](super::permutation_element)`(i, n, key)` is element `i` of a
+/// random order of `0..n`, and [`mix`](common::sampler::mix) hashes 64 bits.
+///
+/// Which place within its round does a sample have, and what must the key of each round mix
+/// in so that rounds differ?
 pub fn shuffled_stratum(sample_index: u64, strata: u32, key: u32) -> u32 {
+    // BEGIN SOLUTION
+    use super::permutation_element;
+    use common::sampler::mix;
     let strata = strata.max(1);
     let round = sample_index / u64::from(strata);
     let round_key = key ^ (mix(round) as u32);
     permutation_element((sample_index % u64::from(strata)) as u32, strata, round_key)
+    // END SOLUTION
 }
 // ANCHOR_END: shuffled_stratum
 
