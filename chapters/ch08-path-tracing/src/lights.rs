@@ -12,6 +12,13 @@
 //! number, which keeps a path a path. (Sampling every one would make each bounce cost `N`
 //! shadow rays; picking by power would favour bright lights.)
 //!
+//! What is picked is an *emitter*: a glowing shape of the scene, whole. A mesh's triangles or
+//! a cube's faces are area lights of their own here, but together one emitter, picked with
+//! the chance `1/N` of any other, and then one of its pieces by area
+//! ([`SceneLights::pick`]), so that a point on it is uniform over the whole shape, as in
+//! Mitsuba 3. Picking among the pieces would give a lamp modelled as a thousand triangles a
+//! thousand times the samples of a small sphere beside it.
+//!
 //! Mitsuba 3's `path` integrator picks uniformly among *all* its emitters, point lights
 //! included. The expected image is the same; ours is less noisy where a scene has point
 //! lights, and a scene without area lights or environment pays for no pick and no light
@@ -39,6 +46,7 @@ use common::geometry::{Parallelogram, SurfaceHit};
 use common::scene::luminance;
 use common::scene::{AreaEmitter, DirectionalLight, GridDistribution, PointLight, Scene};
 use glam::{Vec2, Vec3};
+use std::ops::Range;
 
 /// One of the lights a light sample picks from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -92,6 +100,13 @@ pub struct SceneLights<'a> {
     pub light_of_shape: &'a [Option<u32>],
     /// For every area light, its shape.
     shape_of_light: &'a [u32],
+    /// The area lights grouped into the scene's emitting shapes (a mesh's triangles, a cube's
+    /// faces): a light sample picks one of these, then a piece of it by area.
+    emitters: &'a [Range<usize>],
+    /// For every area light, the running share of its emitter's area up to and including it.
+    area_cdf: &'a [f32],
+    /// For every area light, its share of its emitter's area.
+    area_share: &'a [f32],
     /// The scene, for the textures of lights whose radiance varies.
     scene: &'a Scene,
     /// Point lights.
@@ -102,10 +117,11 @@ pub struct SceneLights<'a> {
     pub environment: EnvironmentLight<'a>,
     /// How area lights are sampled (chapter 07).
     pub sampling: LightSampling,
-    /// How many lights there are to pick from (area lights and the environment), counted
+    /// How many lights a light sample may end on (area lights and the environment), counted
     /// once: every bounce asks.
     count: usize,
-    /// `1 / count` (1 without such lights), computed once for the same reason.
+    /// The chance of picking any one emitter (an emitting shape, or the environment): one
+    /// over their number (1 without any), computed once for the same reason.
     pick_probability: f32,
 }
 
@@ -121,6 +137,9 @@ impl<'a> SceneLights<'a> {
             area: &area_lights.lights,
             light_of_shape: &area_lights.light_of_shape,
             shape_of_light: &area_lights.shape_of_light,
+            emitters: &area_lights.emitters,
+            area_cdf: &area_lights.area_cdf,
+            area_share: &area_lights.area_share,
             scene,
             points: &scene.point_lights,
             directionals: &scene.directional_lights,
@@ -129,13 +148,15 @@ impl<'a> SceneLights<'a> {
             count: 0,
             pick_probability: 1.0,
         };
-        lights.count = lights.area.len() + usize::from(lights.has_environment());
-        lights.pick_probability = 1.0 / lights.count.max(1) as f32;
+        let environment = usize::from(lights.has_environment());
+        lights.count = lights.area.len() + environment;
+        lights.pick_probability = 1.0 / (lights.emitters.len() + environment).max(1) as f32;
         lights
     }
 
-    /// How many lights there are to pick from: the area lights and the environment (point
-    /// lights are not picked, see the module's introduction).
+    /// How many lights a light sample may end on: the area lights and the environment (point
+    /// lights are not picked, see the module's introduction). With more than one, the pick
+    /// draws a number.
     pub fn count(&self) -> usize {
         self.count
     }
@@ -163,24 +184,40 @@ impl<'a> SceneLights<'a> {
         !self.environment.is_black()
     }
 
-    /// The chance of picking any one of the lights a light sample picks from.
+    /// The chance of picking any one emitter: an emitting shape of the scene (all the pieces
+    /// of a mesh together) or the environment.
     pub fn pick_probability(&self) -> f32 {
         self.pick_probability
     }
 
-    /// The light picked by `u` in `[0, 1)` among the area lights and the environment: area
-    /// lights first, then the environment. `None` when there is none of them.
+    /// The chance that [`pick`](Self::pick) chooses area light `i`: its emitter's chance times
+    /// its share of the emitter's area.
+    pub fn area_pick_probability(&self, i: usize) -> f32 {
+        self.pick_probability * self.area_share[i]
+    }
+
+    /// The light picked by `u` in `[0, 1)`, as Mitsuba 3 picks it: one of the emitters (the
+    /// emitting shapes, then the environment) uniformly, then, for a shape made of pieces,
+    /// one of its pieces by area, with what `u` has left. `None` when there is no light.
+    ///
+    /// Picking among the pieces themselves would give a mesh of a thousand triangles a
+    /// thousand times the samples of a sphere beside it, and its small triangles as many as
+    /// its large ones: the same mean, but the lights that matter go unsampled.
     pub fn pick(&self, u: f32) -> Option<LightRef> {
-        let n = self.count();
+        let n = self.emitters.len() + usize::from(self.has_environment());
         if n == 0 {
             return None;
         }
-        let i = ((u * n as f32) as usize).min(n - 1);
-        Some(if i < self.area.len() {
-            LightRef::Area(i)
-        } else {
-            LightRef::Environment
-        })
+        let scaled = u * n as f32;
+        let k = (scaled as usize).min(n - 1);
+        let Some(emitter) = self.emitters.get(k) else {
+            return Some(LightRef::Environment);
+        };
+        // What is left of `u` within the emitter's share, again uniform in [0, 1).
+        let rest = (scaled - k as f32).clamp(0.0, 1.0);
+        let pieces = &self.area_cdf[emitter.clone()];
+        let piece = pieces.partition_point(|&cdf| cdf <= rest);
+        Some(LightRef::Area(emitter.start + piece.min(pieces.len() - 1)))
     }
 
     /// The area light that world shape `shape` is, if any.
@@ -240,7 +277,7 @@ impl<'a> SceneLights<'a> {
         let x = receiver.p;
         let found = match light {
             LightRef::Area(i) => {
-                let pick = self.pick_probability();
+                let pick = self.area_pick_probability(i);
                 let light = &self.area[i];
                 let shape = self.shape_of_light[i];
                 let sample = match self.textured_panel(light, shape) {
@@ -286,14 +323,14 @@ impl<'a> SceneLights<'a> {
     /// that hit the light needs for its MIS weight.
     pub fn area_pdf(&self, light: &AreaLight, x: Vec3, y: Vec3, n_y: Vec3) -> f32 {
         let to_light = y - x;
-        if let Some((quad, grid)) = self
-            .index_of(light)
-            .and_then(|i| self.textured_panel(light, self.shape_of_light[i]))
+        let index = self.index_of(light);
+        let pick = index.map_or(self.pick_probability(), |i| self.area_pick_probability(i));
+        if let Some((quad, grid)) =
+            index.and_then(|i| self.textured_panel(light, self.shape_of_light[i]))
         {
             let d2 = to_light.length_squared();
             let density = grid.density(quad.uv_of(y)) / quad.area();
-            return self.pick_probability()
-                * pdf_area_to_solid_angle(density, d2, n_y.dot(to_light / d2.sqrt()));
+            return pick * pdf_area_to_solid_angle(density, d2, n_y.dot(to_light / d2.sqrt()));
         }
         let pdf = match (light.shape, self.sampling.strategy) {
             (LightShape::Sphere(sphere), Strategy::SolidAngle) => {
@@ -305,7 +342,7 @@ impl<'a> SceneLights<'a> {
             let d2 = to_light.length_squared();
             pdf_area_to_solid_angle(light.shape.pdf_area(), d2, n_y.dot(to_light / d2.sqrt()))
         });
-        self.pick_probability() * pdf
+        pick * pdf
     }
 
     /// The parallelogram of `light` (shape number `shape`) and the density over its `uv` its
@@ -345,6 +382,112 @@ mod tests {
     use super::*;
     use ch07_soft_shadows::LightSampling;
     use workbench::scene_file::parse_scene;
+
+    /// A matte floor under two emitters: a lamp of two triangles (areas 3 and 1, as a mesh
+    /// gives its pieces) and a small sphere, each one shape of the scene.
+    fn mesh_and_sphere_world() -> MotionScene {
+        use common::geometry::{Parallelogram, Shape, Sphere, Triangle};
+        use common::scene::{
+            AreaEmitter, Camera, CameraFrame, FilmSettings, Material, SceneBuilder, Surface,
+        };
+        let floor = Parallelogram::new(Vec3::new(-5.0, 0.0, -5.0), 10.0 * Vec3::Z, 10.0 * Vec3::X);
+        // Facing down: (p1 - p0) × (p2 - p0) is -y.
+        let (a, b) = (Vec3::new(-1.0, 2.0, 0.0), Vec3::new(1.0, 2.0, 0.0));
+        let big = Triangle::new(a, b, Vec3::new(0.0, 2.0, 3.0));
+        let small = Triangle::new(a, b, Vec3::new(0.0, 2.0, 1.0));
+        let lamp = Surface {
+            material: Material::diffuse(Vec3::ZERO),
+            emitter: Some(AreaEmitter::uniform(Vec3::splat(2.0))),
+            origin: None,
+        };
+        let scene = SceneBuilder::new()
+            .shape(
+                Shape::Parallelogram(floor),
+                Material::diffuse(Vec3::splat(0.5)),
+            )
+            .shared_surface([Shape::Triangle(big), Shape::Triangle(small)], lamp)
+            .area_light(
+                Shape::Sphere(Sphere::new(Vec3::new(2.0, 1.0, 0.0), 0.05)),
+                Material::diffuse(Vec3::ZERO),
+                Vec3::splat(100.0),
+            )
+            .build(
+                Camera::pinhole(
+                    CameraFrame::look_at(Vec3::new(0.0, 1.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap(),
+                    40.0,
+                ),
+                FilmSettings::new(8, 8),
+                2,
+            );
+        MotionScene::still(scene)
+    }
+
+    /// A light sample picks an emitting shape as Mitsuba 3 does, each with the same chance
+    /// however many pieces it is made of, and then a piece of it by area: the lamp's two
+    /// triangles together get half the samples (3/8 and 1/8), the sphere the other half. Picked
+    /// among the pieces, the sphere would get a third.
+    #[test]
+    fn a_light_sample_picks_emitting_shapes_evenly_and_their_pieces_by_area() {
+        let world = mesh_and_sphere_world();
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        assert_eq!(lights.area.len(), 3, "two triangles and a sphere");
+        assert_eq!(lights.count(), 3, "a sample may end on any of the three");
+        let n = 8000;
+        let mut picked = [0usize; 3];
+        for k in 0..n {
+            let u = (k as f32 + 0.5) / n as f32;
+            match lights.pick(u) {
+                Some(LightRef::Area(i)) => picked[i] += 1,
+                other => panic!("picked {other:?}"),
+            }
+        }
+        let expected = [3.0 / 8.0, 1.0 / 8.0, 0.5];
+        for i in 0..3 {
+            let share = picked[i] as f32 / n as f32;
+            assert!(
+                (share - expected[i]).abs() < 2e-3,
+                "light {i} picked {share}, expected {}",
+                expected[i]
+            );
+            assert!((lights.area_pick_probability(i) - expected[i]).abs() < 1e-6);
+        }
+    }
+
+    /// The density a light sample reports for a point of a piece is the one `area_pdf` gives
+    /// for the same point (which MIS needs), and for a shape of pieces it is uniform over the
+    /// whole shape's area: the pick by area times the piece's own `1 / area`.
+    #[test]
+    fn a_piece_of_an_emitting_shape_has_the_density_of_the_whole_shape() {
+        let world = mesh_and_sphere_world();
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        let receiver = world
+            .scene
+            .geometry
+            .intersect(&Ray::new(Vec3::new(0.3, 1.0, 0.4), -Vec3::Y))
+            .unwrap();
+        let whole_area = lights.area[0].area() + lights.area[1].area();
+        for i in 0..2 {
+            for k in 0..16 {
+                let u = Vec2::new((k % 4) as f32 + 0.5, (k / 4) as f32 + 0.5) / 4.0;
+                let sample = lights.sample(LightRef::Area(i), &receiver, u).unwrap();
+                let ShadowTarget::Surface(point) = sample.target else {
+                    panic!("an area light's sample has a point")
+                };
+                let pdf = lights.area_pdf(&lights.area[i], receiver.p, point.p, point.n);
+                assert!((pdf - sample.pdf).abs() <= 1e-4 * sample.pdf);
+                let to_light = point.p - receiver.p;
+                let d2 = to_light.length_squared();
+                let uniform = 0.5 / whole_area * d2 / point.n.dot(to_light).abs() * d2.sqrt();
+                assert!(
+                    (sample.pdf - uniform).abs() <= 1e-4 * uniform,
+                    "piece {i}: density {} per steradian, uniform over the shape is {uniform}",
+                    sample.pdf
+                );
+            }
+        }
+    }
 
     /// The chapter's scene with a textured panel light.
     fn textured_light_world() -> MotionScene {
