@@ -489,6 +489,78 @@ mod tests {
         }
     }
 
+    /// A tiny, very bright sphere light straight above a floor point, seen from the point
+    /// under the angle `R / d`: the light samples' mean of `L cos θ / p` is the irradiance
+    /// `π L (R / d)²`, and `area_pdf` gives each sample's own density. With `1 - cos θ_max`
+    /// computed as `1 - sqrt(1 - s²)` in `f32` (Mitsuba 3.9.1's sphere does so for its
+    /// density), the density is off by the rounding of `cos θ_max` to the floats near 1:
+    /// +7 % at `R / d = 6.7·10⁻⁴`, and no light at all below about `2.4·10⁻⁴`.
+    #[test]
+    fn a_tiny_sphere_light_gives_its_irradiance_to_the_last_digits() {
+        use common::geometry::{Parallelogram, Shape, Sphere};
+        use common::sampler::{IndependentSampler, Sampler};
+        use common::scene::{Camera, CameraFrame, FilmSettings, Material, SceneBuilder};
+        for (radius, d) in [(0.01f32, 15.0f32), (1e-3, 15.0), (1e-4, 15.0)] {
+            let floor =
+                Parallelogram::new(Vec3::new(-5.0, 0.0, -5.0), 10.0 * Vec3::Z, 10.0 * Vec3::X);
+            let scene = SceneBuilder::new()
+                .shape(Shape::Parallelogram(floor), Material::diffuse(Vec3::ONE))
+                .area_light(
+                    Shape::Sphere(Sphere::new(Vec3::new(0.0, d, 0.0), radius)),
+                    Material::diffuse(Vec3::ZERO),
+                    Vec3::ONE,
+                )
+                .build(
+                    Camera::pinhole(
+                        CameraFrame::look_at(Vec3::new(0.0, 1.0, 4.0), Vec3::ZERO, Vec3::Y)
+                            .unwrap(),
+                        40.0,
+                    ),
+                    FilmSettings::new(8, 8),
+                    2,
+                );
+            let world = MotionScene::still(scene);
+            let area_lights = AreaLights::of(&world.scene);
+            let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+            let receiver = world
+                .scene
+                .geometry
+                .intersect(&Ray::new(Vec3::new(0.0, 1.0, 0.0), -Vec3::Y))
+                .unwrap();
+            let s = f64::from(radius) / f64::from(d);
+            let exact = std::f64::consts::PI * s * s;
+            let mut sampler = IndependentSampler::new(5);
+            let (n, mut sum) = (4000, 0.0f64);
+            for i in 0..n {
+                sampler.start_pixel_sample(glam::UVec2::ZERO, i);
+                let sample = lights
+                    .sample(LightRef::Area(0), &receiver, sampler.get_2d())
+                    .expect("the light is in view");
+                let ShadowTarget::Surface(point) = sample.target else {
+                    panic!("an area light's sample has a point")
+                };
+                let pdf = lights.area_pdf(&lights.area[0], receiver.p, point.p, point.n);
+                assert!(
+                    (pdf - sample.pdf).abs() <= 1e-3 * sample.pdf,
+                    "R/d = {s:e}: sampled with {} but area_pdf says {pdf}",
+                    sample.pdf
+                );
+                let cos = f64::from(sample.wi.y);
+                sum += f64::from(sample.radiance.y) * cos / f64::from(sample.pdf);
+            }
+            let mean = sum / n as f64;
+            assert!(
+                (mean / exact - 1.0).abs() < 1e-3,
+                "R/d = {s:e}: irradiance {mean:e}, exactly {exact:e}"
+            );
+            // The subtraction in f32 would be off by far more than the test allows.
+            let s2 = (radius / d).powi(2);
+            let naive = 1.0 - (1.0 - s2).sqrt();
+            let exact_one_minus_cos = s * s / (1.0 + (1.0 - s * s).sqrt());
+            assert!((f64::from(naive) / exact_one_minus_cos - 1.0).abs() > 0.05);
+        }
+    }
+
     /// The chapter's scene with a textured panel light.
     fn textured_light_world() -> MotionScene {
         let file = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/textured-light.xml");
