@@ -147,6 +147,12 @@ pub struct AreaLights {
     /// For every light, its share of its emitter's area: the chance that a pick by area among
     /// the emitter's pieces chooses it.
     pub area_share: Vec<f32>,
+    /// For every emitter, the sum of the sampling weights (Mitsuba 3's `sampling_weight`,
+    /// usually 1: how often chapter 08 picks an emitter, relative to the others) of the
+    /// emitters up to and including it.
+    pub emitter_weight_sum: Vec<f32>,
+    /// For every light, the sampling weight of its emitter.
+    pub weight_of_light: Vec<f32>,
 }
 
 /// The light shape of a world shape: every shape of `common` has a surface to sample.
@@ -174,6 +180,18 @@ impl AreaLights {
             }
         }
         let emitters = emitters_of(scene, &shape_of_light);
+        let weight = |light: usize| {
+            let emitter = scene.surface(shape_of_light[light]).emitter;
+            emitter.map_or(1.0, |e| e.sampling_weight)
+        };
+        let emitter_weight_sum = emitters
+            .iter()
+            .scan(0.0, |sum, e| {
+                *sum += weight(e.start);
+                Some(*sum)
+            })
+            .collect();
+        let weight_of_light = (0..lights.len()).map(weight).collect();
         let (mut area_share, mut area_cdf) = (Vec::new(), Vec::new());
         for emitter in &emitters {
             for (share, cdf) in area_shares(&lights[emitter.clone()]) {
@@ -188,6 +206,8 @@ impl AreaLights {
             emitters,
             area_cdf,
             area_share,
+            emitter_weight_sum,
+            weight_of_light,
         }
     }
 }

@@ -107,6 +107,12 @@ pub struct SceneLights<'a> {
     area_cdf: &'a [f32],
     /// For every area light, its share of its emitter's area.
     area_share: &'a [f32],
+    /// For every emitting shape, the sum of the sampling weights up to and including it.
+    emitter_weight_sum: &'a [f32],
+    /// For every area light, its shape's sampling weight.
+    weight_of_light: &'a [f32],
+    /// Whether every sampling weight is 1, so that the pick is a plain uniform one.
+    uniform_weights: bool,
     /// The scene, for the textures of lights whose radiance varies.
     scene: &'a Scene,
     /// Point lights.
@@ -120,8 +126,9 @@ pub struct SceneLights<'a> {
     /// How many lights a light sample may end on (area lights and the environment), counted
     /// once: every bounce asks.
     count: usize,
-    /// The chance of picking any one emitter (an emitting shape, or the environment): one
-    /// over their number (1 without any), computed once for the same reason.
+    /// The chance of picking an emitter of sampling weight 1 (an emitting shape, or the
+    /// environment): one over the sum of their weights, which is their number unless a scene
+    /// file gives weights (1 without any emitter), computed once for the same reason.
     pick_probability: f32,
 }
 
@@ -140,6 +147,9 @@ impl<'a> SceneLights<'a> {
             emitters: &area_lights.emitters,
             area_cdf: &area_lights.area_cdf,
             area_share: &area_lights.area_share,
+            emitter_weight_sum: &area_lights.emitter_weight_sum,
+            weight_of_light: &area_lights.weight_of_light,
+            uniform_weights: area_lights.weight_of_light.iter().all(|&w| w == 1.0),
             scene,
             points: &scene.point_lights,
             directionals: &scene.directional_lights,
@@ -150,7 +160,13 @@ impl<'a> SceneLights<'a> {
         };
         let environment = usize::from(lights.has_environment());
         lights.count = lights.area.len() + environment;
-        lights.pick_probability = 1.0 / (lights.emitters.len() + environment).max(1) as f32;
+        let shapes_weight = lights.emitter_weight_sum.last().copied().unwrap_or(0.0);
+        let total_weight = shapes_weight + environment as f32;
+        lights.pick_probability = if total_weight > 0.0 {
+            1.0 / total_weight
+        } else {
+            1.0
+        };
         lights
     }
 
@@ -184,21 +200,23 @@ impl<'a> SceneLights<'a> {
         !self.environment.is_black()
     }
 
-    /// The chance of picking any one emitter: an emitting shape of the scene (all the pieces
-    /// of a mesh together) or the environment.
+    /// The chance of picking an emitter of sampling weight 1: an emitting shape of the scene
+    /// (all the pieces of a mesh together) or the environment. Without weights in the scene
+    /// file, every emitter's chance.
     pub fn pick_probability(&self) -> f32 {
         self.pick_probability
     }
 
-    /// The chance that [`pick`](Self::pick) chooses area light `i`: its emitter's chance times
-    /// its share of the emitter's area.
+    /// The chance that [`pick`](Self::pick) chooses area light `i`: its emitter's chance (its
+    /// sampling weight over all of theirs) times its share of the emitter's area.
     pub fn area_pick_probability(&self, i: usize) -> f32 {
-        self.pick_probability * self.area_share[i]
+        self.pick_probability * self.weight_of_light[i] * self.area_share[i]
     }
 
     /// The light picked by `u` in `[0, 1)`, as Mitsuba 3 picks it: one of the emitters (the
-    /// emitting shapes, then the environment) uniformly, then, for a shape made of pieces,
-    /// one of its pieces by area, with what `u` has left. `None` when there is no light.
+    /// emitting shapes, then the environment) uniformly, or in proportion to their sampling
+    /// weights when a scene file gives them, then, for a shape made of pieces, one of its
+    /// pieces by area, with what `u` has left. `None` when there is no light.
     ///
     /// Picking among the pieces themselves would give a mesh of a thousand triangles a
     /// thousand times the samples of a sphere beside it, and its small triangles as many as
@@ -208,16 +226,36 @@ impl<'a> SceneLights<'a> {
         if n == 0 {
             return None;
         }
-        let scaled = u * n as f32;
-        let k = (scaled as usize).min(n - 1);
+        let (k, rest) = self.pick_emitter(u, n);
         let Some(emitter) = self.emitters.get(k) else {
             return Some(LightRef::Environment);
         };
-        // What is left of `u` within the emitter's share, again uniform in [0, 1).
-        let rest = (scaled - k as f32).clamp(0.0, 1.0);
         let pieces = &self.area_cdf[emitter.clone()];
         let piece = pieces.partition_point(|&cdf| cdf <= rest);
         Some(LightRef::Area(emitter.start + piece.min(pieces.len() - 1)))
+    }
+
+    /// The emitter `u` picks among the `n` (the emitting shapes, then the environment, of
+    /// weight 1), and what is left of `u` within its share, again uniform in `[0, 1)`.
+    fn pick_emitter(&self, u: f32, n: usize) -> (usize, f32) {
+        if self.uniform_weights {
+            let scaled = u * n as f32;
+            let k = (scaled as usize).min(n - 1);
+            return (k, (scaled - k as f32).clamp(0.0, 1.0));
+        }
+        // The running sums of the shapes' weights, then the environment's 1.
+        let sums = self.emitter_weight_sum;
+        let shapes_weight = sums.last().copied().unwrap_or(0.0);
+        let target = u / self.pick_probability;
+        if target >= shapes_weight && n > sums.len() {
+            return (sums.len(), (target - shapes_weight).clamp(0.0, 1.0));
+        }
+        let k = sums
+            .partition_point(|&sum| sum <= target)
+            .min(sums.len() - 1);
+        let before = if k == 0 { 0.0 } else { sums[k - 1] };
+        let rest = (target - before) / (sums[k] - before);
+        (k, rest.clamp(0.0, 1.0))
     }
 
     /// The area light that world shape `shape` is, if any.
@@ -386,6 +424,11 @@ mod tests {
     /// A matte floor under two emitters: a lamp of two triangles (areas 3 and 1, as a mesh
     /// gives its pieces) and a small sphere, each one shape of the scene.
     fn mesh_and_sphere_world() -> MotionScene {
+        mesh_and_sphere_world_weighted(1.0)
+    }
+
+    /// [`mesh_and_sphere_world`] with the sphere's sampling weight `weight` (the lamp's is 1).
+    fn mesh_and_sphere_world_weighted(weight: f32) -> MotionScene {
         use common::geometry::{Parallelogram, Shape, Sphere, Triangle};
         use common::scene::{
             AreaEmitter, Camera, CameraFrame, FilmSettings, Material, SceneBuilder, Surface,
@@ -406,10 +449,16 @@ mod tests {
                 Material::diffuse(Vec3::splat(0.5)),
             )
             .shared_surface([Shape::Triangle(big), Shape::Triangle(small)], lamp)
-            .area_light(
+            .surface(
                 Shape::Sphere(Sphere::new(Vec3::new(2.0, 1.0, 0.0), 0.05)),
-                Material::diffuse(Vec3::ZERO),
-                Vec3::splat(100.0),
+                Surface {
+                    material: Material::diffuse(Vec3::ZERO),
+                    emitter: Some(AreaEmitter {
+                        sampling_weight: weight,
+                        ..AreaEmitter::uniform(Vec3::splat(100.0))
+                    }),
+                    origin: None,
+                },
             )
             .build(
                 Camera::pinhole(
@@ -451,6 +500,50 @@ mod tests {
                 expected[i]
             );
             assert!((lights.area_pick_probability(i) - expected[i]).abs() < 1e-6);
+        }
+    }
+
+    /// A scene file's `sampling_weight` makes an emitter picked in proportion to it, as in
+    /// Mitsuba 3: the sphere of weight 3 beside the lamp of weight 1 gets three quarters of
+    /// the samples, and every density says so.
+    #[test]
+    fn sampling_weights_share_the_picks_in_proportion() {
+        let world = mesh_and_sphere_world_weighted(3.0);
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        let n = 8000;
+        let mut picked = [0usize; 3];
+        for k in 0..n {
+            let u = (k as f32 + 0.5) / n as f32;
+            match lights.pick(u) {
+                Some(LightRef::Area(i)) => picked[i] += 1,
+                other => panic!("picked {other:?}"),
+            }
+        }
+        let expected = [3.0 / 16.0, 1.0 / 16.0, 0.75];
+        for i in 0..3 {
+            let share = picked[i] as f32 / n as f32;
+            assert!(
+                (share - expected[i]).abs() < 2e-3,
+                "light {i} picked {share}, expected {}",
+                expected[i]
+            );
+            assert!((lights.area_pick_probability(i) - expected[i]).abs() < 1e-6);
+        }
+        let receiver = world
+            .scene
+            .geometry
+            .intersect(&Ray::new(Vec3::new(0.3, 1.0, 0.4), -Vec3::Y))
+            .unwrap();
+        for i in 0..3 {
+            let sample = lights
+                .sample(LightRef::Area(i), &receiver, Vec2::new(0.3, 0.6))
+                .unwrap();
+            let ShadowTarget::Surface(point) = sample.target else {
+                panic!("an area light's sample has a point")
+            };
+            let pdf = lights.area_pdf(&lights.area[i], receiver.p, point.p, point.n);
+            assert!((pdf - sample.pdf).abs() <= 1e-4 * sample.pdf);
         }
     }
 
