@@ -21,6 +21,7 @@
 //! at cannot disagree.
 
 use std::f32::consts::PI;
+use std::ops::Range;
 
 use common::geometry::{Disc, Parallelogram, Shape, Sphere, Triangle};
 use common::scene::Scene;
@@ -135,6 +136,23 @@ pub struct AreaLights {
     /// For every light, the number of its shape: where its emitter (and a texture on its
     /// radiance, which chapter 08 reads) is found in the scene.
     pub shape_of_light: Vec<u32>,
+    /// The lights grouped by the shape of the scene they are pieces of (the shapes that share
+    /// one surface, such as a mesh's triangles or a cube's faces): Mitsuba 3's emitters, each
+    /// the range of its lights in [`lights`](Self::lights). Chapter 08 picks a light sample's
+    /// emitter among these, then the piece by its area, as Mitsuba does.
+    pub emitters: Vec<Range<usize>>,
+    /// For every light, the share of its emitter's area covered by the pieces up to and
+    /// including it: 1 for an emitter's last piece (and for a light in one piece).
+    pub area_cdf: Vec<f32>,
+    /// For every light, its share of its emitter's area: the chance that a pick by area among
+    /// the emitter's pieces chooses it.
+    pub area_share: Vec<f32>,
+    /// For every emitter, the sum of the sampling weights (Mitsuba 3's `sampling_weight`,
+    /// usually 1: how often chapter 08 picks an emitter, relative to the others) of the
+    /// emitters up to and including it.
+    pub emitter_weight_sum: Vec<f32>,
+    /// For every light, the sampling weight of its emitter.
+    pub weight_of_light: Vec<f32>,
 }
 
 /// The light shape of a world shape: every shape of `common` has a surface to sample.
@@ -161,12 +179,72 @@ impl AreaLights {
                 lights.push(AreaLight::new(light_shape(shape), emitter.radiance));
             }
         }
+        let emitters = emitters_of(scene, &shape_of_light);
+        let weight = |light: usize| {
+            let emitter = scene.surface(shape_of_light[light]).emitter;
+            emitter.map_or(1.0, |e| e.sampling_weight)
+        };
+        let emitter_weight_sum = emitters
+            .iter()
+            .scan(0.0, |sum, e| {
+                *sum += weight(e.start);
+                Some(*sum)
+            })
+            .collect();
+        let weight_of_light = (0..lights.len()).map(weight).collect();
+        let (mut area_share, mut area_cdf) = (Vec::new(), Vec::new());
+        for emitter in &emitters {
+            for (share, cdf) in area_shares(&lights[emitter.clone()]) {
+                area_share.push(share);
+                area_cdf.push(cdf);
+            }
+        }
         Self {
             lights,
             light_of_shape,
             shape_of_light,
+            emitters,
+            area_cdf,
+            area_share,
+            emitter_weight_sum,
+            weight_of_light,
         }
     }
+}
+
+/// The runs of consecutive lights whose shapes share one surface of `scene`: the pieces of one
+/// shape of a scene file (a scene builds each shape's pieces one after another).
+fn emitters_of(scene: &Scene, shape_of_light: &[u32]) -> Vec<Range<usize>> {
+    let surface = |light: usize| scene.surface_of_shape[shape_of_light[light] as usize];
+    let mut emitters: Vec<Range<usize>> = Vec::new();
+    for light in 0..shape_of_light.len() {
+        match emitters.last_mut() {
+            Some(run) if surface(run.start) == surface(light) => run.end = light + 1,
+            _ => emitters.push(light..light + 1),
+        }
+    }
+    emitters
+}
+
+/// Each of `pieces`' share of their total area, and the running sum of the shares up to and
+/// including it, which ends at exactly 1; pieces of no area at all share evenly.
+fn area_shares(pieces: &[AreaLight]) -> Vec<(f32, f32)> {
+    let areas: Vec<f64> = pieces.iter().map(|p| f64::from(p.area())).collect();
+    let total: f64 = areas.iter().sum();
+    let even = 1.0 / pieces.len() as f64;
+    let mut running = 0.0;
+    let mut shares: Vec<(f32, f32)> = areas
+        .iter()
+        .map(|area| {
+            let share = if total > 0.0 { area / total } else { even };
+            running += share;
+            (share as f32, running as f32)
+        })
+        .collect();
+    if let Some(last) = shares.last_mut() {
+        last.1 = 1.0;
+    }
+    shares
 }
 
 #[cfg(test)]

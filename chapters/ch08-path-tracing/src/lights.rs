@@ -12,6 +12,13 @@
 //! number, which keeps a path a path. (Sampling every one would make each bounce cost `N`
 //! shadow rays; picking by power would favour bright lights.)
 //!
+//! What is picked is an *emitter*: a glowing shape of the scene, whole. A mesh's triangles or
+//! a cube's faces are area lights of their own here, but together one emitter, picked with
+//! the chance `1/N` of any other, and then one of its pieces by area
+//! ([`SceneLights::pick`]), so that a point on it is uniform over the whole shape, as in
+//! Mitsuba 3. Picking among the pieces would give a lamp modelled as a thousand triangles a
+//! thousand times the samples of a small sphere beside it.
+//!
 //! Mitsuba 3's `path` integrator picks uniformly among *all* its emitters, point lights
 //! included. The expected image is the same; ours is less noisy where a scene has point
 //! lights, and a scene without area lights or environment pays for no pick and no light
@@ -39,6 +46,7 @@ use common::geometry::{Parallelogram, SurfaceHit};
 use common::scene::luminance;
 use common::scene::{AreaEmitter, DirectionalLight, GridDistribution, PointLight, Scene};
 use glam::{Vec2, Vec3};
+use std::ops::Range;
 
 /// One of the lights a light sample picks from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -92,6 +100,19 @@ pub struct SceneLights<'a> {
     pub light_of_shape: &'a [Option<u32>],
     /// For every area light, its shape.
     shape_of_light: &'a [u32],
+    /// The area lights grouped into the scene's emitting shapes (a mesh's triangles, a cube's
+    /// faces): a light sample picks one of these, then a piece of it by area.
+    emitters: &'a [Range<usize>],
+    /// For every area light, the running share of its emitter's area up to and including it.
+    area_cdf: &'a [f32],
+    /// For every area light, its share of its emitter's area.
+    area_share: &'a [f32],
+    /// For every emitting shape, the sum of the sampling weights up to and including it.
+    emitter_weight_sum: &'a [f32],
+    /// For every area light, its shape's sampling weight.
+    weight_of_light: &'a [f32],
+    /// Whether every sampling weight is 1, so that the pick is a plain uniform one.
+    uniform_weights: bool,
     /// The scene, for the textures of lights whose radiance varies.
     scene: &'a Scene,
     /// Point lights.
@@ -102,10 +123,12 @@ pub struct SceneLights<'a> {
     pub environment: EnvironmentLight<'a>,
     /// How area lights are sampled (chapter 07).
     pub sampling: LightSampling,
-    /// How many lights there are to pick from (area lights and the environment), counted
+    /// How many lights a light sample may end on (area lights and the environment), counted
     /// once: every bounce asks.
     count: usize,
-    /// `1 / count` (1 without such lights), computed once for the same reason.
+    /// The chance of picking an emitter of sampling weight 1 (an emitting shape, or the
+    /// environment): one over the sum of their weights, which is their number unless a scene
+    /// file gives weights (1 without any emitter), computed once for the same reason.
     pick_probability: f32,
 }
 
@@ -121,6 +144,12 @@ impl<'a> SceneLights<'a> {
             area: &area_lights.lights,
             light_of_shape: &area_lights.light_of_shape,
             shape_of_light: &area_lights.shape_of_light,
+            emitters: &area_lights.emitters,
+            area_cdf: &area_lights.area_cdf,
+            area_share: &area_lights.area_share,
+            emitter_weight_sum: &area_lights.emitter_weight_sum,
+            weight_of_light: &area_lights.weight_of_light,
+            uniform_weights: area_lights.weight_of_light.iter().all(|&w| w == 1.0),
             scene,
             points: &scene.point_lights,
             directionals: &scene.directional_lights,
@@ -129,13 +158,21 @@ impl<'a> SceneLights<'a> {
             count: 0,
             pick_probability: 1.0,
         };
-        lights.count = lights.area.len() + usize::from(lights.has_environment());
-        lights.pick_probability = 1.0 / lights.count.max(1) as f32;
+        let environment = usize::from(lights.has_environment());
+        lights.count = lights.area.len() + environment;
+        let shapes_weight = lights.emitter_weight_sum.last().copied().unwrap_or(0.0);
+        let total_weight = shapes_weight + environment as f32;
+        lights.pick_probability = if total_weight > 0.0 {
+            1.0 / total_weight
+        } else {
+            1.0
+        };
         lights
     }
 
-    /// How many lights there are to pick from: the area lights and the environment (point
-    /// lights are not picked, see the module's introduction).
+    /// How many lights a light sample may end on: the area lights and the environment (point
+    /// lights are not picked, see the module's introduction). With more than one, the pick
+    /// draws a number.
     pub fn count(&self) -> usize {
         self.count
     }
@@ -163,24 +200,62 @@ impl<'a> SceneLights<'a> {
         !self.environment.is_black()
     }
 
-    /// The chance of picking any one of the lights a light sample picks from.
+    /// The chance of picking an emitter of sampling weight 1: an emitting shape of the scene
+    /// (all the pieces of a mesh together) or the environment. Without weights in the scene
+    /// file, every emitter's chance.
     pub fn pick_probability(&self) -> f32 {
         self.pick_probability
     }
 
-    /// The light picked by `u` in `[0, 1)` among the area lights and the environment: area
-    /// lights first, then the environment. `None` when there is none of them.
+    /// The chance that [`pick`](Self::pick) chooses area light `i`: its emitter's chance (its
+    /// sampling weight over all of theirs) times its share of the emitter's area.
+    pub fn area_pick_probability(&self, i: usize) -> f32 {
+        self.pick_probability * self.weight_of_light[i] * self.area_share[i]
+    }
+
+    /// The light picked by `u` in `[0, 1)`, as Mitsuba 3 picks it: one of the emitters (the
+    /// emitting shapes, then the environment) uniformly, or in proportion to their sampling
+    /// weights when a scene file gives them, then, for a shape made of pieces, one of its
+    /// pieces by area, with what `u` has left. `None` when there is no light.
+    ///
+    /// Picking among the pieces themselves would give a mesh of a thousand triangles a
+    /// thousand times the samples of a sphere beside it, and its small triangles as many as
+    /// its large ones: the same mean, but the lights that matter go unsampled.
     pub fn pick(&self, u: f32) -> Option<LightRef> {
-        let n = self.count();
+        let n = self.emitters.len() + usize::from(self.has_environment());
         if n == 0 {
             return None;
         }
-        let i = ((u * n as f32) as usize).min(n - 1);
-        Some(if i < self.area.len() {
-            LightRef::Area(i)
-        } else {
-            LightRef::Environment
-        })
+        let (k, rest) = self.pick_emitter(u, n);
+        let Some(emitter) = self.emitters.get(k) else {
+            return Some(LightRef::Environment);
+        };
+        let pieces = &self.area_cdf[emitter.clone()];
+        let piece = pieces.partition_point(|&cdf| cdf <= rest);
+        Some(LightRef::Area(emitter.start + piece.min(pieces.len() - 1)))
+    }
+
+    /// The emitter `u` picks among the `n` (the emitting shapes, then the environment, of
+    /// weight 1), and what is left of `u` within its share, again uniform in `[0, 1)`.
+    fn pick_emitter(&self, u: f32, n: usize) -> (usize, f32) {
+        if self.uniform_weights {
+            let scaled = u * n as f32;
+            let k = (scaled as usize).min(n - 1);
+            return (k, (scaled - k as f32).clamp(0.0, 1.0));
+        }
+        // The running sums of the shapes' weights, then the environment's 1.
+        let sums = self.emitter_weight_sum;
+        let shapes_weight = sums.last().copied().unwrap_or(0.0);
+        let target = u / self.pick_probability;
+        if target >= shapes_weight && n > sums.len() {
+            return (sums.len(), (target - shapes_weight).clamp(0.0, 1.0));
+        }
+        let k = sums
+            .partition_point(|&sum| sum <= target)
+            .min(sums.len() - 1);
+        let before = if k == 0 { 0.0 } else { sums[k - 1] };
+        let rest = (target - before) / (sums[k] - before);
+        (k, rest.clamp(0.0, 1.0))
     }
 
     /// The area light that world shape `shape` is, if any.
@@ -240,7 +315,7 @@ impl<'a> SceneLights<'a> {
         let x = receiver.p;
         let found = match light {
             LightRef::Area(i) => {
-                let pick = self.pick_probability();
+                let pick = self.area_pick_probability(i);
                 let light = &self.area[i];
                 let shape = self.shape_of_light[i];
                 let sample = match self.textured_panel(light, shape) {
@@ -286,14 +361,14 @@ impl<'a> SceneLights<'a> {
     /// that hit the light needs for its MIS weight.
     pub fn area_pdf(&self, light: &AreaLight, x: Vec3, y: Vec3, n_y: Vec3) -> f32 {
         let to_light = y - x;
-        if let Some((quad, grid)) = self
-            .index_of(light)
-            .and_then(|i| self.textured_panel(light, self.shape_of_light[i]))
+        let index = self.index_of(light);
+        let pick = index.map_or(self.pick_probability(), |i| self.area_pick_probability(i));
+        if let Some((quad, grid)) =
+            index.and_then(|i| self.textured_panel(light, self.shape_of_light[i]))
         {
             let d2 = to_light.length_squared();
             let density = grid.density(quad.uv_of(y)) / quad.area();
-            return self.pick_probability()
-                * pdf_area_to_solid_angle(density, d2, n_y.dot(to_light / d2.sqrt()));
+            return pick * pdf_area_to_solid_angle(density, d2, n_y.dot(to_light / d2.sqrt()));
         }
         let pdf = match (light.shape, self.sampling.strategy) {
             (LightShape::Sphere(sphere), Strategy::SolidAngle) => {
@@ -305,7 +380,7 @@ impl<'a> SceneLights<'a> {
             let d2 = to_light.length_squared();
             pdf_area_to_solid_angle(light.shape.pdf_area(), d2, n_y.dot(to_light / d2.sqrt()))
         });
-        self.pick_probability() * pdf
+        pick * pdf
     }
 
     /// The parallelogram of `light` (shape number `shape`) and the density over its `uv` its
@@ -345,6 +420,240 @@ mod tests {
     use super::*;
     use ch07_soft_shadows::LightSampling;
     use workbench::scene_file::parse_scene;
+
+    /// A matte floor under two emitters: a lamp of two triangles (areas 3 and 1, as a mesh
+    /// gives its pieces) and a small sphere, each one shape of the scene.
+    fn mesh_and_sphere_world() -> MotionScene {
+        mesh_and_sphere_world_weighted(1.0)
+    }
+
+    /// [`mesh_and_sphere_world`] with the sphere's sampling weight `weight` (the lamp's is 1).
+    fn mesh_and_sphere_world_weighted(weight: f32) -> MotionScene {
+        use common::geometry::{Parallelogram, Shape, Sphere, Triangle};
+        use common::scene::{
+            AreaEmitter, Camera, CameraFrame, FilmSettings, Material, SceneBuilder, Surface,
+        };
+        let floor = Parallelogram::new(Vec3::new(-5.0, 0.0, -5.0), 10.0 * Vec3::Z, 10.0 * Vec3::X);
+        // Facing down: (p1 - p0) × (p2 - p0) is -y.
+        let (a, b) = (Vec3::new(-1.0, 2.0, 0.0), Vec3::new(1.0, 2.0, 0.0));
+        let big = Triangle::new(a, b, Vec3::new(0.0, 2.0, 3.0));
+        let small = Triangle::new(a, b, Vec3::new(0.0, 2.0, 1.0));
+        let lamp = Surface {
+            material: Material::diffuse(Vec3::ZERO),
+            emitter: Some(AreaEmitter::uniform(Vec3::splat(2.0))),
+            origin: None,
+        };
+        let scene = SceneBuilder::new()
+            .shape(
+                Shape::Parallelogram(floor),
+                Material::diffuse(Vec3::splat(0.5)),
+            )
+            .shared_surface([Shape::Triangle(big), Shape::Triangle(small)], lamp)
+            .surface(
+                Shape::Sphere(Sphere::new(Vec3::new(2.0, 1.0, 0.0), 0.05)),
+                Surface {
+                    material: Material::diffuse(Vec3::ZERO),
+                    emitter: Some(AreaEmitter {
+                        sampling_weight: weight,
+                        ..AreaEmitter::uniform(Vec3::splat(100.0))
+                    }),
+                    origin: None,
+                },
+            )
+            .build(
+                Camera::pinhole(
+                    CameraFrame::look_at(Vec3::new(0.0, 1.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap(),
+                    40.0,
+                ),
+                FilmSettings::new(8, 8),
+                2,
+            );
+        MotionScene::still(scene)
+    }
+
+    /// A light sample picks an emitting shape as Mitsuba 3 does, each with the same chance
+    /// however many pieces it is made of, and then a piece of it by area: the lamp's two
+    /// triangles together get half the samples (3/8 and 1/8), the sphere the other half. Picked
+    /// among the pieces, the sphere would get a third.
+    #[test]
+    fn a_light_sample_picks_emitting_shapes_evenly_and_their_pieces_by_area() {
+        let world = mesh_and_sphere_world();
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        assert_eq!(lights.area.len(), 3, "two triangles and a sphere");
+        assert_eq!(lights.count(), 3, "a sample may end on any of the three");
+        let n = 8000;
+        let mut picked = [0usize; 3];
+        for k in 0..n {
+            let u = (k as f32 + 0.5) / n as f32;
+            match lights.pick(u) {
+                Some(LightRef::Area(i)) => picked[i] += 1,
+                other => panic!("picked {other:?}"),
+            }
+        }
+        let expected = [3.0 / 8.0, 1.0 / 8.0, 0.5];
+        for i in 0..3 {
+            let share = picked[i] as f32 / n as f32;
+            assert!(
+                (share - expected[i]).abs() < 2e-3,
+                "light {i} picked {share}, expected {}",
+                expected[i]
+            );
+            assert!((lights.area_pick_probability(i) - expected[i]).abs() < 1e-6);
+        }
+    }
+
+    /// A scene file's `sampling_weight` makes an emitter picked in proportion to it, as in
+    /// Mitsuba 3: the sphere of weight 3 beside the lamp of weight 1 gets three quarters of
+    /// the samples, and every density says so.
+    #[test]
+    fn sampling_weights_share_the_picks_in_proportion() {
+        let world = mesh_and_sphere_world_weighted(3.0);
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        let n = 8000;
+        let mut picked = [0usize; 3];
+        for k in 0..n {
+            let u = (k as f32 + 0.5) / n as f32;
+            match lights.pick(u) {
+                Some(LightRef::Area(i)) => picked[i] += 1,
+                other => panic!("picked {other:?}"),
+            }
+        }
+        let expected = [3.0 / 16.0, 1.0 / 16.0, 0.75];
+        for i in 0..3 {
+            let share = picked[i] as f32 / n as f32;
+            assert!(
+                (share - expected[i]).abs() < 2e-3,
+                "light {i} picked {share}, expected {}",
+                expected[i]
+            );
+            assert!((lights.area_pick_probability(i) - expected[i]).abs() < 1e-6);
+        }
+        let receiver = world
+            .scene
+            .geometry
+            .intersect(&Ray::new(Vec3::new(0.3, 1.0, 0.4), -Vec3::Y))
+            .unwrap();
+        for i in 0..3 {
+            let sample = lights
+                .sample(LightRef::Area(i), &receiver, Vec2::new(0.3, 0.6))
+                .unwrap();
+            let ShadowTarget::Surface(point) = sample.target else {
+                panic!("an area light's sample has a point")
+            };
+            let pdf = lights.area_pdf(&lights.area[i], receiver.p, point.p, point.n);
+            assert!((pdf - sample.pdf).abs() <= 1e-4 * sample.pdf);
+        }
+    }
+
+    /// The density a light sample reports for a point of a piece is the one `area_pdf` gives
+    /// for the same point (which MIS needs), and for a shape of pieces it is uniform over the
+    /// whole shape's area: the pick by area times the piece's own `1 / area`.
+    #[test]
+    fn a_piece_of_an_emitting_shape_has_the_density_of_the_whole_shape() {
+        let world = mesh_and_sphere_world();
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        let receiver = world
+            .scene
+            .geometry
+            .intersect(&Ray::new(Vec3::new(0.3, 1.0, 0.4), -Vec3::Y))
+            .unwrap();
+        let whole_area = lights.area[0].area() + lights.area[1].area();
+        for i in 0..2 {
+            for k in 0..16 {
+                let u = Vec2::new((k % 4) as f32 + 0.5, (k / 4) as f32 + 0.5) / 4.0;
+                let sample = lights.sample(LightRef::Area(i), &receiver, u).unwrap();
+                let ShadowTarget::Surface(point) = sample.target else {
+                    panic!("an area light's sample has a point")
+                };
+                let pdf = lights.area_pdf(&lights.area[i], receiver.p, point.p, point.n);
+                assert!((pdf - sample.pdf).abs() <= 1e-4 * sample.pdf);
+                let to_light = point.p - receiver.p;
+                let d2 = to_light.length_squared();
+                let uniform = 0.5 / whole_area * d2 / point.n.dot(to_light).abs() * d2.sqrt();
+                assert!(
+                    (sample.pdf - uniform).abs() <= 1e-4 * uniform,
+                    "piece {i}: density {} per steradian, uniform over the shape is {uniform}",
+                    sample.pdf
+                );
+            }
+        }
+    }
+
+    /// A tiny, very bright sphere light straight above a floor point, seen from the point
+    /// under the angle `R / d`: the light samples' mean of `L cos θ / p` is the irradiance
+    /// `π L (R / d)²`, and `area_pdf` gives each sample's own density. With `1 - cos θ_max`
+    /// computed as `1 - sqrt(1 - s²)` in `f32` (Mitsuba 3.9.1's sphere does so for its
+    /// density), the density is off by the rounding of `cos θ_max` to the floats near 1:
+    /// +7 % at `R / d = 6.7·10⁻⁴`, and no light at all below about `2.4·10⁻⁴`.
+    #[test]
+    fn a_tiny_sphere_light_gives_its_irradiance_to_the_last_digits() {
+        use common::geometry::{Parallelogram, Shape, Sphere};
+        use common::sampler::{IndependentSampler, Sampler};
+        use common::scene::{Camera, CameraFrame, FilmSettings, Material, SceneBuilder};
+        for (radius, d) in [(0.01f32, 15.0f32), (1e-3, 15.0), (1e-4, 15.0)] {
+            let floor =
+                Parallelogram::new(Vec3::new(-5.0, 0.0, -5.0), 10.0 * Vec3::Z, 10.0 * Vec3::X);
+            let scene = SceneBuilder::new()
+                .shape(Shape::Parallelogram(floor), Material::diffuse(Vec3::ONE))
+                .area_light(
+                    Shape::Sphere(Sphere::new(Vec3::new(0.0, d, 0.0), radius)),
+                    Material::diffuse(Vec3::ZERO),
+                    Vec3::ONE,
+                )
+                .build(
+                    Camera::pinhole(
+                        CameraFrame::look_at(Vec3::new(0.0, 1.0, 4.0), Vec3::ZERO, Vec3::Y)
+                            .unwrap(),
+                        40.0,
+                    ),
+                    FilmSettings::new(8, 8),
+                    2,
+                );
+            let world = MotionScene::still(scene);
+            let area_lights = AreaLights::of(&world.scene);
+            let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+            let receiver = world
+                .scene
+                .geometry
+                .intersect(&Ray::new(Vec3::new(0.0, 1.0, 0.0), -Vec3::Y))
+                .unwrap();
+            let s = f64::from(radius) / f64::from(d);
+            let exact = std::f64::consts::PI * s * s;
+            let mut sampler = IndependentSampler::new(5);
+            let (n, mut sum) = (4000, 0.0f64);
+            for i in 0..n {
+                sampler.start_pixel_sample(glam::UVec2::ZERO, i);
+                let sample = lights
+                    .sample(LightRef::Area(0), &receiver, sampler.get_2d())
+                    .expect("the light is in view");
+                let ShadowTarget::Surface(point) = sample.target else {
+                    panic!("an area light's sample has a point")
+                };
+                let pdf = lights.area_pdf(&lights.area[0], receiver.p, point.p, point.n);
+                assert!(
+                    (pdf - sample.pdf).abs() <= 1e-3 * sample.pdf,
+                    "R/d = {s:e}: sampled with {} but area_pdf says {pdf}",
+                    sample.pdf
+                );
+                let cos = f64::from(sample.wi.y);
+                sum += f64::from(sample.radiance.y) * cos / f64::from(sample.pdf);
+            }
+            let mean = sum / n as f64;
+            assert!(
+                (mean / exact - 1.0).abs() < 1e-3,
+                "R/d = {s:e}: irradiance {mean:e}, exactly {exact:e}"
+            );
+            // The subtraction in f32 would be off by far more than the test allows (in f64 it
+            // keeps ten digits and more at these sizes).
+            let s2 = (radius / d).powi(2);
+            let in_f32 = 1.0 - (1.0 - s2).sqrt();
+            let in_f64 = 1.0 - (1.0 - s * s).sqrt();
+            assert!((f64::from(in_f32) / in_f64 - 1.0).abs() > 0.05);
+        }
+    }
 
     /// The chapter's scene with a textured panel light.
     fn textured_light_world() -> MotionScene {

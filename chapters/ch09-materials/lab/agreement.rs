@@ -78,6 +78,11 @@ pub const AGREEMENT: AgreementSet = AgreementSet {
             checks: "anisotropic roughness (alpha_u and alpha_v) brushed along each shape's dp/du as Mitsuba's shading frame takes it: a turned sphere along its parallels, a mesh along its texture's u (not its edges), a disk along its radii, a copper panel and a rough glass pane turned about their normals",
             variant: MITSUBA_VARIANT,
         },
+        AgreementScene {
+            name: "mesh-lamp",
+            checks: "emitters made of pieces: a lamp whose bulb is a mesh of 528 triangles of very different areas, in a shade of rough aluminium, and a small sphere light, path-traced to depth 3; a light sample picks each emitting shape with the same chance (not each triangle) and a triangle by its area, as Mitsuba does, and MIS weighs a BSDF ray that hits the bulb with that density",
+            variant: MITSUBA_VARIANT,
+        },
     ],
     render: render_scene_file,
 };

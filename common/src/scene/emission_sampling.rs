@@ -54,6 +54,7 @@ impl Scene {
         let Some(AreaEmitter {
             radiance,
             texture: Some(texture),
+            ..
         }) = self.surface(shape).emitter
         else {
             return None;

@@ -37,14 +37,19 @@ pub struct AreaEmitter {
     /// `uv` of the point ([`Scene::emitted_at`](super::Scene::emitted_at)); a scene file's
     /// `<texture name="radiance">`.
     pub texture: Option<Texture>,
+    /// How often a light sample picks this emitter, relative to the others (Mitsuba 3's
+    /// `sampling_weight`, 1 unless a scene file says otherwise). It changes the noise, never
+    /// the mean.
+    pub sampling_weight: f32,
 }
 
 impl AreaEmitter {
-    /// The same radiance `radiance` from every point.
+    /// The same radiance `radiance` from every point, with the usual sampling weight 1.
     pub fn uniform(radiance: Vec3) -> Self {
         Self {
             radiance,
             texture: None,
+            sampling_weight: 1.0,
         }
     }
 }

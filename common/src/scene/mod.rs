@@ -345,6 +345,7 @@ impl Scene {
             Some(AreaEmitter {
                 radiance,
                 texture: Some(texture),
+                ..
             }) => radiance * self.albedo(texture, uv),
             Some(AreaEmitter { radiance, .. }) => radiance,
             None => Vec3::ZERO,

@@ -21,6 +21,34 @@ pub(super) enum Emitter {
     Standalone(EmitterDescription),
 }
 
+impl Emitter {
+    /// The area emitter with the `sampling_weight` the element gives (Mitsuba 3 picks its
+    /// emitters in proportion to it; 1 without), which must be positive and finite.
+    fn with_sampling_weight(
+        self,
+        reader: &Reader,
+        node: &Element,
+        properties: &mut Properties,
+    ) -> Result<Self, SceneError> {
+        let Emitter::Area(mut area) = self else {
+            return Ok(self);
+        };
+        if let Some(weight) = properties.float(reader, "sampling_weight")? {
+            if !(weight > 0.0 && weight.is_finite()) {
+                let position = properties
+                    .position_of("sampling_weight")
+                    .unwrap_or(reader.position(node));
+                return Err(reader.error_at(
+                    position,
+                    format!("an emitter's sampling_weight must be positive, found {weight}"),
+                ));
+            }
+            area.sampling_weight = weight;
+        }
+        Ok(Emitter::Area(area))
+    }
+}
+
 /// Reads an `<emitter>` of type `area`, `point`, `constant` or `envmap`.
 pub(super) fn read_emitter<'a>(
     reader: &mut Reader<'a>,
@@ -65,9 +93,11 @@ pub(super) fn read_emitter<'a>(
                 AreaEmitter {
                     radiance: Vec3::ONE,
                     texture: Some(texture.texture),
+                    sampling_weight: 1.0,
                 }
             }
-        }),
+        })
+        .with_sampling_weight(reader, node, &mut properties)?,
         "constant" => Emitter::Standalone(EmitterDescription::Constant {
             radiance: emission(
                 reader,

@@ -30,3 +30,21 @@ fn the_workbooks_phong_is_a_glossy_lobe() {
     );
     assert_eq!(loaded.warnings, vec![]);
 }
+
+#[test]
+fn an_area_emitters_sampling_weight_is_read_and_must_be_positive() {
+    let text = scene_with(
+        "<shape type=\"sphere\"><emitter type=\"area\"><rgb name=\"radiance\" value=\"1\"/>\
+         <float name=\"sampling_weight\" value=\"3\"/></emitter></shape>",
+    );
+    let loaded = parse(&text).expect("loads");
+    assert_eq!(loaded.warnings, vec![]);
+    let emitter = loaded.scene.shapes[0].emitter.expect("an area light");
+    assert_eq!(emitter.sampling_weight, 3.0);
+    let text = scene_with(
+        "<shape type=\"sphere\"><emitter type=\"area\"><rgb name=\"radiance\" value=\"1\"/>\
+         <float name=\"sampling_weight\" value=\"-1\"/></emitter></shape>",
+    );
+    let error = parse(&text).expect_err("a negative weight is refused");
+    assert!(error.to_string().contains("sampling_weight"), "{error}");
+}
