@@ -222,17 +222,35 @@ impl<'a> SceneLights<'a> {
     /// thousand times the samples of a sphere beside it, and its small triangles as many as
     /// its large ones: the same mean, but the lights that matter go unsampled.
     pub fn pick(&self, u: f32) -> Option<LightRef> {
+        self.pick_with_rest(u).map(|(light, _)| light)
+    }
+
+    /// [`pick`](Self::pick), and what is left of `u` within the share of the light picked,
+    /// uniform in `[0, 1)` again: a light sample places its point with it, as Mitsuba 3 reuses
+    /// the first coordinate of its 2D sample, so that picking draws no number of its own and
+    /// a sampler that places its 2D draws (chapter 03) places the pick and the point together.
+    pub fn pick_with_rest(&self, u: f32) -> Option<(LightRef, f32)> {
         let n = self.emitters.len() + usize::from(self.has_environment());
         if n == 0 {
             return None;
         }
+        let below_one = |x: f32| x.clamp(0.0, 1.0 - f32::EPSILON / 2.0);
         let (k, rest) = self.pick_emitter(u, n);
         let Some(emitter) = self.emitters.get(k) else {
-            return Some(LightRef::Environment);
+            return Some((LightRef::Environment, below_one(rest)));
         };
         let pieces = &self.area_cdf[emitter.clone()];
-        let piece = pieces.partition_point(|&cdf| cdf <= rest);
-        Some(LightRef::Area(emitter.start + piece.min(pieces.len() - 1)))
+        let piece = pieces
+            .partition_point(|&cdf| cdf <= rest)
+            .min(pieces.len() - 1);
+        let before = if piece == 0 { 0.0 } else { pieces[piece - 1] };
+        let width = pieces[piece] - before;
+        let rest = if width > 0.0 {
+            (rest - before) / width
+        } else {
+            0.5
+        };
+        Some((LightRef::Area(emitter.start + piece), below_one(rest)))
     }
 
     /// The emitter `u` picks among the `n` (the emitting shapes, then the environment, of

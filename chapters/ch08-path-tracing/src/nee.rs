@@ -63,7 +63,7 @@ impl<M: Materials> PathTracer<'_, M> {
 
     // ANCHOR: nee_light_sample
     /// One light sample at the non-delta surface of `bsdf`, seen from `wo`: a light picked
-    /// uniformly among the area lights and the environment ([`SceneLights::pick`]), a
+    /// among the emitters and the environment ([`SceneLights::pick_with_rest`]), a
     /// direction to it ([`SceneLights::sample`]), its MIS-weighted contribution
     /// ([`mis_weighted_contribution`]), and the shadow ray at shutter time `time`.
     ///
@@ -73,8 +73,10 @@ impl<M: Materials> PathTracer<'_, M> {
     /// heuristic, where each strategy's density stands for all of its samples, and in the
     /// estimate, where one sample is one of several (the page asks how).
     ///
-    /// A scene pays only for what it has: with a single light to pick from, the pick draws no
-    /// number. What does the BSDF say about the sampled direction, for the term and for the
+    /// A scene pays only for what it has: the pick draws no number of its own, the first
+    /// coordinate of the 2D number that places the point picks the light first, as in
+    /// Mitsuba 3 (and a sampler that places its 2D draws places the two together). What does
+    /// the BSDF say about the sampled direction, for the term and for the
     /// weight? When is a shadow ray worth tracing? It must not be blocked by the light it aims
     /// at, which is itself a shape of the world.
     pub fn light_sample<S: Sampler>(
@@ -86,16 +88,16 @@ impl<M: Materials> PathTracer<'_, M> {
         sampler: &mut S,
     ) -> Vec3 {
         // BEGIN SOLUTION
-        // With one light to pick from there is nothing to choose: no number is drawn.
-        let u_pick = if self.lights.count() > 1 {
-            sampler.get_1d()
-        } else {
-            0.0
-        };
-        let Some(light) = self.lights.pick(u_pick) else {
+        // One 2D number: its first coordinate picks the light, and what is left of it, with
+        // the second, places the point on that light. Picking draws no number of its own.
+        let u = sampler.get_2d();
+        let Some((light, rest)) = self.lights.pick_with_rest(u.x) else {
             return Vec3::ZERO;
         };
-        let Some(sample) = self.lights.sample(light, bsdf.hit(), sampler.get_2d()) else {
+        let Some(sample) = self
+            .lights
+            .sample(light, bsdf.hit(), glam::Vec2::new(rest, u.y))
+        else {
             return Vec3::ZERO;
         };
         // Each density times its count: the weight is the multi-sample heuristic's, and
@@ -461,7 +463,7 @@ mod tests {
 
     #[test]
     fn exercise_nee_light_sample_draws_only_what_it_needs() {
-        // One light to pick from: nothing to choose, so only the point on it is drawn.
+        // One 2D number picks the light and places the point on it: two numbers.
         let (world, _) = sphere_light_scene(2);
         with_path_tracer(&world, PathOptions::with_depth(2), |tracer| {
             let eye = Vec3::new(2.0, 1.0, 0.0);
@@ -479,9 +481,10 @@ mod tests {
             tracer.light_sample(&bsdf, -ray.dir, 0.0, ONE_EACH, &mut sampler);
             assert!(
                 sampler.drawn() == 2,
-                "light_sample: with a single light to pick from, one light sample drew {} \
-                 numbers; the pick needs no number then (a scene pays only for what it has), \
-                 and the point on the light needs two",
+                "light_sample: one light sample drew {} numbers; the point on the light \
+                 needs two, and the pick needs no number of its own: it reads the first of \
+                 the two and leaves the rest of it to the point (a scene pays only for what it \
+                 has)",
                 sampler.drawn()
             );
         });
@@ -489,7 +492,7 @@ mod tests {
 
     #[test]
     fn exercise_nee_light_sample_picks_among_several_lights() {
-        // Two sphere lights of different size and radiance: the pick takes a number and each
+        // Two sphere lights of different size and radiance: the pick reads a number and each
         // light is found with its own share.
         use common::geometry::{Parallelogram, Shape, Sphere};
         use common::scene::{Camera, CameraFrame, FilmSettings, SceneBuilder};
@@ -536,8 +539,8 @@ mod tests {
             {
                 Some(i) => format!(
                     "that is twice light {}'s share and nothing of the other's: only one light \
-                     was ever picked (with several lights to pick from, the pick takes the \
-                     sampler's next number)",
+                     was ever picked (with several lights to pick from, the pick reads the \
+                     first coordinate of the light sample's 2D number)",
                     i + 1
                 ),
                 None => "each light is picked with its probability, and its sample's density \
