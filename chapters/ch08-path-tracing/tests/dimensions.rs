@@ -147,11 +147,12 @@ fn motion_adds_exactly_one() {
 }
 
 #[test]
-fn only_several_sampled_lights_draw_a_pick() {
+fn the_pick_among_several_lights_draws_no_number_of_its_own() {
     // The sky alone: pixel 2, a direction to the sky 2, the BSDF's 2 (the last segment may
-    // find the sky). With a lamp as well: the pick between the two, 1 more.
+    // find the sky). With a lamp as well, the same: the pick between the two reads the first
+    // number of the light sample's pair and leaves the rest of it to the point.
     assert_exactly(dimensions(&sky_scene(false), &Lens::PINHOLE, 2), 6);
-    assert_exactly(dimensions(&sky_scene(true), &Lens::PINHOLE, 2), 7);
+    assert_exactly(dimensions(&sky_scene(true), &Lens::PINHOLE, 2), 6);
 }
 
 #[test]

@@ -11,7 +11,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use roxmltree::Document;
+use roxmltree::{Document, ParsingOptions};
 
 use super::bounded_read::{SCENE_FILE_LIMIT, read_text};
 use super::error::{SceneError, TextPosition};
@@ -27,6 +27,19 @@ const MAX_INCLUDE_DEPTH: usize = 16;
 /// is built and walked recursively, so it is refused before it is built. With includes the
 /// whole tree nests at most `MAX_INCLUDE_DEPTH` times as deep.
 const MAX_NESTING: usize = 100;
+
+/// How many XML nodes (elements, and the text and comments between them) a scene may hold with
+/// all its includes. A scene of thousands of shapes holds some tens of thousands; without a
+/// bound, a file that includes another a thousand times, which includes a third a thousand
+/// times, and so on, would grow as the product of its fan-outs, each level under the size
+/// limit of one file. Each file is parsed with what is left of the bound, so parsing stops
+/// where it is reached, before the memory is taken.
+pub(super) const MAX_NODES: u32 = 4_000_000;
+
+/// How many files a scene may include in all (the same file counted each time it is
+/// included). A scene includes a few; reading a file takes a millisecond, so a file of a
+/// million includes of an empty file would take many minutes, within the bound on nodes.
+const MAX_INCLUDES: u32 = 10_000;
 
 /// One XML element with its attributes as written (`$name`s not yet substituted).
 #[derive(Clone, Debug)]
@@ -122,6 +135,8 @@ pub(super) fn read_tree(
         parameters: overrides.iter().cloned().collect(),
         search_folders: vec![folder_of(file)],
         include_chain: Vec::new(),
+        nodes_left: MAX_NODES,
+        includes_read: 0,
     };
     let root = builder.read_file(text, None)?;
     Ok(SceneTree {
@@ -173,6 +188,10 @@ struct TreeBuilder<'a> {
     search_folders: Vec<PathBuf>,
     /// The included files being read, outermost first, to refuse a file that includes itself.
     include_chain: Vec<PathBuf>,
+    /// How many more XML nodes the scene may hold ([`MAX_NODES`] at the start).
+    nodes_left: u32,
+    /// How many includes have been read ([`MAX_INCLUDES`] at most).
+    includes_read: u32,
 }
 
 impl TreeBuilder<'_> {
@@ -183,15 +202,29 @@ impl TreeBuilder<'_> {
         included: Option<&Arc<Path>>,
     ) -> Result<Element, SceneError> {
         let file_for_errors = included.map_or(self.scene_file, |path| path);
-        let document = Document::parse(text).map_err(|error| {
+        let options = ParsingOptions {
+            nodes_limit: self.nodes_left,
+            ..ParsingOptions::default()
+        };
+        let document = Document::parse_with_options(text, options).map_err(|error| {
             let position = error.pos();
+            let message = match error {
+                roxmltree::Error::NodesLimitReached => format!(
+                    "the scene holds more than {MAX_NODES} XML nodes (elements, text and \
+                     comments) with its includes when it gets here; the reader refuses larger \
+                     scenes"
+                ),
+                _ => format!("malformed XML: {error}"),
+            };
             SceneError {
                 file: file_for_errors.to_path_buf(),
                 line: position.row,
                 column: position.col,
-                message: format!("malformed XML: {error}"),
+                message,
             }
         })?;
+        let nodes = u32::try_from(document.descendants().count()).unwrap_or(u32::MAX);
+        self.nodes_left = self.nodes_left.saturating_sub(nodes);
         if let Some(node) = first_too_deep(document.root_element()) {
             let position = document.text_pos_at(node.range().start);
             return Err(SceneError {
@@ -262,12 +295,31 @@ impl TreeBuilder<'_> {
         let name = self.required(element, "filename")?;
         let folders = folders_for(&self.search_folders, self.folder_of_element(element));
         let path = resolve_file(&name, &folders);
-        if self.include_chain.len() >= MAX_INCLUDE_DEPTH || self.include_chain.contains(&path) {
+        if self.include_chain.contains(&path) {
             return Err(self.error(
                 element,
                 format!(
                     "the include of \"{name}\" makes a loop: {} is already being read",
                     path.display()
+                ),
+            ));
+        }
+        if self.includes_read >= MAX_INCLUDES {
+            return Err(self.error(
+                element,
+                format!(
+                    "the scene includes more than {MAX_INCLUDES} files in all (the same file \
+                     counted each time); the reader refuses more"
+                ),
+            ));
+        }
+        self.includes_read += 1;
+        if self.include_chain.len() >= MAX_INCLUDE_DEPTH {
+            return Err(self.error(
+                element,
+                format!(
+                    "the include of \"{name}\" would nest includes more than \
+                     {MAX_INCLUDE_DEPTH} files deep; the reader refuses deeper chains"
                 ),
             ));
         }

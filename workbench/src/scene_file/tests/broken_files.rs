@@ -323,3 +323,78 @@ fn a_device_named_as_a_mesh_or_an_include_is_refused_not_read() {
         assert_eq!(error.line, 2, "{body}: {error}");
     }
 }
+
+#[test]
+fn includes_that_multiply_are_refused_at_the_bound_on_nodes() {
+    // Each level includes the next 100 times: 100^4 copies of the last file's 10 000
+    // comments, every file far below the size limit. Read whole, that would be 10^12 nodes.
+    let directory = tempfile::tempdir().expect("temporary directory");
+    let write = |name: &str, body: String| {
+        std::fs::write(directory.path().join(name), body).expect("a level");
+    };
+    for level in 0..4 {
+        let include = format!("<include filename=\"level{}.xml\"/>", level + 1);
+        write(
+            &format!("level{level}.xml"),
+            format!("<scene version=\"3.0.0\">{}</scene>", include.repeat(100)),
+        );
+    }
+    write(
+        "level4.xml",
+        format!(
+            "<scene version=\"3.0.0\">{}</scene>",
+            "<!-- a -->".repeat(10_000)
+        ),
+    );
+    let path = directory.path().join("scene.xml");
+    std::fs::write(&path, scene_with("<include filename=\"level0.xml\"/>")).expect("the scene");
+    let error = load_scene_file(&path, &[]).expect_err("far too many nodes");
+    assert!(
+        error.message.contains("more than 4000000 XML nodes"),
+        "{error}"
+    );
+    assert!(error.file.starts_with(directory.path()), "{error}");
+    assert!(error.line >= 1, "{error}");
+}
+
+#[test]
+fn includes_nested_too_deep_are_refused_naming_the_limit() {
+    // A chain of 20 different files, each including the next: no loop, but too deep.
+    let directory = tempfile::tempdir().expect("temporary directory");
+    for level in 0..20 {
+        std::fs::write(
+            directory.path().join(format!("chain{level}.xml")),
+            format!(
+                "<scene version=\"3.0.0\">\n<include filename=\"chain{}.xml\"/></scene>",
+                level + 1
+            ),
+        )
+        .expect("a link");
+    }
+    std::fs::write(
+        directory.path().join("chain20.xml"),
+        "<scene version=\"3.0.0\"/>",
+    )
+    .expect("the end");
+    let path = directory.path().join("scene.xml");
+    std::fs::write(&path, scene_with("<include filename=\"chain0.xml\"/>")).expect("the scene");
+    let error = load_scene_file(&path, &[]).expect_err("too deep");
+    assert!(error.message.contains("more than 16 files deep"), "{error}");
+    assert_eq!(error.line, 2, "{error}");
+}
+
+#[test]
+fn a_scene_of_too_many_includes_is_refused_naming_the_limit() {
+    let directory = tempfile::tempdir().expect("temporary directory");
+    std::fs::write(
+        directory.path().join("empty.xml"),
+        "<scene version=\"3.0.0\"/>",
+    )
+    .expect("the empty file");
+    let path = directory.path().join("scene.xml");
+    let includes = "<include filename=\"empty.xml\"/>".repeat(10_001);
+    std::fs::write(&path, scene_with(&includes)).expect("the scene");
+    let error = load_scene_file(&path, &[]).expect_err("too many includes");
+    assert!(error.message.contains("more than 10000 files"), "{error}");
+    assert_eq!(error.line, 2, "{error}");
+}
