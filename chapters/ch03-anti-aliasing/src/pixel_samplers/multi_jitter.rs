@@ -11,10 +11,9 @@
 //! properties and spreads the points more evenly still.
 
 use super::ONE_MINUS_EPSILON;
-use super::dimension_keys::DimensionKeys;
 use super::permutation::permutation_element;
-use super::stratified::{jittered, shuffled_stratum, strata_grid};
-use common::sampler::{IndependentSampler, Sampler};
+use super::stratified::{Strata, shuffled_stratum};
+use common::sampler::Sampler;
 use glam::{UVec2, Vec2};
 
 // ANCHOR: multi_jittered
@@ -37,67 +36,47 @@ pub fn multi_jittered(cell: u32, columns: u32, rows: u32, key: u32, xi: Vec2) ->
 
 /// Multi-jittered samples for a fixed number of samples per pixel, in every dimension (Mitsuba
 /// 3's `multijitter`): the pixel position and every 2D draw multi-jittered on the grid of
-/// [`strata_grid`], every 1D draw stratified into `spp` intervals, each dimension with its own
+/// [`strata_grid`](super::strata_grid), every 1D draw stratified into `spp` intervals, each dimension with its own
 /// order of cells and its own permutations.
 #[derive(Clone, Debug)]
 pub struct MultiJitterSampler {
-    columns: u32,
-    rows: u32,
-    index: u64,
-    keys: DimensionKeys,
-    numbers: IndependentSampler,
+    strata: Strata,
 }
 
 impl MultiJitterSampler {
-    /// The grid for `spp` samples per pixel; see [`strata_grid`]. At most `u32::MAX` samples.
+    /// The grid for `spp` samples per pixel; see [`strata_grid`](super::strata_grid). At most `u32::MAX` samples.
     pub fn new(spp: u64, seed: u64) -> Result<Self, String> {
-        let (columns, rows) = strata_grid(spp)
-            .filter(|_| spp <= u64::from(u32::MAX))
-            .ok_or_else(|| {
-                format!("multi-jittered sampling cannot lay out {spp} samples per pixel")
-            })?;
-        Ok(Self {
-            columns,
-            rows,
-            index: 0,
-            keys: DimensionKeys::new(seed),
-            numbers: IndependentSampler::new(seed),
-        })
+        Strata::new(spp, seed, "multi-jittered sampling").map(|strata| Self { strata })
     }
 
     /// The grid, `(columns, rows)`.
     pub fn grid(&self) -> (u32, u32) {
-        (self.columns, self.rows)
-    }
-
-    fn strata(&self) -> u32 {
-        self.columns * self.rows
+        (self.strata.columns, self.strata.rows)
     }
 }
 
 impl Sampler for MultiJitterSampler {
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
-        self.index = sample_index;
-        self.keys.start(pixel);
-        self.numbers.start_pixel_sample(pixel, sample_index);
+        self.strata.start(pixel, sample_index);
     }
 
     /// Cell `i mod spp` for sample `i`, as the stratified sampler's, multi-jittered.
     fn get_pixel_2d(&mut self) -> Vec2 {
-        let cell = (self.index % u64::from(self.strata())) as u32;
-        let key = self.keys.next_key();
-        multi_jittered(cell, self.columns, self.rows, key, self.numbers.get_2d())
+        let s = &mut self.strata;
+        let cell = (s.index % u64::from(s.count())) as u32;
+        let key = s.keys.next_key();
+        multi_jittered(cell, s.columns, s.rows, key, s.numbers.get_2d())
     }
 
+    /// As the stratified sampler's: one of `spp` equal intervals.
     fn get_1d(&mut self) -> f32 {
-        let stratum = shuffled_stratum(self.index, self.strata(), self.keys.next_key());
-        let xi = Vec2::new(self.numbers.get_1d(), 0.0);
-        jittered(u64::from(stratum), self.strata(), 1, xi).x
+        self.strata.next_1d()
     }
 
     fn get_2d(&mut self) -> Vec2 {
-        let key = self.keys.next_key();
-        let cell = shuffled_stratum(self.index, self.strata(), key);
-        multi_jittered(cell, self.columns, self.rows, key, self.numbers.get_2d())
+        let s = &mut self.strata;
+        let key = s.keys.next_key();
+        let cell = shuffled_stratum(s.index, s.count(), key);
+        multi_jittered(cell, s.columns, s.rows, key, s.numbers.get_2d())
     }
 }

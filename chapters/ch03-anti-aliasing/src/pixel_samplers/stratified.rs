@@ -80,30 +80,30 @@ pub fn shuffled_stratum(sample_index: u64, strata: u32, key: u32) -> u32 {
 }
 // ANCHOR_END: shuffled_stratum
 
-/// Jittered samples for a fixed number of samples per pixel, in every dimension.
-///
-/// The pixel position of sample `i` goes into cell `i mod spp` of the pixel's grid. Every
-/// further dimension is stratified too: a 1D draw into one of `spp` equal intervals, a 2D draw
-/// into one cell of the same grid, each dimension dealing out its strata in an order of its
-/// own ([`shuffled_stratum`]). Where in its stratum a number lands comes from the sample's
-/// own stream, as in Mitsuba 3's `stratified` sampler.
+/// The strata a sampler lays out for the samples of a pixel, and where the current sample is
+/// among them: the grid of `spp` cells, the sample's index, the keys of its dimensions, and
+/// its own stream for the jitter. The stratified and the multi-jittered samplers share it.
 #[derive(Clone, Debug)]
-pub struct StratifiedSampler {
-    columns: u32,
-    rows: u32,
-    index: u64,
-    keys: DimensionKeys,
-    numbers: IndependentSampler,
+pub(super) struct Strata {
+    /// The grid's columns.
+    pub(super) columns: u32,
+    /// The grid's rows.
+    pub(super) rows: u32,
+    /// The current sample's index.
+    pub(super) index: u64,
+    /// The keys of the current sample's dimensions.
+    pub(super) keys: DimensionKeys,
+    /// The current sample's own numbers.
+    pub(super) numbers: IndependentSampler,
 }
 
-impl StratifiedSampler {
-    /// Strata for `spp` samples per pixel; see [`strata_grid`]. At most `u32::MAX` strata.
-    pub fn new(spp: u64, seed: u64) -> Result<Self, String> {
+impl Strata {
+    /// The grid of [`strata_grid`] for `spp` samples per pixel (at most `u32::MAX`); `what`
+    /// names the sampler in the error.
+    pub(super) fn new(spp: u64, seed: u64, what: &str) -> Result<Self, String> {
         let (columns, rows) = strata_grid(spp)
             .filter(|_| spp <= u64::from(u32::MAX))
-            .ok_or_else(|| {
-                format!("stratified sampling cannot lay out {spp} samples per pixel as a grid")
-            })?;
+            .ok_or_else(|| format!("{what} cannot lay out {spp} samples per pixel as a grid"))?;
         Ok(Self {
             columns,
             rows,
@@ -113,40 +113,72 @@ impl StratifiedSampler {
         })
     }
 
-    /// The grid, `(columns, rows)`.
-    pub fn grid(&self) -> (u32, u32) {
-        (self.columns, self.rows)
+    /// How many strata: the samples per pixel.
+    pub(super) fn count(&self) -> u32 {
+        self.columns * self.rows
     }
 
-    fn strata(&self) -> u32 {
-        self.columns * self.rows
+    /// Starts sample `sample_index` of `pixel`.
+    pub(super) fn start(&mut self, pixel: UVec2, sample_index: u64) {
+        self.index = sample_index;
+        self.keys.start(pixel);
+        self.numbers.start_pixel_sample(pixel, sample_index);
+    }
+
+    // ANCHOR: strata_next_1d
+    /// A 1D dimension: one of `spp` equal intervals, a grid of `spp` columns and one row.
+    pub(super) fn next_1d(&mut self) -> f32 {
+        let stratum = shuffled_stratum(self.index, self.count(), self.keys.next_key());
+        let xi = Vec2::new(self.numbers.get_1d(), 0.0);
+        jittered(u64::from(stratum), self.count(), 1, xi).x
+    }
+    // ANCHOR_END: strata_next_1d
+}
+
+/// Jittered samples for a fixed number of samples per pixel, in every dimension.
+///
+/// The pixel position of sample `i` goes into cell `i mod spp` of the pixel's grid. Every
+/// further dimension is stratified too: a 1D draw into one of `spp` equal intervals, a 2D draw
+/// into one cell of the same grid, each dimension dealing out its strata in an order of its
+/// own ([`shuffled_stratum`]). Where in its stratum a number lands comes from the sample's
+/// own stream, as in Mitsuba 3's `stratified` sampler.
+#[derive(Clone, Debug)]
+pub struct StratifiedSampler {
+    strata: Strata,
+}
+
+impl StratifiedSampler {
+    /// Strata for `spp` samples per pixel; see [`strata_grid`]. At most `u32::MAX` strata.
+    pub fn new(spp: u64, seed: u64) -> Result<Self, String> {
+        Strata::new(spp, seed, "stratified sampling").map(|strata| Self { strata })
+    }
+
+    /// The grid, `(columns, rows)`.
+    pub fn grid(&self) -> (u32, u32) {
+        (self.strata.columns, self.strata.rows)
     }
 }
 
 // ANCHOR: stratified_every_dimension
 impl Sampler for StratifiedSampler {
     fn start_pixel_sample(&mut self, pixel: UVec2, sample_index: u64) {
-        self.index = sample_index;
-        self.keys.start(pixel);
-        self.numbers.start_pixel_sample(pixel, sample_index);
+        self.strata.start(pixel, sample_index);
     }
 
     fn get_pixel_2d(&mut self) -> Vec2 {
-        let xi = self.numbers.get_2d();
-        jittered(self.index, self.columns, self.rows, xi)
+        let s = &mut self.strata;
+        jittered(s.index, s.columns, s.rows, s.numbers.get_2d())
     }
 
-    /// One of `spp` equal intervals: a grid of `spp` columns and one row.
+    /// One of `spp` equal intervals, in the dimension's own order (`Strata::next_1d`).
     fn get_1d(&mut self) -> f32 {
-        let stratum = shuffled_stratum(self.index, self.strata(), self.keys.next_key());
-        let xi = Vec2::new(self.numbers.get_1d(), 0.0);
-        jittered(u64::from(stratum), self.strata(), 1, xi).x
+        self.strata.next_1d()
     }
 
     fn get_2d(&mut self) -> Vec2 {
-        let cell = shuffled_stratum(self.index, self.strata(), self.keys.next_key());
-        let xi = self.numbers.get_2d();
-        jittered(u64::from(cell), self.columns, self.rows, xi)
+        let s = &mut self.strata;
+        let cell = shuffled_stratum(s.index, s.count(), s.keys.next_key());
+        jittered(u64::from(cell), s.columns, s.rows, s.numbers.get_2d())
     }
 }
 // ANCHOR_END: stratified_every_dimension
