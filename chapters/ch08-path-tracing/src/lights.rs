@@ -489,17 +489,9 @@ mod tests {
         MotionScene::still(scene)
     }
 
-    /// A light sample picks an emitting shape as Mitsuba 3 does, each with the same chance
-    /// however many pieces it is made of, and then a piece of it by area: the lamp's two
-    /// triangles together get half the samples (3/8 and 1/8), the sphere the other half. Picked
-    /// among the pieces, the sphere would get a third.
-    #[test]
-    fn a_light_sample_picks_emitting_shapes_evenly_and_their_pieces_by_area() {
-        let world = mesh_and_sphere_world();
-        let area_lights = AreaLights::of(&world.scene);
-        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
-        assert_eq!(lights.area.len(), 3, "two triangles and a sphere");
-        assert_eq!(lights.count(), 3, "a sample may end on any of the three");
+    /// Picks with 8000 evenly spread numbers and checks that area light `i` gets the share
+    /// `expected[i]` of them, and that its pick probability says so.
+    fn assert_pick_shares(lights: &SceneLights, expected: [f32; 3]) {
         let n = 8000;
         let mut picked = [0usize; 3];
         for k in 0..n {
@@ -509,7 +501,6 @@ mod tests {
                 other => panic!("picked {other:?}"),
             }
         }
-        let expected = [3.0 / 8.0, 1.0 / 8.0, 0.5];
         for i in 0..3 {
             let share = picked[i] as f32 / n as f32;
             assert!(
@@ -521,6 +512,21 @@ mod tests {
         }
     }
 
+    /// A light sample picks an emitting shape as Mitsuba 3 does, each with the same chance
+    /// however many pieces it is made of, and then a piece of it by area: the lamp's two
+    /// triangles together get half the samples (3/8 and 1/8), the sphere the other half. Picked
+    /// among the pieces, the sphere would get a third.
+    #[test]
+    fn a_light_sample_picks_emitting_shapes_evenly_and_their_pieces_by_area() {
+        let world = mesh_and_sphere_world();
+        let area_lights = AreaLights::of(&world.scene);
+        let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
+        assert_eq!(lights.area.len(), 3, "two triangles and a sphere");
+        assert_eq!(lights.count(), 3, "a sample may end on any of the three");
+        let expected = [3.0 / 8.0, 1.0 / 8.0, 0.5];
+        assert_pick_shares(&lights, expected);
+    }
+
     /// A scene file's `sampling_weight` makes an emitter picked in proportion to it, as in
     /// Mitsuba 3: the sphere of weight 3 beside the lamp of weight 1 gets three quarters of
     /// the samples, and every density says so.
@@ -529,25 +535,8 @@ mod tests {
         let world = mesh_and_sphere_world_weighted(3.0);
         let area_lights = AreaLights::of(&world.scene);
         let lights = SceneLights::of(&world, &area_lights, LightSampling::solid_angle());
-        let n = 8000;
-        let mut picked = [0usize; 3];
-        for k in 0..n {
-            let u = (k as f32 + 0.5) / n as f32;
-            match lights.pick(u) {
-                Some(LightRef::Area(i)) => picked[i] += 1,
-                other => panic!("picked {other:?}"),
-            }
-        }
         let expected = [3.0 / 16.0, 1.0 / 16.0, 0.75];
-        for i in 0..3 {
-            let share = picked[i] as f32 / n as f32;
-            assert!(
-                (share - expected[i]).abs() < 2e-3,
-                "light {i} picked {share}, expected {}",
-                expected[i]
-            );
-            assert!((lights.area_pick_probability(i) - expected[i]).abs() < 1e-6);
-        }
+        assert_pick_shares(&lights, expected);
         let receiver = world
             .scene
             .geometry
