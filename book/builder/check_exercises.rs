@@ -61,6 +61,7 @@ pub fn run(
     let edition_build = EditionBuild {
         target_dir: student_dir.join("target"),
         build_dir: target_dir,
+        wrong_answers: None,
     };
 
     println!("Writing the student edition to {}", edition.display());
@@ -77,8 +78,8 @@ pub fn run(
     );
     let mut surprises = Vec::new();
     let all: Vec<&Exercise> = chosen.iter().collect();
-    let stubs = run_checks(&all, &edition, Some(&edition_build))?;
-    let solutions = run_checks(&all, root, None)?;
+    let stubs = run_checks(&all, &[], &edition, Some(&edition_build))?;
+    let solutions = run_checks(&all, &[], root, None)?;
     for ((exercise, stub), solution) in chosen.iter().zip(stubs).zip(solutions) {
         println!(
             "{:<28} {:<28} {:<28}",
@@ -131,7 +132,9 @@ pub fn run(
 /// The answers are tried in a copy of the workspace (the student edition with its solutions
 /// put back, or a fresh copy when only the wrong answers are checked), all solutions in place
 /// but the ones being tried, in rounds: round `r` puts in the `r`-th wrong answer of every
-/// exercise that has one, so a round costs one build of the changed crates, not one per answer.
+/// exercise that has one. A round chooses its answers as its checks run, in the copy
+/// [`Trial::run_marked`] built with every answer in it (or, where that copy did not compile,
+/// costs one build of the changed crates), never one build per answer.
 /// A check may run the code of another exercise with an answer in the same round (`runs` says
 /// which exercises each check runs); one that then does not refuse its own answer as recorded
 /// is tried again, in rounds where no check runs the code of another answer of the round,
@@ -229,6 +232,11 @@ pub struct Trial<'a> {
     copy: PathBuf,
     build: EditionBuild,
     changed: Vec<PathBuf>,
+    /// Whether the copy's exercises are now switches among their wrong answers (see
+    /// [`Trial::run_marked`]), so that trying a wrong answer needs no build.
+    switched: bool,
+    /// The packages whose libraries that build compiled, which every run of checks selects.
+    built: Vec<String>,
 }
 
 impl<'a> Trial<'a> {
@@ -250,8 +258,11 @@ impl<'a> Trial<'a> {
             build: EditionBuild {
                 target_dir: student_dir.join("trials-target"),
                 build_dir: workspace::target_dir(root),
+                wrong_answers: None,
             },
             changed: Vec::new(),
+            switched: false,
+            built: Vec::new(),
         })
     }
 
@@ -278,6 +289,8 @@ impl<'a> Trial<'a> {
             copy: edition,
             build,
             changed,
+            switched: false,
+            built: Vec::new(),
         }
     }
 
@@ -295,6 +308,7 @@ impl<'a> Trial<'a> {
 
     /// Puts back, from the workspace, every file the copy's exercises were changed in.
     fn put_back(&mut self) -> Result<()> {
+        self.switched = false;
         for file in self.changed.drain(..) {
             std::fs::copy(self.root.join(&file), self.copy.join(&file))
                 .with_context(|| format!("cannot restore {}", file.display()))?;
@@ -324,25 +338,63 @@ impl<'a> Trial<'a> {
     /// Puts every solution of `all` back with a mark first in it ([`exercise_calls`]), builds
     /// the copy's libraries with their tests, and runs each check of `chosen` once, each in
     /// processes of its own: what each check does and which exercises' code it runs, by name.
+    ///
+    /// Each solution is put back as the last arm of a switch among the exercise's recorded
+    /// wrong answers ([`solution_markers::switch_solution`]), which runs the solution unless
+    /// [`WRONG_ANSWERS_VARIABLE`] chooses another arm: the wrong answers are then tried with
+    /// this one build instead of one build per round (about 25 s a round on two cores with cold
+    /// caches). Should that copy not compile, the solutions are put back marked only, and each
+    /// round of wrong answers is built apart.
     pub fn run_marked(
         &mut self,
         chosen: &[Exercise],
         all: &[Exercise],
     ) -> Result<HashMap<String, MarkedRun>> {
-        self.put_back()?;
-        for exercise in all {
-            self.rewrite(exercise, |source| {
-                let mark = exercise_calls::call_mark(exercise);
-                solution_markers::mark_solution(source, &exercise.anchor, &mark)
-            })?;
-        }
         let chosen: Vec<&Exercise> = chosen.iter().collect();
         let packages = standard_packages(&chosen);
-        let binaries = if packages.is_empty() {
-            HashMap::new()
-        } else {
-            self.library_test_binaries(&packages)?
-        };
+        let mut binaries = HashMap::new();
+        for switched in [true, false] {
+            self.put_back()?;
+            for exercise in all {
+                self.rewrite(exercise, |source| {
+                    let mark = exercise_calls::call_mark(exercise);
+                    if !switched {
+                        return solution_markers::mark_solution(source, &exercise.anchor, &mark);
+                    }
+                    let wrong: Vec<&str> = exercise.wrong.iter().map(|w| w.code.as_str()).collect();
+                    let choice = choice_of(&exercise.name);
+                    solution_markers::switch_solution(
+                        source,
+                        &exercise.anchor,
+                        &mark,
+                        &choice,
+                        &wrong,
+                    )
+                })?;
+            }
+            if packages.is_empty() {
+                break;
+            }
+            match self.compile_library_tests(&packages)? {
+                Compiled::Binaries(built) => {
+                    binaries = built;
+                    self.switched = switched;
+                    self.built = packages.iter().map(|p| (*p).to_owned()).collect();
+                    break;
+                }
+                Compiled::Errors { text, .. } if switched => println!(
+                    "The copy with every exercise a switch among its wrong answers does not \
+                     compile, so each round of wrong answers will be built apart (slower); \
+                     the compiler said:\n{}",
+                    last_lines(&text, 30)
+                ),
+                Compiled::Errors { command, text, .. } => bail!(
+                    "the copy at {} with every solution marked does not compile (`{command}`):\n{}",
+                    self.copy.display(),
+                    last_lines(&text, 30)
+                ),
+            }
+        }
         let run_other = |check: &str, marks: &Path| -> Result<(bool, String)> {
             let marks = marks.to_string_lossy().replace('\'', "'\\''");
             let command = format!("{}='{marks}' {check}", exercise_calls::CALLS_FILE_VARIABLE);
@@ -356,23 +408,6 @@ impl<'a> Trial<'a> {
             .map(|exercise| exercise.name.clone())
             .zip(runs)
             .collect())
-    }
-
-    /// Compiles the library tests of `packages` in the copy as it now stands (as the checks
-    /// compile them, with [`AS_THE_WORKSPACE_TESTS`]) and returns each one's test binary and
-    /// package folder.
-    pub fn library_test_binaries(
-        &self,
-        packages: &[&str],
-    ) -> Result<HashMap<String, (PathBuf, PathBuf)>> {
-        match self.compile_library_tests(packages)? {
-            Compiled::Binaries(binaries) => Ok(binaries),
-            Compiled::Errors { command, text, .. } => bail!(
-                "the copy at {} with every solution marked does not compile (`{command}`):\n{}",
-                self.copy.display(),
-                last_lines(&text, 30)
-            ),
-        }
     }
 
     /// Compiles the library tests of `packages` in the copy as it now stands: their test
@@ -440,13 +475,33 @@ impl<'a> Trial<'a> {
         &mut self,
         answers: &[(&'e Exercise, &'e WrongAnswer)],
     ) -> Result<Vec<(&'e Exercise, &'e WrongAnswer, Outcome)>> {
-        let splices: Vec<(&Exercise, String)> = answers
-            .iter()
-            .map(|(exercise, wrong)| (*exercise, wrong.code.clone()))
-            .collect();
-        self.put_in(&splices)?;
         let exercises: Vec<&Exercise> = answers.iter().map(|(exercise, _)| *exercise).collect();
-        let outcomes = run_checks(&exercises, &self.copy, Some(&self.build))?;
+        let outcomes = if self.switched {
+            // Chosen as the checks run: nothing to build.
+            let pairs: Vec<String> = answers
+                .iter()
+                .map(|(exercise, wrong)| {
+                    let index = exercise
+                        .wrong
+                        .iter()
+                        .position(|recorded| std::ptr::eq(recorded, *wrong))
+                        .expect("a wrong answer of its exercise");
+                    format!("{}={}", exercise.name, index + 1)
+                })
+                .collect();
+            self.build.wrong_answers = Some(pairs.join(" "));
+            let built: Vec<&str> = self.built.iter().map(String::as_str).collect();
+            let outcomes = run_checks(&exercises, &built, &self.copy, Some(&self.build));
+            self.build.wrong_answers = None;
+            outcomes?
+        } else {
+            let splices: Vec<(&Exercise, String)> = answers
+                .iter()
+                .map(|(exercise, wrong)| (*exercise, wrong.code.clone()))
+                .collect();
+            self.put_in(&splices)?;
+            run_checks(&exercises, &[], &self.copy, Some(&self.build))?
+        };
         Ok(answers
             .iter()
             .zip(outcomes)
@@ -659,6 +714,26 @@ pub struct EditionBuild {
     /// Intermediate artifacts: the workspace's own build directory, so that the dependencies
     /// compiled for the workspace are reused rather than compiled a second time.
     pub build_dir: PathBuf,
+    /// The wrong answers a copy's switches choose (see [`WRONG_ANSWERS_VARIABLE`]), if any.
+    pub wrong_answers: Option<String>,
+}
+
+/// The environment variable that chooses, in a copy whose exercises are switches
+/// ([`solution_markers::switch_solution`]), which recorded wrong answer each exercise runs:
+/// `NAME=K` pairs (K counted from 1), separated by spaces; an exercise not named runs its
+/// solution.
+pub const WRONG_ANSWERS_VARIABLE: &str = "WORKBOOK_WRONG_ANSWERS";
+
+/// The expression a switch of exercise `name` matches on: the number that
+/// [`WRONG_ANSWERS_VARIABLE`] gives it, 0 if none, read once per process.
+fn choice_of(name: &str) -> String {
+    format!(
+        "{{ static WRONG_ANSWER: std::sync::OnceLock<usize> = std::sync::OnceLock::new(); \
+         *WRONG_ANSWER.get_or_init(|| std::env::var({WRONG_ANSWERS_VARIABLE:?}).ok().and_then(\
+         |pairs| pairs.split_whitespace().find_map(|pair| pair.strip_prefix({prefix:?})?.parse().ok())\
+         ).unwrap_or(0)) }}",
+        prefix = format!("{name}=")
+    )
 }
 
 impl EditionBuild {
@@ -672,6 +747,10 @@ impl EditionBuild {
     pub fn apply(&self, command: &mut Command) {
         command.env("CARGO_TARGET_DIR", &self.target_dir);
         command.env_remove("CARGO_INCREMENTAL");
+        match &self.wrong_answers {
+            Some(pairs) => command.env(WRONG_ANSWERS_VARIABLE, pairs),
+            None => command.env_remove(WRONG_ANSWERS_VARIABLE),
+        };
         if std::env::var_os("CARGO_BUILD_BUILD_DIR").is_none() {
             command.env("CARGO_BUILD_BUILD_DIR", &self.build_dir);
         }
@@ -755,7 +834,10 @@ fn standard_packages<'e>(exercises: &[&'e Exercise]) -> Vec<&'e str> {
     packages
 }
 
-/// Runs the checks of `exercises` in `dir` and returns their outcomes in the same order.
+/// Runs the checks of `exercises` in `dir` and returns their outcomes in the same order. The
+/// packages `also` are built and tested with theirs (and their outcomes left out), so that a
+/// run selects the packages an earlier build selected: cargo compiles a chapter again when
+/// another selection gives it other features.
 ///
 /// Checks of the usual form (`cargo test -p PACKAGE --lib exercise_...`) are run together: an
 /// exercise's check passes when every test its filter picks passed, and its output is what
@@ -769,11 +851,17 @@ fn standard_packages<'e>(exercises: &[&'e Exercise]) -> Vec<&'e str> {
 /// the others. Other checks run as they are.
 fn run_checks(
     exercises: &[&Exercise],
+    also: &[&str],
     dir: &Path,
     build: Option<&EditionBuild>,
 ) -> Result<Vec<Outcome>> {
     let mut outcomes: Vec<Option<Outcome>> = exercises.iter().map(|_| None).collect();
-    let packages = standard_packages(exercises);
+    let mut packages = standard_packages(exercises);
+    for &package in also {
+        if !packages.contains(&package) {
+            packages.push(package);
+        }
+    }
     for (index, exercise) in exercises.iter().enumerate() {
         if progress::standard_check(&exercise.check).is_none() {
             outcomes[index] = Some(run_check(&exercise.check, dir, build)?);

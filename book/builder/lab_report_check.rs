@@ -68,6 +68,7 @@ pub fn run(root: &Path, screenshots: &Path) -> Result<()> {
     let build = EditionBuild {
         target_dir: student_dir.join("target"),
         build_dir: workspace::target_dir(root),
+        wrong_answers: None,
     };
     let mut command = Command::new("cargo");
     command

@@ -472,6 +472,63 @@ pub fn mark_solution(source: &str, anchor: &str, line: &str) -> Result<String, M
     Ok(text)
 }
 
+/// `source` with the solution region of exercise `anchor` made a switch among its recorded
+/// wrong answers: `match CHOICE { 1 => { wrong 1 } ... _ => { MARK solution } }`, the markers
+/// kept around it. Every solution region is the tail of a function's body, so the `match` is
+/// the function's value whichever arm runs; one build then serves every wrong answer, chosen
+/// when the check runs (`choice` is the expression that reads which). `mark` stands first in
+/// the solution's arm, as [`mark_solution`] puts it.
+pub fn switch_solution(
+    source: &str,
+    anchor: &str,
+    mark: &str,
+    choice: &str,
+    wrong: &[&str],
+) -> Result<String, MarkerError> {
+    let lines: Vec<&str> = source.lines().collect();
+    let span = locate(&lines, anchor)?;
+    let begin = lines[span.solution.start];
+    let indent = &begin[..begin.len() - begin.trim_start().len()];
+    let arm = |out: &mut Vec<String>, pattern: &str, code: &mut dyn Iterator<Item = String>| {
+        out.push(format!("{indent}    {pattern} => {{"));
+        for line in code {
+            out.push(if line.trim().is_empty() {
+                String::new()
+            } else {
+                format!("{indent}        {line}")
+            });
+        }
+        out.push(format!("{indent}    }}"));
+    };
+    let mut out: Vec<String> = lines[..=span.solution.start]
+        .iter()
+        .map(|line| (*line).to_owned())
+        .collect();
+    out.push(format!("{indent}match {choice} {{"));
+    for (index, code) in wrong.iter().enumerate() {
+        let mut code = code.trim_end().lines().map(str::to_owned);
+        arm(&mut out, &(index + 1).to_string(), &mut code);
+    }
+    let solution = &lines[span.solution.start + 1..span.solution.end - 1];
+    let mut code = std::iter::once(mark.to_owned()).chain(
+        solution
+            .iter()
+            .map(|line| line.strip_prefix(indent).unwrap_or(line).to_owned()),
+    );
+    arm(&mut out, "_", &mut code);
+    out.push(format!("{indent}}}"));
+    out.extend(
+        lines[span.solution.end - 1..]
+            .iter()
+            .map(|line| (*line).to_owned()),
+    );
+    let mut text = out.join("\n");
+    if source.ends_with('\n') {
+        text.push('\n');
+    }
+    Ok(text)
+}
+
 /// One exercise to cut out of a file: its anchor and the message of its `todo!`.
 #[derive(Debug, Clone)]
 pub struct Cut<'a> {
@@ -564,6 +621,28 @@ mod tests {
             "use glam::Vec3;\n\n// ANCHOR: reflect\n/// A made-up formula in the place of the mirror direction.\npub fn reflect(u: Vec3, v: Vec3, w: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    mark();\n    u - 3.0 * u.dot(v) * w\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n"
         );
         assert!(mark_solution(REFLECT, "refract", "mark();").is_err());
+    }
+
+    #[test]
+    fn a_switch_holds_every_wrong_answer_and_the_marked_solution_last() {
+        let switched = switch_solution(
+            REFLECT,
+            "reflect",
+            "mark();",
+            "which()",
+            &["u", "let k = 2.0;\nu - k * w"],
+        )
+        .unwrap();
+        assert_eq!(
+            switched,
+            "use glam::Vec3;\n\n// ANCHOR: reflect\n/// A made-up formula in the place of the mirror direction.\npub fn reflect(u: Vec3, v: Vec3, w: Vec3) -> Vec3 {\n    // BEGIN SOLUTION\n    match which() {\n        1 => {\n            u\n        }\n        2 => {\n            let k = 2.0;\n            u - k * w\n        }\n        _ => {\n            mark();\n            u - 3.0 * u.dot(v) * w\n        }\n    }\n    // END SOLUTION\n}\n// ANCHOR_END: reflect\n"
+        );
+        // Still one exercise: the markers stand where they stood, around the switch.
+        assert_eq!(
+            locate(&lines(&switched), "reflect").unwrap().solution,
+            5..20
+        );
+        assert!(switch_solution(REFLECT, "refract", "", "0", &[]).is_err());
     }
 
     fn lines(source: &str) -> Vec<&str> {
