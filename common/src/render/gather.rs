@@ -68,9 +68,80 @@ where
     F: Fn(Vec2, &mut S) -> Vec3 + Sync,
     G: GatherPixel,
 {
-    let start = Instant::now();
     let size = UVec2::new(settings.width, settings.height);
     let tiles = tiles_of(size);
+    in_growing_renders(settings, tiles.len(), |spp, progress| {
+        gather_image(
+            settings, &tiles, spp, sampler, filter, &radiance, gather, progress,
+        )
+    })
+}
+
+/// Renders an image in which every pixel is `pixel_value(pixel, spp, sampler)`: a function
+/// that takes the pixel's `spp` samples itself (starting each with
+/// [`Sampler::start_pixel_sample`], the position in the pixel drawn first) and returns the
+/// pixel's value, each pixel from its own samples alone, as with a box filter. For an
+/// estimator that is not an average of its samples' values (chapter 10's optimal
+/// combination of techniques solves a small system per pixel). The budget is spent as
+/// [`render_gathered`] spends it, in whole renders of growing sample counts; rays and samples
+/// are counted as the other loops count them, and a pixel whose value is not finite counts
+/// as one sample that is not.
+pub fn render_per_pixel<S, F>(
+    settings: &RenderSettings,
+    sampler: &S,
+    pixel_value: F,
+) -> RenderOutput
+where
+    S: Sampler,
+    F: Fn(UVec2, u64, &mut S) -> Vec3 + Sync,
+{
+    use rayon::prelude::*;
+    let size = UVec2::new(settings.width, settings.height);
+    let tiles = tiles_of(size);
+    in_growing_renders(settings, tiles.len(), |spp, progress| {
+        let done: Vec<(Vec<Vec3>, Totals)> = tiles
+            .par_iter()
+            .map(|&rect| {
+                let mut own = sampler.clone();
+                let mut totals = Totals::default();
+                let mut pixels = Vec::with_capacity(rect.width() as usize * rect.height() as usize);
+                for pixel in rect.pixels() {
+                    if settings.stop.is_requested() {
+                        return None;
+                    }
+                    let (value, rays) = counting_rays(|| pixel_value(pixel, spp, &mut own));
+                    totals.rays += rays;
+                    totals.samples += spp;
+                    totals.nonfinite_samples += u64::from(!value.is_finite());
+                    pixels.push(value);
+                }
+                progress.tile_done(spp);
+                Some((pixels, totals))
+            })
+            .collect::<Option<_>>()?;
+        let mut image = Image::new(size.x, size.y);
+        let mut totals = Totals::default();
+        for (rect, (pixels, tile_totals)) in tiles.iter().zip(&done) {
+            for (p, &value) in rect.pixels().zip(pixels) {
+                image.set(p.x, p.y, value);
+            }
+            totals.add(tile_totals);
+        }
+        Some((image, totals))
+    })
+}
+
+/// The budget loop of [`render_gathered`] and [`render_per_pixel`]: whole renders of the
+/// image (`render(spp, progress)`, `None` when stopped) at growing sample counts, each from
+/// scratch, the last one completed kept, so that a stop loses no more than the render under
+/// way: with a sample budget at 1, 4, 16, ... samples per pixel up to the budget (the earlier
+/// renders cost at most a third of the last), with a time budget at 1, 2, 4, ... until the
+/// time is up.
+fn in_growing_renders<R>(settings: &RenderSettings, tiles: usize, render: R) -> RenderOutput
+where
+    R: Fn(u64, &Progress) -> Option<(Image, Totals)> + Sync,
+{
+    let start = Instant::now();
     let planned_spp = match settings.budget {
         Budget::Samples(target) => std::iter::successors(Some(1), |&spp| {
             (spp < target).then(|| next_spp(spp, target))
@@ -78,11 +149,9 @@ where
         .sum(),
         Budget::Seconds(_) => 0,
     };
-    let progress = Progress::new(settings, tiles.len(), planned_spp);
+    let progress = Progress::new(settings, tiles, planned_spp);
     let gather = |spp| {
-        let done = gather_image(
-            settings, &tiles, spp, sampler, filter, &radiance, gather, &progress,
-        );
+        let done = render(spp, &progress);
         progress.pass_done(spp);
         done
     };

@@ -22,7 +22,7 @@ mod stats;
 mod stop;
 
 pub use budget::Budget;
-pub use gather::{GatherPixel, render_gathered};
+pub use gather::{GatherPixel, render_gathered, render_per_pixel};
 pub use stats::RenderStats;
 pub use stop::StopFlag;
 

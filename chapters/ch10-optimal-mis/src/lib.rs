@@ -1,0 +1,58 @@
+//! # Beyond the lecture: optimal multiple importance sampling
+//!
+//! Chapter 08 lights a surface twice, by a light sample and by a BSDF sample, and combines the
+//! two with a heuristic weight (balance or power) fixed in advance, whatever the scene. The
+//! weights are free, as long as they sum to one at every direction; Kondapaneni, Vévoda,
+//! Grittmann, Skřivan, Slusallek and Křivánek (*Optimal Multiple Importance Sampling*,
+//! SIGGRAPH 2019) found the ones that make the combined estimator's variance smallest, and
+//! showed how to use them without knowing them in advance: per pixel, a few sums over the
+//! pixel's own samples, a 2 × 2 linear system, and the sum of its solution.
+//!
+//! - [`techniques`]: at the surface a camera ray meets, one light sample and one BSDF sample,
+//!   each with the integrand's value and *both* techniques' densities at its direction, and
+//!   what needs no combining (light seen directly, point lights, mirror directions);
+//! - [`optimal`]: the sums a pixel accumulates, and their solve (the paper's "direct
+//!   estimator"), with the balance heuristic's estimate from the same samples to fall back on;
+//! - [`pixel`]: one pixel's value from its samples, combined by a heuristic or optimally;
+//!   [`render_direct`] renders a scene that way.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod optimal;
+pub mod pixel;
+pub mod techniques;
+
+pub use optimal::OptimalSums;
+pub use pixel::Combination;
+
+use ch04_depth_of_field::Lens;
+use ch05_motion_blur::{CameraRays, MotionScene, TimeSampler};
+use ch06_fuzzy_reflections::FuzzMethod;
+use ch07_soft_shadows::{AreaLights, LightSampling};
+use ch08_path_tracing::{PathOptions, PathTracer, SceneLights};
+use ch09_materials::SceneMaterials;
+use common::render::{RenderOutput, RenderSettings, render_per_pixel};
+
+/// Renders the light reaching the surfaces the camera sees straight from the lights (Mitsuba's
+/// `direct` integrator with one light and one BSDF sample), every material a scene file names,
+/// each pixel from its own samples combined as `combination` says ([`pixel::pixel_value`]).
+/// The same seed gives the same image on any number of threads.
+pub fn render_direct<S: TimeSampler>(
+    world: &MotionScene,
+    lens: &Lens,
+    settings: &RenderSettings,
+    sampler: &S,
+    combination: Combination,
+) -> RenderOutput {
+    let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
+    let area_lights = AreaLights::of(&world.scene);
+    let tracer = PathTracer {
+        world,
+        lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
+        options: PathOptions::default(),
+        materials: SceneMaterials::of(&world.scene, FuzzMethod::Lobe),
+    };
+    render_per_pixel(settings, sampler, |pixel, spp, sampler| {
+        pixel::pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)
+    })
+}
