@@ -21,7 +21,7 @@ use std::fmt;
 /// A chapter of the workbook, named in messages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Chapter {
-    /// Its number, 1 to 9.
+    /// Its number, from 1.
     pub number: u32,
     /// Its package, such as `ch07-soft-shadows`.
     pub package: &'static str,
@@ -74,6 +74,11 @@ impl Chapter {
     pub const MATERIALS: Chapter = Chapter {
         number: 9,
         package: "ch09-materials",
+    };
+    /// The lecture's recent advances: optimal multiple importance sampling.
+    pub const OPTIMAL_MIS: Chapter = Chapter {
+        number: 10,
+        package: "ch10-optimal-mis",
     };
 }
 

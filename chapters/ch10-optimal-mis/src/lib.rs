@@ -15,9 +15,15 @@
 //!   estimator"), with the balance heuristic's estimate from the same samples to fall back on;
 //! - [`pixel`]: one pixel's value from its samples, combined by a heuristic or optimally;
 //!   [`render_direct`] renders a scene that way.
+//!
+//! The crate's workbench (its binary, `render --mis optimal|power|balance`, and the figures)
+//! is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+#[cfg(feature = "lab")]
+#[path = "../lab/mod.rs"]
+pub mod lab;
 pub mod optimal;
 pub mod pixel;
 pub mod techniques;

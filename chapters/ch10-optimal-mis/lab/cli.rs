@@ -1,0 +1,130 @@
+//! `render`: a scene file's direct light, the two techniques combined as `--mis` says.
+//!
+//! Whatever the file's integrator, the binary renders what Mitsuba's `direct` integrator with
+//! one light sample and one BSDF sample renders (the chapter's subject is the combination of
+//! those two), and says so when the file asks for more. Each pixel is estimated from its own
+//! samples, as under a box filter, for every `--mis`, so that the three are compared on the
+//! same footing; a file's wider filter is left aside with a note.
+
+use crate::pixel::Combination;
+use crate::render_direct;
+use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
+use ch04_depth_of_field::lab::cli::LensArgs;
+use ch05_motion_blur::lab::scene_file::motion_for_render;
+use ch05_motion_blur::lab::shot::Shot;
+use ch08_path_tracing::MisHeuristic;
+use ch08_path_tracing::lab::scene_file::PathSide;
+use common::scene::Scene;
+use workbench::capabilities::Capabilities;
+use workbench::driver::{ChapterRender, RenderCommand, RenderJob, Rendered, drive};
+
+/// `--mis`: how the light sample and the BSDF sample are combined.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MisArg {
+    /// The weights that minimise the variance, solved per pixel from its samples.
+    Optimal,
+    /// Veach's power heuristic (exponent 2), chapter 08's default.
+    Power,
+    /// The balance heuristic.
+    Balance,
+}
+
+impl MisArg {
+    /// The lecture's combination this option names.
+    pub fn combination(self) -> Combination {
+        match self {
+            MisArg::Optimal => Combination::Optimal,
+            MisArg::Power => Combination::Heuristic(MisHeuristic::Power),
+            MisArg::Balance => Combination::Heuristic(MisHeuristic::Balance),
+        }
+    }
+}
+
+/// The options of `render`.
+// Its flattened fields are chapters 03 and 04's option groups, documented where defined.
+#[allow(missing_docs)]
+#[derive(clap::Args, Debug)]
+pub struct RenderOptions {
+    /// How the light sample and the BSDF sample are combined.
+    #[arg(long, value_enum, default_value_t = MisArg::Optimal)]
+    pub mis: MisArg,
+    #[command(flatten)]
+    pub anti_aliasing: AntiAliasingArgs,
+    #[command(flatten)]
+    pub lens: LensArgs,
+}
+
+/// `render`, through the workbench's driver.
+pub fn run_render(command: RenderCommand<RenderOptions>) -> anyhow::Result<()> {
+    drive(command)
+}
+
+impl ChapterRender for RenderOptions {
+    type FromFile = PathSide;
+    type Prepared = Shot;
+    const CAPABILITIES: Capabilities = super::CAPABILITIES;
+    // Never used: the binary renders scene files only.
+    const BUILTIN_SPP: u64 = 16;
+
+    fn builtin(&self) -> anyhow::Result<(Scene, String)> {
+        anyhow::bail!("render needs a scene: --scene FILE.xml")
+    }
+
+    fn prepare(
+        &self,
+        scene: Scene,
+        from_file: Option<PathSide>,
+        job: &RenderJob,
+    ) -> anyhow::Result<Shot> {
+        let side = from_file.expect("the scene was read from a file");
+        let direct_only = side
+            .options
+            .direct
+            .is_some_and(|samples| samples != common::scene::DirectSamples::ONE_EACH)
+            || (side.options.direct.is_none() && scene.max_depth != 2);
+        if direct_only {
+            eprintln!(
+                "note: {}: rendered as Mitsuba's `direct` with one light sample and one BSDF \
+                 sample (the light straight from the lights), whatever the file's integrator \
+                 asks",
+                job.name
+            );
+        }
+        let world = motion_for_render(scene, &job.name)?;
+        let shot = Shot::new(
+            world,
+            Some(side.camera),
+            &self.anti_aliasing,
+            &self.lens,
+            None,
+            job,
+        )?;
+        if common::film::Filter::radius(&shot.film.filter) != glam::Vec2::splat(0.5) {
+            eprintln!(
+                "note: {}: each pixel is estimated from its own samples (a box filter), so \
+                 that the optimal weights can be solved per pixel; the file's wider filter is \
+                 not used",
+                job.name
+            );
+        }
+        Ok(shot)
+    }
+
+    fn render(&self, shot: Shot, job: &RenderJob) -> anyhow::Result<Rendered> {
+        let combination = self.mis.combination();
+        let output = render_direct(
+            &shot.world,
+            &shot.lens,
+            &job.settings,
+            &shot.sampler,
+            combination,
+        );
+        let mut stats = serde_json::json!({ "mis": combination.name() });
+        shot.record_stats(&mut stats);
+        Ok(Rendered {
+            output,
+            stats,
+            detail: format!(", --mis {}", combination.name()),
+        })
+    }
+}
