@@ -177,7 +177,7 @@ impl<M: Materials> PathTracer<'_, M> {
     /// They still block shadow rays and later segments, and still light the scene. Without
     /// `hide_emitters`, the ray itself. Draws no random number, so every other pixel keeps
     /// its samples.
-    pub(crate) fn past_hidden_emitters(&self, camera_ray: &Ray) -> Ray {
+    pub fn past_hidden_emitters(&self, camera_ray: &Ray) -> Ray {
         if self.options.hide_emitters && self.lights.has_area_lights() {
             self.through_emitters(camera_ray)
         } else {

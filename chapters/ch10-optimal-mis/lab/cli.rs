@@ -7,13 +7,15 @@
 //! same footing; a file's wider filter is left aside with a note.
 
 use crate::pixel::Combination;
-use crate::render_direct;
+use crate::render_direct_with;
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::lab::cli::LensArgs;
 use ch05_motion_blur::lab::scene_file::motion_for_render;
 use ch05_motion_blur::lab::shot::Shot;
-use ch08_path_tracing::MisHeuristic;
+use ch06_fuzzy_reflections::FuzzMethod;
 use ch08_path_tracing::lab::scene_file::PathSide;
+use ch08_path_tracing::{MisHeuristic, PathOptions};
+use ch09_materials::SceneMaterials;
 use common::scene::Scene;
 use workbench::capabilities::Capabilities;
 use workbench::driver::{ChapterRender, RenderCommand, RenderJob, Rendered, drive};
@@ -61,7 +63,7 @@ pub fn run_render(command: RenderCommand<RenderOptions>) -> anyhow::Result<()> {
 
 impl ChapterRender for RenderOptions {
     type FromFile = PathSide;
-    type Prepared = Shot;
+    type Prepared = (Shot, PathOptions);
     const CAPABILITIES: Capabilities = super::CAPABILITIES;
     // Never used: the binary renders scene files only.
     const BUILTIN_SPP: u64 = 16;
@@ -75,7 +77,7 @@ impl ChapterRender for RenderOptions {
         scene: Scene,
         from_file: Option<PathSide>,
         job: &RenderJob,
-    ) -> anyhow::Result<Shot> {
+    ) -> anyhow::Result<(Shot, PathOptions)> {
         let side = from_file.expect("the scene was read from a file");
         let direct_only = side
             .options
@@ -107,13 +109,20 @@ impl ChapterRender for RenderOptions {
                 job.name
             );
         }
-        Ok(shot)
+        Ok((shot, side.options))
     }
 
-    fn render(&self, shot: Shot, job: &RenderJob) -> anyhow::Result<Rendered> {
+    fn render(
+        &self,
+        (shot, options): (Shot, PathOptions),
+        job: &RenderJob,
+    ) -> anyhow::Result<Rendered> {
         let combination = self.mis.combination();
-        let output = render_direct(
+        let materials = SceneMaterials::of(&shot.world.scene, FuzzMethod::Lobe);
+        let output = render_direct_with(
             &shot.world,
+            materials,
+            options,
             &shot.lens,
             &job.settings,
             &shot.sampler,

@@ -1,14 +1,20 @@
 //! The chapter's figures: the three combinations side by side on the zero-variance plane and
-//! on the glossy floor, with their errors.
+//! on the glossy floor, with their errors, and their error against time on three scenes.
 
 use crate::pixel::Combination;
-use crate::render_direct;
+use crate::render_direct_with;
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
+use ch06_fuzzy_reflections::FuzzMethod;
+use ch08_path_tracing::PathOptions;
+use ch09_materials::SceneMaterials;
 use common::image::Image;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
 use std::path::{Path, PathBuf};
+use workbench::convergence::{
+    Technique, convergence_markdown, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
 use workbench::figure_set::{FigureSet, Level};
 use workbench::output::{write_image, write_text};
 
@@ -29,7 +35,85 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
             Reference::Power,
         )
     })?;
+    for (scene_name, file, what) in EQUAL_TIME_SCENES {
+        figures.make(what, |out| error_against_time(out, scene_name, file, level))?;
+    }
     figures.finish()
+}
+
+/// The scenes whose error is measured against time: chapter 09's Veach plates and chapter
+/// 08's Cornell box, lit directly, and the chapter's glossy floor.
+const EQUAL_TIME_SCENES: [(&str, &str, &str); 3] = [
+    (
+        "veach-plates",
+        "../ch09-materials/scenes/veach-plates.xml",
+        "the error against time: Veach's plates",
+    ),
+    (
+        "cornell-box",
+        "../ch08-path-tracing/scenes/cornell-box.xml",
+        "the error against time: the Cornell box",
+    ),
+    (
+        "glossy-floor",
+        "scenes/glossy-floor.xml",
+        "the error against time: the glossy floor",
+    ),
+];
+
+/// The three combinations on the scene file `file` (relative to the crate) at growing sample
+/// counts, timed, against a long render with the power heuristic, the lights the camera sees
+/// left out: `NAME-error-time.csv`, its
+/// log-log plot `NAME-error-time.png`, and the table `NAME-error-time.md`.
+fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyhow::Result<()> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+    let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
+    let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
+    let film = world.scene.film;
+    let (width, height) = level.pick((film.width / 2, film.height / 2), (film.width, film.height));
+    // Made once: the renders are timed, and the tables are the same for every one.
+    let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
+    // The lights the camera sees are left out (Mitsuba's `hide_emitters`): the noise of their
+    // edges is the same for every combination and would drown the difference.
+    let options = PathOptions {
+        hide_emitters: true,
+        ..PathOptions::default()
+    };
+    let render = |spp, seed, combination| -> Image {
+        let settings = RenderSettings::new(width, height, spp);
+        let sampler = IndependentSampler::new(seed);
+        let materials = materials.clone();
+        render_direct_with(
+            &world,
+            materials,
+            options,
+            &Lens::PINHOLE,
+            &settings,
+            &sampler,
+            combination,
+        )
+        .image
+    };
+    let reference = render(level.pick(1024, 4096), 1_000, Combination::ALL[1]);
+    let techniques: Vec<Technique> = Combination::ALL
+        .into_iter()
+        .map(|combination| {
+            Technique::new(combination.name(), move |spp| render(spp, 1, combination))
+        })
+        .collect();
+    let budgets: &[u64] = level.pick(&[1, 4, 16], &[1, 4, 16, 64, 256]);
+    let records = run_convergence(&techniques, budgets, &reference);
+    write_convergence_csv(&out.join(format!("{name}-error-time.csv")), &records)?;
+    plot_error_vs_time(
+        &out.join(format!("{name}-error-time.png")),
+        &format!("{name}: error against time, direct light"),
+        &records,
+    )?;
+    write_text(
+        &out.join(format!("{name}-error-time.md")),
+        &convergence_markdown(&records, "samples per pixel"),
+    )?;
+    Ok(())
 }
 
 /// What a figure's errors are measured against.
@@ -64,10 +148,23 @@ fn side_by_side(
     let world = scene(name)?;
     let film = world.scene.film;
     let (width, height) = level.pick((film.width / 2, film.height / 2), (film.width, film.height));
+    // Made once: the renders are timed, and the tables are the same for every one.
+    let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
+    let options = PathOptions::default();
     let render = |spp, seed, combination| -> Image {
         let settings = RenderSettings::new(width, height, spp);
         let sampler = IndependentSampler::new(seed);
-        render_direct(&world, &Lens::PINHOLE, &settings, &sampler, combination).image
+        let materials = materials.clone();
+        render_direct_with(
+            &world,
+            materials,
+            options,
+            &Lens::PINHOLE,
+            &settings,
+            &sampler,
+            combination,
+        )
+        .image
     };
     let expected = match reference {
         Reference::Exact => Image {

@@ -35,7 +35,7 @@ use ch04_depth_of_field::Lens;
 use ch05_motion_blur::{CameraRays, MotionScene, TimeSampler};
 use ch06_fuzzy_reflections::FuzzMethod;
 use ch07_soft_shadows::{AreaLights, LightSampling};
-use ch08_path_tracing::{PathOptions, PathTracer, SceneLights};
+use ch08_path_tracing::{Materials, PathOptions, PathTracer, SceneLights};
 use ch09_materials::SceneMaterials;
 use common::render::{RenderOutput, RenderSettings, render_per_pixel};
 
@@ -50,13 +50,38 @@ pub fn render_direct<S: TimeSampler>(
     sampler: &S,
     combination: Combination,
 ) -> RenderOutput {
+    let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
+    let options = PathOptions::default();
+    render_direct_with(
+        world,
+        materials,
+        options,
+        lens,
+        settings,
+        sampler,
+        combination,
+    )
+}
+
+/// [`render_direct`] with the materials given (their tables made beforehand, so that a
+/// series of renders of one scene makes them once) and the file's options, of which the
+/// direct light reads `hide_emitters`: the camera then sees through what glows.
+pub fn render_direct_with<S: TimeSampler, M: Materials>(
+    world: &MotionScene,
+    materials: M,
+    options: PathOptions,
+    lens: &Lens,
+    settings: &RenderSettings,
+    sampler: &S,
+    combination: Combination,
+) -> RenderOutput {
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     let area_lights = AreaLights::of(&world.scene);
     let tracer = PathTracer {
         world,
         lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
-        options: PathOptions::default(),
-        materials: SceneMaterials::of(&world.scene, FuzzMethod::Lobe),
+        options,
+        materials,
     };
     render_per_pixel(settings, sampler, |pixel, spp, sampler| {
         pixel::pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)

@@ -53,14 +53,18 @@ pub fn draw_techniques<M: Materials, S: Sampler>(
     sampler: &mut S,
 ) -> SurfaceDraws {
     let lights = &tracer.lights;
+    // With Mitsuba's `hide_emitters`, the camera sees through what glows, and not the sky.
+    let camera_ray = &tracer.past_hidden_emitters(camera_ray);
+    let shown = !tracer.options.hide_emitters;
     let Some(hit) = tracer.world.intersect(camera_ray) else {
+        let sky = lights.environment.radiance(camera_ray.dir);
         return SurfaceDraws {
-            certain: lights.environment.radiance(camera_ray.dir),
+            certain: if shown { sky } else { Vec3::ZERO },
             drawn: [None, None],
         };
     };
     let mut draws = SurfaceDraws::default();
-    if let Some(light) = lights.area_light_of(hit.shape) {
+    if shown && let Some(light) = lights.area_light_of(hit.shape) {
         draws.certain += lights.emitted(light, hit.shape, hit.n, || Some(hit.uv), -camera_ray.dir);
     }
     let material = tracer.world.material_at(&hit);
