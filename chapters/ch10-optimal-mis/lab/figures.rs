@@ -38,6 +38,7 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     for (scene_name, file, what) in EQUAL_TIME_SCENES {
         figures.make(what, |out| error_against_time(out, scene_name, file, level))?;
     }
+    figures.agreement(&crate::lab::agreement::AGREEMENT)?;
     figures.finish()
 }
 

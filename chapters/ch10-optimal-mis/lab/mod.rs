@@ -2,6 +2,7 @@
 //! samples at the surface the camera sees, combined by `--mis optimal|power|balance`) and the
 //! figures. Built with the `lab` feature (on by default).
 
+pub mod agreement;
 pub mod cli;
 pub mod figures;
 
