@@ -25,6 +25,9 @@ use workbench::driver::{ChapterRender, RenderCommand, RenderJob, Rendered, drive
 pub enum MisArg {
     /// The weights that minimise the variance, solved per pixel from its samples.
     Optimal,
+    /// The same, unbiased: each iteration of a pixel's samples (4, 8, 16, ...) weighted with
+    /// those solved from the iterations before it.
+    Progressive,
     /// Veach's power heuristic (exponent 2), chapter 08's default.
     Power,
     /// The balance heuristic.
@@ -36,6 +39,7 @@ impl MisArg {
     pub fn combination(self) -> Combination {
         match self {
             MisArg::Optimal => Combination::Optimal,
+            MisArg::Progressive => Combination::Progressive,
             MisArg::Power => Combination::Heuristic(MisHeuristic::Power),
             MisArg::Balance => Combination::Heuristic(MisHeuristic::Balance),
         }

@@ -12,7 +12,8 @@
 //!   each with the integrand's value and *both* techniques' densities at its direction, and
 //!   what needs no combining (light seen directly, point lights, mirror directions);
 //! - [`optimal`]: the sums a pixel accumulates, and their solve (the paper's "direct
-//!   estimator"), with the balance heuristic's estimate from the same samples to fall back on;
+//!   estimator"), with the balance heuristic's estimate from the same samples to fall back on,
+//!   and the progressive, unbiased variant ([`optimal::ProgressiveOptimal`]);
 //! - [`pixel`]: one pixel's value from its samples, combined by a heuristic or optimally;
 //!   [`render_direct`] renders a scene that way.
 //!
@@ -28,7 +29,7 @@ pub mod optimal;
 pub mod pixel;
 pub mod techniques;
 
-pub use optimal::OptimalSums;
+pub use optimal::{OptimalSums, ProgressiveOptimal};
 pub use pixel::Combination;
 
 use ch04_depth_of_field::Lens;

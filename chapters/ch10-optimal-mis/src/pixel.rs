@@ -6,7 +6,7 @@
 //! filter. (A wider filter shares a sample among pixels with different weights; each pixel
 //! would then solve a weighted system of the samples it reaches. The chapter keeps to the box.)
 
-use crate::optimal::OptimalSums;
+use crate::optimal::{OptimalSums, ProgressiveOptimal};
 use crate::techniques::{BSDF, LIGHT, SurfaceDraws, draw_techniques};
 use ch05_motion_blur::{CameraRays, TimeSampler};
 use ch08_path_tracing::{Materials, MisHeuristic, PathTracer};
@@ -19,14 +19,19 @@ pub enum Combination {
     Heuristic(MisHeuristic),
     /// The weights that minimise the variance, solved per pixel ([`OptimalSums`]).
     Optimal,
+    /// The same weights, each iteration of the pixel's samples weighted with those solved
+    /// from the iterations before it: unbiased ([`ProgressiveOptimal`]).
+    Progressive,
 }
 
 impl Combination {
-    /// Every combination, by its name on the command line: `balance`, `power`, `optimal`.
-    pub const ALL: [Combination; 3] = [
+    /// Every combination, by its name on the command line: `balance`, `power`, `optimal`,
+    /// `progressive`.
+    pub const ALL: [Combination; 4] = [
         Combination::Heuristic(MisHeuristic::Balance),
         Combination::Heuristic(MisHeuristic::Power),
         Combination::Optimal,
+        Combination::Progressive,
     ];
 
     /// The name used on the command line.
@@ -34,6 +39,7 @@ impl Combination {
         match self {
             Combination::Heuristic(heuristic) => heuristic.name(),
             Combination::Optimal => "optimal",
+            Combination::Progressive => "progressive",
         }
     }
 }
@@ -53,6 +59,9 @@ pub fn pixel_value<M: Materials, S: TimeSampler>(
     let mut certain = Vec3::ZERO;
     let mut weighted = Vec3::ZERO;
     let mut sums = OptimalSums::default();
+    let mut progressive = ProgressiveOptimal::default();
+    // The progressive variant's iterations: 4 samples, then 8, 16, ..., the last cut at `spp`.
+    let (mut iteration_size, mut iteration_end) = (FIRST_ITERATION, FIRST_ITERATION);
     for index in 0..spp {
         sampler.start_pixel_sample(pixel, index);
         let p_film = pixel.as_vec2() + sampler.get_pixel_2d();
@@ -62,14 +71,27 @@ pub fn pixel_value<M: Materials, S: TimeSampler>(
         match combination {
             Combination::Heuristic(heuristic) => weighted += heuristic_estimate(&draws, heuristic),
             Combination::Optimal => sums.add_draws(&draws),
+            Combination::Progressive => {
+                progressive.add_draws(&draws);
+                if index + 1 == iteration_end || index + 1 == spp {
+                    progressive.end_iteration();
+                    iteration_size *= 2;
+                    iteration_end += iteration_size;
+                }
+            }
         }
     }
     let n = spp.max(1) as f32;
     match combination {
         Combination::Heuristic(_) => (certain + weighted) / n,
         Combination::Optimal => certain / n + sums.estimate(),
+        Combination::Progressive => certain / n + progressive.estimate(),
     }
 }
+
+/// Samples in the progressive variant's first iteration, which has no weights yet (the
+/// balance heuristic); each later iteration has twice as many as the one before.
+pub const FIRST_ITERATION: u64 = 4;
 
 /// The two samples of `draws` weighted by `heuristic`, as chapter 08 weighs them: each
 /// sample's `f / p` times its weight against the other technique's density.
