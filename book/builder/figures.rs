@@ -27,6 +27,7 @@ pub const CHAPTERS: &[(&str, &str)] = &[
     ("ch07", "ch07-soft-shadows"),
     ("ch08", "ch08-path-tracing"),
     ("ch09", "ch09-materials"),
+    ("ch10", "ch10-optimal-mis"),
 ];
 
 /// Each chapter's figure writer, in the order of [`CHAPTERS`]. Only the `figures` feature
@@ -43,6 +44,7 @@ const WRITERS: &[WriteFigures] = &[
     ch07_soft_shadows::lab::figures::write_all,
     ch08_path_tracing::lab::figures::write_all,
     ch09_materials::lab::figures::write_all,
+    ch10_optimal_mis::lab::figures::write_all,
 ];
 
 /// The name of the table of every figure's cost, beside the chapters' folders.

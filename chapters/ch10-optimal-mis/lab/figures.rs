@@ -22,6 +22,9 @@ use workbench::output::{write_image, write_text};
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch10", out, quick)?;
     let level = figures.level();
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
     figures.make("the zero-variance plane", |out| {
         side_by_side(out, "plane-under-sky", 4, 4, level, Reference::Exact)
     })?;
