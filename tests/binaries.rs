@@ -21,10 +21,11 @@ pub const CHAPTERS: &[&str] = &[
     "ch07-soft-shadows",
     "ch08-path-tracing",
     "ch09-materials",
+    "ch10-optimal-mis",
 ];
 
 /// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
-/// Chapter 08 and `ch09-materials` render only scene files: run them with [`scene_args`].
+/// Chapters 08, 09 and 10 render only scene files: run them with [`scene_args`].
 pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch01-whitted",
     "ch03-anti-aliasing",
@@ -34,6 +35,7 @@ pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch07-soft-shadows",
     "ch08-path-tracing",
     "ch09-materials",
+    "ch10-optimal-mis",
 ];
 
 /// The suite's smallest scene file (8x6 pixels, one sample per pixel, a ball on a floor under
@@ -47,7 +49,7 @@ pub const TINY_SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/tiny.x
 /// file's.
 pub fn scene_args(chapter: &str) -> &'static [&'static str] {
     match chapter {
-        "ch08-path-tracing" | "ch09-materials" => &["--scene", TINY_SCENE],
+        "ch08-path-tracing" | "ch09-materials" | "ch10-optimal-mis" => &["--scene", TINY_SCENE],
         _ => &[],
     }
 }
