@@ -89,7 +89,11 @@ impl OptimalSums {
     /// `α`, per colour channel, solving `A α = b`; `None` when the system is too nearly
     /// singular ([`SMALLEST_RELATIVE_DETERMINANT`]). A technique that never gave a density
     /// (`A_ii` = 0) takes no part: the other one alone is solved.
+    ///
+    /// Which two cases leave nothing to solve, and which one the other technique alone? How
+    /// nearly singular may `A` be before its solution means nothing?
     pub fn solve(&self) -> Option<[DVec3; 2]> {
+        // BEGIN SOLUTION
         let [[a11, a12], [_, a22]] = self.a;
         let [b1, b2] = self.b;
         match (a11 > 0.0, a22 > 0.0) {
@@ -106,6 +110,7 @@ impl OptimalSums {
                 Some([(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det])
             }
         }
+        // END SOLUTION
     }
     // ANCHOR_END: solve
 
@@ -313,6 +318,81 @@ mod tests {
             (direct - 1.0 / 3.0).abs() > 4.0 * direct_se,
             "the direct estimator from 8 samples should be visibly biased: {direct} ± {direct_se}"
         );
+    }
+
+    /// Sums with the given `A` (symmetric) and `b` (the same in every channel).
+    fn sums_of(a: [[f64; 2]; 2], b: [f64; 2]) -> OptimalSums {
+        OptimalSums {
+            a,
+            b: b.map(DVec3::splat),
+            ..OptimalSums::default()
+        }
+    }
+
+    /// The check of exercise `ch10-optimal-solve`: `α` of a known system, the two techniques
+    /// told apart; a technique that never drew; none that drew; a system too nearly singular.
+    #[test]
+    fn exercise_optimal_solve() {
+        let close =
+            |a: DVec3, expected: f64| (a - DVec3::splat(expected)).abs().max_element() < 1e-9;
+        // A = [[2, 1], [1, 3]], b = [5, 10]: α = (1, 3).
+        let Some(alpha) = sums_of([[2.0, 1.0], [1.0, 3.0]], [5.0, 10.0]).solve() else {
+            panic!(
+                "solve gave None for A = [[2, 1], [1, 3]], b = [5, 10], whose determinant is 5: \
+                 is the test for a singular system against the right quantity?"
+            );
+        };
+        if close(alpha[0], 3.0) && close(alpha[1], 1.0) {
+            panic!(
+                "α came out as (3, 1) where it is (1, 3): the two techniques' values are swapped \
+                 (in Cramer's rule, the numerator of α_1 puts b in the first column of A)"
+            );
+        }
+        assert!(
+            close(alpha[0], 1.0) && close(alpha[1], 3.0),
+            "for A = [[2, 1], [1, 3]] and b = [5, 10], α should be (1, 3), and is ({}, {}): \
+             check the determinant A_11 A_22 - A_12² and the sign of each A_12 term",
+            alpha[0].x,
+            alpha[1].x
+        );
+        // The light technique never drew: A_11 = A_12 = b_1 = 0.
+        let alone = sums_of([[0.0, 0.0], [0.0, 4.0]], [0.0, 2.0]).solve();
+        let Some(alone) = alone else {
+            panic!(
+                "solve gave None when only the BSDF technique drew (A_11 = 0): that technique \
+                 alone is solved, α_2 = b_2 / A_22, and the other α is 0"
+            );
+        };
+        assert!(
+            alone[0] == DVec3::ZERO && close(alone[1], 0.5),
+            "when only the BSDF technique drew (A = [[0, 0], [0, 4]], b = [0, 2]) α should be \
+             (0, 0.5), and is ({}, {}): a technique that never drew takes no part",
+            alone[0].x,
+            alone[1].x
+        );
+        let only_light = sums_of([[4.0, 0.0], [0.0, 0.0]], [2.0, 0.0]).solve();
+        assert!(
+            only_light.is_some_and(|a| close(a[0], 0.5) && a[1] == DVec3::ZERO),
+            "when only the light technique drew (A = [[4, 0], [0, 0]], b = [2, 0]) α should be \
+             (0.5, 0), and is {only_light:?}"
+        );
+        let none = OptimalSums::default().solve();
+        assert!(
+            none == Some([DVec3::ZERO; 2]),
+            "with no samples at all α should be (0, 0), nothing to add, and is {none:?}"
+        );
+        // Proportional densities: A = [[1, 2], [2, 4]] is singular, and so is anything within
+        // rounding of it.
+        for nudge in [0.0, 1e-13] {
+            let singular = sums_of([[1.0, 2.0], [2.0, 4.0 + nudge]], [1.0, 2.0]).solve();
+            assert!(
+                singular.is_none(),
+                "A = [[1, 2], [2, {}]] is singular to within rounding (det / (A_11 A_22) below \
+                 SMALLEST_RELATIVE_DETERMINANT), so solve should give None and let the balance \
+                 heuristic stand in; it gave {singular:?}",
+                4.0 + nudge
+            );
+        }
     }
 
     /// Equal densities everywhere cannot be told apart: the system is singular, and the
