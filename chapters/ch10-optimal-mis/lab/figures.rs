@@ -6,12 +6,12 @@ use crate::render_direct_with;
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
-use ch08_path_tracing::PathOptions;
+use ch08_path_tracing::{MisHeuristic, PathOptions};
 use ch09_materials::SceneMaterials;
 use common::image::Image;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use workbench::convergence::{
     Technique, convergence_markdown, plot_error_vs_time, run_convergence, write_convergence_csv,
 };
@@ -70,35 +70,15 @@ const EQUAL_TIME_SCENES: [(&str, &str, &str); 3] = [
 /// left out: `NAME-error-time.csv`, its
 /// log-log plot `NAME-error-time.png`, and the table `NAME-error-time.md`.
 fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyhow::Result<()> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
-    let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
-    let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
-    let film = world.scene.film;
-    let (width, height) = level.pick((film.width / 2, film.height / 2), (film.width, film.height));
-    // Made once: the renders are timed, and the tables are the same for every one.
-    let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
     // The lights the camera sees are left out (Mitsuba's `hide_emitters`): the noise of their
     // edges is the same for every combination and would drown the difference.
     let options = PathOptions {
         hide_emitters: true,
         ..PathOptions::default()
     };
-    let render = |spp, seed, combination| -> Image {
-        let settings = RenderSettings::new(width, height, spp);
-        let sampler = IndependentSampler::new(seed);
-        let materials = materials.clone();
-        render_direct_with(
-            &world,
-            materials,
-            options,
-            &Lens::PINHOLE,
-            &settings,
-            &sampler,
-            combination,
-        )
-        .image
-    };
-    let reference = render(level.pick(1024, 4096), 1_000, Combination::ALL[1]);
+    let renders = DirectRenders::of(file, level, options)?;
+    let render = |spp, seed, combination| renders.render(spp, seed, combination);
+    let reference = render(level.pick(1024, 4096), 1_000, POWER);
     let techniques: Vec<Technique> = Combination::ALL
         .into_iter()
         .map(|combination| {
@@ -129,13 +109,54 @@ enum Reference {
     Power,
 }
 
-/// The chapter's scene file `name`, ready to trace.
-fn scene(name: &str) -> anyhow::Result<MotionScene> {
-    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "scenes", &format!("{name}.xml")]
-        .iter()
-        .collect();
-    let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
-    MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)
+/// The power heuristic, what the references are rendered with.
+const POWER: Combination = Combination::Heuristic(MisHeuristic::Power);
+
+/// A scene file rendered again and again, as the figures render it: its direct light at half
+/// its film's size at the quick level, at its size for the book, with `options`; the materials
+/// tabulated once, since the renders are timed and the tables are the same for every one.
+struct DirectRenders {
+    world: MotionScene,
+    materials: SceneMaterials,
+    options: PathOptions,
+    width: u32,
+    height: u32,
+}
+
+impl DirectRenders {
+    /// The scene file `file` (relative to the crate), ready to render.
+    fn of(file: &str, level: Level, options: PathOptions) -> anyhow::Result<Self> {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+        let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
+        let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
+        let film = world.scene.film;
+        let (width, height) =
+            level.pick((film.width / 2, film.height / 2), (film.width, film.height));
+        let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
+        Ok(Self {
+            world,
+            materials,
+            options,
+            width,
+            height,
+        })
+    }
+
+    /// The image at `spp` samples per pixel with `seed`, combined as `combination` says.
+    fn render(&self, spp: u64, seed: u64, combination: Combination) -> Image {
+        let settings = RenderSettings::new(self.width, self.height, spp);
+        let sampler = IndependentSampler::new(seed);
+        render_direct_with(
+            &self.world,
+            self.materials.clone(),
+            self.options,
+            &Lens::PINHOLE,
+            &settings,
+            &sampler,
+            combination,
+        )
+        .image
+    }
 }
 
 /// The scene `name` rendered with each combination at `spp` samples per pixel (half size at
@@ -149,34 +170,16 @@ fn side_by_side(
     level: Level,
     reference: Reference,
 ) -> anyhow::Result<()> {
-    let world = scene(name)?;
-    let film = world.scene.film;
-    let (width, height) = level.pick((film.width / 2, film.height / 2), (film.width, film.height));
-    // Made once: the renders are timed, and the tables are the same for every one.
-    let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
-    let options = PathOptions::default();
-    let render = |spp, seed, combination| -> Image {
-        let settings = RenderSettings::new(width, height, spp);
-        let sampler = IndependentSampler::new(seed);
-        let materials = materials.clone();
-        render_direct_with(
-            &world,
-            materials,
-            options,
-            &Lens::PINHOLE,
-            &settings,
-            &sampler,
-            combination,
-        )
-        .image
-    };
+    let renders = DirectRenders::of(&format!("scenes/{name}.xml"), level, PathOptions::default())?;
+    let (width, height) = (renders.width, renders.height);
+    let render = |spp, seed, combination| renders.render(spp, seed, combination);
     let expected = match reference {
         Reference::Exact => Image {
             width,
             height,
             pixels: vec![glam::Vec3::new(1.0, 0.5, 0.25); (width * height) as usize],
         },
-        Reference::Power => render(reference_spp, 1_000, Combination::ALL[1]),
+        Reference::Power => render(reference_spp, 1_000, POWER),
     };
     let mut table = String::from("| combination | RMSE |\n|---|---:|\n");
     for combination in Combination::ALL {
