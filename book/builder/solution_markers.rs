@@ -337,11 +337,16 @@ pub fn splice_code(source: &str, anchor: &str, code: &str) -> Result<String, Mar
             .iter()
             .map(|line| (*line).to_owned()),
     );
-    let mut text = out.join("\n");
+    Ok(joined_like(&out, source))
+}
+
+/// `lines` joined into a file's text, ending with a line break if `source` does.
+fn joined_like(lines: &[String], source: &str) -> String {
+    let mut text = lines.join("\n");
     if source.ends_with('\n') {
         text.push('\n');
     }
-    Ok(text)
+    text
 }
 
 /// The parameters of the function whose body holds the exercise's solution that nothing
@@ -465,11 +470,7 @@ pub fn mark_solution(source: &str, anchor: &str, line: &str) -> Result<String, M
     let indent = &begin[..begin.len() - begin.trim_start().len()];
     let mut out: Vec<String> = lines.iter().map(|line| (*line).to_owned()).collect();
     out.insert(span.solution.start + 1, format!("{indent}{line}"));
-    let mut text = out.join("\n");
-    if source.ends_with('\n') {
-        text.push('\n');
-    }
-    Ok(text)
+    Ok(joined_like(&out, source))
 }
 
 /// `source` with the solution region of exercise `anchor` made a switch among its recorded
@@ -522,11 +523,7 @@ pub fn switch_solution(
             .iter()
             .map(|line| (*line).to_owned()),
     );
-    let mut text = out.join("\n");
-    if source.ends_with('\n') {
-        text.push('\n');
-    }
-    Ok(text)
+    Ok(joined_like(&out, source))
 }
 
 /// One exercise to cut out of a file: its anchor and the message of its `todo!`.
