@@ -22,10 +22,11 @@ pub const CHAPTERS: &[&str] = &[
     "ch08-path-tracing",
     "ch09-materials",
     "ch10-optimal-mis",
+    "ch11-path-guiding",
 ];
 
 /// The chapters whose `render` renders (chapter 02 is about estimators; its `render` refuses).
-/// Chapters 08, 09 and 10 render only scene files: run them with [`scene_args`].
+/// Chapters 08 to 11 render only scene files: run them with [`scene_args`].
 pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch01-whitted",
     "ch03-anti-aliasing",
@@ -36,6 +37,7 @@ pub const RENDERING_CHAPTERS: &[&str] = &[
     "ch08-path-tracing",
     "ch09-materials",
     "ch10-optimal-mis",
+    "ch11-path-guiding",
 ];
 
 /// The suite's smallest scene file (8x6 pixels, one sample per pixel, a ball on a floor under
@@ -49,7 +51,9 @@ pub const TINY_SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/tiny.x
 /// file's.
 pub fn scene_args(chapter: &str) -> &'static [&'static str] {
     match chapter {
-        "ch08-path-tracing" | "ch09-materials" | "ch10-optimal-mis" => &["--scene", TINY_SCENE],
+        "ch08-path-tracing" | "ch09-materials" | "ch10-optimal-mis" | "ch11-path-guiding" => {
+            &["--scene", TINY_SCENE]
+        }
         _ => &[],
     }
 }

@@ -138,6 +138,13 @@ fn interrupt_and_check(chapter: &str) {
 
         // Complete: the image is exactly the render asked for that many samples.
         let partial = workbench::output::read_image(Path::new(out)).unwrap();
+        assert_eq!((partial.width, partial.height), (16, 12));
+        assert!(partial.pixels.iter().all(|p| p.is_finite()));
+        // A guided render's training depends on its whole budget, so its interrupted image,
+        // the last training iteration completed, is no shorter render's image.
+        if chapter == "ch11-path-guiding" {
+            return;
+        }
         let again = dir.path().join("again.pfm");
         let again_stats = dir.path().join("again.json");
         let done = run_chapter(
@@ -155,8 +162,6 @@ fn interrupt_and_check(chapter: &str) {
             String::from_utf8_lossy(&done.stderr)
         );
         let full = workbench::output::read_image(&again).unwrap();
-        assert_eq!((partial.width, partial.height), (16, 12));
-        assert!(partial.pixels.iter().all(|p| p.is_finite()));
         assert!(
             partial == full,
             "{chapter}: the interrupted image is not that of {spp} complete samples per pixel"

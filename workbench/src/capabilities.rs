@@ -80,6 +80,11 @@ impl Chapter {
         number: 10,
         package: "ch10-optimal-mis",
     };
+    /// The lecture's recent advances: path guiding.
+    pub const PATH_GUIDING: Chapter = Chapter {
+        number: 11,
+        package: "ch11-path-guiding",
+    };
 }
 
 /// Something a scene may use that not every chapter renders.

@@ -18,11 +18,13 @@
 mod budget;
 mod gather;
 mod progress;
+mod recorded;
 mod stats;
 mod stop;
 
 pub use budget::Budget;
 pub use gather::{GatherPixel, render_gathered, render_per_pixel};
+pub use recorded::{PassCost, render_recorded};
 pub use stats::RenderStats;
 pub use stop::StopFlag;
 

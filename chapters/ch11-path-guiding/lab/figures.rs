@@ -1,0 +1,187 @@
+//! The chapter's figures: chapter 08's path tracer and the two guided ones side by side on the
+//! door-gap room, with their errors; their error against time there and on chapter 08's
+//! Cornell box, where there is little to guide; what the training learnt and cost.
+
+use crate::render_guided;
+use crate::training::GuidingOptions;
+use crate::{GuidedRender, GuidingTarget};
+use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
+use ch06_fuzzy_reflections::FuzzMethod;
+use ch08_path_tracing::PathOptions;
+use ch08_path_tracing::lab::scene_file::path_options;
+use ch09_materials::SceneMaterials;
+use common::film::PixelBoxFilter;
+use common::render::RenderSettings;
+use common::sampler::IndependentSampler;
+use std::path::Path;
+use workbench::convergence::{
+    Technique, convergence_markdown, plot_error_vs_time, run_convergence, write_convergence_csv,
+};
+use workbench::figure_set::{FigureSet, Level};
+use workbench::output::{write_image, write_text};
+
+/// Writes every figure of the chapter to `out` (small and fast with `quick`).
+pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
+    let mut figures = FigureSet::start("ch11", out, quick)?;
+    let level = figures.level();
+    figures.make("the door-gap room side by side", |out| {
+        side_by_side(out, "door-gap", level)
+    })?;
+    for (name, file, what) in EQUAL_TIME_SCENES {
+        figures.make(what, |out| error_against_time(out, name, file, level))?;
+    }
+    figures.finish()
+}
+
+/// The scenes whose error is measured against time: the door-gap room, where guiding should
+/// pay, and chapter 08's Cornell box, lit from a panel every point sees, where it has little to
+/// learn and its cost shows.
+const EQUAL_TIME_SCENES: [(&str, &str, &str); 2] = [
+    (
+        "door-gap",
+        "scenes/door-gap.xml",
+        "the error against time: the door-gap room",
+    ),
+    (
+        "cornell-box",
+        "../ch08-path-tracing/scenes/cornell-box.xml",
+        "the error against time: the Cornell box",
+    ),
+];
+
+/// The three ways of choosing directions, by their names in the figures.
+const METHODS: [(&str, Option<GuidingTarget>); 3] = [
+    ("off", None),
+    ("radiance", Some(GuidingTarget::Radiance)),
+    ("variance", Some(GuidingTarget::Variance)),
+];
+
+/// A scene file rendered again and again, as the figures render it: at half its film's size
+/// at the quick level, at its size for the book, with the file's path options; the materials
+/// tabulated once.
+struct Renders {
+    world: MotionScene,
+    materials: SceneMaterials,
+    options: PathOptions,
+    width: u32,
+    height: u32,
+}
+
+impl Renders {
+    /// The scene file `file` (relative to the crate), ready to render.
+    fn of(file: &str, level: Level) -> anyhow::Result<Self> {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+        let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
+        let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
+        let film = world.scene.film;
+        let (width, height) =
+            level.pick((film.width / 2, film.height / 2), (film.width, film.height));
+        let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
+        let options = path_options(&world.scene);
+        Ok(Self {
+            world,
+            materials,
+            options,
+            width,
+            height,
+        })
+    }
+
+    /// The render of a budget of `spp` samples per pixel with `seed`, guided towards `target`
+    /// (not at all with `None`): with guiding, the budget pays for training and final pass.
+    fn render(&self, spp: u64, seed: u64, target: Option<GuidingTarget>) -> GuidedRender {
+        let settings = RenderSettings::new(self.width, self.height, spp);
+        let pixels = u64::from(self.width) * u64::from(self.height);
+        render_guided(
+            &self.world,
+            self.materials.clone(),
+            self.options,
+            target.map(|t| GuidingOptions::for_image(t, pixels)),
+            &Lens::PINHOLE,
+            &settings,
+            &IndependentSampler::new(seed),
+            &PixelBoxFilter,
+        )
+    }
+}
+
+/// The scene `name` with each method at one budget, each image written as `NAME-METHOD.png`,
+/// with a table of their RMSE against a long unguided render and their times (`NAME.md`), and
+/// the training of the variance-aware guide iteration by iteration (`NAME-training.md`).
+fn side_by_side(out: &Path, name: &str, level: Level) -> anyhow::Result<()> {
+    let renders = Renders::of(&format!("scenes/{name}.xml"), level)?;
+    let reference = renders
+        .render(level.pick(256, 4096), 1_000, None)
+        .output
+        .image;
+    let spp = level.pick(16, 256);
+    let mut table = String::from(
+        "| guiding | samples per pixel in the image | seconds | RMSE |\n|---|---:|---:|---:|\n",
+    );
+    let mut training = String::new();
+    for (method, target) in METHODS {
+        let rendered = renders.render(spp, 1, target);
+        let image = &rendered.output.image;
+        write_image(&out.join(format!("{name}-{method}.png")), image)?;
+        let rmse = common::metrics::rmse(image, &reference);
+        table += &format!(
+            "| {method} | {} | {:.2} | {rmse:.3e} |\n",
+            rendered.output.stats.spp, rendered.output.stats.seconds
+        );
+        if target == Some(GuidingTarget::Variance)
+            && let Some(trained) = &rendered.training
+        {
+            training = String::from(
+                "| iteration | samples per pixel | seconds | spatial leaves | quadtree nodes | memory (kB) |\n|---:|---:|---:|---:|---:|---:|\n",
+            );
+            for (k, i) in trained.iterations.iter().enumerate() {
+                training += &format!(
+                    "| {} | {} | {:.3} | {} | {} | {:.0} |\n",
+                    k + 1,
+                    i.spp,
+                    i.seconds,
+                    i.leaves,
+                    i.quadtree_nodes,
+                    i.memory_bytes as f64 / 1024.0
+                );
+            }
+        }
+    }
+    write_text(&out.join(format!("{name}.md")), &table)?;
+    write_text(&out.join(format!("{name}-training.md")), &training)?;
+    Ok(())
+}
+
+/// The three methods on the scene file `file` (relative to the crate) at growing budgets,
+/// timed (training included), against a long unguided render: `NAME-error-time.csv`, its
+/// log-log plot `NAME-error-time.png`, and the table `NAME-error-time.md`.
+fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyhow::Result<()> {
+    let renders = Renders::of(file, level)?;
+    let reference = renders
+        .render(level.pick(256, 4096), 1_000, None)
+        .output
+        .image;
+    let renders = &renders;
+    let techniques: Vec<Technique> = METHODS
+        .into_iter()
+        .map(|(method, target)| {
+            Technique::new(method, move |spp| {
+                renders.render(spp, 1, target).output.image
+            })
+        })
+        .collect();
+    let budgets: &[u64] = level.pick(&[4, 16], &[4, 16, 64, 256, 1024]);
+    let records = run_convergence(&techniques, budgets, &reference);
+    write_convergence_csv(&out.join(format!("{name}-error-time.csv")), &records)?;
+    plot_error_vs_time(
+        &out.join(format!("{name}-error-time.png")),
+        &format!("{name}: error against time, path guiding"),
+        &records,
+    )?;
+    write_text(
+        &out.join(format!("{name}-error-time.md")),
+        &convergence_markdown(&records, "samples per pixel (the budget)"),
+    )?;
+    Ok(())
+}

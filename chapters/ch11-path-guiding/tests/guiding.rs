@@ -1,0 +1,175 @@
+//! The guided path tracer: unbiased whatever it learnt, chapter 08's path when it has learnt
+//! nothing, the same image on any number of threads.
+
+use ch04_depth_of_field::Lens;
+use ch05_motion_blur::MotionScene;
+use ch06_fuzzy_reflections::FuzzMethod;
+use ch07_soft_shadows::{AreaLights, LightSampling};
+use ch08_path_tracing::{LectureMaterials, PathOptions, PathTracer, SceneLights};
+use ch11_path_guiding::spatial::SpatialTree;
+use ch11_path_guiding::{GuidedPathTracer, GuidingOptions, GuidingTarget, render_guided};
+use common::Ray;
+use common::film::PixelBoxFilter;
+use common::render::RenderSettings;
+use common::sampler::{IndependentSampler, Sampler};
+use common::scene::Material;
+use glam::{UVec2, Vec3};
+
+const MATERIALS: LectureMaterials = LectureMaterials {
+    fuzz: FuzzMethod::Lobe,
+};
+
+fn tracer<'a>(
+    world: &'a MotionScene,
+    area_lights: &'a AreaLights,
+    options: PathOptions,
+) -> PathTracer<'a> {
+    PathTracer {
+        world,
+        lights: SceneLights::of(world, area_lights, LightSampling::solid_angle()),
+        options,
+        materials: MATERIALS,
+    }
+}
+
+/// The door-gap room, its camera and its settings at `width x height`.
+fn door_gap(width: u32, height: u32) -> (MotionScene, Lens, RenderSettings, PathOptions) {
+    let path = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/door-gap.xml"));
+    let (world, side, mut settings, _) = ch05_motion_blur::lab::scene_file::for_agreement(
+        path,
+        &ch11_path_guiding::lab::CAPABILITIES,
+    )
+    .expect("the shipped scene reads");
+    settings.width = width;
+    settings.height = height;
+    let options = ch08_path_tracing::lab::scene_file::path_options(&world.scene);
+    (world, side.lens, settings, options)
+}
+
+#[test]
+fn with_nothing_learnt_the_path_is_chapter_08s() {
+    let (world, _, _, options) = door_gap(8, 6);
+    let area_lights = AreaLights::of(&world.scene);
+    let plain = tracer(&world, &area_lights, options);
+    let guides = SpatialTree::new(world.scene.geometry.bounds());
+    let guided = GuidedPathTracer {
+        tracer: &plain,
+        guides: &guides,
+        bsdf_fraction: 0.5,
+    };
+    let eye = Vec3::new(-1.6, 1.3, 1.7);
+    let mut sampler = IndependentSampler::new(5);
+    let mut lit = 0;
+    for i in 0..2000u64 {
+        let target = Vec3::new(
+            2.0 - 0.002 * i as f32,
+            0.2 + 0.0008 * i as f32,
+            -1.5 + 0.001 * i as f32,
+        );
+        let ray = Ray::new(eye, (target - eye).normalize());
+        sampler.start_pixel_sample(UVec2::ZERO, i);
+        let theirs = plain.radiance(&ray, &mut sampler.clone());
+        let ours = guided.radiance(&ray, &mut sampler, None);
+        assert_eq!(
+            ours.to_array().map(f32::to_bits),
+            theirs.to_array().map(f32::to_bits),
+            "path {i}: with no guide learnt, the guided path drew other numbers or added \
+             other light than chapter 08's ({ours} against {theirs})"
+        );
+        lit += usize::from(theirs != Vec3::ZERO);
+    }
+    assert!(lit > 15, "the paths found light ({lit} of 2000)");
+}
+
+/// The mean and standard error of the green radiance along `ray` over `n` guided paths.
+fn mean_radiance(guided: &GuidedPathTracer<'_, LectureMaterials>, ray: &Ray, n: u64) -> (f64, f64) {
+    let mut sampler = IndependentSampler::new(17);
+    let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+    for i in 0..n {
+        sampler.start_pixel_sample(UVec2::new(3, 4), i);
+        let l = f64::from(guided.radiance(ray, &mut sampler, None).y);
+        assert!(l.is_finite() && l >= 0.0, "path {i} brought back {l}");
+        sum += l;
+        sum2 += l * l;
+    }
+    let mean = sum / n as f64;
+    (
+        mean,
+        ((sum2 / n as f64 - mean * mean).max(0.0) / n as f64).sqrt(),
+    )
+}
+
+#[test]
+fn guided_paths_are_unbiased_whatever_the_guides_learnt() {
+    // A grey sphere (albedo 0.5) under a sky of 1: convex, so it sends back exactly 0.5.
+    let world = ch08_path_tracing::furnace::spheres(&[Material::diffuse(Vec3::splat(0.5))], 6);
+    let area_lights = AreaLights::of(&world.scene);
+    for nee in [true, false] {
+        let options = PathOptions {
+            nee,
+            ..PathOptions::with_depth(6)
+        };
+        let plain = tracer(&world, &area_lights, options);
+        for target in [GuidingTarget::Radiance, GuidingTarget::Variance] {
+            let settings = RenderSettings::new(24, 24, 64);
+            let trained = render_guided(
+                &world,
+                MATERIALS,
+                options,
+                Some(GuidingOptions::for_image(target, 24 * 24)),
+                &Lens::PINHOLE,
+                &settings,
+                &IndependentSampler::new(3),
+                &PixelBoxFilter,
+            )
+            .training
+            .expect("guided");
+            let guided = GuidedPathTracer {
+                tracer: &plain,
+                guides: &trained.guides,
+                bsdf_fraction: 0.5,
+            };
+            let eye = Vec3::new(0.0, 0.5, 4.0);
+            let ray = Ray::new(eye, (Vec3::new(0.1, 0.3, 0.0) - eye).normalize());
+            let hit_guide = trained.guides.guide_of(Vec3::new(0.05, 0.3, 0.95));
+            assert!(
+                trained.guides.guides[hit_guide as usize].sampling.total() > 0.0,
+                "the guide at the sphere's front learnt something"
+            );
+            let (mean, error) = mean_radiance(&guided, &ray, 40_000);
+            assert!(
+                (mean - 0.5).abs() < 4.0 * error + 1e-4,
+                "{} guiding, nee {nee}: the sphere sends back {mean} ± {error}, not 0.5",
+                target.name()
+            );
+        }
+    }
+}
+
+#[test]
+fn a_guided_render_is_the_same_on_any_number_of_threads() {
+    let (world, lens, settings, options) = door_gap(40, 30);
+    let render = |threads| {
+        let mut settings = settings.clone();
+        settings.threads = Some(threads);
+        settings.budget = common::render::Budget::Samples(16);
+        render_guided(
+            &world,
+            MATERIALS,
+            options,
+            Some(GuidingOptions::for_image(GuidingTarget::Variance, 1200)),
+            &lens,
+            &settings,
+            &IndependentSampler::new(9),
+            &PixelBoxFilter,
+        )
+    };
+    let (one, two) = (render(1), render(2));
+    assert_eq!(one.output.image.pixels, two.output.image.pixels);
+    let (a, b) = (one.training.unwrap(), two.training.unwrap());
+    assert_eq!(
+        a.guides, b.guides,
+        "the guides learnt depend on the threads"
+    );
+    assert!(a.iterations.len() >= 2 && a.spp + one.output.stats.spp == 16);
+}
