@@ -28,6 +28,7 @@ mod exercise_calls;
 mod exercise_list;
 mod exercise_needs;
 mod exercise_preprocessor;
+mod figure_refs;
 mod figures;
 mod giveaways;
 mod katex_offline;
@@ -442,7 +443,11 @@ fn build_book(root: &Path, quick: bool) -> Result<()> {
     let book_dir = root.join("book");
     mdbook_log::install();
 
-    regenerate_figures(&book_dir.join("src").join("figures"), quick)?;
+    let figures_dir = book_dir.join("src").join("figures");
+    regenerate_figures(&figures_dir, quick)?;
+    // No page may show a figure the writers did not write (a broken image, a missing table).
+    let chapters: Vec<&str> = figures::CHAPTERS.iter().map(|(id, _)| *id).collect();
+    figure_refs::check(&book_dir.join("src"), &figures_dir, &chapters)?;
     demos::build(root, &book_dir.join("src"))?;
 
     println!("Building the site with mdBook and KaTeX ...");

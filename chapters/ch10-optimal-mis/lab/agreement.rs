@@ -22,11 +22,23 @@ use crate::render_direct_with;
 pub const AGREEMENT: AgreementSet = AgreementSet {
     label: "chapter 10",
     scenes_dir: concat!(env!("CARGO_MANIFEST_DIR"), "/scenes"),
-    scenes: &[AgreementScene {
-        name: "glossy-floor",
-        checks: "a sphere light over a glossy (GGX, alpha 0.15) metal floor and a matte box: the optimal weights solved per pixel from its samples, with occlusion, empty BSDF samples and the light seen directly",
-        variant: MITSUBA_VARIANT,
-    }],
+    scenes: &[
+        AgreementScene {
+            name: "glossy-floor",
+            checks: "a sphere light over a glossy (GGX, alpha 0.15) metal floor and a matte box: the optimal weights solved per pixel from its samples, with occlusion, empty BSDF samples and the light seen directly",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "veach-plates",
+            checks: "chapter 09's Veach plates, lit directly: four glossy plates of growing roughness and four sphere lights of equal power and growing size, the light sample best on some plates and the BSDF sample on others, the lights hidden",
+            variant: MITSUBA_VARIANT,
+        },
+        AgreementScene {
+            name: "cornell-box",
+            checks: "chapter 08's Cornell box, lit directly: matte walls under a ceiling panel, and a mirror and a glass sphere whose delta lobes only the BSDF sample follows (kept apart from the combination), the panel hidden",
+            variant: MITSUBA_VARIANT,
+        },
+    ],
     render: render_scene_file,
 };
 

@@ -43,7 +43,7 @@ fn alpha(n: u32) -> [f64; 2] {
                 pdf: [p[0] as f32, p[1] as f32],
             })
         });
-        sums.add_draws(&SurfaceDraws {
+        sums.add(&SurfaceDraws {
             certain: Vec3::ZERO,
             drawn,
         });

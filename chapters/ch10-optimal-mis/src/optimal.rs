@@ -13,9 +13,9 @@
 //! integrates to 1). Where `f` is a combination of the densities, nothing is left, and the
 //! estimate has no noise at all.
 //!
-//! `A` and `b` are integrals too, and the samples the pixel draws anyway estimate them, each
-//! sample `x` adding `p_i p_k / (Σ_j p_j)²` to `A_ik` and `f p_i / (Σ_j p_j)²` to `b_i` (the
-//! balance heuristic's estimates, from all the samples of both techniques). With `A` and `b`
+//! `A` and `b` are integrals too, and the samples the pixel draws anyway estimate them
+//! ([`OptimalSums::add`], the balance heuristic's estimates, from all the samples of both
+//! techniques). With `A` and `b`
 //! estimated from the very samples the estimate then uses, the left-over sum vanishes exactly,
 //! and the pixel's value is just `Σ_i α_i`: the paper's *direct estimator*. It is consistent,
 //! not unbiased (`α` and the samples it is applied to are the same), and its bias shrinks with
@@ -26,7 +26,7 @@
 //! it can reach; the share it covers is estimated by its samples that did not fail, so
 //! `Σ_i α_i c_i` with `c_i` the share of technique `i`'s samples that gave a direction.
 
-use crate::techniques::{SurfaceDraws, TechniqueSample};
+use crate::techniques::SurfaceDraws;
 use glam::{DVec3, Vec3};
 
 /// The sums of one pixel's samples from which the optimal combination is solved.
@@ -51,37 +51,43 @@ pub struct OptimalSums {
 pub const SMALLEST_RELATIVE_DETERMINANT: f64 = 1e-9;
 
 impl OptimalSums {
-    /// Adds one pixel sample's draws: the sample of each technique that gave a direction.
-    pub fn add_draws(&mut self, draws: &SurfaceDraws) {
+    // ANCHOR: add
+    /// Adds one pixel sample's draws to the sums: the sample of each technique that gave a
+    /// direction, to `A`, to `b` and to the balance heuristic's estimate; and the pixel sample
+    /// to the counts.
+    ///
+    /// `A_ik` and `b_i` are integrals over the directions, and the pixel's samples, of both
+    /// techniques, are their estimate: from which density, all told, does a sample come, and
+    /// what does the integral's estimate take from each sample? A light sample whose shadow ray
+    /// was blocked carries `f` = 0: does it add to `A`? Which count does a technique that drew
+    /// nothing change, and which does it leave alone? Which sample can add nothing at all
+    /// without a NaN getting into the sums, and in which precision are the terms worked out?
+    pub fn add(&mut self, draws: &SurfaceDraws) {
+        // BEGIN SOLUTION
         self.samples += 1;
         for (technique, drawn) in draws.drawn.iter().enumerate() {
-            if let Some(sample) = drawn {
-                self.drawn[technique] += 1;
-                self.add(sample);
+            let Some(sample) = drawn else {
+                continue;
+            };
+            self.drawn[technique] += 1;
+            let p = sample.pdf.map(f64::from);
+            let mixture = p[0] + p[1];
+            // No technique could have drawn it, or its value is not a number: nothing to add.
+            let usable = mixture > 0.0 && mixture.is_finite() && sample.f.is_finite();
+            if !usable {
+                continue;
             }
-        }
-    }
-
-    // ANCHOR: add
-    /// Adds one technique's sample to the sums: its part of `A`, of `b` and of the balance
-    /// heuristic's estimate. A sample that carries nothing (`f` = 0: the light blocked, no
-    /// light found) still adds to `A`. A sample no technique could have drawn adds nothing.
-    pub fn add(&mut self, sample: &TechniqueSample) {
-        let p = sample.pdf.map(f64::from);
-        let mixture = p[0] + p[1];
-        let usable = mixture > 0.0 && mixture.is_finite() && sample.f.is_finite();
-        if !usable {
-            return;
-        }
-        let f = sample.f.as_dvec3();
-        let scale = 1.0 / (mixture * mixture);
-        for i in 0..2 {
-            for k in 0..2 {
-                self.a[i][k] += p[i] * p[k] * scale;
+            let f = sample.f.as_dvec3();
+            let scale = 1.0 / (mixture * mixture);
+            for i in 0..2 {
+                for k in 0..2 {
+                    self.a[i][k] += p[i] * p[k] * scale;
+                }
+                self.b[i] += f * (p[i] * scale);
             }
-            self.b[i] += f * (p[i] * scale);
+            self.balance += f / mixture;
         }
-        self.balance += f / mixture;
+        // END SOLUTION
     }
     // ANCHOR_END: add
 
@@ -165,8 +171,8 @@ pub struct ProgressiveOptimal {
 
 impl ProgressiveOptimal {
     /// Adds one pixel sample's draws to the current iteration and to the sums.
-    pub fn add_draws(&mut self, draws: &SurfaceDraws) {
-        self.sums.add_draws(draws);
+    pub fn add(&mut self, draws: &SurfaceDraws) {
+        self.sums.add(draws);
         self.iteration_samples += 1;
         for (technique, drawn) in draws.drawn.iter().enumerate() {
             let Some(sample) = drawn else {
@@ -215,7 +221,7 @@ impl ProgressiveOptimal {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::techniques::{BSDF, LIGHT};
+    use crate::techniques::{BSDF, LIGHT, TechniqueSample};
 
     fn sample(f: f32, light: f32, bsdf: f32) -> TechniqueSample {
         TechniqueSample {
@@ -240,7 +246,7 @@ mod tests {
                     Some(sample(f(linear), 1.0, 2.0 * linear)),
                 ],
             };
-            sums.add_draws(&draws);
+            sums.add(&draws);
         }
         sums
     }
@@ -294,8 +300,8 @@ mod tests {
                             Some(sample(linear * linear, 1.0, 2.0 * linear)),
                         ],
                     };
-                    sums.add_draws(&draws);
-                    iterations.add_draws(&draws);
+                    sums.add(&draws);
+                    iterations.add(&draws);
                 }
                 iterations.end_iteration();
             }
@@ -317,6 +323,236 @@ mod tests {
         assert!(
             (direct - 1.0 / 3.0).abs() > 4.0 * direct_se,
             "the direct estimator from 8 samples should be visibly biased: {direct} ± {direct_se}"
+        );
+    }
+
+    /// The sums after the given pixel samples, each the draws of the two techniques.
+    fn sums_after(pixel_samples: &[[Option<TechniqueSample>; 2]]) -> OptimalSums {
+        let mut sums = OptimalSums::default();
+        for &drawn in pixel_samples {
+            sums.add(&SurfaceDraws {
+                certain: Vec3::ZERO,
+                drawn,
+            });
+        }
+        sums
+    }
+
+    /// How a sum `got` compares with the value worked out by hand.
+    #[derive(Debug, PartialEq)]
+    enum Agreement {
+        Exact,
+        /// Off by about what rounding every term to `f32` gives.
+        SinglePrecision,
+        Off,
+    }
+
+    fn agreement(got: f64, expected: f64) -> Agreement {
+        let error = (got - expected).abs();
+        let scale = expected.abs().max(1e-30);
+        if error <= 1e-13 * scale {
+            Agreement::Exact
+        } else if error <= 1e-6 * scale {
+            Agreement::SinglePrecision
+        } else {
+            Agreement::Off
+        }
+    }
+
+    /// Panics, naming the likely mistake, unless `got` is `expected` to `f64`'s precision.
+    fn expect_sum(what: &str, got: f64, expected: f64, otherwise: &str) {
+        match agreement(got, expected) {
+            Agreement::Exact => {}
+            Agreement::SinglePrecision => panic!(
+                "{what} is {got:.17} where it should be {expected:.17}: right to about 7 digits \
+                 only, which is f32's rounding. The densities and f arrive as f32; turn them \
+                 into f64 before multiplying and dividing, so that thousands of terms added \
+                 up keep their precision"
+            ),
+            Agreement::Off => panic!("{what} is {got} where it should be {expected}: {otherwise}"),
+        }
+    }
+
+    /// The check of exercise `ch10-optimal-add`: the counts of pixel samples and of draws, what
+    /// a light sample and a BSDF sample add to `A`, `b` and the balance heuristic's sum
+    /// (against values worked out by hand), a blocked sample, and samples that must add
+    /// nothing.
+    #[test]
+    fn exercise_optimal_add() {
+        // Neither technique drew: one pixel sample, no draw, nothing summed.
+        let failed = sums_after(&[[None, None]]);
+        assert!(
+            failed.samples != 0,
+            "after one pixel sample in which neither technique drew, samples is still 0: every \
+             pixel sample counts, even one that found nothing, since the shares of samples that \
+             drew (and the balance heuristic's average) divide by it"
+        );
+        assert!(
+            failed.drawn == [0, 0],
+            "after one pixel sample in which neither technique drew, drawn is {:?} where it \
+             should be [0, 0]: a failed sample (no direction) counts as a pixel sample, not as \
+             a draw of its technique",
+            failed.drawn
+        );
+        assert!(
+            failed
+                == OptimalSums {
+                    samples: 1,
+                    ..OptimalSums::default()
+                },
+            "one pixel sample in which neither technique drew should count as one sample and \
+             add nothing else; the sums are {failed:?}"
+        );
+
+        // A light sample, f = (3, 6, 12) with densities 1 (light) and 2 (BSDF), and a BSDF
+        // sample that found no light (f = 0) with densities 0.5 and 1.5: worked out by hand,
+        // the light sample adds 1/9, 2/9 and 4/9 to A, f/9 to b_1, 2f/9 to b_2 and f/3 to the
+        // balance sum; the BSDF sample adds 1/16, 3/16 and 9/16 to A and nothing else.
+        let f = Vec3::new(3.0, 6.0, 12.0);
+        let light = Some(TechniqueSample { f, pdf: [1.0, 2.0] });
+        let blocked = Some(TechniqueSample {
+            f: Vec3::ZERO,
+            pdf: [0.5, 1.5],
+        });
+        let both = sums_after(&[[light, blocked]]);
+        assert!(
+            both.samples == 1,
+            "after one pixel sample in which both techniques drew, samples is {} where it \
+             should be 1: it counts pixel samples, not the techniques' draws (those are drawn)",
+            both.samples
+        );
+        assert!(
+            both.drawn == [1, 1],
+            "after one pixel sample in which both techniques drew, drawn is {:?} where it \
+             should be [1, 1]",
+            both.drawn
+        );
+
+        let alone = sums_after(&[[light, None]]);
+        let a11 = alone.a[0][0];
+        let ratio = a11 * 9.0;
+        if (ratio - 3.0).abs() < 1e-5 {
+            panic!(
+                "A_11 after one light sample with densities 1 and 2 is {a11}, 3 times too \
+                 large, and 3 is the sum of the densities: is the mixture density squared? \
+                 It appears once in the integral's integrand, and once more as the density the \
+                 sample was drawn from"
+            );
+        }
+        if (ratio - 1.0 / 3.0).abs() < 1e-5 {
+            panic!(
+                "A_11 after one light sample with densities 1 and 2 is {a11}, 3 times too \
+                 small: the mixture density divides one time too many"
+            );
+        }
+        let a_light = [[1.0 / 9.0, 2.0 / 9.0], [2.0 / 9.0, 4.0 / 9.0]];
+        for (i, k) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            expect_sum(
+                &format!("A_{}{} after one light sample", i + 1, k + 1),
+                alone.a[i][k],
+                a_light[i][k],
+                "with densities p_1 = 1 and p_2 = 2 it should be the hand-worked value; \
+                 check which densities multiply in A_ik and what divides them",
+            );
+        }
+        let b1 = alone.b[0];
+        let b2 = alone.b[1];
+        let b_swapped = (b1 - f.as_dvec3() * (2.0 / 9.0)).abs().max_element() < 1e-6
+            || (b2 - f.as_dvec3() / 9.0).abs().max_element() < 1e-6;
+        if b_swapped {
+            panic!(
+                "after one light sample with densities p_1 = 1 and p_2 = 2, b_1 = {b1} and \
+                 b_2 = {b2}: b uses the wrong technique's density. b_i is weighted by technique \
+                 i's density at the sample, whichever technique drew it, as A_ik is by p_i and \
+                 p_k"
+            );
+        }
+        let channels = ["red", "green", "blue"];
+        for (channel, name) in channels.iter().enumerate() {
+            let fc = f64::from(f[channel]);
+            let what = format!("b_1 ({name}) after one light sample");
+            expect_sum(
+                &what,
+                b1[channel],
+                fc / 9.0,
+                "with f = (3, 6, 12) and densities 1 and 2 it should be the hand-worked value; \
+                 check what multiplies f and what divides it",
+            );
+            let what = format!("b_2 ({name}) after one light sample");
+            expect_sum(&what, b2[channel], 2.0 * fc / 9.0, "check as for b_1");
+            let what = format!("the balance sum ({name}) after one light sample");
+            expect_sum(
+                &what,
+                alone.balance[channel],
+                fc / 3.0,
+                "it is the balance heuristic's term of the sample, f over the densities' sum, \
+                 unsquared",
+            );
+        }
+
+        let dark = sums_after(&[[None, blocked]]);
+        assert!(
+            dark.a != [[0.0; 2]; 2],
+            "a BSDF sample that found no light (f = 0, densities 0.5 and 1.5) left A at zero: a \
+             sample that carries nothing still adds to A (its densities were there, only f was \
+             0); leaving it out makes the densities look as if they covered less than they do"
+        );
+        let a_dark = [[1.0 / 16.0, 3.0 / 16.0], [3.0 / 16.0, 9.0 / 16.0]];
+        for (i, k) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            expect_sum(
+                &format!("A_{}{} after one BSDF sample with f = 0", i + 1, k + 1),
+                dark.a[i][k],
+                a_dark[i][k],
+                "with densities 0.5 and 1.5 it should be the hand-worked value",
+            );
+        }
+        assert!(
+            dark.b == [DVec3::ZERO; 2] && dark.balance == DVec3::ZERO,
+            "a sample with f = 0 should add nothing to b or to the balance sum; they are {:?} \
+             and {}",
+            dark.b,
+            dark.balance
+        );
+        // Both together: the sums of the two.
+        let expected_both = [[25.0 / 144.0, 59.0 / 144.0], [59.0 / 144.0, 145.0 / 144.0]];
+        for (i, k) in [(0, 0), (0, 1), (1, 1)] {
+            expect_sum(
+                &format!("A_{}{} after a light and a BSDF sample", i + 1, k + 1),
+                both.a[i][k],
+                expected_both[i][k],
+                "each sample of the pixel adds its own terms, whichever technique drew it",
+            );
+        }
+
+        // A sample that no technique could have drawn (both densities 0), and one whose value
+        // is not a number: each was drawn, and adds nothing to the sums.
+        let nowhere = Some(TechniqueSample {
+            f: Vec3::ONE,
+            pdf: [0.0, 0.0],
+        });
+        let not_a_number = Some(TechniqueSample {
+            f: Vec3::new(f32::NAN, 1.0, 1.0),
+            pdf: [1.0, 1.0],
+        });
+        let nothing = sums_after(&[[nowhere, not_a_number]]);
+        let finite = nothing.a.iter().flatten().all(|a| a.is_finite())
+            && nothing.b.iter().all(|b| b.is_finite())
+            && nothing.balance.is_finite();
+        assert!(
+            finite,
+            "after a sample whose densities are both 0 and one whose f is NaN, the sums hold \
+             something that is not a number ({nothing:?}): such samples count as drawn but add \
+             nothing to the sums, or one NaN spoils the pixel for good"
+        );
+        assert!(
+            nothing
+                == OptimalSums {
+                    samples: 1,
+                    drawn: [1, 1],
+                    ..OptimalSums::default()
+                },
+            "a sample whose densities are both 0, and one whose f is NaN, should count as a \
+             pixel sample and as draws, and add nothing else; the sums are {nothing:?}"
         );
     }
 
@@ -401,7 +637,7 @@ mod tests {
     fn proportional_densities_fall_back_to_the_balance_heuristic() {
         let mut sums = OptimalSums::default();
         for (k, x) in [0.1f32, 0.5, 0.9].into_iter().enumerate() {
-            sums.add_draws(&SurfaceDraws {
+            sums.add(&SurfaceDraws {
                 certain: Vec3::ZERO,
                 drawn: [
                     Some(sample(x, 1.0, 1.0)),
@@ -420,7 +656,7 @@ mod tests {
         let mut sums = OptimalSums::default();
         for k in 0..4 {
             let x = (k as f32 + 0.5) / 4.0;
-            sums.add_draws(&SurfaceDraws {
+            sums.add(&SurfaceDraws {
                 certain: Vec3::ZERO,
                 // The light technique fails every time; the BSDF one every other time.
                 drawn: [None, (k % 2 == 0).then(|| sample(2.0 * x, 0.0, 2.0 * x))],

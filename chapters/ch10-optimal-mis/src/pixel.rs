@@ -70,9 +70,9 @@ pub fn pixel_value<M: Materials, S: TimeSampler>(
         certain += draws.certain;
         match combination {
             Combination::Heuristic(heuristic) => weighted += heuristic_estimate(&draws, heuristic),
-            Combination::Optimal => sums.add_draws(&draws),
+            Combination::Optimal => sums.add(&draws),
             Combination::Progressive => {
-                progressive.add_draws(&draws);
+                progressive.add(&draws);
                 if index + 1 == iteration_end || index + 1 == spp {
                     progressive.end_iteration();
                     iteration_size *= 2;
