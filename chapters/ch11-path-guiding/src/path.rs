@@ -68,8 +68,21 @@ struct PendingVertex {
     throughput_after: Vec3,
     f_cos: Vec3,
     pdf: f32,
-    /// The path's radiance before anything found after the vertex.
+    /// The path's radiance before anything found after the vertex, and the light its own
+    /// ray found directly, which is left to the light sample (see `radiance`).
     radiance_before: Vec3,
+    /// The segment the vertex ends.
+    depth: u32,
+}
+
+/// Leaves out of what the vertex of the segment before `depth` learns the light `found`
+/// directly by its ray: with the light sample on, direct light is the light sample's to find,
+/// and a guide taught it would spend its directions on what is already well sampled (Müller
+/// et al. guide towards indirect light only).
+fn leave_direct_light(vertices: &mut [PendingVertex], depth: u32, found: Vec3) {
+    if let Some(v) = vertices.last_mut().filter(|v| v.depth + 1 == depth) {
+        v.radiance_before += found;
+    }
 }
 
 impl<M: Materials> GuidedPathTracer<'_, M> {
@@ -101,7 +114,11 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                     } else {
                         1.0
                     };
-                    radiance += throughput * (tracer.lights.environment.radiance(ray.dir) * weight);
+                    let found = throughput * (tracer.lights.environment.radiance(ray.dir) * weight);
+                    radiance += found;
+                    if options.nee {
+                        leave_direct_light(&mut vertices, depth, found);
+                    }
                 }
                 break;
             };
@@ -121,7 +138,11 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                     } else {
                         1.0
                     };
-                    radiance += throughput * (le * weight);
+                    let found = throughput * (le * weight);
+                    radiance += found;
+                    if options.nee {
+                        leave_direct_light(&mut vertices, depth, found);
+                    }
                 }
             }
 
@@ -169,6 +190,7 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                     f_cos: sample.weight * sample.pdf,
                     pdf: sample.pdf,
                     radiance_before: radiance,
+                    depth,
                 });
             }
             (previous_p, previous_pdf) = (hit.p, sample.pdf);

@@ -1,6 +1,7 @@
 //! The guided path tracer: unbiased whatever it learnt, chapter 08's path when it has learnt
 //! nothing, the same image on any number of threads.
 
+use ch01_whitted::world::World;
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
@@ -132,9 +133,15 @@ fn guided_paths_are_unbiased_whatever_the_guides_learnt() {
             let eye = Vec3::new(0.0, 0.5, 4.0);
             let ray = Ray::new(eye, (Vec3::new(0.1, 0.3, 0.0) - eye).normalize());
             let hit_guide = trained.guides.guide_of(Vec3::new(0.05, 0.3, 0.95));
-            assert!(
-                trained.guides.guides[hit_guide as usize].sampling.total() > 0.0,
-                "the guide at the sphere's front learnt something"
+            // Under the sky a convex sphere has direct light only: with the light sample on,
+            // that is the light sample's to find and the guide learns nothing; without it the
+            // guide learns the sky.
+            let learnt = trained.guides.guides[hit_guide as usize].sampling.total() > 0.0;
+            assert_eq!(
+                learnt,
+                !nee,
+                "nee {nee}: the guide at the sphere's front learnt {}",
+                if learnt { "something" } else { "nothing" }
             );
             let (mean, error) = mean_radiance(&guided, &ray, 40_000);
             assert!(
@@ -172,4 +179,56 @@ fn a_guided_render_is_the_same_on_any_number_of_threads() {
         "the guides learnt depend on the threads"
     );
     assert!(a.iterations.len() >= 2 && a.spp + one.output.stats.spp == 16);
+}
+
+#[test]
+fn guided_paths_with_the_light_sample_agree_with_chapter_08s() {
+    // Two grey spheres side by side under the sky: each lights the other, so there is
+    // indirect light to learn, and the light sample's MIS weights take the mixture's density.
+    let grey = Material::diffuse(Vec3::splat(0.5));
+    let world = ch08_path_tracing::furnace::spheres(&[grey.clone(), grey], 6);
+    let area_lights = AreaLights::of(&world.scene);
+    let options = PathOptions::with_depth(6);
+    let plain = tracer(&world, &area_lights, options);
+    let settings = RenderSettings::new(32, 24, 64);
+    let trained = render_guided(
+        &world,
+        MATERIALS,
+        options,
+        Some(GuidingOptions::for_image(GuidingTarget::Variance, 32 * 24)),
+        &Lens::PINHOLE,
+        &settings,
+        &IndependentSampler::new(3),
+        &PixelBoxFilter,
+    )
+    .training
+    .expect("guided");
+    // A ray to the left sphere's side that faces the right one.
+    let eye = Vec3::new(0.0, 0.5, 5.5);
+    let ray = Ray::new(eye, (Vec3::new(-0.3, 0.0, 0.6) - eye).normalize());
+    let hit = world
+        .intersect(&ray)
+        .expect("the ray meets the left sphere");
+    let guide = trained.guides.guide_of(hit.p);
+    assert!(
+        trained.guides.guides[guide as usize].sampling.total() > 0.0,
+        "the guide where the spheres face each other learnt the indirect light"
+    );
+    let guided = GuidedPathTracer {
+        tracer: &plain,
+        guides: &trained.guides,
+        bsdf_fraction: 0.5,
+    };
+    let unguided_tree = SpatialTree::new(world.scene.geometry.bounds());
+    let unguided = GuidedPathTracer {
+        guides: &unguided_tree,
+        ..guided
+    };
+    let (a, error_a) = mean_radiance(&guided, &ray, 40_000);
+    let (b, error_b) = mean_radiance(&unguided, &ray, 40_000);
+    let error = (error_a * error_a + error_b * error_b).sqrt();
+    assert!(
+        (a - b).abs() < 4.0 * error,
+        "guided {a} ± {error_a} against chapter 08's {b} ± {error_b}"
+    );
 }
