@@ -34,14 +34,19 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     figures.finish()
 }
 
-/// The scenes whose error is measured against time: the door-gap room, where guiding should
-/// pay, and chapter 08's Cornell box, lit from a panel every point sees, where it has little to
-/// learn and its cost shows.
-const EQUAL_TIME_SCENES: [(&str, &str, &str); 2] = [
+/// The scenes whose error is measured against time: the door-gap room and the glossy floor lit
+/// from a bright patch of ceiling, where guiding should pay, and chapter 08's Cornell box, lit
+/// from a panel every point sees, where it has little to learn and its cost shows.
+const EQUAL_TIME_SCENES: [(&str, &str, &str); 3] = [
     (
         "door-gap",
         "scenes/door-gap.xml",
         "the error against time: the door-gap room",
+    ),
+    (
+        "glossy-indirect",
+        "scenes/glossy-indirect.xml",
+        "the error against time: a glossy floor in indirect light",
     ),
     (
         "cornell-box",
