@@ -2,6 +2,7 @@
 //! traced as chapter 08 does, guided as `--guiding off|radiance|variance` says) and the
 //! figures. Built with the `lab` feature (on by default).
 
+pub mod agreement;
 pub mod cli;
 pub mod figures;
 
