@@ -8,16 +8,14 @@
 //! at a time, the tiles of a slice in parallel, and the caller adds each slice's records, tile
 //! by tile, pixel by pixel, sample by sample, before the next slice starts.
 
-use glam::{UVec2, Vec2, Vec3};
+use glam::{Vec2, Vec3};
 use std::ops::Range;
 
-use super::{RenderSettings, counting_rays};
+use super::progress::Progress;
+use super::{Budget, RenderSettings, counting_rays, tiles};
 use crate::film::PixelRect;
 use crate::image::Image;
 use crate::sampler::Sampler;
-
-/// Pixels per side of a tile.
-const TILE_SIZE: u32 = 16;
 
 /// Tiles rendered in parallel before their records are handed back: enough to keep the
 /// cores busy, few enough that a slice's records stay small (a slice of 16 tiles at 64
@@ -53,9 +51,15 @@ where
     F: Fn(Vec2, &mut S, &mut Vec<R>) -> Vec3 + Sync,
     A: FnMut(Vec<R>),
 {
-    let size = UVec2::new(settings.width, settings.height);
-    let tiles = tiles_of(size);
-    let mut image = Image::new(size.x, size.y);
+    let tiles = tiles(settings.width, settings.height);
+    let mut image = Image::new(settings.width, settings.height);
+    // A bar for this pass alone, however the whole render is budgeted.
+    let spp = samples.end.saturating_sub(samples.start);
+    let pass = RenderSettings {
+        budget: Budget::Samples(spp),
+        ..settings.clone()
+    };
+    let progress = Progress::new(&pass, tiles.len(), spp);
     let mut cost = PassCost::default();
     // The slices' tiles run on the pool the settings ask for; the records are added here,
     // on the caller's thread, between slices.
@@ -66,7 +70,7 @@ where
             .expect("a thread pool of the requested size")
     });
     for slice in tiles.chunks(TILES_PER_SLICE) {
-        let render = || render_slice(settings, sampler, slice, &samples, &radiance);
+        let render = || render_slice(settings, sampler, slice, &samples, &radiance, &progress);
         let done = match &pool {
             Some(pool) => pool.install(render),
             None => render(),
@@ -81,6 +85,8 @@ where
             add_records(records);
         }
     }
+    progress.pass_done(spp);
+    progress.finish();
     Some((image, cost))
 }
 
@@ -93,6 +99,7 @@ fn render_slice<S, R, F>(
     slice: &[PixelRect],
     samples: &Range<u64>,
     radiance: &F,
+    progress: &Progress,
 ) -> Option<SliceDone<R>>
 where
     S: Sampler,
@@ -133,22 +140,8 @@ where
                     Vec3::ZERO
                 });
             }
+            progress.tile_done(samples.end.saturating_sub(samples.start));
             Some((pixels, records, cost))
-        })
-        .collect()
-}
-
-/// The tiles of an image of `size`, row by row.
-fn tiles_of(size: UVec2) -> Vec<PixelRect> {
-    (0..size.y)
-        .step_by(TILE_SIZE as usize)
-        .flat_map(|y| {
-            (0..size.x)
-                .step_by(TILE_SIZE as usize)
-                .map(move |x| PixelRect {
-                    min: UVec2::new(x, y),
-                    max: (UVec2::new(x, y) + TILE_SIZE).min(size),
-                })
         })
         .collect()
 }
@@ -157,6 +150,7 @@ fn tiles_of(size: UVec2) -> Vec<PixelRect> {
 mod tests {
     use super::*;
     use crate::sampler::IndependentSampler;
+    use glam::UVec2;
 
     /// A pass whose samples record their pixel and index: the records come back in tile,
     /// pixel and sample order whatever the threads, and the image holds each pixel's mean.
