@@ -253,24 +253,18 @@ fn collect_code_outside_solutions(
     dir: &Path,
     lines: &mut std::collections::HashSet<String>,
 ) -> Result<()> {
-    for entry in std::fs::read_dir(dir).with_context(|| format!("cannot list {}", dir.display()))? {
-        let path = entry?.path();
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
-        if path.is_dir() && name != "target" && !name.starts_with('.') {
-            collect_code_outside_solutions(&path, lines)?;
-        } else if name.ends_with(".rs") {
-            let source = std::fs::read_to_string(&path)
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            let mut in_solution = false;
-            for line in source.lines() {
-                match Marker::of_line(line) {
-                    Some(Marker::Begin) => in_solution = true,
-                    Some(Marker::End) => in_solution = false,
-                    None if !in_solution => {
-                        lines.insert(normalized(line));
-                    }
-                    None => {}
+    for path in crate::workspace::rust_files_under(dir)? {
+        let source = std::fs::read_to_string(&path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        let mut in_solution = false;
+        for line in source.lines() {
+            match Marker::of_line(line) {
+                Some(Marker::Begin) => in_solution = true,
+                Some(Marker::End) => in_solution = false,
+                None if !in_solution => {
+                    lines.insert(normalized(line));
                 }
+                None => {}
             }
         }
     }

@@ -98,23 +98,13 @@ fn figure_paths(text: &str) -> Vec<(String, String)> {
 /// The files under `dir`, each as its path below `dir` with `/` between folders.
 pub fn files_under(dir: &Path) -> Result<BTreeSet<String>> {
     let mut files = BTreeSet::new();
-    let mut folders = vec![dir.to_path_buf()];
-    while let Some(folder) = folders.pop() {
-        let entries = std::fs::read_dir(&folder)
-            .with_context(|| format!("cannot list {}", folder.display()))?;
-        for entry in entries {
-            let path = entry?.path();
-            if path.is_dir() {
-                folders.push(path);
-            } else {
-                let relative = path.strip_prefix(dir).unwrap_or(&path);
-                let parts: Vec<_> = relative
-                    .components()
-                    .map(|c| c.as_os_str().to_string_lossy())
-                    .collect();
-                files.insert(parts.join("/"));
-            }
-        }
+    for path in crate::workspace::files_under(dir)? {
+        let relative = path.strip_prefix(dir).unwrap_or(&path);
+        let parts: Vec<_> = relative
+            .components()
+            .map(|c| c.as_os_str().to_string_lossy())
+            .collect();
+        files.insert(parts.join("/"));
     }
     Ok(files)
 }

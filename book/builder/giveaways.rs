@@ -100,7 +100,7 @@ const SHIPPED_CODE: &[&str] = &[
 pub fn in_code(workspace: &Path, exercises: &[Exercise]) -> Result<Vec<String>> {
     let mut files = Vec::new();
     for folder in SHIPPED_CODE {
-        rust_files(&workspace.join(folder), &mut files)?;
+        files.extend(crate::workspace::rust_files_under(&workspace.join(folder))?);
     }
     files.sort();
     let mut problems = Vec::new();
@@ -136,31 +136,6 @@ fn in_source(name: &str, text: &str, exercises: &[Exercise]) -> Vec<String> {
         }
     }
     problems
-}
-
-/// The `.rs` files under `folder` (none if it does not exist), leaving out build output and
-/// hidden folders.
-fn rust_files(folder: &Path, files: &mut Vec<std::path::PathBuf>) -> Result<()> {
-    let Ok(entries) = std::fs::read_dir(folder) else {
-        return Ok(());
-    };
-    for entry in entries {
-        let path = entry
-            .with_context(|| format!("listing {}", folder.display()))?
-            .path();
-        let name = path
-            .file_name()
-            .and_then(|name| name.to_str())
-            .unwrap_or("");
-        if path.is_dir() {
-            if !name.starts_with('.') && name != "target" {
-                rust_files(&path, files)?;
-            }
-        } else if name.ends_with(".rs") {
-            files.push(path);
-        }
-    }
-    Ok(())
 }
 
 /// The lines of `lines`, numbered from 1, leaving out solution regions of included code (the

@@ -4,7 +4,7 @@
 //! be part of the site. One forgotten CDN link (a new preprocessor's default, a theme tweak)
 //! would silently break pages; this check makes it a build error instead.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use anyhow::{Context, Result, bail};
 
@@ -12,7 +12,7 @@ use anyhow::{Context, Result, bail};
 /// from the network.
 pub fn ensure_offline(site_dir: &Path) -> Result<()> {
     let mut found = Vec::new();
-    for file in files_under(site_dir)? {
+    for file in crate::workspace::files_under(site_dir)? {
         let is_page = file.extension().is_some_and(|ext| ext == "html");
         let is_style = file.extension().is_some_and(|ext| ext == "css");
         if !(is_page || is_style) {
@@ -86,24 +86,6 @@ fn remote_urls_in_css(css: &str) -> Vec<String> {
         }
     }
     remote
-}
-
-fn files_under(dir: &Path) -> Result<Vec<PathBuf>> {
-    let mut files = Vec::new();
-    let mut pending = vec![dir.to_path_buf()];
-    while let Some(dir) = pending.pop() {
-        for entry in
-            std::fs::read_dir(&dir).with_context(|| format!("cannot list {}", dir.display()))?
-        {
-            let path = entry?.path();
-            if path.is_dir() {
-                pending.push(path);
-            } else {
-                files.push(path);
-            }
-        }
-    }
-    Ok(files)
 }
 
 #[cfg(test)]

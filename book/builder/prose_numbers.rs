@@ -120,24 +120,13 @@ fn page_name(book_src: &Path, page: &Path) -> String {
 
 /// Every Markdown file under `book_src` but the generated `figures/` and `SUMMARY.md`, sorted.
 fn pages_under(book_src: &Path) -> Result<Vec<PathBuf>> {
-    let mut pages = Vec::new();
-    let mut folders = vec![book_src.to_path_buf()];
-    while let Some(folder) = folders.pop() {
-        let entries = std::fs::read_dir(&folder)
-            .with_context(|| format!("cannot list {}", folder.display()))?;
-        for entry in entries {
-            let path = entry?.path();
-            if path.is_dir() {
-                if path != book_src.join("figures") {
-                    folders.push(path);
-                }
-            } else if path.extension().is_some_and(|ext| ext == "md")
-                && path != book_src.join("SUMMARY.md")
-            {
-                pages.push(path);
-            }
-        }
-    }
+    let figures = book_src.join("figures");
+    let mut pages: Vec<PathBuf> = crate::workspace::files_under(book_src)?
+        .into_iter()
+        .filter(|path| !path.starts_with(&figures))
+        .filter(|path| path.extension().is_some_and(|ext| ext == "md"))
+        .filter(|path| *path != book_src.join("SUMMARY.md"))
+        .collect();
     pages.sort();
     Ok(pages)
 }

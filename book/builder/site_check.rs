@@ -158,8 +158,11 @@ fn is_executable(path: &Path) -> bool {
 /// Every HTML page of `site`, relative to it and sorted, and the pages skipped (see
 /// [`SKIPPED`]).
 pub fn pages(site: &Path) -> Result<(Vec<String>, Vec<Skipped>)> {
-    let mut all = Vec::new();
-    collect_html(site, Path::new(""), &mut all)?;
+    let mut all: Vec<String> = crate::workspace::files_under(site)?
+        .into_iter()
+        .filter(|path| path.extension() == Some(OsStr::new("html")))
+        .map(|path| slashed(path.strip_prefix(site).unwrap_or(&path)))
+        .collect();
     all.sort();
     let mut pages = Vec::new();
     let mut skipped = Vec::new();
@@ -170,22 +173,6 @@ pub fn pages(site: &Path) -> Result<(Vec<String>, Vec<Skipped>)> {
         }
     }
     Ok((pages, skipped))
-}
-
-fn collect_html(root: &Path, relative: &Path, found: &mut Vec<String>) -> Result<()> {
-    let dir = root.join(relative);
-    for entry in
-        std::fs::read_dir(&dir).with_context(|| format!("cannot list {}", dir.display()))?
-    {
-        let entry = entry?;
-        let path = relative.join(entry.file_name());
-        if entry.file_type()?.is_dir() {
-            collect_html(root, &path, found)?;
-        } else if path.extension() == Some(OsStr::new("html")) {
-            found.push(slashed(&path));
-        }
-    }
-    Ok(())
 }
 
 /// A relative path with `/` between its parts, whatever the platform.

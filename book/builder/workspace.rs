@@ -43,9 +43,12 @@ pub fn source_files(root: &Path) -> Result<Vec<PathBuf>> {
     let mut files = if root.join(".git").exists() {
         git_files(root)?
     } else {
-        let mut files = Vec::new();
-        walk(root, Path::new(""), &mut files)?;
-        files
+        files_under_but(root, |relative| {
+            NOT_SOURCE.iter().any(|skip| relative == Path::new(skip))
+        })?
+        .into_iter()
+        .map(|path| path.strip_prefix(root).unwrap_or(&path).to_path_buf())
+        .collect()
     };
     files.sort();
     files.dedup();
@@ -80,23 +83,43 @@ fn git_files(root: &Path) -> Result<Vec<PathBuf>> {
         .collect())
 }
 
-fn walk(root: &Path, relative: &Path, files: &mut Vec<PathBuf>) -> Result<()> {
-    let dir = root.join(relative);
-    for entry in
-        std::fs::read_dir(&dir).with_context(|| format!("cannot list {}", dir.display()))?
-    {
-        let entry = entry?;
-        let path = relative.join(entry.file_name());
-        if NOT_SOURCE.iter().any(|skip| path == Path::new(skip)) {
-            continue;
-        }
-        if entry.file_type()?.is_dir() {
-            walk(root, &path, files)?;
-        } else {
-            files.push(path);
+/// Every file under `dir` (its path, `dir` joined to the part below it), in no particular order.
+pub fn files_under(dir: &Path) -> Result<Vec<PathBuf>> {
+    files_under_but(dir, |_| false)
+}
+
+/// The `.rs` files under `dir` (none if it does not exist), leaving out build outputs and hidden
+/// folders, which hold no one's source.
+pub fn rust_files_under(dir: &Path) -> Result<Vec<PathBuf>> {
+    if !dir.exists() {
+        return Ok(Vec::new());
+    }
+    let generated = |relative: &Path| {
+        relative
+            .file_name()
+            .is_some_and(|name| name == "target" || name.to_string_lossy().starts_with('.'))
+    };
+    let mut files = files_under_but(dir, generated)?;
+    files.retain(|path| path.extension().is_some_and(|ext| ext == "rs"));
+    Ok(files)
+}
+
+/// Every file under `dir`, leaving out the files and folders whose path below `dir` is
+/// `left_out`, and all they hold.
+pub fn files_under_but(dir: &Path, left_out: impl Fn(&Path) -> bool) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    let walk = walkdir::WalkDir::new(dir)
+        .follow_links(true)
+        .into_iter()
+        .filter_entry(|entry| !left_out(entry.path().strip_prefix(dir).unwrap_or(entry.path())));
+    for entry in walk {
+        let entry =
+            entry.with_context(|| format!("cannot list everything under {}", dir.display()))?;
+        if !entry.file_type().is_dir() {
+            files.push(entry.into_path());
         }
     }
-    Ok(())
+    Ok(files)
 }
 
 /// Writes `contents` to `path` whole or not at all (the demos' script, a checkpointed
