@@ -140,9 +140,10 @@ fn interrupt_and_check(chapter: &str) {
         let partial = workbench::output::read_image(Path::new(out)).unwrap();
         assert_eq!((partial.width, partial.height), (16, 12));
         assert!(partial.pixels.iter().all(|p| p.is_finite()));
-        // A guided render's training depends on its whole budget, so its interrupted image,
-        // the last training iteration completed, is no shorter render's image.
-        if chapter == "ch11-path-guiding" {
+        // A render that learns before it renders (its stats say what it trained) splits its
+        // whole budget between learning and the image, so its interrupted image, made from
+        // what it had learnt so far, is no shorter render's image.
+        if json.get("training").is_some() {
             return;
         }
         let again = dir.path().join("again.pfm");
