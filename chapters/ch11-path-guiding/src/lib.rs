@@ -48,7 +48,7 @@ use ch07_soft_shadows::{AreaLights, LightSampling};
 use ch08_path_tracing::{Materials, PathOptions, PathTracer, SceneLights};
 use common::film::Filter;
 use common::image::Image;
-use common::render::{self, Budget, RenderOutput, RenderSettings, RenderStats};
+use common::render::{self, Budget, RenderOutput, RenderSettings, RenderStats, Totals};
 use std::time::Instant;
 
 /// A guided render: the final pass's image, and what the training before it learnt and cost.
@@ -149,35 +149,15 @@ fn stopped_in_training(
     start: Instant,
     trained: Trained,
 ) -> GuidedRender {
-    let seconds = start.elapsed().as_secs_f64();
     let last = trained.iterations.last();
     let spp = last.map_or(0, |i| i.spp);
-    let rays: u64 = trained.iterations.iter().map(|i| i.rays).sum();
-    let samples = spp * u64::from(settings.width) * u64::from(settings.height);
-    let per_second = |n: u64| {
-        if seconds > 0.0 {
-            n as f64 / seconds
-        } else {
-            0.0
-        }
-    };
-    let stats = RenderStats {
-        seconds,
-        spp,
-        requested_spp: match settings.budget {
-            Budget::Samples(spp) => Some(spp),
-            Budget::Seconds(_) => None,
-        },
-        interrupted: true,
-        width: settings.width,
-        height: settings.height,
-        rays,
-        samples,
-        samples_per_second: per_second(samples),
-        rays_per_second: per_second(rays),
+    let totals = Totals {
+        rays: trained.iterations.iter().map(|i| i.rays).sum(),
+        samples: spp * u64::from(settings.width) * u64::from(settings.height),
         nonfinite_samples: last.map_or(0, |i| i.nonfinite_samples),
-        threads: settings.threads.unwrap_or_else(rayon::current_num_threads),
     };
+    let seconds = start.elapsed().as_secs_f64();
+    let stats = RenderStats::new(settings, spp, true, seconds, &totals);
     let image = trained
         .last_image
         .clone()

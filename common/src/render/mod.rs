@@ -25,7 +25,7 @@ mod stop;
 pub use budget::Budget;
 pub use gather::{GatherPixel, render_gathered, render_per_pixel};
 pub use recorded::{PassCost, render_recorded};
-pub use stats::RenderStats;
+pub use stats::{RenderStats, Totals};
 pub use stop::StopFlag;
 
 use crate::film::{Film, FilmTile, Filter, PixelRect};

@@ -3,16 +3,20 @@
 use super::{Budget, RenderSettings};
 use serde::Serialize;
 
-/// Sums gathered per tile and added up in tile order.
+/// What a render counts as it goes: sums gathered per tile and added up in tile order.
 #[derive(Clone, Copy, Debug, Default)]
-pub(super) struct Totals {
+pub struct Totals {
+    /// Rays cast: camera, secondary and shadow rays.
     pub rays: u64,
+    /// Pixel samples taken.
     pub samples: u64,
+    /// Samples whose radiance was NaN or infinite, left out of the image.
     pub nonfinite_samples: u64,
 }
 
 impl Totals {
-    pub(super) fn add(&mut self, other: &Totals) {
+    /// Adds `other`'s counts to these.
+    pub fn add(&mut self, other: &Totals) {
         self.rays += other.rays;
         self.samples += other.samples;
         self.nonfinite_samples += other.nonfinite_samples;
@@ -50,7 +54,11 @@ pub struct RenderStats {
 }
 
 impl RenderStats {
-    pub(super) fn new(
+    /// The stats of a render of `settings` that made an image of `spp` samples per pixel in
+    /// `seconds`, having counted `totals`; the rates per second are worked out here. Renders
+    /// outside the render loops (one that learns before it renders, say) make theirs with it
+    /// too, so that every `--stats` file means the same.
+    pub fn new(
         settings: &RenderSettings,
         spp: u64,
         interrupted: bool,
