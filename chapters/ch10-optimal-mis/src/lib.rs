@@ -15,7 +15,9 @@
 //!   estimator"), with the balance heuristic's estimate from the same samples to fall back on,
 //!   and the progressive, unbiased variant ([`optimal::ProgressiveOptimal`]);
 //! - [`pixel`]: one pixel's value from its samples, combined by a heuristic or optimally;
-//!   [`render_direct`] renders a scene that way.
+//!   [`render_direct`] renders a scene that way;
+//! - [`path`]: the same two techniques at every vertex of chapter 08's path, kept per depth,
+//!   which [`render_path_with`] combines per pixel and per depth.
 //!
 //! The crate's workbench (its binary, `render --mis optimal|power|balance`, and the figures)
 //! is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
@@ -26,6 +28,7 @@
 #[path = "../lab/mod.rs"]
 pub mod lab;
 pub mod optimal;
+pub mod path;
 pub mod pixel;
 pub mod techniques;
 
@@ -86,5 +89,32 @@ pub fn render_direct_with<S: TimeSampler, M: Materials>(
     };
     render_per_pixel(settings, sampler, |pixel, spp, sampler| {
         pixel::pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)
+    })
+}
+
+/// Renders whole paths, as chapter 08's path tracer does with `options` (depth, roulette,
+/// `hide_emitters`), but with the light sample and the BSDF sample at every vertex combined
+/// as `combination` says, per pixel and per depth ([`pixel::path_pixel_value`]). The power
+/// heuristic renders what chapter 08 renders; the same seed gives the same image on any number
+/// of threads.
+pub fn render_path_with<S: TimeSampler, M: Materials>(
+    world: &MotionScene,
+    materials: M,
+    options: PathOptions,
+    lens: &Lens,
+    settings: &RenderSettings,
+    sampler: &S,
+    combination: Combination,
+) -> RenderOutput {
+    let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
+    let area_lights = AreaLights::of(&world.scene);
+    let tracer = PathTracer {
+        world,
+        lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
+        options,
+        materials,
+    };
+    render_per_pixel(settings, sampler, |pixel, spp, sampler| {
+        pixel::path_pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)
     })
 }

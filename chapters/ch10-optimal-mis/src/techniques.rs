@@ -13,6 +13,7 @@
 use ch01_whitted::world::World;
 use ch08_path_tracing::{Materials, PathTracer, SurfaceBsdf};
 use common::Ray;
+use common::geometry::SurfaceHit;
 use common::sampler::Sampler;
 use glam::{Vec2, Vec3};
 
@@ -77,23 +78,7 @@ pub fn draw_techniques<M: Materials, S: Sampler>(
             draws.certain += tracer.delta_lights(&bsdf, wo, time);
         }
         if lights.can_be_hit() {
-            let u = sampler.get_2d();
-            draws.drawn[LIGHT] = lights.pick_with_rest(u.x).and_then(|(light, rest)| {
-                let sample = lights.sample(light, bsdf.hit(), Vec2::new(rest, u.y))?;
-                let f_cos = bsdf.eval(wo, sample.wi);
-                let carries = sample.radiance != Vec3::ZERO && f_cos != Vec3::ZERO;
-                let visible =
-                    carries && !tracer.world.occluded(&sample.shadow_ray(bsdf.hit(), time));
-                let f = if visible {
-                    sample.radiance * f_cos
-                } else {
-                    Vec3::ZERO
-                };
-                Some(TechniqueSample {
-                    f,
-                    pdf: [sample.pdf, bsdf.pdf(wo, sample.wi)],
-                })
-            });
+            draws.drawn[LIGHT] = light_technique(tracer, &bsdf, wo, time, sampler);
         }
     }
 
@@ -102,20 +87,8 @@ pub fn draw_techniques<M: Materials, S: Sampler>(
         return draws;
     };
     let ray = bsdf.hit().spawn_ray(sample.wi, time);
-    let (emitted, light_pdf) = match tracer.world.intersect(&ray) {
-        Some(found) => match lights.area_light_of(found.shape) {
-            Some(light) => (
-                lights.emitted(light, found.shape, found.n, || Some(found.uv), -sample.wi),
-                lights.area_pdf(light, bsdf.hit().p, found.p, found.n),
-            ),
-            None => (Vec3::ZERO, 0.0),
-        },
-        None if lights.has_environment() => (
-            lights.environment.radiance(sample.wi),
-            lights.environment_pdf(sample.wi),
-        ),
-        None => (Vec3::ZERO, 0.0),
-    };
+    let found = tracer.world.intersect(&ray);
+    let (emitted, light_pdf) = light_found(tracer, bsdf.hit().p, sample.wi, found.as_ref());
     if sample.is_delta() {
         // A mirror direction: only this technique could draw it.
         let found = sample.weight * emitted;
@@ -130,4 +103,58 @@ pub fn draw_techniques<M: Materials, S: Sampler>(
         pdf: [light_pdf, bsdf.pdf(wo, sample.wi)],
     });
     draws
+}
+
+/// The light technique's sample at the surface of `bsdf` seen from `wo`: a light picked and a
+/// point on it, from one 2D number, with its shadow ray; `None` when no light could be picked
+/// or no point drawn (a failed sample).
+pub fn light_technique<M: Materials, S: Sampler>(
+    tracer: &PathTracer<'_, M>,
+    bsdf: &impl SurfaceBsdf,
+    wo: Vec3,
+    time: f32,
+    sampler: &mut S,
+) -> Option<TechniqueSample> {
+    let lights = &tracer.lights;
+    let u = sampler.get_2d();
+    let (light, rest) = lights.pick_with_rest(u.x)?;
+    let sample = lights.sample(light, bsdf.hit(), Vec2::new(rest, u.y))?;
+    let f_cos = bsdf.eval(wo, sample.wi);
+    let carries = sample.radiance != Vec3::ZERO && f_cos != Vec3::ZERO;
+    let visible = carries && !tracer.world.occluded(&sample.shadow_ray(bsdf.hit(), time));
+    let f = if visible {
+        sample.radiance * f_cos
+    } else {
+        Vec3::ZERO
+    };
+    Some(TechniqueSample {
+        f,
+        pdf: [sample.pdf, bsdf.pdf(wo, sample.wi)],
+    })
+}
+
+/// What a BSDF sample's ray from `origin` in direction `wi` finds of the lights: the radiance
+/// that `found` (the surface it met, `None` for none) emits towards `origin`, or the
+/// environment's, and the density with which the light technique would have drawn it (0 for
+/// no light).
+pub fn light_found<M: Materials>(
+    tracer: &PathTracer<'_, M>,
+    origin: Vec3,
+    wi: Vec3,
+    found: Option<&SurfaceHit>,
+) -> (Vec3, f32) {
+    let lights = &tracer.lights;
+    match found {
+        Some(found) => match lights.area_light_of(found.shape) {
+            Some(light) => (
+                lights.emitted(light, found.shape, found.n, || Some(found.uv), -wi),
+                lights.area_pdf(light, origin, found.p, found.n),
+            ),
+            None => (Vec3::ZERO, 0.0),
+        },
+        None if lights.has_environment() => {
+            (lights.environment.radiance(wi), lights.environment_pdf(wi))
+        }
+        None => (Vec3::ZERO, 0.0),
+    }
 }
