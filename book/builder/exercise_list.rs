@@ -413,7 +413,8 @@ mod tests {
     }
 
     /// The crates after the lecture, whose pages go beyond it.
-    const BEYOND_THE_LECTURE: &[&str] = &["ch09-materials", "ch10-optimal-mis"];
+    const BEYOND_THE_LECTURE: &[&str] =
+        &["ch09-materials", "ch10-optimal-mis", "ch11-path-guiding"];
 
     /// The promise of the exercise set: every chapter's student writes at least four
     /// exercises, one of them the chapter's central routine (a capstone of 25 lines or more),

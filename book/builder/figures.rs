@@ -28,6 +28,7 @@ pub const CHAPTERS: &[(&str, &str)] = &[
     ("ch08", "ch08-path-tracing"),
     ("ch09", "ch09-materials"),
     ("ch10", "ch10-optimal-mis"),
+    ("ch11", "ch11-path-guiding"),
 ];
 
 /// Each chapter's figure writer, in the order of [`CHAPTERS`]. Only the `figures` feature
@@ -45,6 +46,7 @@ const WRITERS: &[WriteFigures] = &[
     ch08_path_tracing::lab::figures::write_all,
     ch09_materials::lab::figures::write_all,
     ch10_optimal_mis::lab::figures::write_all,
+    ch11_path_guiding::lab::figures::write_all,
 ];
 
 /// The name of the table of every figure's cost, beside the chapters' folders.

@@ -25,6 +25,10 @@ use workbench::output::{write_image, write_text};
 pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
     let mut figures = FigureSet::start("ch11", out, quick)?;
     let level = figures.level();
+    figures.make("the diagrams", |out| {
+        crate::lab::diagrams::write_all(&out.join("diagrams"))
+    })?;
+    figures.agreement(&crate::lab::agreement::AGREEMENT)?;
     figures.make("the door-gap room side by side", |out| {
         side_by_side(out, "door-gap", level)
     })?;

@@ -4,6 +4,7 @@
 
 pub mod agreement;
 pub mod cli;
+pub mod diagrams;
 pub mod figures;
 
 use workbench::capabilities::{Capabilities, Chapter};

@@ -174,6 +174,7 @@ impl DirectionTree {
     /// much of the square is the leaf's share spread? Density times area must add up to 1
     /// over the square.
     pub fn pdf(&self, point: Vec2) -> f32 {
+        // BEGIN SOLUTION
         let (mut node, mut point, mut density) = (0usize, point, 1.0f32);
         loop {
             let total = self.nodes[node].total();
@@ -189,6 +190,7 @@ impl DirectionTree {
             }
             (node, point) = (child as usize, inner);
         }
+        // END SOLUTION
     }
     // ANCHOR_END: pdf
 
@@ -201,6 +203,7 @@ impl DirectionTree {
     /// or right, which says lower or upper, and what is left of `u` for the next level once a
     /// quadrant is chosen? The point in the leaf is the last of it.
     pub fn sample(&self, u: Vec2) -> Option<Vec2> {
+        // BEGIN SOLUTION
         if self.total().is_nan() || self.total() <= 0.0 {
             return None;
         }
@@ -237,6 +240,7 @@ impl DirectionTree {
             }
             node = child as usize;
         }
+        // END SOLUTION
     }
     // ANCHOR_END: sample
 }
@@ -298,6 +302,99 @@ mod tests {
         );
     }
 
+    /// A tree small enough to work out by hand. The root's quadrants hold 6, 1, 1 and 0;
+    /// the first (lower left) is split, its quadrants holding 3, 1, 1 and 1. A walk takes the
+    /// root's lower left quadrant with chance 6/8, then the child's with chance 3/6, 1/6, 1/6
+    /// and 1/6; the other quadrants of the root with 1/8, 1/8 and 0.
+    fn tree_by_hand() -> DirectionTree {
+        DirectionTree {
+            nodes: vec![
+                QuadNode {
+                    sums: [6.0, 1.0, 1.0, 0.0],
+                    children: [1, 0, 0, 0],
+                },
+                QuadNode {
+                    sums: [3.0, 1.0, 1.0, 1.0],
+                    children: [0; 4],
+                },
+            ],
+        }
+    }
+
+    /// Points of [`tree_by_hand`], with their density worked out beforehand: a leaf's chance
+    /// over its area (a sixteenth of the square below the root's first quadrant, a quarter
+    /// elsewhere).
+    const POINTS_BY_HAND: [(Vec2, f32); 4] = [
+        // 3/8 over 1/16.
+        (Vec2::new(0.1, 0.1), 6.0),
+        // 1/8 over 1/16: the right half of the root's first quadrant.
+        (Vec2::new(0.3, 0.1), 2.0),
+        // 1/8 over 1/4.
+        (Vec2::new(0.7, 0.2), 0.5),
+        // Nothing recorded there.
+        (Vec2::new(0.8, 0.8), 0.0),
+    ];
+
+    #[test]
+    fn exercise_quadtree_pdf_of_a_tree_worked_out_by_hand() {
+        let tree = tree_by_hand();
+        let got: Vec<f32> = POINTS_BY_HAND.iter().map(|&(p, _)| tree.pdf(p)).collect();
+        let quarter_pi = 0.25 * std::f32::consts::FRAC_1_PI;
+        // What the usual mistakes give at the same points.
+        let mistakes: [([f32; 3], &str); 5] = [
+            (
+                [0.375, 0.125, 0.125],
+                "that is each leaf's chance, not its density: the chance is spread over the \
+                 leaf's area, a quarter of its node's at every level",
+            ),
+            (
+                [1.5, 0.5, 0.5],
+                "the chance was spread over a quarter of the square whatever the leaf's depth: \
+                 each level down quarters the area again",
+            ),
+            (
+                [6.0 * quarter_pi, 2.0 * quarter_pi, 0.5 * quarter_pi],
+                "that is a density per unit solid angle: pdf is the density on the unit square \
+                 (directions::solid_angle_pdf turns it into one on the sphere)",
+            ),
+            (
+                [8.0, 8.0 / 3.0, 0.5],
+                "only the last node's share was counted: the chance of a leaf is the product of \
+                 the shares of every quadrant on the way down",
+            ),
+            (
+                [6.0, 6.0, 0.5],
+                "the point was not rescaled into its quadrant before going down: below the \
+                 root, (0.3, 0.1) is in the right half of the first quadrant",
+            ),
+        ];
+        let why = mistakes
+            .iter()
+            .find(|(wrong, _)| {
+                wrong
+                    .iter()
+                    .zip(&got)
+                    .all(|(w, g)| (w - g).abs() < 1e-4 * w.abs().max(1.0))
+            })
+            .map_or(
+                "what chance does the walk give the leaf, and over what area?",
+                |m| m.1,
+            );
+        for (&(point, expected), got) in POINTS_BY_HAND.iter().zip(&got) {
+            assert!(
+                (got - expected).abs() < 1e-4 * expected.max(1.0),
+                "pdf: at {point} a tree whose root holds 6, 1, 1, 0 and whose first quadrant \
+                 is split into 3, 1, 1, 1 has density {expected}, not {got}: {why}"
+            );
+        }
+        let empty = DirectionTree::new().pdf(Vec2::splat(0.3));
+        assert!(
+            empty == 0.0,
+            "pdf: a tree with nothing recorded draws nothing, so its density is 0 everywhere, \
+             not {empty}"
+        );
+    }
+
     #[test]
     fn exercise_quadtree_pdf_adds_up_to_one_over_the_square() {
         let tree = taught_tree();
@@ -317,9 +414,110 @@ mod tests {
         assert_eq!(DirectionTree::new().pdf(Vec2::splat(0.3)), 0.0);
     }
 
+    /// The leaf of [`tree_by_hand`] that holds `p`: 0 to 3 the split quadrant's, 4 to 6 the
+    /// root's other three.
+    fn leaf_by_hand(p: Vec2) -> usize {
+        let (q, inner) = quadrant_of(p);
+        if q == 0 { quadrant_of(inner).0 } else { 3 + q }
+    }
+
+    #[test]
+    fn exercise_quadtree_sample_follows_a_tree_worked_out_by_hand() {
+        let tree = tree_by_hand();
+        // Numbers u on a grid, so that each leaf's share is exact to a row of the grid.
+        let n = 64;
+        let mut points = Vec::new();
+        for i in 0..n {
+            for j in 0..n {
+                let u = Vec2::new((i as f32 + 0.5) / n as f32, (j as f32 + 0.5) / n as f32);
+                match tree.sample(u) {
+                    Some(p) => points.push(p),
+                    None => panic!("sample: the tree holds 10, yet sample({u}) drew nothing"),
+                }
+            }
+        }
+        if let Some(p) = points
+            .iter()
+            .find(|p| !(p.is_finite() && p.cmpge(Vec2::ZERO).all() && p.cmplt(Vec2::ONE).all()))
+        {
+            panic!(
+                "sample: drew {p}, outside the unit square: is the point in the leaf scaled to \
+                 the leaf's size and put at its corner?"
+            );
+        }
+        let mut shares = [0.0f32; 7];
+        for &p in &points {
+            shares[leaf_by_hand(p)] += 1.0 / points.len() as f32;
+        }
+        let root = [shares[..4].iter().sum(), shares[4], shares[5], shares[6]];
+        let near = |got: &[f32], expected: &[f32]| {
+            got.iter().zip(expected).all(|(g, e)| (g - e).abs() < 0.01)
+        };
+        if root[3] > 0.0 {
+            let why = if near(&root, &[0.25; 4]) {
+                "the quadrants were drawn with equal chance, not in proportion to their sums"
+            } else {
+                "are the quadrants drawn in proportion to their sums, lower or upper by the sums \
+                 of the column already chosen?"
+            };
+            panic!(
+                "sample: the root's upper right quadrant holds nothing, yet it drew {:.3} of the \
+                 points: {why}",
+                root[3]
+            );
+        }
+        assert!(
+            near(&root, &[0.75, 0.125, 0.125, 0.0]),
+            "sample: the root's quadrants hold 6, 1, 1, 0 and drew shares {root:.3?} of the \
+             points, not 6/8, 1/8, 1/8, 0: is lower or upper chosen by the sums of the column \
+             already chosen, and the number rescaled to [0, 1) within the part it fell in?"
+        );
+        let below: Vec<f32> = shares[..4].iter().map(|s| s / root[0]).collect();
+        assert!(
+            near(&below, &[0.5, 1.0 / 6.0, 1.0 / 6.0, 1.0 / 6.0]),
+            "sample: the root's quadrants come out right, but below the first the quadrants \
+             holding 3, 1, 1, 1 drew shares {below:.3?} of its points, not 3/6, 1/6, 1/6, 1/6: \
+             was the 2D number rescaled to [0, 1) within the quadrant chosen before choosing \
+             the next?"
+        );
+        // The leaf [0.5, 1) x [0, 0.5): its points spread evenly over a 4 x 4 grid of it.
+        let mut cells = [0usize; 16];
+        let mut in_leaf = 0;
+        for p in points.iter().filter(|&&p| leaf_by_hand(p) == 4) {
+            let cell = ((*p - Vec2::new(0.5, 0.0)) * 8.0)
+                .as_uvec2()
+                .min(glam::UVec2::splat(3));
+            cells[(cell.y * 4 + cell.x) as usize] += 1;
+            in_leaf += 1;
+        }
+        let even = in_leaf as f32 / 16.0;
+        assert!(
+            cells.iter().all(|&c| (c as f32 - even).abs() <= 0.2 * even),
+            "sample: the {in_leaf} points in the leaf [0.5, 1) x [0, 0.5) are not spread evenly \
+             over it (a 4 x 4 grid of it holds {cells:?}): what is left of the 2D number once \
+             the leaf is chosen, rescaled to [0, 1), is the point in the leaf"
+        );
+    }
+
     #[test]
     fn exercise_quadtree_sample_draws_its_density() {
         let tree = taught_tree();
+        // The χ² test integrates pdf over its bins, and a density that is not a number would
+        // keep its integration refining: pdf's own check is the place to name that mistake.
+        let n = 256;
+        for i in 0..n * n {
+            let p = Vec2::new(
+                ((i % n) as f32 + 0.5) / n as f32,
+                ((i / n) as f32 + 0.5) / n as f32,
+            );
+            let density = tree.pdf(p);
+            assert!(
+                density.is_finite(),
+                "sample: pdf gives {density} at {p} of a tree that holds something, so the \
+                 points drawn cannot be tested against it: check pdf first (exercise \
+                 ch11-quadtree-pdf)"
+            );
+        }
         let result = chi2_test_density(
             plane(),
             200_000,
@@ -327,7 +525,7 @@ mod tests {
             (64, 64),
             |u| WarpPoint::Plane(tree.sample(u).unwrap_or(Vec2::splat(f32::NAN))),
             |point| match point {
-                WarpPoint::Plane(p) => tree.pdf(p),
+                WarpPoint::Plane(p) => Some(tree.pdf(p)).filter(|d| d.is_finite()).unwrap_or(0.0),
                 WarpPoint::Direction(_) => 0.0,
             },
         );

@@ -82,6 +82,7 @@ impl GuidingTarget {
     /// made relative, and what makes it a second moment? A record that cannot say (an estimate
     /// of the pixel that is not positive) adds nothing.
     pub fn recorded_value(self, vertex: &VertexRecord) -> f32 {
+        // BEGIN SOLUTION
         if vertex.pdf.is_nan() || vertex.pdf <= 0.0 {
             return 0.0;
         }
@@ -96,6 +97,7 @@ impl GuidingTarget {
                 relative * relative / vertex.pdf
             }
         }
+        // END SOLUTION
     }
     // ANCHOR_END: recorded_value
 }
@@ -170,103 +172,140 @@ mod tests {
     use super::*;
 
     /// A vertex whose numbers are easy to follow: the path carried 0.5 to it, the BSDF's
-    /// `f cos θ` is 0.4, the light arriving 3, the density 0.25, the pixel 0.2.
+    /// `f cos θ` is 0.4, the light arriving 3, the density 0.4, the pixel 0.3. Chosen so that
+    /// no two of the usual mistakes give the same number.
     fn vertex() -> VertexRecord {
         VertexRecord {
             incident: Vec3::splat(3.0),
             throughput: Vec3::splat(0.5),
             f_cos: Vec3::splat(0.4),
-            pdf: 0.25,
-            pixel_estimate: 0.2,
+            pdf: 0.4,
+            pixel_estimate: 0.3,
         }
+    }
+
+    /// The first of `candidates` (a number a mistake gives, and its words) that `got` equals,
+    /// or `otherwise`.
+    fn mistake<'a>(got: f32, candidates: &[(f32, &'a str)], otherwise: &'a str) -> &'a str {
+        candidates
+            .iter()
+            .find(|(wrong, _)| (got - wrong).abs() < 1e-3 * wrong.abs().max(1.0))
+            .map_or(otherwise, |(_, words)| words)
     }
 
     #[test]
     fn exercise_recorded_value_follows_the_light_for_radiance() {
         let got = GuidingTarget::Radiance.recorded_value(&vertex());
-        let why = if (got - 3.0).abs() < 1e-4 {
-            "the light was not divided by the density of its direction"
-        } else if (got - 0.75).abs() < 1e-4 {
-            "the light was multiplied by the density: a sample drawn often is worth less"
-        } else if (got - 2.4).abs() < 1e-3 {
-            "the radiance target follows the light alone, not the BSDF or the path"
-        } else {
-            "which of the record's fields does the radiance target follow?"
-        };
+        let why = mistake(
+            got,
+            &[
+                (
+                    3.0,
+                    "the light was not divided by the density of its direction",
+                ),
+                (
+                    1.2,
+                    "the light was multiplied by the density: a sample drawn often is worth less",
+                ),
+                (
+                    1.5,
+                    "the radiance target follows the light alone, not the BSDF or the path",
+                ),
+                (
+                    22.5,
+                    "the light was squared: only the variance-aware target records a second moment",
+                ),
+            ],
+            "which of the record's fields does the radiance target follow?",
+        );
         assert!(
-            (got - 12.0).abs() < 1e-3,
-            "recorded_value: light 3 arriving along a direction drawn with density 0.25 records \
-             {got}, expected 12: {why}"
+            (got - 7.5).abs() < 1e-3,
+            "recorded_value: light 3 arriving along a direction drawn with density 0.4 records \
+             {got}, expected 7.5: {why}"
         );
     }
 
     #[test]
     fn exercise_recorded_value_is_the_second_moment_relative_to_the_pixel() {
         let got = GuidingTarget::Variance.recorded_value(&vertex());
-        // What the vertex adds to its pixel: 0.5 · 0.4 · 3 = 0.6, relative: 0.6 / 0.2 = 3.
-        let candidates = [
-            (
-                3.0 / 0.25,
-                "the value is not squared: the target is a second moment",
-            ),
-            (
-                0.36 / 0.25,
-                "the value was not made relative to the pixel's estimate",
-            ),
-            (
-                9.0,
-                "the square was not divided by the density of the direction",
-            ),
-            (
-                9.0 / 0.0625,
-                "the density was squared with the value: one sample is worth its value over the density once",
-            ),
-            (
-                0.6 * 0.6 / 0.04 / 0.04 / 0.25,
-                "the pixel's estimate was divided twice",
-            ),
-            (
-                (1.2f32 / 0.2).powi(2) / 0.25,
-                "the path's throughput before the vertex was left out of what the vertex adds",
-            ),
-            (
-                (1.5f32 / 0.2).powi(2) / 0.25,
-                "the BSDF's f cos θ was left out of what the vertex adds",
-            ),
-        ];
-        let why = candidates
-            .iter()
-            .find(|(wrong, _)| (got - wrong).abs() < 1e-3 * wrong.abs().max(1.0))
-            .map_or(
-                "what does the vertex add to its pixel, relative to the pixel?",
-                |(_, w)| w,
-            );
-        assert!(
-            (got - 36.0).abs() < 1e-3,
-            "recorded_value: a vertex adding 0.6 to a pixel of 0.2, its direction drawn with \
-             density 0.25, records {got} for the variance-aware target, expected 36: {why}"
+        // What the vertex adds to its pixel: 0.5 · 0.4 · 3 = 0.6; relative to the pixel's 0.3,
+        // 2; its second moment 4; one sample of density 0.4 of it is worth 10.
+        let why = mistake(
+            got,
+            &[
+                (
+                    7.5,
+                    "that is the radiance target's value: the variance-aware target records what \
+                     the vertex adds to its pixel, not the light arriving",
+                ),
+                (
+                    22.5,
+                    "the light arriving was squared, not what the vertex adds to its pixel",
+                ),
+                (
+                    5.0,
+                    "the value is not squared: the target is a second moment",
+                ),
+                (
+                    0.9,
+                    "the value was not made relative to the pixel's estimate",
+                ),
+                (
+                    3.0,
+                    "the pixel's estimate divides the value before it is squared, not after",
+                ),
+                (
+                    4.0,
+                    "the square was not divided by the density of the direction",
+                ),
+                (
+                    25.0,
+                    "the density was squared with the value: one sample is worth its value over \
+                     the density once",
+                ),
+                (
+                    0.36 / 0.09 / 0.09 / 0.4,
+                    "the pixel's estimate was divided twice",
+                ),
+                (
+                    40.0,
+                    "the path's throughput before the vertex was left out of what the vertex adds",
+                ),
+                (
+                    62.5,
+                    "the BSDF's f cos θ was left out of what the vertex adds",
+                ),
+            ],
+            "what does the vertex add to its pixel, relative to the pixel?",
         );
-        let dark = VertexRecord {
-            pixel_estimate: 0.0,
-            ..vertex()
-        };
-        let got = GuidingTarget::Variance.recorded_value(&dark);
         assert!(
-            got == 0.0,
-            "recorded_value: with no estimate of its pixel a vertex cannot say how much it adds \
-             relative to it, so it records nothing, not {got}"
+            (got - 10.0).abs() < 1e-3,
+            "recorded_value: a vertex adding 0.6 to a pixel of 0.3, its direction drawn with \
+             density 0.4, records {got} for the variance-aware target, expected 10: {why}"
         );
-        for target in [GuidingTarget::Radiance, GuidingTarget::Variance] {
-            let none = VertexRecord {
-                pdf: 0.0,
+        for pixel_estimate in [0.0, -1.0, f32::NAN] {
+            let dark = VertexRecord {
+                pixel_estimate,
                 ..vertex()
             };
-            let got = target.recorded_value(&none);
+            let got = GuidingTarget::Variance.recorded_value(&dark);
             assert!(
                 got == 0.0,
-                "recorded_value: a direction of density 0 was never drawn, and records \
-                 nothing, not {got}"
+                "recorded_value: with an estimate of its pixel of {pixel_estimate} a vertex \
+                 cannot say how much it adds relative to it, so it records nothing, not {got}"
             );
+        }
+        for target in [GuidingTarget::Radiance, GuidingTarget::Variance] {
+            for pdf in [0.0, f32::NAN] {
+                let none = VertexRecord { pdf, ..vertex() };
+                let got = target.recorded_value(&none);
+                assert!(
+                    got == 0.0,
+                    "recorded_value: a direction of density {pdf} was never drawn, and records \
+                     nothing for the {} target, not {got}",
+                    target.name()
+                );
+            }
         }
     }
 
