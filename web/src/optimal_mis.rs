@@ -244,12 +244,14 @@ impl Demo for OptimalMisDemo {
         "optimal-mis"
     }
 
+    /// The scene comes last: the site's check moves the controls in this order, and would
+    /// find the floor's roughness and the light's radius hidden once the scene is the plane.
     fn controls(&self) -> Vec<Control> {
         vec![
-            Control::choice("scene", "scene", SCENES, 0),
             Control::choice("combination", "combination", COMBINATION_NAMES, 0),
             Control::range("alpha", "floor roughness α", 0.02, 0.6, 0.01, 0.15).when("scene", 0.0),
             Control::range("light-radius", "light radius", 0.05, 1.0, 0.05, 0.4).when("scene", 0.0),
+            Control::choice("scene", "scene", SCENES, 0),
         ]
     }
 
