@@ -21,6 +21,8 @@ pub static DEMOS: &[&dyn Demo] = &[
     &crate::soft_shadows::SoftShadowsDemo,
     &crate::path_tracing::PathTracingDemo,
     &crate::materials::MaterialsDemo,
+    &crate::optimal_mis::OptimalMisDemo,
+    &crate::path_guiding::PathGuidingDemo,
 ];
 
 /// The most sessions a page may run at once.
