@@ -1,13 +1,14 @@
-//! `render`: a scene file's direct light, the two techniques combined as `--mis` says.
+//! `render`: a scene file, the two techniques combined as `--mis` says.
 //!
-//! Whatever the file's integrator, the binary renders what Mitsuba's `direct` integrator with
-//! one light sample and one BSDF sample renders (the chapter's subject is the combination of
-//! those two), and says so when the file asks for more. Each pixel is estimated from its own
+//! A file's `direct` integrator is rendered with one light sample and one BSDF sample (the
+//! chapter's subject is the combination of those two; the binary says so when the file asks
+//! for other counts); its `path` integrator as chapter 08 renders it, the two techniques
+//! combined at every vertex, per pixel and per depth. Each pixel is estimated from its own
 //! samples, as under a box filter, for every `--mis`, so that the three are compared on the
 //! same footing; a file's wider filter is left aside with a note.
 
 use crate::pixel::Combination;
-use crate::render_direct_with;
+use crate::{render_direct_with, render_path_with};
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::lab::cli::LensArgs;
 use ch05_motion_blur::lab::scene_file::motion_for_render;
@@ -83,16 +84,14 @@ impl ChapterRender for RenderOptions {
         job: &RenderJob,
     ) -> anyhow::Result<(Shot, PathOptions)> {
         let side = from_file.expect("the scene was read from a file");
-        let direct_only = side
+        let other_counts = side
             .options
             .direct
-            .is_some_and(|samples| samples != common::scene::DirectSamples::ONE_EACH)
-            || (side.options.direct.is_none() && scene.max_depth != 2);
-        if direct_only {
+            .is_some_and(|samples| samples != common::scene::DirectSamples::ONE_EACH);
+        if other_counts {
             eprintln!(
                 "note: {}: rendered as Mitsuba's `direct` with one light sample and one BSDF \
-                 sample (the light straight from the lights), whatever the file's integrator \
-                 asks",
+                 sample, not the counts the file asks for",
                 job.name
             );
         }
@@ -123,7 +122,14 @@ impl ChapterRender for RenderOptions {
     ) -> anyhow::Result<Rendered> {
         let combination = self.mis.combination();
         let materials = SceneMaterials::of(&shot.world.scene, FuzzMethod::Lobe);
-        let output = render_direct_with(
+        // A `direct` integrator, or a path cut after its first bounce, is the direct light.
+        let paths = options.direct.is_none() && options.max_depth > 2;
+        let render = if paths {
+            render_path_with
+        } else {
+            render_direct_with
+        };
+        let output = render(
             &shot.world,
             materials,
             options,
@@ -132,7 +138,8 @@ impl ChapterRender for RenderOptions {
             &shot.sampler,
             combination,
         );
-        let mut stats = serde_json::json!({ "mis": combination.name() });
+        let light = if paths { "paths" } else { "direct" };
+        let mut stats = serde_json::json!({ "mis": combination.name(), "light": light });
         shot.record_stats(&mut stats);
         Ok(Rendered {
             output,
