@@ -2,10 +2,11 @@
 //! on the glossy floor, with their errors, and their error against time on three scenes.
 
 use crate::pixel::Combination;
-use crate::render_direct_with;
+use crate::{render_direct_with, render_path_with};
 use ch04_depth_of_field::Lens;
 use ch05_motion_blur::MotionScene;
 use ch06_fuzzy_reflections::FuzzMethod;
+use ch08_path_tracing::lab::scene_file::path_options;
 use ch08_path_tracing::{MisHeuristic, PathOptions};
 use ch09_materials::SceneMaterials;
 use common::image::Image;
@@ -39,8 +40,19 @@ pub fn write_all(out: &Path, quick: bool) -> anyhow::Result<()> {
         )
     })?;
     for (scene_name, file, what) in EQUAL_TIME_SCENES {
-        figures.make(what, |out| error_against_time(out, scene_name, file, level))?;
+        figures.make(what, |out| {
+            error_against_time(out, scene_name, file, Light::Direct, level)
+        })?;
     }
+    figures.make("the error against time: the Cornell box's paths", |out| {
+        error_against_time(
+            out,
+            "cornell-box-paths",
+            "../ch08-path-tracing/scenes/cornell-box.xml",
+            Light::Paths,
+            level,
+        )
+    })?;
     figures.agreement(&crate::lab::agreement::AGREEMENT)?;
     figures.finish()
 }
@@ -65,20 +77,41 @@ const EQUAL_TIME_SCENES: [(&str, &str, &str); 3] = [
     ),
 ];
 
-/// The three combinations on the scene file `file` (relative to the crate) at growing sample
+/// What the figures render of a scene file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Light {
+    /// The light straight from the lights at the surface the camera sees.
+    Direct,
+    /// Whole paths, as the file's `path` integrator asks, combined at every vertex per depth.
+    Paths,
+}
+
+/// The combinations on the scene file `file` (relative to the crate) at growing sample
 /// counts, timed, against a long render with the power heuristic, the lights the camera sees
 /// left out: `NAME-error-time.csv`, its
 /// log-log plot `NAME-error-time.png`, and the table `NAME-error-time.md`.
-fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyhow::Result<()> {
+fn error_against_time(
+    out: &Path,
+    name: &str,
+    file: &str,
+    light: Light,
+    level: Level,
+) -> anyhow::Result<()> {
     // The lights the camera sees are left out (Mitsuba's `hide_emitters`): the noise of their
     // edges is the same for every combination and would drown the difference.
-    let options = PathOptions {
+    let renders = Renders::of(file, level, light, |file_options| PathOptions {
         hide_emitters: true,
-        ..PathOptions::default()
-    };
-    let renders = DirectRenders::of(file, level, options)?;
+        ..match light {
+            Light::Direct => PathOptions::default(),
+            Light::Paths => file_options,
+        }
+    })?;
     let render = |spp, seed, combination| renders.render(spp, seed, combination);
-    let reference = render(level.pick(1024, 4096), 1_000, POWER);
+    let reference_spp = match light {
+        Light::Direct => level.pick(1024, 4096),
+        Light::Paths => level.pick(256, 4096),
+    };
+    let reference = render(reference_spp, 1_000, POWER);
     let techniques: Vec<Technique> = Combination::ALL
         .into_iter()
         .map(|combination| {
@@ -90,7 +123,13 @@ fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyho
     write_convergence_csv(&out.join(format!("{name}-error-time.csv")), &records)?;
     plot_error_vs_time(
         &out.join(format!("{name}-error-time.png")),
-        &format!("{name}: error against time, direct light"),
+        &format!(
+            "{name}: error against time, {}",
+            match light {
+                Light::Direct => "direct light",
+                Light::Paths => "whole paths, combined per depth",
+            }
+        ),
         &records,
     )?;
     write_text(
@@ -115,19 +154,27 @@ const POWER: Combination = Combination::Heuristic(MisHeuristic::Power);
 /// A scene file rendered again and again, as the figures render it: its direct light at half
 /// its film's size at the quick level, at its size for the book, with `options`; the materials
 /// tabulated once, since the renders are timed and the tables are the same for every one.
-struct DirectRenders {
+struct Renders {
     world: MotionScene,
     materials: SceneMaterials,
     options: PathOptions,
+    light: Light,
     width: u32,
     height: u32,
 }
 
-impl DirectRenders {
-    /// The scene file `file` (relative to the crate), ready to render.
-    fn of(file: &str, level: Level, options: PathOptions) -> anyhow::Result<Self> {
+impl Renders {
+    /// The scene file `file` (relative to the crate), ready to render `light` with the
+    /// options `options` makes of the file's.
+    fn of(
+        file: &str,
+        level: Level,
+        light: Light,
+        options: impl FnOnce(PathOptions) -> PathOptions,
+    ) -> anyhow::Result<Self> {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
         let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
+        let options = options(path_options(&loaded.scene));
         let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
         let film = world.scene.film;
         let (width, height) =
@@ -137,6 +184,7 @@ impl DirectRenders {
             world,
             materials,
             options,
+            light,
             width,
             height,
         })
@@ -146,7 +194,11 @@ impl DirectRenders {
     fn render(&self, spp: u64, seed: u64, combination: Combination) -> Image {
         let settings = RenderSettings::new(self.width, self.height, spp);
         let sampler = IndependentSampler::new(seed);
-        render_direct_with(
+        let render = match self.light {
+            Light::Direct => render_direct_with,
+            Light::Paths => render_path_with,
+        };
+        render(
             &self.world,
             self.materials.clone(),
             self.options,
@@ -170,7 +222,9 @@ fn side_by_side(
     level: Level,
     reference: Reference,
 ) -> anyhow::Result<()> {
-    let renders = DirectRenders::of(&format!("scenes/{name}.xml"), level, PathOptions::default())?;
+    let renders = Renders::of(&format!("scenes/{name}.xml"), level, Light::Direct, |_| {
+        PathOptions::default()
+    })?;
     let (width, height) = (renders.width, renders.height);
     let render = |spp, seed, combination| renders.render(spp, seed, combination);
     let expected = match reference {
