@@ -151,6 +151,7 @@ impl ChapterRender for RenderOptions {
                     "spatial_leaves": i.leaves,
                     "quadtree_nodes": i.quadtree_nodes,
                     "memory_bytes": i.memory_bytes,
+                    "learnt_fraction": i.learnt_fraction,
                 })).collect::<Vec<_>>(),
             });
         }

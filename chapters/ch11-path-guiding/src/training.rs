@@ -79,6 +79,9 @@ pub struct TrainingIteration {
     pub memory_bytes: usize,
     /// Its samples whose radiance was not finite (a bug upstream), left out of its image.
     pub nonfinite_samples: u64,
+    /// The BSDF fraction learnt so far, the leaves' mean weighted by the samples each learnt
+    /// from; `None` while nothing has been learnt (or the fraction is fixed).
+    pub learnt_fraction: Option<f32>,
 }
 
 /// The guides learnt by a training run and what it cost.
@@ -263,7 +266,17 @@ fn iteration_report(
         quadtree_nodes: guides.guides.iter().map(|g| g.sampling.nodes.len()).sum(),
         memory_bytes: guides.memory_bytes(),
         nonfinite_samples: cost.nonfinite_samples,
+        learnt_fraction: mean_learnt_fraction(guides),
     }
+}
+
+/// The leaves' learnt fractions, averaged with the samples each learnt from as weights.
+fn mean_learnt_fraction(guides: &SpatialTree) -> Option<f32> {
+    let (sum, steps) = guides.guides.iter().fold((0.0f64, 0.0f64), |(sum, n), g| {
+        let steps = f64::from(g.fraction.steps());
+        (sum + steps * f64::from(g.fraction.fraction()), n + steps)
+    });
+    (steps > 0.0).then(|| (sum / steps) as f32)
 }
 
 /// A sampler whose sample indices start at `first_index`: each pass draws numbers of its own,
