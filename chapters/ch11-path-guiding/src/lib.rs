@@ -59,7 +59,8 @@ use std::time::Instant;
 #[derive(Clone, Debug)]
 pub struct GuidedRender {
     /// The image: the training's and the final pass's averaged ([`combine`]), or the final
-    /// pass's alone when the film's filter is not a box of one pixel. Its statistics count
+    /// pass's alone when the film's filter is not a box of one pixel or a stop cut the final
+    /// pass short. Its statistics count
     /// the whole render, training included (seconds and rays), and its samples per pixel
     /// are those of the passes it averages.
     pub output: RenderOutput,
