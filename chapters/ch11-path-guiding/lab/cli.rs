@@ -52,9 +52,10 @@ pub struct RenderOptions {
     /// What guides the directions.
     #[arg(long, value_enum, default_value_t = GuidingArg::Variance)]
     pub guiding: GuidingArg,
-    /// The probability of drawing a direction from the BSDF rather than the guide (0 to 1).
-    #[arg(long, default_value_t = crate::guided_bsdf::BSDF_FRACTION, value_parser = fraction, allow_hyphen_values = true)]
-    pub bsdf_fraction: f32,
+    /// The probability of drawing a direction from the BSDF rather than the guide (0 to 1),
+    /// the same everywhere; without it each region of the scene learns its own.
+    #[arg(long, value_parser = fraction, allow_hyphen_values = true)]
+    pub bsdf_fraction: Option<f32>,
     #[command(flatten)]
     pub anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
@@ -132,11 +133,16 @@ impl ChapterRender for RenderOptions {
         );
         let mut stats = serde_json::json!({
             "guiding": self.guiding.name(),
-            "bsdf_fraction": guiding.map(|g| g.bsdf_fraction),
+            "bsdf_fraction": guiding.map(|g| match g.bsdf_fraction {
+                Some(f) => serde_json::json!(f),
+                None => serde_json::json!("learnt"),
+            }),
         });
         if let Some(trained) = &rendered.training {
             stats["training"] = serde_json::json!({
                 "spp": trained.spp,
+                "pass_weights": rendered.pass_weights,
+                "learnt_fractions": learnt_fractions(&trained.guides),
                 "seconds": trained.iterations.iter().map(|i| i.seconds).sum::<f64>(),
                 "iterations": trained.iterations.iter().map(|i| serde_json::json!({
                     "spp": i.spp,
@@ -145,6 +151,7 @@ impl ChapterRender for RenderOptions {
                     "spatial_leaves": i.leaves,
                     "quadtree_nodes": i.quadtree_nodes,
                     "memory_bytes": i.memory_bytes,
+                    "learnt_fraction": i.learnt_fraction,
                 })).collect::<Vec<_>>(),
             });
         }
@@ -155,4 +162,30 @@ impl ChapterRender for RenderOptions {
             detail: format!(", --guiding {}", self.guiding.name()),
         })
     }
+}
+
+/// The learnt BSDF fractions over the spatial leaves that learnt one: the least, the mean
+/// weighted by the samples each learnt from, the most, and how many leaves.
+pub fn learnt_fractions(guides: &crate::spatial::SpatialTree) -> serde_json::Value {
+    let learnt: Vec<(f64, f64)> = guides
+        .guides
+        .iter()
+        .filter(|g| g.fraction.steps() > 0)
+        .map(|g| {
+            (
+                f64::from(g.fraction.fraction()),
+                f64::from(g.fraction.steps()),
+            )
+        })
+        .collect();
+    let steps: f64 = learnt.iter().map(|l| l.1).sum();
+    if learnt.is_empty() || steps <= 0.0 {
+        return serde_json::Value::Null;
+    }
+    serde_json::json!({
+        "leaves": learnt.len(),
+        "min": learnt.iter().map(|l| l.0).fold(f64::INFINITY, f64::min),
+        "mean": learnt.iter().map(|l| l.0 * l.1).sum::<f64>() / steps,
+        "max": learnt.iter().map(|l| l.0).fold(f64::NEG_INFINITY, f64::max),
+    })
 }

@@ -142,19 +142,32 @@ fn side_by_side(out: &Path, name: &str, level: Level) -> anyhow::Result<()> {
             && let Some(trained) = &rendered.training
         {
             training = String::from(
-                "| iteration | samples per pixel | seconds | spatial leaves | quadtree nodes | memory (kB) |\n|---:|---:|---:|---:|---:|---:|\n",
+                "| iteration | samples per pixel | seconds | spatial leaves | quadtree nodes | memory (kB) | BSDF fraction learnt | weight in the image |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n",
             );
             for (k, i) in trained.iterations.iter().enumerate() {
                 training += &format!(
-                    "| {} | {} | {:.3} | {} | {} | {:.0} |\n",
+                    "| {} | {} | {:.3} | {} | {} | {:.0} | {} | {} |\n",
                     k + 1,
                     i.spp,
                     i.seconds,
                     i.leaves,
                     i.quadtree_nodes,
-                    i.memory_bytes as f64 / 1024.0
+                    i.memory_bytes as f64 / 1024.0,
+                    i.learnt_fraction
+                        .map_or_else(|| "-".to_string(), |f| format!("{f:.3}")),
+                    weight_of(&rendered.pass_weights, k),
                 );
             }
+            let last = trained.iterations.len();
+            training += &format!(
+                "| final pass | {} | | | | | | {} |\n",
+                if rendered.pass_weights.is_empty() {
+                    rendered.output.stats.spp
+                } else {
+                    rendered.output.stats.spp.saturating_sub(trained.spp)
+                },
+                weight_of(&rendered.pass_weights, last),
+            );
         }
     }
     write_text(&out.join(format!("{name}.md")), &table)?;
@@ -193,4 +206,11 @@ fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyho
         &convergence_markdown(&records, "samples per pixel (the budget)"),
     )?;
     Ok(())
+}
+
+/// Pass `k`'s weight in the image, or a dash when the final pass alone makes it.
+fn weight_of(weights: &[f64], k: usize) -> String {
+    weights
+        .get(k)
+        .map_or_else(|| "-".to_string(), |w| format!("{w:.3}"))
 }

@@ -21,8 +21,8 @@ use common::geometry::SurfaceHit;
 use common::sampler::Sampler;
 use glam::Vec3;
 
-/// The BSDF fraction Müller et al. use: half the directions from the BSDF, half from the
-/// guide.
+/// The BSDF fraction of Müller et al.'s first paper: half the directions from the BSDF, half
+/// from the guide (each region learns its own otherwise, [`crate::selection`]).
 pub const BSDF_FRACTION: f32 = 0.5;
 
 /// A surface's BSDF and the guide of its region, sampled as a mixture.
@@ -51,6 +51,13 @@ impl<'a, B: SurfaceBsdf> GuidedBsdf<'a, B> {
     /// The guide's density of `wi` per unit solid angle.
     fn guide_pdf(guide: &DirectionTree, wi: Vec3) -> f32 {
         solid_angle_pdf(guide.pdf(point_of(wi)))
+    }
+
+    /// The BSDF's and the guide's densities of `wi` apart, when they are mixed: what the
+    /// fraction is learnt from ([`crate::selection`]).
+    pub fn densities(&self, wo: Vec3, wi: Vec3) -> Option<(f32, f32)> {
+        let guide = self.guide?;
+        Some((self.bsdf.pdf(wo, wi), Self::guide_pdf(guide, wi)))
     }
 }
 

@@ -18,15 +18,18 @@
 //! - [`quadtree`]: the directional quadtree, its sampling and its density, its rebuilding;
 //! - [`spatial`]: the binary tree over space whose leaves hold the guides;
 //! - [`guided_bsdf`]: the BSDF and the guide sampled as one mixture;
+//! - [`selection`]: how often each region asks the BSDF rather than its guide, learnt;
 //! - [`target`]: what a vertex records, towards the light or towards the pixel's variance;
 //! - [`path`]: chapter 08's path with guided directions, recording while it trains;
-//! - [`training`]: the iterations, the budget split between training and the final image.
+//! - [`training`]: the iterations, the budget split between training and the final image;
+//! - [`combine`]: the training's images kept, averaged with the final one by their noise.
 //!
 //! The crate's workbench (its binary, `render --guiding off|radiance|variance`, and the
 //! figures) is `lab`, in the folder `lab/` beside `src/`, built with the `lab` feature.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod combine;
 pub mod directions;
 pub mod guided_bsdf;
 #[cfg(feature = "lab")]
@@ -34,6 +37,7 @@ pub mod guided_bsdf;
 pub mod lab;
 pub mod path;
 pub mod quadtree;
+pub mod selection;
 pub mod spatial;
 pub mod target;
 pub mod training;
@@ -51,14 +55,20 @@ use common::image::Image;
 use common::render::{self, Budget, RenderOutput, RenderSettings, RenderStats, Totals};
 use std::time::Instant;
 
-/// A guided render: the final pass's image, and what the training before it learnt and cost.
+/// A guided render: its image, and what the training before it learnt and cost.
 #[derive(Clone, Debug)]
 pub struct GuidedRender {
-    /// The image of the final pass; its statistics count the whole render, training
-    /// included (seconds and rays), and its samples per pixel are the final pass's.
+    /// The image: the training's and the final pass's averaged ([`combine`]), or the final
+    /// pass's alone when the film's filter is not a box of one pixel or a stop cut the final
+    /// pass short. Its statistics count
+    /// the whole render, training included (seconds and rays), and its samples per pixel
+    /// are those of the passes it averages.
     pub output: RenderOutput,
     /// The training; `None` when guiding is off.
     pub training: Option<Trained>,
+    /// The weight of each pass in the image, the training's iterations then the final pass;
+    /// empty when the final pass alone makes it.
+    pub pass_weights: Vec<f64>,
 }
 
 // ANCHOR: render_guided
@@ -93,6 +103,7 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
         return GuidedRender {
             output,
             training: None,
+            pass_weights: Vec::new(),
         };
     };
 
@@ -127,6 +138,27 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
         let ray = camera_rays.generate(world, p_film, sampler);
         guided.radiance(&ray, sampler, None)
     });
+    // The training's images kept: averaged with the final pass's by their measured noise, when
+    // they are means of the same kind.
+    let mut pass_weights = Vec::new();
+    if combine::makes_pixel_means(filter) && !output.stats.interrupted {
+        let passes: Vec<combine::Pass<'_>> = trained
+            .images
+            .iter()
+            .zip(&trained.iterations)
+            .map(|(image, i)| combine::Pass { image, spp: i.spp })
+            .chain(std::iter::once(combine::Pass {
+                image: &output.image,
+                spp: output.stats.spp,
+            }))
+            .collect();
+        pass_weights = combine::inverse_variance_weights(&passes);
+        let image = combine::combine(&passes, &pass_weights);
+        output.image = image;
+        output.stats.spp += trained.spp;
+        output.stats.samples +=
+            trained.spp * u64::from(settings.width) * u64::from(settings.height);
+    }
     // The statistics count the whole render: its time, and the training's rays too.
     output.stats.seconds = start.elapsed().as_secs_f64();
     output.stats.rays += trained.iterations.iter().map(|i| i.rays).sum::<u64>();
@@ -138,6 +170,7 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
     GuidedRender {
         output,
         training: Some(trained),
+        pass_weights,
     }
 }
 // ANCHOR_END: render_guided
@@ -159,11 +192,13 @@ fn stopped_in_training(
     let seconds = start.elapsed().as_secs_f64();
     let stats = RenderStats::new(settings, spp, true, seconds, &totals);
     let image = trained
-        .last_image
-        .clone()
+        .images
+        .last()
+        .cloned()
         .unwrap_or_else(|| Image::new(settings.width, settings.height));
     GuidedRender {
         output: RenderOutput { image, stats },
         training: Some(trained),
+        pass_weights: Vec::new(),
     }
 }

@@ -8,7 +8,8 @@
 //! (not a delta) is remembered; when the path ends, all it brought back after the vertex,
 //! over what it carried from there on, estimates the light that arrived along that
 //! direction, and the vertex's [`VertexRecord`] becomes one record for its guide
-//! ([`GuidingTarget::recorded_value`]).
+//! ([`GuidingTarget::recorded_value`]) and, where the BSDF and the guide were mixed, one sample
+//! for learning the region's BSDF fraction ([`crate::selection`]).
 //!
 //! Random numbers per bounce: the light sample's, as in chapter 08, then, where a guide is
 //! mixed in, one for the choice and the BSDF's numbers or the guide's two, then the roulette's.
@@ -17,6 +18,7 @@
 
 use crate::directions::point_of;
 use crate::guided_bsdf::GuidedBsdf;
+use crate::selection::{self, FractionSample};
 use crate::spatial::SpatialTree;
 use crate::target::{GuidingTarget, VertexRecord};
 use ch01_whitted::world::World;
@@ -37,6 +39,9 @@ pub struct GuideRecord {
     pub point: Vec2,
     /// The value ([`GuidingTarget::recorded_value`]).
     pub value: f32,
+    /// What it says on the guide's BSDF fraction, if the direction came from a mixture whose
+    /// fraction is learnt.
+    pub fraction: Option<FractionSample>,
 }
 
 /// What a training path learns with, and where its records go.
@@ -55,8 +60,9 @@ pub struct GuidedPathTracer<'a, M: Materials> {
     pub tracer: &'a PathTracer<'a, M>,
     /// The guides, region by region.
     pub guides: &'a SpatialTree,
-    /// The probability of drawing a direction from the BSDF rather than the guide.
-    pub bsdf_fraction: f32,
+    /// The probability of drawing a direction from the BSDF rather than the guide; `None`:
+    /// each region's learnt fraction.
+    pub bsdf_fraction: Option<f32>,
 }
 
 /// A vertex of a training path, until the path ends.
@@ -73,6 +79,9 @@ struct PendingVertex {
     radiance_before: Vec3,
     /// The segment the vertex ends.
     depth: u32,
+    /// The BSDF's and the guide's densities of the direction and the fraction it was drawn
+    /// with, if they were mixed with a fraction being learnt.
+    mixture: Option<(f32, f32, f32)>,
 }
 
 /// Leaves out of what the vertex of the segment before `depth` learns the light `found`
@@ -152,10 +161,14 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
             }
             let material = tracer.world.material_at(&hit);
             let guide = self.guides.guide_of(hit.p);
+            let region = &self.guides.guides[guide as usize];
+            let fraction = self
+                .bsdf_fraction
+                .unwrap_or_else(|| region.fraction.fraction());
             let bsdf = GuidedBsdf::new(
                 tracer.materials.bsdf(&material, &hit),
-                Some(&self.guides.guides[guide as usize].sampling),
-                self.bsdf_fraction,
+                Some(&region.sampling),
+                fraction,
             );
             let wo = -ray.dir;
 
@@ -182,6 +195,12 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                 break;
             };
             if learning.is_some() && !sample.is_delta() {
+                let mixture = match self.bsdf_fraction {
+                    Some(_) => None,
+                    None => bsdf
+                        .densities(wo, sample.wi)
+                        .map(|(bsdf_pdf, guide_pdf)| (bsdf_pdf, guide_pdf, fraction)),
+                };
                 vertices.push(PendingVertex {
                     guide,
                     wi: sample.wi,
@@ -191,6 +210,7 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                     pdf: sample.pdf,
                     radiance_before: radiance,
                     depth,
+                    mixture,
                 });
             }
             (previous_p, previous_pdf) = (hit.p, sample.pdf);
@@ -211,6 +231,7 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
         // The path has ended: what it brought back after each vertex, over what it carried
         // from there, is the light that arrived along the vertex's direction.
         if let Some(learning) = learning {
+            let loss = selection::loss_of(learning.target);
             for v in &vertices {
                 let after = radiance - v.radiance_before;
                 let carried = v.throughput_after;
@@ -222,10 +243,26 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                     pdf: v.pdf,
                     pixel_estimate: learning.pixel_estimate,
                 };
+                let fraction = v.mixture.map(|(bsdf_pdf, guide_pdf, drawn_with)| {
+                    let integrand = selection::integrand(
+                        loss,
+                        v.throughput_before,
+                        v.f_cos,
+                        incident,
+                        learning.pixel_estimate,
+                    );
+                    FractionSample {
+                        integrand,
+                        bsdf_pdf,
+                        guide_pdf,
+                        drawn_with,
+                    }
+                });
                 learning.records.push(GuideRecord {
                     guide: v.guide,
                     point: point_of(v.wi),
                     value: learning.target.recorded_value(&record),
+                    fraction,
                 });
             }
         }

@@ -4,13 +4,15 @@
 //! learns its own [`DirectionTree`]. Müller et al. cut the scene's box by a binary tree, each
 //! split halving a box across one axis (x, then y, then z, then x again), and a leaf holds
 //! the guide of its region: the quadtree sampled from in this iteration (`sampling`, learnt
-//! in the one before) and the one being learnt (`building`). A leaf that received more than
+//! in the one before), the one being learnt (`building`), and how often to ask the BSDF
+//! rather than the guide (`fraction`). A leaf that received more than
 //! a threshold of records in an iteration is split in two, each half starting from a copy of
 //! its guide, so the tree is fine where paths are many. The threshold grows as the square
 //! root of the iteration's samples: the leaves keep more records each as training goes on, so
 //! their quadtrees get finer as well as more numerous.
 
 use crate::quadtree::DirectionTree;
+use crate::selection::LearntFraction;
 use common::geometry::Aabb;
 use glam::Vec3;
 
@@ -27,6 +29,8 @@ pub struct Guide {
     pub building: DirectionTree,
     /// How many records `building` received.
     pub records: u64,
+    /// The region's BSDF fraction, learnt with the quadtrees.
+    pub fraction: LearntFraction,
 }
 
 /// A node of the spatial tree: a split of its box in two halves across `axis`, or a leaf

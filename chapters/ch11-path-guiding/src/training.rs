@@ -6,12 +6,13 @@
 //! spatial tree splits its busy leaves, and each quadtree is rebuilt around what it learnt.
 //! Training stops when the rest of the budget would be less than twice the next iteration,
 //! so that the final pass, guided by the last guides and recording nothing, gets at least as
-//! many samples (or as much time) as all the training before it. Only the final pass makes
-//! the image: every iteration's image is unbiased, but the early ones, guided by little, are
-//! the noisiest, and weighing them by their measured noise would bias the result.
+//! many samples (or as much time) as all the training before it. Every iteration's image is
+//! kept: each is unbiased, and the render averages them with the final pass's, the noisy
+//! early ones counting for little ([`crate::combine`]).
 
 use crate::path::{GuideRecord, GuidedPathTracer, Learning};
 use crate::quadtree::{DirectionTree, SPLIT_FRACTION};
+use crate::selection::{self, LearntFraction};
 use crate::spatial::SpatialTree;
 use crate::target::{GuidingTarget, pixel_estimates};
 use ch05_motion_blur::TimeSampler;
@@ -27,8 +28,9 @@ use std::time::Instant;
 pub struct GuidingOptions {
     /// What the guides follow.
     pub target: GuidingTarget,
-    /// The probability of drawing a direction from the BSDF rather than the guide.
-    pub bsdf_fraction: f32,
+    /// The probability of drawing a direction from the BSDF rather than the guide, if fixed;
+    /// `None`: each region learns its own ([`crate::selection`]).
+    pub bsdf_fraction: Option<f32>,
     /// `c` of the spatial tree's threshold: a leaf is split when it received more than
     /// `c · sqrt(spp)` records in an iteration of `spp` samples per pixel (Müller et al.'s
     /// `c = 12000`, for images of about a million pixels).
@@ -42,7 +44,7 @@ impl GuidingOptions {
     pub fn new(target: GuidingTarget) -> Self {
         Self {
             target,
-            bsdf_fraction: crate::guided_bsdf::BSDF_FRACTION,
+            bsdf_fraction: None,
             spatial_threshold: 12000.0,
             split_fraction: SPLIT_FRACTION,
         }
@@ -77,6 +79,9 @@ pub struct TrainingIteration {
     pub memory_bytes: usize,
     /// Its samples whose radiance was not finite (a bug upstream), left out of its image.
     pub nonfinite_samples: u64,
+    /// The BSDF fraction learnt so far, the leaves' mean weighted by the samples each learnt
+    /// from; `None` while nothing has been learnt (or the fraction is fixed).
+    pub learnt_fraction: Option<f32>,
 }
 
 /// The guides learnt by a training run and what it cost.
@@ -86,8 +91,8 @@ pub struct Trained {
     pub guides: SpatialTree,
     /// The iterations, in order.
     pub iterations: Vec<TrainingIteration>,
-    /// The image of the last iteration (each pixel its samples' mean), if any.
-    pub last_image: Option<Image>,
+    /// Each iteration's image (each pixel its samples' mean), in order.
+    pub images: Vec<Image>,
     /// Samples per pixel spent.
     pub spp: u64,
     /// Whether a stop ended it.
@@ -136,7 +141,7 @@ where
     let mut trained = Trained {
         guides: SpatialTree::new(bounds),
         iterations: Vec::new(),
-        last_image: None,
+        images: Vec::new(),
         spp: 0,
         interrupted: false,
     };
@@ -152,7 +157,7 @@ where
         let iteration_start = Instant::now();
         // The pixel estimates of the iteration before (1 everywhere for the first: a constant
         // changes no guide, as each guide is a distribution of its own).
-        let estimates = trained.last_image.as_ref().map(pixel_estimates);
+        let estimates = trained.images.last().map(pixel_estimates);
         let width = settings.width;
         let estimate_of = |p_film: Vec2| -> f32 {
             let pixel = p_film
@@ -163,13 +168,14 @@ where
                 .as_ref()
                 .map_or(1.0, |e| e[(pixel.y * width + pixel.x) as usize])
         };
-        // The quadtrees being learnt are taken out of the tree for the pass, so that the
-        // paths can read the guides while the records are added between slices.
-        let mut building: Vec<(DirectionTree, u64)> = guides
+        // The quadtrees and fractions being learnt are taken out of the tree for the pass, so
+        // that the paths can read the guides while the records are added between slices.
+        let mut building: Vec<(DirectionTree, u64, LearntFraction)> = guides
             .guides
             .iter_mut()
-            .map(|g| (std::mem::take(&mut g.building), 0))
+            .map(|g| (std::mem::take(&mut g.building), 0, g.fraction))
             .collect();
+        let loss = selection::loss_of(guiding.target);
         let offset = Offset {
             inner: sampler.clone(),
             first_index: trained.spp,
@@ -194,15 +200,19 @@ where
             },
             |records| {
                 for r in records {
-                    let (tree, count) = &mut building[r.guide as usize];
+                    let (tree, count, fraction) = &mut building[r.guide as usize];
                     tree.record(r.point, r.value);
                     *count += 1;
+                    if let Some(sample) = &r.fraction {
+                        fraction.learn(sample, loss);
+                    }
                 }
             },
         );
-        for (guide, (tree, count)) in guides.guides.iter_mut().zip(building) {
+        for (guide, (tree, count, fraction)) in guides.guides.iter_mut().zip(building) {
             guide.building = tree;
             guide.records = count;
+            guide.fraction = fraction;
         }
         let Some((image, cost)) = pass else {
             trained.interrupted = true;
@@ -210,7 +220,7 @@ where
         };
         learn(&mut guides, guiding, spp);
         trained.spp += spp;
-        trained.last_image = Some(image);
+        trained.images.push(image);
         let seconds = iteration_start.elapsed().as_secs_f64();
         seconds_per_spp = seconds / spp as f64;
         trained
@@ -256,7 +266,17 @@ fn iteration_report(
         quadtree_nodes: guides.guides.iter().map(|g| g.sampling.nodes.len()).sum(),
         memory_bytes: guides.memory_bytes(),
         nonfinite_samples: cost.nonfinite_samples,
+        learnt_fraction: mean_learnt_fraction(guides),
     }
+}
+
+/// The leaves' learnt fractions, averaged with the samples each learnt from as weights.
+fn mean_learnt_fraction(guides: &SpatialTree) -> Option<f32> {
+    let (sum, steps) = guides.guides.iter().fold((0.0f64, 0.0f64), |(sum, n), g| {
+        let steps = f64::from(g.fraction.steps());
+        (sum + steps * f64::from(g.fraction.fraction()), n + steps)
+    });
+    (steps > 0.0).then(|| (sum / steps) as f32)
 }
 
 /// A sampler whose sample indices start at `first_index`: each pass draws numbers of its own,

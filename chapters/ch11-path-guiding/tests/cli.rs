@@ -56,12 +56,29 @@ fn render_guides_as_told_and_reports_the_training() {
             assert_eq!(json["spp"], 16, "unguided, the budget is the image's");
             assert!(json.get("training").is_none());
         } else {
-            // Training of 1, 2 and 4 samples per pixel; the final pass gets the other 9.
+            // Training of 1, 2 and 4 samples per pixel; the final pass gets the other 9, and
+            // the image averages all four passes.
             let training = &json["training"];
             assert_eq!(training["spp"], 7, "{json}");
-            assert_eq!(json["spp"], 9, "{json}");
+            assert_eq!(json["spp"], 16, "{json}");
             let iterations = training["iterations"].as_array().unwrap();
             assert_eq!(iterations.len(), 3);
+            let weights: Vec<f64> = training["pass_weights"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|w| w.as_f64().unwrap())
+                .collect();
+            assert_eq!(weights.len(), 4, "{json}");
+            assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-9, "{json}");
+            assert!(weights.iter().all(|&w| w > 0.0), "{json}");
+            // Without --bsdf-fraction the fraction is learnt, and stays a probability.
+            assert_eq!(json["bsdf_fraction"], "learnt", "{json}");
+            let learnt = &training["learnt_fractions"];
+            for key in ["min", "mean", "max"] {
+                let f = learnt[key].as_f64().unwrap();
+                assert!(f > 0.0 && f < 1.0, "{json}");
+            }
             assert!(
                 iterations
                     .iter()

@@ -56,7 +56,7 @@ fn with_nothing_learnt_the_path_is_chapter_08s() {
     let guided = GuidedPathTracer {
         tracer: &plain,
         guides: &guides,
-        bsdf_fraction: 0.5,
+        bsdf_fraction: Some(0.5),
     };
     let eye = Vec3::new(-1.6, 1.3, 1.7);
     let mut sampler = IndependentSampler::new(5);
@@ -125,30 +125,48 @@ fn guided_paths_are_unbiased_whatever_the_guides_learnt() {
             )
             .training
             .expect("guided");
-            let guided = GuidedPathTracer {
-                tracer: &plain,
-                guides: &trained.guides,
-                bsdf_fraction: 0.5,
-            };
-            let eye = Vec3::new(0.0, 0.5, 4.0);
-            let ray = Ray::new(eye, (Vec3::new(0.1, 0.3, 0.0) - eye).normalize());
-            let hit_guide = trained.guides.guide_of(Vec3::new(0.05, 0.3, 0.95));
-            // Under the sky a convex sphere has direct light only: with the light sample on,
-            // that is the light sample's to find and the guide learns nothing; without it the
-            // guide learns the sky.
-            let learnt = trained.guides.guides[hit_guide as usize].sampling.total() > 0.0;
-            assert_eq!(
-                learnt,
-                !nee,
-                "nee {nee}: the guide at the sphere's front learnt {}",
-                if learnt { "something" } else { "nothing" }
-            );
-            let (mean, error) = mean_radiance(&guided, &ray, 40_000);
+            for bsdf_fraction in [Some(0.5), None] {
+                let guided = GuidedPathTracer {
+                    tracer: &plain,
+                    guides: &trained.guides,
+                    bsdf_fraction,
+                };
+                let eye = Vec3::new(0.0, 0.5, 4.0);
+                let ray = Ray::new(eye, (Vec3::new(0.1, 0.3, 0.0) - eye).normalize());
+                let hit_guide = trained.guides.guide_of(Vec3::new(0.05, 0.3, 0.95));
+                // Under the sky a convex sphere has direct light only: with the light sample on,
+                // that is the light sample's to find and the guide learns nothing; without it the
+                // guide learns the sky.
+                let learnt = trained.guides.guides[hit_guide as usize].sampling.total() > 0.0;
+                assert_eq!(
+                    learnt,
+                    !nee,
+                    "nee {nee}: the guide at the sphere's front learnt {}",
+                    if learnt { "something" } else { "nothing" }
+                );
+                let (mean, error) = mean_radiance(&guided, &ray, 40_000);
+                assert!(
+                    (mean - 0.5).abs() < 4.0 * error + 1e-4,
+                    "{} guiding, nee {nee}, fraction {bsdf_fraction:?}: the sphere sends \
+                     back {mean} ± {error}, not 0.5",
+                    target.name()
+                );
+            }
+            // The fractions learnt stay probabilities, and where there was light to learn
+            // (no light sample) they moved from a half.
+            let fractions: Vec<f32> = trained
+                .guides
+                .guides
+                .iter()
+                .map(|g| g.fraction.fraction())
+                .collect();
             assert!(
-                (mean - 0.5).abs() < 4.0 * error + 1e-4,
-                "{} guiding, nee {nee}: the sphere sends back {mean} ± {error}, not 0.5",
-                target.name()
+                fractions.iter().all(|&f| f > 0.0 && f < 1.0),
+                "{fractions:?}"
             );
+            if !nee {
+                assert!(fractions.iter().any(|&f| f != 0.5), "{fractions:?}");
+            }
         }
     }
 }
@@ -178,7 +196,9 @@ fn a_guided_render_is_the_same_on_any_number_of_threads() {
         a.guides, b.guides,
         "the guides learnt depend on the threads"
     );
-    assert!(a.iterations.len() >= 2 && a.spp + one.output.stats.spp == 16);
+    assert!(a.iterations.len() >= 2 && one.output.stats.spp == 16);
+    assert_eq!(one.pass_weights, two.pass_weights);
+    assert_eq!(one.pass_weights.len(), a.iterations.len() + 1);
 }
 
 #[test]
@@ -217,7 +237,7 @@ fn guided_paths_with_the_light_sample_agree_with_chapter_08s() {
     let guided = GuidedPathTracer {
         tracer: &plain,
         guides: &trained.guides,
-        bsdf_fraction: 0.5,
+        bsdf_fraction: None,
     };
     let unguided_tree = SpatialTree::new(world.scene.geometry.bounds());
     let unguided = GuidedPathTracer {
@@ -231,4 +251,57 @@ fn guided_paths_with_the_light_sample_agree_with_chapter_08s() {
         (a - b).abs() < 4.0 * error,
         "guided {a} ± {error_a} against chapter 08's {b} ± {error_b}"
     );
+}
+
+/// The mean over an image's pixels (green).
+fn image_mean(image: &common::image::Image) -> f64 {
+    image.pixels.iter().map(|p| f64::from(p.y)).sum::<f64>() / image.pixels.len() as f64
+}
+
+#[test]
+fn the_training_and_final_passes_averaged_stay_unbiased() {
+    // The grey sphere under the sky without the light sample, so that the guides learn the
+    // sky and the fractions move: every guided render's image, all its passes averaged, has
+    // the mean of chapter 08's long render.
+    let world = ch08_path_tracing::furnace::spheres(&[Material::diffuse(Vec3::splat(0.5))], 6);
+    let options = PathOptions {
+        nee: false,
+        ..PathOptions::with_depth(6)
+    };
+    let render = |seed, spp, guiding: Option<GuidingTarget>| {
+        render_guided(
+            &world,
+            MATERIALS,
+            options,
+            guiding.map(|t| GuidingOptions::for_image(t, 24 * 24)),
+            &Lens::PINHOLE,
+            &RenderSettings::new(24, 24, spp),
+            &IndependentSampler::new(seed),
+            &PixelBoxFilter,
+        )
+    };
+    let reference = image_mean(&render(1000, 4096, None).output.image);
+    for target in [GuidingTarget::Radiance, GuidingTarget::Variance] {
+        let means: Vec<f64> = (0..12)
+            .map(|seed| {
+                let rendered = render(seed, 32, Some(target));
+                assert_eq!(rendered.output.stats.spp, 32);
+                assert_eq!(
+                    rendered.pass_weights.len(),
+                    5,
+                    "training 1, 2, 4, 8; final 17"
+                );
+                image_mean(&rendered.output.image)
+            })
+            .collect();
+        let n = means.len() as f64;
+        let mean = means.iter().sum::<f64>() / n;
+        let spread = means.iter().map(|m| (m - mean).powi(2)).sum::<f64>() / (n - 1.0);
+        let error = (spread / n).sqrt();
+        assert!(
+            (mean - reference).abs() < 4.0 * error + 1e-4,
+            "{} guiding: the averaged images' mean is {mean} ± {error}, chapter 08's {reference}",
+            target.name()
+        );
+    }
 }
