@@ -25,9 +25,10 @@ use ch07_soft_shadows::{AreaLights, LightSampling};
 use ch08_path_tracing::{PathOptions, PathTracer, SceneLights};
 use ch09_materials::SceneMaterials;
 use ch11_path_guiding::path::{GuideRecord, Learning};
+use ch11_path_guiding::selection::{LearntFraction, loss_of};
 use ch11_path_guiding::spatial::SpatialTree;
 use ch11_path_guiding::target::pixel_estimates;
-use ch11_path_guiding::training::trains_next;
+use ch11_path_guiding::training::{learn, trains_next};
 use ch11_path_guiding::{GuidedPathTracer, GuidingOptions, GuidingTarget};
 use common::geometry::{Parallelogram, Shape};
 use common::image::Image;
@@ -179,6 +180,9 @@ struct Learnt {
     pixels: Vec<PixelMean>,
     /// The records of the current slice.
     records: Vec<GuideRecord>,
+    /// The guides' BSDF fractions being learnt in the current iteration; the paths read the
+    /// guides' own, fixed for the iteration, as in the chapter's training.
+    fractions: Option<Vec<LearntFraction>>,
 }
 
 /// The picture: the room, its lights and materials, the camera rays, how it is guided and
@@ -232,11 +236,12 @@ impl Picture for PathGuiding {
             estimates,
             pixels: means,
             records,
+            fractions,
         } = &mut *learnt;
         let guided = GuidedPathTracer {
             tracer: &tracer,
             guides,
-            bsdf_fraction: self.guiding.map_or(1.0, |g| g.bsdf_fraction),
+            bsdf_fraction: self.guiding.and_then(|g| g.bsdf_fraction),
         };
         let mut sampler = self.sampler.clone();
         let (mut last_done, pixel_count) = (false, means.len());
@@ -286,6 +291,11 @@ impl Picture for PathGuiding {
             let guide = &mut guides.guides[record.guide as usize];
             guide.building.record(record.point, record.value);
             guide.records += 1;
+            if let (Some(sample), Some(options)) = (&record.fraction, training) {
+                let fractions = fractions
+                    .get_or_insert_with(|| guides.guides.iter().map(|g| g.fraction).collect());
+                fractions[record.guide as usize].learn(sample, loss_of(options.target));
+            }
         }
         if let (Some(options), Some(k), true) =
             (training, iteration, last_done && index == last_pass)
@@ -295,32 +305,29 @@ impl Picture for PathGuiding {
                 *pixel = m.sum / m.samples.max(1) as f32;
             }
             *estimates = Some(pixel_estimates(&image));
+            if let Some(fractions) = fractions.take() {
+                for (guide, fraction) in guides.guides.iter_mut().zip(fractions) {
+                    guide.fraction = fraction;
+                }
+            }
             learn(guides, options, self.iterations[k]);
         }
     }
 }
 
-/// After an iteration of `spp` samples per pixel, as the chapter's training does it: each
-/// guide's new quadtree is built (by the target's leaf weights) and sampled from, unless it
-/// learnt nothing; busy leaves are split; each guide starts learning a quadtree shaped by what
-/// it learnt.
-fn learn(guides: &mut SpatialTree, options: GuidingOptions, spp: u64) {
-    for guide in &mut guides.guides {
-        let mut built = std::mem::take(&mut guide.building);
-        built.build(|sum, area| options.target.leaf_weight(sum, area));
-        if built.total() > 0.0 {
-            guide.sampling = built;
-        }
-    }
-    guides.refine(options.spatial_threshold * (spp as f64).sqrt());
-    for guide in &mut guides.guides {
-        guide.building = guide.sampling.refined(options.split_fraction);
-        guide.records = 0;
-    }
-}
-
 /// The picture of `values` at `width x height`, its numbers drawn from `seed`.
 fn picture(values: &Values, seed: u64, width: u32, height: u32) -> PathGuiding {
+    picture_with(values, seed, width, height, None)
+}
+
+/// [`picture`] with the guides' BSDF fraction pinned to `bsdf_fraction` (`None`: learnt).
+fn picture_with(
+    values: &Values,
+    seed: u64,
+    width: u32,
+    height: u32,
+    bsdf_fraction: Option<f32>,
+) -> PathGuiding {
     let world = door_gap();
     let target = match values.index("guiding") {
         0 => None,
@@ -328,7 +335,10 @@ fn picture(values: &Values, seed: u64, width: u32, height: u32) -> PathGuiding {
         _ => Some(GuidingTarget::Variance),
     };
     let pixels = u64::from(width) * u64::from(height);
-    let guiding = target.map(|target| GuidingOptions::for_image(target, pixels));
+    let guiding = target.map(|target| GuidingOptions {
+        bsdf_fraction,
+        ..GuidingOptions::for_image(target, pixels)
+    });
     let camera_rays = CameraRays::new(&world, &Lens::PINHOLE, width, height);
     let centre = {
         let mut sampler = IndependentSampler::new(0);
@@ -355,6 +365,7 @@ fn picture(values: &Values, seed: u64, width: u32, height: u32) -> PathGuiding {
             estimates: None,
             pixels: vec![PixelMean::default(); pixels as usize],
             records: Vec::new(),
+            fractions: None,
         }),
         world,
     }
@@ -467,7 +478,9 @@ mod tests {
         {
             let values =
                 Values::defaults(&PathGuidingDemo.controls()).with("guiding", index as f64);
-            let ours = picture(&values, SEED, width, height);
+            // The fraction pinned: learnt, it moves with every record in the order records
+            // arrive, which is the page's slices here and the chapter's tiles there.
+            let ours = picture_with(&values, SEED, width, height, Some(0.5));
             let mut film = common::film::Film::new(width, height);
             for pass in 0..TARGET_SPP {
                 let mut tile = film.tile(
@@ -492,7 +505,10 @@ mod tests {
                 &world,
                 SceneMaterials::of(&world.scene, FuzzMethod::Lobe),
                 path_options(),
-                target.map(|t| GuidingOptions::for_image(t, u64::from(width * height))),
+                target.map(|t| GuidingOptions {
+                    bsdf_fraction: Some(0.5),
+                    ..GuidingOptions::for_image(t, u64::from(width * height))
+                }),
                 &Lens::PINHOLE,
                 &RenderSettings::new(width, height, TARGET_SPP),
                 &IndependentSampler::new(SEED),

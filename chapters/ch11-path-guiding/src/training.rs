@@ -234,8 +234,8 @@ where
 
 /// After an iteration of `spp` samples per pixel: each guide's new quadtree is built and
 /// becomes the one sampled; busy leaves are split; each guide starts learning a quadtree
-/// shaped by what it has learnt.
-fn learn(guides: &mut SpatialTree, guiding: GuidingOptions, spp: u64) {
+/// shaped by what it has learnt. (The book's live demo trains with it too.)
+pub fn learn(guides: &mut SpatialTree, guiding: GuidingOptions, spp: u64) {
     for guide in &mut guides.guides {
         let mut built = std::mem::take(&mut guide.building);
         built.build(|sum, area| guiding.target.leaf_weight(sum, area));
