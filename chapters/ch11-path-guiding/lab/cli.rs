@@ -56,6 +56,11 @@ pub struct RenderOptions {
     /// the same everywhere; without it each region of the scene learns its own.
     #[arg(long, value_parser = fraction, allow_hyphen_values = true)]
     pub bsdf_fraction: Option<f32>,
+    /// Average the training's images into the final pass's, each weighted by its measured
+    /// noise (Müller et al. 2019): less noise, but the image is then consistent rather than
+    /// unbiased. Without it the final pass alone makes the image.
+    #[arg(long)]
+    pub combine_passes: bool,
     #[command(flatten)]
     pub anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
@@ -119,6 +124,7 @@ impl ChapterRender for RenderOptions {
         let pixels = u64::from(job.settings.width) * u64::from(job.settings.height);
         let guiding = self.guiding.target().map(|target| GuidingOptions {
             bsdf_fraction: self.bsdf_fraction,
+            combine_passes: self.combine_passes,
             ..GuidingOptions::for_image(target, pixels)
         });
         let rendered = render_guided(

@@ -58,8 +58,9 @@ use std::time::Instant;
 /// A guided render: its image, and what the training before it learnt and cost.
 #[derive(Clone, Debug)]
 pub struct GuidedRender {
-    /// The image: the training's and the final pass's averaged ([`combine`]), or the final
-    /// pass's alone when the film's filter is not a box of one pixel or a stop cut the final
+    /// The image: the final pass's alone (unbiased), or with
+    /// [`GuidingOptions::combine_passes`] the training's and the final pass's averaged
+    /// ([`combine`]) when the film's filter is a box of one pixel and no stop cut the final
     /// pass short. Its statistics count
     /// the whole render, training included (seconds and rays), and its samples per pixel
     /// are those of the passes it averages.
@@ -138,10 +139,10 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
         let ray = camera_rays.generate(world, p_film, sampler);
         guided.radiance(&ray, sampler, None)
     });
-    // The training's images kept: averaged with the final pass's by their measured noise, when
-    // they are means of the same kind.
+    // Asked to, the training's images are kept: averaged with the final pass's by their
+    // measured noise, when they are means of the same kind.
     let mut pass_weights = Vec::new();
-    if combine::makes_pixel_means(filter) && !output.stats.interrupted {
+    if guiding.combine_passes && combine::makes_pixel_means(filter) && !output.stats.interrupted {
         let passes: Vec<combine::Pass<'_>> = trained
             .images
             .iter()

@@ -35,6 +35,7 @@ fn render_guides_as_told_and_reports_the_training() {
                 "18",
                 "--spp",
                 "16",
+                "--combine-passes",
                 "--out",
                 out.to_str().unwrap(),
                 "--stats",

@@ -182,7 +182,10 @@ fn a_guided_render_is_the_same_on_any_number_of_threads() {
             &world,
             MATERIALS,
             options,
-            Some(GuidingOptions::for_image(GuidingTarget::Variance, 1200)),
+            Some(GuidingOptions {
+                combine_passes: true,
+                ..GuidingOptions::for_image(GuidingTarget::Variance, 1200)
+            }),
             &lens,
             &settings,
             &IndependentSampler::new(9),
@@ -273,7 +276,10 @@ fn the_training_and_final_passes_averaged_stay_unbiased() {
             &world,
             MATERIALS,
             options,
-            guiding.map(|t| GuidingOptions::for_image(t, 24 * 24)),
+            guiding.map(|t| GuidingOptions {
+                combine_passes: true,
+                ..GuidingOptions::for_image(t, 24 * 24)
+            }),
             &Lens::PINHOLE,
             &RenderSettings::new(24, 24, spp),
             &IndependentSampler::new(seed),
