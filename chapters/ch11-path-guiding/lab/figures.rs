@@ -125,6 +125,9 @@ fn side_by_side(out: &Path, name: &str, level: Level) -> anyhow::Result<()> {
         .output
         .image;
     let spp = level.pick(16, 256);
+    // The room is dark (its light comes through a gap): the images are shown brighter, by the
+    // whole stops that bring the reference's mean to a mid grey.
+    let stops = exposure_stops(&reference);
     let mut table = String::from(
         "| guiding | samples per pixel in the image | seconds | RMSE |\n|---|---:|---:|---:|\n",
     );
@@ -132,7 +135,11 @@ fn side_by_side(out: &Path, name: &str, level: Level) -> anyhow::Result<()> {
     for (method, target) in METHODS {
         let rendered = renders.render(spp, 1, target);
         let image = &rendered.output.image;
-        write_image(&out.join(format!("{name}-{method}.png")), image)?;
+        let mut shown = image.clone();
+        for pixel in &mut shown.pixels {
+            *pixel *= 2f32.powi(stops);
+        }
+        write_image(&out.join(format!("{name}-{method}.png")), &shown)?;
         let rmse = common::metrics::rmse(image, &reference);
         table += &format!(
             "| {method} | {} | {:.2} | {rmse:.3e} |\n",
@@ -170,6 +177,11 @@ fn side_by_side(out: &Path, name: &str, level: Level) -> anyhow::Result<()> {
             );
         }
     }
+    table += &format!(
+        "\nThe images are shown {stops} stops ({}x) brighter than rendered; the RMSE is the \
+         rendered images'.\n",
+        1u32 << stops.clamp(0, 31)
+    );
     write_text(&out.join(format!("{name}.md")), &table)?;
     write_text(&out.join(format!("{name}-training.md")), &training)?;
     Ok(())
@@ -213,4 +225,15 @@ fn weight_of(weights: &[f64], k: usize) -> String {
     weights
         .get(k)
         .map_or_else(|| "-".to_string(), |w| format!("{w:.3}"))
+}
+
+/// The whole stops (at least 0) by which `reference` must be brightened for its mean to be a
+/// mid grey (0.18).
+fn exposure_stops(reference: &common::image::Image) -> i32 {
+    let mean = reference.pixels.iter().map(|p| f64::from(p.y)).sum::<f64>()
+        / reference.pixels.len().max(1) as f64;
+    if mean.is_nan() || mean <= 0.0 {
+        return 0;
+    }
+    (0.18 / mean).log2().round().clamp(0.0, 20.0) as i32
 }
