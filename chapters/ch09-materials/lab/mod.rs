@@ -6,6 +6,7 @@
 
 pub mod agreement;
 pub mod diagrams;
+pub mod figure_scene;
 pub mod figures;
 pub mod microfacet_chi2_table;
 pub mod microfacet_figures;

@@ -4,11 +4,8 @@
 use crate::pixel::Combination;
 use crate::{render_direct_with, render_path_with};
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::MotionScene;
-use ch06_fuzzy_reflections::FuzzMethod;
-use ch08_path_tracing::lab::scene_file::path_options;
 use ch08_path_tracing::{MisHeuristic, PathOptions};
-use ch09_materials::SceneMaterials;
+use ch09_materials::lab::figure_scene::FigureScene;
 use common::image::Image;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
@@ -151,16 +148,12 @@ enum Reference {
 /// The power heuristic, what the references are rendered with.
 const POWER: Combination = Combination::Heuristic(MisHeuristic::Power);
 
-/// A scene file rendered again and again, as the figures render it: its direct light at half
-/// its film's size at the quick level, at its size for the book, with `options`; the materials
-/// tabulated once, since the renders are timed and the tables are the same for every one.
+/// A scene file rendered again and again, as the figures render it ([`FigureScene`]): its
+/// direct light or its paths, with `options`.
 struct Renders {
-    world: MotionScene,
-    materials: SceneMaterials,
+    scene: FigureScene,
     options: PathOptions,
     light: Light,
-    width: u32,
-    height: u32,
 }
 
 impl Renders {
@@ -173,34 +166,26 @@ impl Renders {
         options: impl FnOnce(PathOptions) -> PathOptions,
     ) -> anyhow::Result<Self> {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
-        let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
-        let options = options(path_options(&loaded.scene));
-        let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
-        let film = world.scene.film;
-        let (width, height) =
-            level.pick((film.width / 2, film.height / 2), (film.width, film.height));
-        let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
+        let scene = FigureScene::load(&path, level)?;
+        let options = options(scene.options);
         Ok(Self {
-            world,
-            materials,
+            scene,
             options,
             light,
-            width,
-            height,
         })
     }
 
     /// The image at `spp` samples per pixel with `seed`, combined as `combination` says.
     fn render(&self, spp: u64, seed: u64, combination: Combination) -> Image {
-        let settings = RenderSettings::new(self.width, self.height, spp);
+        let settings = RenderSettings::new(self.scene.width, self.scene.height, spp);
         let sampler = IndependentSampler::new(seed);
         let render = match self.light {
             Light::Direct => render_direct_with,
             Light::Paths => render_path_with,
         };
         render(
-            &self.world,
-            self.materials.clone(),
+            &self.scene.world,
+            self.scene.materials.clone(),
             self.options,
             &Lens::PINHOLE,
             &settings,
@@ -225,7 +210,7 @@ fn side_by_side(
     let renders = Renders::of(&format!("scenes/{name}.xml"), level, Light::Direct, |_| {
         PathOptions::default()
     })?;
-    let (width, height) = (renders.width, renders.height);
+    let (width, height) = (renders.scene.width, renders.scene.height);
     let render = |spp, seed, combination| renders.render(spp, seed, combination);
     let expected = match reference {
         Reference::Exact => Image {

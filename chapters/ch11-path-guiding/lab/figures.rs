@@ -6,11 +6,7 @@ use crate::render_guided;
 use crate::training::GuidingOptions;
 use crate::{GuidedRender, GuidingTarget};
 use ch04_depth_of_field::Lens;
-use ch05_motion_blur::MotionScene;
-use ch06_fuzzy_reflections::FuzzMethod;
-use ch08_path_tracing::PathOptions;
-use ch08_path_tracing::lab::scene_file::path_options;
-use ch09_materials::SceneMaterials;
+use ch09_materials::lab::figure_scene::FigureScene;
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
@@ -66,46 +62,31 @@ const METHODS: [(&str, Option<GuidingTarget>); 3] = [
     ("variance", Some(GuidingTarget::Variance)),
 ];
 
-/// A scene file rendered again and again, as the figures render it: at half its film's size
-/// at the quick level, at its size for the book, with the file's path options; the materials
-/// tabulated once.
+/// A scene file rendered again and again, as the figures render it ([`FigureScene`]), with the
+/// file's path options.
 struct Renders {
-    world: MotionScene,
-    materials: SceneMaterials,
-    options: PathOptions,
-    width: u32,
-    height: u32,
+    scene: FigureScene,
 }
 
 impl Renders {
     /// The scene file `file` (relative to the crate), ready to render.
     fn of(file: &str, level: Level) -> anyhow::Result<Self> {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
-        let loaded = workbench::scene_file::load_scene_file(&path, &[])?;
-        let world = MotionScene::new(loaded.scene).map_err(anyhow::Error::msg)?;
-        let film = world.scene.film;
-        let (width, height) =
-            level.pick((film.width / 2, film.height / 2), (film.width, film.height));
-        let materials = SceneMaterials::of(&world.scene, FuzzMethod::Lobe);
-        let options = path_options(&world.scene);
         Ok(Self {
-            world,
-            materials,
-            options,
-            width,
-            height,
+            scene: FigureScene::load(&path, level)?,
         })
     }
 
     /// The render of a budget of `spp` samples per pixel with `seed`, guided towards `target`
     /// (not at all with `None`): with guiding, the budget pays for training and final pass.
     fn render(&self, spp: u64, seed: u64, target: Option<GuidingTarget>) -> GuidedRender {
-        let settings = RenderSettings::new(self.width, self.height, spp);
-        let pixels = u64::from(self.width) * u64::from(self.height);
+        let scene = &self.scene;
+        let settings = RenderSettings::new(scene.width, scene.height, spp);
+        let pixels = u64::from(scene.width) * u64::from(scene.height);
         render_guided(
-            &self.world,
-            self.materials.clone(),
-            self.options,
+            &scene.world,
+            scene.materials.clone(),
+            scene.options,
             target.map(|t| GuidingOptions::for_image(t, pixels)),
             &Lens::PINHOLE,
             &settings,
