@@ -79,17 +79,16 @@ pub fn render_direct_with<S: TimeSampler, M: Materials>(
     sampler: &S,
     combination: Combination,
 ) -> RenderOutput {
-    let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
-    let area_lights = AreaLights::of(&world.scene);
-    let tracer = PathTracer {
+    render_pixels(
         world,
-        lights: SceneLights::of(world, &area_lights, LightSampling::solid_angle()),
-        options,
         materials,
-    };
-    render_per_pixel(settings, sampler, |pixel, spp, sampler| {
-        pixel::pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)
-    })
+        options,
+        lens,
+        settings,
+        sampler,
+        combination,
+        false,
+    )
 }
 
 /// Renders whole paths, as chapter 08's path tracer does with `options` (depth, roulette,
@@ -106,6 +105,31 @@ pub fn render_path_with<S: TimeSampler, M: Materials>(
     sampler: &S,
     combination: Combination,
 ) -> RenderOutput {
+    render_pixels(
+        world,
+        materials,
+        options,
+        lens,
+        settings,
+        sampler,
+        combination,
+        true,
+    )
+}
+
+/// The render of [`render_direct_with`] (`paths` false) and of [`render_path_with`] (true):
+/// the same tracer and camera rays, each pixel from its own samples.
+#[allow(clippy::too_many_arguments)]
+fn render_pixels<S: TimeSampler, M: Materials>(
+    world: &MotionScene,
+    materials: M,
+    options: PathOptions,
+    lens: &Lens,
+    settings: &RenderSettings,
+    sampler: &S,
+    combination: Combination,
+    paths: bool,
+) -> RenderOutput {
     let camera_rays = CameraRays::new(world, lens, settings.width, settings.height);
     let area_lights = AreaLights::of(&world.scene);
     let tracer = PathTracer {
@@ -115,6 +139,10 @@ pub fn render_path_with<S: TimeSampler, M: Materials>(
         materials,
     };
     render_per_pixel(settings, sampler, |pixel, spp, sampler| {
-        pixel::path_pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)
+        if paths {
+            pixel::path_pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)
+        } else {
+            pixel::pixel_value(&tracer, &camera_rays, pixel, spp, sampler, combination)
+        }
     })
 }
