@@ -8,12 +8,13 @@ use ch10_optimal_mis::{Combination, render_direct};
 use common::image::Image;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
-use workbench::scene_file::parse_scene;
+
+mod support;
+use support::{mean, mean_and_error};
 
 /// The scene `text`, ready to trace.
 fn world(text: &str) -> MotionScene {
-    let loaded = parse_scene(text, std::path::Path::new("test.xml"), &[]).expect("the scene loads");
-    MotionScene::new(loaded.scene).expect("no motion to refuse")
+    support::world(text, "test.xml")
 }
 
 /// `world` rendered at its film's size with `spp` samples per pixel, combined as `combination`.
@@ -103,19 +104,6 @@ const GLOSSY_FLOOR: &str = r#"<scene version="3.0.0">
     <shape type="cube"><transform name="to_world"><scale value="0.5"/><translate x="-1" y="0.5"/></transform>
         <bsdf type="diffuse"><rgb name="reflectance" value="0.6"/></bsdf></shape>
 </scene>"#;
-
-/// The mean of `image`'s green channel.
-fn mean(image: &Image) -> f64 {
-    image.pixels.iter().map(|p| f64::from(p.y)).sum::<f64>() / image.pixels.len() as f64
-}
-
-/// The mean of `values` and its standard error.
-fn mean_and_error(values: &[f64]) -> (f64, f64) {
-    let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    (mean, (variance / n).sqrt())
-}
 
 /// Consistency: over seeds, the optimal image's mean is the power heuristic's, within their
 /// noise. A BSDF sample that takes the plastic's coat is a failed sample of the BSDF

@@ -12,7 +12,6 @@ use common::film::PixelBoxFilter;
 use common::image::Image;
 use common::render::RenderSettings;
 use common::sampler::IndependentSampler;
-use workbench::scene_file::parse_scene;
 
 /// A small closed room under a ceiling lamp, every surface matte, paths of up to seven
 /// segments with roulette from the fourth.
@@ -53,10 +52,12 @@ const OPEN: &str = r#"<scene version="3.0.0">
         <bsdf type="roughconductor"><float name="alpha" value="0.1"/></bsdf></shape>
 </scene>"#;
 
+mod support;
+use support::{mean, mean_and_error};
+
 /// The scene `text`, ready to trace.
 fn world(text: &str) -> MotionScene {
-    let loaded = parse_scene(text, std::path::Path::new("room.xml"), &[]).expect("the scene loads");
-    MotionScene::new(loaded.scene).expect("no motion to refuse")
+    support::world(text, "room.xml")
 }
 
 fn settings(world: &MotionScene, spp: u64) -> RenderSettings {
@@ -160,19 +161,6 @@ fn paths_of_two_segments_are_the_direct_light() {
             combination.name()
         );
     }
-}
-
-/// The mean of `image`'s green channel.
-fn mean(image: &Image) -> f64 {
-    image.pixels.iter().map(|p| f64::from(p.y)).sum::<f64>() / image.pixels.len() as f64
-}
-
-/// The mean of `values` and its standard error.
-fn mean_and_error(values: &[f64]) -> (f64, f64) {
-    let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    (mean, (variance / n).sqrt())
 }
 
 /// Over seeds, the combinations along paths give chapter 08's image, within their noise (the
