@@ -73,7 +73,7 @@ fn door_gap() -> MotionScene {
         builder.block(centre - half, centre + half, matte(albedo))
     };
     let near = Vec3::splat(0.2);
-    let far = Vec3::splat(0.8);
+    let far = Vec3::splat(0.3);
     let mut builder = Builder::new();
     for (centre, half, albedo) in [
         // The camera's room: x from -2 to 2, 2.5 high, z from -2 to 2.
@@ -119,7 +119,7 @@ fn door_gap() -> MotionScene {
         Vec3::Z,
     ));
     builder
-        .area_light(lamp, Vec3::splat(40.0))
+        .area_light(lamp, Vec3::splat(200.0))
         .shape(
             Shape::Sphere(common::geometry::Sphere::new(
                 Vec3::new(0.0, 0.5, -0.8),

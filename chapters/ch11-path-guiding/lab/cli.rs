@@ -4,7 +4,7 @@
 //! learnt and cost.
 
 use crate::training::GuidingOptions;
-use crate::{GuidingTarget, render_guided};
+use crate::{GuidingTarget, PassWeighting, render_guided};
 use ch03_anti_aliasing::lab::cli::AntiAliasingArgs;
 use ch04_depth_of_field::lab::cli::LensArgs;
 use ch05_motion_blur::lab::scene_file::motion_for_render;
@@ -44,6 +44,38 @@ impl GuidingArg {
     }
 }
 
+/// `--combine-passes`: how the training's images join the final pass's.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CombineArg {
+    /// The final pass alone makes the image; the training's images are thrown away.
+    Final,
+    /// Every pass weighed by its samples: all the budget in the image, still unbiased.
+    Samples,
+    /// Every pass weighed by its measured noise (Müller et al. 2019): less noise where the
+    /// early passes are poor, but the image is consistent rather than unbiased.
+    Noise,
+}
+
+impl CombineArg {
+    /// The weighting this option names.
+    pub fn weighting(self) -> PassWeighting {
+        match self {
+            CombineArg::Final => PassWeighting::FinalOnly,
+            CombineArg::Samples => PassWeighting::BySamples,
+            CombineArg::Noise => PassWeighting::ByMeasuredNoise,
+        }
+    }
+
+    /// Its name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            CombineArg::Final => "final",
+            CombineArg::Samples => "samples",
+            CombineArg::Noise => "noise",
+        }
+    }
+}
+
 /// The options of `render`.
 // Its flattened fields are chapters 03 and 04's option groups, documented where defined.
 #[allow(missing_docs)]
@@ -56,11 +88,9 @@ pub struct RenderOptions {
     /// the same everywhere; without it each region of the scene learns its own.
     #[arg(long, value_parser = fraction, allow_hyphen_values = true)]
     pub bsdf_fraction: Option<f32>,
-    /// Average the training's images into the final pass's, each weighted by its measured
-    /// noise (Müller et al. 2019): less noise, but the image is then consistent rather than
-    /// unbiased. Without it the final pass alone makes the image.
-    #[arg(long)]
-    pub combine_passes: bool,
+    /// How the training's images join the final pass's in the image.
+    #[arg(long, value_enum, default_value_t = CombineArg::Samples)]
+    pub combine_passes: CombineArg,
     #[command(flatten)]
     pub anti_aliasing: AntiAliasingArgs,
     #[command(flatten)]
@@ -124,7 +154,7 @@ impl ChapterRender for RenderOptions {
         let pixels = u64::from(job.settings.width) * u64::from(job.settings.height);
         let guiding = self.guiding.target().map(|target| GuidingOptions {
             bsdf_fraction: self.bsdf_fraction,
-            combine_passes: self.combine_passes,
+            passes: self.combine_passes.weighting(),
             ..GuidingOptions::for_image(target, pixels)
         });
         let rendered = render_guided(
@@ -147,6 +177,7 @@ impl ChapterRender for RenderOptions {
         if let Some(trained) = &rendered.training {
             stats["training"] = serde_json::json!({
                 "spp": trained.spp,
+                "combine_passes": self.combine_passes.name(),
                 "pass_weights": rendered.pass_weights,
                 "learnt_fractions": learnt_fractions(&trained.guides),
                 "seconds": trained.iterations.iter().map(|i| i.seconds).sum::<f64>(),

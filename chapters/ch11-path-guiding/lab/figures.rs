@@ -2,6 +2,7 @@
 //! door-gap room, with their errors; their error against time there and on chapter 08's
 //! Cornell box, where there is little to guide; what the training learnt and cost.
 
+use crate::guided_bsdf::BSDF_FRACTION;
 use crate::render_guided;
 use crate::training::GuidingOptions;
 use crate::{GuidedRender, GuidingTarget};
@@ -80,6 +81,18 @@ impl Renders {
     /// The render of a budget of `spp` samples per pixel with `seed`, guided towards `target`
     /// (not at all with `None`): with guiding, the budget pays for training and final pass.
     fn render(&self, spp: u64, seed: u64, target: Option<GuidingTarget>) -> GuidedRender {
+        self.render_pinned(spp, seed, target, None)
+    }
+
+    /// [`render`](Self::render) with the BSDF fraction fixed at `bsdf_fraction` everywhere, if
+    /// given, rather than learnt.
+    fn render_pinned(
+        &self,
+        spp: u64,
+        seed: u64,
+        target: Option<GuidingTarget>,
+        bsdf_fraction: Option<f32>,
+    ) -> GuidedRender {
         let scene = &self.scene;
         let settings = RenderSettings::new(scene.width, scene.height, spp);
         let pixels = u64::from(scene.width) * u64::from(scene.height);
@@ -87,7 +100,10 @@ impl Renders {
             &scene.world,
             scene.materials.clone(),
             scene.options,
-            target.map(|t| GuidingOptions::for_image(t, pixels)),
+            target.map(|t| GuidingOptions {
+                bsdf_fraction,
+                ..GuidingOptions::for_image(t, pixels)
+            }),
             &Lens::PINHOLE,
             &settings,
             &IndependentSampler::new(seed),
@@ -147,13 +163,15 @@ fn side_by_side(out: &Path, name: &str, level: Level) -> anyhow::Result<()> {
                 );
             }
             let last = trained.iterations.len();
+            let training_seconds: f64 = trained.iterations.iter().map(|i| i.seconds).sum();
             training += &format!(
-                "| final pass | {} | | | | | | {} |\n",
+                "| final pass | {} | {:.3} | | | | | {} |\n",
                 if rendered.pass_weights.is_empty() {
                     rendered.output.stats.spp
                 } else {
                     rendered.output.stats.spp.saturating_sub(trained.spp)
                 },
+                (rendered.output.stats.seconds - training_seconds).max(0.0),
                 weight_of(&rendered.pass_weights, last),
             );
         }
@@ -198,7 +216,53 @@ fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyho
         &out.join(format!("{name}-error-time.md")),
         &convergence_markdown(&records, "samples per pixel (the budget)"),
     )?;
+    let top = budgets.last().copied().unwrap_or(1);
+    write_text(
+        &out.join(format!("{name}-equal-time.md")),
+        &equal_time_table(renders, top),
+    )?;
     Ok(())
+}
+
+/// Each method at a budget of `spp`, its error measured without a reference: an unbiased
+/// image's mean squared error is its variance, and two renders with different seeds differ by
+/// twice that. Variance falls as one over the time spent, so variance times seconds is the
+/// same at any budget, and divided by the unguided method's it is the ratio of their errors
+/// at equal time (below 1, guiding wins), free of the long reference's own noise, which the
+/// error-against-time table adds to every method alike.
+///
+/// The guided methods appear twice: with the BSDF fraction learnt (the render's default) and
+/// pinned at a half (Müller et al. 2017).
+fn equal_time_table(renders: &Renders, spp: u64) -> String {
+    let pinned = [
+        ("radiance, BSDF fraction 0.5", Some(GuidingTarget::Radiance)),
+        ("variance, BSDF fraction 0.5", Some(GuidingTarget::Variance)),
+    ];
+    let rows: Vec<(&str, f64, f64)> = METHODS
+        .into_iter()
+        .map(|(method, target)| (method, target, None))
+        .chain(pinned.map(|(m, t)| (m, t, Some(BSDF_FRACTION))))
+        .map(|(method, target, fraction)| {
+            let render = |seed| renders.render_pinned(spp, seed, target, fraction);
+            let (a, b) = (render(11), render(12));
+            let variance = common::metrics::rmse(&a.output.image, &b.output.image).powi(2) / 2.0;
+            let seconds = 0.5 * (a.output.stats.seconds + b.output.stats.seconds);
+            (method, seconds, variance)
+        })
+        .collect();
+    let off = rows[0].1 * rows[0].2;
+    let mut table = format!(
+        "| guiding (budget {spp} samples per pixel) | seconds | variance | variance × seconds | \
+         MSE at equal time, over guiding off's |\n|---|---:|---:|---:|---:|\n"
+    );
+    for (method, seconds, variance) in rows {
+        let product = variance * seconds;
+        table += &format!(
+            "| {method} | {seconds:.2} | {variance:.3e} | {product:.3e} | {:.2} |\n",
+            product / off
+        );
+    }
+    table
 }
 
 /// Pass `k`'s weight in the image, or a dash when the final pass alone makes it.

@@ -1,14 +1,22 @@
-//! Keeping the training's images: every pass's image, weighed by how noisy it is.
+//! Keeping the training's images: every pass's image in the render's, with a weight.
 //!
 //! Each training iteration renders the whole image with guides it does not change while it
 //! renders, so its image is an unbiased estimate of the same picture as the final pass's,
 //! only noisier: its guides had learnt less, and it has fewer samples. Throwing it away
-//! wastes the half of the budget the training took. Müller, Evans, Keller and Novák
-//! (*Practical Path Guiding in Production*, 2019) keep every iteration's image and average
-//! them, each weighed by the inverse of its variance, the weights that make the variance of
-//! a weighted mean of independent estimates smallest.
+//! wastes the half of the budget the training took.
 //!
-//! The variances are not known; they are measured on the images themselves. Two passes
+//! Any weights fixed before the passes are drawn, summing to 1, keep the average unbiased.
+//! The render's default weighs each pass by its samples ([`sample_count_weights`]): every
+//! sample counts alike, as if the whole budget were one pass, and the early passes, the
+//! noisiest per sample, are the smallest, so their noise costs little. With `n_k` samples of
+//! per-sample variance `σ_k²` in pass `k`, the average's variance is `Σ n_k σ_k² / N²`: below
+//! the final pass's alone as long as the training's samples are, on average, less than three
+//! times as noisy as the final pass's (the training is about as long as the final pass).
+//!
+//! Müller, Evans, Keller and Novák (*Practical Path Guiding in Production*, 2019) weigh each
+//! pass by the inverse of its variance instead ([`inverse_variance_weights`]), the weights
+//! that make the variance of a weighted mean of independent estimates smallest. The
+//! variances are not known; they are measured on the images themselves. Two passes
 //! estimate the same picture, so the mean squared difference of their pixels is the sum of
 //! their variances. The final pass is compared with each earlier one; its own variance is
 //! taken as that of the last training pass (guided almost alike) scaled by their samples. The
@@ -16,7 +24,7 @@
 //! pass's weight by a share of one pixel among all, so the bias the measured weights bring is
 //! of that order, far below the noise of any pixel.
 //!
-//! The passes must be means of the same kind: per-pixel means (the box filter of one pixel)
+//! Either way the passes must be means of the same kind: per-pixel means (the box filter of one pixel)
 //! all of them, as training passes are.
 
 use common::film::Filter;
@@ -47,6 +55,33 @@ pub struct Pass<'a> {
     pub spp: u64,
 }
 
+/// How the passes' images make the render's image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PassWeighting {
+    /// The final pass alone (Müller et al. 2017): the training's images are thrown away.
+    FinalOnly,
+    /// Every pass, weighed by its samples ([`sample_count_weights`]): unbiased.
+    BySamples,
+    /// Every pass, weighed by its measured noise ([`inverse_variance_weights`]): consistent.
+    ByMeasuredNoise,
+}
+
+/// Each pass's share of all the samples: weights that depend on nothing the passes drew, so
+/// the average of unbiased images stays unbiased.
+pub fn sample_count_weights(passes: &[Pass<'_>]) -> Vec<f64> {
+    let total: f64 = passes.iter().map(|p| p.spp as f64).sum();
+    passes
+        .iter()
+        .map(|p| {
+            if total > 0.0 {
+                p.spp as f64 / total
+            } else {
+                0.0
+            }
+        })
+        .collect()
+}
+
 /// The mean over the pixels of the squared difference of two images (channels averaged).
 fn mean_squared_difference(a: &Image, b: &Image) -> f64 {
     let n = a.pixels.len().max(1) as f64;
@@ -69,19 +104,7 @@ pub fn inverse_variance_weights(passes: &[Pass<'_>]) -> Vec<f64> {
     let Some((last, earlier)) = passes.split_last() else {
         return Vec::new();
     };
-    let by_samples = || {
-        let total: f64 = passes.iter().map(|p| p.spp as f64).sum();
-        passes
-            .iter()
-            .map(|p| {
-                if total > 0.0 {
-                    p.spp as f64 / total
-                } else {
-                    0.0
-                }
-            })
-            .collect::<Vec<f64>>()
-    };
+    let by_samples = || sample_count_weights(passes);
     let Some(before) = earlier.last() else {
         return by_samples();
     };
@@ -161,6 +184,15 @@ mod tests {
         let image = combine(&passes, &w);
         let mean: f32 = image.pixels.iter().map(|p| p.x).sum::<f32>() / 4096.0;
         assert!((mean - 1.0).abs() < 0.02, "{mean}");
+    }
+
+    #[test]
+    fn sample_count_weights_are_each_pass_share_of_the_samples() {
+        let (a, b) = (noisy(1.0, 2.0, 1), noisy(1.0, 0.1, 2));
+        let passes = [Pass { image: &a, spp: 1 }, Pass { image: &b, spp: 3 }];
+        // Whatever the images hold: the weights are fixed by the samples alone.
+        assert_eq!(sample_count_weights(&passes), vec![0.25, 0.75]);
+        assert_eq!(sample_count_weights(&passes[..1]), vec![1.0]);
     }
 
     #[test]

@@ -42,6 +42,7 @@ pub mod spatial;
 pub mod target;
 pub mod training;
 
+pub use combine::PassWeighting;
 pub use path::GuidedPathTracer;
 pub use target::GuidingTarget;
 pub use training::{GuidingOptions, Trained, TrainingIteration};
@@ -58,12 +59,11 @@ use std::time::Instant;
 /// A guided render: its image, and what the training before it learnt and cost.
 #[derive(Clone, Debug)]
 pub struct GuidedRender {
-    /// The image: the final pass's alone (unbiased), or with
-    /// [`GuidingOptions::combine_passes`] the training's and the final pass's averaged
-    /// ([`combine`]) when the film's filter is a box of one pixel and no stop cut the final
-    /// pass short. Its statistics count
-    /// the whole render, training included (seconds and rays), and its samples per pixel
-    /// are those of the passes it averages.
+    /// The image: the training's and the final pass's averaged as
+    /// [`GuidingOptions::passes`] says ([`combine`]) when the film's filter is a box of one
+    /// pixel and no stop cut the final pass short; else the final pass's alone. Its
+    /// statistics count the whole render, training included (seconds and rays), and its
+    /// samples per pixel are those of the passes it averages.
     pub output: RenderOutput,
     /// The training; `None` when guiding is off.
     pub training: Option<Trained>,
@@ -139,10 +139,13 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
         let ray = camera_rays.generate(world, p_film, sampler);
         guided.radiance(&ray, sampler, None)
     });
-    // Asked to, the training's images are kept: averaged with the final pass's by their
-    // measured noise, when they are means of the same kind.
+    // The training's images are kept, averaged with the final pass's (by their samples
+    // unless asked otherwise), when they are means of the same kind.
     let mut pass_weights = Vec::new();
-    if guiding.combine_passes && combine::makes_pixel_means(filter) && !output.stats.interrupted {
+    if guiding.passes != PassWeighting::FinalOnly
+        && combine::makes_pixel_means(filter)
+        && !output.stats.interrupted
+    {
         let passes: Vec<combine::Pass<'_>> = trained
             .images
             .iter()
@@ -153,21 +156,34 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
                 spp: output.stats.spp,
             }))
             .collect();
-        pass_weights = combine::inverse_variance_weights(&passes);
-        let image = combine::combine(&passes, &pass_weights);
-        output.image = image;
-        output.stats.spp += trained.spp;
-        output.stats.samples +=
-            trained.spp * u64::from(settings.width) * u64::from(settings.height);
+        pass_weights = match guiding.passes {
+            PassWeighting::ByMeasuredNoise => combine::inverse_variance_weights(&passes),
+            _ => combine::sample_count_weights(&passes),
+        };
+        output.image = combine::combine(&passes, &pass_weights);
     }
-    // The statistics count the whole render: its time, and the training's rays too.
-    output.stats.seconds = start.elapsed().as_secs_f64();
-    output.stats.rays += trained.iterations.iter().map(|i| i.rays).sum::<u64>();
-    output.stats.requested_spp = match settings.budget {
-        Budget::Samples(spp) => Some(spp),
-        Budget::Seconds(_) => None,
+    // The statistics count the whole render, training included: its time, samples and rays
+    // (and so their rates); the samples per pixel are the image's.
+    let pixels = u64::from(settings.width) * u64::from(settings.height);
+    let training = Totals {
+        rays: trained.iterations.iter().map(|i| i.rays).sum(),
+        samples: trained.spp * pixels,
+        nonfinite_samples: trained.iterations.iter().map(|i| i.nonfinite_samples).sum(),
     };
-    output.stats.interrupted |= trained.interrupted;
+    let mut totals = Totals {
+        rays: output.stats.rays,
+        samples: output.stats.samples,
+        nonfinite_samples: output.stats.nonfinite_samples,
+    };
+    totals.add(&training);
+    let spp = output.stats.spp
+        + if pass_weights.is_empty() {
+            0
+        } else {
+            trained.spp
+        };
+    let seconds = start.elapsed().as_secs_f64();
+    output.stats = RenderStats::new(settings, spp, output.stats.interrupted, seconds, &totals);
     GuidedRender {
         output,
         training: Some(trained),

@@ -17,7 +17,13 @@
 //! scale of `F`.
 //!
 //! The fraction is kept between [`LOWEST_FRACTION`] and one minus it: the guide gives no
-//! density to directions it has seen no light from, and the BSDF must still draw them. (Müller
+//! density to directions it has seen no light from, and the BSDF must still draw them, with
+//! weights at most `1 / LOWEST_FRACTION` times the BSDF's own. The floor is a fifth, not the
+//! twentieth we first tried: on the door-gap room, where a learnt fraction of a twentieth met
+//! light its guide had not learnt, the rare BSDF samples that found it made fireflies that
+//! cost more than the learning gained (radiance-guided, the error at equal time was 2.3 to
+//! 2.7 times the unguided render's, against 1.2 to 1.3 with the floor at a fifth; measured on
+//! one core, two seeds, 20 seconds). (Müller
 //! et al. also pull `θ` towards 0 by a fixed amount; against gradients whose size is the
 //! scene's brightness, that pull holds a dim room's fraction near a half, and the bounds on
 //! `θ` are enough to keep it from wandering off.)
@@ -26,7 +32,7 @@ use crate::target::GuidingTarget;
 use glam::Vec3;
 
 /// The least probability of either technique.
-pub const LOWEST_FRACTION: f32 = 0.05;
+pub const LOWEST_FRACTION: f32 = 0.2;
 
 /// Adam's step size, its two moments' decay, and the small number keeping it finite.
 const LEARNING_RATE: f32 = 0.01;
@@ -66,6 +72,10 @@ pub struct LearntFraction {
     first_moment: f32,
     second_moment: f32,
     steps: u32,
+    /// The two decays to the power of the step count: what of the moments' zero start is
+    /// left in them.
+    decay_1: f32,
+    decay_2: f32,
 }
 
 impl Default for LearntFraction {
@@ -76,6 +86,8 @@ impl Default for LearntFraction {
             first_moment: 0.0,
             second_moment: 0.0,
             steps: 0,
+            decay_1: 1.0,
+            decay_2: 1.0,
         }
     }
 }
@@ -135,13 +147,14 @@ impl LearntFraction {
     /// Adam's step on `θ` for `gradient`.
     fn adam_step(&mut self, gradient: f32) {
         self.steps += 1;
-        let t = self.steps as i32;
+        self.decay_1 *= BETA_1;
+        self.decay_2 *= BETA_2;
         self.first_moment = BETA_1 * self.first_moment + (1.0 - BETA_1) * gradient;
         self.second_moment = BETA_2 * self.second_moment + (1.0 - BETA_2) * gradient * gradient;
         // The moments start at 0: divided by what the decay has let through so far, they
         // are unbiased means from the first step.
-        let mean = self.first_moment / (1.0 - BETA_1.powi(t));
-        let mean_square = self.second_moment / (1.0 - BETA_2.powi(t));
+        let mean = self.first_moment / (1.0 - self.decay_1);
+        let mean_square = self.second_moment / (1.0 - self.decay_2);
         self.theta -= LEARNING_RATE * mean / (mean_square.sqrt() + EPSILON);
         // Beyond the clamp's reach θ would only grow a debt to pay back before it moves the
         // fraction again.
@@ -217,12 +230,19 @@ mod tests {
     #[test]
     fn the_fraction_follows_the_better_technique_and_stays_a_probability() {
         for loss in [FractionLoss::Divergence, FractionLoss::SecondMoment] {
-            // All the light where the guide looks: the guide should draw nearly everything.
+            // All the light where the guide looks: the guide should draw all it may, the
+            // fraction down at its floor.
             let guide_wins = learn_on(1.0, 0.0, 20_000, loss);
-            assert!(guide_wins.fraction() < 0.15, "{loss:?}: {guide_wins:?}");
+            assert!(
+                guide_wins.fraction() < LOWEST_FRACTION + 0.05,
+                "{loss:?}: {guide_wins:?}"
+            );
             // The light everywhere alike: the BSDF (uniform) is the integrand's shape.
             let bsdf_wins = learn_on(1.0, 1.0, 20_000, loss);
-            assert!(bsdf_wins.fraction() > 0.85, "{loss:?}: {bsdf_wins:?}");
+            assert!(
+                bsdf_wins.fraction() > 1.0 - LOWEST_FRACTION - 0.05,
+                "{loss:?}: {bsdf_wins:?}"
+            );
             for learnt in [guide_wins, bsdf_wins] {
                 let f = learnt.fraction();
                 assert!((LOWEST_FRACTION..=1.0 - LOWEST_FRACTION).contains(&f));

@@ -10,6 +10,7 @@
 //! kept: each is unbiased, and the render averages them with the final pass's, the noisy
 //! early ones counting for little ([`crate::combine`]).
 
+use crate::combine::PassWeighting;
 use crate::path::{GuideRecord, GuidedPathTracer, Learning};
 use crate::quadtree::{DirectionTree, SPLIT_FRACTION};
 use crate::selection::{self, LearntFraction};
@@ -37,11 +38,10 @@ pub struct GuidingOptions {
     pub spatial_threshold: f64,
     /// The share of a quadtree above which a quadrant is split ([`SPLIT_FRACTION`]).
     pub split_fraction: f32,
-    /// Whether the training's images join the final pass's in the image, weighted by their
-    /// measured noise (Müller et al. 2019; see [`crate::combine`]): less noise for the same
-    /// budget, but weights measured from the images themselves make the image consistent
-    /// rather than unbiased. Off, as in Müller et al. 2017, the final pass alone makes it.
-    pub combine_passes: bool,
+    /// How the training's images join the final pass's in the image ([`crate::combine`]): by
+    /// their samples (unbiased, the default), by their measured noise (Müller et al. 2019:
+    /// consistent rather than unbiased), or not at all (Müller et al. 2017).
+    pub passes: PassWeighting,
 }
 
 impl GuidingOptions {
@@ -52,7 +52,7 @@ impl GuidingOptions {
             bsdf_fraction: None,
             spatial_threshold: 12000.0,
             split_fraction: SPLIT_FRACTION,
-            combine_passes: false,
+            passes: PassWeighting::BySamples,
         }
     }
 

@@ -35,7 +35,6 @@ fn render_guides_as_told_and_reports_the_training() {
                 "18",
                 "--spp",
                 "16",
-                "--combine-passes",
                 "--out",
                 out.to_str().unwrap(),
                 "--stats",
@@ -58,7 +57,7 @@ fn render_guides_as_told_and_reports_the_training() {
             assert!(json.get("training").is_none());
         } else {
             // Training of 1, 2 and 4 samples per pixel; the final pass gets the other 9, and
-            // the image averages all four passes.
+            // the image averages all four passes, each by its samples (the default).
             let training = &json["training"];
             assert_eq!(training["spp"], 7, "{json}");
             assert_eq!(json["spp"], 16, "{json}");
@@ -70,9 +69,10 @@ fn render_guides_as_told_and_reports_the_training() {
                 .iter()
                 .map(|w| w.as_f64().unwrap())
                 .collect();
-            assert_eq!(weights.len(), 4, "{json}");
-            assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-9, "{json}");
-            assert!(weights.iter().all(|&w| w > 0.0), "{json}");
+            assert_eq!(training["combine_passes"], "samples", "{json}");
+            for (w, spp) in weights.iter().zip([1.0, 2.0, 4.0, 9.0]) {
+                assert!((w - spp / 16.0).abs() < 1e-12, "{json}");
+            }
             // Without --bsdf-fraction the fraction is learnt, and stays a probability.
             assert_eq!(json["bsdf_fraction"], "learnt", "{json}");
             let learnt = &training["learnt_fractions"];

@@ -8,7 +8,9 @@ use ch06_fuzzy_reflections::FuzzMethod;
 use ch07_soft_shadows::{AreaLights, LightSampling};
 use ch08_path_tracing::{LectureMaterials, PathOptions, PathTracer, SceneLights};
 use ch11_path_guiding::spatial::SpatialTree;
-use ch11_path_guiding::{GuidedPathTracer, GuidingOptions, GuidingTarget, render_guided};
+use ch11_path_guiding::{
+    GuidedPathTracer, GuidingOptions, GuidingTarget, PassWeighting, render_guided,
+};
 use common::Ray;
 use common::film::PixelBoxFilter;
 use common::render::RenderSettings;
@@ -183,7 +185,7 @@ fn a_guided_render_is_the_same_on_any_number_of_threads() {
             MATERIALS,
             options,
             Some(GuidingOptions {
-                combine_passes: true,
+                passes: PassWeighting::ByMeasuredNoise,
                 ..GuidingOptions::for_image(GuidingTarget::Variance, 1200)
             }),
             &lens,
@@ -264,20 +266,20 @@ fn image_mean(image: &common::image::Image) -> f64 {
 #[test]
 fn the_training_and_final_passes_averaged_stay_unbiased() {
     // The grey sphere under the sky without the light sample, so that the guides learn the
-    // sky and the fractions move: every guided render's image, all its passes averaged, has
-    // the mean of chapter 08's long render.
+    // sky and the fractions move: every guided render's image, all its passes averaged by
+    // their samples or by their measured noise, has the mean of chapter 08's long render.
     let world = ch08_path_tracing::furnace::spheres(&[Material::diffuse(Vec3::splat(0.5))], 6);
     let options = PathOptions {
         nee: false,
         ..PathOptions::with_depth(6)
     };
-    let render = |seed, spp, guiding: Option<GuidingTarget>| {
+    let render = |seed, spp, guiding: Option<(GuidingTarget, PassWeighting)>| {
         render_guided(
             &world,
             MATERIALS,
             options,
-            guiding.map(|t| GuidingOptions {
-                combine_passes: true,
+            guiding.map(|(t, passes)| GuidingOptions {
+                passes,
                 ..GuidingOptions::for_image(t, 24 * 24)
             }),
             &Lens::PINHOLE,
@@ -287,10 +289,15 @@ fn the_training_and_final_passes_averaged_stay_unbiased() {
         )
     };
     let reference = image_mean(&render(1000, 4096, None).output.image);
-    for target in [GuidingTarget::Radiance, GuidingTarget::Variance] {
+    for (target, passes) in [
+        (GuidingTarget::Radiance, PassWeighting::BySamples),
+        (GuidingTarget::Variance, PassWeighting::BySamples),
+        (GuidingTarget::Radiance, PassWeighting::ByMeasuredNoise),
+        (GuidingTarget::Variance, PassWeighting::ByMeasuredNoise),
+    ] {
         let means: Vec<f64> = (0..12)
             .map(|seed| {
-                let rendered = render(seed, 32, Some(target));
+                let rendered = render(seed, 32, Some((target, passes)));
                 assert_eq!(rendered.output.stats.spp, 32);
                 assert_eq!(
                     rendered.pass_weights.len(),
@@ -306,7 +313,8 @@ fn the_training_and_final_passes_averaged_stay_unbiased() {
         let error = (spread / n).sqrt();
         assert!(
             (mean - reference).abs() < 4.0 * error + 1e-4,
-            "{} guiding: the averaged images' mean is {mean} ± {error}, chapter 08's {reference}",
+            "{} guiding, {passes:?}: the averaged images' mean is {mean} ± {error}, chapter 08's \
+             {reference}",
             target.name()
         );
     }
