@@ -126,6 +126,20 @@ pub fn refresh_agreement(
     update: bool,
     only: Option<&str>,
 ) -> Result<Vec<String>, String> {
+    refresh_agreement_at(python, set, update, only, AGREEMENT_SPP, REFERENCE_SPP)
+}
+
+/// [`refresh_agreement`] with Mitsuba's second render at `spp` samples per pixel and its
+/// reference at `reference_spp`, for a set whose scenes are compared at other counts than
+/// [`AGREEMENT_SPP`] (noise too skewed for the block test at that count).
+pub fn refresh_agreement_at(
+    python: &str,
+    set: &AgreementSet,
+    update: bool,
+    only: Option<&str>,
+    spp: u64,
+    reference_spp: u64,
+) -> Result<Vec<String>, String> {
     let mut lines = Vec::new();
     let mut failures = Vec::new();
     let chosen = set
@@ -134,14 +148,8 @@ pub fn refresh_agreement(
         .filter(|scene| only.is_none_or(|names| names.split(',').any(|n| n == scene.name)));
     for scene in chosen {
         let file = set.file(scene);
-        let renders = make_reference_renders(
-            python,
-            scene.variant,
-            &file,
-            AGREEMENT_SPP,
-            REFERENCE_SPP,
-            &[],
-        )?;
+        let renders =
+            make_reference_renders(python, scene.variant, &file, spp, reference_spp, &[])?;
         let agreement = renders.agreement(&(set.render)(&file)?);
         lines.push(format!(
             "{} ({}): RMSE ours {:.2e} / Mitsuba {:.2e}, bias_blocks ours {:.4} / Mitsuba {:.4}",
@@ -181,6 +189,15 @@ pub const AGREEMENT_ONLY: &str = "AGREEMENT_ONLY";
 /// [`refresh_agreement`] with the Python named by [`MITSUBA_PYTHON`], storing the new renders
 /// when [`UPDATE_MITSUBA_RENDERS`] is `1` and keeping to the scenes [`AGREEMENT_ONLY`] names: what each chapter's ignored `tests/mitsuba.rs` runs.
 pub fn refresh_agreement_from_env(set: &AgreementSet) -> Result<Vec<String>, String> {
+    refresh_agreement_from_env_at(set, AGREEMENT_SPP, REFERENCE_SPP)
+}
+
+/// [`refresh_agreement_from_env`] at the sample counts of [`refresh_agreement_at`].
+pub fn refresh_agreement_from_env_at(
+    set: &AgreementSet,
+    spp: u64,
+    reference_spp: u64,
+) -> Result<Vec<String>, String> {
     let python = mitsuba_python()
         .ok_or_else(|| format!("set {MITSUBA_PYTHON} to a Python that has the mitsuba package"))?;
     let update = std::env::var(UPDATE_MITSUBA_RENDERS).is_ok_and(|v| v == "1");
@@ -197,5 +214,5 @@ pub fn refresh_agreement_from_env(set: &AgreementSet) -> Result<Vec<String>, Str
             ));
         }
     }
-    refresh_agreement(&python, set, update, only.as_deref())
+    refresh_agreement_at(&python, set, update, only.as_deref(), spp, reference_spp)
 }

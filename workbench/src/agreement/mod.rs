@@ -14,6 +14,6 @@ pub use comparison::{
 };
 pub use mitsuba::{
     AGREEMENT_ONLY, MITSUBA_JIT_VARIANT, MITSUBA_PYTHON, MITSUBA_VARIANT, UPDATE_MITSUBA_RENDERS,
-    make_reference_renders, mitsuba_python, refresh_agreement, refresh_agreement_from_env,
-    render_with_mitsuba,
+    make_reference_renders, mitsuba_python, refresh_agreement, refresh_agreement_at,
+    refresh_agreement_from_env, refresh_agreement_from_env_at, render_with_mitsuba,
 };
