@@ -51,6 +51,9 @@ pub enum CombineArg {
     Final,
     /// Every pass weighed by its samples: all the budget in the image, still unbiased.
     Samples,
+    /// Every pass weighed by its samples times the square root of the samples its guides
+    /// learnt from: the better guided passes count for more, still unbiased.
+    Learning,
     /// Every pass weighed by its measured noise (Müller et al. 2019): less noise where the
     /// early passes are poor, but the image is consistent rather than unbiased.
     Noise,
@@ -62,6 +65,7 @@ impl CombineArg {
         match self {
             CombineArg::Final => PassWeighting::FinalOnly,
             CombineArg::Samples => PassWeighting::BySamples,
+            CombineArg::Learning => PassWeighting::ByLearning,
             CombineArg::Noise => PassWeighting::ByMeasuredNoise,
         }
     }
@@ -71,6 +75,7 @@ impl CombineArg {
         match self {
             CombineArg::Final => "final",
             CombineArg::Samples => "samples",
+            CombineArg::Learning => "learning",
             CombineArg::Noise => "noise",
         }
     }
@@ -89,7 +94,7 @@ pub struct RenderOptions {
     #[arg(long, value_parser = fraction, allow_hyphen_values = true)]
     pub bsdf_fraction: Option<f32>,
     /// How the training's images join the final pass's in the image.
-    #[arg(long, value_enum, default_value_t = CombineArg::Samples)]
+    #[arg(long, value_enum, default_value_t = CombineArg::Learning)]
     pub combine_passes: CombineArg,
     #[command(flatten)]
     pub anti_aliasing: AntiAliasingArgs,

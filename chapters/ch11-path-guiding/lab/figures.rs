@@ -5,7 +5,7 @@
 use crate::guided_bsdf::BSDF_FRACTION;
 use crate::render_guided;
 use crate::training::GuidingOptions;
-use crate::{GuidedRender, GuidingTarget};
+use crate::{GuidedRender, GuidingTarget, PassWeighting};
 use ch04_depth_of_field::Lens;
 use ch09_materials::lab::figure_scene::FigureScene;
 use common::film::PixelBoxFilter;
@@ -81,17 +81,18 @@ impl Renders {
     /// The render of a budget of `spp` samples per pixel with `seed`, guided towards `target`
     /// (not at all with `None`): with guiding, the budget pays for training and final pass.
     fn render(&self, spp: u64, seed: u64, target: Option<GuidingTarget>) -> GuidedRender {
-        self.render_pinned(spp, seed, target, None)
+        self.render_with(spp, seed, target, None, PassWeighting::ByLearning)
     }
 
     /// [`render`](Self::render) with the BSDF fraction fixed at `bsdf_fraction` everywhere, if
-    /// given, rather than learnt.
-    fn render_pinned(
+    /// given, rather than learnt, and the passes averaged as `passes` says.
+    fn render_with(
         &self,
         spp: u64,
         seed: u64,
         target: Option<GuidingTarget>,
         bsdf_fraction: Option<f32>,
+        passes: PassWeighting,
     ) -> GuidedRender {
         let scene = &self.scene;
         let settings = RenderSettings::new(scene.width, scene.height, spp);
@@ -102,6 +103,7 @@ impl Renders {
             scene.options,
             target.map(|t| GuidingOptions {
                 bsdf_fraction,
+                passes,
                 ..GuidingOptions::for_image(t, pixels)
             }),
             &Lens::PINHOLE,
@@ -231,19 +233,36 @@ fn error_against_time(out: &Path, name: &str, file: &str, level: Level) -> anyho
 /// at equal time (below 1, guiding wins), free of the long reference's own noise, which the
 /// error-against-time table adds to every method alike.
 ///
-/// The guided methods appear twice: with the BSDF fraction learnt (the render's default) and
-/// pinned at a half (Müller et al. 2017).
+/// The guided methods appear three times: with the render's defaults (the BSDF fraction
+/// learnt, the passes averaged by their samples and what their guides learnt from), with the
+/// fraction pinned at a half (Müller et al. 2017), and pinned with the passes averaged by their
+/// measured noise (Müller et al. 2019: consistent rather than unbiased).
 fn equal_time_table(renders: &Renders, spp: u64) -> String {
-    let pinned = [
-        ("radiance, BSDF fraction 0.5", Some(GuidingTarget::Radiance)),
-        ("variance, BSDF fraction 0.5", Some(GuidingTarget::Variance)),
+    let (radiance, variance) = (Some(GuidingTarget::Radiance), Some(GuidingTarget::Variance));
+    let half = Some(BSDF_FRACTION);
+    let (by_learning, by_noise) = (PassWeighting::ByLearning, PassWeighting::ByMeasuredNoise);
+    let variants = [
+        ("radiance, BSDF fraction 0.5", radiance, half, by_learning),
+        ("variance, BSDF fraction 0.5", variance, half, by_learning),
+        (
+            "radiance, fraction 0.5, passes by noise",
+            radiance,
+            half,
+            by_noise,
+        ),
+        (
+            "variance, fraction 0.5, passes by noise",
+            variance,
+            half,
+            by_noise,
+        ),
     ];
     let rows: Vec<(&str, f64, f64)> = METHODS
         .into_iter()
-        .map(|(method, target)| (method, target, None))
-        .chain(pinned.map(|(m, t)| (m, t, Some(BSDF_FRACTION))))
-        .map(|(method, target, fraction)| {
-            let render = |seed| renders.render_pinned(spp, seed, target, fraction);
+        .map(|(method, target)| (method, target, None, by_learning))
+        .chain(variants)
+        .map(|(method, target, fraction, passes)| {
+            let render = |seed| renders.render_with(spp, seed, target, fraction, passes);
             let (a, b) = (render(11), render(12));
             let variance = common::metrics::rmse(&a.output.image, &b.output.image).powi(2) / 2.0;
             let seconds = 0.5 * (a.output.stats.seconds + b.output.stats.seconds);

@@ -6,12 +6,24 @@
 //! wastes the half of the budget the training took.
 //!
 //! Any weights fixed before the passes are drawn, summing to 1, keep the average unbiased.
-//! The render's default weighs each pass by its samples ([`sample_count_weights`]): every
-//! sample counts alike, as if the whole budget were one pass, and the early passes, the
-//! noisiest per sample, are the smallest, so their noise costs little. With `n_k` samples of
-//! per-sample variance `σ_k²` in pass `k`, the average's variance is `Σ n_k σ_k² / N²`: below
-//! the final pass's alone as long as the training's samples are, on average, less than three
-//! times as noisy as the final pass's (the training is about as long as the final pass).
+//! The simplest weighs each pass by its samples ([`sample_count_weights`]): every sample
+//! counts alike, as if the whole budget were one pass. With `n_k` samples of per-sample
+//! variance `σ_k²` in pass `k`, the average's variance is `Σ n_k σ_k² / N²`: below the final
+//! pass's alone as long as the training's samples are, on average, less than three times as
+//! noisy as the final pass's (the training is about as long as the final pass).
+//!
+//! But a pass's samples are as good as its guides, and its guides learnt from every sample
+//! before it: on the door-gap room a sample of the first passes is about as noisy as an
+//! unguided one, a sample of the final pass a fifth of that. The weights that make the
+//! average's variance smallest are `n_k / σ_k²`. The render's default takes `σ_k²` as falling
+//! with the square root of `m_k`, the training samples pass `k`'s guides learnt from, and so
+//! weighs each pass by `n_k √m_k` ([`learning_weights`]): still fixed before anything is drawn,
+//! so still unbiased. (Two seeds' passes measured on three scenes, 1024 samples per pixel,
+//! the average's variance over the one by samples: door gap 0.80 and 0.84, against 0.78 and
+//! 0.84 for the inverse of each pass's measured variance, the best any weights can do; glossy
+//! floor 1.01, Cornell box 1.04, where the guides gain little and the samples' own weights were
+//! already near the best. With `n_k m_k`, as if the guides' noise fell as one over what they
+//! learnt from, 0.83 and 0.89 on the door gap, but 1.15 and 1.17 on the other two.)
 //!
 //! Müller, Evans, Keller and Novák (*Practical Path Guiding in Production*, 2019) weigh each
 //! pass by the inverse of its variance instead ([`inverse_variance_weights`]), the weights
@@ -62,6 +74,9 @@ pub enum PassWeighting {
     FinalOnly,
     /// Every pass, weighed by its samples ([`sample_count_weights`]): unbiased.
     BySamples,
+    /// Every pass, weighed by its samples and by what its guides learnt from
+    /// ([`learning_weights`]): unbiased.
+    ByLearning,
     /// Every pass, weighed by its measured noise ([`inverse_variance_weights`]): consistent.
     ByMeasuredNoise,
 }
@@ -80,6 +95,27 @@ pub fn sample_count_weights(passes: &[Pass<'_>]) -> Vec<f64> {
             }
         })
         .collect()
+}
+
+/// Each pass's samples times the square root of the samples of the passes before it (what its
+/// guides learnt from), over their sum: weights that depend on nothing the passes drew. The
+/// first pass, guided by nothing, weighs nothing; a lone pass weighs all.
+pub fn learning_weights(passes: &[Pass<'_>]) -> Vec<f64> {
+    let mut learnt_from = 0.0;
+    let raw: Vec<f64> = passes
+        .iter()
+        .map(|p| {
+            let weight = p.spp as f64 * f64::sqrt(learnt_from);
+            learnt_from += p.spp as f64;
+            weight
+        })
+        .collect();
+    let total: f64 = raw.iter().sum();
+    if total > 0.0 {
+        raw.iter().map(|w| w / total).collect()
+    } else {
+        sample_count_weights(passes)
+    }
 }
 
 /// The mean over the pixels of the squared difference of two images (channels averaged).
@@ -193,6 +229,24 @@ mod tests {
         // Whatever the images hold: the weights are fixed by the samples alone.
         assert_eq!(sample_count_weights(&passes), vec![0.25, 0.75]);
         assert_eq!(sample_count_weights(&passes[..1]), vec![1.0]);
+    }
+
+    #[test]
+    fn learning_weights_grow_with_what_each_pass_learnt_from() {
+        let (a, b, c) = (noisy(1.0, 2.0, 1), noisy(1.0, 0.1, 2), noisy(1.0, 0.1, 3));
+        let passes = [
+            Pass { image: &a, spp: 1 },
+            Pass { image: &b, spp: 3 },
+            Pass { image: &c, spp: 12 },
+        ];
+        // 1 x √0, 3 x √1, 12 x √4: 0, 3 and 24 of 27.
+        let w = learning_weights(&passes);
+        let expected = [0.0, 3.0 / 27.0, 24.0 / 27.0];
+        assert!(
+            w.iter().zip(expected).all(|(w, e)| (w - e).abs() < 1e-12),
+            "{w:?}"
+        );
+        assert_eq!(learning_weights(&passes[..1]), vec![1.0]);
     }
 
     #[test]

@@ -19,7 +19,7 @@ use crate::quadtree::DirectionTree;
 use ch08_path_tracing::{BsdfSample, SurfaceBsdf};
 use common::geometry::SurfaceHit;
 use common::sampler::Sampler;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 /// The BSDF fraction of Müller et al.'s first paper: half the directions from the BSDF, half
 /// from the guide (each region learns its own otherwise, [`crate::selection`]).
@@ -53,11 +53,99 @@ impl<'a, B: SurfaceBsdf> GuidedBsdf<'a, B> {
         solid_angle_pdf(guide.pdf(point_of(wi)))
     }
 
-    /// The BSDF's and the guide's densities of `wi` apart, when they are mixed: what the
-    /// fraction is learnt from ([`crate::selection`]).
-    pub fn densities(&self, wo: Vec3, wi: Vec3) -> Option<(f32, f32)> {
-        let guide = self.guide?;
-        Some((self.bsdf.pdf(wo, wi), Self::guide_pdf(guide, wi)))
+    /// A direction drawn from the mixture ([`SurfaceBsdf::sample`]), with what the mixture
+    /// worked out about it on the way: a training path records the direction's point and learns
+    /// the fraction from the two densities, and need not work them out again.
+    pub fn sample_mixture<S: Sampler>(&self, wo: Vec3, sampler: &mut S) -> Option<MixtureSample> {
+        let Some(guide) = self.guide else {
+            let sample = self.bsdf.sample(wo, sampler)?;
+            return Some(MixtureSample {
+                sample,
+                mixed: None,
+            });
+        };
+        let alpha = self.bsdf_fraction;
+        if sampler.get_1d() < alpha {
+            let sample = self.bsdf.sample(wo, sampler)?;
+            if sample.is_delta() {
+                return Some(MixtureSample {
+                    sample: BsdfSample {
+                        weight: sample.weight / alpha,
+                        ..sample
+                    },
+                    mixed: None,
+                });
+            }
+            let point = point_of(sample.wi);
+            let mixed = Mixed {
+                point,
+                bsdf_pdf: sample.pdf,
+                guide_pdf: solid_angle_pdf(guide.pdf(point)),
+            };
+            let f_cos = sample.weight * sample.pdf;
+            let pdf = mixed.pdf(alpha);
+            return Some(MixtureSample {
+                sample: BsdfSample {
+                    weight: f_cos / pdf,
+                    pdf,
+                    ..sample
+                },
+                mixed: Some(mixed),
+            });
+        }
+        // The guide's density is that of the point drawn: no need to find the point of the
+        // direction again.
+        let point = guide.sample(sampler.get_2d())?;
+        let wi = direction_of(point);
+        let f_cos = self.bsdf.eval(wo, wi);
+        let mixed = Mixed {
+            point,
+            bsdf_pdf: self.bsdf.pdf(wo, wi),
+            guide_pdf: solid_angle_pdf(guide.pdf(point)),
+        };
+        let pdf = mixed.pdf(alpha);
+        if f_cos == Vec3::ZERO || pdf.is_nan() || pdf <= 0.0 {
+            return None;
+        }
+        // The radiance scaling of a refraction is the BSDF's to know; the guide's direction
+        // is taken as scaling nothing, which only the roulette reads.
+        Some(MixtureSample {
+            sample: BsdfSample {
+                wi,
+                weight: f_cos / pdf,
+                pdf,
+                eta_scale: 1.0,
+            },
+            mixed: Some(mixed),
+        })
+    }
+}
+
+/// A direction drawn from a [`GuidedBsdf`], and what the mixture knew of it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MixtureSample {
+    /// The direction and its weight, as any BSDF's sample.
+    pub sample: BsdfSample,
+    /// Where the guide was mixed in and the direction is not a delta lobe's: its point and
+    /// both densities.
+    pub mixed: Option<Mixed>,
+}
+
+/// A direction of a mixture seen by both techniques.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mixed {
+    /// The direction as a point of the unit square ([`crate::directions`]).
+    pub point: Vec2,
+    /// The BSDF's density of the direction per unit solid angle.
+    pub bsdf_pdf: f32,
+    /// The guide's.
+    pub guide_pdf: f32,
+}
+
+impl Mixed {
+    /// The mixture's density, the BSDF drawn from with probability `bsdf_fraction`.
+    pub fn pdf(&self, bsdf_fraction: f32) -> f32 {
+        bsdf_fraction * self.bsdf_pdf + (1.0 - bsdf_fraction) * self.guide_pdf
     }
 }
 
@@ -75,40 +163,7 @@ impl<B: SurfaceBsdf> SurfaceBsdf for GuidedBsdf<'_, B> {
     /// say) no guide can draw: its weight is the BSDF's over the chance of asking the BSDF.
     /// Draws one number for the choice, then the BSDF's numbers or the guide's two.
     fn sample<S: Sampler>(&self, wo: Vec3, sampler: &mut S) -> Option<BsdfSample> {
-        let Some(guide) = self.guide else {
-            return self.bsdf.sample(wo, sampler);
-        };
-        let alpha = self.bsdf_fraction;
-        if sampler.get_1d() < alpha {
-            let sample = self.bsdf.sample(wo, sampler)?;
-            if sample.is_delta() {
-                return Some(BsdfSample {
-                    weight: sample.weight / alpha,
-                    ..sample
-                });
-            }
-            let f_cos = sample.weight * sample.pdf;
-            let pdf = alpha * sample.pdf + (1.0 - alpha) * Self::guide_pdf(guide, sample.wi);
-            return Some(BsdfSample {
-                weight: f_cos / pdf,
-                pdf,
-                ..sample
-            });
-        }
-        let wi = direction_of(guide.sample(sampler.get_2d())?);
-        let f_cos = self.bsdf.eval(wo, wi);
-        let pdf = self.pdf(wo, wi);
-        if f_cos == Vec3::ZERO || pdf.is_nan() || pdf <= 0.0 {
-            return None;
-        }
-        // The radiance scaling of a refraction is the BSDF's to know; the guide's direction
-        // is taken as scaling nothing, which only the roulette reads.
-        Some(BsdfSample {
-            wi,
-            weight: f_cos / pdf,
-            pdf,
-            eta_scale: 1.0,
-        })
+        self.sample_mixture(wo, sampler).map(|drawn| drawn.sample)
     }
 
     fn eval(&self, wo: Vec3, wi: Vec3) -> Vec3 {

@@ -139,8 +139,8 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
         let ray = camera_rays.generate(world, p_film, sampler);
         guided.radiance(&ray, sampler, None)
     });
-    // The training's images are kept, averaged with the final pass's (by their samples
-    // unless asked otherwise), when they are means of the same kind.
+    // The training's images are kept, averaged with the final pass's (by weights fixed in
+    // advance unless asked otherwise), when they are means of the same kind.
     let mut pass_weights = Vec::new();
     if guiding.passes != PassWeighting::FinalOnly
         && combine::makes_pixel_means(filter)
@@ -158,6 +158,7 @@ pub fn render_guided<S: TimeSampler, M: Materials>(
             .collect();
         pass_weights = match guiding.passes {
             PassWeighting::ByMeasuredNoise => combine::inverse_variance_weights(&passes),
+            PassWeighting::ByLearning => combine::learning_weights(&passes),
             _ => combine::sample_count_weights(&passes),
         };
         output.image = combine::combine(&passes, &pass_weights);

@@ -17,12 +17,11 @@
 //! exactly chapter 08's numbers and gives exactly its radiance.
 
 use crate::directions::point_of;
-use crate::guided_bsdf::GuidedBsdf;
+use crate::guided_bsdf::{GuidedBsdf, MixtureSample};
 use crate::selection::{self, FractionSample};
 use crate::spatial::SpatialTree;
 use crate::target::{GuidingTarget, VertexRecord};
 use ch01_whitted::world::World;
-use ch08_path_tracing::path::extend_path;
 use ch08_path_tracing::roulette::russian_roulette;
 use ch08_path_tracing::{Materials, PathTracer, SurfaceBsdf};
 use common::Ray;
@@ -68,7 +67,8 @@ pub struct GuidedPathTracer<'a, M: Materials> {
 /// A vertex of a training path, until the path ends.
 struct PendingVertex {
     guide: u32,
-    wi: Vec3,
+    /// The direction, as a point of the unit square.
+    point: Vec2,
     /// What the path carried to the vertex, and after its bounce.
     throughput_before: Vec3,
     throughput_after: Vec3,
@@ -188,22 +188,25 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                 break;
             }
 
-            // 5. The next direction, from the BSDF and the guide; remembered while training.
+            // 5. The next direction, from the BSDF and the guide: chapter 08's BSDF step
+            // (`extend_path`), keeping what the mixture knew of the direction for the records.
             let throughput_before = throughput;
-            let Some(sample) = extend_path(&bsdf, wo, &mut throughput, &mut eta_scale, sampler)
-            else {
+            let Some(MixtureSample { sample, mixed }) = bsdf.sample_mixture(wo, sampler) else {
                 break;
             };
+            throughput *= sample.weight;
+            eta_scale *= sample.eta_scale;
+            if throughput == Vec3::ZERO {
+                break;
+            }
             if learning.is_some() && !sample.is_delta() {
                 let mixture = match self.bsdf_fraction {
                     Some(_) => None,
-                    None => bsdf
-                        .densities(wo, sample.wi)
-                        .map(|(bsdf_pdf, guide_pdf)| (bsdf_pdf, guide_pdf, fraction)),
+                    None => mixed.map(|m| (m.bsdf_pdf, m.guide_pdf, fraction)),
                 };
                 vertices.push(PendingVertex {
                     guide,
-                    wi: sample.wi,
+                    point: mixed.map_or_else(|| point_of(sample.wi), |m| m.point),
                     throughput_before,
                     throughput_after: throughput,
                     f_cos: sample.weight * sample.pdf,
@@ -260,7 +263,7 @@ impl<M: Materials> GuidedPathTracer<'_, M> {
                 });
                 learning.records.push(GuideRecord {
                     guide: v.guide,
-                    point: point_of(v.wi),
+                    point: v.point,
                     value: learning.target.recorded_value(&record),
                     fraction,
                 });

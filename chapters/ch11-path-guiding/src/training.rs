@@ -39,8 +39,9 @@ pub struct GuidingOptions {
     /// The share of a quadtree above which a quadrant is split ([`SPLIT_FRACTION`]).
     pub split_fraction: f32,
     /// How the training's images join the final pass's in the image ([`crate::combine`]): by
-    /// their samples (unbiased, the default), by their measured noise (Müller et al. 2019:
-    /// consistent rather than unbiased), or not at all (Müller et al. 2017).
+    /// their samples and what their guides learnt from (unbiased, the default), by their
+    /// samples alone (unbiased), by their measured noise (Müller et al. 2019: consistent
+    /// rather than unbiased), or not at all (Müller et al. 2017).
     pub passes: PassWeighting,
 }
 
@@ -52,7 +53,7 @@ impl GuidingOptions {
             bsdf_fraction: None,
             spatial_threshold: 12000.0,
             split_fraction: SPLIT_FRACTION,
-            passes: PassWeighting::BySamples,
+            passes: PassWeighting::ByLearning,
         }
     }
 

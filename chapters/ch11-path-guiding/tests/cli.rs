@@ -57,7 +57,8 @@ fn render_guides_as_told_and_reports_the_training() {
             assert!(json.get("training").is_none());
         } else {
             // Training of 1, 2 and 4 samples per pixel; the final pass gets the other 9, and
-            // the image averages all four passes, each by its samples (the default).
+            // the image averages all four passes, each by its samples times the square root
+            // of the samples before it (the default): 1 x 0, 2 x 1, 4 x √3, 9 x √7.
             let training = &json["training"];
             assert_eq!(training["spp"], 7, "{json}");
             assert_eq!(json["spp"], 16, "{json}");
@@ -69,9 +70,11 @@ fn render_guides_as_told_and_reports_the_training() {
                 .iter()
                 .map(|w| w.as_f64().unwrap())
                 .collect();
-            assert_eq!(training["combine_passes"], "samples", "{json}");
-            for (w, spp) in weights.iter().zip([1.0, 2.0, 4.0, 9.0]) {
-                assert!((w - spp / 16.0).abs() < 1e-12, "{json}");
+            assert_eq!(training["combine_passes"], "learning", "{json}");
+            let raw = [0.0, 2.0, 4.0 * 3f64.sqrt(), 9.0 * 7f64.sqrt()];
+            let total: f64 = raw.iter().sum();
+            for (w, r) in weights.iter().zip(raw) {
+                assert!((w - r / total).abs() < 1e-12, "{json}");
             }
             // Without --bsdf-fraction the fraction is learnt, and stays a probability.
             assert_eq!(json["bsdf_fraction"], "learnt", "{json}");

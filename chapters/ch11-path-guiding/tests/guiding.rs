@@ -267,7 +267,8 @@ fn image_mean(image: &common::image::Image) -> f64 {
 fn the_training_and_final_passes_averaged_stay_unbiased() {
     // The grey sphere under the sky without the light sample, so that the guides learn the
     // sky and the fractions move: every guided render's image, all its passes averaged by
-    // their samples or by their measured noise, has the mean of chapter 08's long render.
+    // their samples, by what their guides learnt from or by their measured noise, has the
+    // mean of chapter 08's long render.
     let world = ch08_path_tracing::furnace::spheres(&[Material::diffuse(Vec3::splat(0.5))], 6);
     let options = PathOptions {
         nee: false,
@@ -292,6 +293,8 @@ fn the_training_and_final_passes_averaged_stay_unbiased() {
     for (target, passes) in [
         (GuidingTarget::Radiance, PassWeighting::BySamples),
         (GuidingTarget::Variance, PassWeighting::BySamples),
+        (GuidingTarget::Radiance, PassWeighting::ByLearning),
+        (GuidingTarget::Variance, PassWeighting::ByLearning),
         (GuidingTarget::Radiance, PassWeighting::ByMeasuredNoise),
         (GuidingTarget::Variance, PassWeighting::ByMeasuredNoise),
     ] {
