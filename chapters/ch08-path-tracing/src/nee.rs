@@ -100,25 +100,26 @@ impl<M: Materials> PathTracer<'_, M> {
         else {
             return Vec3::ZERO;
         };
+        // Nothing to carry (the light's back, a direction the surface does not scatter to,
+        // a point with no chance): no shadow ray, and no density to weigh with.
+        let f_cos = bsdf.eval(wo, sample.wi);
+        if sample.radiance == Vec3::ZERO || f_cos == Vec3::ZERO || !(sample.pdf > 0.0) {
+            return Vec3::ZERO;
+        }
+        if self.world.occluded(&sample.shadow_ray(bsdf.hit(), time)) {
+            return Vec3::ZERO;
+        }
         // Each density times its count: the weight is the multi-sample heuristic's, and
         // dividing by `n_light p_light` divides the estimate by the count as well.
         let (n_light, n_bsdf) = (counts.emitter as f32, counts.bsdf as f32);
-        let contribution = mis_weighted_contribution(
+        mis_weighted_contribution(
             sample.radiance,
-            bsdf.eval(wo, sample.wi),
+            f_cos,
             n_light * sample.pdf,
             n_bsdf * bsdf.pdf(wo, sample.wi),
             self.lights.pick_probability(),
             self.options.mis,
-        );
-        if contribution == Vec3::ZERO {
-            return Vec3::ZERO; // nothing to carry: no shadow ray
-        }
-        if self.world.occluded(&sample.shadow_ray(bsdf.hit(), time)) {
-            Vec3::ZERO
-        } else {
-            contribution
-        }
+        )
         // END SOLUTION
     }
     // ANCHOR_END: nee_light_sample
