@@ -103,7 +103,8 @@ impl<M: Materials> PathTracer<'_, M> {
         // Nothing to carry (the light's back, a direction the surface does not scatter to,
         // a point with no chance): no shadow ray, and no density to weigh with.
         let f_cos = bsdf.eval(wo, sample.wi);
-        if sample.radiance == Vec3::ZERO || f_cos == Vec3::ZERO || !(sample.pdf > 0.0) {
+        let no_chance = sample.pdf.is_nan() || sample.pdf <= 0.0;
+        if sample.radiance == Vec3::ZERO || f_cos == Vec3::ZERO || no_chance {
             return Vec3::ZERO;
         }
         if self.world.occluded(&sample.shadow_ray(bsdf.hit(), time)) {
