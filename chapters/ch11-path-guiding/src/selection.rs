@@ -77,6 +77,9 @@ pub enum FractionLoss {
 pub struct LearntFraction {
     /// The free number whose logistic function is the fraction.
     theta: f32,
+    /// The fraction, [`fraction_of`] `theta`, kept beside it: every vertex of the region
+    /// reads it, and only a step of the descent changes it.
+    fraction: f32,
     /// Adam's running means of the gradient and of its square, and its step count.
     first_moment: f32,
     second_moment: f32,
@@ -92,6 +95,7 @@ impl Default for LearntFraction {
     fn default() -> Self {
         Self {
             theta: 0.0,
+            fraction: fraction_of(0.0),
             first_moment: 0.0,
             second_moment: 0.0,
             steps: 0,
@@ -109,7 +113,7 @@ fn fraction_of(theta: f32) -> f32 {
 impl LearntFraction {
     /// The probability of drawing from the BSDF.
     pub fn fraction(&self) -> f32 {
-        fraction_of(self.theta)
+        self.fraction
     }
 
     /// How many samples it has learnt from.
@@ -169,6 +173,7 @@ impl LearntFraction {
         // fraction again.
         let bound = ((1.0 - LOWEST_FRACTION) / LOWEST_FRACTION).ln() + 1.0;
         self.theta = self.theta.clamp(-bound, bound);
+        self.fraction = fraction_of(self.theta);
     }
 }
 
