@@ -48,11 +48,6 @@ impl<'a, B: SurfaceBsdf> GuidedBsdf<'a, B> {
         }
     }
 
-    /// The guide's density of `wi` per unit solid angle.
-    fn guide_pdf(guide: &DirectionTree, wi: Vec3) -> f32 {
-        solid_angle_pdf(guide.pdf(point_of(wi)))
-    }
-
     /// A direction drawn from the mixture ([`SurfaceBsdf::sample`]), with what the mixture
     /// worked out about it on the way: a training path records the direction's point and learns
     /// the fraction from the two densities, and need not work them out again.
@@ -76,12 +71,7 @@ impl<'a, B: SurfaceBsdf> GuidedBsdf<'a, B> {
                     mixed: None,
                 });
             }
-            let point = point_of(sample.wi);
-            let mixed = Mixed {
-                point,
-                bsdf_pdf: sample.pdf,
-                guide_pdf: solid_angle_pdf(guide.pdf(point)),
-            };
+            let mixed = Mixed::at(guide, point_of(sample.wi), sample.pdf);
             let f_cos = sample.weight * sample.pdf;
             let pdf = mixed.pdf(alpha);
             return Some(MixtureSample {
@@ -98,11 +88,7 @@ impl<'a, B: SurfaceBsdf> GuidedBsdf<'a, B> {
         let point = guide.sample(sampler.get_2d())?;
         let wi = direction_of(point);
         let f_cos = self.bsdf.eval(wo, wi);
-        let mixed = Mixed {
-            point,
-            bsdf_pdf: self.bsdf.pdf(wo, wi),
-            guide_pdf: solid_angle_pdf(guide.pdf(point)),
-        };
+        let mixed = Mixed::at(guide, point, self.bsdf.pdf(wo, wi));
         let pdf = mixed.pdf(alpha);
         if f_cos == Vec3::ZERO || pdf.is_nan() || pdf <= 0.0 {
             return None;
@@ -143,6 +129,16 @@ pub struct Mixed {
 }
 
 impl Mixed {
+    /// The direction at `point` of the square, with the BSDF's density `bsdf_pdf` there and
+    /// `guide`'s, both per unit solid angle.
+    pub fn at(guide: &DirectionTree, point: Vec2, bsdf_pdf: f32) -> Self {
+        Self {
+            point,
+            bsdf_pdf,
+            guide_pdf: solid_angle_pdf(guide.pdf(point)),
+        }
+    }
+
     /// The mixture's density, the BSDF drawn from with probability `bsdf_fraction`.
     pub fn pdf(&self, bsdf_fraction: f32) -> f32 {
         bsdf_fraction * self.bsdf_pdf + (1.0 - bsdf_fraction) * self.guide_pdf
@@ -175,10 +171,7 @@ impl<B: SurfaceBsdf> SurfaceBsdf for GuidedBsdf<'_, B> {
         let bsdf_pdf = self.bsdf.pdf(wo, wi);
         match self.guide {
             None => bsdf_pdf,
-            Some(guide) => {
-                let alpha = self.bsdf_fraction;
-                alpha * bsdf_pdf + (1.0 - alpha) * Self::guide_pdf(guide, wi)
-            }
+            Some(guide) => Mixed::at(guide, point_of(wi), bsdf_pdf).pdf(self.bsdf_fraction),
         }
     }
 }
