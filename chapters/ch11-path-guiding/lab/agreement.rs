@@ -78,7 +78,7 @@ pub const HEAVY_TAILED_REFERENCE_SPP: u64 = 16 * HEAVY_TAILED_SPP;
 /// Our render of a scene file guided towards the variance-aware target, with a budget of
 /// twice [`AGREEMENT_SPP`] less one samples per pixel:
 /// the training takes 1 + 2 + ... of them, the final pass as many as Mitsuba's render it is
-/// compared with, and the image averages every pass by its samples (the render's default).
+/// compared with, and the image averages every pass as the render does by default.
 /// More samples than Mitsuba's make the block test stricter, not looser: its standard errors
 /// come from our image's own noise.
 pub fn render_scene_file(path: &Path) -> Result<Image, String> {
